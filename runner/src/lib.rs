@@ -1,1 +1,11 @@
+//! The batch runner: TOML case files → validated cases → mechanism runs in parallel →
+//! `summary.json` and one CSV per mechanism per case. Physics lives in the `cardan-*` crates;
+//! this crate only reads, validates, schedules and writes.
 
+pub mod case;
+pub mod output;
+pub mod run;
+pub mod units;
+
+pub use case::{Case, CaseError};
+pub use run::{run_case, run_paths, Report};
