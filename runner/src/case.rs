@@ -3,7 +3,9 @@
 
 use crate::units::{to_si, Dimension};
 use cardan_dynamics::{MassProperties, Material};
-use cardan_mechanism::{CardanGear, CrankMotion, GeometryError, Mechanism, MechanismKind, SliderCrank};
+use cardan_mechanism::{
+    CardanGear, CrankMotion, GeometryError, Mechanism, MechanismKind, SliderCrank,
+};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -11,13 +13,22 @@ use std::path::{Path, PathBuf};
 #[derive(Debug, thiserror::Error)]
 pub enum CaseError {
     #[error("{file}: cannot read: {source}")]
-    Io { file: PathBuf, source: std::io::Error },
+    Io {
+        file: PathBuf,
+        source: std::io::Error,
+    },
     /// TOML syntax, a missing field, an unknown key or a value of the wrong type; the message
     /// is the TOML reader's, with the line and column.
     #[error("{file}: {message}")]
     Syntax { file: PathBuf, message: String },
     #[error("{file}: case \"{case}\": {field} = {value}: {rule}")]
-    Invalid { file: PathBuf, case: String, field: String, value: String, rule: String },
+    Invalid {
+        file: PathBuf,
+        case: String,
+        field: String,
+        value: String,
+        rule: String,
+    },
 }
 
 /// Pump or engine: what the gas does (used by the gas models).
@@ -121,19 +132,27 @@ struct RawMasses {
     cardan_gear: Option<Box<RawMasses>>,
 }
 
+/// Reads one optional field of a `[masses]` table.
+type Getter = fn(&RawMasses) -> Option<&toml::Value>;
+
 /// Largest accepted number of steps: 10 million points of about 1 kB of state each.
 pub const MAX_STEPS: i64 = 10_000_000;
 
 /// Reads and validates one case file.
 pub fn load(file: &Path) -> Result<Case, CaseError> {
-    let text = std::fs::read_to_string(file).map_err(|source| CaseError::Io { file: file.into(), source })?;
+    let text = std::fs::read_to_string(file).map_err(|source| CaseError::Io {
+        file: file.into(),
+        source,
+    })?;
     parse(file, &text)
 }
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
-    let raw: RawCase =
-        toml::from_str(text).map_err(|e| CaseError::Syntax { file: file.into(), message: e.to_string().trim_end().to_string() })?;
+    let raw: RawCase = toml::from_str(text).map_err(|e| CaseError::Syntax {
+        file: file.into(),
+        message: e.to_string().trim_end().to_string(),
+    })?;
     let case_name = raw.name.clone();
     let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
         file: file.into(),
@@ -144,16 +163,27 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
     };
     if raw.name.is_empty()
         || raw.name.starts_with('.')
-        || !raw.name.chars().all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c))
+        || !raw
+            .name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c))
     {
         return Err(invalid("name", &format!("\"{}\"", raw.name), "must be a non-empty folder name of letters, digits, '-', '_' and '.', not starting with '.'"));
     }
     let machine = match raw.machine.as_str() {
         "pump" => Machine::Pump,
         "engine" => Machine::Engine,
-        other => return Err(invalid("machine", &format!("\"{other}\""), "must be \"pump\" or \"engine\"")),
+        other => {
+            return Err(invalid(
+                "machine",
+                &format!("\"{other}\""),
+                "must be \"pump\" or \"engine\"",
+            ))
+        }
     };
-    let quantity = |field: &str, value: &toml::Value, dim: Dimension| to_si(value, dim).map_err(|rule| invalid(field, value, &rule));
+    let quantity = |field: &str, value: &toml::Value, dim: Dimension| {
+        to_si(value, dim).map_err(|rule| invalid(field, value, &rule))
+    };
     let positive = |field: &str, value: &toml::Value, dim: Dimension| {
         let x = quantity(field, value, dim)?;
         if x > 0.0 {
@@ -185,43 +215,87 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
     let start_angle = quantity("motion.start_angle", &m.start_angle, Dimension::Angle)?;
     let end_angle = quantity("motion.end_angle", &m.end_angle, Dimension::Angle)?;
     if end_angle <= start_angle {
-        return Err(invalid("motion.end_angle", &m.end_angle, "must be greater than motion.start_angle"));
+        return Err(invalid(
+            "motion.end_angle",
+            &m.end_angle,
+            "must be greater than motion.start_angle",
+        ));
     }
     let motion = CrankMotion {
         start_angle,
-        initial_speed: quantity("motion.initial_speed", &m.initial_speed, Dimension::AngularSpeed)?,
-        angular_acceleration: quantity("motion.angular_acceleration", &m.angular_acceleration, Dimension::AngularAcceleration)?,
+        initial_speed: quantity(
+            "motion.initial_speed",
+            &m.initial_speed,
+            Dimension::AngularSpeed,
+        )?,
+        angular_acceleration: quantity(
+            "motion.angular_acceleration",
+            &m.angular_acceleration,
+            Dimension::AngularAcceleration,
+        )?,
     };
     if let Err(e) = motion.at_angle(end_angle) {
-        return Err(invalid("motion.initial_speed", &m.initial_speed, &e.to_string()));
+        return Err(invalid(
+            "motion.initial_speed",
+            &m.initial_speed,
+            &e.to_string(),
+        ));
     }
     if !(8..=MAX_STEPS).contains(&m.steps) {
-        return Err(invalid("motion.steps", &m.steps, &format!("must be an integer from 8 to {MAX_STEPS}")));
+        return Err(invalid(
+            "motion.steps",
+            &m.steps,
+            &format!("must be an integer from 8 to {MAX_STEPS}"),
+        ));
     }
 
     if raw.mechanisms.is_empty() {
-        return Err(invalid("mechanisms", &"[]", "must list at least one of \"slider_crank\", \"cardan_gear\""));
+        return Err(invalid(
+            "mechanisms",
+            &"[]",
+            "must list at least one of \"slider_crank\", \"cardan_gear\"",
+        ));
     }
     let raw_masses = raw.masses.clone().unwrap_or_default();
-    if raw_masses.slider_crank.as_ref().is_some_and(|s| s.slider_crank.is_some() || s.cardan_gear.is_some())
-        || raw_masses.cardan_gear.as_ref().is_some_and(|s| s.slider_crank.is_some() || s.cardan_gear.is_some())
+    if raw_masses
+        .slider_crank
+        .as_ref()
+        .is_some_and(|s| s.slider_crank.is_some() || s.cardan_gear.is_some())
+        || raw_masses
+            .cardan_gear
+            .as_ref()
+            .is_some_and(|s| s.slider_crank.is_some() || s.cardan_gear.is_some())
     {
-        return Err(invalid("masses", &"nested tables", "mechanism tables cannot nest: use [masses.slider_crank] and [masses.cardan_gear]"));
+        return Err(invalid(
+            "masses",
+            &"nested tables",
+            "mechanism tables cannot nest: use [masses.slider_crank] and [masses.cardan_gear]",
+        ));
     }
     let mut mechanisms = Vec::new();
     for name in &raw.mechanisms {
         let Some(kind) = MechanismKind::from_name(name) else {
-            return Err(invalid("mechanisms", &format!("\"{name}\""), "unknown mechanism: use \"slider_crank\" or \"cardan_gear\""));
+            return Err(invalid(
+                "mechanisms",
+                &format!("\"{name}\""),
+                "unknown mechanism: use \"slider_crank\" or \"cardan_gear\"",
+            ));
         };
         if mechanisms.iter().any(|c: &MechanismCase| c.kind == kind) {
-            return Err(invalid("mechanisms", &format!("\"{name}\""), "is listed twice"));
+            return Err(invalid(
+                "mechanisms",
+                &format!("\"{name}\""),
+                "is listed twice",
+            ));
         }
         let specific = match kind {
             MechanismKind::SliderCrank => raw_masses.slider_crank.as_deref(),
             MechanismKind::CardanGear => raw_masses.cardan_gear.as_deref(),
         };
         // The mechanism's own table wins over the common one.
-        let pick = |get: fn(&RawMasses) -> Option<&toml::Value>, field: &str| -> (Option<toml::Value>, String) {
+        let pick = |get: fn(&RawMasses) -> Option<&toml::Value>,
+                    field: &str|
+         -> (Option<toml::Value>, String) {
             match specific.and_then(get) {
                 Some(v) => (Some(v.clone()), format!("masses.{}.{field}", kind.name())),
                 None => (get(&raw_masses).cloned(), format!("masses.{field}")),
@@ -229,25 +303,68 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         };
         let (material_name, material_field) = match specific.and_then(|s| s.rod_material.clone()) {
             Some(v) => (Some(v), format!("masses.{}.rod_material", kind.name())),
-            None => (raw_masses.rod_material.clone(), "masses.rod_material".to_string()),
+            None => (
+                raw_masses.rod_material.clone(),
+                "masses.rod_material".to_string(),
+            ),
         };
         let rod_material = match material_name {
             None => Material::Steel,
             Some(n) => match Material::from_name(&n) {
                 Some(Material::Aluminium) | None => {
-                    return Err(invalid(&material_field, &format!("\"{n}\""), "must be \"steel\" or \"titanium\""))
+                    return Err(invalid(
+                        &material_field,
+                        &format!("\"{n}\""),
+                        "must be \"steel\" or \"titanium\"",
+                    ))
                 }
                 Some(mat) => mat,
             },
         };
-        let mut masses = MassProperties::estimate(kind, geometry.crank_length, geometry.rod_length, geometry.bore, rod_material);
-        let overrides: [(fn(&RawMasses) -> Option<&toml::Value>, &str, Dimension, &mut f64); 6] = [
-            (|r| r.crankshaft_inertia.as_ref(), "crankshaft_inertia", Dimension::Inertia, &mut masses.crankshaft_inertia),
-            (|r| r.wheel_inertia.as_ref(), "wheel_inertia", Dimension::Inertia, &mut masses.wheel_inertia),
-            (|r| r.rod_mass.as_ref(), "rod_mass", Dimension::Mass, &mut masses.rod_mass),
-            (|r| r.rod_inertia.as_ref(), "rod_inertia", Dimension::Inertia, &mut masses.rod_inertia),
-            (|r| r.rod_cg.as_ref(), "rod_cg", Dimension::Length, &mut masses.rod_cg),
-            (|r| r.piston_mass.as_ref(), "piston_mass", Dimension::Mass, &mut masses.piston_mass),
+        let mut masses = MassProperties::estimate(
+            kind,
+            geometry.crank_length,
+            geometry.rod_length,
+            geometry.bore,
+            rod_material,
+        );
+        let overrides: [(Getter, &str, Dimension, &mut f64); 6] = [
+            (
+                |r| r.crankshaft_inertia.as_ref(),
+                "crankshaft_inertia",
+                Dimension::Inertia,
+                &mut masses.crankshaft_inertia,
+            ),
+            (
+                |r| r.wheel_inertia.as_ref(),
+                "wheel_inertia",
+                Dimension::Inertia,
+                &mut masses.wheel_inertia,
+            ),
+            (
+                |r| r.rod_mass.as_ref(),
+                "rod_mass",
+                Dimension::Mass,
+                &mut masses.rod_mass,
+            ),
+            (
+                |r| r.rod_inertia.as_ref(),
+                "rod_inertia",
+                Dimension::Inertia,
+                &mut masses.rod_inertia,
+            ),
+            (
+                |r| r.rod_cg.as_ref(),
+                "rod_cg",
+                Dimension::Length,
+                &mut masses.rod_cg,
+            ),
+            (
+                |r| r.piston_mass.as_ref(),
+                "piston_mass",
+                Dimension::Mass,
+                &mut masses.piston_mass,
+            ),
         ];
         for (get, field, dim, target) in overrides {
             if let (Some(v), path) = pick(get, field) {
@@ -259,9 +376,14 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
             }
         }
         if kind == MechanismKind::SliderCrank && masses.wheel_inertia != 0.0 {
-            return Err(invalid("masses.wheel_inertia", &masses.wheel_inertia, "applies to the cardan gear only: set it in [masses.cardan_gear]"));
+            return Err(invalid(
+                "masses.wheel_inertia",
+                &masses.wheel_inertia,
+                "applies to the cardan gear only: set it in [masses.cardan_gear]",
+            ));
         }
-        let geometry_error = |e: GeometryError| match e {
+        let geometry_error = |e: GeometryError| {
+            match e {
             GeometryError::PointOffRod { point, rod } => invalid(
                 &pick(|r| r.rod_cg.as_ref(), "rod_cg").1,
                 &point,
@@ -269,18 +391,40 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
             ),
             GeometryError::RodTooShort { .. } => invalid("geometry.pin_offset", &geometry.pin_offset, &e.to_string()),
             other => invalid("geometry", &"", &other.to_string()),
+        }
         };
         let (slider_crank, cardan_gear) = match kind {
             MechanismKind::SliderCrank => (
-                Some(SliderCrank::new(geometry.crank_length, geometry.rod_length, geometry.pin_offset, masses.rod_cg).map_err(geometry_error)?),
+                Some(
+                    SliderCrank::new(
+                        geometry.crank_length,
+                        geometry.rod_length,
+                        geometry.pin_offset,
+                        masses.rod_cg,
+                    )
+                    .map_err(geometry_error)?,
+                ),
                 None,
             ),
             MechanismKind::CardanGear => (
                 None,
-                Some(CardanGear::equivalent_to_slider_crank(geometry.crank_length, geometry.rod_length, masses.rod_cg).map_err(geometry_error)?),
+                Some(
+                    CardanGear::equivalent_to_slider_crank(
+                        geometry.crank_length,
+                        geometry.rod_length,
+                        masses.rod_cg,
+                    )
+                    .map_err(geometry_error)?,
+                ),
             ),
         };
-        mechanisms.push(MechanismCase { kind, masses, rod_material, slider_crank, cardan_gear });
+        mechanisms.push(MechanismCase {
+            kind,
+            masses,
+            rod_material,
+            slider_crank,
+            cardan_gear,
+        });
     }
     Ok(Case {
         file: file.into(),

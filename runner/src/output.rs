@@ -15,7 +15,12 @@ use std::path::Path;
 pub fn summary_json(case: &Case, runs: &[MechanismRun]) -> Value {
     let mut mechanisms = Map::new();
     for run in runs {
-        let metrics: Map<String, Value> = run.summary.metrics.iter().map(|m| (m.name.to_string(), json!(m.value))).collect();
+        let metrics: Map<String, Value> = run
+            .summary
+            .metrics
+            .iter()
+            .map(|m| (m.name.to_string(), json!(m.value)))
+            .collect();
         let m = &run.case.masses;
         mechanisms.insert(
             run.case.kind.name().to_string(),
@@ -148,7 +153,8 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> anyhow::Result<()> {
     let name = path.file_name().context("no file name")?.to_string_lossy();
     let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
     let result = (|| {
-        let mut f = std::fs::File::create(&tmp).with_context(|| format!("create {}", tmp.display()))?;
+        let mut f =
+            std::fs::File::create(&tmp).with_context(|| format!("create {}", tmp.display()))?;
         f.write_all(contents)?;
         f.sync_all()?;
         std::fs::rename(&tmp, path).with_context(|| format!("rename to {}", path.display()))
@@ -163,7 +169,10 @@ pub fn write_atomic(path: &Path, contents: &[u8]) -> anyhow::Result<()> {
 pub fn write_case(dir: &Path, case: &Case, runs: &[MechanismRun]) -> anyhow::Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("create {}", dir.display()))?;
     for run in runs {
-        write_atomic(&dir.join(format!("{}.csv", run.case.kind.name())), csv(run).as_bytes())?;
+        write_atomic(
+            &dir.join(format!("{}.csv", run.case.kind.name())),
+            csv(run).as_bytes(),
+        )?;
     }
     let mut summary = serde_json::to_string_pretty(&summary_json(case, runs))?;
     summary.push('\n');

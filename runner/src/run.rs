@@ -25,7 +25,11 @@ pub fn run_case(case: &Case) -> Vec<MechanismRun> {
         .map(|m| {
             let steps = run_cycle(m.mechanism(), &m.masses, &grid, |_| 0.0);
             let summary = Summary::of_cycle(m.mechanism(), &m.masses, &steps);
-            MechanismRun { case: m.clone(), steps, summary }
+            MechanismRun {
+                case: m.clone(),
+                steps,
+                summary,
+            }
         })
         .collect()
 }
@@ -72,7 +76,14 @@ pub fn case_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, String> {
 pub fn run_paths(paths: &[PathBuf], out: &Path) -> Result<Report, String> {
     let files = case_files(paths)?;
     if files.is_empty() {
-        return Err(format!("no *.toml case files under {}", paths.iter().map(|p| p.display().to_string()).collect::<Vec<_>>().join(", ")));
+        return Err(format!(
+            "no *.toml case files under {}",
+            paths
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
     }
     let loaded: Vec<Result<Case, CaseError>> = files.par_iter().map(|f| case::load(f)).collect();
     let mut report = Report::default();
@@ -100,7 +111,14 @@ pub fn run_paths(paths: &[PathBuf], out: &Path) -> Result<Report, String> {
             let dir = out.join(&case.name);
             output::write_case(&dir, case, &runs)
                 .map(|()| (case.name.clone(), dir.clone()))
-                .map_err(|e| format!("{}: case \"{}\": cannot write results to {}: {e:#}", case.file.display(), case.name, dir.display()))
+                .map_err(|e| {
+                    format!(
+                        "{}: case \"{}\": cannot write results to {}: {e:#}",
+                        case.file.display(),
+                        case.name,
+                        dir.display()
+                    )
+                })
         })
         .collect();
     for o in outcomes {

@@ -21,12 +21,23 @@ impl Dimension {
         match self {
             Dimension::Length => &[("m", 1.0), ("mm", 1e-3), ("cm", 1e-2)],
             Dimension::Angle => &[("deg", PI / 180.0), ("°", PI / 180.0), ("rad", 1.0)],
-            Dimension::AngularSpeed => &[("rad/s", 1.0), ("rpm", 2.0 * PI / 60.0), ("r/min", 2.0 * PI / 60.0)],
-            Dimension::AngularAcceleration => {
-                &[("rad/s^2", 1.0), ("rad/s²", 1.0), ("rpm/s", 2.0 * PI / 60.0)]
-            }
+            Dimension::AngularSpeed => &[
+                ("rad/s", 1.0),
+                ("rpm", 2.0 * PI / 60.0),
+                ("r/min", 2.0 * PI / 60.0),
+            ],
+            Dimension::AngularAcceleration => &[
+                ("rad/s^2", 1.0),
+                ("rad/s²", 1.0),
+                ("rpm/s", 2.0 * PI / 60.0),
+            ],
             Dimension::Mass => &[("kg", 1.0), ("g", 1e-3)],
-            Dimension::Inertia => &[("kg*m^2", 1.0), ("kg·m²", 1.0), ("kg m^2", 1.0), ("g*cm^2", 1e-7)],
+            Dimension::Inertia => &[
+                ("kg*m^2", 1.0),
+                ("kg·m²", 1.0),
+                ("kg m^2", 1.0),
+                ("g*cm^2", 1e-7),
+            ],
         }
     }
 
@@ -45,7 +56,10 @@ pub fn to_si(value: &toml::Value, dim: Dimension) -> Result<f64, String> {
         _ => None,
     };
     let (x, factor) = number.ok_or_else(|| {
-        format!("expected a number in {} or a string with a unit, got {value}", dim.default_unit())
+        format!(
+            "expected a number in {} or a string with a unit, got {value}",
+            dim.default_unit()
+        )
     })?;
     if !x.is_finite() {
         return Err(format!("must be a finite number, got {value}"));
@@ -55,11 +69,19 @@ pub fn to_si(value: &toml::Value, dim: Dimension) -> Result<f64, String> {
 
 fn parse(s: &str, dim: Dimension) -> Result<Option<(f64, f64)>, String> {
     let s = s.trim();
-    let split = s.find(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c))).unwrap_or(s.len());
+    let split = s
+        .find(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c)))
+        .unwrap_or(s.len());
     let (num, unit) = s.split_at(split);
-    let x: f64 = num.parse().map_err(|_| format!("cannot read a number in \"{s}\""))?;
+    let x: f64 = num
+        .parse()
+        .map_err(|_| format!("cannot read a number in \"{s}\""))?;
     let unit = unit.trim();
-    let unit = if unit.is_empty() { dim.default_unit() } else { unit };
+    let unit = if unit.is_empty() {
+        dim.default_unit()
+    } else {
+        unit
+    };
     let known = dim.units();
     match known.iter().find(|(u, _)| *u == unit) {
         Some((_, f)) => Ok(Some((x, *f))),
@@ -79,11 +101,22 @@ mod tests {
     fn units_convert_to_si() {
         let v = |s: &str| toml::Value::String(s.into());
         assert_relative_eq!(to_si(&v("60 mm"), Dimension::Length).unwrap(), 0.06);
-        assert_relative_eq!(to_si(&v("3000 rpm"), Dimension::AngularSpeed).unwrap(), 100.0 * PI);
-        assert_relative_eq!(to_si(&toml::Value::Float(90.0), Dimension::Angle).unwrap(), PI / 2.0);
+        assert_relative_eq!(
+            to_si(&v("3000 rpm"), Dimension::AngularSpeed).unwrap(),
+            100.0 * PI
+        );
+        assert_relative_eq!(
+            to_si(&toml::Value::Float(90.0), Dimension::Angle).unwrap(),
+            PI / 2.0
+        );
         assert_relative_eq!(to_si(&v("1.5rad"), Dimension::Angle).unwrap(), 1.5);
-        assert_relative_eq!(to_si(&toml::Value::Integer(2), Dimension::Mass).unwrap(), 2.0);
-        assert!(to_si(&v("60 furlongs"), Dimension::Length).unwrap_err().contains("furlongs"));
+        assert_relative_eq!(
+            to_si(&toml::Value::Integer(2), Dimension::Mass).unwrap(),
+            2.0
+        );
+        assert!(to_si(&v("60 furlongs"), Dimension::Length)
+            .unwrap_err()
+            .contains("furlongs"));
         assert!(to_si(&toml::Value::Float(f64::NAN), Dimension::Length).is_err());
         assert!(to_si(&toml::Value::Boolean(true), Dimension::Length).is_err());
     }

@@ -13,7 +13,11 @@ fn round(v: &mut Value) {
     match v {
         Value::Number(n) => {
             let x = n.as_f64().unwrap();
-            let r = if x.abs() < 1e-6 { 0.0 } else { format!("{x:.5e}").parse::<f64>().unwrap() };
+            let r = if x.abs() < 1e-6 {
+                0.0
+            } else {
+                format!("{x:.5e}").parse::<f64>().unwrap()
+            };
             *v = serde_json::json!(r);
         }
         Value::Array(a) => a.iter_mut().for_each(round),
@@ -31,7 +35,11 @@ fn shipped_cases_match_golden_summaries() {
         let case = case::load(&file).unwrap_or_else(|e| panic!("{e}"));
         let mut summary = output::summary_json(&case, &run_case(&case));
         round(&mut summary);
-        let name = PathBuf::from(&file).file_stem().unwrap().to_string_lossy().to_string();
+        let name = PathBuf::from(&file)
+            .file_stem()
+            .unwrap()
+            .to_string_lossy()
+            .to_string();
         insta::with_settings!({ snapshot_path => root.join("golden"), prepend_module_to_snapshot => false, omit_expression => true }, {
             insta::assert_json_snapshot!(name, summary);
         });

@@ -31,7 +31,7 @@ pub fn loads(state: &KinematicState, masses: &MassProperties, piston_force: f64)
     Loads {
         main_bearing: -crank_pin, // (A5.2.1.54)
         crank_pin,
-        piston_pin: -p, // (A5.2.1.49)
+        piston_pin: -p,   // (A5.2.1.49)
         piston_side: 0.0, // (A5.2.1.50)
         gear_mesh: p,
         crank_torque: crankshaft + wheel + assembly, // −T_Σi10c (A5.2.1.69)

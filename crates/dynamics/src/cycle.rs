@@ -24,7 +24,10 @@ pub fn run_cycle(
         .enumerate()
         .map(|(k, &crank)| {
             let kinematics = mechanism.state(crank);
-            Step { kinematics, loads: loads(kind, &kinematics, masses, piston_force(k)) }
+            Step {
+                kinematics,
+                loads: loads(kind, &kinematics, masses, piston_force(k)),
+            }
         })
         .collect()
 }
@@ -45,48 +48,86 @@ pub struct Summary {
 
 impl Summary {
     pub fn get(&self, name: &str) -> Option<f64> {
-        self.metrics.iter().find(|m| m.name == name).map(|m| m.value)
+        self.metrics
+            .iter()
+            .find(|m| m.name == name)
+            .map(|m| m.value)
     }
 
     fn push(&mut self, name: &'static str, unit: &'static str, value: f64) {
         self.metrics.push(Metric { name, unit, value });
     }
 
-    /// The kinematic and inertial metrics of a cycle (see README.md for their definitions).
+    /// The kinematic and inertial metrics of a cycle (see README.md for their definitions),
+    /// in one pass over the steps.
     pub fn of_cycle(mechanism: &dyn Mechanism, masses: &MassProperties, steps: &[Step]) -> Self {
+        const PEAKS: [(&str, &str); 12] = [
+            ("piston_velocity_max", "m/s"),
+            ("piston_acceleration_max", "m/s^2"),
+            ("rod_cg_velocity_max", "m/s"),
+            ("rod_cg_acceleration_max", "m/s^2"),
+            ("rod_angular_velocity_max", "rad/s"),
+            ("rod_angular_acceleration_max", "rad/s^2"),
+            ("inertial_crank_pin_force_max", "N"),
+            ("inertial_main_pin_force_max", "N"),
+            ("inertial_piston_pin_force_max", "N"),
+            ("inertial_piston_side_force_max", "N"),
+            ("inertial_gear_mesh_force_max", "N"),
+            ("inertial_torque_max", "N*m"),
+        ];
         let kind = mechanism.kind();
-        let max = |f: &dyn Fn(&Step) -> f64| steps.iter().map(|s| f(s).abs()).fold(0.0, f64::max);
-        let angle = |s: &Step| s.kinematics.crank.angle;
+        let mut peak = [0.0f64; 12];
+        // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
+        // trapezoidal rule on the crank-angle grid.
+        let (mut work, mut energy_flow) = (0.0, 0.0);
+        for (k, s) in steps.iter().enumerate() {
+            let (kin, l) = (&s.kinematics, &s.loads);
+            let values = [
+                kin.piston.velocity,
+                kin.piston.acceleration,
+                kin.rod.point.velocity.norm(),
+                kin.rod.point.acceleration.norm(),
+                kin.rod.angular_velocity,
+                kin.rod.angular_acceleration,
+                l.crank_pin.norm(),
+                l.main_bearing.norm(),
+                l.piston_pin.norm(),
+                l.piston_side,
+                l.gear_mesh.norm(),
+                l.crank_torque,
+            ];
+            for (p, v) in peak.iter_mut().zip(values) {
+                *p = p.max(v.abs());
+            }
+            if k > 0 {
+                let prev = &steps[k - 1];
+                let h = 0.5 * (kin.crank.angle - prev.kinematics.crank.angle);
+                work += h * (l.crank_torque + prev.loads.crank_torque);
+                energy_flow += h
+                    * (l.crank_torque * kin.crank.speed
+                        + prev.loads.crank_torque * prev.kinematics.crank.speed);
+            }
+        }
         let (first, last) = (&steps[0], &steps[steps.len() - 1]);
-        let span = angle(last) - angle(first);
-        // (A5.2.1.37): W = ∫ T dθ, by the trapezoidal rule on the crank-angle grid.
-        let integral = |f: &dyn Fn(&Step) -> f64| {
-            steps.windows(2).map(|w| 0.5 * (f(&w[0]) + f(&w[1])) * (angle(&w[1]) - angle(&w[0]))).sum::<f64>()
-        };
-        let work = integral(&|s| s.loads.crank_torque);
+        let span = last.kinematics.crank.angle - first.kinematics.crank.angle;
 
         let mut m = Summary::default();
         m.push("piston_stroke", "m", mechanism.stroke());
-        m.push("piston_velocity_max", "m/s", max(&|s| s.kinematics.piston.velocity));
-        m.push("piston_acceleration_max", "m/s^2", max(&|s| s.kinematics.piston.acceleration));
-        m.push("rod_cg_velocity_max", "m/s", max(&|s| s.kinematics.rod.point.velocity.norm()));
-        m.push("rod_cg_acceleration_max", "m/s^2", max(&|s| s.kinematics.rod.point.acceleration.norm()));
-        m.push("rod_angular_velocity_max", "rad/s", max(&|s| s.kinematics.rod.angular_velocity));
-        m.push("rod_angular_acceleration_max", "rad/s^2", max(&|s| s.kinematics.rod.angular_acceleration));
-        m.push("inertial_crank_pin_force_max", "N", max(&|s| s.loads.crank_pin.norm()));
-        m.push("inertial_main_pin_force_max", "N", max(&|s| s.loads.main_bearing.norm()));
-        m.push("inertial_piston_pin_force_max", "N", max(&|s| s.loads.piston_pin.norm()));
-        m.push("inertial_piston_side_force_max", "N", max(&|s| s.loads.piston_side));
-        m.push("inertial_gear_mesh_force_max", "N", max(&|s| s.loads.gear_mesh.norm()));
-        m.push("inertial_torque_max", "N*m", max(&|s| s.loads.crank_torque));
+        for ((name, unit), value) in PEAKS.iter().zip(peak) {
+            m.push(name, unit, value);
+        }
         m.push("inertial_work", "J", work);
         m.push("inertial_torque_mean", "N*m", work / span); // (A5.2.1.38)
-        // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at constant
-        // speed this is the time average.
-        m.push("inertial_power_mean", "W", integral(&|s| s.loads.crank_torque * s.kinematics.crank.speed) / span);
+                                                            // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at constant
+                                                            // speed this is the time average.
+        m.push("inertial_power_mean", "W", energy_flow / span);
         let energy = |s: &Step| kinetic_energy(kind, &s.kinematics, masses);
         m.push("kinetic_energy_change", "J", energy(last) - energy(first));
-        m.push("cycle_time", "s", last.kinematics.crank.time - first.kinematics.crank.time);
+        m.push(
+            "cycle_time",
+            "s",
+            last.kinematics.crank.time - first.kinematics.crank.time,
+        );
         m
     }
 }

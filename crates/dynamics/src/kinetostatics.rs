@@ -38,7 +38,12 @@ pub struct Loads {
 ///
 /// `piston_force` is the force of the gas on the piston along the cylinder axis, N, positive
 /// when it pushes the piston towards the crankshaft; 0 gives the thesis's inertial loads.
-pub fn loads(kind: MechanismKind, state: &KinematicState, masses: &MassProperties, piston_force: f64) -> Loads {
+pub fn loads(
+    kind: MechanismKind,
+    state: &KinematicState,
+    masses: &MassProperties,
+    piston_force: f64,
+) -> Loads {
     match kind {
         MechanismKind::SliderCrank => slider_crank::loads(state, masses, piston_force),
         MechanismKind::CardanGear => cardan_gear::loads(state, masses, piston_force),
@@ -58,9 +63,14 @@ pub fn kinetic_energy(kind: MechanismKind, state: &KinematicState, masses: &Mass
         MechanismKind::SliderCrank => {
             let vg = state.rod.point.velocity.norm_sqr();
             let wr = state.rod.angular_velocity;
-            crankshaft + reciprocating + 0.5 * masses.rod_mass * vg + 0.5 * masses.rod_inertia * wr * wr
+            crankshaft
+                + reciprocating
+                + 0.5 * masses.rod_mass * vg
+                + 0.5 * masses.rod_inertia * wr * wr
         }
-        MechanismKind::CardanGear => crankshaft + 0.5 * masses.wheel_inertia * w * w + reciprocating,
+        MechanismKind::CardanGear => {
+            crankshaft + 0.5 * masses.wheel_inertia * w * w + reciprocating
+        }
     }
 }
 

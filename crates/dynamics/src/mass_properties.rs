@@ -34,7 +34,9 @@ impl Material {
     }
 
     pub fn from_name(name: &str) -> Option<Self> {
-        [Material::Steel, Material::Titanium, Material::Aluminium].into_iter().find(|m| m.name() == name)
+        [Material::Steel, Material::Titanium, Material::Aluminium]
+            .into_iter()
+            .find(|m| m.name() == name)
     }
 }
 
@@ -83,7 +85,13 @@ impl MassProperties {
     /// - Piston with pin: the thesis gives no rule. This project estimates an aluminium disc of
     ///   the bore and a sixth of its height (0.61 kg for a 120 mm bore), the order of mass of
     ///   light-alloy pistons with their pins. Override it for a real piston.
-    pub fn estimate(kind: MechanismKind, crank: f64, rod: f64, bore: f64, rod_material: Material) -> Self {
+    pub fn estimate(
+        kind: MechanismKind,
+        crank: f64,
+        rod: f64,
+        bore: f64,
+        rod_material: Material,
+    ) -> Self {
         use std::f64::consts::PI;
         let steel = Material::Steel.density();
         let crankshaft_mass = steel * PI * crank * crank * 2.0 * crank;
@@ -140,15 +148,40 @@ mod tests {
     /// The rules evaluated by hand for the thesis geometry (r = 0.06 m, l = 0.14 m, d = 0.12 m).
     #[test]
     fn thesis_geometry_by_hand() {
-        let m = MassProperties::estimate(MechanismKind::CardanGear, 0.06, 0.14, 0.12, Material::Steel);
+        let m =
+            MassProperties::estimate(MechanismKind::CardanGear, 0.06, 0.14, 0.12, Material::Steel);
         // π·0.06²·0.12·7850 = 10.65377 kg; ½·10.65377·0.09² = 0.0431478
-        assert_relative_eq!(m.crankshaft_inertia, 0.5 * 10.653_77 * 0.0081, max_relative = 1e-5);
+        assert_relative_eq!(
+            m.crankshaft_inertia,
+            0.5 * 10.653_77 * 0.0081,
+            max_relative = 1e-5
+        );
         // 7850·0.02·π·0.06⁴/32 = 1.99758e-4
         assert_relative_eq!(m.wheel_inertia, 1.997_58e-4, max_relative = 1e-5);
         // 7850·0.2³/50 = 1.256 kg
         assert_relative_eq!(m.rod_mass, 1.256, max_relative = 1e-12);
-        let ti = MassProperties::estimate(MechanismKind::CardanGear, 0.06, 0.14, 0.12, Material::Titanium);
-        assert_relative_eq!(m.rod_mass - ti.rod_mass, 1.6e-4 * (7850.0 - 4820.0), max_relative = 1e-12);
-        assert_eq!(MassProperties::estimate(MechanismKind::SliderCrank, 0.06, 0.14, 0.12, Material::Steel).wheel_inertia, 0.0);
+        let ti = MassProperties::estimate(
+            MechanismKind::CardanGear,
+            0.06,
+            0.14,
+            0.12,
+            Material::Titanium,
+        );
+        assert_relative_eq!(
+            m.rod_mass - ti.rod_mass,
+            1.6e-4 * (7850.0 - 4820.0),
+            max_relative = 1e-12
+        );
+        assert_eq!(
+            MassProperties::estimate(
+                MechanismKind::SliderCrank,
+                0.06,
+                0.14,
+                0.12,
+                Material::Steel
+            )
+            .wheel_inertia,
+            0.0
+        );
     }
 }

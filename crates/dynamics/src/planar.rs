@@ -37,9 +37,18 @@ pub struct Body {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Joint {
     /// Revolute joint at `at`: two unknown force components.
-    Pin { body: usize, other: Option<usize>, at: C },
+    Pin {
+        body: usize,
+        other: Option<usize>,
+        at: C,
+    },
     /// A contact that only transmits force along the unit vector `direction`: one unknown.
-    Contact { body: usize, other: Option<usize>, at: C, direction: C },
+    Contact {
+        body: usize,
+        other: Option<usize>,
+        at: C,
+        direction: C,
+    },
     /// The drive torque on `body` from the frame: one unknown.
     Drive { body: usize },
 }
@@ -92,7 +101,10 @@ impl Model {
         }
         let equations = 3 * self.bodies.len() + self.ties.len();
         if equations < unknowns {
-            return Err(PlanarError::Indeterminate { equations, unknowns });
+            return Err(PlanarError::Indeterminate {
+                equations,
+                unknowns,
+            });
         }
         let mut a = Mat::<f64>::zeros(equations, unknowns);
         let mut b = Mat::<f64>::zeros(equations, 1);
@@ -116,7 +128,12 @@ impl Model {
                         a[(3 * k + 2, col + 1)] += sign * arm.re;
                     }
                 }
-                Joint::Contact { body, other, at, direction } => {
+                Joint::Contact {
+                    body,
+                    other,
+                    at,
+                    direction,
+                } => {
                     for (target, sign) in [(Some(body), 1.0), (other, -1.0)] {
                         let Some(k) = target else { continue };
                         a[(3 * k, col)] += sign * direction.re;
@@ -147,7 +164,11 @@ impl Model {
             forces.push(f);
             torques.push(t);
         }
-        Ok(Solution { forces, torques, residual })
+        Ok(Solution {
+            forces,
+            torques,
+            residual,
+        })
     }
 }
 
@@ -157,7 +178,11 @@ const RECIPROCATING: usize = 2;
 
 /// Slider-crank: crankshaft (centre of gravity on the main axis), rod, piston (a point mass at
 /// the piston pin). Joints: main bearing, crank pin, piston pin, cylinder wall, drive.
-pub fn slider_crank_model(state: &KinematicState, masses: &MassProperties, piston_force: f64) -> Model {
+pub fn slider_crank_model(
+    state: &KinematicState,
+    masses: &MassProperties,
+    piston_force: f64,
+) -> Model {
     let zero = C::new(0.0, 0.0);
     let pin_b = state.piston_pin.position;
     Model {
@@ -188,10 +213,27 @@ pub fn slider_crank_model(state: &KinematicState, masses: &MassProperties, pisto
             },
         ],
         joints: vec![
-            Joint::Pin { body: CRANKSHAFT, other: None, at: zero },
-            Joint::Pin { body: CRANKSHAFT, other: Some(ROD_OR_WHEEL), at: state.crank_pin.position },
-            Joint::Pin { body: RECIPROCATING, other: Some(ROD_OR_WHEEL), at: pin_b },
-            Joint::Contact { body: RECIPROCATING, other: None, at: pin_b, direction: C::new(1.0, 0.0) },
+            Joint::Pin {
+                body: CRANKSHAFT,
+                other: None,
+                at: zero,
+            },
+            Joint::Pin {
+                body: CRANKSHAFT,
+                other: Some(ROD_OR_WHEEL),
+                at: state.crank_pin.position,
+            },
+            Joint::Pin {
+                body: RECIPROCATING,
+                other: Some(ROD_OR_WHEEL),
+                at: pin_b,
+            },
+            Joint::Contact {
+                body: RECIPROCATING,
+                other: None,
+                at: pin_b,
+                direction: C::new(1.0, 0.0),
+            },
             Joint::Drive { body: CRANKSHAFT },
         ],
         ties: vec![],
@@ -203,7 +245,11 @@ pub fn slider_crank_model(state: &KinematicState, masses: &MassProperties, pisto
 /// bearing, crank pin S, wheel pin T, gear mesh at the pitch point (a contact along the
 /// cylinder axis whose force the thesis ties to the rod force, A5.2.1.48-51), drive. There is
 /// no cylinder-wall joint: the rod's straight line comes from the gears.
-pub fn cardan_gear_model(state: &KinematicState, masses: &MassProperties, piston_force: f64) -> Model {
+pub fn cardan_gear_model(
+    state: &KinematicState,
+    masses: &MassProperties,
+    piston_force: f64,
+) -> Model {
     let zero = C::new(0.0, 0.0);
     let axis = C::new(0.0, 1.0);
     let wheel = state.wheel.expect("a cardan gear state has a wheel");
@@ -236,25 +282,54 @@ pub fn cardan_gear_model(state: &KinematicState, masses: &MassProperties, piston
             },
         ],
         joints: vec![
-            Joint::Pin { body: CRANKSHAFT, other: None, at: zero },
-            Joint::Pin { body: CRANKSHAFT, other: Some(ROD_OR_WHEEL), at: state.crank_pin.position },
-            Joint::Pin { body: RECIPROCATING, other: Some(ROD_OR_WHEEL), at: pin_t.position },
-            Joint::Contact { body: ROD_OR_WHEEL, other: None, at: wheel.mesh_point, direction: axis },
+            Joint::Pin {
+                body: CRANKSHAFT,
+                other: None,
+                at: zero,
+            },
+            Joint::Pin {
+                body: CRANKSHAFT,
+                other: Some(ROD_OR_WHEEL),
+                at: state.crank_pin.position,
+            },
+            Joint::Pin {
+                body: RECIPROCATING,
+                other: Some(ROD_OR_WHEEL),
+                at: pin_t.position,
+            },
+            Joint::Contact {
+                body: ROD_OR_WHEEL,
+                other: None,
+                at: wheel.mesh_point,
+                direction: axis,
+            },
             Joint::Drive { body: CRANKSHAFT },
         ],
         // Mesh force on the wheel = the rod's force on the wheel = −(force on the rod from the wheel).
-        ties: vec![Tie { contact: 3, pin: 2, direction: axis, factor: -1.0 }],
+        ties: vec![Tie {
+            contact: 3,
+            pin: 2,
+            direction: axis,
+            factor: -1.0,
+        }],
     }
 }
 
 /// The loads of one step by the general solve, in the conventions of [`Loads`], with the
 /// residual of the solve.
-pub fn loads(kind: MechanismKind, state: &KinematicState, masses: &MassProperties, piston_force: f64) -> (Loads, f64) {
+pub fn loads(
+    kind: MechanismKind,
+    state: &KinematicState,
+    masses: &MassProperties,
+    piston_force: f64,
+) -> (Loads, f64) {
     let model = match kind {
         MechanismKind::SliderCrank => slider_crank_model(state, masses, piston_force),
         MechanismKind::CardanGear => cardan_gear_model(state, masses, piston_force),
     };
-    let s = model.solve().expect("both mechanism models are determinate");
+    let s = model
+        .solve()
+        .expect("both mechanism models are determinate");
     let f = &s.forces;
     let loads = Loads {
         main_bearing: f[0],

@@ -11,9 +11,10 @@ use cardan_mechanism::{KinematicState, C};
 
 pub fn loads(state: &KinematicState, masses: &MassProperties, piston_force: f64) -> Loads {
     let a_pin = state.crank_pin.position;
-    let e_rod = C::from_polar(1.0, state.rod.angle);
+    let rod_vector = state.piston_pin.position - a_pin;
+    let rod_length = rod_vector.norm();
+    let e_rod = rod_vector / rod_length;
     let sin_rod = e_rod.im;
-    let rod_length = (state.piston_pin.position - a_pin).norm();
 
     // Rod with a massless piston. Its inertial force −m2·a_g2 (A5.2.1.4) and inertial couple
     // −J2·α_BA (5.1.2) have the moment M_i about the crank pin; that moment is what places the
@@ -26,8 +27,8 @@ pub fn loads(state: &KinematicState, masses: &MassProperties, piston_force: f64)
     let f_piston_on_rod = C::new(moment_about_crank_pin / (rod_length * sin_rod), 0.0);
     let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
     let arm = cross(e_rod, f_ine2);
-    let rod_percussion_centre =
-        (arm.abs() > 1e-12 * f_ine2.norm().max(f64::MIN_POSITIVE)).then(|| moment_about_crank_pin / arm);
+    let rod_percussion_centre = (arm.abs() > 1e-12 * f_ine2.norm().max(f64::MIN_POSITIVE))
+        .then(|| moment_about_crank_pin / arm);
 
     // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
     let load = -masses.piston_mass * state.piston_pin.acceleration - C::new(0.0, piston_force);

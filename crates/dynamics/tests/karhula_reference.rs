@@ -26,7 +26,11 @@ fn run(kind: MechanismKind, rod: Material, w0: f64, alpha: f64) -> Summary {
 }
 
 fn within(name: &str, got: f64, want: f64, rel: f64) {
-    assert!((got / want - 1.0).abs() <= rel, "{name}: got {got}, thesis {want}, tolerance {}%", rel * 100.0);
+    assert!(
+        (got / want - 1.0).abs() <= rel,
+        "{name}: got {got}, thesis {want}, tolerance {}%",
+        rel * 100.0
+    );
 }
 
 #[test]
@@ -36,10 +40,25 @@ fn kinematics_match_appendix_11_1_1() {
     let (k, at) = s_steps
         .iter()
         .zip(&c_steps)
-        .map(|(a, b)| (b.kinematics.piston.position - a.kinematics.piston.position, a.kinematics.piston.position))
-        .fold((f64::MIN, 0.0), |best, x| if x.0 > best.0 { x } else { best });
-    assert!((k - 0.014).abs() <= 0.0005, "max position difference {k} m, thesis +14 mm");
-    assert!((k / at - 0.11).abs() <= 0.005, "max position difference {} of S, thesis +11 %", k / at);
+        .map(|(a, b)| {
+            (
+                b.kinematics.piston.position - a.kinematics.piston.position,
+                a.kinematics.piston.position,
+            )
+        })
+        .fold(
+            (f64::MIN, 0.0),
+            |best, x| if x.0 > best.0 { x } else { best },
+        );
+    assert!(
+        (k - 0.014).abs() <= 0.0005,
+        "max position difference {k} m, thesis +14 mm"
+    );
+    assert!(
+        (k / at - 0.11).abs() <= 0.005,
+        "max position difference {} of S, thesis +11 %",
+        k / at
+    );
     let change = |name: &str| c.get(name).unwrap() / s.get(name).unwrap() - 1.0;
     for (name, thesis) in [
         ("piston_velocity_max", -0.08),
@@ -47,9 +66,17 @@ fn kinematics_match_appendix_11_1_1() {
         ("rod_cg_velocity_max", -0.03),
         ("rod_cg_acceleration_max", -0.18),
     ] {
-        assert!((change(name) - thesis).abs() <= 0.005, "{name}: C vs S {:+.4}, thesis {thesis:+}", change(name));
+        assert!(
+            (change(name) - thesis).abs() <= 0.005,
+            "{name}: C vs S {:+.4}, thesis {thesis:+}",
+            change(name)
+        );
     }
-    assert_eq!(c.get("rod_angular_velocity_max"), Some(0.0), "the cardan rod does not turn");
+    assert_eq!(
+        c.get("rod_angular_velocity_max"),
+        Some(0.0),
+        "the cardan rod does not turn"
+    );
 }
 
 #[test]
@@ -64,38 +91,95 @@ fn inertial_forces_and_torques_match_appendix_11_2_1() {
     for (alpha, w0, fs, fc, ts, tc) in table {
         let s = run(S, Material::Steel, w0 * PI, alpha * PI);
         let c = run(C, Material::Steel, w0 * PI, alpha * PI);
-        within("S crank pin", s.get("inertial_crank_pin_force_max").unwrap(), fs, 0.05);
-        within("C crank pin", c.get("inertial_crank_pin_force_max").unwrap(), fc, 0.01);
+        within(
+            "S crank pin",
+            s.get("inertial_crank_pin_force_max").unwrap(),
+            fs,
+            0.05,
+        );
+        within(
+            "C crank pin",
+            c.get("inertial_crank_pin_force_max").unwrap(),
+            fc,
+            0.01,
+        );
         within("S torque", s.get("inertial_torque_max").unwrap(), ts, 0.25);
         // The thesis prints 29 N·m to two digits: ±0.5 N·m.
-        within("C torque", c.get("inertial_torque_max").unwrap(), tc, if tc < 100.0 { 0.5 / tc } else { 0.01 });
+        within(
+            "C torque",
+            c.get("inertial_torque_max").unwrap(),
+            tc,
+            if tc < 100.0 { 0.5 / tc } else { 0.01 },
+        );
         // Main pin = crank pin in both machines (ch. 11.2).
         for x in [&s, &c] {
-            within("main = crank pin", x.get("inertial_main_pin_force_max").unwrap(), x.get("inertial_crank_pin_force_max").unwrap(), 1e-12);
+            within(
+                "main = crank pin",
+                x.get("inertial_main_pin_force_max").unwrap(),
+                x.get("inertial_crank_pin_force_max").unwrap(),
+                1e-12,
+            );
         }
     }
     let c = run(C, Material::Titanium, 200.0 * PI, 0.0);
-    within("C titanium crank pin", c.get("inertial_crank_pin_force_max").unwrap(), 37960.0, 0.01);
-    within("C titanium torque", c.get("inertial_torque_max").unwrap(), 569.0, 0.01);
+    within(
+        "C titanium crank pin",
+        c.get("inertial_crank_pin_force_max").unwrap(),
+        37960.0,
+        0.01,
+    );
+    within(
+        "C titanium torque",
+        c.get("inertial_torque_max").unwrap(),
+        569.0,
+        0.01,
+    );
 }
 
 #[test]
 fn inertial_work_torque_and_power_match_appendix_11_2_2() {
-    for (alpha, ws, wc, ts, tc) in [(100.0, 189.0, 170.0, 15.03, 13.51), (200.0, 378.0, 340.0, 30.05, 27.03)] {
+    for (alpha, ws, wc, ts, tc) in [
+        (100.0, 189.0, 170.0, 15.03, 13.51),
+        (200.0, 378.0, 340.0, 30.05, 27.03),
+    ] {
         for w0 in [3.0, 200.0] {
             let s = run(S, Material::Steel, w0 * PI, alpha * PI);
             let c = run(C, Material::Steel, w0 * PI, alpha * PI);
             within("S work", s.get("inertial_work").unwrap(), ws, 0.025);
             within("C work", c.get("inertial_work").unwrap(), wc, 0.015);
-            within("S mean torque", s.get("inertial_torque_mean").unwrap(), ts, 0.025);
-            within("C mean torque", c.get("inertial_torque_mean").unwrap(), tc, 0.015);
+            within(
+                "S mean torque",
+                s.get("inertial_torque_mean").unwrap(),
+                ts,
+                0.025,
+            );
+            within(
+                "C mean torque",
+                c.get("inertial_torque_mean").unwrap(),
+                tc,
+                0.015,
+            );
         }
     }
-    for (w0, ps, pc) in [(3.0, 908.0, 790.0), (30.0, 1705.0, 1484.0), (200.0, 9547.0, 8309.0)] {
+    for (w0, ps, pc) in [
+        (3.0, 908.0, 790.0),
+        (30.0, 1705.0, 1484.0),
+        (200.0, 9547.0, 8309.0),
+    ] {
         let s = run(S, Material::Steel, w0 * PI, 100.0 * PI);
         let c = run(C, Material::Steel, w0 * PI, 100.0 * PI);
-        within("S mean power", s.get("inertial_power_mean").unwrap(), ps, 0.025);
-        within("C mean power", c.get("inertial_power_mean").unwrap(), pc, 0.015);
+        within(
+            "S mean power",
+            s.get("inertial_power_mean").unwrap(),
+            ps,
+            0.025,
+        );
+        within(
+            "C mean power",
+            c.get("inertial_power_mean").unwrap(),
+            pc,
+            0.015,
+        );
     }
 }
 
@@ -114,7 +198,11 @@ fn trends_of_chapter_11_2() {
     let t = |x: &Summary| x.get("inertial_torque_mean").unwrap();
     assert!((0.05..0.30).contains(&(1.0 - t(&c) / t(&s))));
     // Inertial work is independent of the initial speed and proportional to α.
-    let w = |w0: f64, a: f64| run(S, Material::Steel, w0 * PI, a * PI).get("inertial_work").unwrap();
+    let w = |w0: f64, a: f64| {
+        run(S, Material::Steel, w0 * PI, a * PI)
+            .get("inertial_work")
+            .unwrap()
+    };
     within("work vs ω0", w(3.0, 100.0), w(200.0, 100.0), 1e-9);
     within("work vs α", w(30.0, 200.0), 2.0 * w(30.0, 100.0), 1e-9);
 }

@@ -25,13 +25,24 @@ pub struct CardanGear {
 impl CardanGear {
     /// The cardan gear of the same stroke and the same top-dead-centre piston height as a
     /// slider-crank of crank `slider_crank_crank` and rod `rod` (Karhula eq. 6.1).
-    pub fn equivalent_to_slider_crank(slider_crank_crank: f64, rod: f64, rod_point: f64) -> Result<Self, GeometryError> {
+    pub fn equivalent_to_slider_crank(
+        slider_crank_crank: f64,
+        rod: f64,
+        rod_point: f64,
+    ) -> Result<Self, GeometryError> {
         check_length("crank_length", slider_crank_crank)?;
         check_length("rod_length", rod)?;
         if !(0.0..=rod).contains(&rod_point) {
-            return Err(GeometryError::PointOffRod { point: rod_point, rod });
+            return Err(GeometryError::PointOffRod {
+                point: rod_point,
+                rod,
+            });
         }
-        Ok(Self { crank: slider_crank_crank / 2.0, rod, rod_point })
+        Ok(Self {
+            crank: slider_crank_crank / 2.0,
+            rod,
+            rod_point,
+        })
     }
 }
 
@@ -44,8 +55,8 @@ impl Mechanism for CardanGear {
         let (th, w, a) = (crank.angle, crank.speed, crank.acceleration);
         let r = self.crank;
         let i = C::i();
-        let e_a = C::from_polar(1.0, th);
         let (s, c) = th.sin_cos();
+        let e_a = C::new(c, s);
         let crank_pin = PointMotion {
             position: r * e_a,                       // (A4.2.2.57)
             velocity: r * i * w * e_a,               // (A4.2.2.65)
@@ -87,7 +98,11 @@ impl Mechanism for CardanGear {
                 pitch_line_velocity: 2.0 * r * w, // (A8.1.7): twice the crank-pin speed
             }),
             // Wheel on crank turns at −2ω; the rod's big end on the wheel at +ω (A9.1.15, A9.1.17).
-            joint_speeds: JointSpeeds { main_bearing: w, crank_pin: -2.0 * w, piston_pin: w },
+            joint_speeds: JointSpeeds {
+                main_bearing: w,
+                crank_pin: -2.0 * w,
+                piston_pin: w,
+            },
         }
     }
 
@@ -113,10 +128,16 @@ mod tests {
         let g = CardanGear::equivalent_to_slider_crank(0.06, 0.14, 0.0).unwrap();
         for k in 0..50 {
             let th = 0.3 + 0.13 * k as f64;
-            let st = g.state(CrankState { angle: th, speed: 7.0, acceleration: 1.5, time: 0.0 });
+            let st = g.state(CrankState {
+                angle: th,
+                speed: 7.0,
+                acceleration: 1.5,
+                time: 0.0,
+            });
             // The wheel turns by −θ relative to the frame; at θ = 90° T sits on the mesh point.
             let wheel_turn = -(th - std::f64::consts::FRAC_PI_2);
-            let t_from_rolling = st.crank_pin.position + g.crank * C::from_polar(1.0, std::f64::consts::FRAC_PI_2 + wheel_turn);
+            let t_from_rolling = st.crank_pin.position
+                + g.crank * C::from_polar(1.0, std::f64::consts::FRAC_PI_2 + wheel_turn);
             assert!((t_from_rolling - st.rod.lower_pin.position).norm() < 1e-15);
             assert!((st.wheel.unwrap().mesh_point.norm() - 2.0 * g.crank).abs() < 1e-15);
         }

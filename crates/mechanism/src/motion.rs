@@ -36,7 +36,11 @@ pub enum MotionError {
         "the crank stops before {angle_deg:.3}°: ω² = ω0² + 2·α·Δθ becomes negative \
          (initial_speed {speed} rad/s, angular_acceleration {acceleration} rad/s²)"
     )]
-    Stops { angle_deg: f64, speed: f64, acceleration: f64 },
+    Stops {
+        angle_deg: f64,
+        speed: f64,
+        acceleration: f64,
+    },
 }
 
 impl CrankMotion {
@@ -62,14 +66,25 @@ impl CrankMotion {
         let w = w2.sqrt();
         // t = 2Δθ/(ω0 + ω) is the root of ½αt² + ω0t − Δθ = 0 without the cancellation of
         // (−ω0 + ω)/α, and it also holds for α = 0.
-        let time = if dtheta == 0.0 { 0.0 } else { 2.0 * dtheta / (w0 + w) };
-        Ok(CrankState { angle: theta, speed: w, acceleration: a, time })
+        let time = if dtheta == 0.0 {
+            0.0
+        } else {
+            2.0 * dtheta / (w0 + w)
+        };
+        Ok(CrankState {
+            angle: theta,
+            speed: w,
+            acceleration: a,
+            time,
+        })
     }
 
     /// `steps + 1` crank states, uniformly spaced in crank angle from `start` to `end` (rad).
     pub fn grid(&self, start: f64, end: f64, steps: usize) -> Result<Vec<CrankState>, MotionError> {
         let h = (end - start) / steps as f64;
-        (0..=steps).map(|k| self.at_angle(start + h * k as f64)).collect()
+        (0..=steps)
+            .map(|k| self.at_angle(start + h * k as f64))
+            .collect()
     }
 }
 
@@ -80,7 +95,11 @@ mod tests {
 
     #[test]
     fn time_inverts_the_motion_law() {
-        let m = CrankMotion { start_angle: 0.5, initial_speed: 3.0, angular_acceleration: 100.0 };
+        let m = CrankMotion {
+            start_angle: 0.5,
+            initial_speed: 3.0,
+            angular_acceleration: 100.0,
+        };
         for theta in [0.5, 1.0, 7.0, 14.1] {
             let s = m.at_angle(theta).unwrap();
             let t = s.time;
@@ -91,11 +110,23 @@ mod tests {
 
     #[test]
     fn start_from_rest_and_stopping_crank() {
-        let m = CrankMotion { start_angle: 0.0, initial_speed: 0.0, angular_acceleration: 2.0 };
+        let m = CrankMotion {
+            start_angle: 0.0,
+            initial_speed: 0.0,
+            angular_acceleration: 2.0,
+        };
         assert_relative_eq!(m.at_angle(1.0).unwrap().time, 1.0, max_relative = 1e-15);
-        let m = CrankMotion { start_angle: 0.0, initial_speed: 1.0, angular_acceleration: -1.0 };
+        let m = CrankMotion {
+            start_angle: 0.0,
+            initial_speed: 1.0,
+            angular_acceleration: -1.0,
+        };
         assert!(matches!(m.at_angle(0.6), Err(MotionError::Stops { .. })));
-        let m = CrankMotion { start_angle: 0.0, initial_speed: 0.0, angular_acceleration: 0.0 };
+        let m = CrankMotion {
+            start_angle: 0.0,
+            initial_speed: 0.0,
+            angular_acceleration: 0.0,
+        };
         assert_eq!(m.at_angle(1.0), Err(MotionError::Still));
     }
 }

@@ -77,14 +77,23 @@ mod tests {
         let p = PointMotion {
             position: r * e,
             velocity: dr * e + r * i * dphi * e,
-            acceleration: ddr * e + 2.0 * dr * dphi * i * e + r * ddphi * i * e - r * dphi * dphi * e,
+            acceleration: ddr * e + 2.0 * dr * dphi * i * e + r * ddphi * i * e
+                - r * dphi * dphi * e,
         };
         let c = PolarComponents::of(&p);
         assert_relative_eq!(c.radial_velocity, dr, max_relative = 1e-13);
         assert_relative_eq!(c.angular_velocity, dphi, max_relative = 1e-13);
         assert_relative_eq!(c.radial_acceleration, ddr, max_relative = 1e-12);
         assert_relative_eq!(c.angular_acceleration, ddphi, max_relative = 1e-12);
-        assert_relative_eq!(c.coriolis_acceleration, 2.0 * dr * dphi, max_relative = 1e-13);
-        assert_relative_eq!(c.normal_acceleration, -r * dphi * dphi, max_relative = 1e-13);
+        assert_relative_eq!(
+            c.coriolis_acceleration,
+            2.0 * dr * dphi,
+            max_relative = 1e-13
+        );
+        assert_relative_eq!(
+            c.normal_acceleration,
+            -r * dphi * dphi,
+            max_relative = 1e-13
+        );
     }
 }

@@ -23,44 +23,50 @@ pub struct SliderCrank {
 }
 
 impl SliderCrank {
-    pub fn new(crank: f64, rod: f64, pin_offset: f64, rod_point: f64) -> Result<Self, GeometryError> {
+    pub fn new(
+        crank: f64,
+        rod: f64,
+        pin_offset: f64,
+        rod_point: f64,
+    ) -> Result<Self, GeometryError> {
         check_length("crank_length", crank)?;
         check_length("rod_length", rod)?;
         if !pin_offset.is_finite() {
-            return Err(GeometryError::NotFinite { field: "pin_offset", value: pin_offset });
+            return Err(GeometryError::NotFinite {
+                field: "pin_offset",
+                value: pin_offset,
+            });
         }
         if rod <= crank + pin_offset.abs() {
-            return Err(GeometryError::RodTooShort { rod, crank, offset: pin_offset.abs() });
+            return Err(GeometryError::RodTooShort {
+                rod,
+                crank,
+                offset: pin_offset.abs(),
+            });
         }
         if !(0.0..=rod).contains(&rod_point) {
-            return Err(GeometryError::PointOffRod { point: rod_point, rod });
+            return Err(GeometryError::PointOffRod {
+                point: rod_point,
+                rod,
+            });
         }
-        Ok(Self { crank, rod, pin_offset, rod_point })
+        Ok(Self {
+            crank,
+            rod,
+            pin_offset,
+            rod_point,
+        })
     }
 
-    /// Rod angle θ_BA and its first two derivatives with respect to time.
-    fn rod_angles(&self, th: f64, w: f64, a: f64) -> (f64, f64, f64) {
-        let (s, c) = th.sin_cos();
+    /// cos θ_BA, sin θ_BA and the first two time derivatives of θ_BA, from sin θ and cos θ of
+    /// the crank and its speed and acceleration.
+    fn rod_angles(&self, (s, c): (f64, f64), w: f64, a: f64) -> (f64, f64, f64, f64) {
         let (r, l) = (self.crank, self.rod);
         let cos_ba = (self.pin_offset - r * c) / l; // (A4.2.2.3)
-        let theta_ba = cos_ba.acos();
         let sin_ba = (1.0 - cos_ba * cos_ba).sqrt(); // θ_BA in (0, π): the piston is above the crank
         let w_ba = -r * w * s / (l * sin_ba); // (A4.2.2.12)
         let a_ba = -(r * a * s + r * w * w * c + l * w_ba * w_ba * cos_ba) / (l * sin_ba); // (A4.2.2.31)
-        (theta_ba, w_ba, a_ba)
-    }
-
-    /// Piston pin height and its first two derivatives along the cylinder for the given crank
-    /// angle, speed and acceleration: y_B = Z_AA0·sin θ + Z_BA·sin θ_BA (A4.2.2.5).
-    fn piston_line(&self, th: f64, w: f64, a: f64) -> (f64, f64, f64, (f64, f64, f64)) {
-        let (s, c) = th.sin_cos();
-        let (r, l) = (self.crank, self.rod);
-        let rod = self.rod_angles(th, w, a);
-        let (sb, cb) = rod.0.sin_cos();
-        let y = r * s + l * sb;
-        let v = r * w * c + l * rod.1 * cb; // Im of (A4.2.2.11) + (A4.2.2.13)
-        let acc = r * (a * c - w * w * s) + l * (rod.2 * cb - rod.1 * rod.1 * sb); // Im of (A4.2.2.30) + (A4.2.2.32)
-        (y, v, acc, rod)
+        (cos_ba, sin_ba, w_ba, a_ba)
     }
 }
 
@@ -71,42 +77,58 @@ impl Mechanism for SliderCrank {
 
     fn state(&self, crank: CrankState) -> KinematicState {
         let (th, w, a) = (crank.angle, crank.speed, crank.acceleration);
+        let (r, l) = (self.crank, self.rod);
         let i = C::i();
-        let e_a = C::from_polar(1.0, th);
+        let sc = th.sin_cos();
+        let e_a = C::new(sc.1, sc.0);
         let crank_pin = PointMotion {
-            position: self.crank * e_a,                        // (A4.2.2.2)
-            velocity: self.crank * i * w * e_a,                // (A4.2.2.11)
-            acceleration: self.crank * (i * a - w * w) * e_a,  // (A4.2.2.30)
+            position: r * e_a,                       // (A4.2.2.2)
+            velocity: r * i * w * e_a,               // (A4.2.2.11)
+            acceleration: r * (i * a - w * w) * e_a, // (A4.2.2.30)
         };
-        let (y, v, acc, (theta_ba, w_ba, a_ba)) = self.piston_line(th, w, a);
-        let (_, dx, d2x, _) = self.piston_line(th, 1.0, 0.0);
-        let e_ba = C::from_polar(1.0, theta_ba);
+        let (cos_ba, sin_ba, w_ba, a_ba) = self.rod_angles(sc, w, a);
+        let e_ba = C::new(cos_ba, sin_ba);
         let along = |len: f64| PointMotion {
-            position: crank_pin.position + len * e_ba,                                   // (A4.2.2.9)
-            velocity: crank_pin.velocity + len * i * w_ba * e_ba,                         // (A4.2.2.22-23)
+            position: crank_pin.position + len * e_ba, // (A4.2.2.9)
+            velocity: crank_pin.velocity + len * i * w_ba * e_ba, // (A4.2.2.22-23)
             acceleration: crank_pin.acceleration + len * (i * a_ba - w_ba * w_ba) * e_ba, // (A4.2.2.44-45)
         };
-        // The piston pin moves on the cylinder line; its exact position avoids the round-off of
-        // the rod closure.
+        // The piston pin on the cylinder line (A4.2.2.5, A4.2.2.14, A4.2.2.33), its exact
+        // abscissa avoiding the round-off of the rod closure.
+        let pin = along(l);
         let piston_pin = PointMotion {
-            position: C::new(self.pin_offset, y),
-            velocity: C::new(0.0, v),
-            acceleration: C::new(0.0, acc),
+            position: C::new(self.pin_offset, pin.position.im),
+            velocity: C::new(0.0, pin.velocity.im),
+            acceleration: C::new(0.0, pin.acceleration.im),
         };
+        // dx/dθ and d²x/dθ²: the same expressions at ω = 1 rad/s, α = 0.
+        let (_, _, w1, a1) = self.rod_angles(sc, 1.0, 0.0);
+        let dx = r * sc.1 + l * w1 * cos_ba;
+        let d2x = -r * sc.0 + l * (a1 * cos_ba - w1 * w1 * sin_ba);
         KinematicState {
             crank,
             crank_pin,
             piston_pin,
-            piston: PistonMotion { position: y, velocity: v, acceleration: acc, dx_dtheta: dx, d2x_dtheta2: d2x },
+            piston: PistonMotion {
+                position: pin.position.im,
+                velocity: pin.velocity.im,
+                acceleration: pin.acceleration.im,
+                dx_dtheta: dx,
+                d2x_dtheta2: d2x,
+            },
             rod: RodMotion {
-                angle: theta_ba,
+                angle: cos_ba.acos(),
                 angular_velocity: w_ba,
                 angular_acceleration: a_ba,
                 lower_pin: crank_pin,
                 point: along(self.rod_point),
             },
             wheel: None,
-            joint_speeds: JointSpeeds { main_bearing: w, crank_pin: w_ba - w, piston_pin: w_ba }, // (A9.1.14-18)
+            joint_speeds: JointSpeeds {
+                main_bearing: w,
+                crank_pin: w_ba - w,
+                piston_pin: w_ba,
+            }, // (A9.1.14-18)
         }
     }
 
@@ -135,7 +157,11 @@ mod tests {
     fn derivatives_match_finite_differences() {
         for offset in [0.0, 0.012] {
             let m = machine(offset);
-            let motion = CrankMotion { start_angle: 0.3, initial_speed: 30.0, angular_acceleration: 400.0 };
+            let motion = CrankMotion {
+                start_angle: 0.3,
+                initial_speed: 30.0,
+                angular_acceleration: 400.0,
+            };
             for theta in [0.4, 1.2, 2.5, 4.0, 5.9] {
                 let s = m.state(motion.at_angle(theta).unwrap());
                 let h = 1e-5;
@@ -151,20 +177,47 @@ mod tests {
                     })
                 };
                 let (p, q) = (at(s.crank.time - h), at(s.crank.time + h));
-                for (f, df) in [
-                    (|k: &KinematicState| k.rod.point.position, |k: &KinematicState| k.rod.point.velocity),
-                    (|k: &KinematicState| k.rod.point.velocity, |k: &KinematicState| k.rod.point.acceleration),
-                    (|k: &KinematicState| k.piston_pin.position, |k: &KinematicState| k.piston_pin.velocity),
-                    (|k: &KinematicState| k.piston_pin.velocity, |k: &KinematicState| k.piston_pin.acceleration),
-                ] {
+                type Get = fn(&KinematicState) -> C;
+                let pairs: [(Get, Get); 4] = [
+                    (
+                        |k: &KinematicState| k.rod.point.position,
+                        |k: &KinematicState| k.rod.point.velocity,
+                    ),
+                    (
+                        |k: &KinematicState| k.rod.point.velocity,
+                        |k: &KinematicState| k.rod.point.acceleration,
+                    ),
+                    (
+                        |k: &KinematicState| k.piston_pin.position,
+                        |k: &KinematicState| k.piston_pin.velocity,
+                    ),
+                    (
+                        |k: &KinematicState| k.piston_pin.velocity,
+                        |k: &KinematicState| k.piston_pin.acceleration,
+                    ),
+                ];
+                for (f, df) in pairs {
                     let numeric = (f(&q) - f(&p)) / (2.0 * h);
                     let scale = df(&s).norm().max(1.0);
-                    assert!((numeric - df(&s)).norm() < 1e-5 * scale, "θ = {theta}, offset = {offset}");
+                    assert!(
+                        (numeric - df(&s)).norm() < 1e-5 * scale,
+                        "θ = {theta}, offset = {offset}"
+                    );
                 }
                 let numeric_w = (q.rod.angle - p.rod.angle) / (2.0 * h);
-                assert_relative_eq!(numeric_w, s.rod.angular_velocity, epsilon = 1e-5, max_relative = 1e-6);
+                assert_relative_eq!(
+                    numeric_w,
+                    s.rod.angular_velocity,
+                    epsilon = 1e-5,
+                    max_relative = 1e-6
+                );
                 // dx/dθ is v/ω for any motion.
-                assert_relative_eq!(s.piston.dx_dtheta * s.crank.speed, s.piston.velocity, max_relative = 1e-12, epsilon = 1e-12);
+                assert_relative_eq!(
+                    s.piston.dx_dtheta * s.crank.speed,
+                    s.piston.velocity,
+                    max_relative = 1e-12,
+                    epsilon = 1e-12
+                );
             }
         }
     }
@@ -172,10 +225,19 @@ mod tests {
     #[test]
     fn rod_closes_on_the_piston_pin_and_dead_centres() {
         let m = machine(0.0);
-        let st = m.state(CrankState { angle: 1.0, speed: 10.0, acceleration: 3.0, time: 0.0 });
+        let st = m.state(CrankState {
+            angle: 1.0,
+            speed: 10.0,
+            acceleration: 3.0,
+            time: 0.0,
+        });
         let tip = st.crank_pin.position + m.rod * C::from_polar(1.0, st.rod.angle);
         assert!((tip - st.piston_pin.position).norm() < 1e-15);
-        let top = m.state(CrankState { angle: std::f64::consts::FRAC_PI_2, speed: 1.0, ..Default::default() });
+        let top = m.state(CrankState {
+            angle: std::f64::consts::FRAC_PI_2,
+            speed: 1.0,
+            ..Default::default()
+        });
         assert_relative_eq!(top.piston.position, 0.2, max_relative = 1e-15);
         assert_relative_eq!(m.stroke(), 0.12, max_relative = 1e-14);
         // With an offset the stroke grows slightly: sqrt((l+r)²−e²) − sqrt((l−r)²−e²).
@@ -185,10 +247,25 @@ mod tests {
 
     #[test]
     fn impossible_machines_are_refused() {
-        assert!(matches!(SliderCrank::new(0.06, 0.06, 0.0, 0.0), Err(GeometryError::RodTooShort { .. })));
-        assert!(matches!(SliderCrank::new(0.06, 0.1, 0.05, 0.0), Err(GeometryError::RodTooShort { .. })));
-        assert!(matches!(SliderCrank::new(-0.06, 0.14, 0.0, 0.0), Err(GeometryError::NotPositive { .. })));
-        assert!(matches!(SliderCrank::new(0.06, f64::NAN, 0.0, 0.0), Err(GeometryError::NotPositive { .. })));
-        assert!(matches!(SliderCrank::new(0.06, 0.14, 0.0, 0.2), Err(GeometryError::PointOffRod { .. })));
+        assert!(matches!(
+            SliderCrank::new(0.06, 0.06, 0.0, 0.0),
+            Err(GeometryError::RodTooShort { .. })
+        ));
+        assert!(matches!(
+            SliderCrank::new(0.06, 0.1, 0.05, 0.0),
+            Err(GeometryError::RodTooShort { .. })
+        ));
+        assert!(matches!(
+            SliderCrank::new(-0.06, 0.14, 0.0, 0.0),
+            Err(GeometryError::NotPositive { .. })
+        ));
+        assert!(matches!(
+            SliderCrank::new(0.06, f64::NAN, 0.0, 0.0),
+            Err(GeometryError::NotPositive { .. })
+        ));
+        assert!(matches!(
+            SliderCrank::new(0.06, 0.14, 0.0, 0.2),
+            Err(GeometryError::PointOffRod { .. })
+        ));
     }
 }

@@ -26,15 +26,29 @@ pub fn thesis_masses(kind: MechanismKind, rod: Material) -> MassProperties {
 
 pub fn mechanism(kind: MechanismKind, rod_point: f64) -> Box<dyn Mechanism> {
     match kind {
-        MechanismKind::SliderCrank => Box::new(SliderCrank::new(CRANK, ROD, 0.0, rod_point).unwrap()),
-        MechanismKind::CardanGear => Box::new(CardanGear::equivalent_to_slider_crank(CRANK, ROD, rod_point).unwrap()),
+        MechanismKind::SliderCrank => {
+            Box::new(SliderCrank::new(CRANK, ROD, 0.0, rod_point).unwrap())
+        }
+        MechanismKind::CardanGear => {
+            Box::new(CardanGear::equivalent_to_slider_crank(CRANK, ROD, rod_point).unwrap())
+        }
     }
 }
 
 /// The thesis cycle at initial speed `w0` and acceleration `alpha` (rad/s, rad/s²).
-pub fn cycle(kind: MechanismKind, masses: &MassProperties, w0: f64, alpha: f64, steps: usize) -> (Vec<Step>, Summary) {
+pub fn cycle(
+    kind: MechanismKind,
+    masses: &MassProperties,
+    w0: f64,
+    alpha: f64,
+    steps: usize,
+) -> (Vec<Step>, Summary) {
     let mech = mechanism(kind, masses.rod_cg);
-    let motion = CrankMotion { start_angle: PI / 2.0, initial_speed: w0, angular_acceleration: alpha };
+    let motion = CrankMotion {
+        start_angle: PI / 2.0,
+        initial_speed: w0,
+        angular_acceleration: alpha,
+    };
     let grid = motion.grid(PI / 2.0, 4.5 * PI, steps).unwrap();
     let steps = run_cycle(mech.as_ref(), masses, &grid, |_| 0.0);
     let summary = Summary::of_cycle(mech.as_ref(), masses, &steps);
