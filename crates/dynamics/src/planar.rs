@@ -11,7 +11,7 @@
 
 use crate::kinetostatics::cross;
 use crate::{Loads, MassProperties};
-use cardan_mechanism::{KinematicState, MechanismKind, C};
+use cardan_mechanism::{KinematicState, MechanismKind, PointMotion, C};
 use faer::linalg::solvers::SolveLstsq;
 use faer::Mat;
 
@@ -176,47 +176,55 @@ const CRANKSHAFT: usize = 0;
 const ROD_OR_WHEEL: usize = 1;
 const RECIPROCATING: usize = 2;
 
-/// Slider-crank: crankshaft (centre of gravity on the main axis), rod, piston (a point mass at
-/// the piston pin). Joints: main bearing, crank pin, piston pin, cylinder wall, drive.
-pub fn slider_crank_model(
+impl Body {
+    /// A crankshaft assembly turning about the main axis, its centre of gravity on the axis.
+    fn crankshaft(inertia: f64, angular_acceleration: f64) -> Self {
+        let zero = C::new(0.0, 0.0);
+        Body {
+            mass: 0.0,
+            inertia,
+            cg: zero,
+            cg_acceleration: zero,
+            angular_acceleration,
+            applied_force: zero,
+        }
+    }
+
+    /// A translating mass on the cylinder axis at `point`, pushed by the gas.
+    fn reciprocating(mass: f64, point: &PointMotion, piston_force: f64) -> Self {
+        Body {
+            mass,
+            inertia: 0.0,
+            cg: point.position,
+            cg_acceleration: point.acceleration,
+            angular_acceleration: 0.0,
+            applied_force: C::new(0.0, -piston_force),
+        }
+    }
+}
+
+/// Crankshaft, a middle link and a reciprocating link: main bearing, crank pin, the pin
+/// between the middle and reciprocating links at `upper_pin`, one more contact, the drive.
+fn crank_train(
     state: &KinematicState,
-    masses: &MassProperties,
-    piston_force: f64,
+    crankshaft_inertia: f64,
+    middle: Body,
+    reciprocating: Body,
+    upper_pin: C,
+    contact: Joint,
+    ties: Vec<Tie>,
 ) -> Model {
-    let zero = C::new(0.0, 0.0);
-    let pin_b = state.piston_pin.position;
     Model {
         bodies: vec![
-            Body {
-                mass: 0.0,
-                inertia: masses.crankshaft_inertia,
-                cg: zero,
-                cg_acceleration: zero,
-                angular_acceleration: state.crank.acceleration,
-                applied_force: zero,
-            },
-            Body {
-                mass: masses.rod_mass,
-                inertia: masses.rod_inertia,
-                cg: state.rod.point.position,
-                cg_acceleration: state.rod.point.acceleration,
-                angular_acceleration: state.rod.angular_acceleration,
-                applied_force: zero,
-            },
-            Body {
-                mass: masses.piston_mass,
-                inertia: 0.0,
-                cg: pin_b,
-                cg_acceleration: state.piston_pin.acceleration,
-                angular_acceleration: 0.0,
-                applied_force: C::new(0.0, -piston_force),
-            },
+            Body::crankshaft(crankshaft_inertia, state.crank.acceleration),
+            middle,
+            reciprocating,
         ],
         joints: vec![
             Joint::Pin {
                 body: CRANKSHAFT,
                 other: None,
-                at: zero,
+                at: C::new(0.0, 0.0),
             },
             Joint::Pin {
                 body: CRANKSHAFT,
@@ -226,18 +234,47 @@ pub fn slider_crank_model(
             Joint::Pin {
                 body: RECIPROCATING,
                 other: Some(ROD_OR_WHEEL),
-                at: pin_b,
+                at: upper_pin,
             },
-            Joint::Contact {
-                body: RECIPROCATING,
-                other: None,
-                at: pin_b,
-                direction: C::new(1.0, 0.0),
-            },
+            contact,
             Joint::Drive { body: CRANKSHAFT },
         ],
-        ties: vec![],
+        ties,
     }
+}
+
+/// Slider-crank: crankshaft (centre of gravity on the main axis), rod, piston (a point mass at
+/// the piston pin). Joints: main bearing, crank pin, piston pin, cylinder wall, drive.
+pub fn slider_crank_model(
+    state: &KinematicState,
+    masses: &MassProperties,
+    piston_force: f64,
+) -> Model {
+    let pin_b = state.piston_pin.position;
+    let rod = Body {
+        mass: masses.rod_mass,
+        inertia: masses.rod_inertia,
+        cg: state.rod.point.position,
+        cg_acceleration: state.rod.point.acceleration,
+        angular_acceleration: state.rod.angular_acceleration,
+        applied_force: C::new(0.0, 0.0),
+    };
+    let piston = Body::reciprocating(masses.piston_mass, &state.piston_pin, piston_force);
+    let wall = Joint::Contact {
+        body: RECIPROCATING,
+        other: None,
+        at: pin_b,
+        direction: C::new(1.0, 0.0),
+    };
+    crank_train(
+        state,
+        masses.crankshaft_inertia,
+        rod,
+        piston,
+        pin_b,
+        wall,
+        vec![],
+    )
 }
 
 /// Cardan gear: crankshaft assembly (carrying the wheel's inertia, Karhula ch. 11.2), cardan
@@ -250,69 +287,44 @@ pub fn cardan_gear_model(
     masses: &MassProperties,
     piston_force: f64,
 ) -> Model {
-    let zero = C::new(0.0, 0.0);
     let axis = C::new(0.0, 1.0);
-    let wheel = state.wheel.expect("a cardan gear state has a wheel");
+    let wheel_motion = state.wheel.expect("a cardan gear state has a wheel");
     let pin_t = state.rod.lower_pin;
-    Model {
-        bodies: vec![
-            Body {
-                mass: 0.0,
-                inertia: masses.crankshaft_inertia + masses.wheel_inertia,
-                cg: zero,
-                cg_acceleration: zero,
-                angular_acceleration: state.crank.acceleration,
-                applied_force: zero,
-            },
-            Body {
-                mass: 0.0,
-                inertia: 0.0,
-                cg: state.crank_pin.position,
-                cg_acceleration: state.crank_pin.acceleration,
-                angular_acceleration: wheel.angular_acceleration,
-                applied_force: zero,
-            },
-            Body {
-                mass: masses.reciprocating_mass(MechanismKind::CardanGear),
-                inertia: 0.0,
-                cg: pin_t.position,
-                cg_acceleration: pin_t.acceleration,
-                angular_acceleration: 0.0,
-                applied_force: C::new(0.0, -piston_force),
-            },
-        ],
-        joints: vec![
-            Joint::Pin {
-                body: CRANKSHAFT,
-                other: None,
-                at: zero,
-            },
-            Joint::Pin {
-                body: CRANKSHAFT,
-                other: Some(ROD_OR_WHEEL),
-                at: state.crank_pin.position,
-            },
-            Joint::Pin {
-                body: RECIPROCATING,
-                other: Some(ROD_OR_WHEEL),
-                at: pin_t.position,
-            },
-            Joint::Contact {
-                body: ROD_OR_WHEEL,
-                other: None,
-                at: wheel.mesh_point,
-                direction: axis,
-            },
-            Joint::Drive { body: CRANKSHAFT },
-        ],
-        // Mesh force on the wheel = the rod's force on the wheel = −(force on the rod from the wheel).
-        ties: vec![Tie {
-            contact: 3,
-            pin: 2,
-            direction: axis,
-            factor: -1.0,
-        }],
-    }
+    let wheel = Body {
+        mass: 0.0,
+        inertia: 0.0,
+        cg: state.crank_pin.position,
+        cg_acceleration: state.crank_pin.acceleration,
+        angular_acceleration: wheel_motion.angular_acceleration,
+        applied_force: C::new(0.0, 0.0),
+    };
+    let assembly = Body::reciprocating(
+        masses.reciprocating_mass(MechanismKind::CardanGear),
+        &pin_t,
+        piston_force,
+    );
+    let mesh = Joint::Contact {
+        body: ROD_OR_WHEEL,
+        other: None,
+        at: wheel_motion.mesh_point,
+        direction: axis,
+    };
+    // Mesh force on the wheel = the rod's force on the wheel = −(force on the rod from the wheel).
+    let tie = Tie {
+        contact: 3,
+        pin: 2,
+        direction: axis,
+        factor: -1.0,
+    };
+    crank_train(
+        state,
+        masses.crankshaft_inertia + masses.wheel_inertia,
+        wheel,
+        assembly,
+        pin_t.position,
+        mesh,
+        vec![tie],
+    )
 }
 
 /// The loads of one step by the general solve, in the conventions of [`Loads`], with the
