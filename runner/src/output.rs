@@ -97,7 +97,7 @@ fn csv_row(s: &Step, out: &mut String) {
         k.piston.velocity,
         k.piston.acceleration,
         k.piston.dx_dtheta,
-        k.rod.angle.to_degrees(),
+        k.rod.direction.arg().to_degrees(),
         k.rod.angular_velocity,
         k.rod.angular_acceleration,
         k.rod.point.position.re,

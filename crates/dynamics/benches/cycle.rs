@@ -1,5 +1,5 @@
 //! One mechanism over the thesis cycle at 7200 steps: kinematics + closed-form kinetostatics +
-//! summary, the unit of work of the runner. Target: under 200 µs on one core.
+//! summary, the unit of work of the runner (target: under 200 µs on one core), and its two parts.
 
 use cardan_dynamics::{run_cycle, MassProperties, Material, Summary};
 use cardan_mechanism::{CardanGear, CrankMotion, Mechanism, MechanismKind, SliderCrank};

@@ -82,22 +82,23 @@ impl Summary {
         let (mut work, mut energy_flow) = (0.0, 0.0);
         for (k, s) in steps.iter().enumerate() {
             let (kin, l) = (&s.kinematics, &s.loads);
-            let values = [
-                kin.piston.velocity,
-                kin.piston.acceleration,
-                kin.rod.point.velocity.norm(),
-                kin.rod.point.acceleration.norm(),
-                kin.rod.angular_velocity,
-                kin.rod.angular_acceleration,
-                l.crank_pin.norm(),
-                l.main_bearing.norm(),
-                l.piston_pin.norm(),
-                l.piston_side,
-                l.gear_mesh.norm(),
-                l.crank_torque,
+            // Squared magnitudes: one square root per metric instead of one per step.
+            let squares = [
+                kin.piston.velocity.powi(2),
+                kin.piston.acceleration.powi(2),
+                kin.rod.point.velocity.norm_sqr(),
+                kin.rod.point.acceleration.norm_sqr(),
+                kin.rod.angular_velocity.powi(2),
+                kin.rod.angular_acceleration.powi(2),
+                l.crank_pin.norm_sqr(),
+                l.main_bearing.norm_sqr(),
+                l.piston_pin.norm_sqr(),
+                l.piston_side.powi(2),
+                l.gear_mesh.norm_sqr(),
+                l.crank_torque.powi(2),
             ];
-            for (p, v) in peak.iter_mut().zip(values) {
-                *p = p.max(v.abs());
+            for (p, v) in peak.iter_mut().zip(squares) {
+                *p = p.max(v);
             }
             if k > 0 {
                 let prev = &steps[k - 1];
@@ -113,8 +114,8 @@ impl Summary {
 
         let mut m = Summary::default();
         m.push("piston_stroke", "m", mechanism.stroke());
-        for ((name, unit), value) in PEAKS.iter().zip(peak) {
-            m.push(name, unit, value);
+        for ((name, unit), square) in PEAKS.iter().zip(peak) {
+            m.push(name, unit, square.sqrt());
         }
         m.push("inertial_work", "J", work);
         m.push("inertial_torque_mean", "N*m", work / span); // (A5.2.1.38)

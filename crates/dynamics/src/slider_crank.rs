@@ -11,10 +11,9 @@ use cardan_mechanism::{KinematicState, C};
 
 pub fn loads(state: &KinematicState, masses: &MassProperties, piston_force: f64) -> Loads {
     let a_pin = state.crank_pin.position;
-    let rod_vector = state.piston_pin.position - a_pin;
-    let rod_length = rod_vector.norm();
-    let e_rod = rod_vector / rod_length;
+    let e_rod = state.rod.direction;
     let sin_rod = e_rod.im;
+    let rod_length = (state.piston_pin.position - a_pin).norm();
 
     // Rod with a massless piston. Its inertial force −m2·a_g2 (A5.2.1.4) and inertial couple
     // −J2·α_BA (5.1.2) have the moment M_i about the crank pin; that moment is what places the

@@ -52,11 +52,11 @@ impl Mechanism for CardanGear {
     }
 
     fn state(&self, crank: CrankState) -> KinematicState {
-        let (th, w, a) = (crank.angle, crank.speed, crank.acceleration);
+        let (w, a) = (crank.speed, crank.acceleration);
         let r = self.crank;
         let i = C::i();
-        let (s, c) = th.sin_cos();
-        let e_a = C::new(c, s);
+        let e_a = crank.direction;
+        let (s, c) = (e_a.im, e_a.re);
         let crank_pin = PointMotion {
             position: r * e_a,                       // (A4.2.2.57)
             velocity: r * i * w * e_a,               // (A4.2.2.65)
@@ -85,7 +85,7 @@ impl Mechanism for CardanGear {
                 d2x_dtheta2: -2.0 * r * s,
             },
             rod: RodMotion {
-                angle: std::f64::consts::FRAC_PI_2,
+                direction: C::new(0.0, 1.0),
                 angular_velocity: 0.0,
                 angular_acceleration: 0.0,
                 lower_pin: wheel_pin,
@@ -128,12 +128,7 @@ mod tests {
         let g = CardanGear::equivalent_to_slider_crank(0.06, 0.14, 0.0).unwrap();
         for k in 0..50 {
             let th = 0.3 + 0.13 * k as f64;
-            let st = g.state(CrankState {
-                angle: th,
-                speed: 7.0,
-                acceleration: 1.5,
-                time: 0.0,
-            });
+            let st = g.state(CrankState::new(th, 7.0, 1.5, 0.0));
             // The wheel turns by −θ relative to the frame; at θ = 90° T sits on the mesh point.
             let wheel_turn = -(th - std::f64::consts::FRAC_PI_2);
             let t_from_rolling = st.crank_pin.position

@@ -58,15 +58,16 @@ impl SliderCrank {
         })
     }
 
-    /// cos θ_BA, sin θ_BA and the first two time derivatives of θ_BA, from sin θ and cos θ of
-    /// the crank and its speed and acceleration.
-    fn rod_angles(&self, (s, c): (f64, f64), w: f64, a: f64) -> (f64, f64, f64, f64) {
+    /// cos θ_BA, sin θ_BA, and dθ_BA/dθ and d²θ_BA/dθ² (the rod's angular velocity and
+    /// acceleration per unit crank speed at zero crank acceleration), from cos θ and sin θ.
+    fn rod_angles(&self, c: f64, s: f64) -> (f64, f64, f64, f64) {
         let (r, l) = (self.crank, self.rod);
         let cos_ba = (self.pin_offset - r * c) / l; // (A4.2.2.3)
         let sin_ba = (1.0 - cos_ba * cos_ba).sqrt(); // θ_BA in (0, π): the piston is above the crank
-        let w_ba = -r * w * s / (l * sin_ba); // (A4.2.2.12)
-        let a_ba = -(r * a * s + r * w * w * c + l * w_ba * w_ba * cos_ba) / (l * sin_ba); // (A4.2.2.31)
-        (cos_ba, sin_ba, w_ba, a_ba)
+        let inv = 1.0 / (l * sin_ba);
+        let d1 = -r * s * inv; // (A4.2.2.12) at ω = 1
+        let d2 = -(r * c + l * d1 * d1 * cos_ba) * inv; // (A4.2.2.31) at ω = 1, α = 0
+        (cos_ba, sin_ba, d1, d2)
     }
 }
 
@@ -76,17 +77,18 @@ impl Mechanism for SliderCrank {
     }
 
     fn state(&self, crank: CrankState) -> KinematicState {
-        let (th, w, a) = (crank.angle, crank.speed, crank.acceleration);
+        let (w, a) = (crank.speed, crank.acceleration);
         let (r, l) = (self.crank, self.rod);
         let i = C::i();
-        let sc = th.sin_cos();
-        let e_a = C::new(sc.1, sc.0);
+        let e_a = crank.direction;
         let crank_pin = PointMotion {
             position: r * e_a,                       // (A4.2.2.2)
             velocity: r * i * w * e_a,               // (A4.2.2.11)
             acceleration: r * (i * a - w * w) * e_a, // (A4.2.2.30)
         };
-        let (cos_ba, sin_ba, w_ba, a_ba) = self.rod_angles(sc, w, a);
+        let (cos_ba, sin_ba, d1, d2) = self.rod_angles(e_a.re, e_a.im);
+        // (A4.2.2.12) and (A4.2.2.31): ω_BA = ω·dθ_BA/dθ, α_BA = α·dθ_BA/dθ + ω²·d²θ_BA/dθ².
+        let (w_ba, a_ba) = (w * d1, a * d1 + w * w * d2);
         let e_ba = C::new(cos_ba, sin_ba);
         let along = |len: f64| PointMotion {
             position: crank_pin.position + len * e_ba, // (A4.2.2.9)
@@ -101,10 +103,9 @@ impl Mechanism for SliderCrank {
             velocity: C::new(0.0, pin.velocity.im),
             acceleration: C::new(0.0, pin.acceleration.im),
         };
-        // dx/dθ and d²x/dθ²: the same expressions at ω = 1 rad/s, α = 0.
-        let (_, _, w1, a1) = self.rod_angles(sc, 1.0, 0.0);
-        let dx = r * sc.1 + l * w1 * cos_ba;
-        let d2x = -r * sc.0 + l * (a1 * cos_ba - w1 * w1 * sin_ba);
+        // dx/dθ and d²x/dθ²: the piston velocity and acceleration at ω = 1 rad/s, α = 0.
+        let dx = r * e_a.re + l * d1 * cos_ba;
+        let d2x = -r * e_a.im + l * (d2 * cos_ba - d1 * d1 * sin_ba);
         KinematicState {
             crank,
             crank_pin,
@@ -117,7 +118,7 @@ impl Mechanism for SliderCrank {
                 d2x_dtheta2: d2x,
             },
             rod: RodMotion {
-                angle: cos_ba.acos(),
+                direction: e_ba,
                 angular_velocity: w_ba,
                 angular_acceleration: a_ba,
                 lower_pin: crank_pin,
@@ -169,12 +170,12 @@ mod tests {
                     let st = motion.at_angle(theta).unwrap();
                     let dt = t - st.time;
                     let w = st.speed + st.acceleration * dt;
-                    m.state(CrankState {
-                        angle: theta + st.speed * dt + 0.5 * st.acceleration * dt * dt,
-                        speed: w,
-                        acceleration: st.acceleration,
-                        time: t,
-                    })
+                    m.state(CrankState::new(
+                        theta + st.speed * dt + 0.5 * st.acceleration * dt * dt,
+                        w,
+                        st.acceleration,
+                        t,
+                    ))
                 };
                 let (p, q) = (at(s.crank.time - h), at(s.crank.time + h));
                 type Get = fn(&KinematicState) -> C;
@@ -204,7 +205,7 @@ mod tests {
                         "θ = {theta}, offset = {offset}"
                     );
                 }
-                let numeric_w = (q.rod.angle - p.rod.angle) / (2.0 * h);
+                let numeric_w = (q.rod.direction.arg() - p.rod.direction.arg()) / (2.0 * h);
                 assert_relative_eq!(
                     numeric_w,
                     s.rod.angular_velocity,
@@ -225,19 +226,10 @@ mod tests {
     #[test]
     fn rod_closes_on_the_piston_pin_and_dead_centres() {
         let m = machine(0.0);
-        let st = m.state(CrankState {
-            angle: 1.0,
-            speed: 10.0,
-            acceleration: 3.0,
-            time: 0.0,
-        });
-        let tip = st.crank_pin.position + m.rod * C::from_polar(1.0, st.rod.angle);
+        let st = m.state(CrankState::new(1.0, 10.0, 3.0, 0.0));
+        let tip = st.crank_pin.position + m.rod * st.rod.direction;
         assert!((tip - st.piston_pin.position).norm() < 1e-15);
-        let top = m.state(CrankState {
-            angle: std::f64::consts::FRAC_PI_2,
-            speed: 1.0,
-            ..Default::default()
-        });
+        let top = m.state(CrankState::new(std::f64::consts::FRAC_PI_2, 1.0, 0.0, 0.0));
         assert_relative_eq!(top.piston.position, 0.2, max_relative = 1e-15);
         assert_relative_eq!(m.stroke(), 0.12, max_relative = 1e-14);
         // With an offset the stroke grows slightly: sqrt((l+r)²−e²) − sqrt((l−r)²−e²).

@@ -31,8 +31,9 @@ pub struct PistonMotion {
 /// The connecting rod.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RodMotion {
-    /// Rod angle from the real axis (lower pin to upper pin), rad.
-    pub angle: f64,
+    /// Unit vector along the rod from its lower pin to its upper pin, e^{iθ_BA}; its argument
+    /// is the rod angle θ_BA.
+    pub direction: C,
     /// Rod angular velocity, rad/s.
     pub angular_velocity: f64,
     /// Rod angular acceleration, rad/s².
