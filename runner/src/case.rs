@@ -1,6 +1,7 @@
 //! Case files: TOML in, a validated [`Case`] out. Every rule a value breaks is reported with
 //! the file, the case, the field, the rule and the value.
 
+use crate::gas::GasCase;
 use crate::units::{to_si, Dimension};
 use cardan_dynamics::{MassProperties, Material};
 use cardan_mechanism::{
@@ -38,6 +39,15 @@ pub enum Machine {
     Engine,
 }
 
+impl Machine {
+    pub fn name(self) -> &'static str {
+        match self {
+            Machine::Pump => "pump",
+            Machine::Engine => "engine",
+        }
+    }
+}
+
 /// Geometry shared by the mechanisms of a case, SI.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Geometry {
@@ -49,6 +59,10 @@ pub struct Geometry {
     pub bore: f64,
     /// Slider-crank piston-pin offset, m.
     pub pin_offset: f64,
+    /// Pistons sharing one cylinder: 1, or 2 for the opposed-piston layout (two identical
+    /// mirrored crank trains, no cylinder head, Nunes 2017). The case runs one crank train;
+    /// the other carries the same loads.
+    pub pistons: u32,
 }
 
 /// One mechanism of a case, ready to run.
@@ -84,6 +98,8 @@ pub struct Case {
     /// Number of crank-angle intervals; the run has steps + 1 points.
     pub steps: usize,
     pub mechanisms: Vec<MechanismCase>,
+    /// The gas loading the pistons; without it the run has inertial loads only.
+    pub gas: Option<GasCase>,
 }
 
 #[derive(Deserialize)]
@@ -95,6 +111,7 @@ struct RawCase {
     geometry: RawGeometry,
     motion: RawMotion,
     masses: Option<RawMasses>,
+    gas: Option<toml::Table>,
 }
 
 #[derive(Deserialize)]
@@ -104,6 +121,7 @@ struct RawGeometry {
     rod_length: toml::Value,
     bore: toml::Value,
     pin_offset: Option<toml::Value>,
+    opposed_pistons: Option<bool>,
 }
 
 #[derive(Deserialize)]
@@ -201,6 +219,11 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         pin_offset: match &g.pin_offset {
             Some(v) => quantity("geometry.pin_offset", v, Dimension::Length)?,
             None => 0.0,
+        },
+        pistons: if g.opposed_pistons == Some(true) {
+            2
+        } else {
+            1
         },
     };
     if geometry.rod_length <= geometry.crank_length {
@@ -426,6 +449,11 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
             cardan_gear,
         });
     }
+    let gas = raw
+        .gas
+        .as_ref()
+        .map(|table| crate::gas::parse(table, machine, &invalid))
+        .transpose()?;
     Ok(Case {
         file: file.into(),
         name: raw.name,
@@ -435,5 +463,6 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         end_angle,
         steps: m.steps as usize,
         mechanisms,
+        gas,
     })
 }

@@ -3,6 +3,7 @@
 //! this crate only reads, validates, schedules and writes.
 
 pub mod case;
+pub mod gas;
 pub mod output;
 pub mod run;
 pub mod units;

@@ -41,7 +41,8 @@ pub fn summary_json(case: &Case, runs: &[MechanismRun]) -> Value {
     }
     json!({
         "case": case.name,
-        "machine": match case.machine { crate::case::Machine::Pump => "pump", crate::case::Machine::Engine => "engine" },
+        "machine": case.machine.name(),
+        "gas_model": case.gas.as_ref().map(|g| g.name()),
         "mechanisms": mechanisms,
     })
 }
@@ -83,11 +84,34 @@ pub const CSV_COLUMNS: &[&str] = &[
     "inertial_torque_rod_or_wheel_nm",
     "inertial_torque_piston_nm",
     "rod_percussion_centre_m",
+    "cylinder_pressure_pa",
+    "gas_force_n",
+    "gas_torque_nm",
+    "total_main_bearing_force_x_n",
+    "total_main_bearing_force_y_n",
+    "total_crank_pin_force_x_n",
+    "total_crank_pin_force_y_n",
+    "total_piston_pin_force_x_n",
+    "total_piston_pin_force_y_n",
+    "total_piston_side_force_n",
+    "total_gear_mesh_force_x_n",
+    "total_gear_mesh_force_y_n",
+    "total_torque_nm",
 ];
 
-fn csv_row(s: &Step, out: &mut String) {
+/// Writes `v,`; `None` (a quantity the run does not define) is an empty cell.
+fn cell(out: &mut String, v: Option<f64>) {
+    use std::fmt::Write as _;
+    if let Some(v) = v {
+        let _ = write!(out, "{v}");
+    }
+    out.push(',');
+}
+
+fn csv_row(s: &Step, pressure: Option<f64>, out: &mut String) {
     let k = &s.kinematics;
-    let l = &s.loads;
+    let l = &s.inertial;
+    let t = s.total();
     let p = PolarComponents::of(&k.rod.point);
     let values = [
         k.crank.angle.to_degrees(),
@@ -125,14 +149,29 @@ fn csv_row(s: &Step, out: &mut String) {
         l.torque_by_link[1],
         l.torque_by_link[2],
     ];
-    use std::fmt::Write as _;
     for v in values {
-        let _ = write!(out, "{v},");
+        cell(out, Some(v));
     }
-    // An undefined centre of percussion is an empty cell.
-    if let Some(c) = l.rod_percussion_centre {
-        let _ = write!(out, "{c}");
+    // An undefined centre of percussion, and the gas of a run without one, are empty cells.
+    cell(out, l.rod_percussion_centre);
+    cell(out, pressure);
+    cell(out, s.gas.map(|(force, _)| force));
+    cell(out, s.gas.map(|(_, gas)| gas.crank_torque));
+    for v in [
+        t.main_bearing.re,
+        t.main_bearing.im,
+        t.crank_pin.re,
+        t.crank_pin.im,
+        t.piston_pin.re,
+        t.piston_pin.im,
+        t.piston_side,
+        t.gear_mesh.re,
+        t.gear_mesh.im,
+        t.crank_torque,
+    ] {
+        cell(out, Some(v));
     }
+    out.pop();
     out.push('\n');
 }
 
@@ -141,8 +180,8 @@ pub fn csv(run: &MechanismRun) -> String {
     let mut out = String::with_capacity(400 * (run.steps.len() + 1));
     out.push_str(&CSV_COLUMNS.join(","));
     out.push('\n');
-    for s in &run.steps {
-        csv_row(s, &mut out);
+    for (k, s) in run.steps.iter().enumerate() {
+        csv_row(s, run.gas.as_ref().map(|g| g.pressure[k]), &mut out);
     }
     out
 }

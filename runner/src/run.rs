@@ -3,6 +3,8 @@
 use crate::case::{self, Case, CaseError, MechanismCase};
 use crate::output;
 use cardan_dynamics::{run_cycle, Step, Summary};
+use cardan_gas::GasCycle;
+use cardan_mechanism::CrankState;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -11,11 +13,55 @@ use std::path::{Path, PathBuf};
 pub struct MechanismRun {
     pub case: MechanismCase,
     pub steps: Vec<Step>,
+    /// The gas on the same crank-angle grid, if the case has a `[gas]` table.
+    pub gas: Option<GasCycle>,
     pub summary: Summary,
 }
 
-/// Runs every mechanism of a case (in parallel).
-pub fn run_case(case: &Case) -> Vec<MechanismRun> {
+/// The gas of `case` on the volume curve of mechanism `m`, at the crank angles of `grid`.
+fn gas_cycle(
+    case: &Case,
+    m: &MechanismCase,
+    grid: &[CrankState],
+) -> Result<Option<GasCycle>, String> {
+    let Some(gas) = &case.gas else {
+        return Ok(None);
+    };
+    let mech = m.mechanism();
+    let pistons = case.geometry.pistons;
+    let area = std::f64::consts::PI / 4.0 * case.geometry.bore.powi(2);
+    let failed = |e: cardan_gas::GasError| {
+        format!(
+            "{}: case \"{}\": {}: gas.{e}",
+            case.file.display(),
+            case.name,
+            m.kind.name()
+        )
+    };
+    let cylinder = gas
+        .cylinder(
+            case.geometry.bore,
+            f64::from(pistons) * area * mech.stroke(),
+        )
+        .and_then(|c| c.with_pistons(pistons))
+        .map_err(failed)?;
+    let angles: Vec<f64> = grid.iter().map(|g| g.angle).collect();
+    // The mean crank speed over the run: the speed of a steady run.
+    let (first, last) = (&grid[0], &grid[grid.len() - 1]);
+    let speed = if last.time > first.time {
+        (last.angle - first.angle) / (last.time - first.time)
+    } else {
+        first.speed
+    };
+    cylinder
+        .with_chamber(mech, |chamber| gas.model().cycle(chamber, speed, &angles))
+        .map(Some)
+        .map_err(failed)
+}
+
+/// Runs every mechanism of a case (in parallel). A gas model that cannot run on a mechanism
+/// fails the case with a message naming the file, the case and the mechanism.
+pub fn run_case(case: &Case) -> Result<Vec<MechanismRun>, String> {
     let grid = case
         .motion
         .grid(case.motion.start_angle, case.end_angle, case.steps)
@@ -23,13 +69,23 @@ pub fn run_case(case: &Case) -> Vec<MechanismRun> {
     case.mechanisms
         .par_iter()
         .map(|m| {
-            let steps = run_cycle(m.mechanism(), &m.masses, &grid, |_| 0.0);
-            let summary = Summary::of_cycle(m.mechanism(), &m.masses, &steps);
-            MechanismRun {
+            let gas = gas_cycle(case, m, &grid)?;
+            let forces = gas.as_ref().map(|g| g.piston_force.as_slice());
+            let steps = run_cycle(m.mechanism(), &m.masses, &grid, forces);
+            let mut summary = Summary::of_cycle(m.mechanism(), &m.masses, &steps);
+            if let Some(g) = &gas {
+                let p_max = g.pressure.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                summary.push("cylinder_pressure_max", "Pa", p_max);
+                for metric in &g.metrics {
+                    summary.push(metric.name, metric.unit, metric.value);
+                }
+            }
+            Ok(MechanismRun {
                 case: m.clone(),
                 steps,
+                gas,
                 summary,
-            }
+            })
         })
         .collect()
 }
@@ -107,7 +163,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path) -> Result<Report, String> {
         .par_iter()
         .map(|case| {
             let _span = tracing::info_span!("case", name = %case.name).entered();
-            let runs = run_case(case);
+            let runs = run_case(case)?;
             let dir = out.join(&case.name);
             output::write_case(&dir, case, &runs)
                 .map(|()| (case.name.clone(), dir.clone()))

@@ -13,10 +13,25 @@ pub enum Dimension {
     AngularAcceleration,
     Mass,
     Inertia,
+    /// Absolute pressure: a bare number is in Pa.
+    Pressure,
+    /// Absolute temperature: a bare number is in K; "°C" adds 273.15.
+    Temperature,
+    /// Energy per unit mass (heating values, specific energy), J/kg.
+    SpecificEnergy,
+    /// Specific gas constant, J/(kg·K).
+    GasConstant,
+    /// A change of crank angle per change of crank speed (ignition-timing slopes), s
+    /// (rad per rad/s); "deg/rpm" as the correlations print them.
+    AnglePerSpeed,
+    /// A pure number (ratios, exponents, factors), or a coefficient in the SI unit its field
+    /// names.
+    Number,
 }
 
 impl Dimension {
-    /// (unit, factor to SI) pairs; the first is the unit of a bare number.
+    /// (unit, factor to SI) pairs; the first is the unit of a bare number. Temperatures also
+    /// have an offset, see [`Dimension::offset`].
     fn units(self) -> &'static [(&'static str, f64)] {
         match self {
             Dimension::Length => &[("m", 1.0), ("mm", 1e-3), ("cm", 1e-2)],
@@ -38,6 +53,26 @@ impl Dimension {
                 ("kg m^2", 1.0),
                 ("g*cm^2", 1e-7),
             ],
+            Dimension::Pressure => &[
+                ("Pa", 1.0),
+                ("kPa", 1e3),
+                ("MPa", 1e6),
+                ("bar", 1e5),
+                ("atm", 101_325.0),
+            ],
+            Dimension::Temperature => &[("K", 1.0), ("°C", 1.0), ("degC", 1.0)],
+            Dimension::SpecificEnergy => &[("J/kg", 1.0), ("kJ/kg", 1e3), ("MJ/kg", 1e6)],
+            Dimension::GasConstant => &[("J/(kg*K)", 1.0), ("J/(kg·K)", 1.0), ("J/kgK", 1.0)],
+            Dimension::AnglePerSpeed => &[("s", 1.0), ("deg/rpm", 1.0 / 6.0)],
+            Dimension::Number => &[("", 1.0)],
+        }
+    }
+
+    /// What a unit adds after scaling: 273.15 K for Celsius, 0 otherwise.
+    fn offset(unit: &str) -> f64 {
+        match unit {
+            "°C" | "degC" => 273.15,
+            _ => 0.0,
         }
     }
 
@@ -50,24 +85,22 @@ impl Dimension {
 /// Converts a TOML value to SI. Errors say what was expected.
 pub fn to_si(value: &toml::Value, dim: Dimension) -> Result<f64, String> {
     let number = match value {
-        toml::Value::Float(x) => Some((*x, dim.units()[0].1)),
-        toml::Value::Integer(i) => Some((*i as f64, dim.units()[0].1)),
+        toml::Value::Float(x) => Some((*x, dim.units()[0].1, 0.0)),
+        toml::Value::Integer(i) => Some((*i as f64, dim.units()[0].1, 0.0)),
         toml::Value::String(s) => parse(s, dim)?,
         _ => None,
     };
-    let (x, factor) = number.ok_or_else(|| {
-        format!(
-            "expected a number in {} or a string with a unit, got {value}",
-            dim.default_unit()
-        )
+    let (x, factor, offset) = number.ok_or_else(|| match dim.default_unit() {
+        "" => format!("expected a number, got {value}"),
+        unit => format!("expected a number in {unit} or a string with a unit, got {value}"),
     })?;
     if !x.is_finite() {
         return Err(format!("must be a finite number, got {value}"));
     }
-    Ok(x * factor)
+    Ok(x * factor + offset)
 }
 
-fn parse(s: &str, dim: Dimension) -> Result<Option<(f64, f64)>, String> {
+fn parse(s: &str, dim: Dimension) -> Result<Option<(f64, f64, f64)>, String> {
     let s = s.trim();
     let split = s
         .find(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c)))
@@ -84,7 +117,7 @@ fn parse(s: &str, dim: Dimension) -> Result<Option<(f64, f64)>, String> {
     };
     let known = dim.units();
     match known.iter().find(|(u, _)| *u == unit) {
-        Some((_, f)) => Ok(Some((x, *f))),
+        Some((u, f)) => Ok(Some((x, *f, Dimension::offset(u)))),
         None => Err(format!(
             "unknown unit \"{unit}\" in \"{s}\"; accepted: {}",
             known.iter().map(|(u, _)| *u).collect::<Vec<_>>().join(", ")
@@ -118,6 +151,23 @@ mod tests {
             .unwrap_err()
             .contains("furlongs"));
         assert!(to_si(&toml::Value::Float(f64::NAN), Dimension::Length).is_err());
+        assert_relative_eq!(to_si(&v("12 MPa"), Dimension::Pressure).unwrap(), 12e6);
+        assert_relative_eq!(to_si(&v("1.5 bar"), Dimension::Pressure).unwrap(), 1.5e5);
+        assert_relative_eq!(to_si(&v("20 °C"), Dimension::Temperature).unwrap(), 293.15);
+        assert_relative_eq!(
+            to_si(&v("44 MJ/kg"), Dimension::SpecificEnergy).unwrap(),
+            44e6
+        );
+        assert_relative_eq!(
+            to_si(&toml::Value::Float(1.4), Dimension::Number).unwrap(),
+            1.4
+        );
+        assert!(to_si(&v("1.4 bar"), Dimension::Number).is_err());
+        // 1°/rpm = (π/180 rad)/(π/30 rad/s) = 1/6 s.
+        assert_relative_eq!(
+            to_si(&v("-0.0004 deg/rpm"), Dimension::AnglePerSpeed).unwrap(),
+            -0.0004 / 6.0
+        );
         assert!(to_si(&toml::Value::Boolean(true), Dimension::Length).is_err());
     }
 }

@@ -237,3 +237,300 @@ fn one_failing_case_does_not_stop_the_batch() {
             .starts_with('.')));
     }
 }
+
+const PUMP_GAS: &str = r#"
+[gas]
+model = "karhula_pump"
+compression_ratio = 12
+polytropic_exponent = 1.4
+filling = 1.07
+ambient_pressure = "1 bar"
+"#;
+
+#[test]
+fn bad_gas_inputs_name_the_gas_field() {
+    let pump = format!("{GOOD}{PUMP_GAS}");
+    let case = parse(Path::new("configs/good.toml"), &pump).unwrap();
+    assert_eq!(case.gas.unwrap().name(), "karhula_pump");
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "compression_ratio = 12",
+            "compression_ratio = 1",
+            &["gas.compression_ratio", "1", "greater than 1"],
+        ),
+        (
+            "compression_ratio = 12",
+            "compression_ratio = 0.5",
+            &["gas.compression_ratio", "0.5", "greater than 1"],
+        ),
+        (
+            "polytropic_exponent = 1.4",
+            "polytropic_exponent = 1.0",
+            &["gas.polytropic_exponent", "1", "greater than 1"],
+        ),
+        (
+            "polytropic_exponent = 1.4",
+            "polytropic_exponent = 0.9",
+            &["gas.polytropic_exponent", "0.9", "greater than 1"],
+        ),
+        (
+            "ambient_pressure = \"1 bar\"",
+            "ambient_pressure = \"-1 bar\"",
+            &["gas.ambient_pressure", "-1 bar", "positive"],
+        ),
+        (
+            "ambient_pressure = \"1 bar\"",
+            "ambient_pressure = \"1 furlong\"",
+            &["gas.ambient_pressure", "unknown unit", "furlong"],
+        ),
+        (
+            "filling = 1.07",
+            "filling = 0",
+            &["gas.filling", "0", "positive"],
+        ),
+        (
+            "model = \"karhula_pump\"",
+            "model = \"stirling\"",
+            &[
+                "gas.model",
+                "stirling",
+                "unknown gas model",
+                "karhula_engine",
+            ],
+        ),
+        (
+            "model = \"karhula_pump\"",
+            "model = \"karhula_engine\"",
+            &["gas.model", "engine", "machine = \"engine\""],
+        ),
+        (
+            "filling = 1.07",
+            "filling = 1.07\npeak_pressure = \"12 MPa\"",
+            &[
+                "gas.peak_pressure",
+                "not an input of gas.model = \"karhula_pump\"",
+            ],
+        ),
+        (
+            "compression_ratio = 12\n",
+            "",
+            &["gas.compression_ratio", "required"],
+        ),
+    ];
+    for (from, to, parts) in cases {
+        assert!(
+            pump.contains(from),
+            "test set-up: {from:?} not in the pump case"
+        );
+        assert_mentions(&error_of(&pump.replacen(from, to, 1)), parts);
+    }
+
+    let engine = format!(
+        "{}{PUMP_GAS}peak_pressure = \"12 MPa\"\ncombustion_delay = 9.5\n",
+        GOOD.replace("machine = \"pump\"", "machine = \"engine\"")
+    )
+    .replace("karhula_pump", "karhula_engine");
+    parse(Path::new("configs/good.toml"), &engine).unwrap();
+    for (from, to, parts) in [
+        (
+            "peak_pressure = \"12 MPa\"",
+            "peak_pressure = \"50 kPa\"",
+            &["gas.peak_pressure", "50 kPa", "exceed ambient_pressure"][..],
+        ),
+        (
+            "combustion_delay = 9.5",
+            "combustion_delay = -3",
+            &["gas.combustion_delay", "-3", "0 to 180"][..],
+        ),
+        (
+            "combustion_delay = 9.5\n",
+            "",
+            &["gas.combustion_delay", "required"][..],
+        ),
+    ] {
+        assert_mentions(&error_of(&engine.replacen(from, to, 1)), parts);
+    }
+}
+
+/// A gas run's CSV carries the pressure, the gas torque and the totals, and its summary the
+/// gas and total metrics.
+#[test]
+fn gas_results_are_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("pump.toml");
+    std::fs::write(&file, format!("{GOOD}{PUMP_GAS}")).unwrap();
+    let out = dir.path().join("out");
+    let report = cardan_runner::run_paths(&[file], &out).unwrap();
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("good/summary.json")).unwrap())
+            .unwrap();
+    assert_eq!(summary["gas_model"], "karhula_pump");
+    let metrics = &summary["mechanisms"]["cardan_gear"]["metrics"];
+    for m in [
+        "cylinder_pressure_max",
+        "gas_force_max",
+        "gas_torque_max",
+        "gas_work",
+        "gas_torque_mean",
+        "gas_power_mean",
+        "total_crank_pin_force_max",
+        "total_main_pin_force_max",
+        "total_piston_side_force_max",
+        "total_torque_max",
+        "total_work",
+        "total_torque_mean",
+        "total_power_mean",
+    ] {
+        assert!(metrics[m].is_number(), "summary lacks {m}");
+    }
+    assert!(metrics["cylinder_pressure_max"].as_f64().unwrap() > 3e6);
+    let csv = std::fs::read_to_string(out.join("good/cardan_gear.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|c| *c == name).unwrap();
+    let (p, gas, total, inertial) = (
+        col("cylinder_pressure_pa"),
+        col("gas_torque_nm"),
+        col("total_torque_nm"),
+        col("inertial_torque_nm"),
+    );
+    for line in lines {
+        let cells: Vec<&str> = line.split(',').collect();
+        assert_eq!(cells.len(), header.len());
+        let x = |k: usize| cells[k].parse::<f64>().unwrap();
+        assert!(x(p) >= 1e5 * 0.999);
+        assert!((x(total) - x(gas) - x(inertial)).abs() <= 1e-9 * x(total).abs().max(1.0));
+    }
+}
+
+#[test]
+fn bad_compressor_inputs_name_the_gas_field() {
+    let good = format!(
+        "{GOOD}{}",
+        r#"
+[gas]
+model = "compressor"
+suction_pressure = "1 bar"
+suction_temperature = "20 °C"
+delivery_pressure = "8 bar"
+clearance_ratio = 0.05
+compression_exponent = 1.3
+"#
+    );
+    let case = parse(Path::new("configs/good.toml"), &good).unwrap();
+    assert_eq!(case.gas.unwrap().name(), "compressor");
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "delivery_pressure = \"8 bar\"",
+            "delivery_pressure = \"0.5 bar\"",
+            &["gas.delivery_pressure", "0.5 bar", "above suction_pressure"],
+        ),
+        (
+            "delivery_pressure = \"8 bar\"",
+            "delivery_pressure = \"800 bar\"",
+            &["gas.delivery_pressure", "800 bar", "delivers nothing"],
+        ),
+        (
+            "suction_pressure = \"1 bar\"",
+            "suction_pressure = \"-1 bar\"",
+            &["gas.suction_pressure", "-1 bar", "positive"],
+        ),
+        (
+            "suction_temperature = \"20 °C\"",
+            "suction_temperature = \"-300 °C\"",
+            &["gas.suction_temperature", "-300 °C", "positive"],
+        ),
+        (
+            "clearance_ratio = 0.05",
+            "clearance_ratio = -0.05",
+            &["gas.clearance_ratio", "-0.05", "negative"],
+        ),
+        (
+            "compression_exponent = 1.3",
+            "compression_exponent = 0.8",
+            &["gas.compression_exponent", "0.8", "at least 1"],
+        ),
+        (
+            "compression_exponent = 1.3",
+            "compression_exponent = 1.3\nexpansion_exponent = 0.5",
+            &["gas.expansion_exponent", "0.5", "at least 1"],
+        ),
+        (
+            "compression_exponent = 1.3",
+            "compression_exponent = 1.3\ncompression_ratio = 12",
+            &[
+                "gas.compression_ratio",
+                "not an input of gas.model = \"compressor\"",
+            ],
+        ),
+    ];
+    for (from, to, parts) in cases {
+        assert!(
+            good.contains(from),
+            "test set-up: {from:?} not in the compressor case"
+        );
+        assert_mentions(&error_of(&good.replacen(from, to, 1)), parts);
+    }
+}
+
+#[test]
+fn bad_closed_cycle_inputs_name_the_gas_field() {
+    let good = format!(
+        "{}{}",
+        GOOD.replace("machine = \"pump\"", "machine = \"engine\""),
+        r#"
+[gas]
+model = "closed_cycle"
+compression_ratio = 10
+lambda = 1.0
+combustion_start_per_speed = "-0.0004 deg/rpm"
+"#
+    );
+    let case = parse(Path::new("configs/good.toml"), &good).unwrap();
+    assert_eq!(case.gas.unwrap().name(), "closed_cycle");
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "compression_ratio = 10",
+            "compression_ratio = 0.9",
+            &["gas.compression_ratio", "0.9", "greater than 1"],
+        ),
+        ("lambda = 1.0", "lambda = 0", &["gas.lambda", "0"]),
+        (
+            "lambda = 1.0",
+            "ambient_pressure = \"-1 bar\"",
+            &["gas.ambient_pressure", "-1 bar"],
+        ),
+        (
+            "lambda = 1.0",
+            "wall_temperature = \"-10 K\"",
+            &["gas.wall_temperature", "-10 K"],
+        ),
+        ("lambda = 1.0", "gamma = 1.0", &["gas.gamma", "1"]),
+        (
+            "lambda = 1.0",
+            "exhaust_opening = \"90 deg\"",
+            &["gas.exhaust_opening", "90 deg"],
+        ),
+        (
+            "combustion_start_per_speed = \"-0.0004 deg/rpm\"",
+            "combustion_start_per_speed = \"-0.0004 rpm\"",
+            &["gas.combustion_start_per_speed", "unknown unit", "deg/rpm"],
+        ),
+        (
+            "lambda = 1.0",
+            "filling = 1.0",
+            &[
+                "gas.filling",
+                "not an input of gas.model = \"closed_cycle\"",
+            ],
+        ),
+    ];
+    for (from, to, parts) in cases {
+        assert!(
+            good.contains(from),
+            "test set-up: {from:?} not in the closed-cycle case"
+        );
+        assert_mentions(&error_of(&good.replacen(from, to, 1)), parts);
+    }
+}

@@ -23,23 +23,16 @@ fn cycle(c: &mut Criterion) {
         let masses = MassProperties::estimate(kind, 0.06, 0.14, 0.12, Material::Steel);
         c.bench_function(&format!("{name}_7200_steps"), |b| {
             b.iter(|| {
-                let steps = run_cycle(black_box(mech), &masses, black_box(&grid), |_| 0.0);
+                let steps = run_cycle(black_box(mech), &masses, black_box(&grid), None);
                 black_box(Summary::of_cycle(mech, &masses, &steps))
             })
         });
-        let steps = run_cycle(mech, &masses, &grid, |_| 0.0);
+        let steps = run_cycle(mech, &masses, &grid, None);
         c.bench_function(&format!("{name}_summary_only"), |b| {
             b.iter(|| black_box(Summary::of_cycle(mech, &masses, black_box(&steps))))
         });
         c.bench_function(&format!("{name}_steps_only"), |b| {
-            b.iter(|| {
-                black_box(run_cycle(
-                    black_box(mech),
-                    &masses,
-                    black_box(&grid),
-                    |_| 0.0,
-                ))
-            })
+            b.iter(|| black_box(run_cycle(black_box(mech), &masses, black_box(&grid), None)))
         });
     }
 }

@@ -78,3 +78,23 @@ pub fn kinetic_energy(kind: MechanismKind, state: &KinematicState, masses: &Mass
 pub(crate) fn cross(z: C, f: C) -> f64 {
     z.re * f.im - z.im * f.re
 }
+
+/// Superposition of loads (Karhula A7.1: the summed lossless dynamics are the sum of the
+/// inertial and the gas loads). The centre of percussion, an inertial property, is kept from
+/// the left operand.
+impl std::ops::Add for Loads {
+    type Output = Loads;
+
+    fn add(self, o: Loads) -> Loads {
+        Loads {
+            main_bearing: self.main_bearing + o.main_bearing,
+            crank_pin: self.crank_pin + o.crank_pin,
+            piston_pin: self.piston_pin + o.piston_pin,
+            piston_side: self.piston_side + o.piston_side,
+            gear_mesh: self.gear_mesh + o.gear_mesh,
+            crank_torque: self.crank_torque + o.crank_torque,
+            torque_by_link: [0, 1, 2].map(|k| self.torque_by_link[k] + o.torque_by_link[k]),
+            rod_percussion_centre: self.rod_percussion_centre,
+        }
+    }
+}

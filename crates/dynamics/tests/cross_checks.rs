@@ -92,12 +92,16 @@ fn crank_torque_work_balances_kinetic_energy_and_gas_work() {
                     angular_acceleration: alpha,
                 };
                 let grid = motion.grid(start, end, 20_000).unwrap();
-                let force = |k: usize| if with_gas { gas(grid[k].angle) } else { 0.0 };
-                let steps = run_cycle(mech.as_ref(), &masses, &grid, force);
+                let forces: Vec<f64> = grid
+                    .iter()
+                    .map(|g| if with_gas { gas(g.angle) } else { 0.0 })
+                    .collect();
+                let force = |k: usize| forces[k];
+                let steps = run_cycle(mech.as_ref(), &masses, &grid, Some(&forces));
                 let (mut work, mut gas_work, mut scale) = (0.0, 0.0, 0.0);
                 for (k, w) in steps.windows(2).enumerate() {
                     let dth = w[1].kinematics.crank.angle - w[0].kinematics.crank.angle;
-                    let t = 0.5 * (w[0].loads.crank_torque + w[1].loads.crank_torque);
+                    let t = 0.5 * (w[0].total().crank_torque + w[1].total().crank_torque);
                     work += t * dth;
                     scale += t.abs() * dth;
                     // The drive pushes the piston against the gas: ∫ F·dx with F towards the crank.

@@ -73,6 +73,12 @@ pub trait Mechanism: Sync {
     /// Piston pin position along the cylinder axis at bottom dead centre, m.
     fn piston_bottom(&self) -> f64;
 
+    /// Crank angle of top dead centre, where the piston pin reaches [`Mechanism::piston_top`],
+    /// rad. In-line mechanisms have it at π/2 (the cylinder lies along +y).
+    fn top_dead_centre(&self) -> f64 {
+        std::f64::consts::FRAC_PI_2
+    }
+
     /// Stroke, m.
     fn stroke(&self) -> f64 {
         self.piston_top() - self.piston_bottom()

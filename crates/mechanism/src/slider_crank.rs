@@ -140,6 +140,12 @@ impl Mechanism for SliderCrank {
     fn piston_bottom(&self) -> f64 {
         ((self.rod - self.crank).powi(2) - self.pin_offset.powi(2)).sqrt()
     }
+
+    /// Crank and rod in line: the crank pin lies on the line from the main bearing to the
+    /// piston pin (e, x_TDC), so cos θ_TDC = e/(Z_AA0 + Z_BA).
+    fn top_dead_centre(&self) -> f64 {
+        (self.pin_offset / (self.rod + self.crank)).acos()
+    }
 }
 
 #[cfg(test)]
@@ -235,6 +241,18 @@ mod tests {
         // With an offset the stroke grows slightly: sqrt((l+r)²−e²) − sqrt((l−r)²−e²).
         let off = machine(0.02);
         assert!(off.stroke() > 0.12);
+        // Top dead centre: the pin reaches piston_top there, with zero dx/dθ; an offset
+        // towards +x turns it back from π/2.
+        for m in [machine(0.0), off, machine(-0.02)] {
+            let tdc = m.state(CrankState::new(m.top_dead_centre(), 1.0, 0.0, 0.0));
+            assert_relative_eq!(tdc.piston.position, m.piston_top(), max_relative = 1e-14);
+            assert!(
+                tdc.piston.dx_dtheta.abs() < 1e-14,
+                "{}",
+                tdc.piston.dx_dtheta
+            );
+        }
+        assert!(off.top_dead_centre() < std::f64::consts::FRAC_PI_2);
     }
 
     #[test]

@@ -50,7 +50,7 @@ pub fn cycle(
         angular_acceleration: alpha,
     };
     let grid = motion.grid(PI / 2.0, 4.5 * PI, steps).unwrap();
-    let steps = run_cycle(mech.as_ref(), masses, &grid, |_| 0.0);
+    let steps = run_cycle(mech.as_ref(), masses, &grid, None);
     let summary = Summary::of_cycle(mech.as_ref(), masses, &steps);
     (steps, summary)
 }

@@ -1,0 +1,170 @@
+//! The cylinder and the chamber a gas model works in (Karhula 2008, A6.1.1.1-A6.1.1.10).
+
+use crate::{require, GasError};
+use cardan_mechanism::{CrankState, Mechanism};
+use std::f64::consts::PI;
+
+/// A cylinder with flat piston crowns and a flat head (or a second piston in its place).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cylinder {
+    /// Bore, m.
+    pub bore: f64,
+    /// Area of one piston crown A_pis = π·B²/4, m².
+    pub area: f64,
+    /// Swept volume of the chamber V_stroke (A6.1.1.2), m³: A_pis·stroke for one piston,
+    /// the sum over the pistons for an opposed-piston chamber.
+    pub swept_volume: f64,
+    /// Clearance volume V_comp at the top dead centre (A6.1.1.3), m³.
+    pub clearance_volume: f64,
+    /// Pistons sharing the chamber: 1, or 2 for the opposed-piston layout of Nunes (2017,
+    /// note section 1: identical mirrored crank trains, no head).
+    pub pistons: u32,
+}
+
+impl Cylinder {
+    /// A cylinder of `bore` (m) and `swept_volume` (m³) with compression ratio
+    /// ε = (V_stroke + V_comp)/V_comp, so V_comp = V_stroke/(ε − 1) (A6.1.1.3).
+    pub fn with_compression_ratio(
+        bore: f64,
+        swept_volume: f64,
+        compression_ratio: f64,
+    ) -> Result<Self, GasError> {
+        require(
+            "compression_ratio",
+            compression_ratio,
+            compression_ratio > 1.0,
+            "must be greater than 1",
+        )?;
+        Self::with_clearance(bore, swept_volume, swept_volume / (compression_ratio - 1.0))
+    }
+
+    /// A cylinder of `bore` (m) and `swept_volume` (m³) with a clearance volume (m³) that may
+    /// be zero (an ideal compressor).
+    pub fn with_clearance(
+        bore: f64,
+        swept_volume: f64,
+        clearance_volume: f64,
+    ) -> Result<Self, GasError> {
+        require("bore", bore, bore > 0.0, "must be positive")?;
+        require(
+            "swept_volume",
+            swept_volume,
+            swept_volume > 0.0,
+            "must be positive",
+        )?;
+        require(
+            "clearance_volume",
+            clearance_volume,
+            clearance_volume >= 0.0,
+            "must not be negative",
+        )?;
+        Ok(Self {
+            bore,
+            area: PI / 4.0 * bore * bore,
+            swept_volume,
+            clearance_volume,
+            pistons: 1,
+        })
+    }
+
+    /// The same chamber shared by `pistons` pistons (the swept volume stays the chamber's).
+    pub fn with_pistons(self, pistons: u32) -> Result<Self, GasError> {
+        require(
+            "pistons",
+            f64::from(pistons),
+            pistons >= 1,
+            "must be at least 1",
+        )?;
+        Ok(Self { pistons, ..self })
+    }
+
+    /// Stroke of each piston, V_stroke/(pistons·A_pis), m.
+    pub fn stroke(&self) -> f64 {
+        self.swept_volume / (f64::from(self.pistons) * self.area)
+    }
+
+    /// Largest volume V_unc = V_stroke + V_comp (A6.1.1.5), m³.
+    pub fn max_volume(&self) -> f64 {
+        self.swept_volume + self.clearance_volume
+    }
+
+    /// Compression ratio ε = V_unc/V_comp (infinite without clearance).
+    pub fn compression_ratio(&self) -> f64 {
+        self.max_volume() / self.clearance_volume
+    }
+
+    /// The volume curve of this cylinder when each of its pistons is moved by `mechanism`:
+    /// V(θ) = V_comp + pistons·A_pis·(x_TDC − x(θ)) and dV/dθ = −pistons·A_pis·dx/dθ
+    /// (A6.1.1.7-A6.1.1.10 with h_deck eliminated). The swept volume must be
+    /// pistons·A_pis·stroke for the curve to span it.
+    pub fn volume_curve<'a>(
+        &self,
+        mechanism: &'a dyn Mechanism,
+    ) -> impl Fn(f64) -> Volume + Sync + 'a {
+        let (clearance, area) = (self.clearance_volume, f64::from(self.pistons) * self.area);
+        let top = mechanism.piston_top();
+        move |theta| {
+            let p = mechanism
+                .state(CrankState::new(theta, 1.0, 0.0, 0.0))
+                .piston;
+            Volume {
+                volume: clearance + area * (top - p.position),
+                rate: -area * p.dx_dtheta,
+            }
+        }
+    }
+
+    /// Runs `f` on the chamber of this cylinder whose pistons `mechanism` moves, with the cycle
+    /// opening at the mechanism's top dead centre.
+    pub fn with_chamber<R>(self, mechanism: &dyn Mechanism, f: impl FnOnce(&Chamber) -> R) -> R {
+        let volume = self.volume_curve(mechanism);
+        f(&Chamber {
+            cylinder: self,
+            tdc_angle: mechanism.top_dead_centre(),
+            volume: &volume,
+        })
+    }
+
+    /// Gas-side wall area at volume `v`, m²: two flat ends (crown and head, or two crowns)
+    /// and the liner between them, 2·A_pis + π·B·V/A_pis (Nunes 2017, L700-703).
+    pub fn wall_area(&self, v: f64) -> f64 {
+        2.0 * self.area + PI * self.bore * v / self.area
+    }
+}
+
+/// Chamber volume and its rate at one crank angle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Volume {
+    /// V, m³.
+    pub volume: f64,
+    /// dV/dθ, m³/rad.
+    pub rate: f64,
+}
+
+/// The working chamber a gas model sees: the cylinder, the volume curve of the mechanism that
+/// moves its piston(s), and where the cycle starts.
+#[derive(Clone, Copy)]
+pub struct Chamber<'a> {
+    pub cylinder: Cylinder,
+    /// Crank angle of the top dead centre that opens the cycle (the start of the intake or
+    /// suction stroke), rad.
+    pub tdc_angle: f64,
+    /// V(θ) and dV/dθ for any crank angle θ (rad).
+    pub volume: &'a (dyn Fn(f64) -> Volume + Sync),
+}
+
+impl Chamber<'_> {
+    /// Crank angle from the opening top dead centre, in [0, 4π) (a four-stroke cycle), rad.
+    pub fn cycle_angle(&self, theta: f64) -> f64 {
+        (theta - self.tdc_angle).rem_euclid(4.0 * PI)
+    }
+}
+
+impl std::fmt::Debug for Chamber<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Chamber")
+            .field("cylinder", &self.cylinder)
+            .field("tdc_angle", &self.tdc_angle)
+            .finish_non_exhaustive()
+    }
+}

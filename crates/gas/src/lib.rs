@@ -1,0 +1,71 @@
+//! Cylinder gas: pressure and piston force over the crank angle, on the volume curve of any
+//! mechanism.
+//!
+//! A model sees the machine only through its [`Chamber`]: the cylinder's size and V(θ), dV/dθ
+//! as a function of crank angle. It never needs to know which mechanism moves the piston, nor
+//! how many pistons share the chamber (the opposed-piston layout of Nunes 2017 has two and no
+//! head). Pressures are absolute, in Pa; the force on each piston is along the cylinder axis,
+//! positive towards the crankshaft, in N.
+
+pub mod closed_cycle;
+pub mod compressor;
+pub mod cylinder;
+pub mod karhula;
+
+pub use closed_cycle::ClosedCycle;
+pub use compressor::Compressor;
+pub use cylinder::{Chamber, Cylinder, Volume};
+pub use karhula::{KarhulaEngine, KarhulaPump, Polytropic};
+
+/// The gas over one run of crank angles.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct GasCycle {
+    /// Absolute cylinder pressure at each requested crank angle, Pa.
+    pub pressure: Vec<f64>,
+    /// Gas force on each piston along the cylinder axis, towards the crankshaft, at each
+    /// requested crank angle, N.
+    pub piston_force: Vec<f64>,
+    /// Results of the model per cycle (e.g. `imep` in Pa, `volumetric_efficiency` as a
+    /// fraction).
+    pub metrics: Vec<GasMetric>,
+}
+
+/// One result of a gas model per cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GasMetric {
+    /// Name, as written to summary.json.
+    pub name: &'static str,
+    /// SI unit ("1" for fractions).
+    pub unit: &'static str,
+    pub value: f64,
+}
+
+/// A gas model: what the gas does to the pistons over the crank angle.
+pub trait GasModel: Sync {
+    /// The gas at the crank angles `angles` (rad, increasing, any span) when the crank turns
+    /// at the mean speed `speed` (rad/s, used by speed-dependent models: heat transfer,
+    /// timing, mass flow).
+    fn cycle(&self, chamber: &Chamber, speed: f64, angles: &[f64]) -> Result<GasCycle, GasError>;
+}
+
+/// An impossible gas input: the field, its value and the rule it breaks.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{field} = {value}: {rule}")]
+pub struct GasError {
+    pub field: &'static str,
+    pub value: f64,
+    pub rule: &'static str,
+}
+
+pub(crate) fn require(
+    field: &'static str,
+    value: f64,
+    ok: bool,
+    rule: &'static str,
+) -> Result<f64, GasError> {
+    if ok && value.is_finite() {
+        Ok(value)
+    } else {
+        Err(GasError { field, value, rule })
+    }
+}

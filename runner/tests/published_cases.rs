@@ -1,0 +1,116 @@
+//! Shipped cases against published results, through the whole chain: case file, gas model on
+//! each mechanism's volume curve, dynamics, summary.
+
+use cardan_runner::run::MechanismRun;
+use cardan_runner::{case, run_case};
+use std::path::Path;
+
+fn run_shipped(name: &str) -> Vec<MechanismRun> {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../configs/{name}.toml"));
+    let runs = run_case(&case::load(&file).unwrap()).unwrap();
+    assert_eq!(runs.len(), 2, "{name} runs both mechanisms");
+    runs
+}
+
+fn within(name: &str, got: f64, want: f64, rel: f64) {
+    assert!(
+        (got / want - 1.0).abs() <= rel,
+        "{name}: got {got}, thesis {want}, tolerance {}%",
+        rel * 100.0
+    );
+}
+
+/// The summed lossless dynamics of the Karhula air pump (A7.1.1-60), inertial plus compression
+/// loads, against shared/reference/karhula-r60-l140.md, "Lossless totals, air pump, α = 0".
+/// Tolerances: 0.5 % on the total crank-pin forces (their peak is the gas force at TDC less
+/// the small inertial force, geometry-only at 3π and nearly so at 30π; we get 0.1 %) and 1 %
+/// on the peak total torques (the compression torque alone is 0.6 % above the thesis, see
+/// crates/gas/tests/karhula_gas.rs).
+#[test]
+fn karhula_pump_totals_match_the_thesis() {
+    // (case, [S crank-pin force, C crank-pin force, S torque, C torque])
+    let thesis = [
+        (
+            "karhula-pump-r60-l140-a0-w3pi",
+            [40840.0, 81680.0, 684.0, 576.0],
+        ),
+        (
+            "karhula-pump-r60-l140-a0-w30pi",
+            [39980.0, 80330.0, 682.0, 561.0],
+        ),
+    ];
+    for (name, [pin_s, pin_c, torque_s, torque_c]) in thesis {
+        for run in &run_shipped(name) {
+            let (pin, torque) = match run.case.kind.name() {
+                "slider_crank" => (pin_s, torque_s),
+                _ => (pin_c, torque_c),
+            };
+            let get = |m: &str| run.summary.get(m).unwrap();
+            let label = |q: &str| format!("{name} {} {q}", run.case.kind.name());
+            within(
+                &label("total crank-pin force"),
+                get("total_crank_pin_force_max"),
+                pin,
+                0.005,
+            );
+            within(
+                &label("total torque"),
+                get("total_torque_max"),
+                torque,
+                0.01,
+            );
+        }
+    }
+}
+
+/// Nunes (2017) §3.4.2-3.4.3 at 2000 rpm (shared/notes/nunes-2017-extraction.md, 4.2-4.3): the
+/// opposed-piston slider-crank (OPSCE) and geared hypocycloid (OPGHE) rows. The thesis's
+/// F_t = p·A + m_p·a is our cardan total piston-pin force (the rod moves with the piston); the
+/// slider-crank's rod force is F_t/cos φ, so its F_t is checked in crates/gas/tests. Tolerances
+/// as the issue sets them: 0.1 % on peaks, 0.5 % on the whole-engine mean torque (ours is
+/// 0.2-0.3 % above the thesis's at every speed; see the cardan-gas `closed_cycle` module).
+#[test]
+fn nunes_opposed_piston_engine_matches_the_thesis_at_2000_rpm() {
+    for run in &run_shipped("nunes-op-r26-l90-2000rpm") {
+        let get = |m: &str| run.summary.get(m).unwrap();
+        let kind = run.case.kind.name();
+        let label = |q: &str| format!("{kind} {q}");
+        let (p_max, torque_max, torque_mean) = match kind {
+            "slider_crank" => (8.707e6, 275.731, 36.284),
+            _ => (9.196e6, 243.5, 35.9),
+        };
+        within(
+            &label("peak pressure"),
+            get("cylinder_pressure_max"),
+            p_max,
+            0.001,
+        );
+        within(
+            &label("peak torque per piston"),
+            get("total_torque_max"),
+            torque_max,
+            0.001,
+        );
+        within(
+            &label("mean torque, engine"),
+            get("indicated_torque_mean"),
+            torque_mean,
+            0.005,
+        );
+        // The chamber's work is shared by its two crank trains.
+        within(
+            &label("work per crank train"),
+            -get("gas_work"),
+            get("indicated_work") / 2.0,
+            1e-3,
+        );
+        if kind == "cardan_gear" {
+            within(
+                &label("peak F_t"),
+                get("total_piston_pin_force_max"),
+                25730.0,
+                0.001,
+            );
+        }
+    }
+}
