@@ -60,12 +60,16 @@ impl GasCase {
                 Cylinder::with_compression_ratio(bore, swept_volume, e)
             }
             Clearance::ClearanceRatio(c) => {
-                Cylinder::with_clearance(bore, swept_volume, c * swept_volume).map_err(|e| {
-                    GasError {
+                // The case file gives the ratio, not the volume.
+                Cylinder::with_clearance(bore, swept_volume, c * swept_volume).map_err(|e| match e
+                    .field
+                {
+                    "clearance_volume" => GasError {
                         field: "clearance_ratio",
                         value: c,
                         ..e
-                    }
+                    },
+                    _ => e,
                 })
             }
         }

@@ -24,15 +24,6 @@ impl Step {
     }
 }
 
-const NO_MASS: MassProperties = MassProperties {
-    crankshaft_inertia: 0.0,
-    wheel_inertia: 0.0,
-    rod_mass: 0.0,
-    rod_inertia: 0.0,
-    rod_cg: 0.0,
-    piston_mass: 0.0,
-};
-
 /// Kinematics and loads at every crank state of `grid`; `piston_forces`, if given, holds the
 /// gas force at each grid point (N, towards the crankshaft). The rod point of `mechanism` must
 /// be the rod's centre of gravity `masses.rod_cg`.
@@ -48,7 +39,8 @@ pub fn run_cycle(
         .map(|(k, &crank)| {
             let kinematics = mechanism.state(crank);
             let inertial = loads(kind, &kinematics, masses, 0.0);
-            let gas = piston_forces.map(|f| (f[k], loads(kind, &kinematics, &NO_MASS, f[k])));
+            let gas = piston_forces
+                .map(|f| (f[k], loads(kind, &kinematics, &MassProperties::NONE, f[k])));
             Step {
                 kinematics,
                 inertial,

@@ -69,6 +69,16 @@ pub struct MassProperties {
 pub const FLYWHEEL_RADIAL_MARGIN: f64 = 0.030;
 
 impl MassProperties {
+    /// Massless links: the loads of an applied force alone (the gas loads of Karhula A6.2.1).
+    pub const NONE: MassProperties = MassProperties {
+        crankshaft_inertia: 0.0,
+        wheel_inertia: 0.0,
+        rod_mass: 0.0,
+        rod_inertia: 0.0,
+        rod_cg: 0.0,
+        piston_mass: 0.0,
+    };
+
     /// Default mass properties for a machine of slider-crank crank length `crank`, rod length
     /// `rod` and bore `bore` (m), with the rod of `rod_material`.
     ///

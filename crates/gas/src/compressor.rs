@@ -199,8 +199,13 @@ impl Compressor {
     /// max(p_d·(V_c/V)^n_e, p_s), which is p_s without clearance. Volumes outside [V_c, V_1]
     /// (round-off) stay within [p_s, p_d].
     pub fn pressure(&self, cylinder: &Cylinder, at: Volume) -> f64 {
+        self.pressure_on(&self.volumes(cylinder), at)
+    }
+
+    /// [`Compressor::pressure`] with the diagram's volumes V_1..V_4 already known.
+    fn pressure_on(&self, volumes: &[f64; 4], at: Volume) -> f64 {
         let (ps, pd) = (self.suction_pressure, self.delivery_pressure);
-        let [v1, v2, vc, v4] = self.volumes(cylinder);
+        let [v1, v2, vc, v4] = *volumes;
         let v = at.volume;
         let p = if at.rate < 0.0 {
             if v <= v2 {
@@ -318,11 +323,15 @@ impl GasModel for Compressor {
     fn cycle(&self, chamber: &Chamber, speed: f64, angles: &[f64]) -> Result<GasCycle, GasError> {
         let c = &chamber.cylinder;
         let (steady, _) = self.steady_state(c)?;
-        let work = self.indicated_work(chamber)?;
+        // The diagram is a function of V alone, so on any volume curve that rises and falls
+        // once per revolution its work is the closed form (the tests check it against
+        // `indicated_work` on both mechanisms).
+        let work = self.closed_form_work(c)?;
         let cycles_per_second = speed / (2.0 * PI);
         let mut gas = GasCycle::default();
+        let volumes = self.volumes(c);
         for &theta in angles {
-            let p = self.pressure(c, (chamber.volume)(theta));
+            let p = self.pressure_on(&volumes, (chamber.volume)(theta));
             gas.pressure.push(p);
             gas.piston_force.push((p - self.suction_pressure) * c.area);
         }

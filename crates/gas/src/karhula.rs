@@ -79,33 +79,32 @@ impl Polytropic {
     }
 }
 
-/// Pressure from a function of the crank angle; the force is p·A_pis on the closed strokes
-/// (A6.2.1.1, A6.2.1.13) and zero on the open ones.
-fn closed_strokes(
-    chamber: &Chamber,
-    angles: &[f64],
-    ambient_pressure: f64,
-    closed_pressure: impl Fn(usize, f64) -> Option<f64>,
-) -> GasCycle {
-    let mut cycle = GasCycle::default();
-    for &theta in angles {
-        let closed = closed_pressure(stroke(chamber, theta), theta);
-        cycle.pressure.push(closed.unwrap_or(ambient_pressure));
-        cycle
-            .piston_force
-            .push(closed.map_or(0.0, |p| p * chamber.cylinder.area));
+impl Polytropic {
+    /// The gas over `angles`: `closed_pressure(stroke, θ)` on the closed strokes, where the
+    /// force is p·A_pis (A6.2.1.1, A6.2.1.13); ambient pressure and no force on the open ones.
+    fn closed_strokes(
+        &self,
+        chamber: &Chamber,
+        angles: &[f64],
+        closed_pressure: impl Fn(usize, f64) -> Option<f64>,
+    ) -> Result<GasCycle, GasError> {
+        let cylinder = &chamber.cylinder;
+        require(
+            "compression_ratio",
+            cylinder.compression_ratio(),
+            cylinder.clearance_volume > 0.0,
+            "must be finite: the polytropic pressure needs a clearance volume",
+        )?;
+        let mut cycle = GasCycle::default();
+        for &theta in angles {
+            let closed = closed_pressure(stroke(chamber, theta), theta);
+            cycle.pressure.push(closed.unwrap_or(self.ambient_pressure));
+            cycle
+                .piston_force
+                .push(closed.map_or(0.0, |p| p * cylinder.area));
+        }
+        Ok(cycle)
     }
-    cycle
-}
-
-fn check_clearance(cylinder: &Cylinder) -> Result<(), GasError> {
-    require(
-        "compression_ratio",
-        cylinder.compression_ratio(),
-        cylinder.clearance_volume > 0.0,
-        "must be finite: the polytropic pressure needs a clearance volume",
-    )
-    .map(|_| ())
 }
 
 /// Air pump with the valves closed on the compression strokes (Karhula ch. 6.2).
@@ -116,17 +115,10 @@ pub struct KarhulaPump {
 
 impl GasModel for KarhulaPump {
     fn cycle(&self, chamber: &Chamber, _speed: f64, angles: &[f64]) -> Result<GasCycle, GasError> {
-        check_clearance(&chamber.cylinder)?;
         let c = &chamber.cylinder;
-        Ok(closed_strokes(
-            chamber,
-            angles,
-            self.gas.ambient_pressure,
-            |stroke, theta| {
-                matches!(stroke, 1 | 3)
-                    .then(|| self.gas.pressure(c, (chamber.volume)(theta).volume))
-            },
-        ))
+        self.gas.closed_strokes(chamber, angles, |stroke, theta| {
+            matches!(stroke, 1 | 3).then(|| self.gas.pressure(c, (chamber.volume)(theta).volume))
+        })
     }
 }
 
@@ -178,18 +170,13 @@ impl KarhulaEngine {
 
 impl GasModel for KarhulaEngine {
     fn cycle(&self, chamber: &Chamber, _speed: f64, angles: &[f64]) -> Result<GasCycle, GasError> {
-        check_clearance(&chamber.cylinder)?;
         let c = &chamber.cylinder;
-        Ok(closed_strokes(
-            chamber,
-            angles,
-            self.gas.ambient_pressure,
-            |stroke, theta| match stroke {
+        self.gas
+            .closed_strokes(chamber, angles, |stroke, theta| match stroke {
                 1 => Some(self.gas.pressure(c, (chamber.volume)(theta).volume)),
                 2 => Some(self.combustion_pressure(chamber, theta)),
                 _ => None,
-            },
-        ))
+            })
     }
 }
 

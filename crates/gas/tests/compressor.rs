@@ -166,14 +166,7 @@ fn dynamics_gas_work_is_the_pdv_work() {
                 c.indicated_work(ch).unwrap(),
             )
         });
-        let none = MassProperties {
-            crankshaft_inertia: 0.0,
-            wheel_inertia: 0.0,
-            rod_mass: 0.0,
-            rod_inertia: 0.0,
-            rod_cg: 0.07,
-            piston_mass: 0.0,
-        };
+        let none = MassProperties::NONE;
         let steps = run_cycle(mech.as_ref(), &none, &grid, Some(&gas.piston_force));
         let summary = Summary::of_cycle(mech.as_ref(), &none, &steps);
         let label = format!("{kind:?}");

@@ -39,6 +39,19 @@ struct Run {
     summary: Summary,
 }
 
+fn peak(r: &Run) -> f64 {
+    r.pressures.iter().copied().fold(0.0, f64::max)
+}
+
+/// Largest cardan-gear minus slider-crank pressure at the same crank angle.
+fn max_difference(s: &Run, c: &Run) -> f64 {
+    s.pressures
+        .iter()
+        .zip(&c.pressures)
+        .map(|(a, b)| b - a)
+        .fold(f64::MIN, f64::max)
+}
+
 /// The thesis cycle at constant ω = 200π, gas loads only (massless links).
 fn run(kind: MechanismKind, model: &dyn GasModel) -> Run {
     let mech = mechanism(kind);
@@ -50,14 +63,7 @@ fn run(kind: MechanismKind, model: &dyn GasModel) -> Run {
     let grid = motion.grid(PI / 2.0, 4.5 * PI, 14_400).unwrap();
     let angles: Vec<f64> = grid.iter().map(|g| g.angle).collect();
     let gas = with_chamber(mech.as_ref(), |ch| model.cycle(ch, 200.0 * PI, &angles)).unwrap();
-    let none = MassProperties {
-        crankshaft_inertia: 0.0,
-        wheel_inertia: 0.0,
-        rod_mass: 0.0,
-        rod_inertia: 0.0,
-        rod_cg: 0.07,
-        piston_mass: 0.0,
-    };
+    let none = MassProperties::NONE;
     let steps = run_cycle(mech.as_ref(), &none, &grid, Some(&gas.piston_force));
     Run {
         pressures: gas.pressure,
@@ -112,15 +118,9 @@ fn pump_matches_appendix_11_3_1() {
 
     let s = run(MechanismKind::SliderCrank, &pump);
     let c = run(MechanismKind::CardanGear, &pump);
-    let peak = |r: &Run| r.pressures.iter().cloned().fold(0.0, f64::max);
     within("S max pressure", peak(&s), 3.612e6, 0.001);
     within("C max pressure", peak(&c), 3.612e6, 0.001);
-    let dp = s
-        .pressures
-        .iter()
-        .zip(&c.pressures)
-        .map(|(a, b)| b - a)
-        .fold(f64::MIN, f64::max);
+    let dp = max_difference(&s, &c);
     within("max pressure difference C−S", dp, 0.3384e6, 0.01);
     within(
         "S max torque",
@@ -173,15 +173,9 @@ fn pump_matches_appendix_11_3_1() {
 fn engine_peaks_match_appendix_11_3_2() {
     let s = run(MechanismKind::SliderCrank, &engine());
     let c = run(MechanismKind::CardanGear, &engine());
-    let peak = |r: &Run| r.pressures.iter().cloned().fold(0.0, f64::max);
     within("S max combustion pressure", peak(&s), 12e6, 1e-4);
     within("C max combustion pressure", peak(&c), 12e6, 1e-4);
-    let dp = s
-        .pressures
-        .iter()
-        .zip(&c.pressures)
-        .map(|(a, b)| b - a)
-        .fold(f64::MIN, f64::max);
+    let dp = max_difference(&s, &c);
     within("max combustion pressure difference C−S", dp, 1.142e6, 0.02);
     within(
         "S max combustion torque",
