@@ -120,7 +120,8 @@ impl Summary {
         self.metrics.push(Metric { name, unit, value });
     }
 
-    /// Peaks, work, mean torque and mean power of one family of loads, under `prefix`.
+    /// Peaks, work, mean torque and mean power of one family of loads, under `names` (the six
+    /// peaks of [`LoadTotals`], then work, mean torque, mean power; an empty name is left out).
     fn push_loads(&mut self, names: [&'static str; 9], t: &LoadTotals, span: f64) {
         const UNITS: [&str; 6] = ["N", "N", "N", "N", "N", "N*m"];
         for ((name, unit), square) in names.iter().zip(UNITS).zip(t.peaks) {
@@ -129,9 +130,10 @@ impl Summary {
             }
         }
         self.push(names[6], "J", t.work);
-        self.push(names[7], "N*m", t.work / span); // (A5.2.1.38)
-                                                   // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at constant
-                                                   // speed this is the time average.
+        // (A5.2.1.38)
+        self.push(names[7], "N*m", t.work / span);
+        // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at constant
+        // speed this is the time average.
         self.push(names[8], "W", t.energy_flow / span);
     }
 
