@@ -1,7 +1,7 @@
 //! The cylinder and the chamber a gas model works in (Karhula 2008, A6.1.1.1-A6.1.1.10).
 
 use crate::{require, GasError};
-use cardan_mechanism::{CrankState, Mechanism};
+use cardan_mechanism::Mechanism;
 use std::f64::consts::PI;
 
 /// A cylinder with flat piston crowns and a flat head (or a second piston in its place).
@@ -104,12 +104,10 @@ impl Cylinder {
         let (clearance, area) = (self.clearance_volume, f64::from(self.pistons) * self.area);
         let top = mechanism.piston_top();
         move |theta| {
-            let p = mechanism
-                .state(CrankState::new(theta, 1.0, 0.0, 0.0))
-                .piston;
+            let (x, dx) = mechanism.piston_position(theta);
             Volume {
-                volume: clearance + area * (top - p.position),
-                rate: -area * p.dx_dtheta,
+                volume: clearance + area * (top - x),
+                rate: -area * dx,
             }
         }
     }

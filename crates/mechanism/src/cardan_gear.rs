@@ -106,6 +106,12 @@ impl Mechanism for CardanGear {
         }
     }
 
+    /// x = 2·Z_AA0·sin θ + Z_bBC (A4.2.2.60) and its θ-derivative, as in [`Mechanism::state`].
+    fn piston_position(&self, angle: f64) -> (f64, f64) {
+        let (s, c) = angle.sin_cos();
+        (2.0 * self.crank * s + self.rod, 2.0 * self.crank * c)
+    }
+
     fn piston_top(&self) -> f64 {
         self.rod + 2.0 * self.crank
     }

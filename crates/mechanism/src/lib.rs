@@ -67,6 +67,13 @@ pub trait Mechanism: Sync {
     /// Positions, velocities and accelerations of every link at one crank state.
     fn state(&self, crank: CrankState) -> KinematicState;
 
+    /// Piston-pin position x (m) and dx/dθ (m/rad) at crank angle `angle` (rad): what the
+    /// cylinder volume V(θ) and dV/dθ need, without the rest of the state.
+    fn piston_position(&self, angle: f64) -> (f64, f64) {
+        let p = self.state(CrankState::new(angle, 1.0, 0.0, 0.0)).piston;
+        (p.position, p.dx_dtheta)
+    }
+
     /// Piston pin position along the cylinder axis at top dead centre, m.
     fn piston_top(&self) -> f64;
 

@@ -133,6 +133,16 @@ impl Mechanism for SliderCrank {
         }
     }
 
+    /// x = Z_AA0·sin θ + Z_BA·sin θ_BA and its θ-derivative, as in [`Mechanism::state`].
+    fn piston_position(&self, angle: f64) -> (f64, f64) {
+        let (s, c) = angle.sin_cos();
+        let (cos_ba, sin_ba, d1, _) = self.rod_angles(c, s);
+        (
+            self.crank * s + self.rod * sin_ba,
+            self.crank * c + self.rod * d1 * cos_ba,
+        )
+    }
+
     fn piston_top(&self) -> f64 {
         ((self.rod + self.crank).powi(2) - self.pin_offset.powi(2)).sqrt()
     }
