@@ -27,7 +27,7 @@
 
 use cardan_gas::closed_cycle::ClosedCycle;
 use cardan_gas::{Chamber, Cylinder, GasCycle, GasModel};
-use cardan_mechanism::{CrankState, Mechanism, SliderCrank};
+use cardan_mechanism::{CardanGear, CrankState, Mechanism, SliderCrank};
 use std::f64::consts::PI;
 use std::sync::OnceLock;
 
@@ -108,22 +108,24 @@ fn row(chamber: &Chamber, kin: &[(f64, f64)], rpm: f64) -> Row {
     }
 }
 
-/// The thesis sweep, 10-8000 rpm by 10, computed once for all tests.
+/// A sweep of 10-8000 rpm by 10, as the thesis's, on one mechanism.
+fn sweep_of(mech: &dyn Mechanism) -> Vec<Row> {
+    let kin: Vec<(f64, f64)> = cycle_angles()
+        .iter()
+        .map(|&t| {
+            let p = mech.state(CrankState::new(t, 1.0, 0.0, 0.0)).piston;
+            (p.acceleration, p.dx_dtheta)
+        })
+        .collect();
+    with_chamber(mech, |ch| {
+        (1..=800).map(|k| row(ch, &kin, 10.0 * k as f64)).collect()
+    })
+}
+
+/// The OPSCE sweep, computed once for all tests.
 fn sweep() -> &'static [Row] {
     static SWEEP: OnceLock<Vec<Row>> = OnceLock::new();
-    SWEEP.get_or_init(|| {
-        let mech = opsce();
-        let kin: Vec<(f64, f64)> = cycle_angles()
-            .iter()
-            .map(|&t| {
-                let p = mech.state(CrankState::new(t, 1.0, 0.0, 0.0)).piston;
-                (p.acceleration, p.dx_dtheta)
-            })
-            .collect();
-        with_chamber(&mech, |ch| {
-            (1..=800).map(|k| row(ch, &kin, 10.0 * k as f64)).collect()
-        })
-    })
+    SWEEP.get_or_init(|| sweep_of(&opsce()))
 }
 
 fn at(rpm: f64) -> &'static Row {
@@ -131,7 +133,11 @@ fn at(rpm: f64) -> &'static Row {
 }
 
 fn argmax(value: impl Fn(&Row) -> f64) -> (&'static Row, f64) {
-    let r = sweep()
+    argmax_of(sweep(), value)
+}
+
+fn argmax_of(rows: &[Row], value: impl Fn(&Row) -> f64) -> (&Row, f64) {
+    let r = rows
         .iter()
         .max_by(|a, b| value(a).total_cmp(&value(b)))
         .unwrap();
@@ -508,4 +514,42 @@ fn a_finer_step_lowers_the_peak_pressure_as_the_note_says() {
             );
         }
     });
+}
+
+/// The geared hypocycloid of the same stroke (OPGHE, note §1: crank 13 mm, piston ±2r) on the
+/// same chamber and gas model, thesis §3.4.3 (L1311-1331): global peaks and the 2000 and
+/// 8000 rpm rows, at the tolerances of the OPSCE (0.1 % on peaks, 0.5 % on means). The thesis
+/// prints three or four digits here; its "2560 rpm" for the torque peak is the 2360 of its gear
+/// load (note §4.3), so the speed is checked to ±250 rpm around 2360.
+#[test]
+fn opghe_matches_section_3_4_3() {
+    let rows = sweep_of(&CardanGear::equivalent_to_slider_crank(0.026, 0.090, 0.045).unwrap());
+    let (r, p) = argmax_of(&rows, |r| r.pressure_max);
+    within("OPGHE peak cylinder pressure", p, 9.604e6, 0.001);
+    speed_near("OPGHE peak cylinder pressure", r.rpm, 450.0, 20.0);
+    let (r, f) = argmax_of(&rows, |r| r.force_max);
+    within("OPGHE peak piston force", f, 27140.0, 0.001);
+    speed_near("OPGHE peak piston force", r.rpm, 440.0, 20.0);
+    let (r, t) = argmax_of(&rows, |r| r.torque_max);
+    within("OPGHE peak torque per piston", t, 243.6, 0.001);
+    speed_near("OPGHE peak torque", r.rpm, 2360.0, 250.0);
+    let (r, t) = argmax_of(&rows, |r| r.metric("indicated_torque_mean"));
+    within("OPGHE peak mean torque", t, 37.1, 0.005);
+    speed_near("OPGHE peak mean torque", r.rpm, 6700.0, 1000.0);
+    for (rpm, p, f, tq, avg) in [
+        (2000.0, 9.196e6, 25730.0, 243.5, 35.9),
+        (8000.0, 7.263e6, 16337.0, 193.2, 37.0),
+    ] {
+        let r = rows.iter().find(|r| r.rpm == rpm).unwrap();
+        let name = |q: &str| format!("OPGHE {q} at {rpm} rpm");
+        within(&name("p_max"), r.pressure_max, p, 0.001);
+        within(&name("F_t,max"), r.force_max, f, 0.001);
+        within(&name("Tq_max"), r.torque_max, tq, 0.001);
+        within(
+            &name("Tq_avg"),
+            r.metric("indicated_torque_mean"),
+            avg,
+            0.005,
+        );
+    }
 }
