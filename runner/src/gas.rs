@@ -53,26 +53,24 @@ impl GasCase {
         }
     }
 
-    /// The cylinder of `bore` (m) sweeping `swept_volume` (m³) with this case's clearance.
-    pub fn cylinder(&self, bore: f64, swept_volume: f64) -> Result<Cylinder, GasError> {
+    /// The cylinder of `bore` (m) shared by `pistons` pistons of `stroke` (m) each, with this
+    /// case's clearance.
+    pub fn cylinder(&self, bore: f64, stroke: f64, pistons: u32) -> Result<Cylinder, GasError> {
+        let swept = f64::from(pistons) * std::f64::consts::PI / 4.0 * bore * bore * stroke;
         match self.clearance {
-            Clearance::CompressionRatio(e) => {
-                Cylinder::with_compression_ratio(bore, swept_volume, e)
-            }
-            Clearance::ClearanceRatio(c) => {
-                // The case file gives the ratio, not the volume.
-                Cylinder::with_clearance(bore, swept_volume, c * swept_volume).map_err(|e| match e
-                    .field
-                {
+            Clearance::CompressionRatio(e) => Cylinder::with_compression_ratio(bore, swept, e),
+            // The case file gives the ratio, not the volume.
+            Clearance::ClearanceRatio(c) => Cylinder::with_clearance(bore, swept, c * swept)
+                .map_err(|e| match e.field {
                     "clearance_volume" => GasError {
                         field: "clearance_ratio",
                         value: c,
                         ..e
                     },
                     _ => e,
-                })
-            }
-        }
+                }),
+        }?
+        .with_pistons(pistons)
     }
 }
 
@@ -329,7 +327,7 @@ pub(crate) fn parse(
     let gas = GasCase { model, clearance };
     // The cylinder rules (compression ratio above 1, a compressor that delivers) do not
     // depend on its size.
-    let cylinder = gas.cylinder(1.0, 1.0).map_err(|e| f.broken(e))?;
+    let cylinder = gas.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
     if let GasModelCase::Compressor(c) = &gas.model {
         c.steady_state(&cylinder).map_err(|e| f.broken(e))?;
     }

@@ -28,8 +28,6 @@ fn gas_cycle(
         return Ok(None);
     };
     let mech = m.mechanism();
-    let pistons = case.geometry.pistons;
-    let area = std::f64::consts::PI / 4.0 * case.geometry.bore.powi(2);
     let failed = |e: cardan_gas::GasError| {
         format!(
             "{}: case \"{}\": {}: gas.{e}",
@@ -39,11 +37,7 @@ fn gas_cycle(
         )
     };
     let cylinder = gas
-        .cylinder(
-            case.geometry.bore,
-            f64::from(pistons) * area * mech.stroke(),
-        )
-        .and_then(|c| c.with_pistons(pistons))
+        .cylinder(case.geometry.bore, mech.stroke(), case.geometry.pistons)
         .map_err(failed)?;
     let angles: Vec<f64> = grid.iter().map(|g| g.angle).collect();
     // The mean crank speed over the run: the speed of a steady run.

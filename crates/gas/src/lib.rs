@@ -30,6 +30,16 @@ pub struct GasCycle {
     pub metrics: Vec<GasMetric>,
 }
 
+impl GasCycle {
+    /// The value of the metric `name`, if the model gave it.
+    pub fn metric(&self, name: &str) -> Option<f64> {
+        self.metrics
+            .iter()
+            .find(|m| m.name == name)
+            .map(|m| m.value)
+    }
+}
+
 /// One result of a gas model per cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GasMetric {

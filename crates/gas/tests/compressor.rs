@@ -47,11 +47,8 @@ fn with_harmonic<R>(cylinder: Cylinder, f: impl FnOnce(&Chamber) -> R) -> R {
 }
 
 fn metric(gas: &GasCycle, name: &str) -> f64 {
-    gas.metrics
-        .iter()
-        .find(|m| m.name == name)
+    gas.metric(name)
         .unwrap_or_else(|| panic!("no metric {name}"))
-        .value
 }
 
 fn close(name: &str, got: f64, want: f64, rel: f64) {

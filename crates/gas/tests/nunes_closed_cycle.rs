@@ -54,12 +54,9 @@ fn with_chamber<R>(mech: &dyn Mechanism, f: impl FnOnce(&Chamber) -> R) -> R {
         .with_chamber(mech, f)
 }
 
-fn metric(g: &GasCycle, name: &str) -> f64 {
-    g.metrics
-        .iter()
-        .find(|m| m.name == name)
+fn metric(gas: &GasCycle, name: &str) -> f64 {
+    gas.metric(name)
         .unwrap_or_else(|| panic!("no metric {name}"))
-        .value
 }
 
 /// One speed of the sweep.
