@@ -1,14 +1,17 @@
 //! Case files: TOML in, a validated [`Case`] out. Every rule a value breaks is reported with
-//! the file, the case, the field, the rule and the value.
+//! the file, the case, the field, the rule and the value. Mechanisms are named from the
+//! registry of `cardan-mechanism`; each builds itself from the shared geometry, the mass fields
+//! and its own table (`[cardan_gear]`, ...).
 
 use crate::gas::GasCase;
 use crate::units::{to_si, Dimension};
-use cardan_dynamics::{MassProperties, Material};
 use cardan_mechanism::{
-    CardanGear, CrankMotion, GeometryError, Mechanism, MechanismKind, SliderCrank,
+    CrankMotion, MachineGeometry, MassInputs, Material, Mechanism, OptionKind, OptionValue,
+    Options,
 };
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// Why a case file could not become a case.
 #[derive(Debug, thiserror::Error)]
@@ -48,70 +51,63 @@ impl Machine {
     }
 }
 
-/// Geometry shared by the mechanisms of a case, SI.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Geometry {
-    /// Slider-crank crank length, m; the cardan crank is half of it.
-    pub crank_length: f64,
-    /// Rod length, m.
-    pub rod_length: f64,
-    /// Bore, m.
-    pub bore: f64,
-    /// Slider-crank piston-pin offset, m.
-    pub pin_offset: f64,
-    /// Pistons sharing one cylinder: 1, or 2 for the opposed-piston layout (two identical
-    /// mirrored crank trains, no cylinder head, Nunes 2017). The case runs one crank train;
-    /// the other carries the same loads.
-    pub pistons: u32,
+/// What a case writes besides `summary.json`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct OutputOptions {
+    /// Write `<mechanism>.csv`, one row per step.
+    pub csv: bool,
+    /// Write every n-th step (and the last).
+    pub decimation: usize,
+    /// Significant digits of the CSV numbers; `None`: the shortest text that reads back to
+    /// the same number.
+    pub significant_digits: Option<usize>,
 }
 
-/// One mechanism of a case, ready to run.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MechanismCase {
-    pub kind: MechanismKind,
-    pub masses: MassProperties,
-    pub rod_material: Material,
-    pub slider_crank: Option<SliderCrank>,
-    pub cardan_gear: Option<CardanGear>,
-}
-
-impl MechanismCase {
-    pub fn mechanism(&self) -> &dyn Mechanism {
-        match (&self.slider_crank, &self.cardan_gear) {
-            (Some(m), _) => m,
-            (_, Some(m)) => m,
-            _ => unreachable!("a mechanism case holds its mechanism"),
+impl Default for OutputOptions {
+    fn default() -> Self {
+        Self {
+            csv: true,
+            decimation: 1,
+            significant_digits: None,
         }
     }
 }
 
 /// A validated case.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Case {
     pub file: PathBuf,
     pub name: String,
     pub machine: Machine,
-    pub geometry: Geometry,
+    pub geometry: MachineGeometry,
+    /// Pistons sharing one cylinder: 1, or 2 for the opposed-piston layout (two identical
+    /// mirrored crank trains, no cylinder head, Nunes 2017). The case runs one crank train;
+    /// the other carries the same loads.
+    pub pistons: u32,
     pub motion: CrankMotion,
     /// Crank angle at the end of the run, rad.
     pub end_angle: f64,
     /// Number of crank-angle intervals; the run has steps + 1 points.
     pub steps: usize,
-    pub mechanisms: Vec<MechanismCase>,
+    pub mechanisms: Vec<Arc<dyn Mechanism>>,
     /// The gas loading the pistons; without it the run has inertial loads only.
     pub gas: Option<GasCase>,
+    pub output: OutputOptions,
 }
 
 #[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
 struct RawCase {
     name: String,
     machine: String,
     mechanisms: Vec<String>,
     geometry: RawGeometry,
     motion: RawMotion,
-    masses: Option<RawMasses>,
+    masses: Option<toml::Table>,
     gas: Option<toml::Table>,
+    output: Option<RawOutput>,
+    /// The mechanisms' own tables, checked against the registry.
+    #[serde(flatten)]
+    rest: toml::Table,
 }
 
 #[derive(Deserialize)]
@@ -134,27 +130,26 @@ struct RawMotion {
     steps: i64,
 }
 
-/// `[masses]` applies to every mechanism; `[masses.slider_crank]` and `[masses.cardan_gear]`
-/// override it for one.
-#[derive(Deserialize, Default, Clone)]
+#[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RawMasses {
-    rod_material: Option<String>,
-    crankshaft_inertia: Option<toml::Value>,
-    wheel_inertia: Option<toml::Value>,
-    rod_mass: Option<toml::Value>,
-    rod_inertia: Option<toml::Value>,
-    rod_cg: Option<toml::Value>,
-    piston_mass: Option<toml::Value>,
-    slider_crank: Option<Box<RawMasses>>,
-    cardan_gear: Option<Box<RawMasses>>,
+struct RawOutput {
+    csv: Option<bool>,
+    decimation: Option<i64>,
+    significant_digits: Option<i64>,
 }
 
-/// Reads one optional field of a `[masses]` table.
-type Getter = fn(&RawMasses) -> Option<&toml::Value>;
+/// Largest accepted number of steps.
+pub const MAX_STEPS: i64 = 100_000_000;
 
-/// Largest accepted number of steps: 10 million points of about 1 kB of state each.
-pub const MAX_STEPS: i64 = 10_000_000;
+/// The mass fields of `[masses]` and `[masses.<mechanism>]`, with their dimensions.
+const MASS_FIELDS: [(&str, Dimension); 6] = [
+    ("crankshaft_inertia", Dimension::Inertia),
+    ("wheel_inertia", Dimension::Inertia),
+    ("rod_mass", Dimension::Mass),
+    ("rod_inertia", Dimension::Inertia),
+    ("rod_cg", Dimension::Length),
+    ("piston_mass", Dimension::Mass),
+];
 
 /// Reads and validates one case file.
 pub fn load(file: &Path) -> Result<Case, CaseError> {
@@ -164,6 +159,9 @@ pub fn load(file: &Path) -> Result<Case, CaseError> {
     })?;
     parse(file, &text)
 }
+
+/// Reports a broken rule: the field, its value, the rule.
+type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> CaseError + 'a;
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
@@ -212,7 +210,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
     };
 
     let g = &raw.geometry;
-    let geometry = Geometry {
+    let geometry = MachineGeometry {
         crank_length: positive("geometry.crank_length", &g.crank_length, Dimension::Length)?,
         rod_length: positive("geometry.rod_length", &g.rod_length, Dimension::Length)?,
         bore: positive("geometry.bore", &g.bore, Dimension::Length)?,
@@ -220,19 +218,12 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
             Some(v) => quantity("geometry.pin_offset", v, Dimension::Length)?,
             None => 0.0,
         },
-        pistons: if g.opposed_pistons == Some(true) {
-            2
-        } else {
-            1
-        },
     };
-    if geometry.rod_length <= geometry.crank_length {
-        return Err(invalid(
-            "geometry.rod_length",
-            &g.rod_length,
-            &format!("must be longer than geometry.crank_length ({} m): a rod no longer than its crank cannot turn it", geometry.crank_length),
-        ));
-    }
+    let pistons = if g.opposed_pistons == Some(true) {
+        2
+    } else {
+        1
+    };
 
     let m = &raw.motion;
     let start_angle = quantity("motion.start_angle", &m.start_angle, Dimension::Angle)?;
@@ -272,182 +263,83 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         ));
     }
 
+    let output = output_options(raw.output.as_ref(), &invalid)?;
+    let masses = raw.masses.clone().unwrap_or_default();
+    for key in masses.keys() {
+        let known = MASS_FIELDS.iter().any(|(f, _)| f == key)
+            || key == "rod_material"
+            || cardan_mechanism::entry(key).is_some();
+        if !known {
+            return Err(invalid(
+                &format!("masses.{key}"),
+                &masses[key],
+                &format!(
+                    "unknown field: the mass fields are {}, rod_material, and a table per mechanism",
+                    MASS_FIELDS.map(|(f, _)| f).join(", ")
+                ),
+            ));
+        }
+    }
+    for key in raw.rest.keys() {
+        if cardan_mechanism::entry(key).is_none() {
+            return Err(invalid(
+                key,
+                &raw.rest[key],
+                &format!(
+                    "unknown field or table: a case has name, machine, mechanisms, [geometry], [motion], [masses], [gas], [output], and a table per mechanism ({})",
+                    cardan_mechanism::names()
+                ),
+            ));
+        }
+    }
+
     if raw.mechanisms.is_empty() {
         return Err(invalid(
             "mechanisms",
             &"[]",
-            "must list at least one of \"slider_crank\", \"cardan_gear\"",
+            &format!("must list at least one of {}", cardan_mechanism::names()),
         ));
     }
-    let raw_masses = raw.masses.clone().unwrap_or_default();
-    if raw_masses
-        .slider_crank
-        .as_ref()
-        .is_some_and(|s| s.slider_crank.is_some() || s.cardan_gear.is_some())
-        || raw_masses
-            .cardan_gear
-            .as_ref()
-            .is_some_and(|s| s.slider_crank.is_some() || s.cardan_gear.is_some())
-    {
-        return Err(invalid(
-            "masses",
-            &"nested tables",
-            "mechanism tables cannot nest: use [masses.slider_crank] and [masses.cardan_gear]",
-        ));
-    }
-    let mut mechanisms = Vec::new();
+    let mut mechanisms: Vec<Arc<dyn Mechanism>> = Vec::new();
     for name in &raw.mechanisms {
-        let Some(kind) = MechanismKind::from_name(name) else {
+        let Some(entry) = cardan_mechanism::entry(name) else {
             return Err(invalid(
                 "mechanisms",
                 &format!("\"{name}\""),
-                "unknown mechanism: use \"slider_crank\" or \"cardan_gear\"",
+                &format!("unknown mechanism: use one of {}", cardan_mechanism::names()),
             ));
         };
-        if mechanisms.iter().any(|c: &MechanismCase| c.kind == kind) {
+        if mechanisms.iter().any(|c| c.name() == entry.name) {
             return Err(invalid(
                 "mechanisms",
                 &format!("\"{name}\""),
                 "is listed twice",
             ));
         }
-        let specific = match kind {
-            MechanismKind::SliderCrank => raw_masses.slider_crank.as_deref(),
-            MechanismKind::CardanGear => raw_masses.cardan_gear.as_deref(),
-        };
-        // The mechanism's own table wins over the common one.
-        let pick = |get: fn(&RawMasses) -> Option<&toml::Value>,
-                    field: &str|
-         -> (Option<toml::Value>, String) {
-            match specific.and_then(get) {
-                Some(v) => (Some(v.clone()), format!("masses.{}.{field}", kind.name())),
-                None => (get(&raw_masses).cloned(), format!("masses.{field}")),
+        let own = match masses.get(entry.name) {
+            Some(toml::Value::Table(t)) => Some(t),
+            Some(other) => {
+                return Err(invalid(
+                    &format!("masses.{}", entry.name),
+                    other,
+                    "must be a table of mass fields",
+                ))
             }
+            None => None,
         };
-        let (material_name, material_field) = match specific.and_then(|s| s.rod_material.clone()) {
-            Some(v) => (Some(v), format!("masses.{}.rod_material", kind.name())),
-            None => (
-                raw_masses.rod_material.clone(),
-                "masses.rod_material".to_string(),
-            ),
-        };
-        let rod_material = match material_name {
-            None => Material::Steel,
-            Some(n) => match Material::from_name(&n) {
-                Some(Material::Aluminium) | None => {
-                    return Err(invalid(
-                        &material_field,
-                        &format!("\"{n}\""),
-                        "must be \"steel\" or \"titanium\"",
-                    ))
+        let inputs = mass_inputs(&masses, own, entry, &quantity, &invalid)?;
+        let options = mechanism_options(raw.rest.get(entry.name), entry, &invalid)?;
+        let mechanism = (entry.build)(&geometry, &inputs, &options).map_err(|e| {
+            let field = match e.field.as_str() {
+                // The rod's centre of gravity may come from either mass table.
+                "masses.rod_cg" if own.is_some_and(|t| t.contains_key("rod_cg")) => {
+                    format!("masses.{}.rod_cg", entry.name)
                 }
-                Some(mat) => mat,
-            },
-        };
-        let mut masses = MassProperties::estimate(
-            kind,
-            geometry.crank_length,
-            geometry.rod_length,
-            geometry.bore,
-            rod_material,
-        );
-        let overrides: [(Getter, &str, Dimension, &mut f64); 6] = [
-            (
-                |r| r.crankshaft_inertia.as_ref(),
-                "crankshaft_inertia",
-                Dimension::Inertia,
-                &mut masses.crankshaft_inertia,
-            ),
-            (
-                |r| r.wheel_inertia.as_ref(),
-                "wheel_inertia",
-                Dimension::Inertia,
-                &mut masses.wheel_inertia,
-            ),
-            (
-                |r| r.rod_mass.as_ref(),
-                "rod_mass",
-                Dimension::Mass,
-                &mut masses.rod_mass,
-            ),
-            (
-                |r| r.rod_inertia.as_ref(),
-                "rod_inertia",
-                Dimension::Inertia,
-                &mut masses.rod_inertia,
-            ),
-            (
-                |r| r.rod_cg.as_ref(),
-                "rod_cg",
-                Dimension::Length,
-                &mut masses.rod_cg,
-            ),
-            (
-                |r| r.piston_mass.as_ref(),
-                "piston_mass",
-                Dimension::Mass,
-                &mut masses.piston_mass,
-            ),
-        ];
-        for (get, field, dim, target) in overrides {
-            if let (Some(v), path) = pick(get, field) {
-                let x = quantity(&path, &v, dim)?;
-                if x < 0.0 {
-                    return Err(invalid(&path, &v, "must not be negative"));
-                }
-                *target = x;
-            }
-        }
-        if kind == MechanismKind::SliderCrank && masses.wheel_inertia != 0.0 {
-            return Err(invalid(
-                "masses.wheel_inertia",
-                &masses.wheel_inertia,
-                "applies to the cardan gear only: set it in [masses.cardan_gear]",
-            ));
-        }
-        let geometry_error = |e: GeometryError| {
-            match e {
-            GeometryError::PointOffRod { point, rod } => invalid(
-                &pick(|r| r.rod_cg.as_ref(), "rod_cg").1,
-                &point,
-                &format!("the rod's centre of gravity must lie on the rod, between 0 and geometry.rod_length ({rod} m)"),
-            ),
-            GeometryError::RodTooShort { .. } => invalid("geometry.pin_offset", &geometry.pin_offset, &e.to_string()),
-            other => invalid("geometry", &"", &other.to_string()),
-        }
-        };
-        let (slider_crank, cardan_gear) = match kind {
-            MechanismKind::SliderCrank => (
-                Some(
-                    SliderCrank::new(
-                        geometry.crank_length,
-                        geometry.rod_length,
-                        geometry.pin_offset,
-                        masses.rod_cg,
-                    )
-                    .map_err(geometry_error)?,
-                ),
-                None,
-            ),
-            MechanismKind::CardanGear => (
-                None,
-                Some(
-                    CardanGear::equivalent_to_slider_crank(
-                        geometry.crank_length,
-                        geometry.rod_length,
-                        masses.rod_cg,
-                    )
-                    .map_err(geometry_error)?,
-                ),
-            ),
-        };
-        mechanisms.push(MechanismCase {
-            kind,
-            masses,
-            rod_material,
-            slider_crank,
-            cardan_gear,
-        });
+                f => f.to_string(),
+            };
+            invalid(&field, &e.value, &e.rule)
+        })?;
+        mechanisms.push(Arc::from(mechanism));
     }
     let gas = raw
         .gas
@@ -459,10 +351,158 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         name: raw.name,
         machine,
         geometry,
+        pistons,
         motion,
         end_angle,
         steps: m.steps as usize,
         mechanisms,
         gas,
+        output,
     })
+}
+
+fn output_options(raw: Option<&RawOutput>, invalid: &Invalid) -> Result<OutputOptions, CaseError> {
+    let mut o = OutputOptions::default();
+    let Some(raw) = raw else { return Ok(o) };
+    o.csv = raw.csv.unwrap_or(true);
+    if let Some(d) = raw.decimation {
+        if d < 1 {
+            return Err(invalid(
+                "output.decimation",
+                &d,
+                "must be a whole number of at least 1 (1 writes every step)",
+            ));
+        }
+        o.decimation = d as usize;
+    }
+    if let Some(d) = raw.significant_digits {
+        if !(1..=17).contains(&d) {
+            return Err(invalid(
+                "output.significant_digits",
+                &d,
+                "must be from 1 to 17 (leave it out for the shortest exact text)",
+            ));
+        }
+        o.significant_digits = Some(d as usize);
+    }
+    Ok(o)
+}
+
+/// The mass fields for one mechanism: its own table wins over the common one.
+fn mass_inputs(
+    common: &toml::Table,
+    own: Option<&toml::Table>,
+    entry: &cardan_mechanism::Entry,
+    quantity: &dyn Fn(&str, &toml::Value, Dimension) -> Result<f64, CaseError>,
+    invalid: &Invalid,
+) -> Result<MassInputs, CaseError> {
+    let pick = |field: &str| match own.and_then(|t| t.get(field)) {
+        Some(v) => Some((v, format!("masses.{}.{field}", entry.name))),
+        None => common.get(field).map(|v| (v, format!("masses.{field}"))),
+    };
+    if let Some(t) = own {
+        for key in t.keys() {
+            if key != "rod_material" && !MASS_FIELDS.iter().any(|(f, _)| f == key) {
+                return Err(invalid(
+                    &format!("masses.{}.{key}", entry.name),
+                    &t[key],
+                    &format!(
+                        "unknown field: the mass fields are {}, rod_material (mechanism tables cannot nest)",
+                        MASS_FIELDS.map(|(f, _)| f).join(", ")
+                    ),
+                ));
+            }
+        }
+    }
+    let mut inputs = MassInputs::default();
+    for (field, dim) in MASS_FIELDS {
+        let Some((v, path)) = pick(field) else {
+            continue;
+        };
+        if entry.unused_masses.contains(&field) {
+            return Err(invalid(
+                &path,
+                v,
+                &format!(
+                    "does not apply to the {}: set it in the table of the mechanism it applies to, e.g. [masses.cardan_gear]",
+                    entry.name
+                ),
+            ));
+        }
+        let x = quantity(&path, v, dim)?;
+        if x < 0.0 {
+            return Err(invalid(&path, v, "must not be negative"));
+        }
+        let slot = match field {
+            "crankshaft_inertia" => &mut inputs.crankshaft_inertia,
+            "wheel_inertia" => &mut inputs.wheel_inertia,
+            "rod_mass" => &mut inputs.rod_mass,
+            "rod_inertia" => &mut inputs.rod_inertia,
+            "rod_cg" => &mut inputs.rod_cg,
+            _ => &mut inputs.piston_mass,
+        };
+        *slot = Some(x);
+    }
+    if let Some((v, path)) = pick("rod_material") {
+        inputs.rod_material = match v.as_str().and_then(Material::from_name) {
+            Some(m @ (Material::Steel | Material::Titanium)) => Some(m),
+            _ => return Err(invalid(&path, v, "must be \"steel\" or \"titanium\"")),
+        };
+    }
+    Ok(inputs)
+}
+
+/// A mechanism's own table (`[cardan_gear]`), read against the options it declares.
+fn mechanism_options(
+    table: Option<&toml::Value>,
+    entry: &cardan_mechanism::Entry,
+    invalid: &Invalid,
+) -> Result<Options, CaseError> {
+    let mut options = Options::new();
+    let Some(table) = table else {
+        return Ok(options);
+    };
+    let Some(table) = table.as_table() else {
+        return Err(invalid(entry.name, table, "must be a table of the mechanism's options"));
+    };
+    let declared = || {
+        if entry.options.is_empty() {
+            "it has none".to_string()
+        } else {
+            entry.options.iter().map(|o| o.name).collect::<Vec<_>>().join(", ")
+        }
+    };
+    for (key, value) in table {
+        let field = format!("{}.{key}", entry.name);
+        let Some(spec) = entry.options.iter().find(|o| o.name == key) else {
+            return Err(invalid(
+                &field,
+                value,
+                &format!("unknown option of the {}: {}", entry.name, declared()),
+            ));
+        };
+        let v = match spec.kind {
+            OptionKind::Choice(words) => match value.as_str() {
+                Some(w) if words.contains(&w) => OptionValue::Word(w.to_string()),
+                _ => {
+                    return Err(invalid(
+                        &field,
+                        value,
+                        &format!("must be one of {}", words.iter().map(|w| format!("\"{w}\"")).collect::<Vec<_>>().join(", ")),
+                    ))
+                }
+            },
+            OptionKind::Angle => OptionValue::Number(
+                to_si(value, Dimension::Angle).map_err(|r| invalid(&field, value, &r))?,
+            ),
+            OptionKind::Length => OptionValue::Number(
+                to_si(value, Dimension::Length).map_err(|r| invalid(&field, value, &r))?,
+            ),
+            OptionKind::Number => OptionValue::Number(
+                to_si(value, Dimension::Number).map_err(|r| invalid(&field, value, &r))?,
+            ),
+        };
+        options.insert(key.clone(), v);
+    }
+    Ok(options)
 }

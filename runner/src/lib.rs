@@ -1,6 +1,7 @@
-//! The batch runner: TOML case files → validated cases → mechanism runs in parallel →
-//! `summary.json` and one CSV per mechanism per case. Physics lives in the `cardan-*` crates;
-//! this crate only reads, validates, schedules and writes.
+//! The batch runner: TOML case files → validated cases → mechanism runs in parallel, each step
+//! streamed to the summary and the per-step CSV → `summary.json` and one CSV per mechanism per
+//! case. Physics lives in the `cardan-*` crates; this crate only reads, validates, schedules and
+//! writes.
 
 pub mod case;
 pub mod gas;
@@ -9,4 +10,4 @@ pub mod run;
 pub mod units;
 
 pub use case::{Case, CaseError};
-pub use run::{run_case, run_paths, Report};
+pub use run::{run_case, run_paths, Report, RunOptions};

@@ -1,45 +1,89 @@
-//! Result files: `summary.json` and one CSV per mechanism, each written atomically (to a
-//! temporary file in the same folder, then renamed over the target).
+//! Result files: `summary.json` and, per mechanism, a CSV streamed one row per step. A case's
+//! files are written into a fresh temporary folder that then replaces the case's folder as a
+//! whole, so no file of an earlier run survives beside the new ones.
 
-use crate::case::Case;
-use crate::run::MechanismRun;
+use crate::case::{Case, OutputOptions};
+use crate::run::MechanismResult;
 use anyhow::Context;
-use cardan_dynamics::Step;
-use cardan_mechanism::PolarComponents;
+use cardan_dynamics::{Sink, Step};
+use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use serde_json::{json, Map, Value};
-use std::io::Write;
-use std::path::Path;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
 
-/// The summary of a case as JSON:
-/// `{"case", "machine", "mechanisms": {<name>: {"metrics": {...}, "mass_properties": {...}}}}`.
-pub fn summary_json(case: &Case, runs: &[MechanismRun]) -> Value {
+/// Version of the layout of `summary.json`; raised when a name or the shape changes.
+pub const SCHEMA_VERSION: u32 = 2;
+
+/// The summary of a case as JSON (see README.md, "Results").
+pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
     let mut mechanisms = Map::new();
-    for run in runs {
-        let metrics: Map<String, Value> = run
-            .summary
-            .metrics
+    for r in results {
+        let m = r.mechanism.as_ref();
+        let mut metrics = Map::new();
+        let mut units = Map::new();
+        for metric in &r.summary.metrics {
+            metrics.insert(metric.name.clone(), json!(metric.value));
+            units.insert(metric.name.clone(), json!(metric.unit));
+        }
+        let masses = m.masses();
+        let mut mass_properties: Map<String, Value> = masses
+            .fields()
             .iter()
-            .map(|m| (m.name.to_string(), json!(m.value)))
+            .map(|(name, value, _)| (name.to_string(), json!(value)))
             .collect();
-        let m = &run.case.masses;
+        mass_properties.insert("rod_material".into(), json!(masses.rod_material.name()));
+        let t = m.topology();
+        let bodies: Map<String, Value> = t
+            .bodies
+            .iter()
+            .map(|b| {
+                (
+                    b.name.to_string(),
+                    json!({"mass_kg": b.mass, "inertia_kg_m2": b.inertia}),
+                )
+            })
+            .collect();
+        let joints: Map<String, Value> = t
+            .joints
+            .iter()
+            .map(|j| {
+                let between = json!([
+                    t.bodies[j.body].name,
+                    j.other.map_or("frame", |o| t.bodies[o].name)
+                ]);
+                let v = match j.kind {
+                    JointKind::Revolute { radius } => {
+                        json!({"kind": "revolute", "bodies": between, "journal_radius_m": radius})
+                    }
+                    JointKind::Prismatic => json!({"kind": "prismatic", "bodies": between}),
+                    JointKind::GearMesh {
+                        ratio,
+                        pressure_angle,
+                        ..
+                    } => json!({
+                        "kind": "gear_mesh",
+                        "bodies": between,
+                        "ratio": ratio,
+                        "pressure_angle_deg": pressure_angle.to_degrees()
+                    }),
+                };
+                (j.name.to_string(), v)
+            })
+            .collect();
         mechanisms.insert(
-            run.case.kind.name().to_string(),
+            m.name().to_string(),
             json!({
                 "metrics": metrics,
-                "mass_properties": {
-                    "rod_material": run.case.rod_material.name(),
-                    "crankshaft_inertia": m.crankshaft_inertia,
-                    "wheel_inertia": m.wheel_inertia,
-                    "rod_mass": m.rod_mass,
-                    "rod_inertia": m.rod_inertia,
-                    "rod_cg": m.rod_cg,
-                    "piston_mass": m.piston_mass,
-                    "reciprocating_mass": m.reciprocating_mass(run.case.kind),
-                },
+                "units": units,
+                "mass_properties": mass_properties,
+                "bodies": bodies,
+                "joints": joints,
             }),
         );
     }
     json!({
+        "schema_version": SCHEMA_VERSION,
         "case": case.name,
         "machine": case.machine.name(),
         "gas_model": case.gas.as_ref().map(|g| g.name()),
@@ -47,173 +91,274 @@ pub fn summary_json(case: &Case, runs: &[MechanismRun]) -> Value {
     })
 }
 
-/// CSV columns, with their units in the names. One row per crank-angle step.
-pub const CSV_COLUMNS: &[&str] = &[
-    "crank_angle_deg",
-    "time_s",
-    "crank_speed_rad_s",
-    "piston_position_m",
-    "piston_velocity_m_s",
-    "piston_acceleration_m_s2",
-    "piston_dx_dtheta_m_rad",
-    "rod_angle_deg",
-    "rod_angular_velocity_rad_s",
-    "rod_angular_acceleration_rad_s2",
-    "rod_cg_x_m",
-    "rod_cg_y_m",
-    "rod_cg_velocity_m_s",
-    "rod_cg_acceleration_m_s2",
-    "rod_cg_radial_acceleration_m_s2",
-    "rod_cg_coriolis_acceleration_m_s2",
-    "rod_cg_tangential_acceleration_m_s2",
-    "rod_cg_normal_acceleration_m_s2",
-    "main_bearing_speed_rad_s",
-    "crank_pin_speed_rad_s",
-    "piston_pin_speed_rad_s",
-    "inertial_main_bearing_force_x_n",
-    "inertial_main_bearing_force_y_n",
-    "inertial_crank_pin_force_x_n",
-    "inertial_crank_pin_force_y_n",
-    "inertial_piston_pin_force_x_n",
-    "inertial_piston_pin_force_y_n",
-    "inertial_piston_side_force_n",
-    "inertial_gear_mesh_force_x_n",
-    "inertial_gear_mesh_force_y_n",
-    "inertial_torque_nm",
-    "inertial_torque_crankshaft_nm",
-    "inertial_torque_rod_or_wheel_nm",
-    "inertial_torque_piston_nm",
-    "rod_percussion_centre_m",
-    "cylinder_pressure_pa",
-    "gas_force_n",
-    "gas_torque_nm",
-    "total_main_bearing_force_x_n",
-    "total_main_bearing_force_y_n",
-    "total_crank_pin_force_x_n",
-    "total_crank_pin_force_y_n",
-    "total_piston_pin_force_x_n",
-    "total_piston_pin_force_y_n",
-    "total_piston_side_force_n",
-    "total_gear_mesh_force_x_n",
-    "total_gear_mesh_force_y_n",
-    "total_torque_nm",
+/// The per-step CSV columns: a name template (units in the name; `{piston}`, `{body}`,
+/// `{joint}`, `{extra}`, `{family}` stand for names of the mechanism's topology and the run's
+/// load families), and its meaning. The README's column table is made from this list.
+pub const COLUMNS: &[(&str, &str)] = &[
+    ("crank_angle_deg", "crank angle θ from the +x axis (90° is top dead centre of an in-line machine)"),
+    ("time_s", "time since the start of the run"),
+    ("crank_speed_rad_s", "crank angular velocity ω"),
+    ("crank_acceleration_rad_s2", "crank angular acceleration α"),
+    ("{piston}_position_m", "piston-pin distance along the cylinder axis from the main bearing axis"),
+    ("{piston}_velocity_m_s", "piston velocity along the cylinder, positive away from the crankshaft"),
+    ("{piston}_acceleration_m_s2", "piston acceleration along the cylinder"),
+    ("{piston}_dx_dtheta_m_rad", "dx/dθ: dV/dθ = −bore area × this"),
+    ("{body}_angle_deg", "orientation of the body"),
+    ("{body}_angular_velocity_rad_s", "angular velocity of the body"),
+    ("{body}_angular_acceleration_rad_s2", "angular acceleration of the body"),
+    ("{body}_cg_x_m", "centre of gravity, x"),
+    ("{body}_cg_y_m", "centre of gravity, y (along the cylinder)"),
+    ("{body}_cg_velocity_m_s", "speed of the centre of gravity"),
+    ("{body}_cg_acceleration_m_s2", "acceleration magnitude of the centre of gravity"),
+    ("{body}_cg_radial_acceleration_m_s2", "its radial part about the main axis (Karhula 4.1.3)"),
+    ("{body}_cg_coriolis_acceleration_m_s2", "its Coriolis part 2·v_r·ω"),
+    ("{body}_cg_tangential_acceleration_m_s2", "its tangential part |Z|·α"),
+    ("{body}_cg_normal_acceleration_m_s2", "its normal part −|Z|·ω²"),
+    ("{joint}_speed_rad_s", "pins: angular velocity of the joint's first body relative to its second"),
+    ("{joint}_speed_m_s", "slides: sliding velocity of the first body relative to the second along the slide; meshes: pitch-line velocity relative to the gear carrier"),
+    ("{extra}", "a quantity of one mechanism (see its section)"),
+    ("cylinder_pressure_pa", "absolute cylinder pressure (empty without a gas model)"),
+    ("gas_force_n", "gas force on the piston, towards the crankshaft (empty without a gas model)"),
+    ("{family}_{joint}_force_x_n", "force on the joint's first body from its second, x"),
+    ("{family}_{joint}_force_y_n", "the same, y"),
+    ("{family}_{joint}_force_magnitude_n", "its magnitude"),
+    ("{family}_{joint}_moment_nm", "couple a slide carries"),
+    ("{family}_torque_nm", "drive torque on the crankshaft, positive in the direction of rotation"),
+    ("{family}_torque_{body}_nm", "the body's share of it by the power balance (Karhula's T_1i10, T_2i10, T_3i10); empty while the crank stands still"),
 ];
 
-/// Writes `v,`; `None` (a quantity the run does not define) is an empty cell.
-fn cell(out: &mut String, v: Option<f64>) {
-    use std::fmt::Write as _;
-    if let Some(v) = v {
-        let _ = write!(out, "{v}");
+/// The CSV header of `mechanism` run with the load families `families`.
+fn header(mechanism: &dyn Mechanism, families: &[&str], gas: bool) -> Vec<String> {
+    let t = mechanism.topology();
+    let mut h: Vec<String> = ["crank_angle_deg", "time_s", "crank_speed_rad_s", "crank_acceleration_rad_s2"]
+        .map(String::from)
+        .to_vec();
+    for p in &t.pistons {
+        for s in ["position_m", "velocity_m_s", "acceleration_m_s2", "dx_dtheta_m_rad"] {
+            h.push(format!("{}_{s}", p.name));
+        }
     }
-    out.push(',');
+    for b in &t.bodies {
+        for s in [
+            "angle_deg",
+            "angular_velocity_rad_s",
+            "angular_acceleration_rad_s2",
+            "cg_x_m",
+            "cg_y_m",
+            "cg_velocity_m_s",
+            "cg_acceleration_m_s2",
+            "cg_radial_acceleration_m_s2",
+            "cg_coriolis_acceleration_m_s2",
+            "cg_tangential_acceleration_m_s2",
+            "cg_normal_acceleration_m_s2",
+        ] {
+            h.push(format!("{}_{s}", b.name));
+        }
+    }
+    for j in &t.joints {
+        let unit = match j.kind {
+            JointKind::Revolute { .. } => "rad_s",
+            JointKind::Prismatic | JointKind::GearMesh { .. } => "m_s",
+        };
+        h.push(format!("{}_speed_{unit}", j.name));
+    }
+    h.extend(t.extras.iter().map(|e| e.name.to_string()));
+    if gas {
+        h.push("cylinder_pressure_pa".into());
+        h.push("gas_force_n".into());
+    }
+    for f in families {
+        for j in &t.joints {
+            for s in ["force_x_n", "force_y_n", "force_magnitude_n"] {
+                h.push(format!("{f}_{}_{s}", j.name));
+            }
+            if matches!(j.kind, JointKind::Prismatic) {
+                h.push(format!("{f}_{}_moment_nm", j.name));
+            }
+        }
+        h.push(format!("{f}_torque_nm"));
+        for b in &t.bodies {
+            h.push(format!("{f}_torque_{}_nm", b.name));
+        }
+    }
+    h
 }
 
-fn csv_row(s: &Step, pressure: Option<f64>, out: &mut String) {
-    let k = &s.kinematics;
-    let l = &s.inertial;
-    let t = s.total();
-    let p = PolarComponents::of(&k.rod.point);
-    let values = [
-        k.crank.angle.to_degrees(),
-        k.crank.time,
-        k.crank.speed,
-        k.piston.position,
-        k.piston.velocity,
-        k.piston.acceleration,
-        k.piston.dx_dtheta,
-        k.rod.direction.arg().to_degrees(),
-        k.rod.angular_velocity,
-        k.rod.angular_acceleration,
-        k.rod.point.position.re,
-        k.rod.point.position.im,
-        k.rod.point.velocity.norm(),
-        k.rod.point.acceleration.norm(),
-        p.radial_acceleration,
-        p.coriolis_acceleration,
-        p.tangential_acceleration,
-        p.normal_acceleration,
-        k.joint_speeds.main_bearing,
-        k.joint_speeds.crank_pin,
-        k.joint_speeds.piston_pin,
-        l.main_bearing.re,
-        l.main_bearing.im,
-        l.crank_pin.re,
-        l.crank_pin.im,
-        l.piston_pin.re,
-        l.piston_pin.im,
-        l.piston_side,
-        l.gear_mesh.re,
-        l.gear_mesh.im,
-        l.crank_torque,
-        l.torque_by_link[0],
-        l.torque_by_link[1],
-        l.torque_by_link[2],
-    ];
-    for v in values {
-        cell(out, Some(v));
-    }
-    // An undefined centre of percussion, and the gas of a run without one, are empty cells.
-    cell(out, l.rod_percussion_centre);
-    cell(out, pressure);
-    cell(out, s.gas.map(|(force, _)| force));
-    cell(out, s.gas.map(|(_, gas)| gas.crank_torque));
-    for v in [
-        t.main_bearing.re,
-        t.main_bearing.im,
-        t.crank_pin.re,
-        t.crank_pin.im,
-        t.piston_pin.re,
-        t.piston_pin.im,
-        t.piston_side,
-        t.gear_mesh.re,
-        t.gear_mesh.im,
-        t.crank_torque,
-    ] {
-        cell(out, Some(v));
-    }
-    out.pop();
-    out.push('\n');
+/// A sink writing one CSV row per step (every `decimation`-th step and the last).
+pub struct CsvSink<'a> {
+    mechanism: &'a dyn Mechanism,
+    writer: csv::Writer<BufWriter<File>>,
+    options: OutputOptions,
+    last_step: usize,
+    /// Families with a total (the names of the header's force blocks).
+    with_total: bool,
+    row: Vec<f64>,
+    text: String,
+    total_shares: Vec<f64>,
 }
 
-/// The CSV text of one mechanism run.
-pub fn csv(run: &MechanismRun) -> String {
-    let mut out = String::with_capacity(400 * (run.steps.len() + 1));
-    out.push_str(&CSV_COLUMNS.join(","));
-    out.push('\n');
-    for (k, s) in run.steps.iter().enumerate() {
-        csv_row(s, run.gas.as_ref().map(|g| g.pressure[k]), &mut out);
+impl<'a> CsvSink<'a> {
+    /// A CSV at `path` for `mechanism` run with the load families `families` over
+    /// `last_step + 1` steps.
+    pub fn create(
+        path: &Path,
+        mechanism: &'a dyn Mechanism,
+        families: &[&str],
+        gas: bool,
+        options: OutputOptions,
+        last_step: usize,
+    ) -> anyhow::Result<Self> {
+        let file = File::create(path).with_context(|| format!("create {}", path.display()))?;
+        let mut writer = csv::WriterBuilder::new().from_writer(BufWriter::with_capacity(1 << 16, file));
+        let mut names: Vec<&str> = families.to_vec();
+        let with_total = families.len() > 1;
+        if with_total {
+            names.push("total");
+        }
+        writer.write_record(header(mechanism, &names, gas))?;
+        Ok(Self {
+            mechanism,
+            writer,
+            options,
+            last_step,
+            with_total,
+            row: Vec::new(),
+            text: String::new(),
+            total_shares: vec![0.0; mechanism.topology().bodies.len()],
+        })
     }
-    out
+
+    /// Writes out what is buffered.
+    pub fn finish(mut self) -> anyhow::Result<()> {
+        self.writer.flush()?;
+        Ok(())
+    }
+
+    fn fill_row(&mut self, s: &Step) {
+        let t = self.mechanism.topology();
+        let st = s.state;
+        let r = &mut self.row;
+        r.clear();
+        r.extend([
+            st.crank.angle.to_degrees(),
+            st.crank.time,
+            st.crank.speed,
+            st.crank.acceleration,
+        ]);
+        for p in &st.pistons {
+            r.extend([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
+        }
+        for b in &st.bodies {
+            let polar = PolarComponents::of(&b.cg);
+            r.extend([
+                b.orientation.arg().to_degrees(),
+                b.angular_velocity,
+                b.angular_acceleration,
+                b.cg.position.re,
+                b.cg.position.im,
+                b.cg.velocity.norm(),
+                b.cg.acceleration.norm(),
+                polar.radial_acceleration,
+                polar.coriolis_acceleration,
+                polar.tangential_acceleration,
+                polar.normal_acceleration,
+            ]);
+        }
+        r.extend(st.joints.iter().map(|j| j.relative_speed));
+        r.extend(&st.extras);
+        if let Some(p) = s.pressure {
+            r.push(p);
+            r.push(s.piston_forces.first().copied().unwrap_or(0.0));
+        }
+        let mut families: Vec<(&cardan_mechanism::Loads, &[f64])> = s
+            .families
+            .iter()
+            .zip(s.shares)
+            .map(|(l, sh)| (l, sh.as_slice()))
+            .collect();
+        if self.with_total {
+            for (k, total) in self.total_shares.iter_mut().enumerate() {
+                *total = s.shares.iter().map(|sh| sh[k]).sum();
+            }
+            families.push((s.total, &self.total_shares));
+        }
+        for (loads, shares) in families {
+            for (j, l) in t.joints.iter().zip(&loads.joints) {
+                r.extend([l.force.re, l.force.im, l.force.norm()]);
+                if matches!(j.kind, JointKind::Prismatic) {
+                    r.push(l.moment);
+                }
+            }
+            r.push(loads.crank_torque);
+            r.extend(shares);
+        }
+    }
 }
 
-/// Writes `contents` to `path` atomically.
-pub fn write_atomic(path: &Path, contents: &[u8]) -> anyhow::Result<()> {
-    let dir = path.parent().context("no parent folder")?;
-    let name = path.file_name().context("no file name")?.to_string_lossy();
-    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
-    let result = (|| {
-        let mut f =
-            std::fs::File::create(&tmp).with_context(|| format!("create {}", tmp.display()))?;
-        f.write_all(contents)?;
+impl Sink for CsvSink<'_> {
+    fn push(&mut self, s: &Step) -> Result<(), String> {
+        if s.index % self.options.decimation != 0 && s.index != self.last_step {
+            return Ok(());
+        }
+        self.fill_row(s);
+        let mut buffer = ryu::Buffer::new();
+        for &v in &self.row {
+            // A quantity undefined at this step (NaN) is an empty cell.
+            let cell: &str = if v.is_nan() {
+                ""
+            } else if let Some(d) = self.options.significant_digits {
+                use std::fmt::Write as _;
+                self.text.clear();
+                let _ = write!(self.text, "{:.*e}", d - 1, v);
+                &self.text
+            } else {
+                buffer.format(v)
+            };
+            self.writer.write_field(cell).map_err(|e| e.to_string())?;
+        }
+        self.writer
+            .write_record(None::<&[u8]>)
+            .map_err(|e| e.to_string())
+    }
+}
+
+/// Writes `contents` to `path`; `sync` also waits for the disk (once per case folder, on its
+/// last file).
+pub fn write_file(path: &Path, contents: &[u8], sync: bool) -> anyhow::Result<()> {
+    let mut f = File::create(path).with_context(|| format!("create {}", path.display()))?;
+    f.write_all(contents)?;
+    if sync {
         f.sync_all()?;
-        std::fs::rename(&tmp, path).with_context(|| format!("rename to {}", path.display()))
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
     }
-    result
+    Ok(())
 }
 
-/// Writes `summary.json` and `<mechanism>.csv` of a case into `dir`.
-pub fn write_case(dir: &Path, case: &Case, runs: &[MechanismRun]) -> anyhow::Result<()> {
-    std::fs::create_dir_all(dir).with_context(|| format!("create {}", dir.display()))?;
-    for run in runs {
-        write_atomic(
-            &dir.join(format!("{}.csv", run.case.kind.name())),
-            csv(run).as_bytes(),
-        )?;
+/// A fresh, empty temporary folder beside `dir`, to be moved onto it by [`replace_dir`].
+pub fn temporary_dir(dir: &Path) -> anyhow::Result<PathBuf> {
+    let parent = dir.parent().context("no parent folder")?;
+    std::fs::create_dir_all(parent).with_context(|| format!("create {}", parent.display()))?;
+    let name = dir.file_name().context("no folder name")?.to_string_lossy();
+    let tmp = parent.join(format!(".{name}.tmp-{}", std::process::id()));
+    if tmp.exists() {
+        std::fs::remove_dir_all(&tmp)?;
     }
-    let mut summary = serde_json::to_string_pretty(&summary_json(case, runs))?;
-    summary.push('\n');
-    write_atomic(&dir.join("summary.json"), summary.as_bytes())
+    std::fs::create_dir(&tmp).with_context(|| format!("create {}", tmp.display()))?;
+    Ok(tmp)
+}
+
+/// Moves the finished folder `tmp` onto `dir`, replacing whatever was there as a whole.
+pub fn replace_dir(tmp: &Path, dir: &Path) -> anyhow::Result<()> {
+    if dir.exists() {
+        let name = dir.file_name().context("no folder name")?.to_string_lossy();
+        let old = dir.with_file_name(format!(".{name}.old-{}", std::process::id()));
+        if old.exists() {
+            std::fs::remove_dir_all(&old)?;
+        }
+        std::fs::rename(dir, &old).with_context(|| format!("move {} aside", dir.display()))?;
+        std::fs::rename(tmp, dir).with_context(|| format!("rename to {}", dir.display()))?;
+        std::fs::remove_dir_all(&old).with_context(|| format!("remove {}", old.display()))?;
+    } else {
+        std::fs::rename(tmp, dir).with_context(|| format!("rename to {}", dir.display()))?;
+    }
+    Ok(())
 }

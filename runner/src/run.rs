@@ -1,87 +1,128 @@
-//! Running cases: every mechanism of every case in parallel; one failure never stops the rest.
+//! Running cases: every mechanism of every case in parallel, each step streamed to its sinks;
+//! one failure (an error or a panic) never stops the rest.
 
-use crate::case::{self, Case, CaseError, MechanismCase};
-use crate::output;
-use cardan_dynamics::{run_cycle, Step, Summary};
-use cardan_gas::GasCycle;
-use cardan_mechanism::CrankState;
+use crate::case::{self, Case, CaseError};
+use crate::output::{self, CsvSink};
+use cardan_dynamics::stepper::GasAt;
+use cardan_dynamics::{run, Gas, Inertial, LoadFamily, Sink, Solver, Summary, SummarySink};
+use cardan_mechanism::{Grid, Mechanism};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
-/// The run of one mechanism of a case.
+/// The result of one mechanism of a case.
 #[derive(Debug, Clone)]
-pub struct MechanismRun {
-    pub case: MechanismCase,
-    pub steps: Vec<Step>,
-    /// The gas on the same crank-angle grid, if the case has a `[gas]` table.
-    pub gas: Option<GasCycle>,
+pub struct MechanismResult {
+    pub mechanism: Arc<dyn Mechanism>,
     pub summary: Summary,
 }
 
-/// The gas of `case` on the volume curve of mechanism `m`, at the crank angles of `grid`.
-fn gas_cycle(
-    case: &Case,
-    m: &MechanismCase,
-    grid: &[CrankState],
-) -> Result<Option<GasCycle>, String> {
-    let Some(gas) = &case.gas else {
-        return Ok(None);
-    };
-    let mech = m.mechanism();
-    let failed = |e: cardan_gas::GasError| {
-        format!(
-            "{}: case \"{}\": {}: gas.{e}",
-            case.file.display(),
-            case.name,
-            m.kind.name()
-        )
-    };
-    let cylinder = gas
-        .cylinder(case.geometry.bore, mech.stroke(), case.geometry.pistons)
-        .map_err(failed)?;
-    let angles: Vec<f64> = grid.iter().map(|g| g.angle).collect();
-    // The mean crank speed over the run: the speed of a steady run.
-    let (first, last) = (&grid[0], &grid[grid.len() - 1]);
-    let speed = if last.time > first.time {
-        (last.angle - first.angle) / (last.time - first.time)
-    } else {
-        first.speed
-    };
-    cylinder
-        .with_chamber(mech, |chamber| gas.model().cycle(chamber, speed, &angles))
-        .map(Some)
-        .map_err(failed)
+/// The mean crank speed over the run, rad/s: the speed of a steady run, which the
+/// speed-dependent gas models use.
+fn mean_speed(case: &Case) -> f64 {
+    match case.motion.at_angle(case.end_angle) {
+        Ok(end) if end.time > 0.0 => (case.end_angle - case.motion.start_angle) / end.time,
+        _ => case.motion.initial_speed,
+    }
 }
 
-/// Runs every mechanism of a case (in parallel). A gas model that cannot run on a mechanism
-/// fails the case with a message naming the file, the case and the mechanism.
-pub fn run_case(case: &Case) -> Result<Vec<MechanismRun>, String> {
-    let grid = case
-        .motion
-        .grid(case.motion.start_angle, case.end_angle, case.steps)
-        .expect("validation checked that the crank reaches end_angle");
+/// Runs one mechanism of `case`, writing its CSV into `csv_dir` if given.
+fn run_mechanism(
+    case: &Case,
+    mechanism: &dyn Mechanism,
+    csv_dir: Option<&Path>,
+) -> Result<Summary, String> {
+    let inertial = Inertial(Solver::ClosedForm);
+    let gas_family = Gas(Solver::ClosedForm);
+    let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
+    if case.gas.is_some() {
+        families.push(&gas_family);
+    }
+    let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
+    let mut summary = SummarySink::new(mechanism, &names);
+    let mut csv = match csv_dir {
+        Some(dir) => Some(
+            CsvSink::create(
+                &dir.join(format!("{}.csv", mechanism.name())),
+                mechanism,
+                &names,
+                case.gas.is_some(),
+                case.output,
+                case.steps,
+            )
+            .map_err(|e| format!("{e:#}"))?,
+        ),
+        None => None,
+    };
+    let mut steps = |gas: Option<GasAt>| {
+        let mut grid = Grid::new(case.motion, case.motion.start_angle, case.end_angle, case.steps);
+        let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
+        if let Some(c) = csv.as_mut() {
+            sinks.push(c);
+        }
+        run(mechanism, &mut grid, &families, gas, &mut sinks).map_err(|e| e.to_string())
+    };
+    let gas_metrics = match &case.gas {
+        None => {
+            steps(None)?;
+            Vec::new()
+        }
+        Some(gas) => {
+            let failed = |e: cardan_gas::GasError| format!("gas.{e}");
+            let cylinder = gas
+                .cylinder(case.geometry.bore, mechanism.stroke(), case.pistons)
+                .map_err(failed)?;
+            cylinder.with_chamber(mechanism, |chamber| {
+                let prepared = gas.model().prepare(*chamber, mean_speed(case)).map_err(failed)?;
+                let at = |theta: f64| prepared.at(theta);
+                steps(Some(&at))?;
+                Ok::<_, String>(prepared.metrics())
+            })?
+        }
+    };
+    let mut summary = summary.finish(mechanism)?;
+    for m in gas_metrics {
+        if !m.value.is_finite() {
+            return Err(format!("gas model metric {} is not finite ({})", m.name, m.value));
+        }
+        summary.push(m.name, m.value);
+    }
+    if let Some(c) = csv {
+        c.finish().map_err(|e| format!("cannot write the CSV: {e:#}"))?;
+    }
+    Ok(summary)
+}
+
+/// Runs every mechanism of a case (in parallel), writing their CSVs into `csv_dir` if given.
+/// A failure names the file, the case, the mechanism, and the step and quantity that went
+/// wrong.
+pub fn run_case(case: &Case, csv_dir: Option<&Path>) -> Result<Vec<MechanismResult>, String> {
     case.mechanisms
         .par_iter()
         .map(|m| {
-            let gas = gas_cycle(case, m, &grid)?;
-            let forces = gas.as_ref().map(|g| g.piston_force.as_slice());
-            let steps = run_cycle(m.mechanism(), &m.masses, &grid, forces);
-            let mut summary = Summary::of_cycle(m.mechanism(), &m.masses, &steps);
-            if let Some(g) = &gas {
-                let p_max = g.pressure.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-                summary.push("cylinder_pressure_max", "Pa", p_max);
-                for metric in &g.metrics {
-                    summary.push(metric.name, metric.unit, metric.value);
-                }
-            }
-            Ok(MechanismRun {
-                case: m.clone(),
-                steps,
-                gas,
+            let summary = run_mechanism(case, m.as_ref(), csv_dir).map_err(|e| {
+                format!(
+                    "{}: case \"{}\": {}: {e}",
+                    case.file.display(),
+                    case.name,
+                    m.name()
+                )
+            })?;
+            Ok(MechanismResult {
+                mechanism: m.clone(),
                 summary,
             })
         })
         .collect()
+}
+
+/// How a batch runs.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct RunOptions {
+    /// Worker threads (None: one per core).
+    pub jobs: Option<usize>,
+    /// Overrides every case's `[output] csv`.
+    pub csv: Option<bool>,
 }
 
 /// What a batch did.
@@ -89,13 +130,14 @@ pub fn run_case(case: &Case) -> Result<Vec<MechanismRun>, String> {
 pub struct Report {
     /// Cases run and written: (case name, output folder).
     pub written: Vec<(String, PathBuf)>,
-    /// Each failure: a case file that could not be read or validated, or a case whose
-    /// outputs could not be written.
+    /// Each failure: a path that does not exist, a case file that could not be read or
+    /// validated, a case that failed to run or could not be written.
     pub failures: Vec<String>,
 }
 
-/// Every `*.toml` file under `paths` (files, or folders searched recursively), sorted.
-pub fn case_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, String> {
+/// Every `*.toml` file under `paths` (files, or folders searched recursively), sorted, and a
+/// message for each path that cannot be read.
+pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
         for entry in std::fs::read_dir(dir)? {
             let path = entry?.path();
@@ -108,40 +150,36 @@ pub fn case_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, String> {
         Ok(())
     }
     let mut files = Vec::new();
+    let mut failures = Vec::new();
     for p in paths {
         if p.is_dir() {
-            walk(p, &mut files).map_err(|e| format!("{}: cannot list: {e}", p.display()))?;
+            let before = files.len();
+            if let Err(e) = walk(p, &mut files) {
+                failures.push(format!("{}: cannot list: {e}", p.display()));
+            } else if files.len() == before {
+                failures.push(format!("{}: no *.toml case files in this folder", p.display()));
+            }
         } else if p.is_file() {
             files.push(p.clone());
         } else {
-            return Err(format!("{}: no such file or folder", p.display()));
+            failures.push(format!("{}: no such file or folder", p.display()));
         }
     }
     files.sort();
     files.dedup();
-    Ok(files)
+    (files, failures)
 }
 
-/// Loads, validates, runs and writes every case under `paths` into `out/<case name>/`.
-pub fn run_paths(paths: &[PathBuf], out: &Path) -> Result<Report, String> {
-    let files = case_files(paths)?;
-    if files.is_empty() {
-        return Err(format!(
-            "no *.toml case files under {}",
-            paths
-                .iter()
-                .map(|p| p.display().to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        ));
-    }
+/// Reads and validates every case under `paths`; failures are listed, not fatal. Two cases
+/// with one name would write one folder: the second is a failure.
+pub fn load_cases(paths: &[PathBuf]) -> (Vec<Case>, Vec<String>) {
+    let (files, mut failures) = case_files(paths);
     let loaded: Vec<Result<Case, CaseError>> = files.par_iter().map(|f| case::load(f)).collect();
-    let mut report = Report::default();
     let mut cases: Vec<Case> = Vec::new();
     for result in loaded {
         match result {
             Ok(case) => match cases.iter().find(|c| c.name == case.name) {
-                Some(first) => report.failures.push(format!(
+                Some(first) => failures.push(format!(
                     "{}: case \"{}\": name = \"{}\": is already the name of the case in {}; each case needs its own output folder",
                     case.file.display(),
                     case.name,
@@ -150,27 +188,81 @@ pub fn run_paths(paths: &[PathBuf], out: &Path) -> Result<Report, String> {
                 )),
                 None => cases.push(case),
             },
-            Err(e) => report.failures.push(e.to_string()),
+            Err(e) => failures.push(e.to_string()),
         }
     }
-    let outcomes: Vec<Result<(String, PathBuf), String>> = cases
-        .par_iter()
-        .map(|case| {
-            let _span = tracing::info_span!("case", name = %case.name).entered();
-            let runs = run_case(case)?;
-            let dir = out.join(&case.name);
-            output::write_case(&dir, case, &runs)
-                .map(|()| (case.name.clone(), dir.clone()))
-                .map_err(|e| {
-                    format!(
-                        "{}: case \"{}\": cannot write results to {}: {e:#}",
+    (cases, failures)
+}
+
+/// Runs one case into `out/<case name>/`, replacing that folder as a whole.
+fn run_and_write(case: &Case, out: &Path, options: RunOptions) -> Result<PathBuf, String> {
+    let dir = out.join(&case.name);
+    let cannot_write = |e: anyhow::Error| {
+        format!(
+            "{}: case \"{}\": cannot write results to {}: {e:#}",
+            case.file.display(),
+            case.name,
+            dir.display()
+        )
+    };
+    let tmp = output::temporary_dir(&dir).map_err(cannot_write)?;
+    let csv = options.csv.unwrap_or(case.output.csv);
+    let result = run_case(case, csv.then_some(tmp.as_path())).and_then(|results| {
+        let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
+            .map_err(|e| e.to_string())?;
+        summary.push('\n');
+        output::write_file(&tmp.join("summary.json"), summary.as_bytes(), true)
+            .and_then(|()| output::replace_dir(&tmp, &dir))
+            .map_err(cannot_write)
+    });
+    if result.is_err() {
+        let _ = std::fs::remove_dir_all(&tmp);
+    }
+    result.map(|()| dir)
+}
+
+/// Loads, validates, runs and writes every case under `paths` into `out/<case name>/`. A
+/// panic inside a case is caught and reported as that case's failure.
+pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
+    let (cases, failures) = load_cases(paths);
+    let mut report = Report {
+        failures,
+        ..Report::default()
+    };
+    let work = || -> Vec<Result<(String, PathBuf), String>> {
+        cases
+            .par_iter()
+            .map(|case| {
+                let _span = tracing::info_span!("case", name = %case.name).entered();
+                let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    run_and_write(case, out, options)
+                }));
+                match outcome {
+                    Ok(r) => r.map(|dir| (case.name.clone(), dir)),
+                    Err(panic) => Err(format!(
+                        "{}: case \"{}\": internal error (a bug, please report it): {}",
                         case.file.display(),
                         case.name,
-                        dir.display()
-                    )
-                })
-        })
-        .collect();
+                        panic
+                            .downcast_ref::<String>()
+                            .map(String::as_str)
+                            .or_else(|| panic.downcast_ref::<&str>().copied())
+                            .unwrap_or("panic")
+                    )),
+                }
+            })
+            .collect()
+    };
+    let outcomes = match options.jobs {
+        Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
+            Ok(pool) => pool.install(work),
+            Err(e) => {
+                report.failures.push(format!("cannot start {n} worker threads: {e}"));
+                return report;
+            }
+        },
+        None => work(),
+    };
     for o in outcomes {
         match o {
             Ok(w) => {
@@ -180,5 +272,5 @@ pub fn run_paths(paths: &[PathBuf], out: &Path) -> Result<Report, String> {
             Err(e) => report.failures.push(e),
         }
     }
-    Ok(report)
+    report
 }

@@ -105,8 +105,8 @@ fn each_rule_names_file_case_field_rule_and_value() {
         ),
         (
             "[\"slider_crank\", \"cardan_gear\"]",
-            "[\"scotch_yoke\"]",
-            &["mechanisms", "scotch_yoke", "unknown mechanism"],
+            "[\"rhombic_drive\"]",
+            &["mechanisms", "rhombic_drive", "unknown mechanism", "scotch_yoke"],
         ),
         (
             "[\"slider_crank\", \"cardan_gear\"]",
@@ -141,7 +141,7 @@ fn each_rule_names_file_case_field_rule_and_value() {
         (
             "steps = 720",
             "steps = 720\n[masses]\nwheel_inertia = 0.001",
-            &["masses.wheel_inertia", "cardan gear only"],
+            &["masses.wheel_inertia", "does not apply to the slider_crank"],
         ),
     ];
     for (from, to, parts) in cases {

@@ -1,22 +1,25 @@
-//! `cargo xtask run <case files or folders>... [--out DIR]`: runs every case and writes
-//! `DIR/<case name>/summary.json` and `DIR/<case name>/<mechanism>.csv` (DIR defaults to `out`).
-//! Exits 1 if any case failed, after running all the others; 2 on a usage error.
+//! Project tasks.
+//!
+//! - `cargo xtask run <case files or folders>... [--out DIR] [cardan run options]`: builds the
+//!   `cardan` command in release (cargo's progress shown) and runs `cardan run` with the same
+//!   arguments; its exit code is returned (0 all written, 1 some failed, 2 usage).
+//! - `cargo xtask readme [--check]`: writes README.md's generated tables from the registries,
+//!   or with `--check` exits 1 if they are stale.
 
-use std::path::PathBuf;
-use std::process::ExitCode;
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode};
 
-const USAGE: &str = "usage: cargo xtask run <case files or folders>... [--out DIR]";
+const USAGE: &str = "usage: cargo xtask run <case files or folders>... [--out DIR] [--jobs N] [--no-csv]\n       cargo xtask readme [--check]";
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
 
 fn main() -> ExitCode {
-    tracing_subscriber::fmt()
-        .with_env_filter(
-            tracing_subscriber::EnvFilter::try_from_default_env().unwrap_or_else(|_| "warn".into()),
-        )
-        .with_writer(std::io::stderr)
-        .init();
     let args: Vec<String> = std::env::args().skip(1).collect();
     match args.first().map(String::as_str) {
         Some("run") => run(&args[1..]),
+        Some("readme") => readme(args.get(1).map(String::as_str) == Some("--check")),
         _ => {
             eprintln!("{USAGE}");
             ExitCode::from(2)
@@ -25,54 +28,49 @@ fn main() -> ExitCode {
 }
 
 fn run(args: &[String]) -> ExitCode {
-    let mut out = PathBuf::from("out");
-    let mut paths = Vec::new();
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--out" => match it.next() {
-                Some(dir) => out = PathBuf::from(dir),
-                None => {
-                    eprintln!("--out needs a folder\n{USAGE}");
-                    return ExitCode::from(2);
-                }
-            },
-            flag if flag.starts_with('-') => {
-                eprintln!("unknown option {flag}\n{USAGE}");
-                return ExitCode::from(2);
-            }
-            path => paths.push(PathBuf::from(path)),
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let status = Command::new(cargo)
+        .args(["run", "--release", "--package", "cardan", "--manifest-path"])
+        .arg(root().join("Cargo.toml"))
+        .args(["--", "run"])
+        .args(args)
+        .status();
+    match status {
+        Ok(s) => ExitCode::from(s.code().map_or(1, |c| c.clamp(0, 255) as u8)),
+        Err(e) => {
+            eprintln!("error: cannot run cargo: {e}");
+            ExitCode::FAILURE
         }
     }
-    if paths.is_empty() {
-        eprintln!("{USAGE}");
-        return ExitCode::from(2);
-    }
-    let started = std::time::Instant::now();
-    let report = match cardan_runner::run_paths(&paths, &out) {
-        Ok(r) => r,
+}
+
+fn readme(check: bool) -> ExitCode {
+    let path = root().join("README.md");
+    let text = match std::fs::read_to_string(&path) {
+        Ok(t) => t,
+        Err(e) => {
+            eprintln!("error: {}: {e}", path.display());
+            return ExitCode::FAILURE;
+        }
+    };
+    let fresh = match xtask::regenerate(&text) {
+        Ok(t) => t,
         Err(e) => {
             eprintln!("error: {e}");
             return ExitCode::FAILURE;
         }
     };
-    for (name, dir) in &report.written {
-        println!("ok      {name} -> {}", dir.display());
-    }
-    println!(
-        "{} case(s) written to {}, {} failed, in {:.2} s",
-        report.written.len(),
-        out.display(),
-        report.failures.len(),
-        started.elapsed().as_secs_f64()
-    );
-    if report.failures.is_empty() {
-        ExitCode::SUCCESS
-    } else {
-        eprintln!("\nfailures:");
-        for f in &report.failures {
-            eprintln!("  {f}");
+    if check {
+        if fresh == text {
+            ExitCode::SUCCESS
+        } else {
+            eprintln!("README.md's generated tables are stale: run `cargo xtask readme`");
+            ExitCode::FAILURE
         }
+    } else if let Err(e) = std::fs::write(&path, fresh) {
+        eprintln!("error: {}: {e}", path.display());
         ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
     }
 }

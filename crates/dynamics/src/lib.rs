@@ -1,24 +1,29 @@
-//! Kinetostatics: the joint forces and the crank torque that make a mechanism follow its
-//! prescribed motion, from the inertia of its links and the loads applied to its piston.
+//! Kinetostatics of any mechanism of `cardan-mechanism`, step by step: the joint loads and
+//! drive torque of each load family (inertia, gas, and later friction and gear dynamics), their
+//! totals, and the cycle summary, streamed to sinks so that memory does not grow with the
+//! number of steps.
 //!
 //! Two independent paths compute the same loads:
-//! - the closed forms of Karhula (2008), appendix 5.2.1, per mechanism ([`slider_crank`],
-//!   [`cardan_gear`]);
-//! - a general planar solve ([`planar`]): Newton-Euler equations of every link with all joint
-//!   reactions as unknowns of one linear system per step, solved with faer.
+//! - the closed forms each mechanism carries (Karhula 2008, appendix 5.2.1, for the slider-crank
+//!   and the cardan gear), through [`cardan_mechanism::Mechanism::closed_form_loads`];
+//! - a general planar solve ([`planar`]): the Newton-Euler equations of every body with every
+//!   joint reaction unknown, built from the declared topology and solved with faer.
 //!
 //! Sign conventions: forces are complex vectors in the frame of the main bearing axis (cylinder
-//! on the imaginary axis); the crank torque is the torque the drive must apply to the crankshaft,
-//! positive in the direction of rotation, so that its work over a crank-angle interval equals the
-//! gain of kinetic energy of the links plus the work done on the gas.
+//! on the imaginary axis), each joint's force acting on its `body` from its `other`; the drive
+//! torque is the torque the drive applies to the crankshaft, positive in the direction of
+//! rotation, so that its work over a crank-angle interval equals the gain of kinetic energy of
+//! the bodies plus the work done on the gas.
 
-pub mod cardan_gear;
-pub mod cycle;
-pub mod kinetostatics;
-pub mod mass_properties;
+pub mod energy;
+pub mod family;
+pub mod metrics;
 pub mod planar;
-pub mod slider_crank;
+pub mod stepper;
+pub mod summary;
 
-pub use cycle::{run_cycle, Metric, Step, Summary};
-pub use kinetostatics::{kinetic_energy, loads, Loads};
-pub use mass_properties::{MassProperties, Material};
+pub use energy::{kinetic_energy, torque_shares};
+pub use family::{Gas, Inertial, LoadFamily, Solver};
+pub use metrics::{Aggregation, MetricDef, METRICS};
+pub use stepper::{run, RunError, Sink, Step, StepRecord, Steps};
+pub use summary::{Metric, Summary, SummarySink};

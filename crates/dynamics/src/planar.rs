@@ -1,363 +1,205 @@
-//! A general planar kinetostatic solve: the Newton-Euler equations of every link, with every
-//! joint reaction unknown, assembled into one linear system per step and solved by least
-//! squares (faer's QR). It knows nothing of slider-cranks or cardan gears: the mechanisms are
-//! described by [`slider_crank_model`] and [`cardan_gear_model`], and its answers are compared
-//! with the closed forms of Karhula (2008) in the tests.
+//! A general planar kinetostatic solve: the Newton-Euler equations of every body, with every
+//! joint reaction unknown, assembled from a mechanism's declared [`Topology`] into one linear
+//! system per step and solved by least squares (faer's QR). It knows no mechanism: the tests
+//! compare it with each mechanism's closed forms.
 //!
 //! For each body: Σ F = m·a_g and Σ M_g = J·α (d'Alembert: Beer & Johnston, as cited in Karhula
-//! ch. 5). A least-squares solve accepts the identically satisfied equations of point-like links
-//! (whose moment row is empty) and reports the residual, so that a statically inconsistent
-//! model shows itself instead of passing silently.
+//! ch. 5). Unknowns: two force components at a pin; the force across a slide and its couple;
+//! the tangential force of an involute mesh (its radial part |F_t|·tan α follows the sign of
+//! F_t: the system is solved for one flank, and again for the other if F_t comes out with the
+//! wrong sign); the force of a tied mesh (one extra equation ties it to its joint); the drive
+//! torque on the crankshaft. A least-squares solve accepts the identically satisfied equations
+//! of point-like bodies (whose moment row is empty) and reports the residual, so that a
+//! statically inconsistent model shows itself instead of passing silently.
 
-use crate::kinetostatics::cross;
-use crate::{Loads, MassProperties};
-use cardan_mechanism::{KinematicState, MechanismKind, PointMotion, C};
+use cardan_mechanism::{cross, JointKind, JointLoad, Loads, MeshForce, State, Topology, C};
 use faer::linalg::solvers::SolveLstsq;
 use faer::Mat;
 
-/// A rigid link moving in the plane.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Body {
-    /// kg.
-    pub mass: f64,
-    /// About the centre of gravity, kg·m².
-    pub inertia: f64,
-    /// Centre of gravity, m.
-    pub cg: C,
-    /// m/s².
-    pub cg_acceleration: C,
-    /// rad/s².
-    pub angular_acceleration: f64,
-    /// External force through the centre of gravity (the gas on the piston), N.
-    pub applied_force: C,
+/// How one joint's unknowns make its force: (force per unit of the first unknown, per unit of
+/// the second, couple per unit of the second).
+#[derive(Debug, Clone, Copy)]
+enum Unknowns {
+    /// Fx, Fy.
+    Pin,
+    /// Force along `n`, couple.
+    Slide { n: C },
+    /// Force along `d`.
+    Along { d: C },
 }
 
-/// A joint; `other: None` is the frame. Each joint's unknown is the reaction on `body` from
-/// `other`; `other` receives its opposite.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Joint {
-    /// Revolute joint at `at`: two unknown force components.
-    Pin {
-        body: usize,
-        other: Option<usize>,
-        at: C,
-    },
-    /// A contact that only transmits force along the unit vector `direction`: one unknown.
-    Contact {
-        body: usize,
-        other: Option<usize>,
-        at: C,
-        direction: C,
-    },
-    /// The drive torque on `body` from the frame: one unknown.
-    Drive { body: usize },
-}
-
-/// An extra linear relation: the magnitude of `contact` (a [`Joint::Contact`]) equals `factor`
-/// times the component along `direction` of the force of `pin` (a [`Joint::Pin`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Tie {
-    pub contact: usize,
-    pub pin: usize,
-    pub direction: C,
-    pub factor: f64,
-}
-
-/// A mechanism at one instant, as the solver sees it.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Model {
-    pub bodies: Vec<Body>,
-    pub joints: Vec<Joint>,
-    pub ties: Vec<Tie>,
-}
-
-/// The reaction of each joint, in the order of [`Model::joints`]: the force on `body` (zero
-/// for a drive) and the torque (zero but for a drive).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Solution {
-    pub forces: Vec<C>,
-    pub torques: Vec<f64>,
-    /// Euclidean norm of the equation residual, in the units of the equations (N and N·m).
-    pub residual: f64,
-}
-
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum PlanarError {
-    #[error("the model has {equations} equations for {unknowns} unknowns: it is statically indeterminate")]
-    Indeterminate { equations: usize, unknowns: usize },
-}
-
-impl Model {
-    /// Solves for all joint reactions.
-    pub fn solve(&self) -> Result<Solution, PlanarError> {
-        let mut columns = Vec::with_capacity(self.joints.len());
-        let mut unknowns = 0;
-        for j in &self.joints {
-            columns.push(unknowns);
-            unknowns += match j {
-                Joint::Pin { .. } => 2,
-                Joint::Contact { .. } | Joint::Drive { .. } => 1,
-            };
+impl Unknowns {
+    fn count(self) -> usize {
+        match self {
+            Unknowns::Pin | Unknowns::Slide { .. } => 2,
+            Unknowns::Along { .. } => 1,
         }
-        let equations = 3 * self.bodies.len() + self.ties.len();
-        if equations < unknowns {
-            return Err(PlanarError::Indeterminate {
-                equations,
-                unknowns,
-            });
+    }
+}
+
+/// The loads of one step by the general solve, written to `out`; returns the residual norm of
+/// the equations (N and N·m).
+pub fn loads(
+    topology: &Topology,
+    state: &State,
+    inertia: bool,
+    piston_forces: &[f64],
+    out: &mut Loads,
+) -> f64 {
+    // An involute mesh's radial force follows the sign of F_t: try the positive flank, then
+    // the negative one if F_t came out negative.
+    let mut flank = 1.0;
+    for attempt in 0..2 {
+        let (residual, involute_ft) = solve(topology, state, inertia, piston_forces, flank, out);
+        match involute_ft {
+            Some(ft) if ft * flank < 0.0 && attempt == 0 => flank = -flank,
+            _ => return residual,
         }
-        let mut a = Mat::<f64>::zeros(equations, unknowns);
-        let mut b = Mat::<f64>::zeros(equations, 1);
-        for (k, body) in self.bodies.iter().enumerate() {
-            let rhs = body.mass * body.cg_acceleration - body.applied_force;
+    }
+    unreachable!("the loop returns on its second pass")
+}
+
+/// One least-squares solve with the involute flank sign `flank`; returns the residual and the
+/// tangential force of the (first) involute mesh, if any.
+fn solve(
+    topology: &Topology,
+    state: &State,
+    inertia: bool,
+    piston_forces: &[f64],
+    flank: f64,
+    out: &mut Loads,
+) -> (f64, Option<f64>) {
+    let joints = &topology.joints;
+    let mut kinds = Vec::with_capacity(joints.len());
+    let mut columns = Vec::with_capacity(joints.len());
+    let mut unknowns = 0;
+    let mut ties = Vec::new();
+    let mut involute = None;
+    for (j, joint) in joints.iter().enumerate() {
+        let m = &state.joints[j];
+        let u = match joint.kind {
+            JointKind::Revolute { .. } => Unknowns::Pin,
+            JointKind::Prismatic => Unknowns::Slide {
+                n: C::i() * m.direction,
+            },
+            JointKind::GearMesh {
+                pressure_angle,
+                force,
+                ..
+            } => match force {
+                MeshForce::Involute => {
+                    involute.get_or_insert(j);
+                    // Tangent t = i·d; radial part |F_t|·tan α along d, towards the centre of
+                    // the gear on `body`.
+                    Unknowns::Along {
+                        d: C::i() * m.direction + flank * pressure_angle.tan() * m.direction,
+                    }
+                }
+                MeshForce::Tied {
+                    direction,
+                    joint: tied,
+                    factor,
+                } => {
+                    ties.push((j, tied, direction, factor));
+                    Unknowns::Along { d: direction }
+                }
+            },
+        };
+        kinds.push(u);
+        columns.push(unknowns);
+        unknowns += u.count();
+    }
+    let drive = unknowns;
+    unknowns += 1;
+    let bodies = &topology.bodies;
+    let equations = 3 * bodies.len() + ties.len();
+    let mut a = Mat::<f64>::zeros(equations, unknowns);
+    let mut b = Mat::<f64>::zeros(equations, 1);
+    for (k, (body, m)) in bodies.iter().zip(&state.bodies).enumerate() {
+        if inertia {
+            let rhs = body.mass * m.cg.acceleration;
             b[(3 * k, 0)] = rhs.re;
             b[(3 * k + 1, 0)] = rhs.im;
-            b[(3 * k + 2, 0)] = body.inertia * body.angular_acceleration;
+            b[(3 * k + 2, 0)] = body.inertia * m.angular_acceleration;
         }
-        for (j, joint) in self.joints.iter().enumerate() {
-            let col = columns[j];
-            match *joint {
-                Joint::Pin { body, other, at } => {
-                    for (target, sign) in [(Some(body), 1.0), (other, -1.0)] {
-                        let Some(k) = target else { continue };
-                        let arm = at - self.bodies[k].cg;
-                        a[(3 * k, col)] += sign;
-                        a[(3 * k + 1, col + 1)] += sign;
-                        // arm × (Fx, Fy) = arm.re·Fy − arm.im·Fx
-                        a[(3 * k + 2, col)] -= sign * arm.im;
-                        a[(3 * k + 2, col + 1)] += sign * arm.re;
-                    }
+    }
+    // The gas pushes each piston along its axis towards the crankshaft, at the piston pin.
+    for ((piston, motion), &force) in topology
+        .pistons
+        .iter()
+        .zip(&state.pistons)
+        .zip(piston_forces)
+    {
+        let k = piston.body;
+        let f = -force * piston.axis;
+        let at = piston.origin + motion.position * piston.axis;
+        b[(3 * k, 0)] -= f.re;
+        b[(3 * k + 1, 0)] -= f.im;
+        b[(3 * k + 2, 0)] -= cross(at - state.bodies[k].cg.position, f);
+    }
+    for (j, joint) in joints.iter().enumerate() {
+        let col = columns[j];
+        let at = state.joints[j].position;
+        for (target, sign) in [(Some(joint.body), 1.0), (joint.other, -1.0)] {
+            let Some(k) = target else { continue };
+            let arm = at - state.bodies[k].cg.position;
+            // A unit force f at `at` adds f to the force rows and arm × f to the moment row.
+            let mut put = |c: usize, f: C, couple: f64| {
+                a[(3 * k, c)] += sign * f.re;
+                a[(3 * k + 1, c)] += sign * f.im;
+                a[(3 * k + 2, c)] += sign * (cross(arm, f) + couple);
+            };
+            match kinds[j] {
+                Unknowns::Pin => {
+                    put(col, C::new(1.0, 0.0), 0.0);
+                    put(col + 1, C::new(0.0, 1.0), 0.0);
                 }
-                Joint::Contact {
-                    body,
-                    other,
-                    at,
-                    direction,
-                } => {
-                    for (target, sign) in [(Some(body), 1.0), (other, -1.0)] {
-                        let Some(k) = target else { continue };
-                        a[(3 * k, col)] += sign * direction.re;
-                        a[(3 * k + 1, col)] += sign * direction.im;
-                        a[(3 * k + 2, col)] += sign * cross(at - self.bodies[k].cg, direction);
-                    }
+                Unknowns::Slide { n } => {
+                    put(col, n, 0.0);
+                    put(col + 1, C::new(0.0, 0.0), 1.0);
                 }
-                Joint::Drive { body } => a[(3 * body + 2, col)] += 1.0,
+                Unknowns::Along { d } => put(col, d, 0.0),
             }
         }
-        for (t, tie) in self.ties.iter().enumerate() {
-            let row = 3 * self.bodies.len() + t;
-            a[(row, columns[tie.contact])] = 1.0;
-            a[(row, columns[tie.pin])] = -tie.factor * tie.direction.re;
-            a[(row, columns[tie.pin] + 1)] = -tie.factor * tie.direction.im;
-        }
-        let x = a.qr().solve_lstsq(&b);
-        let residual = (&a * &x - &b).norm_l2();
-        let mut forces = Vec::with_capacity(self.joints.len());
-        let mut torques = Vec::with_capacity(self.joints.len());
-        for (j, joint) in self.joints.iter().enumerate() {
-            let col = columns[j];
-            let (f, t) = match *joint {
-                Joint::Pin { .. } => (C::new(x[(col, 0)], x[(col + 1, 0)]), 0.0),
-                Joint::Contact { direction, .. } => (x[(col, 0)] * direction, 0.0),
-                Joint::Drive { .. } => (C::new(0.0, 0.0), x[(col, 0)]),
-            };
-            forces.push(f);
-            torques.push(t);
-        }
-        Ok(Solution {
-            forces,
-            torques,
-            residual,
-        })
     }
-}
-
-const CRANKSHAFT: usize = 0;
-const ROD_OR_WHEEL: usize = 1;
-const RECIPROCATING: usize = 2;
-
-impl Body {
-    /// A crankshaft assembly turning about the main axis, its centre of gravity on the axis.
-    fn crankshaft(inertia: f64, angular_acceleration: f64) -> Self {
-        let zero = C::new(0.0, 0.0);
-        Body {
-            mass: 0.0,
-            inertia,
-            cg: zero,
-            cg_acceleration: zero,
-            angular_acceleration,
-            applied_force: zero,
+    a[(3 * topology.crankshaft + 2, drive)] += 1.0;
+    for (t, &(mesh, tied, direction, factor)) in ties.iter().enumerate() {
+        let row = 3 * bodies.len() + t;
+        a[(row, columns[mesh])] = 1.0;
+        // The component along `direction` of the tied joint's force.
+        let c = columns[tied];
+        match kinds[tied] {
+            Unknowns::Pin => {
+                a[(row, c)] -= factor * direction.re;
+                a[(row, c + 1)] -= factor * direction.im;
+            }
+            Unknowns::Slide { n } => a[(row, c)] -= factor * dot(n, direction),
+            Unknowns::Along { d } => a[(row, c)] -= factor * dot(d, direction),
         }
     }
-
-    /// A translating mass on the cylinder axis at `point`, pushed by the gas.
-    fn reciprocating(mass: f64, point: &PointMotion, piston_force: f64) -> Self {
-        Body {
-            mass,
-            inertia: 0.0,
-            cg: point.position,
-            cg_acceleration: point.acceleration,
-            angular_acceleration: 0.0,
-            applied_force: C::new(0.0, -piston_force),
-        }
-    }
-}
-
-/// Crankshaft, a middle link and a reciprocating link: main bearing, crank pin, the pin
-/// between the middle and reciprocating links at `upper_pin`, one more contact, the drive.
-fn crank_train(
-    state: &KinematicState,
-    crankshaft_inertia: f64,
-    middle: Body,
-    reciprocating: Body,
-    upper_pin: C,
-    contact: Joint,
-    ties: Vec<Tie>,
-) -> Model {
-    Model {
-        bodies: vec![
-            Body::crankshaft(crankshaft_inertia, state.crank.acceleration),
-            middle,
-            reciprocating,
-        ],
-        joints: vec![
-            Joint::Pin {
-                body: CRANKSHAFT,
-                other: None,
-                at: C::new(0.0, 0.0),
+    let x = a.qr().solve_lstsq(&b);
+    let residual = (&a * &x - &b).norm_l2();
+    for (j, load) in out.joints.iter_mut().enumerate() {
+        let c = columns[j];
+        *load = match kinds[j] {
+            Unknowns::Pin => JointLoad {
+                force: C::new(x[(c, 0)], x[(c + 1, 0)]),
+                moment: 0.0,
             },
-            Joint::Pin {
-                body: CRANKSHAFT,
-                other: Some(ROD_OR_WHEEL),
-                at: state.crank_pin.position,
+            Unknowns::Slide { n } => JointLoad {
+                force: x[(c, 0)] * n,
+                moment: x[(c + 1, 0)],
             },
-            Joint::Pin {
-                body: RECIPROCATING,
-                other: Some(ROD_OR_WHEEL),
-                at: upper_pin,
+            Unknowns::Along { d } => JointLoad {
+                force: x[(c, 0)] * d,
+                moment: 0.0,
             },
-            contact,
-            Joint::Drive { body: CRANKSHAFT },
-        ],
-        ties,
+        };
     }
+    out.crank_torque = x[(drive, 0)];
+    (residual, involute.map(|j| x[(columns[j], 0)]))
 }
 
-/// Slider-crank: crankshaft (centre of gravity on the main axis), rod, piston (a point mass at
-/// the piston pin). Joints: main bearing, crank pin, piston pin, cylinder wall, drive.
-pub fn slider_crank_model(
-    state: &KinematicState,
-    masses: &MassProperties,
-    piston_force: f64,
-) -> Model {
-    let pin_b = state.piston_pin.position;
-    let rod = Body {
-        mass: masses.rod_mass,
-        inertia: masses.rod_inertia,
-        cg: state.rod.point.position,
-        cg_acceleration: state.rod.point.acceleration,
-        angular_acceleration: state.rod.angular_acceleration,
-        applied_force: C::new(0.0, 0.0),
-    };
-    let piston = Body::reciprocating(masses.piston_mass, &state.piston_pin, piston_force);
-    let wall = Joint::Contact {
-        body: RECIPROCATING,
-        other: None,
-        at: pin_b,
-        direction: C::new(1.0, 0.0),
-    };
-    crank_train(
-        state,
-        masses.crankshaft_inertia,
-        rod,
-        piston,
-        pin_b,
-        wall,
-        vec![],
-    )
-}
-
-/// Cardan gear: crankshaft assembly (carrying the wheel's inertia, Karhula ch. 11.2), cardan
-/// wheel, reciprocating assembly (piston, pin and rod on the cylinder axis). Joints: main
-/// bearing, crank pin S, wheel pin T, gear mesh at the pitch point (a contact along the
-/// cylinder axis whose force the thesis ties to the rod force, A5.2.1.48-51), drive. There is
-/// no cylinder-wall joint: the rod's straight line comes from the gears.
-pub fn cardan_gear_model(
-    state: &KinematicState,
-    masses: &MassProperties,
-    piston_force: f64,
-) -> Model {
-    let axis = C::new(0.0, 1.0);
-    let wheel_motion = state.wheel.expect("a cardan gear state has a wheel");
-    let pin_t = state.rod.lower_pin;
-    let wheel = Body {
-        mass: 0.0,
-        inertia: 0.0,
-        cg: state.crank_pin.position,
-        cg_acceleration: state.crank_pin.acceleration,
-        angular_acceleration: wheel_motion.angular_acceleration,
-        applied_force: C::new(0.0, 0.0),
-    };
-    let assembly = Body::reciprocating(
-        masses.reciprocating_mass(MechanismKind::CardanGear),
-        &pin_t,
-        piston_force,
-    );
-    let mesh = Joint::Contact {
-        body: ROD_OR_WHEEL,
-        other: None,
-        at: wheel_motion.mesh_point,
-        direction: axis,
-    };
-    // Mesh force on the wheel = the rod's force on the wheel = −(force on the rod from the wheel).
-    let tie = Tie {
-        contact: 3,
-        pin: 2,
-        direction: axis,
-        factor: -1.0,
-    };
-    crank_train(
-        state,
-        masses.crankshaft_inertia + masses.wheel_inertia,
-        wheel,
-        assembly,
-        pin_t.position,
-        mesh,
-        vec![tie],
-    )
-}
-
-/// The loads of one step by the general solve, in the conventions of [`Loads`], with the
-/// residual of the solve.
-pub fn loads(
-    kind: MechanismKind,
-    state: &KinematicState,
-    masses: &MassProperties,
-    piston_force: f64,
-) -> (Loads, f64) {
-    let model = match kind {
-        MechanismKind::SliderCrank => slider_crank_model(state, masses, piston_force),
-        MechanismKind::CardanGear => cardan_gear_model(state, masses, piston_force),
-    };
-    let s = model
-        .solve()
-        .expect("both mechanism models are determinate");
-    let f = &s.forces;
-    let loads = Loads {
-        main_bearing: f[0],
-        crank_pin: f[1],
-        piston_pin: f[2],
-        piston_side: match kind {
-            MechanismKind::SliderCrank => f[3].re,
-            MechanismKind::CardanGear => 0.0,
-        },
-        gear_mesh: match kind {
-            MechanismKind::SliderCrank => C::new(0.0, 0.0),
-            MechanismKind::CardanGear => f[3],
-        },
-        crank_torque: s.torques[4],
-        torque_by_link: [0.0; 3],
-        rod_percussion_centre: None,
-    };
-    (loads, s.residual)
+fn dot(a: C, b: C) -> f64 {
+    a.re * b.re + a.im * b.im
 }

@@ -36,8 +36,12 @@
 //!   confirmed by F_max; no crankcase pressure). Inertia belongs to the mechanism.
 //! - Energy fractions of §5.1.1 (note §5.1.9): the vaporisation heat counts as heat loss.
 
-use crate::{require, Chamber, GasCycle, GasError, GasMetric, GasModel};
+use crate::{require, Chamber, GasError, GasMetric, GasModel, PreparedGas};
 use std::f64::consts::PI;
+
+/// The coarsest integration step, rad (5°): the Wiebe burn of about 30° must span several
+/// steps for the heat release to be resolved at all; a 360° step would integrate nothing.
+pub const MAX_STEP: f64 = 5.0 * PI / 180.0;
 
 /// At most this many integration steps from IVC to EVO.
 const MAX_STEPS: f64 = 1e7;
@@ -291,9 +295,9 @@ impl ClosedCycle {
         require(
             "step",
             self.step,
-            self.step > 0.0 && (evo - ivc) / self.step <= MAX_STEPS,
-            "must be positive and give at most 10 000 000 steps from intake_closing to \
-             exhaust_opening",
+            self.step > 0.0 && self.step <= MAX_STEP && (evo - ivc) / self.step <= MAX_STEPS,
+            "must be positive, at most 5° (so that the combustion, about 30°, spans several \
+             steps) and give at most 10 000 000 steps from intake_closing to exhaust_opening",
         )?;
         Ok(())
     }
@@ -512,14 +516,14 @@ fn interpolate(tr: &ClosedCycleTrace, angle: f64) -> f64 {
 }
 
 impl GasModel for ClosedCycle {
-    /// Pressure at each requested angle: the trace, linearly interpolated, from IVC to EVO
+    /// Pressure at each crank angle: the trace, linearly interpolated, from IVC to EVO
     /// and the ambient pressure elsewhere; the force on each piston p·A_pis (note §1).
     /// Metrics per cycle of the chamber (note §5.1.8-9):
     /// - `imep` W/V_d, Pa (eq 2.50); `indicated_work` W, J (eq 2.48);
     /// - `indicated_torque_mean` W/(4π), N·m: the whole chamber's mean torque (the thesis's
     ///   "average torque", note §1); `indicated_power` W·ω/(4π), W (eqs 2.46, 2.49);
-    /// - `peak_pressure`, Pa, on the integration grid, and `peak_pressure_angle`, rad from
-    ///   the opening TDC;
+    /// - `peak_pressure`, Pa, on the integration grid, and `peak_pressure_angle_deg`, degrees
+    ///   from the opening TDC;
     /// - `combustion_efficiency` η_c (eq 2.56);
     /// - with fuel energy E_f = m_f·QHV > 0 (not motored): `isfc` m_f/W, kg/J (eq 2.52; the
     ///   gross indicated value), `indicated_efficiency` W/E_f (eq 2.53, the
@@ -528,31 +532,56 @@ impl GasModel for ClosedCycle {
     ///   and `unreleased_fraction` 1 − Q_R/E_f (incomplete combustion and the Wiebe cut-off).
     ///   The four sum to 1 less (m_EVO − m_1)·c_v·T_1/E_f (0.5 % for the thesis): the fuel
     ///   vapour enters the scheme without internal energy.
-    fn cycle(&self, chamber: &Chamber, speed: f64, angles: &[f64]) -> Result<GasCycle, GasError> {
-        let tr = self.trace(chamber, speed)?;
-        let b = tr.balance;
-        let area = chamber.cylinder.area;
-        let mut cycle = GasCycle::default();
-        for &theta in angles {
-            require("angle", theta, true, "must be finite")?;
-            let a = chamber.cycle_angle(theta);
-            let p = if (self.intake_closing..=self.exhaust_opening).contains(&a) {
-                interpolate(&tr, a)
-            } else {
-                self.ambient_pressure
-            };
-            cycle.pressure.push(p);
-            cycle.piston_force.push(p * area);
-        }
+    fn prepare<'a>(
+        &'a self,
+        chamber: Chamber<'a>,
+        speed: f64,
+    ) -> Result<Box<dyn PreparedGas + 'a>, GasError> {
+        let trace = self.trace(&chamber, speed)?;
+        Ok(Box::new(PreparedClosedCycle {
+            model: self,
+            chamber,
+            speed,
+            trace,
+        }))
+    }
+}
+
+/// The closed cycle integrated once for its chamber and speed.
+struct PreparedClosedCycle<'a> {
+    model: &'a ClosedCycle,
+    chamber: Chamber<'a>,
+    speed: f64,
+    trace: ClosedCycleTrace,
+}
+
+impl PreparedGas for PreparedClosedCycle<'_> {
+    fn at(&self, theta: f64) -> (f64, f64) {
+        let m = self.model;
+        let a = self.chamber.cycle_angle(theta);
+        let p = if (m.intake_closing..=m.exhaust_opening).contains(&a) {
+            interpolate(&self.trace, a)
+        } else {
+            m.ambient_pressure
+        };
+        (p, p * self.chamber.cylinder.area)
+    }
+
+    fn metrics(&self) -> Vec<GasMetric> {
+        let b = &self.trace.balance;
         let w = b.work;
         let ef = b.fuel_energy;
         let metrics = [
-            ("imep", "Pa", w / chamber.cylinder.swept_volume),
+            ("imep", "Pa", w / self.chamber.cylinder.swept_volume),
             ("indicated_work", "J", w),
             ("indicated_torque_mean", "N*m", w / (4.0 * PI)),
-            ("indicated_power", "W", w * speed / (4.0 * PI)),
+            ("indicated_power", "W", w * self.speed / (4.0 * PI)),
             ("peak_pressure", "Pa", b.peak_pressure),
-            ("peak_pressure_angle", "rad", b.peak_pressure_angle),
+            (
+                "peak_pressure_angle_deg",
+                "deg",
+                b.peak_pressure_angle.to_degrees(),
+            ),
             ("combustion_efficiency", "1", b.combustion_efficiency),
             ("isfc", "kg/J", b.fuel_mass / w),
             ("indicated_efficiency", "1", w / ef),
@@ -566,11 +595,10 @@ impl GasModel for ClosedCycle {
         ];
         // Without fuel energy (a motored engine) the last five are undefined: left out.
         let keep = if ef > 0.0 { metrics.len() } else { 7 };
-        cycle.metrics = metrics[..keep]
+        metrics[..keep]
             .iter()
             .map(|&(name, unit, value)| GasMetric { name, unit, value })
-            .collect();
-        Ok(cycle)
+            .collect()
     }
 }
 
@@ -652,7 +680,6 @@ mod tests {
         for speed in [0.0, -1.0, f64::NAN] {
             assert_eq!(e.trace(&ch, speed).unwrap_err().field, "speed");
         }
-        assert_eq!(e.cycle(&ch, 100.0, &[f64::NAN]).unwrap_err().field, "angle");
         // Ignition after EVO at this speed.
         let mut late = e;
         late.combustion_start_per_speed = 1.0;
@@ -683,7 +710,13 @@ mod tests {
         assert!(hot.trace(&ch, 100.0).is_err());
         // A crawl with a coarse step: the explicit heat loss overshoots; an error.
         let mut coarse = e;
-        coarse.step = 0.5;
-        assert!(coarse.trace(&ch, 1e-3).is_err());
+        coarse.step = MAX_STEP;
+        let err = coarse.trace(&ch, 1e-3).unwrap_err();
+        assert!(err.rule.contains("explicit heat loss"), "{err}");
+        // A step that cannot resolve the combustion is refused outright (issue 7: a 360° step).
+        coarse.step = 2.0 * PI;
+        assert_eq!(coarse.validate().unwrap_err().field, "step");
+        coarse.step = MAX_STEP * (1.0 + 1e-12);
+        assert_eq!(coarse.validate().unwrap_err().field, "step");
     }
 }

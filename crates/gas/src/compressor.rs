@@ -16,7 +16,7 @@
 //! ideal: lossless, instantaneous, opening at exactly p_s and p_d. The crankcase is at suction
 //! pressure, so each piston feels F = (p − p_s)·A_pis, positive towards the crankshaft.
 
-use crate::{require, Chamber, Cylinder, GasCycle, GasError, GasMetric, GasModel, Volume};
+use crate::{require, Chamber, Cylinder, GasError, GasMetric, GasModel, PreparedGas, Volume};
 use std::f64::consts::PI;
 
 /// Specific gas constant of dry air, J/(kg·K): R̄/M = 8.314 46/0.028 964 (ISO 2533 standard
@@ -318,36 +318,63 @@ impl Compressor {
 }
 
 impl GasModel for Compressor {
-    /// Pressure and piston force at `angles`; metrics of the periodic steady state, with
-    /// `speed` (rad/s) scaling the mass flow and power (one cycle per revolution).
-    fn cycle(&self, chamber: &Chamber, speed: f64, angles: &[f64]) -> Result<GasCycle, GasError> {
+    /// Pressure and piston force at any crank angle; metrics of the periodic steady state,
+    /// with `speed` (rad/s) scaling the mass flow and power (one cycle per revolution).
+    fn prepare<'a>(
+        &'a self,
+        chamber: Chamber<'a>,
+        speed: f64,
+    ) -> Result<Box<dyn PreparedGas + 'a>, GasError> {
         let c = &chamber.cylinder;
         let (steady, _) = self.steady_state(c)?;
         // The diagram is a function of V alone, so on any volume curve that rises and falls
         // once per revolution its work is the closed form (the tests check it against
         // `indicated_work` on both mechanisms).
         let work = self.closed_form_work(c)?;
-        let cycles_per_second = speed / (2.0 * PI);
-        let mut gas = GasCycle::default();
-        let volumes = self.volumes(c);
-        for &theta in angles {
-            let p = self.pressure_on(&volumes, (chamber.volume)(theta));
-            gas.pressure.push(p);
-            gas.piston_force.push((p - self.suction_pressure) * c.area);
-        }
+        Ok(Box::new(PreparedCompressor {
+            model: self,
+            volumes: self.volumes(c),
+            chamber,
+            steady,
+            work,
+            speed,
+        }))
+    }
+}
+
+/// The compressor at its periodic steady state on one chamber.
+struct PreparedCompressor<'a> {
+    model: &'a Compressor,
+    chamber: Chamber<'a>,
+    volumes: [f64; 4],
+    steady: IndicatorDiagram,
+    work: f64,
+    speed: f64,
+}
+
+impl PreparedGas for PreparedCompressor<'_> {
+    fn at(&self, theta: f64) -> (f64, f64) {
+        let p = self
+            .model
+            .pressure_on(&self.volumes, (self.chamber.volume)(theta));
+        (p, (p - self.model.suction_pressure) * self.chamber.cylinder.area)
+    }
+
+    fn metrics(&self) -> Vec<GasMetric> {
+        let cycles_per_second = self.speed / (2.0 * PI);
         let metric = |name, unit, value| GasMetric { name, unit, value };
-        gas.metrics = vec![
+        let steady = &self.steady;
+        vec![
             metric(
                 "delivered_mass_flow",
                 "kg/s",
                 steady.delivered_mass * cycles_per_second,
             ),
             metric("volumetric_efficiency", "1", steady.volumetric_efficiency()),
-            metric("specific_energy", "J/kg", work / steady.delivered_mass),
-            metric("indicated_power", "W", work * cycles_per_second),
+            metric("specific_energy", "J/kg", self.work / steady.delivered_mass),
+            metric("indicated_power", "W", self.work * cycles_per_second),
             metric("discharge_temperature", "K", steady.points[1].temperature),
-        ];
-        Ok(gas)
+        ]
     }
 }
 

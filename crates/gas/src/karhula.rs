@@ -22,7 +22,7 @@
 //!   its peak torques within 2 %. That cannot be a physical cycle (combustion pressure during
 //!   compression), so we implement the direct reading and show the thesis's one in the tests.
 
-use crate::{require, Chamber, Cylinder, GasCycle, GasError, GasModel};
+use crate::{require, Chamber, Cylinder, GasError, GasMetric, GasModel, PreparedGas};
 use std::f64::consts::PI;
 
 /// Which half-turn of the 720° cycle θ falls in: 0 = the stroke after the opening TDC.
@@ -80,14 +80,8 @@ impl Polytropic {
 }
 
 impl Polytropic {
-    /// The gas over `angles`: `closed_pressure(stroke, θ)` on the closed strokes, where the
-    /// force is p·A_pis (A6.2.1.1, A6.2.1.13); ambient pressure and no force on the open ones.
-    fn closed_strokes(
-        &self,
-        chamber: &Chamber,
-        angles: &[f64],
-        closed_pressure: impl Fn(usize, f64) -> Option<f64>,
-    ) -> Result<GasCycle, GasError> {
+    /// The polytropic needs a clearance volume.
+    fn check(&self, chamber: &Chamber) -> Result<(), GasError> {
         let cylinder = &chamber.cylinder;
         require(
             "compression_ratio",
@@ -95,15 +89,29 @@ impl Polytropic {
             cylinder.clearance_volume > 0.0,
             "must be finite: the polytropic pressure needs a clearance volume",
         )?;
-        let mut cycle = GasCycle::default();
-        for &theta in angles {
-            let closed = closed_pressure(stroke(chamber, theta), theta);
-            cycle.pressure.push(closed.unwrap_or(self.ambient_pressure));
-            cycle
-                .piston_force
-                .push(closed.map_or(0.0, |p| p * cylinder.area));
+        Ok(())
+    }
+}
+
+/// A Karhula model on its chamber: `closed(stroke, θ)` gives the pressure on the closed
+/// strokes, where the force is p·A_pis (A6.2.1.1, A6.2.1.13); the open strokes are at ambient
+/// pressure and carry no force.
+struct ClosedStrokes<'a, F> {
+    chamber: Chamber<'a>,
+    ambient: f64,
+    closed: F,
+}
+
+impl<F: Fn(&Chamber, usize, f64) -> Option<f64> + Sync> PreparedGas for ClosedStrokes<'_, F> {
+    fn at(&self, theta: f64) -> (f64, f64) {
+        match (self.closed)(&self.chamber, stroke(&self.chamber, theta), theta) {
+            Some(p) => (p, p * self.chamber.cylinder.area),
+            None => (self.ambient, 0.0),
         }
-        Ok(cycle)
+    }
+
+    fn metrics(&self) -> Vec<GasMetric> {
+        Vec::new()
     }
 }
 
@@ -114,11 +122,20 @@ pub struct KarhulaPump {
 }
 
 impl GasModel for KarhulaPump {
-    fn cycle(&self, chamber: &Chamber, _speed: f64, angles: &[f64]) -> Result<GasCycle, GasError> {
-        let c = &chamber.cylinder;
-        self.gas.closed_strokes(chamber, angles, |stroke, theta| {
-            matches!(stroke, 1 | 3).then(|| self.gas.pressure(c, (chamber.volume)(theta).volume))
-        })
+    fn prepare<'a>(
+        &'a self,
+        chamber: Chamber<'a>,
+        _speed: f64,
+    ) -> Result<Box<dyn PreparedGas + 'a>, GasError> {
+        self.gas.check(&chamber)?;
+        Ok(Box::new(ClosedStrokes {
+            chamber,
+            ambient: self.gas.ambient_pressure,
+            closed: move |ch: &Chamber, stroke, theta| {
+                matches!(stroke, 1 | 3)
+                    .then(|| self.gas.pressure(&ch.cylinder, (ch.volume)(theta).volume))
+            },
+        }))
     }
 }
 
@@ -169,14 +186,21 @@ impl KarhulaEngine {
 }
 
 impl GasModel for KarhulaEngine {
-    fn cycle(&self, chamber: &Chamber, _speed: f64, angles: &[f64]) -> Result<GasCycle, GasError> {
-        let c = &chamber.cylinder;
-        self.gas
-            .closed_strokes(chamber, angles, |stroke, theta| match stroke {
-                1 => Some(self.gas.pressure(c, (chamber.volume)(theta).volume)),
-                2 => Some(self.combustion_pressure(chamber, theta)),
+    fn prepare<'a>(
+        &'a self,
+        chamber: Chamber<'a>,
+        _speed: f64,
+    ) -> Result<Box<dyn PreparedGas + 'a>, GasError> {
+        self.gas.check(&chamber)?;
+        Ok(Box::new(ClosedStrokes {
+            chamber,
+            ambient: self.gas.ambient_pressure,
+            closed: move |ch: &Chamber, stroke, theta| match stroke {
+                1 => Some(self.gas.pressure(&ch.cylinder, (ch.volume)(theta).volume)),
+                2 => Some(self.combustion_pressure(ch, theta)),
                 _ => None,
-            })
+            },
+        }))
     }
 }
 

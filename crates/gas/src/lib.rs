@@ -52,10 +52,40 @@ pub struct GasMetric {
 
 /// A gas model: what the gas does to the pistons over the crank angle.
 pub trait GasModel: Sync {
-    /// The gas at the crank angles `angles` (rad, increasing, any span) when the crank turns
-    /// at the mean speed `speed` (rad/s, used by speed-dependent models: heat transfer,
-    /// timing, mass flow).
-    fn cycle(&self, chamber: &Chamber, speed: f64, angles: &[f64]) -> Result<GasCycle, GasError>;
+    /// The model made ready for `chamber` when the crank turns at the mean speed `speed`
+    /// (rad/s, used by speed-dependent models: heat transfer, timing, mass flow): the work done
+    /// once per cycle (the closed cycle's integration, the compressor's periodic steady state)
+    /// is done here, so that the gas at any crank angle is then a cheap look-up.
+    fn prepare<'a>(
+        &'a self,
+        chamber: Chamber<'a>,
+        speed: f64,
+    ) -> Result<Box<dyn PreparedGas + 'a>, GasError>;
+
+    /// The gas at the crank angles `angles` (rad, increasing, any span).
+    fn cycle(&self, chamber: &Chamber, speed: f64, angles: &[f64]) -> Result<GasCycle, GasError> {
+        let gas = self.prepare(*chamber, speed)?;
+        let mut cycle = GasCycle {
+            metrics: gas.metrics(),
+            ..GasCycle::default()
+        };
+        for &theta in angles {
+            let (p, f) = gas.at(theta);
+            cycle.pressure.push(p);
+            cycle.piston_force.push(f);
+        }
+        Ok(cycle)
+    }
+}
+
+/// A gas model ready for one chamber and speed.
+pub trait PreparedGas: Sync {
+    /// Absolute cylinder pressure (Pa) and the gas force on each piston along the cylinder
+    /// axis, towards the crankshaft (N), at crank angle `theta` (rad).
+    fn at(&self, theta: f64) -> (f64, f64);
+
+    /// The model's results per cycle.
+    fn metrics(&self) -> Vec<GasMetric>;
 }
 
 /// An impossible gas input: the field, its value and the rule it breaks.

@@ -1,57 +1,238 @@
-//! The cardan gear (geared hypocycloid with a 2:1 internal pair), Karhula (2008) appendix 4.2.1
-//! and eqs. (A4.2.2.56)-(A4.2.2.74).
+//! The cardan gear (geared hypocycloid with a 2:1 internal pair), Karhula (2008) appendix 4.2.1,
+//! eqs. (A4.2.2.56)-(A4.2.2.74), and its closed-form kinetostatics (A5.2.1.40)-(A5.2.1.72),
+//! extended with a force on the piston (the gas).
 //!
 //! The crank OS has length r = Z_AA0C; the cardan wheel (planet, pitch radius r) turns on the
 //! crank pin S and rolls inside the ring gear (pitch radius 2r). The wheel pin T, on the wheel's
 //! pitch circle, moves on the cylinder axis: Z_TO = 2r·sin θ·e^{i·90°} (A4.2.2.60). The rod
 //! carries the piston at its upper end b = T + Z_bB·e^{i·90°} (A4.2.2.62-63) and does not turn.
 //! Same stroke as the slider-crank of crank 2r.
+//!
+//! Bodies: crankshaft, cardan wheel (its mass carried by the balanced crankshaft, ch. 11.2),
+//! rod (with the piston: they move together on the cylinder axis). Joints: `main_bearing`
+//! (crankshaft–frame), `crank_pin` (crankshaft–wheel at S), `piston_pin` (rod–wheel at T, the
+//! rod's big end, which Karhula A9.1 calls the piston pin bearing), `gear_mesh` (wheel–ring at
+//! the pitch point). There is no piston side force: the gears guide the rod.
+//!
+//! Two readings of the mesh force ([`MeshModel`]):
+//! - `karhula` (default, the thesis's): the ring's force on the wheel equals the rod's force P
+//!   and is parallel to the cylinder axis, so the crank pin carries 2·P (A5.2.1.48-51). The
+//!   wheel's moment balance then holds with no wheel inertia, so the thesis lumps the wheel's
+//!   inertia into the crankshaft's. Reading of (A5.2.1.43)-(A5.2.1.46): the thesis adds the
+//!   wheel's inertial torque with the opposite sign to the crankshaft's; the wheel's kinetic
+//!   energy ½·J_2c·ω² grows whenever the crankshaft speeds up, so that sign breaks the energy
+//!   balance. We add the wheel's inertia to the crankshaft's: the drive supplies (J_1c + J_2c)·α
+//!   (for the thesis geometry 2·J_2c·α = 0.13 N·m at α = 100π rad/s², 0.9 % of the mean
+//!   inertial torque).
+//! - `involute`: involute teeth can only push along the line of action, so the mesh force has a
+//!   tangential component F_t, fixed by the wheel's moment balance about S including its own
+//!   inertia J_w·α_w, and a radial one |F_t|·tan α_p towards the wheel's centre. The drive
+//!   torque and the rod force are those of the `karhula` reading; the crank-pin and mesh forces
+//!   are not.
 
-use crate::{check_length, CrankState, GeometryError, KinematicState, Mechanism, MechanismKind};
-use crate::{JointSpeeds, PistonMotion, PointMotion, RodMotion, WheelMotion, C};
+use crate::mass::{self, MassInputs, MassProperties};
+use crate::model::{cross, Body, Joint, JointKind, JointLoad, Loads, MeshForce, Piston, State, Topology};
+use crate::{check_length, check_rod_cg, word, number, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 
-/// Cardan gear geometry.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The registry line.
+pub const ENTRY: Entry = Entry {
+    name: "cardan_gear",
+    summary: "geared hypocycloid: crank, cardan wheel rolling in a ring gear of twice its size, straight-line rod (Karhula 2008 A4.2.1, A5.2.1)",
+    options: &[
+        OptionSpec {
+            name: "gear_mesh_model",
+            kind: OptionKind::Choice(&["karhula", "involute"]),
+            meaning: "reading of the mesh force: \"karhula\" (the thesis's, parallel to the cylinder, equal to the rod force) or \"involute\" (along the line of action, with the wheel's own inertia)",
+        },
+        OptionSpec {
+            name: "pressure_angle",
+            kind: OptionKind::Angle,
+            meaning: "pressure angle of the cardan pair (20° by default; used by the involute reading)",
+        },
+    ],
+    unused_masses: &[],
+    build: |g, m, o| Ok(Box::new(CardanGear::build(g, m, o)?)),
+};
+
+const CRANKSHAFT: usize = 0;
+const WHEEL: usize = 1;
+const ROD: usize = 2;
+const PISTON_PIN: usize = 2;
+
+/// Which direction the ring gear's force on the cardan wheel takes (module note).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MeshModel {
+    Karhula,
+    Involute,
+}
+
+/// Cardan gear geometry and masses.
+#[derive(Debug, Clone, PartialEq)]
 pub struct CardanGear {
     /// Crank length Z_AA0C, m: half the slider-crank crank of equal stroke (eq. 6.1); also the
     /// pitch radius of the cardan wheel, the ring gear having twice it.
     pub crank: f64,
     /// Rod length Z_bBC from the wheel pin T to the piston pin b, m.
     pub rod: f64,
-    /// Distance of the reported rod point from the wheel pin T along the rod, m.
-    pub rod_point: f64,
+    pub mesh: MeshModel,
+    /// Pressure angle of the pair, rad.
+    pub pressure_angle: f64,
+    pub masses: MassProperties,
+    topology: Topology,
 }
 
 impl CardanGear {
-    /// The cardan gear of the same stroke and the same top-dead-centre piston height as a
-    /// slider-crank of crank `slider_crank_crank` and rod `rod` (Karhula eq. 6.1).
-    pub fn equivalent_to_slider_crank(
-        slider_crank_crank: f64,
-        rod: f64,
-        rod_point: f64,
-    ) -> Result<Self, GeometryError> {
-        check_length("crank_length", slider_crank_crank)?;
-        check_length("rod_length", rod)?;
-        if !(0.0..=rod).contains(&rod_point) {
-            return Err(GeometryError::PointOffRod {
-                point: rod_point,
-                rod,
-            });
-        }
-        Ok(Self {
-            crank: slider_crank_crank / 2.0,
+    /// The cardan gear of the same stroke and the same top-dead-centre piston height as the
+    /// slider-crank of `geometry` (Karhula eq. 6.1), with the masses of `inputs`.
+    pub fn build(
+        geometry: &MachineGeometry,
+        inputs: &MassInputs,
+        options: &Options,
+    ) -> Result<Self, MechanismError> {
+        let (crank, rod) = (geometry.crank_length, geometry.rod_length);
+        check_length("geometry.crank_length", crank)?;
+        let mut estimate = mass::estimate(
+            crank,
             rod,
-            rod_point,
+            geometry.bore,
+            inputs.rod_material.unwrap_or_default(),
+        );
+        estimate.wheel_inertia = mass::cardan_wheel_inertia(crank);
+        let mesh = match word(options, "gear_mesh_model", "karhula") {
+            "involute" => MeshModel::Involute,
+            _ => MeshModel::Karhula,
+        };
+        let pressure_angle = number(options, "pressure_angle", 20f64.to_radians());
+        if !(pressure_angle > 0.0 && pressure_angle < 45f64.to_radians()) {
+            return Err(MechanismError::new(
+                "cardan_gear.pressure_angle",
+                format!("{}°", pressure_angle.to_degrees()),
+                "must be between 0° and 45°",
+            ));
+        }
+        Self::new(
+            crank / 2.0,
+            rod,
+            mesh,
+            pressure_angle,
+            MassProperties::resolve(estimate, inputs),
+            geometry.bearing_radii(),
+        )
+    }
+
+    /// A cardan gear of crank `crank` (the wheel's pitch radius) and rod `rod` (m).
+    pub fn new(
+        crank: f64,
+        rod: f64,
+        mesh: MeshModel,
+        pressure_angle: f64,
+        masses: MassProperties,
+        radii: [f64; 3],
+    ) -> Result<Self, MechanismError> {
+        check_length("geometry.crank_length", crank)?;
+        check_length("geometry.rod_length", rod)?;
+        check_rod_cg(masses.rod_cg, rod)?;
+        let [r_pis, r_crank, r_main] = radii;
+        // In the thesis reading the wheel's inertia rides with the crankshaft's (module note).
+        let (crankshaft_inertia, wheel_inertia, force) = match mesh {
+            MeshModel::Karhula => (
+                masses.crankshaft_inertia + masses.wheel_inertia,
+                0.0,
+                MeshForce::Tied {
+                    direction: C::new(0.0, 1.0),
+                    joint: PISTON_PIN,
+                    factor: -1.0,
+                },
+            ),
+            MeshModel::Involute => (
+                masses.crankshaft_inertia,
+                masses.wheel_inertia,
+                MeshForce::Involute,
+            ),
+        };
+        let topology = Topology {
+            bodies: vec![
+                Body {
+                    name: "crankshaft",
+                    mass: 0.0,
+                    inertia: crankshaft_inertia,
+                },
+                Body {
+                    name: "wheel",
+                    mass: 0.0,
+                    inertia: wheel_inertia,
+                },
+                Body {
+                    name: "rod",
+                    mass: masses.rod_mass + masses.piston_mass,
+                    inertia: masses.rod_inertia,
+                },
+            ],
+            joints: vec![
+                Joint {
+                    name: "main_bearing",
+                    kind: JointKind::Revolute { radius: r_main },
+                    body: CRANKSHAFT,
+                    other: None,
+                },
+                Joint {
+                    name: "crank_pin",
+                    kind: JointKind::Revolute { radius: r_crank },
+                    body: CRANKSHAFT,
+                    other: Some(WHEEL),
+                },
+                Joint {
+                    name: "piston_pin",
+                    kind: JointKind::Revolute { radius: r_pis },
+                    body: ROD,
+                    other: Some(WHEEL),
+                },
+                Joint {
+                    name: "gear_mesh",
+                    kind: JointKind::GearMesh {
+                        ratio: 2.0,
+                        pressure_angle,
+                        force,
+                    },
+                    body: WHEEL,
+                    other: None,
+                },
+            ],
+            pistons: vec![Piston {
+                name: "piston",
+                body: ROD,
+                axis: C::new(0.0, 1.0),
+                origin: C::new(0.0, 0.0),
+            }],
+            crankshaft: CRANKSHAFT,
+            extras: vec![],
+        };
+        Ok(Self {
+            crank,
+            rod,
+            mesh,
+            pressure_angle,
+            masses,
+            topology,
         })
     }
 }
 
 impl Mechanism for CardanGear {
-    fn kind(&self) -> MechanismKind {
-        MechanismKind::CardanGear
+    fn name(&self) -> &'static str {
+        ENTRY.name
     }
 
-    fn state(&self, crank: CrankState) -> KinematicState {
+    fn topology(&self) -> &Topology {
+        &self.topology
+    }
+
+    fn masses(&self) -> &MassProperties {
+        &self.masses
+    }
+
+    fn fill(&self, crank: &CrankState, st: &mut State) {
         let (w, a) = (crank.speed, crank.acceleration);
         let r = self.crank;
         let i = C::i();
@@ -66,47 +247,50 @@ impl Mechanism for CardanGear {
         let y = 2.0 * r * s;
         let v = 2.0 * r * w * c;
         let acc = 2.0 * r * (a * c - w * w * s);
-        let on_axis = |height: f64| PointMotion {
-            position: C::new(0.0, y + height),
-            velocity: C::new(0.0, v),
-            acceleration: C::new(0.0, acc),
+        let up = C::new(0.0, 1.0);
+        st.crank = *crank;
+        st.bodies[CRANKSHAFT] = BodyMotion {
+            cg: PointMotion::default(),
+            orientation: e_a,
+            angular_velocity: w,
+            angular_acceleration: a,
         };
-        let wheel_pin = on_axis(0.0);
-        let piston_pin = on_axis(self.rod);
-        KinematicState {
-            crank,
-            crank_pin,
-            piston_pin,
-            piston: PistonMotion {
-                position: y + self.rod,
-                velocity: v,
-                acceleration: acc,
-                dx_dtheta: 2.0 * r * c,
-                d2x_dtheta2: -2.0 * r * s,
+        // The wheel turns at −ω (A4.2.2.66, A4.2.2.71); the line S→T is at π − θ.
+        st.bodies[WHEEL] = BodyMotion {
+            cg: crank_pin,
+            orientation: C::new(-c, s),
+            angular_velocity: -w,
+            angular_acceleration: -a,
+        };
+        st.bodies[ROD] = BodyMotion {
+            cg: PointMotion {
+                position: C::new(0.0, y + self.masses.rod_cg),
+                velocity: v * up,
+                acceleration: acc * up,
             },
-            rod: RodMotion {
-                direction: C::new(0.0, 1.0),
-                angular_velocity: 0.0,
-                angular_acceleration: 0.0,
-                lower_pin: wheel_pin,
-                point: on_axis(self.rod_point),
-            },
-            wheel: Some(WheelMotion {
-                angular_velocity: -w,     // (A4.2.2.66)
-                angular_acceleration: -a, // (A4.2.2.71)
-                mesh_point: 2.0 * r * e_a,
-                pitch_line_velocity: 2.0 * r * w, // (A8.1.7): twice the crank-pin speed
-            }),
-            // Wheel on crank turns at −2ω; the rod's big end on the wheel at +ω (A9.1.15, A9.1.17).
-            joint_speeds: JointSpeeds {
-                main_bearing: w,
-                crank_pin: -2.0 * w,
-                piston_pin: w,
-            },
-        }
+            orientation: up,
+            angular_velocity: 0.0,
+            angular_acceleration: 0.0,
+        };
+        // Body relative to other: crankshaft to wheel 2ω; rod to wheel +ω (A9.1.15, A9.1.17).
+        st.joints[0].relative_speed = w;
+        st.joints[1].position = crank_pin.position;
+        st.joints[1].relative_speed = 2.0 * w;
+        st.joints[2].position = C::new(0.0, y);
+        st.joints[2].relative_speed = w;
+        st.joints[3].position = 2.0 * r * e_a;
+        st.joints[3].direction = -e_a;
+        // (A8.1.7): the pitch-line velocity, twice the crank-pin speed.
+        st.joints[3].relative_speed = 2.0 * r * w;
+        let p = &mut st.pistons[0];
+        p.position = y + self.rod;
+        p.velocity = v;
+        p.acceleration = acc;
+        p.dx_dtheta = 2.0 * r * c;
+        p.d2x_dtheta2 = -2.0 * r * s;
     }
 
-    /// x = 2·Z_AA0·sin θ + Z_bBC (A4.2.2.60) and its θ-derivative, as in [`Mechanism::state`].
+    /// x = 2·Z_AA0·sin θ + Z_bBC (A4.2.2.60) and its θ-derivative, as in [`Mechanism::fill`].
     fn piston_position(&self, angle: f64) -> (f64, f64) {
         let (s, c) = angle.sin_cos();
         (2.0 * self.crank * s + self.rod, 2.0 * self.crank * c)
@@ -119,35 +303,115 @@ impl Mechanism for CardanGear {
     fn piston_bottom(&self) -> f64 {
         self.rod - 2.0 * self.crank
     }
+
+    /// The reciprocating assembly (piston, pin and rod, ch. 11.2) moves on the cylinder axis;
+    /// its inertial force plus the applied force, P, reaches the cardan wheel at T
+    /// (A5.2.1.47-48). The mesh force follows the reading (module note).
+    fn closed_form_loads(
+        &self,
+        st: &State,
+        inertia: bool,
+        piston_forces: &[f64],
+        out: &mut Loads,
+    ) -> bool {
+        let m = &self.masses;
+        let (mass, crank_inertia, wheel_inertia) = if inertia {
+            (
+                m.rod_mass + m.piston_mass,
+                m.crankshaft_inertia,
+                m.wheel_inertia,
+            )
+        } else {
+            (0.0, 0.0, 0.0)
+        };
+        let gas = piston_forces.first().copied().unwrap_or(0.0);
+        let p = -mass * st.bodies[ROD].cg.acceleration - C::new(0.0, gas);
+        let alpha = st.crank.acceleration;
+        let s = st.joints[1].position;
+        let mesh = match self.mesh {
+            MeshModel::Karhula => p, // (A5.2.1.48-51)
+            MeshModel::Involute => {
+                // Moments about S: (T − S)×P + r·F_t = J_w·α_w, with α_w = −α.
+                let t = st.joints[2].position;
+                let f_t = (-wheel_inertia * alpha - cross(t - s, p)) / self.crank;
+                let e = st.crank.direction;
+                f_t * C::i() * e - f_t.abs() * self.pressure_angle.tan() * e
+            }
+        };
+        let crank_pin = p + mesh; // 2·P in the thesis reading (A5.2.1.51)
+        // −T_1i10c − T_2i10c (A5.2.1.40-46, module note) and −T_3i10c (A5.2.1.52): in the
+        // involute reading the wheel's inertia enters through F_t instead.
+        let lumped = match self.mesh {
+            MeshModel::Karhula => crank_inertia + wheel_inertia,
+            MeshModel::Involute => crank_inertia,
+        };
+        let force = |force: C| JointLoad { force, moment: 0.0 };
+        out.joints[0] = force(-crank_pin); // (A5.2.1.54)
+        out.joints[1] = force(crank_pin);
+        out.joints[2] = force(-p); // (A5.2.1.49)
+        out.joints[3] = force(mesh);
+        out.crank_torque = lumped * alpha - cross(s, crank_pin); // −T_Σi10c (A5.2.1.69)
+        true
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mass::Material;
     use approx::assert_relative_eq;
+
+    fn gear() -> CardanGear {
+        let g = MachineGeometry {
+            crank_length: 0.06,
+            rod_length: 0.14,
+            bore: 0.12,
+            pin_offset: 0.0,
+        };
+        CardanGear::build(&g, &MassInputs::default(), &Options::new()).unwrap()
+    }
 
     /// Appendix 4.2.1: T is the point of the wheel's pitch circle that started at the mesh
     /// point; rolling inside the ring without slip, it stays on the cylinder axis. Checked by
     /// building T from the wheel's own rotation instead of (A4.2.2.60).
     #[test]
     fn wheel_pin_from_rolling_stays_on_the_axis() {
-        let g = CardanGear::equivalent_to_slider_crank(0.06, 0.14, 0.0).unwrap();
+        let g = gear();
         for k in 0..50 {
             let th = 0.3 + 0.13 * k as f64;
-            let st = g.state(CrankState::new(th, 7.0, 1.5, 0.0));
+            let st = g.state(&CrankState::new(th, 7.0, 1.5, 0.0));
             // The wheel turns by −θ relative to the frame; at θ = 90° T sits on the mesh point.
             let wheel_turn = -(th - std::f64::consts::FRAC_PI_2);
-            let t_from_rolling = st.crank_pin.position
-                + g.crank * C::from_polar(1.0, std::f64::consts::FRAC_PI_2 + wheel_turn);
-            assert!((t_from_rolling - st.rod.lower_pin.position).norm() < 1e-15);
-            assert!((st.wheel.unwrap().mesh_point.norm() - 2.0 * g.crank).abs() < 1e-15);
+            let s = st.joints[1].position;
+            let t_from_rolling =
+                s + g.crank * C::from_polar(1.0, std::f64::consts::FRAC_PI_2 + wheel_turn);
+            assert!((t_from_rolling - st.joints[2].position).norm() < 1e-15);
+            assert!((st.joints[3].position.norm() - 2.0 * g.crank).abs() < 1e-15);
+            // The wheel's orientation is the line S→T.
+            let s_to_t = (st.joints[2].position - s) / g.crank;
+            assert!((s_to_t - st.bodies[WHEEL].orientation).norm() < 1e-15);
         }
     }
 
     #[test]
     fn same_stroke_as_the_slider_crank() {
-        let g = CardanGear::equivalent_to_slider_crank(0.06, 0.14, 0.07).unwrap();
+        let g = gear();
         assert_relative_eq!(g.stroke(), 0.12, max_relative = 1e-15);
         assert_relative_eq!(g.piston_top(), 0.2, max_relative = 1e-15);
+        assert_eq!(g.masses.rod_material, Material::Steel);
+    }
+
+    #[test]
+    fn a_pressure_angle_out_of_range_is_refused() {
+        let g = MachineGeometry {
+            crank_length: 0.06,
+            rod_length: 0.14,
+            bore: 0.12,
+            pin_offset: 0.0,
+        };
+        let mut o = Options::new();
+        o.insert("pressure_angle".into(), crate::OptionValue::Number(0.0));
+        let e = CardanGear::build(&g, &MassInputs::default(), &o).unwrap_err();
+        assert_eq!(e.field, "cardan_gear.pressure_angle");
     }
 }

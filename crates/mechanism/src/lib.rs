@@ -1,87 +1,83 @@
-//! Kinematics of reciprocating mechanisms on the complex plane.
+//! Reciprocating mechanisms on the complex plane: what each is made of (bodies, joints,
+//! pistons), how it moves, and its closed-form kinetostatics.
 //!
 //! Conventions of Karhula (2008), chapter 4: the main bearing axis is the origin, the cylinder
 //! lies on the imaginary (iy) axis, the crank angle θ is measured from the real axis and grows in
 //! the direction of rotation, so θ = 90° is top dead centre. Every quantity is SI: m, m/s, m/s²,
-//! rad, rad/s, rad/s², s.
+//! rad, rad/s, rad/s², s, kg, N.
 //!
-//! Each mechanism maps a [`CrankState`] to a [`KinematicState`]: the same plain struct for every
-//! mechanism, so that loads, gas models and friction models downstream never need to know which
-//! mechanism produced it.
+//! A mechanism declares its [`Topology`] and fills one [`State`] per crank state; code outside
+//! a mechanism's own module reads bodies, joints and pistons from those lists and never asks
+//! which mechanism it has. The mechanisms a case file may name are listed in [`MECHANISMS`].
 
 pub mod cardan_gear;
+pub mod mass;
+pub mod model;
 pub mod motion;
 pub mod polar;
+pub mod scotch_yoke;
 pub mod slider_crank;
-mod state;
 
-pub use cardan_gear::CardanGear;
-pub use motion::{CrankMotion, CrankState};
+pub use cardan_gear::{CardanGear, MeshModel};
+pub use mass::{MassInputs, MassProperties, Material};
+pub use model::{
+    cross, Body, BodyMotion, Extra, Joint, JointKind, JointLoad, JointMotion, Loads, MeshForce,
+    Piston, PistonMotion, PointMotion, State, Topology,
+};
+pub use motion::{CrankMotion, CrankState, Grid, MotionError, MotionSource};
 pub use num_complex::Complex64 as C;
 pub use polar::PolarComponents;
+pub use scotch_yoke::ScotchYoke;
 pub use slider_crank::SliderCrank;
-pub use state::{JointSpeeds, KinematicState, PistonMotion, PointMotion, RodMotion, WheelMotion};
 
-/// A physically impossible or ill-posed machine.
+use std::collections::BTreeMap;
+
+/// A physically impossible or ill-posed machine: the case-file field, its value, the rule.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum GeometryError {
-    #[error("{field} must be a finite positive length in metres, got {value}")]
-    NotPositive { field: &'static str, value: f64 },
-    #[error(
-        "rod_length {rod} m must be longer than crank_length {crank} m plus |pin_offset| {offset} m, \
-         or the rod cannot reach the cylinder axis at every crank angle"
-    )]
-    RodTooShort { rod: f64, crank: f64, offset: f64 },
-    #[error("{field} must be finite, got {value}")]
-    NotFinite { field: &'static str, value: f64 },
-    #[error("rod_point {point} m must lie on the rod, between 0 and rod_length {rod} m")]
-    PointOffRod { point: f64, rod: f64 },
+#[error("{field} = {value}: {rule}")]
+pub struct MechanismError {
+    /// The case-file field, e.g. `geometry.rod_length`, `cardan_gear.pressure_angle`.
+    pub field: String,
+    pub value: String,
+    pub rule: String,
 }
 
-/// The mechanisms the toolkit knows. Names are the ones used in case files and outputs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum MechanismKind {
-    SliderCrank,
-    CardanGear,
-}
-
-impl MechanismKind {
-    pub const ALL: [MechanismKind; 2] = [MechanismKind::SliderCrank, MechanismKind::CardanGear];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            MechanismKind::SliderCrank => "slider_crank",
-            MechanismKind::CardanGear => "cardan_gear",
+impl MechanismError {
+    pub fn new(field: &str, value: impl std::fmt::Display, rule: impl Into<String>) -> Self {
+        Self {
+            field: field.to_string(),
+            value: value.to_string(),
+            rule: rule.into(),
         }
     }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|k| k.name() == name)
-    }
 }
 
-/// Any mechanism: a pure function of the crank state.
-pub trait Mechanism: Sync {
-    fn kind(&self) -> MechanismKind;
+/// Any mechanism: its parts, and its motion as a pure function of the crank state.
+pub trait Mechanism: Send + Sync + std::fmt::Debug {
+    /// The name used in case files and outputs.
+    fn name(&self) -> &'static str;
 
-    /// Positions, velocities and accelerations of every link at one crank state.
-    fn state(&self, crank: CrankState) -> KinematicState;
+    /// Bodies, joints, pistons.
+    fn topology(&self) -> &Topology;
 
-    /// Piston-pin position x (m) and dx/dθ (m/rad) at crank angle `angle` (rad): what the
-    /// cylinder volume V(θ) and dV/dθ need, without the rest of the state.
-    fn piston_position(&self, angle: f64) -> (f64, f64) {
-        let p = self.state(CrankState::new(angle, 1.0, 0.0, 0.0)).piston;
-        (p.position, p.dx_dtheta)
-    }
+    /// The resolved mass fields (for the summary).
+    fn masses(&self) -> &MassProperties;
 
-    /// Piston pin position along the cylinder axis at top dead centre, m.
+    /// Fills `state` (made by [`State::for_topology`]) at the crank state `crank`.
+    fn fill(&self, crank: &CrankState, state: &mut State);
+
+    /// The first piston's position x (m) and dx/dθ (m/rad) at crank angle `angle` (rad): what
+    /// the cylinder volume V(θ) and dV/dθ need, without the rest of the state.
+    fn piston_position(&self, angle: f64) -> (f64, f64);
+
+    /// First piston's position at top dead centre, m.
     fn piston_top(&self) -> f64;
 
-    /// Piston pin position along the cylinder axis at bottom dead centre, m.
+    /// First piston's position at bottom dead centre, m.
     fn piston_bottom(&self) -> f64;
 
-    /// Crank angle of top dead centre, where the piston pin reaches [`Mechanism::piston_top`],
-    /// rad. In-line mechanisms have it at π/2 (the cylinder lies along +y).
+    /// Crank angle of top dead centre, where the piston reaches [`Mechanism::piston_top`], rad.
+    /// In-line mechanisms have it at π/2 (the cylinder lies along +y).
     fn top_dead_centre(&self) -> f64 {
         std::f64::consts::FRAC_PI_2
     }
@@ -90,12 +86,159 @@ pub trait Mechanism: Sync {
     fn stroke(&self) -> f64 {
         self.piston_top() - self.piston_bottom()
     }
+
+    /// The closed-form kinetostatics, if the mechanism has them: the joint loads and drive
+    /// torque caused by the bodies' inertia (if `inertia`) and by the force on each piston
+    /// (`piston_forces`, N along the cylinder axis towards the crankshaft), written to `out`.
+    /// Returns false (and leaves `out` alone) where the general planar solve must serve.
+    fn closed_form_loads(
+        &self,
+        _state: &State,
+        _inertia: bool,
+        _piston_forces: &[f64],
+        _out: &mut Loads,
+    ) -> bool {
+        false
+    }
+
+    /// A new state at `crank` (allocates; steppers reuse one state with [`Mechanism::fill`]).
+    fn state(&self, crank: &CrankState) -> State {
+        let mut s = State::for_topology(self.topology());
+        self.fill(crank, &mut s);
+        s
+    }
 }
 
-pub(crate) fn check_length(field: &'static str, value: f64) -> Result<f64, GeometryError> {
+/// What every mechanism of a case shares, SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MachineGeometry {
+    /// Half the stroke, m: the slider-crank's and Scotch yoke's crank; twice the cardan crank.
+    pub crank_length: f64,
+    /// Rod length, m: centre distance of the slider-crank rod; the cardan rod from wheel pin
+    /// to piston pin; the Scotch yoke's from the slot centre line to the piston pin.
+    pub rod_length: f64,
+    /// Bore, m.
+    pub bore: f64,
+    /// Piston-pin offset from the cylinder axis, m (slider-crank only).
+    pub pin_offset: f64,
+}
+
+impl MachineGeometry {
+    /// Journal radii of the piston pin, crank pin and main bearings, m, from the rolling-bearing
+    /// pitch diameters of Karhula (2008) A9.1.10-11: d_pis/4 at the piston pin, 1.5 times that
+    /// at the crank pin and main bearings.
+    pub fn bearing_radii(&self) -> [f64; 3] {
+        let piston_pin = self.bore / 4.0;
+        [piston_pin / 2.0, 0.75 * piston_pin, 0.75 * piston_pin]
+    }
+}
+
+/// The kind of value a mechanism option takes (its unit at the case-file edge).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum OptionKind {
+    Angle,
+    Length,
+    Number,
+    /// One of these words.
+    Choice(&'static [&'static str]),
+}
+
+/// An option of a mechanism, set in the case file's table named after it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OptionSpec {
+    pub name: &'static str,
+    pub kind: OptionKind,
+    pub meaning: &'static str,
+}
+
+/// A mechanism option's value: a number in SI, or a word.
+#[derive(Debug, Clone, PartialEq)]
+pub enum OptionValue {
+    Number(f64),
+    Word(String),
+}
+
+/// Option values by name.
+pub type Options = BTreeMap<String, OptionValue>;
+
+/// Builds a mechanism from the case's geometry, mass fields and its own options.
+pub type Build = fn(
+    &MachineGeometry,
+    &MassInputs,
+    &Options,
+) -> Result<Box<dyn Mechanism>, MechanismError>;
+
+/// One line of the registry.
+#[derive(Debug, Clone, Copy)]
+pub struct Entry {
+    /// The name case files use.
+    pub name: &'static str,
+    pub summary: &'static str,
+    /// Its own options, all optional.
+    pub options: &'static [OptionSpec],
+    /// Mass fields it has no use for (an error if a case sets them for it).
+    pub unused_masses: &'static [&'static str],
+    pub build: Build,
+}
+
+/// Every mechanism a case file may name.
+pub const MECHANISMS: &[Entry] = &[
+    slider_crank::ENTRY,
+    cardan_gear::ENTRY,
+    scotch_yoke::ENTRY,
+];
+
+/// The registry entry called `name`.
+pub fn entry(name: &str) -> Option<&'static Entry> {
+    MECHANISMS.iter().find(|e| e.name == name)
+}
+
+/// The names of every registered mechanism, quoted, for messages.
+pub fn names() -> String {
+    MECHANISMS
+        .iter()
+        .map(|e| format!("\"{}\"", e.name))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+pub(crate) fn check_length(field: &str, value: f64) -> Result<f64, MechanismError> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
-        Err(GeometryError::NotPositive { field, value })
+        Err(MechanismError::new(
+            field,
+            value,
+            "must be a finite positive length",
+        ))
+    }
+}
+
+/// Checks that the rod's centre of gravity lies on the rod.
+pub(crate) fn check_rod_cg(rod_cg: f64, rod: f64) -> Result<(), MechanismError> {
+    if (0.0..=rod).contains(&rod_cg) {
+        Ok(())
+    } else {
+        Err(MechanismError::new(
+            "masses.rod_cg",
+            rod_cg,
+            format!("the rod's centre of gravity must lie on the rod, between 0 and geometry.rod_length ({rod} m)"),
+        ))
+    }
+}
+
+/// The word option `name` of `options`, or `default`.
+pub(crate) fn word<'a>(options: &'a Options, name: &str, default: &'a str) -> &'a str {
+    match options.get(name) {
+        Some(OptionValue::Word(w)) => w,
+        _ => default,
+    }
+}
+
+/// The number option `name` of `options`, or `default`.
+pub(crate) fn number(options: &Options, name: &str, default: f64) -> f64 {
+    match options.get(name) {
+        Some(OptionValue::Number(x)) => *x,
+        _ => default,
     }
 }

@@ -1,7 +1,7 @@
 //! Radial, Coriolis, tangential and normal decomposition of a point's motion about the origin,
 //! Karhula (2008) eqs. (4.1.2)-(4.1.3) and (A4.2.2.23)-(A4.2.2.55).
 
-use crate::state::PointMotion;
+use crate::model::PointMotion;
 
 /// Motion of a point described in polar form about the main bearing axis: Z = |Z|·e^{iθ},
 /// v = v_r·e^{iθ} + |Z|·i·ω·e^{iθ}, a = a_r·e^{iθ} + 2·v_r·ω·i·e^{iθ} + |Z|·α·i·e^{iθ} − |Z|·ω²·e^{iθ}.

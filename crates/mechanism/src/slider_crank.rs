@@ -1,16 +1,36 @@
-//! The slider-crank mechanism, Karhula (2008) eqs. (A4.2.2.1)-(A4.2.2.55), extended with a
-//! piston-pin offset.
+//! The slider-crank mechanism, Karhula (2008) eqs. (A4.2.2.1)-(A4.2.2.55) and its closed-form
+//! kinetostatics (A5.2.1.1)-(A5.2.1.39), extended with a piston-pin offset and a force on the
+//! piston (the gas).
 //!
 //! The piston pin B slides on the line Re(Z) = e (e = pin offset; e = 0 is the thesis's in-line
 //! machine). The closure Z_AA0·cos θ + Z_BA·cos θ_BA = e gives θ_BA = arccos((e − Z_AA0·cos θ)/Z_BA),
 //! which for e = 0 is (A4.2.2.3). Its time derivatives give ω_BA (A4.2.2.12) and α_BA
 //! (A4.2.2.31) unchanged, because e is constant.
+//!
+//! Bodies: crankshaft (centre of gravity on the main axis), rod, piston (with its pin, a point
+//! mass at the pin). Joints: `main_bearing` (crankshaft–frame), `crank_pin` (crankshaft–rod),
+//! `piston_pin` (piston–rod), `piston_side` (piston–cylinder wall, a slide along the axis).
 
-use crate::{check_length, CrankState, GeometryError, KinematicState, Mechanism, MechanismKind};
-use crate::{JointSpeeds, PistonMotion, PointMotion, RodMotion, C};
+use crate::mass::{self, MassInputs, MassProperties};
+use crate::model::{cross, Body, Extra, Joint, JointKind, JointLoad, Loads, Piston, State, Topology};
+use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
-/// Slider-crank geometry.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The registry line.
+pub const ENTRY: Entry = Entry {
+    name: "slider_crank",
+    summary: "crank, connecting rod and piston (Karhula 2008 A4.2.2, A5.2.1), with a piston-pin offset",
+    options: &[],
+    unused_masses: &["wheel_inertia"],
+    build: |g, m, o| Ok(Box::new(SliderCrank::build(g, m, o)?)),
+};
+
+const CRANKSHAFT: usize = 0;
+const ROD: usize = 1;
+const PISTON: usize = 2;
+
+/// Slider-crank geometry and masses.
+#[derive(Debug, Clone, PartialEq)]
 pub struct SliderCrank {
     /// Crank length Z_AA0, m.
     pub crank: f64,
@@ -18,43 +38,132 @@ pub struct SliderCrank {
     pub rod: f64,
     /// Piston pin offset e from the cylinder axis through the main bearing, m (positive towards +x).
     pub pin_offset: f64,
-    /// Distance of the reported rod point from the crank pin along the rod, m (Z_PA).
-    pub rod_point: f64,
+    pub masses: MassProperties,
+    topology: Topology,
 }
 
 impl SliderCrank {
+    /// The slider-crank of `geometry` with the masses of `inputs` (chapter-10 rules elsewhere).
+    pub fn build(
+        geometry: &MachineGeometry,
+        inputs: &MassInputs,
+        _options: &Options,
+    ) -> Result<Self, MechanismError> {
+        let (crank, rod) = (geometry.crank_length, geometry.rod_length);
+        let estimate = mass::estimate(
+            crank,
+            rod,
+            geometry.bore,
+            inputs.rod_material.unwrap_or_default(),
+        );
+        Self::new(
+            crank,
+            rod,
+            geometry.pin_offset,
+            MassProperties::resolve(estimate, inputs),
+            geometry.bearing_radii(),
+        )
+    }
+
+    /// A slider-crank of crank `crank`, rod `rod`, pin offset `pin_offset` (m), with `masses`
+    /// and journal radii [piston pin, crank pin, main bearing] (m).
     pub fn new(
         crank: f64,
         rod: f64,
         pin_offset: f64,
-        rod_point: f64,
-    ) -> Result<Self, GeometryError> {
-        check_length("crank_length", crank)?;
-        check_length("rod_length", rod)?;
+        masses: MassProperties,
+        radii: [f64; 3],
+    ) -> Result<Self, MechanismError> {
+        check_length("geometry.crank_length", crank)?;
+        check_length("geometry.rod_length", rod)?;
         if !pin_offset.is_finite() {
-            return Err(GeometryError::NotFinite {
-                field: "pin_offset",
-                value: pin_offset,
-            });
+            return Err(MechanismError::new(
+                "geometry.pin_offset",
+                pin_offset,
+                "must be finite",
+            ));
+        }
+        if rod <= crank {
+            return Err(MechanismError::new(
+                "geometry.rod_length",
+                rod,
+                format!("must be longer than geometry.crank_length ({crank} m): a rod no longer than its crank cannot turn it"),
+            ));
         }
         if rod <= crank + pin_offset.abs() {
-            return Err(GeometryError::RodTooShort {
-                rod,
-                crank,
-                offset: pin_offset.abs(),
-            });
+            return Err(MechanismError::new(
+                "geometry.pin_offset",
+                pin_offset,
+                format!(
+                    "geometry.rod_length {rod} m must be longer than geometry.crank_length {crank} m \
+                     plus |pin_offset|, or the rod cannot reach the cylinder axis at every crank angle"
+                ),
+            ));
         }
-        if !(0.0..=rod).contains(&rod_point) {
-            return Err(GeometryError::PointOffRod {
-                point: rod_point,
-                rod,
-            });
-        }
+        check_rod_cg(masses.rod_cg, rod)?;
+        let [r_pis, r_crank, r_main] = radii;
+        let topology = Topology {
+            bodies: vec![
+                Body {
+                    name: "crankshaft",
+                    mass: 0.0,
+                    inertia: masses.crankshaft_inertia,
+                },
+                Body {
+                    name: "rod",
+                    mass: masses.rod_mass,
+                    inertia: masses.rod_inertia,
+                },
+                Body {
+                    name: "piston",
+                    mass: masses.piston_mass,
+                    inertia: 0.0,
+                },
+            ],
+            joints: vec![
+                Joint {
+                    name: "main_bearing",
+                    kind: JointKind::Revolute { radius: r_main },
+                    body: CRANKSHAFT,
+                    other: None,
+                },
+                Joint {
+                    name: "crank_pin",
+                    kind: JointKind::Revolute { radius: r_crank },
+                    body: CRANKSHAFT,
+                    other: Some(ROD),
+                },
+                Joint {
+                    name: "piston_pin",
+                    kind: JointKind::Revolute { radius: r_pis },
+                    body: PISTON,
+                    other: Some(ROD),
+                },
+                Joint {
+                    name: "piston_side",
+                    kind: JointKind::Prismatic,
+                    body: PISTON,
+                    other: None,
+                },
+            ],
+            pistons: vec![Piston {
+                name: "piston",
+                body: PISTON,
+                axis: C::new(0.0, 1.0),
+                origin: C::new(pin_offset, 0.0),
+            }],
+            crankshaft: CRANKSHAFT,
+            extras: vec![Extra {
+                name: "rod_percussion_centre_m",
+                meaning: "distance from the crank pin along the rod of the rod's centre of percussion, where its inertial force acts with no couple (A5.2.1.6-7); empty where undefined",
+            }],
+        };
         Ok(Self {
             crank,
             rod,
             pin_offset,
-            rod_point,
+            masses,
+            topology,
         })
     }
 
@@ -72,11 +181,19 @@ impl SliderCrank {
 }
 
 impl Mechanism for SliderCrank {
-    fn kind(&self) -> MechanismKind {
-        MechanismKind::SliderCrank
+    fn name(&self) -> &'static str {
+        ENTRY.name
     }
 
-    fn state(&self, crank: CrankState) -> KinematicState {
+    fn topology(&self) -> &Topology {
+        &self.topology
+    }
+
+    fn masses(&self) -> &MassProperties {
+        &self.masses
+    }
+
+    fn fill(&self, crank: &CrankState, st: &mut State) {
         let (w, a) = (crank.speed, crank.acceleration);
         let (r, l) = (self.crank, self.rod);
         let i = C::i();
@@ -103,37 +220,55 @@ impl Mechanism for SliderCrank {
             velocity: C::new(0.0, pin.velocity.im),
             acceleration: C::new(0.0, pin.acceleration.im),
         };
+        let rod_cg = along(self.masses.rod_cg);
+        st.crank = *crank;
+        st.bodies[CRANKSHAFT] = BodyMotion {
+            cg: PointMotion::default(),
+            orientation: e_a,
+            angular_velocity: w,
+            angular_acceleration: a,
+        };
+        st.bodies[ROD] = BodyMotion {
+            cg: rod_cg,
+            orientation: e_ba,
+            angular_velocity: w_ba,
+            angular_acceleration: a_ba,
+        };
+        st.bodies[PISTON] = BodyMotion {
+            cg: piston_pin,
+            orientation: C::new(1.0, 0.0),
+            ..BodyMotion::default()
+        };
+        let axis = C::new(0.0, 1.0);
+        // Relative speeds of the joints (A9.1.14-18), body relative to other.
+        st.joints[0].relative_speed = w;
+        st.joints[1].position = crank_pin.position;
+        st.joints[1].relative_speed = w - w_ba;
+        st.joints[2].position = piston_pin.position;
+        st.joints[2].relative_speed = -w_ba;
+        st.joints[3].position = piston_pin.position;
+        st.joints[3].direction = axis;
+        st.joints[3].relative_speed = pin.velocity.im;
         // dx/dθ and d²x/dθ²: the piston velocity and acceleration at ω = 1 rad/s, α = 0.
-        let dx = r * e_a.re + l * d1 * cos_ba;
-        let d2x = -r * e_a.im + l * (d2 * cos_ba - d1 * d1 * sin_ba);
-        KinematicState {
-            crank,
-            crank_pin,
-            piston_pin,
-            piston: PistonMotion {
-                position: pin.position.im,
-                velocity: pin.velocity.im,
-                acceleration: pin.acceleration.im,
-                dx_dtheta: dx,
-                d2x_dtheta2: d2x,
-            },
-            rod: RodMotion {
-                direction: e_ba,
-                angular_velocity: w_ba,
-                angular_acceleration: a_ba,
-                lower_pin: crank_pin,
-                point: along(self.rod_point),
-            },
-            wheel: None,
-            joint_speeds: JointSpeeds {
-                main_bearing: w,
-                crank_pin: w_ba - w,
-                piston_pin: w_ba,
-            }, // (A9.1.14-18)
-        }
+        let p = &mut st.pistons[0];
+        p.position = pin.position.im;
+        p.velocity = pin.velocity.im;
+        p.acceleration = pin.acceleration.im;
+        p.dx_dtheta = r * e_a.re + l * d1 * cos_ba;
+        p.d2x_dtheta2 = -r * e_a.im + l * (d2 * cos_ba - d1 * d1 * sin_ba);
+        // The centre of percussion (A5.2.1.6-8): where the rod's inertial force −m·a_g, with
+        // the inertial couple −J·α_BA, acts alone; undefined where that force is along the rod.
+        let f = -self.masses.rod_mass * rod_cg.acceleration;
+        let moment = cross(self.masses.rod_cg * e_ba, f) - self.masses.rod_inertia * a_ba;
+        let arm = cross(e_ba, f);
+        st.extras[0] = if arm.abs() > 1e-12 * f.norm().max(f64::MIN_POSITIVE) {
+            moment / arm
+        } else {
+            f64::NAN
+        };
     }
 
-    /// x = Z_AA0·sin θ + Z_BA·sin θ_BA and its θ-derivative, as in [`Mechanism::state`].
+    /// x = Z_AA0·sin θ + Z_BA·sin θ_BA and its θ-derivative, as in [`Mechanism::fill`].
     fn piston_position(&self, angle: f64) -> (f64, f64) {
         let (s, c) = angle.sin_cos();
         let (cos_ba, sin_ba, d1, _) = self.rod_angles(c, s);
@@ -156,136 +291,117 @@ impl Mechanism for SliderCrank {
     fn top_dead_centre(&self) -> f64 {
         (self.pin_offset / (self.rod + self.crank)).acos()
     }
+
+    /// Karhula (2008) A5.2.1.1-39. As in the thesis the loads are superposed: the rod's inertia
+    /// with a massless piston, then the piston's inertia (and the applied force) with a
+    /// massless rod. All joints are frictionless.
+    fn closed_form_loads(
+        &self,
+        st: &State,
+        inertia: bool,
+        piston_forces: &[f64],
+        out: &mut Loads,
+    ) -> bool {
+        let m = &self.masses;
+        let (rod_mass, rod_inertia, piston_mass, crank_inertia) = if inertia {
+            (m.rod_mass, m.rod_inertia, m.piston_mass, m.crankshaft_inertia)
+        } else {
+            (0.0, 0.0, 0.0, 0.0)
+        };
+        let rod = &st.bodies[ROD];
+        let a_pin = st.joints[1].position;
+        let e_rod = rod.orientation;
+        let sin_rod = e_rod.im;
+        let l = self.rod;
+
+        // Rod with a massless piston. Its inertial force −m2·a_g2 (A5.2.1.4) and inertial
+        // couple −J2·α_BA (5.1.2) have the moment M_i about the crank pin (A5.2.1.6-8). The
+        // massless piston can only pass on a force across the cylinder, so the piston pin
+        // force on the rod is horizontal, and moments about the crank pin give it (A5.2.1.9-10).
+        let f_ine2 = -rod_mass * rod.cg.acceleration;
+        let couple = -rod_inertia * rod.angular_acceleration;
+        let moment_about_crank_pin = cross(m.rod_cg * e_rod, f_ine2) + couple;
+        let f_piston_on_rod = C::new(moment_about_crank_pin / (l * sin_rod), 0.0);
+        let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
+
+        // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
+        let load = -piston_mass * st.bodies[PISTON].cg.acceleration
+            - C::new(0.0, piston_forces.first().copied().unwrap_or(0.0));
+        let f_rod_on_piston_3 = -load.im / sin_rod * e_rod;
+        let side_3 = -(load.re + f_rod_on_piston_3.re); // (A5.2.1.20)
+
+        let f_crank_on_rod = f_crank_on_rod_2 + f_rod_on_piston_3; // (A5.2.1.27)
+        let crankshaft = crank_inertia * st.crank.acceleration; // −T_ine1 (A5.2.1.1)
+        let rod_share = -cross(a_pin, -f_crank_on_rod_2); // −T_2i10 (A5.2.1.15)
+        let piston_share = -cross(a_pin, -f_rod_on_piston_3); // −T_3i10 (A5.2.1.23)
+        let force = |force: C| JointLoad { force, moment: 0.0 };
+        // (A5.2.1.25): the crankshaft's centre of gravity is on its axis.
+        out.joints[0] = force(f_crank_on_rod);
+        out.joints[1] = force(-f_crank_on_rod); // (A5.2.1.28)
+        out.joints[2] = force(f_rod_on_piston_3 - f_piston_on_rod);
+        out.joints[3] = force(C::new(f_piston_on_rod.re + side_3, 0.0));
+        out.crank_torque = crankshaft + rod_share + piston_share; // −T_Σi10 (A5.2.1.36)
+        true
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::CrankMotion;
+    use crate::mass::Material;
     use approx::assert_relative_eq;
 
     fn machine(offset: f64) -> SliderCrank {
-        SliderCrank::new(0.06, 0.14, offset, 0.07).unwrap()
-    }
-
-    /// Velocities and accelerations are the time derivatives of the positions: central
-    /// differences over a short time step agree to the differencing error.
-    #[test]
-    fn derivatives_match_finite_differences() {
-        for offset in [0.0, 0.012] {
-            let m = machine(offset);
-            let motion = CrankMotion {
-                start_angle: 0.3,
-                initial_speed: 30.0,
-                angular_acceleration: 400.0,
-            };
-            for theta in [0.4, 1.2, 2.5, 4.0, 5.9] {
-                let s = m.state(motion.at_angle(theta).unwrap());
-                let h = 1e-5;
-                let at = |t: f64| {
-                    let st = motion.at_angle(theta).unwrap();
-                    let dt = t - st.time;
-                    let w = st.speed + st.acceleration * dt;
-                    m.state(CrankState::new(
-                        theta + st.speed * dt + 0.5 * st.acceleration * dt * dt,
-                        w,
-                        st.acceleration,
-                        t,
-                    ))
-                };
-                let (p, q) = (at(s.crank.time - h), at(s.crank.time + h));
-                type Get = fn(&KinematicState) -> C;
-                let pairs: [(Get, Get); 4] = [
-                    (
-                        |k: &KinematicState| k.rod.point.position,
-                        |k: &KinematicState| k.rod.point.velocity,
-                    ),
-                    (
-                        |k: &KinematicState| k.rod.point.velocity,
-                        |k: &KinematicState| k.rod.point.acceleration,
-                    ),
-                    (
-                        |k: &KinematicState| k.piston_pin.position,
-                        |k: &KinematicState| k.piston_pin.velocity,
-                    ),
-                    (
-                        |k: &KinematicState| k.piston_pin.velocity,
-                        |k: &KinematicState| k.piston_pin.acceleration,
-                    ),
-                ];
-                for (f, df) in pairs {
-                    let numeric = (f(&q) - f(&p)) / (2.0 * h);
-                    let scale = df(&s).norm().max(1.0);
-                    assert!(
-                        (numeric - df(&s)).norm() < 1e-5 * scale,
-                        "θ = {theta}, offset = {offset}"
-                    );
-                }
-                let numeric_w = (q.rod.direction.arg() - p.rod.direction.arg()) / (2.0 * h);
-                assert_relative_eq!(
-                    numeric_w,
-                    s.rod.angular_velocity,
-                    epsilon = 1e-5,
-                    max_relative = 1e-6
-                );
-                // dx/dθ is v/ω for any motion.
-                assert_relative_eq!(
-                    s.piston.dx_dtheta * s.crank.speed,
-                    s.piston.velocity,
-                    max_relative = 1e-12,
-                    epsilon = 1e-12
-                );
-            }
-        }
+        let mut masses = mass::estimate(0.06, 0.14, 0.12, Material::Steel);
+        masses.rod_cg = 0.07;
+        SliderCrank::new(0.06, 0.14, offset, masses, [0.01; 3]).unwrap()
     }
 
     #[test]
     fn rod_closes_on_the_piston_pin_and_dead_centres() {
         let m = machine(0.0);
-        let st = m.state(CrankState::new(1.0, 10.0, 3.0, 0.0));
-        let tip = st.crank_pin.position + m.rod * st.rod.direction;
-        assert!((tip - st.piston_pin.position).norm() < 1e-15);
-        let top = m.state(CrankState::new(std::f64::consts::FRAC_PI_2, 1.0, 0.0, 0.0));
-        assert_relative_eq!(top.piston.position, 0.2, max_relative = 1e-15);
+        let st = m.state(&CrankState::new(1.0, 10.0, 3.0, 0.0));
+        let tip = st.joints[1].position + m.rod * st.bodies[ROD].orientation;
+        assert!((tip - st.joints[2].position).norm() < 1e-15);
+        let top = m.state(&CrankState::new(std::f64::consts::FRAC_PI_2, 1.0, 0.0, 0.0));
+        assert_relative_eq!(top.pistons[0].position, 0.2, max_relative = 1e-15);
         assert_relative_eq!(m.stroke(), 0.12, max_relative = 1e-14);
         // With an offset the stroke grows slightly: sqrt((l+r)²−e²) − sqrt((l−r)²−e²).
         let off = machine(0.02);
+        assert_relative_eq!(
+            off.stroke(),
+            (0.2f64.powi(2) - 0.0004).sqrt() - (0.08f64.powi(2) - 0.0004).sqrt(),
+            max_relative = 1e-14
+        );
         assert!(off.stroke() > 0.12);
         // Top dead centre: the pin reaches piston_top there, with zero dx/dθ; an offset
         // towards +x turns it back from π/2.
         for m in [machine(0.0), off, machine(-0.02)] {
-            let tdc = m.state(CrankState::new(m.top_dead_centre(), 1.0, 0.0, 0.0));
-            assert_relative_eq!(tdc.piston.position, m.piston_top(), max_relative = 1e-14);
-            assert!(
-                tdc.piston.dx_dtheta.abs() < 1e-14,
-                "{}",
-                tdc.piston.dx_dtheta
+            let tdc = m.state(&CrankState::new(m.top_dead_centre(), 1.0, 0.0, 0.0));
+            assert_relative_eq!(
+                tdc.pistons[0].position,
+                m.piston_top(),
+                max_relative = 1e-14
             );
+            assert!(tdc.pistons[0].dx_dtheta.abs() < 1e-14);
         }
-        assert!(off.top_dead_centre() < std::f64::consts::FRAC_PI_2);
+        assert!(machine(0.02).top_dead_centre() < std::f64::consts::FRAC_PI_2);
     }
 
     #[test]
     fn impossible_machines_are_refused() {
-        assert!(matches!(
-            SliderCrank::new(0.06, 0.06, 0.0, 0.0),
-            Err(GeometryError::RodTooShort { .. })
-        ));
-        assert!(matches!(
-            SliderCrank::new(0.06, 0.1, 0.05, 0.0),
-            Err(GeometryError::RodTooShort { .. })
-        ));
-        assert!(matches!(
-            SliderCrank::new(-0.06, 0.14, 0.0, 0.0),
-            Err(GeometryError::NotPositive { .. })
-        ));
-        assert!(matches!(
-            SliderCrank::new(0.06, f64::NAN, 0.0, 0.0),
-            Err(GeometryError::NotPositive { .. })
-        ));
-        assert!(matches!(
-            SliderCrank::new(0.06, 0.14, 0.0, 0.2),
-            Err(GeometryError::PointOffRod { .. })
-        ));
+        let masses = mass::estimate(0.06, 0.14, 0.12, Material::Steel);
+        let new = |crank, rod, offset| SliderCrank::new(crank, rod, offset, masses, [0.01; 3]);
+        let field = |r: Result<SliderCrank, MechanismError>| r.unwrap_err().field;
+        assert_eq!(field(new(0.06, 0.06, 0.0)), "geometry.rod_length");
+        assert_eq!(field(new(0.06, 0.1, 0.05)), "geometry.pin_offset");
+        assert_eq!(field(new(-0.06, 0.14, 0.0)), "geometry.crank_length");
+        assert_eq!(field(new(0.06, f64::NAN, 0.0)), "geometry.rod_length");
+        let mut far = masses;
+        far.rod_cg = 0.2;
+        assert_eq!(
+            field(SliderCrank::new(0.06, 0.14, 0.0, far, [0.01; 3])),
+            "masses.rod_cg"
+        );
     }
 }

@@ -1,0 +1,162 @@
+//! The metric registry: one definition per summary metric (name, unit, meaning, what it
+//! aggregates), from which `summary.json`'s units and the README's metric table are produced.
+//! A name may hold `{piston}`, `{body}`, `{joint}` (a name from the mechanism's topology) and
+//! `{family}` (`inertial`; with a gas model also `gas` and `total`).
+
+/// What a metric describes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Aggregation {
+    /// One crank train (one mechanism; of an opposed-piston engine, one of its two).
+    CrankTrain,
+    /// The cylinder's working chamber (both pistons of an opposed-piston engine).
+    Cylinder,
+    /// The run as a whole.
+    Run,
+}
+
+impl Aggregation {
+    pub fn name(self) -> &'static str {
+        match self {
+            Aggregation::CrankTrain => "crank train",
+            Aggregation::Cylinder => "cylinder",
+            Aggregation::Run => "run",
+        }
+    }
+}
+
+/// One metric's definition.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MetricDef {
+    pub name: &'static str,
+    /// SI unit, as written in summary.json ("1" for fractions).
+    pub unit: &'static str,
+    pub meaning: &'static str,
+    pub aggregation: Aggregation,
+}
+
+const fn def(
+    name: &'static str,
+    unit: &'static str,
+    aggregation: Aggregation,
+    meaning: &'static str,
+) -> MetricDef {
+    MetricDef {
+        name,
+        unit,
+        meaning,
+        aggregation,
+    }
+}
+
+use Aggregation::{CrankTrain as T, Cylinder as Y, Run as R};
+
+/// Every metric a summary may hold, in summary order.
+pub const METRICS: &[MetricDef] = &[
+    def("piston_stroke", "m", T, "top minus bottom dead-centre position of the piston pin"),
+    def("{piston}_velocity_max", "m/s", T, "largest piston speed along the cylinder"),
+    def("{piston}_acceleration_max", "m/s^2", T, "largest piston acceleration along the cylinder"),
+    def("{body}_cg_velocity_max", "m/s", T, "largest speed of the body's centre of gravity"),
+    def("{body}_cg_acceleration_max", "m/s^2", T, "largest acceleration of the body's centre of gravity"),
+    def("{body}_angular_velocity_max", "rad/s", T, "largest angular speed of the body"),
+    def("{body}_angular_acceleration_max", "rad/s^2", T, "largest angular acceleration of the body"),
+    def("{family}_{joint}_force_max", "N", T, "largest force magnitude at the joint (frictionless)"),
+    def("{family}_{joint}_moment_max", "N*m", T, "largest couple a slide carries (slides only)"),
+    def("{family}_torque_max", "N*m", T, "largest drive torque magnitude on the crankshaft"),
+    def("{family}_work", "J", T, "drive work ∫ T dθ over the run (Karhula A5.2.1.37); an engine's gas work is negative"),
+    def("{family}_torque_mean", "N*m", T, "work / crank-angle span (A5.2.1.38)"),
+    def("{family}_power_mean", "W", T, "T·ω averaged over crank angle, as the thesis tabulates (A5.2.1.39); the time average at constant speed"),
+    def("kinetic_energy_change", "J", T, "kinetic energy of all bodies, end minus start: equals inertial_work (energy check)"),
+    def("energy_balance_error", "1", T, "|inertial_work − kinetic_energy_change| / ∫|T_inertial| dθ: a case fails above 1e-3"),
+    def("cycle_time", "s", R, "duration of the run"),
+    def("cylinder_pressure_max", "Pa", Y, "largest absolute cylinder pressure"),
+    def("gas_force_max", "N", T, "largest gas force on the piston"),
+    def("imep", "Pa", Y, "closed cycle: indicated mean effective pressure W/V_d (Nunes eq 2.50)"),
+    def("indicated_work", "J", Y, "closed cycle: ∮p dV of the chamber (eq 2.48)"),
+    def("indicated_torque_mean", "N*m", Y, "closed cycle: W/(4π), the chamber's mean torque"),
+    def("indicated_power", "W", Y, "closed cycle: W·ω/(4π) (eqs 2.46, 2.49); compressor: W·ω/(2π)"),
+    def("peak_pressure", "Pa", Y, "closed cycle: largest pressure on its own integration step"),
+    def("peak_pressure_angle_deg", "deg", Y, "closed cycle: crank angle of the peak from the cycle's first top dead centre"),
+    def("combustion_efficiency", "1", Y, "closed cycle: η_c from λ (eq 2.56)"),
+    def("isfc", "kg/J", Y, "closed cycle: gross indicated specific fuel consumption (eq 2.52)"),
+    def("indicated_efficiency", "1", Y, "closed cycle: W over the fuel energy (eq 2.53)"),
+    def("heat_loss_fraction", "1", Y, "closed cycle: heat lost to the walls and to vaporisation, share of the fuel energy"),
+    def("exhaust_fraction", "1", Y, "closed cycle: energy left in the gas at exhaust opening, share of the fuel energy"),
+    def("unreleased_fraction", "1", Y, "closed cycle: fuel energy never released, share"),
+    def("delivered_mass_flow", "kg/s", Y, "compressor: mass delivered per second at the periodic steady state"),
+    def("volumetric_efficiency", "1", Y, "compressor: inducted volume at suction state over the swept volume"),
+    def("specific_energy", "J/kg", Y, "compressor: indicated work per kilogram delivered"),
+    def("discharge_temperature", "K", Y, "compressor: gas temperature at the end of compression"),
+];
+
+/// The definition a metric name falls under: the matching template with the most fixed
+/// characters (so `rod_cg_velocity_max` is a body's, not a piston's, `{piston}_velocity_max`).
+pub fn find(name: &str) -> Option<&'static MetricDef> {
+    let fixed = |t: &str| t.split(['{', '}']).step_by(2).map(str::len).sum::<usize>();
+    METRICS
+        .iter()
+        .filter(|d| matches_template(d.name, name))
+        .max_by_key(|d| fixed(d.name))
+}
+
+/// Whether `name` is `template` with each `{...}` replaced by one or more characters.
+fn matches_template(template: &str, name: &str) -> bool {
+    let parts: Vec<&str> = template
+        .split(['{', '}'])
+        .enumerate()
+        .filter(|(k, _)| k % 2 == 0)
+        .map(|(_, s)| s)
+        .collect();
+    if parts.len() == 1 {
+        return template == name;
+    }
+    let (first, last) = (parts[0], parts[parts.len() - 1]);
+    if !name.starts_with(first) || !name.ends_with(last) || name.len() < first.len() + last.len()
+    {
+        return false;
+    }
+    let mut rest = &name[first.len()..name.len() - last.len()];
+    for middle in &parts[1..parts.len() - 1] {
+        match rest.get(1..).and_then(|r| r.find(middle)) {
+            Some(k) => rest = &rest[k + 1 + middle.len()..],
+            None => return false,
+        }
+    }
+    !rest.is_empty()
+}
+
+/// The registry as a Markdown table (the README's metric table).
+pub fn markdown_table() -> String {
+    let mut t = String::from("| metric | unit | of | meaning |\n|---|---|---|---|\n");
+    for d in METRICS {
+        t.push_str(&format!(
+            "| `{}` | {} | {} | {} |\n",
+            d.name,
+            d.unit,
+            d.aggregation.name(),
+            d.meaning
+        ));
+    }
+    t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn templates_match_filled_names_only() {
+        assert_eq!(find("inertial_crank_pin_force_max").unwrap().unit, "N");
+        assert_eq!(find("total_piston_side_moment_max").unwrap().unit, "N*m");
+        assert_eq!(find("rod_cg_velocity_max").unwrap().name, "{body}_cg_velocity_max");
+        assert_eq!(find("piston_velocity_max").unwrap().name, "{piston}_velocity_max");
+        assert_eq!(find("gas_force_max").unwrap().name, "gas_force_max");
+        assert_eq!(find("gas_torque_mean").unwrap().unit, "N*m");
+        assert_eq!(find("imep").unwrap().unit, "Pa");
+        assert!(find("_force_max").is_none());
+        assert!(find("nonsense").is_none());
+        // Names are unique.
+        for (k, d) in METRICS.iter().enumerate() {
+            assert!(METRICS[..k].iter().all(|e| e.name != d.name), "{}", d.name);
+        }
+    }
+}

@@ -1,0 +1,206 @@
+//! The step loop: a motion source gives crank states one at a time, the mechanism fills its
+//! state, each load family its loads, and every step is handed to the sinks (summaries,
+//! per-step files) and then forgotten. Nothing here grows with the number of steps.
+
+use crate::energy::torque_shares;
+use crate::family::LoadFamily;
+use cardan_mechanism::{Loads, Mechanism, MotionError, MotionSource, State};
+
+/// One step, as the sinks see it.
+#[derive(Debug, Clone, Copy)]
+pub struct Step<'a> {
+    /// Index of the step in the run, from 0.
+    pub index: usize,
+    pub state: &'a State,
+    /// Absolute cylinder pressure, Pa, if a gas model loads the pistons.
+    pub pressure: Option<f64>,
+    /// Gas force on each piston along its axis, towards the crankshaft, N (empty without gas).
+    pub piston_forces: &'a [f64],
+    /// The loads of each family, in the order of the run's families.
+    pub families: &'a [Loads],
+    /// Their sum.
+    pub total: &'a Loads,
+    /// Each family's torque shares by body ([`torque_shares`]), N·m.
+    pub shares: &'a [Vec<f64>],
+}
+
+/// Where steps go.
+pub trait Sink {
+    /// Takes one step; an error stops the run (a file that cannot be written).
+    fn push(&mut self, step: &Step) -> Result<(), String>;
+}
+
+/// Why a run stopped.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RunError {
+    #[error("step {step}: {source}")]
+    Motion { step: usize, source: MotionError },
+    #[error("step {step} (crank angle {angle_deg:.4}°): {quantity} is not finite ({value})")]
+    NonFinite {
+        step: usize,
+        angle_deg: f64,
+        quantity: String,
+        value: f64,
+    },
+    #[error("step {step}: {message}")]
+    Sink { step: usize, message: String },
+}
+
+/// The gas at a crank angle: (absolute pressure in Pa, force on each piston in N).
+pub type GasAt<'a> = &'a dyn Fn(f64) -> (f64, f64);
+
+/// Runs `mechanism` through every crank state of `motion`, with the loads of `families`, the
+/// pistons pushed by `gas` if given, every step to every sink.
+pub fn run(
+    mechanism: &dyn Mechanism,
+    motion: &mut dyn MotionSource,
+    families: &[&dyn LoadFamily],
+    gas: Option<GasAt>,
+    sinks: &mut [&mut dyn Sink],
+) -> Result<(), RunError> {
+    let topology = mechanism.topology();
+    let mut state = State::for_topology(topology);
+    let mut loads = vec![Loads::for_topology(topology); families.len()];
+    let mut total = Loads::for_topology(topology);
+    let mut shares = vec![vec![0.0; topology.bodies.len()]; families.len()];
+    let mut forces = vec![0.0; if gas.is_some() { topology.pistons.len() } else { 0 }];
+    let mut previous_torque = None;
+    let mut index = 0;
+    while let Some(crank) = motion.next(previous_torque) {
+        let crank = crank.map_err(|source| RunError::Motion {
+            step: index,
+            source,
+        })?;
+        mechanism.fill(&crank, &mut state);
+        let pressure = gas.map(|g| {
+            let (p, f) = g(crank.angle);
+            forces.fill(f);
+            p
+        });
+        total.clear();
+        for ((family, out), share) in families.iter().zip(&mut loads).zip(&mut shares) {
+            let applied: &[f64] = if family.piston_forces() { &forces } else { &[] };
+            family.loads(mechanism, &state, applied, out);
+            torque_shares(topology, &state, family.inertia(), applied, share);
+            total.add(out);
+        }
+        check_finite(index, &state, pressure, &forces, families, &loads, mechanism)?;
+        let step = Step {
+            index,
+            state: &state,
+            pressure,
+            piston_forces: &forces,
+            families: &loads,
+            total: &total,
+            shares: &shares,
+        };
+        for sink in sinks.iter_mut() {
+            sink.push(&step).map_err(|message| RunError::Sink {
+                step: index,
+                message,
+            })?;
+        }
+        previous_torque = Some(total.crank_torque);
+        index += 1;
+    }
+    Ok(())
+}
+
+/// Fails the step if any computed quantity is not finite, naming the first such quantity. One
+/// sum of everything is checked per step (a NaN or infinity anywhere makes it non-finite); the
+/// culprit is looked for only then.
+fn check_finite(
+    step: usize,
+    state: &State,
+    pressure: Option<f64>,
+    forces: &[f64],
+    families: &[&dyn LoadFamily],
+    loads: &[Loads],
+    mechanism: &dyn Mechanism,
+) -> Result<(), RunError> {
+    let mut sum = state.crank.speed + state.crank.time + pressure.unwrap_or(0.0);
+    sum += forces.iter().sum::<f64>();
+    for p in &state.pistons {
+        sum += p.position + p.velocity + p.acceleration;
+    }
+    for b in &state.bodies {
+        sum += b.cg.acceleration.re + b.cg.acceleration.im + b.angular_acceleration;
+    }
+    for l in loads {
+        sum += l.crank_torque;
+        for j in &l.joints {
+            sum += j.force.re + j.force.im + j.moment;
+        }
+    }
+    if sum.is_finite() {
+        return Ok(());
+    }
+    let t = mechanism.topology();
+    let mut named: Vec<(String, f64)> = vec![
+        ("crank_speed".into(), state.crank.speed),
+        ("time".into(), state.crank.time),
+        ("cylinder_pressure".into(), pressure.unwrap_or(0.0)),
+    ];
+    named.extend(forces.iter().map(|&f| ("gas_force".to_string(), f)));
+    for (p, m) in t.pistons.iter().zip(&state.pistons) {
+        named.push((format!("{}_position", p.name), m.position));
+        named.push((format!("{}_velocity", p.name), m.velocity));
+        named.push((format!("{}_acceleration", p.name), m.acceleration));
+    }
+    for (b, m) in t.bodies.iter().zip(&state.bodies) {
+        named.push((format!("{}_cg_acceleration", b.name), m.cg.acceleration.norm()));
+        named.push((
+            format!("{}_angular_acceleration", b.name),
+            m.angular_acceleration,
+        ));
+    }
+    for (family, l) in families.iter().zip(loads) {
+        named.push((format!("{}_torque", family.name()), l.crank_torque));
+        for (j, load) in t.joints.iter().zip(&l.joints) {
+            named.push((
+                format!("{}_{}_force", family.name(), j.name),
+                load.force.re + load.force.im,
+            ));
+            named.push((format!("{}_{}_moment", family.name(), j.name), load.moment));
+        }
+    }
+    let (quantity, value) = named
+        .into_iter()
+        .find(|(_, v)| !v.is_finite())
+        .unwrap_or_else(|| ("a sum of the step's quantities".into(), sum));
+    Err(RunError::NonFinite {
+        step,
+        angle_deg: state.crank.angle.to_degrees(),
+        quantity,
+        value,
+    })
+}
+
+/// One step kept whole, for tests and callers that want every step in memory.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepRecord {
+    pub state: State,
+    pub pressure: Option<f64>,
+    pub piston_forces: Vec<f64>,
+    pub families: Vec<Loads>,
+    pub total: Loads,
+    pub shares: Vec<Vec<f64>>,
+}
+
+/// A sink that keeps every step (memory grows with the steps: for tests and small runs).
+#[derive(Debug, Clone, Default)]
+pub struct Steps(pub Vec<StepRecord>);
+
+impl Sink for Steps {
+    fn push(&mut self, s: &Step) -> Result<(), String> {
+        self.0.push(StepRecord {
+            state: s.state.clone(),
+            pressure: s.pressure,
+            piston_forces: s.piston_forces.to_vec(),
+            families: s.families.to_vec(),
+            total: s.total.clone(),
+            shares: s.shares.to_vec(),
+        });
+        Ok(())
+    }
+}

@@ -1,0 +1,234 @@
+//! The cycle summary, accumulated step by step in O(1) memory: peaks, works, mean torques and
+//! powers, the energy check. Metric names and units come from [`crate::metrics`].
+
+use crate::energy::kinetic_energy;
+use crate::metrics;
+use crate::stepper::{Sink, Step};
+use cardan_mechanism::{JointKind, Loads, Mechanism, Topology};
+
+/// One named scalar result, in SI units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Metric {
+    pub name: String,
+    pub unit: &'static str,
+    pub value: f64,
+}
+
+/// The summary of a run: metrics in a fixed order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Summary {
+    pub metrics: Vec<Metric>,
+}
+
+impl Summary {
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.metrics
+            .iter()
+            .find(|m| m.name == name)
+            .map(|m| m.value)
+    }
+
+    /// Adds a metric; its unit is the registry's (a name the registry lacks is a programming
+    /// error, caught by the tests of every shipped case).
+    pub fn push(&mut self, name: impl Into<String>, value: f64) {
+        let name = name.into();
+        let unit = metrics::find(&name).map_or("?", |d| d.unit);
+        debug_assert!(unit != "?", "metric {name} is not in the registry");
+        self.metrics.push(Metric { name, unit, value });
+    }
+}
+
+/// Largest energy-check error a run may have, relative to the energy the drive moves
+/// (∫|T| dθ): the trapezoidal work of a smooth torque on a grid fine enough to describe it is
+/// far closer than this (1e-9 on the shipped cases); a coarser grid fails the case.
+pub const ENERGY_TOLERANCE: f64 = 1e-3;
+
+/// Peaks, work and crank-angle-averaged power of one family's loads.
+#[derive(Debug, Clone)]
+struct FamilyTotals {
+    name: &'static str,
+    /// Squared peak force of each joint, peak couple of each joint.
+    force: Vec<f64>,
+    moment: Vec<f64>,
+    torque: f64,
+    work: f64,
+    abs_work: f64,
+    energy_flow: f64,
+}
+
+impl FamilyTotals {
+    fn new(name: &'static str, joints: usize) -> Self {
+        Self {
+            name,
+            force: vec![0.0; joints],
+            moment: vec![0.0; joints],
+            torque: 0.0,
+            work: 0.0,
+            abs_work: 0.0,
+            energy_flow: 0.0,
+        }
+    }
+
+    /// Adds one step; `prev` holds the previous step's (angle, torque, speed).
+    fn add(&mut self, l: &Loads, interval: Option<(f64, f64, f64)>, speed: f64) {
+        for ((f, m), j) in self.force.iter_mut().zip(&mut self.moment).zip(&l.joints) {
+            *f = f.max(j.force.norm_sqr());
+            *m = m.max(j.moment.abs());
+        }
+        self.torque = self.torque.max(l.crank_torque.abs());
+        // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
+        // trapezoidal rule on the crank-angle grid.
+        if let Some((h, t0, w0)) = interval {
+            self.work += 0.5 * h * (l.crank_torque + t0);
+            self.abs_work += 0.5 * h * (l.crank_torque.abs() + t0.abs());
+            self.energy_flow += 0.5 * h * (l.crank_torque * speed + t0 * w0);
+        }
+    }
+}
+
+/// A sink that accumulates the summary of one mechanism's run.
+#[derive(Debug, Clone)]
+pub struct SummarySink {
+    topology: Topology,
+    /// Squared peaks: each piston's velocity and acceleration.
+    pistons: Vec<[f64; 2]>,
+    /// Squared peaks: each body's cg velocity and acceleration, angular velocity and acceleration.
+    bodies: Vec<[f64; 4]>,
+    /// Each family, then the total if there is more than one family.
+    families: Vec<FamilyTotals>,
+    /// Previous step's angle and speed (`None` before the first), and each family's torque
+    /// (then the total's).
+    previous: Option<(f64, f64)>,
+    previous_torques: Vec<f64>,
+    first: Option<(f64, f64, f64)>,
+    last: (f64, f64, f64),
+    gas_force: f64,
+    pressure: Option<f64>,
+}
+
+impl SummarySink {
+    /// A summary of `mechanism` under the load families named `families` (in the run's order).
+    pub fn new(mechanism: &dyn Mechanism, families: &[&'static str]) -> Self {
+        let topology = mechanism.topology().clone();
+        let joints = topology.joints.len();
+        let mut totals: Vec<FamilyTotals> = families
+            .iter()
+            .map(|&f| FamilyTotals::new(f, joints))
+            .collect();
+        if families.len() > 1 {
+            totals.push(FamilyTotals::new("total", joints));
+        }
+        Self {
+            pistons: vec![[0.0; 2]; topology.pistons.len()],
+            bodies: vec![[0.0; 4]; topology.bodies.len()],
+            topology,
+            previous_torques: vec![0.0; totals.len()],
+            families: totals,
+            previous: None,
+            first: None,
+            last: (0.0, 0.0, 0.0),
+            gas_force: 0.0,
+            pressure: None,
+        }
+    }
+
+    /// The summary, or why the run cannot be trusted (the energy check).
+    pub fn finish(&self, mechanism: &dyn Mechanism) -> Result<Summary, String> {
+        let mut m = Summary::default();
+        let (Some(first), last) = (self.first, self.last) else {
+            return Err("the run has no steps".into());
+        };
+        let t = &self.topology;
+        m.push("piston_stroke", mechanism.stroke());
+        for (p, peaks) in t.pistons.iter().zip(&self.pistons) {
+            m.push(format!("{}_velocity_max", p.name), peaks[0].sqrt());
+            m.push(format!("{}_acceleration_max", p.name), peaks[1].sqrt());
+        }
+        for (b, peaks) in t.bodies.iter().zip(&self.bodies) {
+            m.push(format!("{}_cg_velocity_max", b.name), peaks[0].sqrt());
+            m.push(format!("{}_cg_acceleration_max", b.name), peaks[1].sqrt());
+            m.push(format!("{}_angular_velocity_max", b.name), peaks[2].sqrt());
+            m.push(format!("{}_angular_acceleration_max", b.name), peaks[3].sqrt());
+        }
+        let span = last.0 - first.0;
+        for f in &self.families {
+            for (j, (force, moment)) in t.joints.iter().zip(f.force.iter().zip(&f.moment)) {
+                m.push(format!("{}_{}_force_max", f.name, j.name), force.sqrt());
+                if matches!(j.kind, JointKind::Prismatic) {
+                    m.push(format!("{}_{}_moment_max", f.name, j.name), *moment);
+                }
+            }
+            m.push(format!("{}_torque_max", f.name), f.torque);
+            m.push(format!("{}_work", f.name), f.work);
+            m.push(format!("{}_torque_mean", f.name), f.work / span); // (A5.2.1.38)
+            // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at
+            // constant speed this is the time average.
+            m.push(format!("{}_power_mean", f.name), f.energy_flow / span);
+        }
+        let change = last.2 - first.2;
+        m.push("kinetic_energy_change", change);
+        if let Some(inertial) = self.families.iter().find(|f| f.name == "inertial") {
+            let error = (inertial.work - change).abs();
+            let relative = if error == 0.0 {
+                0.0
+            } else {
+                error / inertial.abs_work
+            };
+            m.push("energy_balance_error", relative);
+            if relative > ENERGY_TOLERANCE {
+                return Err(format!(
+                    "the energy check fails: inertial work {} J against a kinetic energy change of {} J, \
+                     {relative:.2e} of the {} J the drive moves (tolerance {ENERGY_TOLERANCE:e}): \
+                     the crank-angle grid is too coarse for this motion; raise motion.steps",
+                    inertial.work, change, inertial.abs_work
+                ));
+            }
+        }
+        m.push("cycle_time", last.1 - first.1);
+        if let Some(p) = self.pressure {
+            m.push("cylinder_pressure_max", p);
+            m.push("gas_force_max", self.gas_force);
+        }
+        Ok(m)
+    }
+}
+
+impl Sink for SummarySink {
+    fn push(&mut self, s: &Step) -> Result<(), String> {
+        let st = s.state;
+        for (peaks, p) in self.pistons.iter_mut().zip(&st.pistons) {
+            peaks[0] = peaks[0].max(p.velocity * p.velocity);
+            peaks[1] = peaks[1].max(p.acceleration * p.acceleration);
+        }
+        for (peaks, b) in self.bodies.iter_mut().zip(&st.bodies) {
+            peaks[0] = peaks[0].max(b.cg.velocity.norm_sqr());
+            peaks[1] = peaks[1].max(b.cg.acceleration.norm_sqr());
+            peaks[2] = peaks[2].max(b.angular_velocity * b.angular_velocity);
+            peaks[3] = peaks[3].max(b.angular_acceleration * b.angular_acceleration);
+        }
+        let (angle, speed) = (st.crank.angle, st.crank.speed);
+        for (k, (f, t0)) in self
+            .families
+            .iter_mut()
+            .zip(&mut self.previous_torques)
+            .enumerate()
+        {
+            let loads = s.families.get(k).unwrap_or(s.total);
+            let interval = self.previous.map(|(a0, w0)| (angle - a0, *t0, w0));
+            f.add(loads, interval, speed);
+            *t0 = loads.crank_torque;
+        }
+        self.previous = Some((angle, speed));
+        let energy = kinetic_energy(&self.topology, st);
+        let now = (angle, st.crank.time, energy);
+        self.first.get_or_insert(now);
+        self.last = now;
+        if let Some(p) = s.pressure {
+            self.pressure = Some(self.pressure.map_or(p, |q| q.max(p)));
+            for f in s.piston_forces {
+                self.gas_force = self.gas_force.max(f.abs());
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,47 @@
+//! Tolerance checks for tests: each failure message names the quantity, both values and the
+//! tolerance, so a failing validation test reads like a line of a validation report.
+
+/// Asserts |got/want − 1| ≤ `rel`.
+#[track_caller]
+pub fn within(name: &str, got: f64, want: f64, rel: f64) {
+    assert!(
+        (got / want - 1.0).abs() <= rel,
+        "{name}: got {got}, expected {want}, tolerance {}%",
+        rel * 100.0
+    );
+}
+
+/// Asserts |got − want| ≤ `abs`.
+#[track_caller]
+pub fn near(name: &str, got: f64, want: f64, abs: f64) {
+    assert!(
+        (got - want).abs() <= abs,
+        "{name}: got {got}, expected {want}, tolerance ±{abs}"
+    );
+}
+
+/// Asserts |got − want| ≤ `rel`·max(|want|, `floor`): relative, with a floor for values that
+/// vanish.
+#[track_caller]
+pub fn close(name: &str, got: f64, want: f64, rel: f64, floor: f64) {
+    let scale = want.abs().max(floor);
+    assert!(
+        (got - want).abs() <= rel * scale,
+        "{name}: got {got}, expected {want}, tolerance {rel:e} of {scale}"
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_checks_pass_and_fail_where_they_should() {
+        within("a", 1.001, 1.0, 1.1e-3);
+        near("b", 1.001, 1.0, 1.1e-3);
+        close("c", 1e-9, 0.0, 1e-6, 1e-3);
+        assert!(std::panic::catch_unwind(|| within("a", 1.01, 1.0, 1e-3)).is_err());
+        assert!(std::panic::catch_unwind(|| near("b", 1.01, 1.0, 1e-3)).is_err());
+        assert!(std::panic::catch_unwind(|| close("c", 1e-2, 0.0, 1e-6, 1e-3)).is_err());
+    }
+}
