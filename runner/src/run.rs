@@ -97,7 +97,8 @@ fn run_mechanism(
 /// A failure names the file, the case, the mechanism, and the step and quantity that went
 /// wrong.
 pub fn run_case(case: &Case, csv_dir: Option<&Path>) -> Result<Vec<MechanismResult>, String> {
-    case.mechanisms
+    let results: Vec<Result<MechanismResult, String>> = case
+        .mechanisms
         .par_iter()
         .map(|m| {
             let summary = run_mechanism(case, m.as_ref(), csv_dir).map_err(|e| {
@@ -113,7 +114,14 @@ pub fn run_case(case: &Case, csv_dir: Option<&Path>) -> Result<Vec<MechanismResu
                 summary,
             })
         })
-        .collect()
+        .collect();
+    // Every mechanism's failure, not only the first.
+    let failures: Vec<String> = results.iter().filter_map(|r| r.clone().err()).collect();
+    if failures.is_empty() {
+        Ok(results.into_iter().flatten().collect())
+    } else {
+        Err(failures.join("\n  "))
+    }
 }
 
 /// How a batch runs.

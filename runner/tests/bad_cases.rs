@@ -121,7 +121,7 @@ fn each_rule_names_file_case_field_rule_and_value() {
         (
             "bore = 0.12",
             "bore = 0.12\npin_offset = 0.09",
-            &["geometry.pin_offset", "0.09", "longer than crank_length"],
+            &["geometry.pin_offset", "0.09", "longer than geometry.crank_length"],
         ),
         (
             "steps = 720",
@@ -187,7 +187,7 @@ fn one_failing_case_does_not_stop_the_batch() {
     std::fs::write(cases.join("dup.toml"), GOOD.replace("\"good\"", "\"a\"")).unwrap();
     std::fs::write(cases.join("notes.txt"), "not a case").unwrap();
     let out = dir.path().join("out");
-    let report = cardan_runner::run_paths(&[cases], &out).unwrap();
+    let report = cardan_runner::run_paths(&[cases], &out, Default::default());
     let mut written: Vec<_> = report.written.iter().map(|w| w.0.as_str()).collect();
     written.sort();
     assert_eq!(written, ["a", "b"]);
@@ -360,7 +360,7 @@ fn gas_results_are_written() {
     let file = dir.path().join("pump.toml");
     std::fs::write(&file, format!("{GOOD}{PUMP_GAS}")).unwrap();
     let out = dir.path().join("out");
-    let report = cardan_runner::run_paths(&[file], &out).unwrap();
+    let report = cardan_runner::run_paths(&[file], &out, Default::default());
     assert!(report.failures.is_empty(), "{:#?}", report.failures);
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("good/summary.json")).unwrap())
@@ -375,8 +375,8 @@ fn gas_results_are_written() {
         "gas_torque_mean",
         "gas_power_mean",
         "total_crank_pin_force_max",
-        "total_main_pin_force_max",
-        "total_piston_side_force_max",
+        "total_main_bearing_force_max",
+        "total_gear_mesh_force_max",
         "total_torque_max",
         "total_work",
         "total_torque_mean",

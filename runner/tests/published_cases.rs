@@ -1,23 +1,16 @@
 //! Shipped cases against published results, through the whole chain: case file, gas model on
 //! each mechanism's volume curve, dynamics, summary.
 
-use cardan_runner::run::MechanismRun;
+use cardan_runner::run::MechanismResult;
 use cardan_runner::{case, run_case};
+use cardan_testing::within;
 use std::path::Path;
 
-fn run_shipped(name: &str) -> Vec<MechanismRun> {
+fn run_shipped(name: &str) -> Vec<MechanismResult> {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../configs/{name}.toml"));
-    let runs = run_case(&case::load(&file).unwrap()).unwrap();
+    let runs = run_case(&case::load(&file).unwrap(), None).unwrap();
     assert_eq!(runs.len(), 2, "{name} runs both mechanisms");
     runs
-}
-
-fn within(name: &str, got: f64, want: f64, rel: f64) {
-    assert!(
-        (got / want - 1.0).abs() <= rel,
-        "{name}: got {got}, thesis {want}, tolerance {}%",
-        rel * 100.0
-    );
 }
 
 /// The summed lossless dynamics of the Karhula air pump (A7.1.1-60), inertial plus compression
@@ -41,12 +34,12 @@ fn karhula_pump_totals_match_the_thesis() {
     ];
     for (name, [pin_s, pin_c, torque_s, torque_c]) in thesis {
         for run in &run_shipped(name) {
-            let (pin, torque) = match run.case.kind.name() {
+            let (pin, torque) = match run.mechanism.name() {
                 "slider_crank" => (pin_s, torque_s),
                 _ => (pin_c, torque_c),
             };
             let get = |m: &str| run.summary.get(m).unwrap();
-            let label = |q: &str| format!("{name} {} {q}", run.case.kind.name());
+            let label = |q: &str| format!("{name} {} {q}", run.mechanism.name());
             within(
                 &label("total crank-pin force"),
                 get("total_crank_pin_force_max"),
@@ -73,7 +66,7 @@ fn karhula_pump_totals_match_the_thesis() {
 fn nunes_opposed_piston_engine_matches_the_thesis_at_2000_rpm() {
     for run in &run_shipped("nunes-op-r26-l90-2000rpm") {
         let get = |m: &str| run.summary.get(m).unwrap();
-        let kind = run.case.kind.name();
+        let kind = run.mechanism.name();
         let label = |q: &str| format!("{kind} {q}");
         let (p_max, torque_max, torque_mean) = match kind {
             "slider_crank" => (8.707e6, 275.731, 36.284),

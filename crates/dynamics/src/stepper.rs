@@ -204,3 +204,32 @@ impl Sink for Steps {
         Ok(())
     }
 }
+
+/// Runs `mechanism` through `motion` with the inertial loads (and the gas loads, if `gas` is
+/// given), both by `solver`, and returns every step (if `keep_steps`) with the summary: the
+/// whole pipeline in one call, for tests and small studies.
+pub fn run_summary(
+    mechanism: &dyn Mechanism,
+    motion: &mut dyn MotionSource,
+    gas: Option<GasAt>,
+    solver: crate::Solver,
+    keep_steps: bool,
+) -> Result<(Vec<StepRecord>, crate::Summary), String> {
+    let inertial = crate::Inertial(solver);
+    let gas_family = crate::Gas(solver);
+    let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
+    if gas.is_some() {
+        families.push(&gas_family);
+    }
+    let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
+    let mut summary = crate::SummarySink::new(mechanism, &names);
+    let mut steps = Steps::default();
+    {
+        let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
+        if keep_steps {
+            sinks.push(&mut steps);
+        }
+        run(mechanism, motion, &families, gas, &mut sinks).map_err(|e| e.to_string())?;
+    }
+    Ok((steps.0, summary.finish(mechanism)?))
+}

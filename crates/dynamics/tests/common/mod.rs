@@ -2,55 +2,91 @@
 //! l = 0.14 m (ZBA = 2.33·ZAA0), bore 0.12 m, cycle 90° → 810°.
 #![allow(dead_code)]
 
-use cardan_dynamics::{run_cycle, MassProperties, Material, Step, Summary};
-use cardan_mechanism::{CardanGear, CrankMotion, Mechanism, MechanismKind, SliderCrank};
+use cardan_dynamics::{run_summary, Solver, StepRecord, Summary};
+use cardan_mechanism::{
+    entry, CrankMotion, Grid, MachineGeometry, MassInputs, Material, Mechanism, OptionValue,
+    Options,
+};
 use std::f64::consts::PI;
 
-pub const CRANK: f64 = 0.06;
-pub const ROD: f64 = 0.14;
-pub const BORE: f64 = 0.12;
+pub const GEOMETRY: MachineGeometry = MachineGeometry {
+    crank_length: 0.06,
+    rod_length: 0.14,
+    bore: 0.12,
+    pin_offset: 0.0,
+};
 
 /// The masses the thesis's published inertial results imply (it does not print them): its
 /// cardan crank-pin forces give a reciprocating mass (piston + pin + rod) of 1.282 kg with the
 /// steel rod, of which the chapter-10 rod rule gives 1.256 kg, leaving 0.026 kg for the piston
 /// and pin; its mean inertial torques give the slider-crank rod a moment of inertia of about
 /// m·ℓ²/3 = 0.0167 kg·m² (ℓ = 0.2 m). The same values are in configs/karhula-*.toml.
-pub fn thesis_masses(kind: MechanismKind, rod: Material) -> MassProperties {
-    let mut m = MassProperties::estimate(kind, CRANK, ROD, BORE, rod);
-    m.piston_mass = 0.026;
-    if kind == MechanismKind::SliderCrank {
-        m.rod_inertia = 0.0167;
+pub fn thesis_masses(mechanism: &str, rod: Material) -> MassInputs {
+    MassInputs {
+        piston_mass: Some(0.026),
+        rod_inertia: (mechanism == "slider_crank").then_some(0.0167),
+        rod_material: Some(rod),
+        ..MassInputs::default()
     }
-    m
 }
 
-pub fn mechanism(kind: MechanismKind, rod_point: f64) -> Box<dyn Mechanism> {
-    match kind {
-        MechanismKind::SliderCrank => {
-            Box::new(SliderCrank::new(CRANK, ROD, 0.0, rod_point).unwrap())
-        }
-        MechanismKind::CardanGear => {
-            Box::new(CardanGear::equivalent_to_slider_crank(CRANK, ROD, rod_point).unwrap())
-        }
+/// The thesis machine as `mechanism` (a registry name), with `options`.
+pub fn machine_with(
+    mechanism: &str,
+    geometry: &MachineGeometry,
+    rod: Material,
+    options: &[(&str, &str)],
+) -> Box<dyn Mechanism> {
+    let mut o = Options::new();
+    for (k, v) in options {
+        o.insert(k.to_string(), OptionValue::Word(v.to_string()));
     }
+    (entry(mechanism).unwrap().build)(geometry, &thesis_masses(mechanism, rod), &o).unwrap()
+}
+
+pub fn thesis(mechanism: &str, rod: Material) -> Box<dyn Mechanism> {
+    machine_with(mechanism, &GEOMETRY, rod, &[])
+}
+
+/// Every mechanism the project knows, on the thesis geometry, in each of its readings, plus an
+/// offset slider-crank: what the generic cross-checks run over.
+pub fn every_machine() -> Vec<(String, Box<dyn Mechanism>)> {
+    let offset = MachineGeometry {
+        pin_offset: 0.012,
+        ..GEOMETRY
+    };
+    vec![
+        ("slider_crank".into(), thesis("slider_crank", Material::Steel)),
+        (
+            "slider_crank offset".into(),
+            machine_with("slider_crank", &offset, Material::Steel, &[]),
+        ),
+        ("cardan_gear karhula".into(), thesis("cardan_gear", Material::Steel)),
+        (
+            "cardan_gear involute".into(),
+            machine_with(
+                "cardan_gear",
+                &GEOMETRY,
+                Material::Steel,
+                &[("gear_mesh_model", "involute")],
+            ),
+        ),
+        ("scotch_yoke".into(), thesis("scotch_yoke", Material::Steel)),
+    ]
 }
 
 /// The thesis cycle at initial speed `w0` and acceleration `alpha` (rad/s, rad/s²).
 pub fn cycle(
-    kind: MechanismKind,
-    masses: &MassProperties,
+    mech: &dyn Mechanism,
     w0: f64,
     alpha: f64,
     steps: usize,
-) -> (Vec<Step>, Summary) {
-    let mech = mechanism(kind, masses.rod_cg);
+) -> (Vec<StepRecord>, Summary) {
     let motion = CrankMotion {
         start_angle: PI / 2.0,
         initial_speed: w0,
         angular_acceleration: alpha,
     };
-    let grid = motion.grid(PI / 2.0, 4.5 * PI, steps).unwrap();
-    let steps = run_cycle(mech.as_ref(), masses, &grid, None);
-    let summary = Summary::of_cycle(mech.as_ref(), masses, &steps);
-    (steps, summary)
+    let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, steps);
+    run_summary(mech, &mut grid, None, Solver::ClosedForm, true).unwrap()
 }
