@@ -13,7 +13,7 @@ use std::process::ExitCode;
 #[command(
     name = "cardan",
     version,
-    about = "Kinematics, loads and summaries of reciprocating mechanisms (slider-crank, cardan gear, Scotch yoke) from TOML case files",
+    about = "Kinematics, loads and summaries of reciprocating mechanisms (the slider-crank, the cardan gear and their relatives) from TOML case files",
     after_help = "Exit codes: 0 all cases succeeded; 1 some path, case file or case failed (the others still ran); 2 usage error.\nLogs: set RUST_LOG (e.g. RUST_LOG=info)."
 )]
 struct Cli {

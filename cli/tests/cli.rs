@@ -31,7 +31,15 @@ fn failures_give_exit_1_and_are_listed_after_the_good_cases_run() {
     .unwrap();
     let out = dir.path().join("results");
     let missing = dir.path().join("missing.toml");
-    let run = cardan(&[&"run", &dir.path(), &missing, &"--out", &out, &"--jobs", &"2"]);
+    let run = cardan(&[
+        &"run",
+        &dir.path(),
+        &missing,
+        &"--out",
+        &out,
+        &"--jobs",
+        &"2",
+    ]);
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(1), "stderr: {stderr}");
     assert!(
@@ -44,7 +52,13 @@ fn failures_give_exit_1_and_are_listed_after_the_good_cases_run() {
     assert!(case.join("cardan_gear.csv").is_file());
 
     // --no-csv: the summary only.
-    let only = cardan(&[&"run", &dir.path().join("good.toml"), &"--out", &out, &"--no-csv"]);
+    let only = cardan(&[
+        &"run",
+        &dir.path().join("good.toml"),
+        &"--out",
+        &out,
+        &"--no-csv",
+    ]);
     assert_eq!(only.status.code(), Some(0));
     assert!(!case.join("cardan_gear.csv").exists());
 
@@ -52,7 +66,10 @@ fn failures_give_exit_1_and_are_listed_after_the_good_cases_run() {
     let check = cardan(&[&"check", &dir.path()]);
     assert_eq!(check.status.code(), Some(1));
     let stdout = String::from_utf8_lossy(&check.stdout);
-    assert!(stdout.contains("valid   karhula-r60-l140-a0-w3pi"), "{stdout}");
+    assert!(
+        stdout.contains("valid   karhula-r60-l140-a0-w3pi"),
+        "{stdout}"
+    );
     let check = cardan(&[&"check", &dir.path().join("good.toml")]);
     assert_eq!(check.status.code(), Some(0));
 }
@@ -61,8 +78,15 @@ fn failures_give_exit_1_and_are_listed_after_the_good_cases_run() {
 fn usage_errors_exit_2_and_every_command_has_help() {
     assert_eq!(cardan(&[&"frobnicate"]).status.code(), Some(2));
     assert_eq!(cardan(&[&"run"]).status.code(), Some(2));
-    assert_eq!(cardan(&[&"run", &"x", &"--jobs", &"0"]).status.code(), Some(2));
-    for args in [vec!["--help"], vec!["run", "--help"], vec!["check", "--help"]] {
+    assert_eq!(
+        cardan(&[&"run", &"x", &"--jobs", &"0"]).status.code(),
+        Some(2)
+    );
+    for args in [
+        vec!["--help"],
+        vec!["run", "--help"],
+        vec!["check", "--help"],
+    ] {
         let a: Vec<&dyn AsRef<std::ffi::OsStr>> = args.iter().map(|s| s as _).collect();
         let help = cardan(&a);
         assert_eq!(help.status.code(), Some(0));

@@ -6,8 +6,7 @@
 use crate::gas::GasCase;
 use crate::units::{to_si, Dimension};
 use cardan_mechanism::{
-    CrankMotion, MachineGeometry, MassInputs, Material, Mechanism, OptionKind, OptionValue,
-    Options,
+    CrankMotion, MachineGeometry, MassInputs, Material, Mechanism, OptionKind, OptionValue, Options,
 };
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -306,7 +305,10 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
             return Err(invalid(
                 "mechanisms",
                 &format!("\"{name}\""),
-                &format!("unknown mechanism: use one of {}", cardan_mechanism::names()),
+                &format!(
+                    "unknown mechanism: use one of {}",
+                    cardan_mechanism::names()
+                ),
             ));
         };
         if mechanisms.iter().any(|c| c.name() == entry.name) {
@@ -463,13 +465,22 @@ fn mechanism_options(
         return Ok(options);
     };
     let Some(table) = table.as_table() else {
-        return Err(invalid(entry.name, table, "must be a table of the mechanism's options"));
+        return Err(invalid(
+            entry.name,
+            table,
+            "must be a table of the mechanism's options",
+        ));
     };
     let declared = || {
         if entry.options.is_empty() {
             "it has none".to_string()
         } else {
-            entry.options.iter().map(|o| o.name).collect::<Vec<_>>().join(", ")
+            entry
+                .options
+                .iter()
+                .map(|o| o.name)
+                .collect::<Vec<_>>()
+                .join(", ")
         }
     };
     for (key, value) in table {
@@ -488,7 +499,14 @@ fn mechanism_options(
                     return Err(invalid(
                         &field,
                         value,
-                        &format!("must be one of {}", words.iter().map(|w| format!("\"{w}\"")).collect::<Vec<_>>().join(", ")),
+                        &format!(
+                            "must be one of {}",
+                            words
+                                .iter()
+                                .map(|w| format!("\"{w}\""))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
                     ))
                 }
             },

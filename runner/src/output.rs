@@ -130,11 +130,21 @@ pub const COLUMNS: &[(&str, &str)] = &[
 /// The CSV header of `mechanism` run with the load families `families`.
 fn header(mechanism: &dyn Mechanism, families: &[&str], gas: bool) -> Vec<String> {
     let t = mechanism.topology();
-    let mut h: Vec<String> = ["crank_angle_deg", "time_s", "crank_speed_rad_s", "crank_acceleration_rad_s2"]
-        .map(String::from)
-        .to_vec();
+    let mut h: Vec<String> = [
+        "crank_angle_deg",
+        "time_s",
+        "crank_speed_rad_s",
+        "crank_acceleration_rad_s2",
+    ]
+    .map(String::from)
+    .to_vec();
     for p in &t.pistons {
-        for s in ["position_m", "velocity_m_s", "acceleration_m_s2", "dx_dtheta_m_rad"] {
+        for s in [
+            "position_m",
+            "velocity_m_s",
+            "acceleration_m_s2",
+            "dx_dtheta_m_rad",
+        ] {
             h.push(format!("{}_{s}", p.name));
         }
     }
@@ -209,7 +219,8 @@ impl<'a> CsvSink<'a> {
         last_step: usize,
     ) -> anyhow::Result<Self> {
         let file = File::create(path).with_context(|| format!("create {}", path.display()))?;
-        let mut writer = csv::WriterBuilder::new().from_writer(BufWriter::with_capacity(1 << 16, file));
+        let mut writer =
+            csv::WriterBuilder::new().from_writer(BufWriter::with_capacity(1 << 16, file));
         let mut names: Vec<&str> = families.to_vec();
         let with_total = families.len() > 1;
         if with_total {

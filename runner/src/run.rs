@@ -55,7 +55,12 @@ fn run_mechanism(
         None => None,
     };
     let mut steps = |gas: Option<GasAt>| {
-        let mut grid = Grid::new(case.motion, case.motion.start_angle, case.end_angle, case.steps);
+        let mut grid = Grid::new(
+            case.motion,
+            case.motion.start_angle,
+            case.end_angle,
+            case.steps,
+        );
         let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
         if let Some(c) = csv.as_mut() {
             sinks.push(c);
@@ -73,7 +78,10 @@ fn run_mechanism(
                 .cylinder(case.geometry.bore, mechanism.stroke(), case.pistons)
                 .map_err(failed)?;
             cylinder.with_chamber(mechanism, |chamber| {
-                let prepared = gas.model().prepare(*chamber, mean_speed(case)).map_err(failed)?;
+                let prepared = gas
+                    .model()
+                    .prepare(*chamber, mean_speed(case))
+                    .map_err(failed)?;
                 let at = |theta: f64| prepared.at(theta);
                 steps(Some(&at))?;
                 Ok::<_, String>(prepared.metrics())
@@ -83,12 +91,16 @@ fn run_mechanism(
     let mut summary = summary.finish(mechanism)?;
     for m in gas_metrics {
         if !m.value.is_finite() {
-            return Err(format!("gas model metric {} is not finite ({})", m.name, m.value));
+            return Err(format!(
+                "gas model metric {} is not finite ({})",
+                m.name, m.value
+            ));
         }
         summary.push(m.name, m.value);
     }
     if let Some(c) = csv {
-        c.finish().map_err(|e| format!("cannot write the CSV: {e:#}"))?;
+        c.finish()
+            .map_err(|e| format!("cannot write the CSV: {e:#}"))?;
     }
     Ok(summary)
 }
@@ -165,7 +177,10 @@ pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
             if let Err(e) = walk(p, &mut files) {
                 failures.push(format!("{}: cannot list: {e}", p.display()));
             } else if files.len() == before {
-                failures.push(format!("{}: no *.toml case files in this folder", p.display()));
+                failures.push(format!(
+                    "{}: no *.toml case files in this folder",
+                    p.display()
+                ));
             }
         } else if p.is_file() {
             files.push(p.clone());
@@ -265,7 +280,9 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
             Ok(pool) => pool.install(work),
             Err(e) => {
-                report.failures.push(format!("cannot start {n} worker threads: {e}"));
+                report
+                    .failures
+                    .push(format!("cannot start {n} worker threads: {e}"));
                 return report;
             }
         },

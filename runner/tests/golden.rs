@@ -34,8 +34,10 @@ fn shipped_cases_match_golden_summaries() {
     assert!(files.len() >= 8, "the shipped cases are missing: {files:?}");
     for file in files {
         let case = case::load(&file).unwrap_or_else(|e| panic!("{e}"));
-        let mut summary =
-            output::summary_json(&case, &run_case(&case, None).unwrap_or_else(|e| panic!("{e}")));
+        let mut summary = output::summary_json(
+            &case,
+            &run_case(&case, None).unwrap_or_else(|e| panic!("{e}")),
+        );
         round(&mut summary);
         let name = PathBuf::from(&file)
             .file_stem()

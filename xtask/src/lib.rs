@@ -29,7 +29,9 @@ fn mechanisms_table() -> String {
         bore: 0.12,
         pin_offset: 0.0,
     };
-    let mut t = String::from("| `mechanisms` name | what it is | bodies | joints | options |\n|---|---|---|---|---|\n");
+    let mut t = String::from(
+        "| `mechanisms` name | what it is | bodies | joints | options |\n|---|---|---|---|---|\n",
+    );
     for e in MECHANISMS {
         let m = (e.build)(&geometry, &MassInputs::default(), &Options::new())
             .expect("the thesis machine is valid for every mechanism");

@@ -3,7 +3,7 @@
 //! with every step kept in memory.
 
 use cardan_dynamics::{run_summary, Solver};
-use cardan_mechanism::{entry, CrankMotion, Grid, MachineGeometry, MassInputs, Options};
+use cardan_mechanism::{CrankMotion, Grid, MachineGeometry, MassInputs, Options, MECHANISMS};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
 use std::hint::black_box;
@@ -20,16 +20,22 @@ fn cycle(c: &mut Criterion) {
         bore: 0.12,
         pin_offset: 0.0,
     };
-    for name in ["slider_crank", "cardan_gear", "scotch_yoke"] {
-        let mech = (entry(name).unwrap().build)(&geometry, &MassInputs::default(), &Options::new())
-            .unwrap();
+    for entry in MECHANISMS {
+        let name = entry.name;
+        let mech = (entry.build)(&geometry, &MassInputs::default(), &Options::new()).unwrap();
         for (label, keep) in [("7200_steps", false), ("7200_steps_kept", true)] {
             c.bench_function(&format!("{name}_{label}"), |b| {
                 b.iter(|| {
                     let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, 7200);
                     black_box(
-                        run_summary(black_box(mech.as_ref()), &mut grid, None, Solver::ClosedForm, keep)
-                            .unwrap(),
+                        run_summary(
+                            black_box(mech.as_ref()),
+                            &mut grid,
+                            None,
+                            Solver::ClosedForm,
+                            keep,
+                        )
+                        .unwrap(),
                     )
                 })
             });

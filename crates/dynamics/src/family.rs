@@ -48,7 +48,13 @@ pub trait LoadFamily: Sync {
 
     /// Its loads at `state`, with `piston_forces` the gas force on each piston (N, towards the
     /// crankshaft), written to `out`.
-    fn loads(&self, mechanism: &dyn Mechanism, state: &State, piston_forces: &[f64], out: &mut Loads);
+    fn loads(
+        &self,
+        mechanism: &dyn Mechanism,
+        state: &State,
+        piston_forces: &[f64],
+        out: &mut Loads,
+    );
 }
 
 /// The loads of the bodies' inertia (d'Alembert), with no force on the pistons (Karhula A5.2.1).

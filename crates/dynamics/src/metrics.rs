@@ -110,8 +110,7 @@ fn matches_template(template: &str, name: &str) -> bool {
         return template == name;
     }
     let (first, last) = (parts[0], parts[parts.len() - 1]);
-    if !name.starts_with(first) || !name.ends_with(last) || name.len() < first.len() + last.len()
-    {
+    if !name.starts_with(first) || !name.ends_with(last) || name.len() < first.len() + last.len() {
         return false;
     }
     let mut rest = &name[first.len()..name.len() - last.len()];
@@ -147,8 +146,14 @@ mod tests {
     fn templates_match_filled_names_only() {
         assert_eq!(find("inertial_crank_pin_force_max").unwrap().unit, "N");
         assert_eq!(find("total_piston_side_moment_max").unwrap().unit, "N*m");
-        assert_eq!(find("rod_cg_velocity_max").unwrap().name, "{body}_cg_velocity_max");
-        assert_eq!(find("piston_velocity_max").unwrap().name, "{piston}_velocity_max");
+        assert_eq!(
+            find("rod_cg_velocity_max").unwrap().name,
+            "{body}_cg_velocity_max"
+        );
+        assert_eq!(
+            find("piston_velocity_max").unwrap().name,
+            "{piston}_velocity_max"
+        );
         assert_eq!(find("gas_force_max").unwrap().name, "gas_force_max");
         assert_eq!(find("gas_torque_mean").unwrap().unit, "N*m");
         assert_eq!(find("imep").unwrap().unit, "Pa");

@@ -63,7 +63,14 @@ pub fn run(
     let mut loads = vec![Loads::for_topology(topology); families.len()];
     let mut total = Loads::for_topology(topology);
     let mut shares = vec![vec![0.0; topology.bodies.len()]; families.len()];
-    let mut forces = vec![0.0; if gas.is_some() { topology.pistons.len() } else { 0 }];
+    let mut forces = vec![
+        0.0;
+        if gas.is_some() {
+            topology.pistons.len()
+        } else {
+            0
+        }
+    ];
     let mut previous_torque = None;
     let mut index = 0;
     while let Some(crank) = motion.next(previous_torque) {
@@ -84,7 +91,9 @@ pub fn run(
             torque_shares(topology, &state, family.inertia(), applied, share);
             total.add(out);
         }
-        check_finite(index, &state, pressure, &forces, families, &loads, mechanism)?;
+        check_finite(
+            index, &state, pressure, &forces, families, &loads, mechanism,
+        )?;
         let step = Step {
             index,
             state: &state,
@@ -148,7 +157,10 @@ fn check_finite(
         named.push((format!("{}_acceleration", p.name), m.acceleration));
     }
     for (b, m) in t.bodies.iter().zip(&state.bodies) {
-        named.push((format!("{}_cg_acceleration", b.name), m.cg.acceleration.norm()));
+        named.push((
+            format!("{}_cg_acceleration", b.name),
+            m.cg.acceleration.norm(),
+        ));
         named.push((
             format!("{}_angular_acceleration", b.name),
             m.angular_acceleration,

@@ -148,7 +148,10 @@ impl SummarySink {
             m.push(format!("{}_cg_velocity_max", b.name), peaks[0].sqrt());
             m.push(format!("{}_cg_acceleration_max", b.name), peaks[1].sqrt());
             m.push(format!("{}_angular_velocity_max", b.name), peaks[2].sqrt());
-            m.push(format!("{}_angular_acceleration_max", b.name), peaks[3].sqrt());
+            m.push(
+                format!("{}_angular_acceleration_max", b.name),
+                peaks[3].sqrt(),
+            );
         }
         let span = last.0 - first.0;
         for f in &self.families {
@@ -161,8 +164,8 @@ impl SummarySink {
             m.push(format!("{}_torque_max", f.name), f.torque);
             m.push(format!("{}_work", f.name), f.work);
             m.push(format!("{}_torque_mean", f.name), f.work / span); // (A5.2.1.38)
-            // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at
-            // constant speed this is the time average.
+                                                                      // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at
+                                                                      // constant speed this is the time average.
             m.push(format!("{}_power_mean", f.name), f.energy_flow / span);
         }
         let change = last.2 - first.2;

@@ -5,7 +5,7 @@
 
 mod common;
 use cardan_dynamics::{kinetic_energy, planar, run_summary, torque_shares, Solver};
-use cardan_mechanism::{CrankMotion, Grid, Loads, Material, Mechanism, C};
+use cardan_mechanism::{CrankMotion, Grid, Loads, Mechanism, C};
 use common::*;
 use std::f64::consts::PI;
 
@@ -128,11 +128,14 @@ fn crank_torque_work_balances_kinetic_energy_and_gas_work() {
                 scale += t.abs() * dth;
                 // The drive pushes the piston against the gas: ∫ F·dx with F towards the crank.
                 let dx = w[1].state.pistons[0].position - w[0].state.pistons[0].position;
-                let f = |s: &cardan_dynamics::StepRecord| s.piston_forces.first().copied().unwrap_or(0.0);
+                let f = |s: &cardan_dynamics::StepRecord| {
+                    s.piston_forces.first().copied().unwrap_or(0.0)
+                };
                 gas_work += 0.5 * (f(&w[0]) + f(&w[1])) * dx;
             }
             let t = mech.topology();
-            let de = kinetic_energy(t, &steps[steps.len() - 1].state) - kinetic_energy(t, &steps[0].state);
+            let de = kinetic_energy(t, &steps[steps.len() - 1].state)
+                - kinetic_energy(t, &steps[0].state);
             assert!(
                 (work - de - gas_work).abs() <= 1e-7 * scale,
                 "{name} {start}→{end}: drive work {work}, ΔKE {de}, gas work {gas_work}"
@@ -151,9 +154,17 @@ fn torque_shares_add_up_to_the_drive_torque() {
             initial_speed: 94.2,
             angular_acceleration: 628.0,
         };
-        let scale = pairs.iter().map(|(c, _)| c.crank_torque.abs()).fold(0.0, f64::max);
+        let scale = pairs
+            .iter()
+            .map(|(c, _)| c.crank_torque.abs())
+            .fold(0.0, f64::max);
         let mut shares = vec![0.0; mech.topology().bodies.len()];
-        for (crank, (closed, _)) in motion.grid(1.0, 1.0 + 4.0 * PI, 1440).unwrap().iter().zip(&pairs) {
+        for (crank, (closed, _)) in motion
+            .grid(1.0, 1.0 + 4.0 * PI, 1440)
+            .unwrap()
+            .iter()
+            .zip(&pairs)
+        {
             let st = mech.state(crank);
             torque_shares(mech.topology(), &st, true, &[gas(crank.angle)], &mut shares);
             let sum: f64 = shares.iter().sum();
@@ -173,8 +184,15 @@ fn torque_shares_add_up_to_the_drive_torque() {
 #[test]
 fn cardan_mesh_readings_differ_only_by_the_wheel_inertia_and_the_radial_force() {
     let machines = every_machine();
-    let get = |n: &str| machines.iter().find(|(name, _)| name == n).unwrap().1.as_ref();
-    let (karhula, involute) = (get("cardan_gear karhula"), get("cardan_gear involute"));
+    let get = |n: &str| {
+        machines
+            .iter()
+            .find(|(name, _)| name == n)
+            .unwrap()
+            .1
+            .as_ref()
+    };
+    let (karhula, involute) = (get("cardan_gear"), get("cardan_gear involute"));
     let r_c = GEOMETRY.crank_length / 2.0;
     let j_w = cardan_mechanism::mass::cardan_wheel_inertia(GEOMETRY.crank_length);
     for (w0, alpha) in [(628.3, 0.0), (94.2, 628.0), (300.0, -500.0)] {
@@ -186,7 +204,10 @@ fn cardan_mesh_readings_differ_only_by_the_wheel_inertia_and_the_radial_force() 
             angular_acceleration: alpha,
         };
         let grid = motion.grid(1.0, 1.0 + 4.0 * PI, 1440).unwrap();
-        let scale = a.iter().map(|(c, _)| c.joints[2].force.norm()).fold(0.0, f64::max);
+        let scale = a
+            .iter()
+            .map(|(c, _)| c.joints[2].force.norm())
+            .fold(0.0, f64::max);
         for ((crank, (k, _)), (i, _)) in grid.iter().zip(&a).zip(&b) {
             assert!((k.crank_torque - i.crank_torque).abs() <= 1e-9 * scale * r_c * 4.0);
             assert!((k.joints[2].force - i.joints[2].force).norm() <= 1e-9 * scale);
@@ -203,33 +224,9 @@ fn cardan_mesh_readings_differ_only_by_the_wheel_inertia_and_the_radial_force() 
             // Involute teeth push along the line of action: radial part |F_t|·tan 20° inward.
             let radial = -(i.joints[3].force.re * crank.direction.re
                 + i.joints[3].force.im * crank.direction.im);
-            assert!((radial - tangential(i).abs() * 20f64.to_radians().tan()).abs() <= 1e-9 * scale);
+            assert!(
+                (radial - tangential(i).abs() * 20f64.to_radians().tan()).abs() <= 1e-9 * scale
+            );
         }
     }
-}
-
-/// The Scotch yoke moves its piston exactly as the cardan gear of the same stroke does.
-#[test]
-fn scotch_yoke_piston_motion_is_the_cardan_gears() {
-    let yoke = thesis("scotch_yoke", Material::Steel);
-    let cardan = thesis("cardan_gear", Material::Steel);
-    let motion = CrankMotion {
-        start_angle: 0.3,
-        initial_speed: 50.0,
-        angular_acceleration: 400.0,
-    };
-    for crank in motion.grid(0.3, 13.0, 997).unwrap() {
-        let (y, c) = (yoke.state(&crank), cardan.state(&crank));
-        let (p, q) = (y.pistons[0], c.pistons[0]);
-        for (a, b) in [
-            (p.position, q.position),
-            (p.velocity, q.velocity),
-            (p.acceleration, q.acceleration),
-            (p.dx_dtheta, q.dx_dtheta),
-            (p.d2x_dtheta2, q.d2x_dtheta2),
-        ] {
-            assert!((a - b).abs() <= 1e-12 * (1.0 + b.abs()), "{a} vs {b}");
-        }
-    }
-    assert_eq!(yoke.stroke(), cardan.stroke());
 }

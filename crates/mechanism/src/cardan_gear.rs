@@ -31,8 +31,12 @@
 //!   are not.
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Body, Joint, JointKind, JointLoad, Loads, MeshForce, Piston, State, Topology};
-use crate::{check_length, check_rod_cg, word, number, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::model::{
+    cross, Body, Joint, JointKind, JointLoad, Loads, MeshForce, Piston, State, Topology,
+};
+use crate::{
+    check_length, check_rod_cg, number, word, CrankState, Entry, MachineGeometry, Mechanism,
+};
 use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 
 /// The registry line.
@@ -339,8 +343,8 @@ impl Mechanism for CardanGear {
             }
         };
         let crank_pin = p + mesh; // 2·P in the thesis reading (A5.2.1.51)
-        // −T_1i10c − T_2i10c (A5.2.1.40-46, module note) and −T_3i10c (A5.2.1.52): in the
-        // involute reading the wheel's inertia enters through F_t instead.
+                                  // −T_1i10c − T_2i10c (A5.2.1.40-46, module note) and −T_3i10c (A5.2.1.52): in the
+                                  // involute reading the wheel's inertia enters through F_t instead.
         let lumped = match self.mesh {
             MeshModel::Karhula => crank_inertia + wheel_inertia,
             MeshModel::Involute => crank_inertia,

@@ -15,7 +15,6 @@ pub mod mass;
 pub mod model;
 pub mod motion;
 pub mod polar;
-pub mod scotch_yoke;
 pub mod slider_crank;
 
 pub use cardan_gear::{CardanGear, MeshModel};
@@ -27,7 +26,6 @@ pub use model::{
 pub use motion::{CrankMotion, CrankState, Grid, MotionError, MotionSource};
 pub use num_complex::Complex64 as C;
 pub use polar::PolarComponents;
-pub use scotch_yoke::ScotchYoke;
 pub use slider_crank::SliderCrank;
 
 use std::collections::BTreeMap;
@@ -162,11 +160,8 @@ pub enum OptionValue {
 pub type Options = BTreeMap<String, OptionValue>;
 
 /// Builds a mechanism from the case's geometry, mass fields and its own options.
-pub type Build = fn(
-    &MachineGeometry,
-    &MassInputs,
-    &Options,
-) -> Result<Box<dyn Mechanism>, MechanismError>;
+pub type Build =
+    fn(&MachineGeometry, &MassInputs, &Options) -> Result<Box<dyn Mechanism>, MechanismError>;
 
 /// One line of the registry.
 #[derive(Debug, Clone, Copy)]
@@ -182,11 +177,7 @@ pub struct Entry {
 }
 
 /// Every mechanism a case file may name.
-pub const MECHANISMS: &[Entry] = &[
-    slider_crank::ENTRY,
-    cardan_gear::ENTRY,
-    scotch_yoke::ENTRY,
-];
+pub const MECHANISMS: &[Entry] = &[slider_crank::ENTRY, cardan_gear::ENTRY];
 
 /// The registry entry called `name`.
 pub fn entry(name: &str) -> Option<&'static Entry> {

@@ -12,14 +12,17 @@
 //! `piston_pin` (piston–rod), `piston_side` (piston–cylinder wall, a slide along the axis).
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Body, Extra, Joint, JointKind, JointLoad, Loads, Piston, State, Topology};
+use crate::model::{
+    cross, Body, Extra, Joint, JointKind, JointLoad, Loads, Piston, State, Topology,
+};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
 /// The registry line.
 pub const ENTRY: Entry = Entry {
     name: "slider_crank",
-    summary: "crank, connecting rod and piston (Karhula 2008 A4.2.2, A5.2.1), with a piston-pin offset",
+    summary:
+        "crank, connecting rod and piston (Karhula 2008 A4.2.2, A5.2.1), with a piston-pin offset",
     options: &[],
     unused_masses: &["wheel_inertia"],
     build: |g, m, o| Ok(Box::new(SliderCrank::build(g, m, o)?)),
@@ -304,7 +307,12 @@ impl Mechanism for SliderCrank {
     ) -> bool {
         let m = &self.masses;
         let (rod_mass, rod_inertia, piston_mass, crank_inertia) = if inertia {
-            (m.rod_mass, m.rod_inertia, m.piston_mass, m.crankshaft_inertia)
+            (
+                m.rod_mass,
+                m.rod_inertia,
+                m.piston_mass,
+                m.crankshaft_inertia,
+            )
         } else {
             (0.0, 0.0, 0.0, 0.0)
         };

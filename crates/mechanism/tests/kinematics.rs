@@ -3,8 +3,7 @@
 //! is the full state's; dead centres.
 
 use cardan_mechanism::{
-    CrankMotion, CrankState, MachineGeometry, MassInputs, Mechanism, Options, State, C,
-    MECHANISMS,
+    CrankMotion, CrankState, MachineGeometry, MassInputs, Mechanism, Options, State, C, MECHANISMS,
 };
 
 fn machines() -> Vec<Box<dyn Mechanism>> {
@@ -111,7 +110,11 @@ fn piston_position_is_the_states_and_dead_centres() {
                 "{} θ = {theta}",
                 m.name()
             );
-            assert!((dx - p.dx_dtheta).abs() <= 1e-15, "{} θ = {theta}", m.name());
+            assert!(
+                (dx - p.dx_dtheta).abs() <= 1e-15,
+                "{} θ = {theta}",
+                m.name()
+            );
             assert!(p.position <= m.piston_top() * (1.0 + 1e-15));
             assert!(p.position >= m.piston_bottom() * (1.0 - 1e-15));
         }
