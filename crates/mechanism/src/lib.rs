@@ -15,6 +15,7 @@ pub mod mass;
 pub mod model;
 pub mod motion;
 pub mod polar;
+pub mod scotch_yoke;
 pub mod slider_crank;
 
 pub use cardan_gear::{CardanGear, MeshModel};
@@ -26,6 +27,7 @@ pub use model::{
 pub use motion::{CrankMotion, CrankState, Grid, MotionError, MotionSource};
 pub use num_complex::Complex64 as C;
 pub use polar::PolarComponents;
+pub use scotch_yoke::ScotchYoke;
 pub use slider_crank::SliderCrank;
 
 use std::collections::BTreeMap;
@@ -177,7 +179,7 @@ pub struct Entry {
 }
 
 /// Every mechanism a case file may name.
-pub const MECHANISMS: &[Entry] = &[slider_crank::ENTRY, cardan_gear::ENTRY];
+pub const MECHANISMS: &[Entry] = &[slider_crank::ENTRY, cardan_gear::ENTRY, scotch_yoke::ENTRY];
 
 /// The registry entry called `name`.
 pub fn entry(name: &str) -> Option<&'static Entry> {

@@ -1,0 +1,326 @@
+//! The Scotch yoke: the crank pin carries a sliding block that runs in a slot of the yoke,
+//! across the cylinder axis; the yoke, its rod and the piston reciprocate on the axis. Pure
+//! harmonic piston motion, the same as the cardan gear's of equal stroke, with a sliding pair
+//! where the cardan gear has its gear pair (Karhula 2008 ch. 2 mentions it as the Bourke
+//! engine's mechanism; kinematics below from the geometry).
+//!
+//! The crank OA has length r (half the stroke); the slot's centre line is at y = r·sin θ, so the
+//! piston pin is at x = r·sin θ + l (l from the slot centre line to the piston pin).
+//!
+//! Bodies: crankshaft, block (on the crank pin, massless: it is small and rides on the pin),
+//! yoke (with its rod and the piston). Joints: `main_bearing` (crankshaft–frame), `crank_pin`
+//! (crankshaft–block), `yoke_slot` (yoke–block, a slide across the cylinder axis),
+//! `piston_side` (yoke–cylinder and guides, a slide along the axis). The slot can push only
+//! along the cylinder axis, at the block, off the axis by r·cos θ: the guides answer with a
+//! couple and no side force.
+
+use crate::mass::{self, MassInputs, MassProperties};
+use crate::model::{cross, Body, Joint, JointKind, JointLoad, Loads, Piston, State, Topology};
+use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
+
+/// The registry line.
+pub const ENTRY: Entry = Entry {
+    name: "scotch_yoke",
+    summary: "crank pin with a block sliding in a slotted yoke: harmonic piston motion, slot and guide loads",
+    options: &[],
+    unused_masses: &["wheel_inertia"],
+    build: |g, m, o| Ok(Box::new(ScotchYoke::build(g, m, o)?)),
+};
+
+const CRANKSHAFT: usize = 0;
+const BLOCK: usize = 1;
+const YOKE: usize = 2;
+
+/// Scotch yoke geometry and masses.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScotchYoke {
+    /// Crank length, m: half the stroke.
+    pub crank: f64,
+    /// From the slot centre line to the piston pin, m.
+    pub rod: f64,
+    pub masses: MassProperties,
+    topology: Topology,
+}
+
+impl ScotchYoke {
+    /// The yoke of `geometry`'s stroke and rod. Masses: the chapter-10 rules of the other
+    /// mechanisms, the yoke with its rod estimated as the cardan gear's rod (this project's
+    /// estimate: a bar of the rod rule; override `rod_mass` for a real yoke).
+    pub fn build(
+        geometry: &MachineGeometry,
+        inputs: &MassInputs,
+        _options: &Options,
+    ) -> Result<Self, MechanismError> {
+        let (crank, rod) = (geometry.crank_length, geometry.rod_length);
+        let estimate = mass::estimate(
+            crank,
+            rod,
+            geometry.bore,
+            inputs.rod_material.unwrap_or_default(),
+        );
+        Self::new(
+            crank,
+            rod,
+            MassProperties::resolve(estimate, inputs),
+            geometry.bearing_radii(),
+        )
+    }
+
+    /// A yoke of crank `crank` and rod `rod` (m), with `masses` and journal radii [piston pin
+    /// (unused), crank pin, main bearing] (m).
+    pub fn new(
+        crank: f64,
+        rod: f64,
+        masses: MassProperties,
+        radii: [f64; 3],
+    ) -> Result<Self, MechanismError> {
+        check_length("geometry.crank_length", crank)?;
+        check_length("geometry.rod_length", rod)?;
+        if rod <= crank {
+            return Err(MechanismError::new(
+                "geometry.rod_length",
+                rod,
+                format!("must be longer than geometry.crank_length ({crank} m): the piston would reach the crank"),
+            ));
+        }
+        check_rod_cg(masses.rod_cg, rod)?;
+        let [_, r_crank, r_main] = radii;
+        let topology = Topology {
+            bodies: vec![
+                Body {
+                    name: "crankshaft",
+                    mass: 0.0,
+                    inertia: masses.crankshaft_inertia,
+                },
+                Body {
+                    name: "block",
+                    mass: 0.0,
+                    inertia: 0.0,
+                },
+                Body {
+                    name: "yoke",
+                    mass: masses.rod_mass + masses.piston_mass,
+                    inertia: masses.rod_inertia,
+                },
+            ],
+            joints: vec![
+                Joint {
+                    name: "main_bearing",
+                    kind: JointKind::Revolute { radius: r_main },
+                    body: CRANKSHAFT,
+                    other: None,
+                },
+                Joint {
+                    name: "crank_pin",
+                    kind: JointKind::Revolute { radius: r_crank },
+                    body: CRANKSHAFT,
+                    other: Some(BLOCK),
+                },
+                Joint {
+                    name: "yoke_slot",
+                    kind: JointKind::Prismatic,
+                    body: YOKE,
+                    other: Some(BLOCK),
+                },
+                Joint {
+                    name: "piston_side",
+                    kind: JointKind::Prismatic,
+                    body: YOKE,
+                    other: None,
+                },
+            ],
+            pistons: vec![Piston {
+                name: "piston",
+                body: YOKE,
+                axis: C::new(0.0, 1.0),
+                origin: C::new(0.0, 0.0),
+            }],
+            crankshaft: CRANKSHAFT,
+            extras: vec![],
+        };
+        Ok(Self {
+            crank,
+            rod,
+            masses,
+            topology,
+        })
+    }
+}
+
+impl Mechanism for ScotchYoke {
+    fn name(&self) -> &'static str {
+        ENTRY.name
+    }
+
+    fn topology(&self) -> &Topology {
+        &self.topology
+    }
+
+    fn masses(&self) -> &MassProperties {
+        &self.masses
+    }
+
+    fn fill(&self, crank: &CrankState, st: &mut State) {
+        let (w, a) = (crank.speed, crank.acceleration);
+        let r = self.crank;
+        let i = C::i();
+        let e_a = crank.direction;
+        let (s, c) = (e_a.im, e_a.re);
+        let pin = PointMotion {
+            position: r * e_a,
+            velocity: r * i * w * e_a,
+            acceleration: r * (i * a - w * w) * e_a,
+        };
+        // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
+        let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
+        let up = C::new(0.0, 1.0);
+        st.crank = *crank;
+        st.bodies[CRANKSHAFT] = BodyMotion {
+            cg: PointMotion::default(),
+            orientation: e_a,
+            angular_velocity: w,
+            angular_acceleration: a,
+        };
+        st.bodies[BLOCK] = BodyMotion {
+            cg: pin,
+            orientation: C::new(1.0, 0.0),
+            angular_velocity: 0.0,
+            angular_acceleration: 0.0,
+        };
+        st.bodies[YOKE] = BodyMotion {
+            cg: PointMotion {
+                position: C::new(0.0, y + self.masses.rod_cg),
+                velocity: v * up,
+                acceleration: acc * up,
+            },
+            orientation: up,
+            angular_velocity: 0.0,
+            angular_acceleration: 0.0,
+        };
+        st.joints[0].relative_speed = w;
+        st.joints[1].position = pin.position;
+        st.joints[1].relative_speed = w; // the block does not turn
+        st.joints[2].position = pin.position;
+        st.joints[2].direction = C::new(1.0, 0.0);
+        st.joints[2].relative_speed = -pin.velocity.re; // yoke relative to block, along +x
+        st.joints[3].position = C::new(0.0, y + self.rod);
+        st.joints[3].direction = up;
+        st.joints[3].relative_speed = v;
+        let p = &mut st.pistons[0];
+        p.position = y + self.rod;
+        p.velocity = v;
+        p.acceleration = acc;
+        p.dx_dtheta = r * c;
+        p.d2x_dtheta2 = -r * s;
+    }
+
+    fn piston_position(&self, angle: f64) -> (f64, f64) {
+        let (s, c) = angle.sin_cos();
+        (self.crank * s + self.rod, self.crank * c)
+    }
+
+    fn piston_top(&self) -> f64 {
+        self.rod + self.crank
+    }
+
+    fn piston_bottom(&self) -> f64 {
+        self.rod - self.crank
+    }
+
+    /// Newton-Euler by hand. The yoke assembly (mass M, on the axis) takes from the block, along
+    /// the axis, F_s = M·a + F_gas (all its other forces are along the axis too, so the guides
+    /// carry no side force); F_s acts at the block, r·cos θ off the axis, so the guides answer
+    /// with the couple −r·cos θ·F_s. The massless block passes F_s on to the crank pin; the
+    /// drive supplies J·α + r·cos θ·F_s (= (M·a + F_gas)·v/ω: the power balance).
+    fn closed_form_loads(
+        &self,
+        st: &State,
+        inertia: bool,
+        piston_forces: &[f64],
+        out: &mut Loads,
+    ) -> bool {
+        let (mass, crank_inertia) = if inertia {
+            (
+                self.masses.rod_mass + self.masses.piston_mass,
+                self.masses.crankshaft_inertia,
+            )
+        } else {
+            (0.0, 0.0)
+        };
+        let gas = piston_forces.first().copied().unwrap_or(0.0);
+        let slot = mass * st.bodies[YOKE].cg.acceleration + C::new(0.0, gas);
+        let a_pin = st.joints[1].position;
+        let force = |force: C| JointLoad { force, moment: 0.0 };
+        out.joints[0] = force(slot);
+        out.joints[1] = force(-slot);
+        out.joints[2] = force(slot);
+        out.joints[3] = JointLoad {
+            force: C::new(0.0, 0.0),
+            moment: -cross(a_pin - st.bodies[YOKE].cg.position, slot),
+        };
+        out.crank_torque = crank_inertia * st.crank.acceleration + cross(a_pin, slot);
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    /// With only a gas force F at θ = 0 (pin at (r, 0)): the slot pushes F, the guide couple is
+    /// −r·F, the drive torque r·F.
+    #[test]
+    fn a_gas_force_by_hand() {
+        let g = MachineGeometry {
+            crank_length: 0.05,
+            rod_length: 0.2,
+            bore: 0.1,
+            pin_offset: 0.0,
+        };
+        let y = ScotchYoke::build(&g, &MassInputs::default(), &Options::new()).unwrap();
+        let st = y.state(&CrankState::new(0.0, 10.0, 0.0, 0.0));
+        let mut out = Loads::for_topology(y.topology());
+        assert!(y.closed_form_loads(&st, false, &[1000.0], &mut out));
+        assert_relative_eq!(out.crank_torque, 50.0, max_relative = 1e-15);
+        assert_relative_eq!(out.joints[3].moment, -50.0, max_relative = 1e-15);
+        assert_eq!(out.joints[3].force, C::new(0.0, 0.0));
+        assert_relative_eq!(out.joints[1].force.im, -1000.0);
+        assert_relative_eq!(y.stroke(), 0.1, max_relative = 1e-15);
+    }
+
+    /// The yoke moves its piston exactly as the cardan gear of the same stroke does.
+    #[test]
+    fn piston_motion_is_the_cardan_gears() {
+        let g = MachineGeometry {
+            crank_length: 0.06,
+            rod_length: 0.14,
+            bore: 0.12,
+            pin_offset: 0.0,
+        };
+        let yoke = ScotchYoke::build(&g, &MassInputs::default(), &Options::new()).unwrap();
+        let cardan = crate::CardanGear::build(&g, &MassInputs::default(), &Options::new()).unwrap();
+        let motion = crate::CrankMotion {
+            start_angle: 0.3,
+            initial_speed: 50.0,
+            angular_acceleration: 400.0,
+        };
+        for crank in motion.grid(0.3, 13.0, 997).unwrap() {
+            let (p, q) = (
+                yoke.state(&crank).pistons[0],
+                cardan.state(&crank).pistons[0],
+            );
+            for (a, b) in [
+                (p.position, q.position),
+                (p.velocity, q.velocity),
+                (p.acceleration, q.acceleration),
+                (p.dx_dtheta, q.dx_dtheta),
+                (p.d2x_dtheta2, q.d2x_dtheta2),
+            ] {
+                assert!((a - b).abs() <= 1e-12 * (1.0 + b.abs()), "{a} vs {b}");
+            }
+        }
+        assert_eq!(yoke.stroke(), cardan.stroke());
+    }
+}
