@@ -1,0 +1,86 @@
+//! One call per crank-angle step: a gear set (geometry, face width, materials, accuracy,
+//! lubricant) evaluated for the tangential tooth load and the speeds of that step.
+
+use crate::agma::factors::{dynamic_factor, DynamicFactor, Quality};
+use crate::agma::{GearSetRating, Rating};
+use crate::buckingham::{BuckinghamPair, DynamicLoad};
+use crate::error::{positive, require, GearError};
+use crate::geometry::GearPair;
+use crate::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshLoss, MeshSpeeds, Reading};
+
+/// A gear set ready for per-step evaluation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GearSet {
+    /// Validated pair geometry.
+    pub pair: GearPair,
+    /// Face width `b` \[m\].
+    pub face_width: f64,
+    /// Accuracy grade for the AGMA dynamic factor.
+    pub quality: Quality,
+    /// AGMA rating data (materials, factors, I, J).
+    pub rating: GearSetRating,
+    /// Buckingham data (radii, error, moduli, tooth form).
+    pub buckingham: BuckinghamPair,
+    /// Lubricant for the mesh loss.
+    pub lubricant: Lubricant,
+    /// Mesh-loss reading.
+    pub loss_reading: Reading,
+}
+
+/// Inputs of one step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshStep {
+    /// Tangential tooth load `Ft` \[N\] (sign = direction; magnitudes are rated).
+    pub tangential_load: f64,
+    /// Pitch-line velocity of the mesh \[m/s\] (cardan gear: `2 ω e`, Karhula A8.1.7).
+    pub pitch_line_velocity: f64,
+    /// Angular speeds of pinion and carrier.
+    pub speeds: MeshSpeeds,
+}
+
+/// Results of one step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepResult {
+    /// Buckingham dynamic tooth load chain (Karhula A8.1.1–14).
+    pub dynamic: DynamicLoad,
+    /// AGMA dynamic factor at this pitch-line velocity.
+    pub kv: DynamicFactor,
+    /// AGMA stresses and safety factors at `|Ft|` (infinite safety factors at zero load).
+    pub rating: Rating,
+    /// Anderson & Loewenthal mesh loss.
+    pub loss: MeshLoss,
+}
+
+impl GearSet {
+    /// Evaluates one step. The AGMA rating uses `Wt = |Ft|` with `Kv`; the Buckingham load is
+    /// an independent estimate of the dynamic tooth load (the two are alternatives, not
+    /// factors of each other).
+    pub fn evaluate(&self, step: &MeshStep) -> Result<StepResult, GearError> {
+        positive("face_width", self.face_width)?;
+        require(
+            step.tangential_load.is_finite(),
+            "tangential_load",
+            "must be finite",
+            step.tangential_load,
+        )?;
+        let v = step.pitch_line_velocity.abs();
+        let wt = step.tangential_load.abs();
+        let kv = dynamic_factor(self.quality, v)?;
+        let dynamic = self.buckingham.dynamic_load(wt, v)?;
+        let rating = self.rating.rate(wt, kv.kv, self.face_width)?;
+        let geometry = MeshGeometry::from_pair(&self.pair, self.face_width)?;
+        let loss = mesh_loss(
+            &geometry,
+            &self.lubricant,
+            &step.speeds,
+            step.tangential_load,
+            self.loss_reading,
+        )?;
+        Ok(StepResult {
+            dynamic,
+            kv,
+            rating,
+            loss,
+        })
+    }
+}

@@ -1,0 +1,326 @@
+//! Gear mesh power loss after Anderson & Loewenthal (NASA TP-1622, 1980; ASME 1981/1982) as
+//! transcribed by Karhula 2008, appendix 9.1, eqs. A9.1.40–A9.1.55: sliding loss with the
+//! Benedict & Kelley friction coefficient, rolling (EHD pumping) loss with the EHD film
+//! thickness, and windage.
+//!
+//! Two readings, chosen with [`Reading`]:
+//!
+//! * [`Reading::Karhula`] — the thesis as printed: path of contact and contact ratio from
+//!   A9.1.40/A9.1.52 (full addenda, no shift, whatever the real pair is); mesh speed = the
+//!   cardan wheel's **absolute** speed (A9.1.41); sliding factor `(1+i)/i` (A9.1.42) and
+//!   rolling term `d1 sin α − (L/4)(i−1)/i` (A9.1.43) — the external-gear forms; equivalent
+//!   radius A9.1.50 as printed; dynamic viscosity in **Pa·s** (A9.1.47) in the friction,
+//!   film and windage correlations.
+//! * [`Reading::Corrected`] — (1) viscosity in **centipoise** in A9.1.48, A9.1.51 and A9.1.54
+//!   (validation note finding 4: Benedict & Kelley's `3.17·10⁸` in lb/in, in/s, cP converts
+//!   exactly to the printed 29.66 in N/m, m/s, cP, and the film formula with cP agrees with a
+//!   Hamrock–Dowson check, ~0.13 µm, whereas Pa·s gives ~1 nm); (2) internal-mesh kinematics
+//!   (finding 5): the mesh speed is the pinion speed **relative to the carrier** (crank), `2ω`
+//!   for the 2:1 cardan gear where Karhula's absolute speed is `ω`; the sliding factor of an
+//!   internal mesh is `(i−1)/i` and the rolling-sum term `(i+1)/i` (derived here: at a distance
+//!   `s` from the pitch point the sliding speed is `(ω1 ∓ ω2) s` and the rolling-speed sum
+//!   `ω1 d1 sin α + ω1 (1 ∓ 1/i) s`, upper sign external); the equivalent radius is
+//!   `ρ1 ρ2/(ρ1 ± ρ2)` at the same contact point as A9.1.50 (`ρ1 = (d1 sin α + L/2)/2`), whose
+//!   printed denominator `2(d2 sin α + L/2)` matches neither pair type; path of contact, contact
+//!   ratio and pressure angle are the pair's actual (operating) values. The friction
+//!   coefficient is clamped at 0 where the Benedict & Kelley logarithm turns negative
+//!   (outside its range), flagged in [`MeshLoss::friction_clamped`]. Windage uses the pinion's
+//!   absolute spin speed in both readings.
+//!
+//! For a fixed-axis external pair (`carrier = 0`) both readings use the same speeds and
+//! external factors and differ only in the viscosity unit, path of contact and `R_eq`.
+//!
+//! Not verified against TP-1622 itself (its Table III could not be read): the windage
+//! correlation is used as Karhula prints it (`1 + 2.3 b/d1`, `(d1/2)^4.6`, `d1/2` in m).
+
+use std::f64::consts::PI;
+
+use crate::error::{non_negative, positive, require, GearError};
+use crate::geometry::{karhula_contact_ratio, karhula_path_of_contact, GearPair};
+use crate::units::CENTIPOISE;
+
+/// Which transcription of the Anderson & Loewenthal model to use (see module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Reading {
+    /// Karhula 2008 A9.1.40–A9.1.55 as printed.
+    Karhula,
+    /// Viscosity in cP, carrier-relative internal-mesh kinematics, actual geometry.
+    Corrected,
+}
+
+impl Reading {
+    /// The individual switches this reading stands for.
+    pub fn options(self) -> LossOptions {
+        let c = self == Reading::Corrected;
+        LossOptions {
+            viscosity_in_centipoise: c,
+            mesh_kinematics: c,
+            actual_geometry: c,
+            clamp_friction: c,
+        }
+    }
+}
+
+/// The individual differences between the two readings, for sensitivity studies
+/// ([`mesh_loss_with`]); `Reading::Karhula.options()` is all `false`,
+/// `Reading::Corrected.options()` all `true`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LossOptions {
+    /// Viscosity in cP (finding 4) instead of Pa·s in A9.1.48, A9.1.51, A9.1.54.
+    pub viscosity_in_centipoise: bool,
+    /// Carrier-relative mesh speed and internal-mesh sliding/rolling factors (finding 5).
+    pub mesh_kinematics: bool,
+    /// Actual path of contact, contact ratio, operating pressure angle and pitch diameters and
+    /// the curvature-consistent `R_eq`, instead of A9.1.40, A9.1.52, A9.1.50.
+    pub actual_geometry: bool,
+    /// Clamp a negative Benedict & Kelley friction coefficient at 0.
+    pub clamp_friction: bool,
+}
+
+/// Geometry of the mesh as the loss model needs it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshGeometry {
+    /// Module `m` \[m\].
+    pub module: f64,
+    /// Reference pressure angle `α` \[rad\] (Karhula reading).
+    pub pressure_angle: f64,
+    /// Operating pressure angle \[rad\] (corrected reading).
+    pub operating_pressure_angle: f64,
+    /// Pinion reference pitch diameter `d1` \[m\] (Karhula reading).
+    pub pinion_diameter: f64,
+    /// Gear reference pitch diameter magnitude `d2` \[m\] (Karhula reading).
+    pub gear_diameter: f64,
+    /// Pinion operating pitch diameter \[m\] (corrected reading).
+    pub pinion_working_diameter: f64,
+    /// Gear operating pitch diameter magnitude \[m\] (corrected reading).
+    pub gear_working_diameter: f64,
+    /// Internal pair.
+    pub internal: bool,
+    /// Face width `b` \[m\].
+    pub face_width: f64,
+    /// Actual length of path of contact \[m\] (corrected reading).
+    pub path_of_contact: f64,
+    /// Actual transverse contact ratio \[-\] (corrected reading).
+    pub contact_ratio: f64,
+}
+
+impl MeshGeometry {
+    /// From a validated pair and a face width `b` \[m\].
+    pub fn from_pair(pair: &GearPair, face_width: f64) -> Result<Self, GearError> {
+        positive("face_width", face_width)?;
+        Ok(Self {
+            module: pair.spec.module,
+            pressure_angle: pair.spec.pressure_angle,
+            operating_pressure_angle: pair.operating_pressure_angle,
+            pinion_diameter: pair.pinion.reference,
+            gear_diameter: pair.gear.reference,
+            pinion_working_diameter: pair.pinion.working,
+            gear_working_diameter: pair.gear.working,
+            internal: pair.internal,
+            face_width,
+            path_of_contact: pair.path_of_contact,
+            contact_ratio: pair.contact_ratio,
+        })
+    }
+}
+
+/// Lubricant properties.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Lubricant {
+    /// Kinematic viscosity `ν` \[m²/s\] (Karhula: ≲ 5 mm²/s).
+    pub kinematic_viscosity: f64,
+    /// Density `ρ` \[kg/m³\] (Karhula: ≈ 900).
+    pub density: f64,
+}
+
+impl Lubricant {
+    /// Dynamic viscosity `η = ν ρ` \[Pa·s\] (Karhula A9.1.47).
+    pub fn dynamic_viscosity(&self) -> f64 {
+        self.kinematic_viscosity * self.density
+    }
+}
+
+/// Angular speeds of the mesh members.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshSpeeds {
+    /// Absolute angular speed of the pinion (cardan wheel) \[rad/s\].
+    pub pinion_absolute: f64,
+    /// Angular speed of the carrier (crank) that holds the pinion axis \[rad/s\]; 0 for fixed
+    /// axes.
+    pub carrier: f64,
+}
+
+/// Loss breakdown \[SI\].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshLoss {
+    /// Path of contact used `L` \[m\].
+    pub path_of_contact: f64,
+    /// Contact ratio used \[-\].
+    pub contact_ratio: f64,
+    /// Average sliding velocity `v_s` \[m/s\] (A9.1.42).
+    pub sliding_velocity: f64,
+    /// Average rolling velocity `v_r` \[m/s\] (A9.1.43).
+    pub rolling_velocity: f64,
+    /// Normal load per tooth pair `F_n = |Ft|/(2 cos α)` \[N\] (A9.1.45).
+    pub normal_load: f64,
+    /// Benedict & Kelley friction coefficient `μ` \[-\] (A9.1.48).
+    pub friction_coefficient: f64,
+    /// Equivalent contact radius `R_eq` \[m\] (A9.1.50).
+    pub equivalent_radius: f64,
+    /// Central EHD film thickness `h` \[m\] (A9.1.51).
+    pub film_thickness: f64,
+    /// Sliding power loss \[W\] (A9.1.49).
+    pub sliding_power: f64,
+    /// Rolling power loss \[W\] (A9.1.53).
+    pub rolling_power: f64,
+    /// Windage power loss \[W\] (A9.1.54).
+    pub windage_power: f64,
+    /// Total \[W\] (A9.1.55).
+    pub total_power: f64,
+    /// The friction coefficient was negative and set to 0 (when `clamp_friction`).
+    pub friction_clamped: bool,
+}
+
+/// Mesh power loss for tangential tooth load `ft` \[N\] (its sign is ignored) in the given
+/// reading.
+pub fn mesh_loss(
+    geometry: &MeshGeometry,
+    lubricant: &Lubricant,
+    speeds: &MeshSpeeds,
+    ft: f64,
+    reading: Reading,
+) -> Result<MeshLoss, GearError> {
+    mesh_loss_with(geometry, lubricant, speeds, ft, reading.options())
+}
+
+/// Mesh power loss with the reading's switches set one by one (see [`LossOptions`]).
+pub fn mesh_loss_with(
+    geometry: &MeshGeometry,
+    lubricant: &Lubricant,
+    speeds: &MeshSpeeds,
+    ft: f64,
+    options: LossOptions,
+) -> Result<MeshLoss, GearError> {
+    let g = geometry;
+    positive("module", g.module)?;
+    positive("face_width", g.face_width)?;
+    positive("pinion_diameter", g.pinion_diameter)?;
+    require(
+        g.gear_diameter > g.pinion_diameter || !g.internal,
+        "gear_diameter",
+        "an internal gear must be larger than the pinion",
+        g.gear_diameter,
+    )?;
+    positive("kinematic_viscosity", lubricant.kinematic_viscosity)?;
+    positive("density", lubricant.density)?;
+    require(ft.is_finite(), "tangential load", "must be finite", ft)?;
+    require(
+        speeds.pinion_absolute.is_finite() && speeds.carrier.is_finite(),
+        "speeds",
+        "must be finite",
+        speeds.pinion_absolute,
+    )?;
+    let to_rpm = 60.0 / (2.0 * PI);
+    let n_abs = speeds.pinion_absolute.abs() * to_rpm;
+    let eta_pa_s = lubricant.dynamic_viscosity();
+
+    let (alpha, d1, d2, l, cr) = if options.actual_geometry {
+        let (d1, d2) = (g.pinion_working_diameter, g.gear_working_diameter);
+        positive("pinion_working_diameter", d1)?;
+        positive("gear_working_diameter", d2)?;
+        positive("path_of_contact", g.path_of_contact)?;
+        non_negative("contact_ratio", g.contact_ratio)?;
+        (
+            g.operating_pressure_angle,
+            d1,
+            d2,
+            g.path_of_contact,
+            g.contact_ratio,
+        )
+    } else {
+        // A9.1.40, A9.1.52
+        let (d1, d2, a) = (g.pinion_diameter, g.gear_diameter, g.pressure_angle);
+        let l = karhula_path_of_contact(d1, d2, g.module, a);
+        (a, d1, d2, l, karhula_contact_ratio(l, g.module, a))
+    };
+    let i = d2 / d1;
+    let (n_mesh, slide_k, roll_k) = if options.mesh_kinematics {
+        let n_rel = (speeds.pinion_absolute - speeds.carrier).abs() * to_rpm;
+        if g.internal {
+            (n_rel, (i - 1.0) / i, (i + 1.0) / i)
+        } else {
+            (n_rel, (i + 1.0) / i, (i - 1.0) / i)
+        }
+    } else {
+        // A9.1.41–A9.1.43: absolute wheel speed, external factors.
+        (n_abs, (1.0 + i) / i, (i - 1.0) / i)
+    };
+    let eta = if options.viscosity_in_centipoise {
+        eta_pa_s / CENTIPOISE
+    } else {
+        eta_pa_s
+    };
+    let (s, c) = (alpha.sin(), alpha.cos());
+    // A9.1.42, A9.1.43 (0.0262 ≈ 2π/60/4, 0.1047 ≈ 2π/60 as printed).
+    let v_s = 0.0262 * n_mesh * slide_k * l;
+    let v_r = (0.1047 * n_mesh * (d1 * s - l / 4.0 * roll_k)).max(0.0);
+    // A9.1.45
+    let f_n = ft.abs() / (2.0 * c);
+    let b = g.face_width;
+    // A9.1.48
+    let mut clamped = false;
+    let mu = if f_n > 0.0 && v_s > 0.0 && v_r > 0.0 {
+        let m = 0.0127 * (29.66 * f_n / (b * eta * v_s * v_r * v_r)).log10();
+        if options.clamp_friction && m < 0.0 {
+            clamped = true;
+            0.0
+        } else {
+            m
+        }
+    } else {
+        0.0
+    };
+    // A9.1.49 [kW] -> W
+    let p_s = 2e-3 * v_s * mu * f_n * 1e3;
+    // A9.1.50
+    let a1 = d1 * s + l / 2.0;
+    let r_eq = if !options.actual_geometry {
+        a1 * (d2 * s - l / 2.0) / (2.0 * (d2 * s + l / 2.0))
+    } else if g.internal {
+        let b2 = d2 * s + l / 2.0;
+        a1 * b2 / (2.0 * (b2 - a1))
+    } else {
+        let b2 = d2 * s - l / 2.0;
+        a1 * b2 / (2.0 * (a1 + b2))
+    };
+    // A9.1.51: undefined at zero load; reported as zero film and zero rolling loss.
+    let h = if f_n > 0.0 && v_r > 0.0 && r_eq > 0.0 {
+        2.051e-7 * (v_r * eta).powf(0.67) * f_n.powf(-0.067) * r_eq.powf(0.464)
+    } else {
+        0.0
+    };
+    // A9.1.53 [kW] -> W
+    let p_r = 9e4 * v_r * h * b * cr * 1e3;
+    // A9.1.54 [kW] -> W; pinion absolute spin speed in both readings.
+    let p_w = 2.82e-7
+        * (1.0 + 2.3 * b / d1)
+        * n_abs.powf(2.8)
+        * (d1 / 2.0).powf(4.6)
+        * (0.028 * eta + 0.019).powf(0.2)
+        * 1e3;
+    Ok(MeshLoss {
+        path_of_contact: l,
+        contact_ratio: cr,
+        sliding_velocity: v_s,
+        rolling_velocity: v_r,
+        normal_load: f_n,
+        friction_coefficient: mu,
+        equivalent_radius: r_eq,
+        film_thickness: h,
+        sliding_power: p_s,
+        rolling_power: p_r,
+        windage_power: p_w,
+        total_power: p_s + p_r + p_w,
+        friction_clamped: clamped,
+    })
+}
