@@ -1,0 +1,266 @@
+//! Rolling-bearing friction: Karhula's (2008) reading of the Palmgren model as printed, the
+//! Palmgren/Harris form M = M0 + M1, and the SKF rolling + sliding model.
+//!
+//! Why two Palmgren readings (validation note, finding 3): Karhula's load term
+//! T_L = 0.009 F^1.55 C0^−0.55 d_m (A9.1.26) is about 18× the Harris/Palmgren deep-groove value
+//! f1 = 0.0005 (P0/C0)^0.55 for a 6208 at 2 kN (0.313 vs 0.0174 N·m), and his low-speed viscous
+//! constant 24.1 f0 d_m³ (A9.1.30) is 55 % above his own high-speed form at νn = 2000
+//! (9.79e-2 · 2000^(2/3) = 15.5), while Palmgren's 160e-7 (N·mm units, = 16 in SI) is continuous
+//! to within 1 %. The 6208 example (note §5.2) totals 0.378 N·m in Karhula's reading against
+//! 0.0836 N·m in the Harris reading: a factor 4.5. [`RollingReading::Karhula`] reproduces the
+//! thesis; [`RollingReading::Palmgren`] is the physically correct reading.
+//!
+//! All readings use the bearing's equivalent (here: radial) load for both P0 and P1 and ignore
+//! seals, drag and replenishment; speed is the relative angular speed of the two rings.
+
+use crate::{positive, FrictionError};
+use std::f64::consts::PI;
+
+/// A rolling bearing as the friction models see it.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct RollingBearing {
+    /// Pitch (mean) diameter d_m = (d + D)/2, m.
+    pub pitch_diameter: f64,
+    /// Basic static load rating C0, N.
+    pub static_load_rating: f64,
+}
+
+impl RollingBearing {
+    /// A bearing of pitch diameter `pitch_diameter` (m) and static load rating
+    /// `static_load_rating` (N), both positive.
+    pub fn new(pitch_diameter: f64, static_load_rating: f64) -> Result<Self, FrictionError> {
+        Ok(Self {
+            pitch_diameter: positive("pitch_diameter", pitch_diameter)?,
+            static_load_rating: positive("static_load_rating", static_load_rating)?,
+        })
+    }
+}
+
+/// Default bearing sizes of Karhula (2008) App. 9.1 for a machine of piston diameter d_pis;
+/// override with catalogue values where known.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct KarhulaBearingSizes {
+    /// Piston-pin bearing: d_m = d_pis/4 (A9.1.10), C0 = (d_m in mm) × 10³ N (A9.1.12).
+    pub piston_pin: RollingBearing,
+    /// Crank-pin bearing: d_m = 1.5 d_m,pis (A9.1.11), C0 = 2 C0,pis (A9.1.13). The cardan wheel
+    /// has two of these side by side, each carrying half the joint force (A9.1.23).
+    pub crank_pin: RollingBearing,
+    /// Main bearing: as the crank pin (A9.1.11, A9.1.13); two per machine, each carrying half
+    /// the main-joint force (A9.1.24–25).
+    pub main: RollingBearing,
+}
+
+impl KarhulaBearingSizes {
+    /// Sizes from the piston diameter `piston_diameter` (m).
+    pub fn from_piston_diameter(piston_diameter: f64) -> Result<Self, FrictionError> {
+        positive("piston_diameter", piston_diameter)?;
+        let dm_pis = piston_diameter / 4.0;
+        let c0_pis = dm_pis * 1e3 * 1e3; // d_m in mm × 10³ N
+        let big = RollingBearing {
+            pitch_diameter: 1.5 * dm_pis,
+            static_load_rating: 2.0 * c0_pis,
+        };
+        Ok(Self {
+            piston_pin: RollingBearing {
+                pitch_diameter: dm_pis,
+                static_load_rating: c0_pis,
+            },
+            crank_pin: big,
+            main: big,
+        })
+    }
+}
+
+/// Palmgren coefficients: M0 lubrication factor f0 and the load factor f1 = z (P0/C0)^y.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct PalmgrenCoefficients {
+    /// Lubrication factor f0 (Harris: 1.5–2 oil mist or jet, 2–4 oil bath or grease, higher
+    /// for roller bearings).
+    pub f0: f64,
+    /// Load-factor constant z of f1 = z (P0/C0)^y.
+    pub z: f64,
+    /// Load-factor exponent y of f1 = z (P0/C0)^y (0 for a constant f1).
+    pub y: f64,
+}
+
+impl PalmgrenCoefficients {
+    /// Deep-groove ball bearing, Harris/Palmgren: z = 0.0005 (range 0.0004–0.0006), y = 0.55,
+    /// f0 = 2 (validation note §5.1, tag \[M\]).
+    pub const DEEP_GROOVE_BALL: Self = Self {
+        f0: 2.0,
+        z: 0.0005,
+        y: 0.55,
+    };
+    /// Deep-groove ball bearing, older SKF catalogue form f1 = 0.0007 (P0/C0)^0.5, f0 = 2
+    /// (validation note §5.2, tag \[M\]).
+    pub const DEEP_GROOVE_BALL_OLD_SKF: Self = Self {
+        f0: 2.0,
+        z: 0.0007,
+        y: 0.5,
+    };
+    /// Cylindrical roller bearing with cage under radial load, Harris: f1 = 0.0002–0.0004
+    /// (mid value, constant), f0 = 2–3 (oil bath; 2.5 taken). Memory values \[M\], not in the
+    /// validation note: check against Harris & Kotzalas before relying on them.
+    pub const CYLINDRICAL_ROLLER: Self = Self {
+        f0: 2.5,
+        z: 0.0003,
+        y: 0.0,
+    };
+}
+
+/// SKF rolling + sliding model constants of a deep-groove ball bearing series (SKF catalogue
+/// "Rolling bearings", friction chapter, table of geometry constants; values from the
+/// validation note §5.1, tag \[Q, low\]: verify against the catalogue).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct SkfDeepGrooveBall {
+    /// Rolling-frictional-moment constant R1.
+    pub r1: f64,
+    /// Sliding-frictional-moment constant S1.
+    pub s1: f64,
+    /// Sliding friction coefficient in full-film (EHL) conditions μ_EHL (0.05 mineral oil,
+    /// 0.04 synthetic, 0.1 transmission fluid).
+    pub mu_ehl: f64,
+    /// Boundary sliding friction coefficient μ_bl (≈ 0.15).
+    pub mu_bl: f64,
+}
+
+impl SkfDeepGrooveBall {
+    /// Series 62, mineral oil.
+    pub const SERIES_62: Self = Self {
+        r1: 3.9e-7,
+        s1: 3.23e-3,
+        mu_ehl: 0.05,
+        mu_bl: 0.15,
+    };
+    /// Series 60, mineral oil.
+    pub const SERIES_60: Self = Self {
+        r1: 4.1e-7,
+        s1: 3.73e-3,
+        mu_ehl: 0.05,
+        mu_bl: 0.15,
+    };
+    /// Series 63, mineral oil.
+    pub const SERIES_63: Self = Self {
+        r1: 3.7e-7,
+        s1: 2.84e-3,
+        mu_ehl: 0.05,
+        mu_bl: 0.15,
+    };
+}
+
+/// Which reading of the rolling-bearing friction to use.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub enum RollingReading {
+    /// Karhula (2008) App. 9.1 as printed (A9.1.26–A9.1.33) with lubrication factor `f0`
+    /// (Karhula: 2). Reproduces the thesis; see the module doc for why it is doubtful.
+    Karhula {
+        /// Lubrication factor f0.
+        f0: f64,
+    },
+    /// Palmgren/Harris M = M0 + M1 (the physically correct reading of the same model).
+    Palmgren(PalmgrenCoefficients),
+    /// SKF rolling + sliding moments of a deep-groove ball bearing with the inlet-shear heating
+    /// factor (seals, drag and replenishment omitted).
+    Skf(SkfDeepGrooveBall),
+}
+
+/// Friction of a rolling bearing at one instant.
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct RollingLoss {
+    /// Load-dependent torque (Palmgren M1; SKF sliding moment M_sl), N·m.
+    pub load_torque: f64,
+    /// Speed/viscosity-dependent torque (Palmgren M0; SKF rolling moment M_rr), N·m.
+    pub viscous_torque: f64,
+    /// Total friction torque, N·m.
+    pub friction_torque: f64,
+    /// Power loss T·|ω| (Karhula A9.1.34–35), W.
+    pub power: f64,
+}
+
+/// Friction torque and power of `bearing` carrying the equivalent load `load` (N) at the relative
+/// angular speed `relative_speed` (rad/s) in oil of kinematic viscosity `kinematic_viscosity`
+/// (m²/s; Karhula: ≲ 5 mm²/s = 5e-6 m²/s), in the chosen reading.
+///
+/// Internally ν is converted to mm²/s and n to rev/min, as in all three sources.
+///
+/// * Karhula: T_L = 0.009 F^1.55 C0^−0.55 d_m (A9.1.26–27, N·m with d_m in m, F and C0 in N);
+///   T_V = 9.79e-2 f0 (νn)^(2/3) d_m³ for νn > 2000 (A9.1.28–29), T_V = 24.1 f0 d_m³ for
+///   νn ≤ 2000 (A9.1.30–31, discontinuous at νn = 2000 by a factor 24.1/15.5); T = T_L + T_V
+///   (A9.1.32–33).
+/// * Palmgren (Harris, *Rolling Bearing Analysis*; SKF/INA catalogues): M0 = 1e-7 f0 (νn)^(2/3)
+///   d_m³ N·mm for νn ≥ 2000, 160e-7 f0 d_m³ below (d_m in mm); M1 = f1 P d_m,
+///   f1 = z (P/C0)^y.
+/// * SKF: M_rr = φ_ish G_rr (νn)^0.6, G_rr = R1 d_m^1.96 F^0.54,
+///   φ_ish = 1/(1 + 1.84e-9 (n d_m)^1.28 ν^0.64); M_sl = G_sl μ_sl, G_sl = S1 d_m^−0.26 F^(5/3),
+///   μ_sl = φ_bl μ_bl + (1 − φ_bl) μ_EHL, φ_bl = exp(−2.6e-8 (nν)^1.4 d_m); N·mm with d_m in mm.
+///
+/// At zero speed the power is zero in every reading (the Karhula and Palmgren low-speed M0 is a
+/// constant torque, which dissipates nothing at rest).
+pub fn rolling_bearing_loss(
+    bearing: &RollingBearing,
+    reading: RollingReading,
+    load: f64,
+    relative_speed: f64,
+    kinematic_viscosity: f64,
+) -> RollingLoss {
+    let f = load.abs();
+    let w = relative_speed.abs();
+    let n_rpm = w * 60.0 / (2.0 * PI);
+    let nu = kinematic_viscosity * 1e6; // mm²/s
+    let nun = nu * n_rpm;
+    let (load_torque, viscous_torque) = match reading {
+        RollingReading::Karhula { f0 } => {
+            let dm = bearing.pitch_diameter;
+            let tl = 0.009 * f.powf(1.55) * bearing.static_load_rating.powf(-0.55) * dm;
+            let tv = if nun > 2000.0 {
+                9.79e-2 * f0 * nun.powf(2.0 / 3.0) * dm.powi(3)
+            } else {
+                24.1 * f0 * dm.powi(3)
+            };
+            (tl, tv)
+        }
+        RollingReading::Palmgren(c) => {
+            let dm = bearing.pitch_diameter * 1e3; // mm
+            let m0 = if nun >= 2000.0 {
+                1e-7 * c.f0 * nun.powf(2.0 / 3.0) * dm.powi(3)
+            } else {
+                160e-7 * c.f0 * dm.powi(3)
+            };
+            let f1 = c.z * (f / bearing.static_load_rating).powf(c.y);
+            let m1 = f1 * f * dm;
+            (m1 * 1e-3, m0 * 1e-3)
+        }
+        RollingReading::Skf(c) => {
+            let dm = bearing.pitch_diameter * 1e3; // mm
+            let g_rr = c.r1 * dm.powf(1.96) * f.powf(0.54);
+            let phi_ish = 1.0 / (1.0 + 1.84e-9 * (n_rpm * dm).powf(1.28) * nu.powf(0.64));
+            let m_rr = phi_ish * g_rr * nun.powf(0.6);
+            let g_sl = c.s1 * dm.powf(-0.26) * f.powf(5.0 / 3.0);
+            let phi_bl = (-2.6e-8 * nun.powf(1.4) * dm).exp();
+            let mu_sl = phi_bl * c.mu_bl + (1.0 - phi_bl) * c.mu_ehl;
+            (g_sl * mu_sl * 1e-3, m_rr * 1e-3)
+        }
+    };
+    let total = load_torque + viscous_torque;
+    RollingLoss {
+        load_torque,
+        viscous_torque,
+        friction_torque: total,
+        power: total * w,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn karhula_sizes_follow_the_rules() {
+        // Exact arithmetic of A9.1.10–13 for d_pis = 120 mm; tolerance is rounding only.
+        let s = KarhulaBearingSizes::from_piston_diameter(0.12).unwrap();
+        assert!((s.piston_pin.pitch_diameter - 0.030).abs() < 1e-15);
+        assert!((s.piston_pin.static_load_rating - 30_000.0).abs() < 1e-9);
+        assert!((s.crank_pin.pitch_diameter - 0.045).abs() < 1e-15);
+        assert!((s.main.static_load_rating - 60_000.0).abs() < 1e-9);
+    }
+}
