@@ -23,7 +23,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run every case under PATHS and write OUT/<case>/summary.json and <mechanism>.csv.
+    /// Run every case under PATHS and write OUT/CASE/summary.json and MECHANISM.csv.
     Run {
         /// Case files, or folders searched recursively for *.toml.
         #[arg(required = true)]
@@ -34,7 +34,7 @@ enum Command {
         /// Worker threads (default: one per core).
         #[arg(long)]
         jobs: Option<usize>,
-        /// Write no per-step CSV, whatever the cases' [output] tables say.
+        /// Write no per-step CSV, whatever the cases' output tables say.
         #[arg(long)]
         no_csv: bool,
     },

@@ -307,6 +307,10 @@ impl<'a> CsvSink<'a> {
 }
 
 impl Sink for CsvSink<'_> {
+    fn wants_shares(&self) -> bool {
+        true
+    }
+
     fn push(&mut self, s: &Step) -> Result<(), String> {
         if s.index % self.options.decimation != 0 && s.index != self.last_step {
             return Ok(());

@@ -1,5 +1,5 @@
 //! Quantities with units, converted to SI once, at the edge. A case-file value is either a
-//! bare number in the field's documented unit or a string "<number> <unit>".
+//! bare number in the field's documented unit or a string "NUMBER UNIT" (`"60 mm"`).
 
 use std::f64::consts::PI;
 

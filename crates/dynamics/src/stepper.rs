@@ -20,7 +20,8 @@ pub struct Step<'a> {
     pub families: &'a [Loads],
     /// Their sum.
     pub total: &'a Loads,
-    /// Each family's torque shares by body ([`torque_shares`]), N·m.
+    /// Each family's torque shares by body ([`torque_shares`]), N·m; computed only when a
+    /// sink [wants](Sink::wants_shares) them (zeros otherwise).
     pub shares: &'a [Vec<f64>],
 }
 
@@ -28,6 +29,11 @@ pub struct Step<'a> {
 pub trait Sink {
     /// Takes one step; an error stops the run (a file that cannot be written).
     fn push(&mut self, step: &Step) -> Result<(), String>;
+
+    /// Whether it reads [`Step::shares`] (they cost a division per body per family per step).
+    fn wants_shares(&self) -> bool {
+        false
+    }
 }
 
 /// Why a run stopped.
@@ -73,6 +79,7 @@ pub fn run(
     ];
     let mut previous_torque = None;
     let mut index = 0;
+    let with_shares = sinks.iter().any(|s| s.wants_shares());
     while let Some(crank) = motion.next(previous_torque) {
         let crank = crank.map_err(|source| RunError::Motion {
             step: index,
@@ -88,7 +95,9 @@ pub fn run(
         for ((family, out), share) in families.iter().zip(&mut loads).zip(&mut shares) {
             let applied: &[f64] = if family.piston_forces() { &forces } else { &[] };
             family.loads(mechanism, &state, applied, out);
-            torque_shares(topology, &state, family.inertia(), applied, share);
+            if with_shares {
+                torque_shares(topology, &state, family.inertia(), applied, share);
+            }
             total.add(out);
         }
         check_finite(
@@ -204,6 +213,10 @@ pub struct StepRecord {
 pub struct Steps(pub Vec<StepRecord>);
 
 impl Sink for Steps {
+    fn wants_shares(&self) -> bool {
+        true
+    }
+
     fn push(&mut self, s: &Step) -> Result<(), String> {
         self.0.push(StepRecord {
             state: s.state.clone(),

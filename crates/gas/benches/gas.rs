@@ -2,13 +2,23 @@
 //! (the runner's unit of gas work per mechanism), Karhula's thesis cylinder.
 
 use cardan_gas::{ClosedCycle, Compressor, Cylinder, GasModel, KarhulaEngine, Polytropic};
-use cardan_mechanism::{Mechanism, SliderCrank};
+use cardan_mechanism::{MachineGeometry, MassInputs, Mechanism, Options, SliderCrank};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
 use std::hint::black_box;
 
 fn gas(c: &mut Criterion) {
-    let mech = SliderCrank::new(0.06, 0.14, 0.0, 0.07).unwrap();
+    let geometry = MachineGeometry {
+        crank_length: 0.06,
+        rod_length: 0.14,
+        bore: 0.12,
+        pin_offset: 0.0,
+    };
+    let masses = MassInputs {
+        rod_cg: Some(0.07),
+        ..MassInputs::default()
+    };
+    let mech = SliderCrank::build(&geometry, &masses, &Options::new()).unwrap();
     let swept = PI / 4.0 * 0.12 * 0.12 * mech.stroke();
     let angles: Vec<f64> = (0..=7200)
         .map(|k| PI / 2.0 + 4.0 * PI * k as f64 / 7200.0)

@@ -1,16 +1,16 @@
 //! Single-stage reciprocating air compressor with clearance and ideal valves.
 //!
 //! Sources (equation numbers differ between editions, so formulas are cited by section):
-//! - [EM] Eastop & McConkey, *Applied Thermodynamics for Engineering Technologists*, 5th ed.,
+//! - \[EM\] Eastop & McConkey, *Applied Thermodynamics for Engineering Technologists*, 5th ed.,
 //!   ch. 9 "Positive displacement machines": the indicator diagram with clearance, volumetric
 //!   efficiency, indicated work and power.
-//! - [RM] Rogers & Mayhew, *Engineering Thermodynamics: Work and Heat Transfer*, 4th ed.,
+//! - \[RM\] Rogers & Mayhew, *Engineering Thermodynamics: Work and Heat Transfer*, 4th ed.,
 //!   ch. 16 (reciprocating compressors): the same cycle and the re-expansion of the clearance gas.
-//! - [CB] Çengel & Boles, *Thermodynamics: An Engineering Approach*: ch. 4 (polytropic boundary
+//! - \[CB\] Çengel & Boles, *Thermodynamics: An Engineering Approach*: ch. 4 (polytropic boundary
 //!   work), ch. 5 (unsteady flow: charging a volume), ch. 7 "Minimizing the compressor work"
 //!   (polytropic and isothermal compression work).
 //!
-//! The cycle, numbered as in [EM] and [RM]: 1 bottom dead centre, start of compression (V_1 =
+//! The cycle, numbered as in \[EM\] and \[RM\]: 1 bottom dead centre, start of compression (V_1 =
 //! V_max, p_s); 2 the discharge valve opens (p_d); 3 top dead centre, end of discharge (V_3 =
 //! V_c); 4 the suction valve opens after the clearance gas re-expanded (p_s). The valves are
 //! ideal: lossless, instantaneous, opening at exactly p_s and p_d. The crankcase is at suction
@@ -83,15 +83,15 @@ impl IndicatorDiagram {
         self.delivered_mass - self.inducted_mass
     }
 
-    /// η_v = (V_1 − V_4)/(V_1 − V_3) = 1 − (V_c/V_s)·[(p_d/p_s)^(1/n_e) − 1] ([EM] ch. 9,
-    /// volumetric efficiency; [RM] ch. 16): the induced volume at suction state per swept volume.
+    /// η_v = (V_1 − V_4)/(V_1 − V_3) = 1 − (V_c/V_s)·[(p_d/p_s)^(1/n_e) − 1] (\[EM\] ch. 9,
+    /// volumetric efficiency; \[RM\] ch. 16): the induced volume at suction state per swept volume.
     pub fn volumetric_efficiency(&self) -> f64 {
         let v = self.points.map(|p| p.volume);
         (v[0] - v[3]) / (v[0] - v[2])
     }
 }
 
-/// n/(n − 1)·[r^((n−1)/n) − 1], and its isothermal limit ln r at n = 1 ([CB] ch. 7): written
+/// n/(n − 1)·[r^((n−1)/n) − 1], and its isothermal limit ln r at n = 1 (\[CB\] ch. 7): written
 /// as ln r·(e^x − 1)/x with x = (n − 1)/n·ln r, so n → 1 loses no digits and n = 1 divides by
 /// nothing.
 fn polytropic_factor(n: f64, r: f64) -> f64 {
@@ -170,7 +170,7 @@ impl Compressor {
     }
 
     /// V_1..V_4, m³: V_1 = V_max, V_2 = V_1·r^(−1/n_c), V_3 = V_c, V_4 = V_c·r^(1/n_e)
-    /// (p·V^n = const, [CB] ch. 4; [EM] ch. 9).
+    /// (p·V^n = const, \[CB\] ch. 4; \[EM\] ch. 9).
     fn volumes(&self, cylinder: &Cylinder) -> [f64; 4] {
         let r = self.pressure_ratio();
         let (v1, vc) = (cylinder.max_volume(), cylinder.clearance_volume);
@@ -194,7 +194,7 @@ impl Compressor {
         Ok(v)
     }
 
-    /// Pressure on the ideal-valve indicator diagram ([EM] ch. 9), Pa. Compression branch
+    /// Pressure on the ideal-valve indicator diagram (\[EM\] ch. 9), Pa. Compression branch
     /// (dV/dθ < 0): p = min(p_s·(V_1/V)^n_c, p_d); expansion branch (dV/dθ ≥ 0): p =
     /// max(p_d·(V_c/V)^n_e, p_s), which is p_s without clearance. Volumes outside [V_c, V_1]
     /// (round-off) stay within [p_s, p_d].
@@ -224,11 +224,11 @@ impl Compressor {
     /// One cycle that starts from a residual at temperature `t_res` filling V_c at p_d.
     ///
     /// Suction 4-1 at constant p_s through an adiabatic valve (first law for a control volume,
-    /// [CB] ch. 5): dU = h_s·dm − p_s·dV with U = c_v·p_s·V/R and h_s = c_p·T_s gives
+    /// \[CB\] ch. 5): dU = h_s·dm − p_s·dV with U = c_v·p_s·V/R and h_s = c_p·T_s gives
     /// c_p·T_s·dm = (c_v/R + 1)·p_s·dV, so dm = p_s·dV/(R·T_s), whatever the residual's
     /// temperature: m_in = p_s·(V_1 − V_4)/(R·T_s). The mixture then has T_1 from
     /// p_s·V_1 = (m_res + m_in)·R·T_1; the polytropic 1-2 gives T_2 = T_1·r^((n_c−1)/n_c)
-    /// ([CB] ch. 7), the discharge temperature T_d; the residual left in V_c at p_d, T_d is
+    /// (\[CB\] ch. 7), the discharge temperature T_d; the residual left in V_c at p_d, T_d is
     /// m_3 = p_d·V_c/(R·T_d), and it re-expands to T_4 = T_d·r^(−(n_e−1)/n_e).
     fn one_cycle(&self, v: &[f64; 4], t_res: f64) -> IndicatorDiagram {
         let (ps, pd, r_gas) = (
@@ -289,10 +289,10 @@ impl Compressor {
             })
     }
 
-    /// Indicated work per cycle in closed form, J ([EM] ch. 9; [RM] ch. 16):
+    /// Indicated work per cycle in closed form, J (\[EM\] ch. 9; \[RM\] ch. 16):
     /// W = n_c/(n_c−1)·p_s·V_1·[r^((n_c−1)/n_c) − 1] − n_e/(n_e−1)·p_s·V_4·[r^((n_e−1)/n_e) − 1],
     /// the ∮ V dp of the diagram (the two constant-pressure lines add nothing). At n_c = n_e = 1
-    /// it is p_s·(V_1 − V_4)·ln r ([CB] ch. 7, isothermal compression).
+    /// it is p_s·(V_1 − V_4)·ln r (\[CB\] ch. 7, isothermal compression).
     pub fn closed_form_work(&self, cylinder: &Cylinder) -> Result<f64, GasError> {
         let v = self.checked_volumes(cylinder)?;
         let (ps, r) = (self.suction_pressure, self.pressure_ratio());
@@ -357,7 +357,10 @@ impl PreparedGas for PreparedCompressor<'_> {
         let p = self
             .model
             .pressure_on(&self.volumes, (self.chamber.volume)(theta));
-        (p, (p - self.model.suction_pressure) * self.chamber.cylinder.area)
+        (
+            p,
+            (p - self.model.suction_pressure) * self.chamber.cylinder.area,
+        )
     }
 
     fn metrics(&self) -> Vec<GasMetric> {

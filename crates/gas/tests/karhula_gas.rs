@@ -7,24 +7,35 @@
 //! mean powers: 2 % (our direct integral is 1.5 % above the thesis's compression work, which
 //! its coarser Mathcad quadrature plausibly explains).
 
-use cardan_dynamics::{run_cycle, MassProperties, Summary};
+use cardan_dynamics::{run_summary, Solver, Summary};
 use cardan_gas::{Chamber, Cylinder, GasModel, KarhulaEngine, KarhulaPump, Polytropic};
-use cardan_mechanism::{CardanGear, CrankMotion, Mechanism, MechanismKind, SliderCrank};
+use cardan_mechanism::{CrankMotion, Grid, MachineGeometry, MassInputs, Mechanism, Options};
+use cardan_testing::within;
 use std::f64::consts::PI;
 
 const DELAY_DEG: f64 = 9.5;
+
+/// The two mechanisms of the thesis, by registry name: slider-crank ("S") and cardan gear ("C").
+const MECHANISMS: [&str; 2] = ["slider_crank", "cardan_gear"];
 
 fn polytropic() -> Polytropic {
     Polytropic::new(1.4, 1.07, 101_325.0).unwrap()
 }
 
-fn mechanism(kind: MechanismKind) -> Box<dyn Mechanism> {
-    match kind {
-        MechanismKind::SliderCrank => Box::new(SliderCrank::new(0.06, 0.14, 0.0, 0.07).unwrap()),
-        MechanismKind::CardanGear => {
-            Box::new(CardanGear::equivalent_to_slider_crank(0.06, 0.14, 0.07).unwrap())
-        }
-    }
+/// The thesis machine (r = 0.06 m, l = 0.14 m, bore 0.12 m, rod centre of gravity at
+/// 0.07 m); the cardan gear of the same stroke (its crank is 0.03 m).
+fn mechanism(name: &str) -> Box<dyn Mechanism> {
+    let geometry = MachineGeometry {
+        crank_length: 0.06,
+        rod_length: 0.14,
+        bore: 0.12,
+        pin_offset: 0.0,
+    };
+    let masses = MassInputs {
+        rod_cg: Some(0.07),
+        ..MassInputs::default()
+    };
+    (cardan_mechanism::entry(name).unwrap().build)(&geometry, &masses, &Options::new()).unwrap()
 }
 
 /// The thesis cylinder (bore 120 mm, ε = 12) on a mechanism's volume curve.
@@ -52,23 +63,31 @@ fn max_difference(s: &Run, c: &Run) -> f64 {
         .fold(f64::MIN, f64::max)
 }
 
-/// The thesis cycle at constant ω = 200π, gas loads only (massless links).
-fn run(kind: MechanismKind, model: &dyn GasModel) -> Run {
-    let mech = mechanism(kind);
+/// The thesis cycle at constant ω = 200π; the gas family's loads are on massless links.
+fn run(name: &str, model: &dyn GasModel) -> Run {
+    let mech = mechanism(name);
     let motion = CrankMotion {
         start_angle: PI / 2.0,
         initial_speed: 200.0 * PI,
         angular_acceleration: 0.0,
     };
-    let grid = motion.grid(PI / 2.0, 4.5 * PI, 14_400).unwrap();
-    let angles: Vec<f64> = grid.iter().map(|g| g.angle).collect();
-    let gas = with_chamber(mech.as_ref(), |ch| model.cycle(ch, 200.0 * PI, &angles)).unwrap();
-    let none = MassProperties::NONE;
-    let steps = run_cycle(mech.as_ref(), &none, &grid, Some(&gas.piston_force));
-    Run {
-        pressures: gas.pressure,
-        summary: Summary::of_cycle(mech.as_ref(), &none, &steps),
-    }
+    let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, 14_400);
+    with_chamber(mech.as_ref(), |ch| {
+        let gas = model.prepare(*ch, 200.0 * PI).unwrap();
+        let at = |theta: f64| gas.at(theta);
+        let (steps, summary) = run_summary(
+            mech.as_ref(),
+            &mut grid,
+            Some(&at),
+            Solver::ClosedForm,
+            true,
+        )
+        .unwrap();
+        Run {
+            pressures: steps.iter().map(|s| s.pressure.unwrap()).collect(),
+            summary,
+        }
+    })
 }
 
 /// ∫ p dV over the compression and power strokes (270°-630°) by the midpoint rule on volume.
@@ -85,14 +104,6 @@ fn pdv_work(mech: &dyn Mechanism, pressure: impl Fn(&Chamber, f64) -> f64) -> f6
     })
 }
 
-fn within(name: &str, got: f64, want: f64, rel: f64) {
-    assert!(
-        (got / want - 1.0).abs() <= rel,
-        "{name}: got {got}, thesis {want}, tolerance {}%",
-        rel * 100.0
-    );
-}
-
 fn engine() -> KarhulaEngine {
     KarhulaEngine::new(polytropic(), 12e6, DELAY_DEG.to_radians()).unwrap()
 }
@@ -100,7 +111,7 @@ fn engine() -> KarhulaEngine {
 #[test]
 fn pump_matches_appendix_11_3_1() {
     let pump = KarhulaPump { gas: polytropic() };
-    let mech = mechanism(MechanismKind::SliderCrank);
+    let mech = mechanism("slider_crank");
     let cylinder = with_chamber(mech.as_ref(), |ch| ch.cylinder);
     within(
         "max polytropic pressure",
@@ -116,8 +127,8 @@ fn pump_matches_appendix_11_3_1() {
     );
     within("displacement", cylinder.swept_volume, 1357e-6, 0.001);
 
-    let s = run(MechanismKind::SliderCrank, &pump);
-    let c = run(MechanismKind::CardanGear, &pump);
+    let s = run("slider_crank", &pump);
+    let c = run("cardan_gear", &pump);
     within("S max pressure", peak(&s), 3.612e6, 0.001);
     within("C max pressure", peak(&c), 3.612e6, 0.001);
     let dp = max_difference(&s, &c);
@@ -171,8 +182,8 @@ fn pump_matches_appendix_11_3_1() {
 
 #[test]
 fn engine_peaks_match_appendix_11_3_2() {
-    let s = run(MechanismKind::SliderCrank, &engine());
-    let c = run(MechanismKind::CardanGear, &engine());
+    let s = run("slider_crank", &engine());
+    let c = run("cardan_gear", &engine());
     within("S max combustion pressure", peak(&s), 12e6, 1e-4);
     within("C max combustion pressure", peak(&c), 12e6, 1e-4);
     let dp = max_difference(&s, &c);
@@ -192,23 +203,36 @@ fn engine_peaks_match_appendix_11_3_2() {
 }
 
 /// Our reading integrates the pressure model directly: compression then combustion. Its
-/// work is about 2.5 kJ for the slider-crank, as the reference file notes, and is the p·dV
-/// work of the pressure trace.
+/// work is the p·dV work of the pressure trace on either mechanism, and about 2.5 kJ for the
+/// slider-crank, as the reference file notes. The reference gives no direct-integral value for
+/// the cardan gear: its published C figures (1267 J, −13 % against S) are the thesis's own
+/// reading, checked in the next test. What the thesis concludes for both readings and every
+/// geometry (ch. 12) is that the cardan gear engine does less combustion work than the
+/// slider-crank engine of the same stroke, because of its half-size crank: that direction is
+/// the cardan gear's check here. (Its 8-15 % margin belongs to the thesis's reading, not to
+/// the direct integral, so it is not applied.)
 #[test]
 fn engine_work_is_the_direct_integral_of_the_pressure_model() {
-    for kind in MechanismKind::ALL {
+    let mut works = Vec::new();
+    for name in MECHANISMS {
         let e = engine();
-        let r = run(kind, &e);
+        let r = run(name, &e);
         let work = -r.summary.get("gas_work").unwrap(); // the gas drives: negative drive work
-        let pdv = pdv_work(mechanism(kind).as_ref(), |ch, theta| {
+        let pdv = pdv_work(mechanism(name).as_ref(), |ch, theta| {
             e.cycle(ch, 0.0, &[theta]).unwrap().pressure[0]
         });
-        within("engine work = ∮ p dV", work, pdv, 1e-4);
-        assert!(
-            (2300.0..2700.0).contains(&work) || kind == MechanismKind::CardanGear,
-            "{kind:?}: {work} J"
-        );
+        within(&format!("{name} engine work = ∮ p dV"), work, pdv, 1e-4);
+        works.push(work);
     }
+    let (s, c) = (works[0], works[1]);
+    assert!(
+        (2300.0..2700.0).contains(&s),
+        "slider_crank: {s} J, reference about 2.5 kJ"
+    );
+    assert!(
+        c < s,
+        "cardan_gear: {c} J, not below the slider-crank's {s} J"
+    );
 }
 
 /// The thesis's combustion work and power columns follow if the scaled, shifted pressure
@@ -218,8 +242,8 @@ fn engine_work_is_the_direct_integral_of_the_pressure_model() {
 fn the_thesis_combustion_work_is_the_scaled_pressure_on_both_strokes() {
     let e = engine();
     let mut works = Vec::new();
-    for kind in MechanismKind::ALL {
-        let w = pdv_work(mechanism(kind).as_ref(), |ch, theta| {
+    for name in MECHANISMS {
+        let w = pdv_work(mechanism(name).as_ref(), |ch, theta| {
             e.combustion_pressure(ch, theta)
         });
         works.push(w);
