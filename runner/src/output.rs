@@ -307,7 +307,7 @@ impl<'a> CsvSink<'a> {
 }
 
 impl Sink for CsvSink<'_> {
-    fn wants_shares(&self) -> bool {
+    fn wants_details(&self) -> bool {
         true
     }
 

@@ -39,7 +39,7 @@ fn run_mechanism(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let mut summary = SummarySink::new(mechanism, &names);
+    let mut summary = SummarySink::new(mechanism, &names, case.steps + 1);
     let mut csv = match csv_dir {
         Some(dir) => Some(
             CsvSink::create(

@@ -1,12 +1,30 @@
 //! One mechanism over the thesis cycle at 7200 steps: kinematics, closed-form inertial loads
-//! and the streamed summary (no per-step record), the unit of work of the runner; and the same
-//! with every step kept in memory.
+//! and the streamed summary (no per-step record), the unit of work of the runner, with the crank
+//! grid made as it goes (`*_7200_steps`) or made beforehand (`*_7200_steps_prebuilt_grid`, the
+//! work the benchmark of the earlier, stored-steps design timed); and the same with every step
+//! kept in memory.
 
 use cardan_dynamics::{run_summary, Solver};
-use cardan_mechanism::{CrankMotion, Grid, MachineGeometry, MassInputs, Options, MECHANISMS};
+use cardan_mechanism::{
+    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, MotionError, MotionSource, Options,
+    MECHANISMS,
+};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
 use std::hint::black_box;
+
+/// Crank states made beforehand.
+struct Prebuilt<'a>(std::slice::Iter<'a, CrankState>, usize);
+
+impl MotionSource for Prebuilt<'_> {
+    fn len(&self) -> usize {
+        self.1
+    }
+
+    fn next(&mut self, _: Option<f64>) -> Option<Result<CrankState, MotionError>> {
+        self.0.next().map(|c| Ok(*c))
+    }
+}
 
 fn cycle(c: &mut Criterion) {
     let motion = CrankMotion {
@@ -23,6 +41,22 @@ fn cycle(c: &mut Criterion) {
     for entry in MECHANISMS {
         let name = entry.name;
         let mech = (entry.build)(&geometry, &MassInputs::default(), &Options::new()).unwrap();
+        let grid = motion.grid(PI / 2.0, 4.5 * PI, 7200).unwrap();
+        c.bench_function(&format!("{name}_7200_steps_prebuilt_grid"), |b| {
+            b.iter(|| {
+                let mut source = Prebuilt(grid.iter(), grid.len());
+                black_box(
+                    run_summary(
+                        black_box(mech.as_ref()),
+                        &mut source,
+                        None,
+                        Solver::ClosedForm,
+                        false,
+                    )
+                    .unwrap(),
+                )
+            })
+        });
         for (label, keep) in [("7200_steps", false), ("7200_steps_kept", true)] {
             c.bench_function(&format!("{name}_{label}"), |b| {
                 b.iter(|| {

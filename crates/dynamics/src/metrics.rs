@@ -100,27 +100,27 @@ pub fn find(name: &str) -> Option<&'static MetricDef> {
 
 /// Whether `name` is `template` with each `{...}` replaced by one or more characters.
 fn matches_template(template: &str, name: &str) -> bool {
-    let parts: Vec<&str> = template
-        .split(['{', '}'])
-        .enumerate()
-        .filter(|(k, _)| k % 2 == 0)
-        .map(|(_, s)| s)
-        .collect();
-    if parts.len() == 1 {
-        return template == name;
-    }
-    let (first, last) = (parts[0], parts[parts.len() - 1]);
-    if !name.starts_with(first) || !name.ends_with(last) || name.len() < first.len() + last.len() {
+    let mut fixed = template.split(['{', '}']).step_by(2);
+    let first = fixed.next().unwrap_or("");
+    let Some(mut rest) = name.strip_prefix(first) else {
         return false;
+    };
+    let mut parts = fixed.peekable();
+    if parts.peek().is_none() {
+        return rest.is_empty();
     }
-    let mut rest = &name[first.len()..name.len() - last.len()];
-    for middle in &parts[1..parts.len() - 1] {
-        match rest.get(1..).and_then(|r| r.find(middle)) {
-            Some(k) => rest = &rest[k + 1 + middle.len()..],
+    while let Some(part) = parts.next() {
+        if parts.peek().is_none() {
+            // The last fixed part ends the name, after at least one character.
+            return rest.len() > part.len() && rest.ends_with(part);
+        }
+        // A placeholder of at least one character, then this part.
+        match rest.get(1..).and_then(|r| r.find(part)) {
+            Some(k) => rest = &rest[k + 1 + part.len()..],
             None => return false,
         }
     }
-    !rest.is_empty()
+    false
 }
 
 /// The registry as a Markdown table (the README's metric table).

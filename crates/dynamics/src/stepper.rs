@@ -20,8 +20,8 @@ pub struct Step<'a> {
     pub families: &'a [Loads],
     /// Their sum.
     pub total: &'a Loads,
-    /// Each family's torque shares by body ([`torque_shares`]), N·m; computed only when a
-    /// sink [wants](Sink::wants_shares) them (zeros otherwise).
+    /// Each family's torque shares by body ([`torque_shares`]), N·m; computed, with the
+    /// state's extras, only when a sink [wants](Sink::wants_details) them (zeros otherwise).
     pub shares: &'a [Vec<f64>],
 }
 
@@ -30,8 +30,9 @@ pub trait Sink {
     /// Takes one step; an error stops the run (a file that cannot be written).
     fn push(&mut self, step: &Step) -> Result<(), String>;
 
-    /// Whether it reads [`Step::shares`] (they cost a division per body per family per step).
-    fn wants_shares(&self) -> bool {
+    /// Whether it reads [`Step::shares`] and the state's extras (they cost divisions and square
+    /// roots per step that a summary does not need).
+    fn wants_details(&self) -> bool {
         false
     }
 }
@@ -79,27 +80,39 @@ pub fn run(
     ];
     let mut previous_torque = None;
     let mut index = 0;
-    let with_shares = sinks.iter().any(|s| s.wants_shares());
+    let details = sinks.iter().any(|s| s.wants_details());
     while let Some(crank) = motion.next(previous_torque) {
         let crank = crank.map_err(|source| RunError::Motion {
             step: index,
             source,
         })?;
         mechanism.fill(&crank, &mut state);
+        if details {
+            mechanism.fill_extras(&mut state);
+        }
         let pressure = gas.map(|g| {
             let (p, f) = g(crank.angle);
             forces.fill(f);
             p
         });
-        total.clear();
         for ((family, out), share) in families.iter().zip(&mut loads).zip(&mut shares) {
             let applied: &[f64] = if family.piston_forces() { &forces } else { &[] };
             family.loads(mechanism, &state, applied, out);
-            if with_shares {
+            if details {
                 torque_shares(topology, &state, family.inertia(), applied, share);
             }
-            total.add(out);
         }
+        // The sum of the families (one family is its own total).
+        let total = match loads.as_slice() {
+            [only] => only,
+            all => {
+                total.clear();
+                for l in all {
+                    total.add(l);
+                }
+                &total
+            }
+        };
         check_finite(
             index, &state, pressure, &forces, families, &loads, mechanism,
         )?;
@@ -109,7 +122,7 @@ pub fn run(
             pressure,
             piston_forces: &forces,
             families: &loads,
-            total: &total,
+            total,
             shares: &shares,
         };
         for sink in sinks.iter_mut() {
@@ -136,21 +149,21 @@ fn check_finite(
     loads: &[Loads],
     mechanism: &dyn Mechanism,
 ) -> Result<(), RunError> {
-    let mut sum = state.crank.speed + state.crank.time + pressure.unwrap_or(0.0);
-    sum += forces.iter().sum::<f64>();
+    // The loads carry every body's acceleration (times a mass that may be 0, which keeps a NaN
+    // or an infinity non-finite) and the gas force; the pistons and the crank the rest. The
+    // flags are and-ed without short-circuit: independent tests, no serial chain of additions.
+    let mut finite = (state.crank.speed.is_finite() & state.crank.time.is_finite())
+        & pressure.is_none_or(f64::is_finite);
     for p in &state.pistons {
-        sum += p.position + p.velocity + p.acceleration;
-    }
-    for b in &state.bodies {
-        sum += b.cg.acceleration.re + b.cg.acceleration.im + b.angular_acceleration;
+        finite &= p.position.is_finite() & p.velocity.is_finite() & p.acceleration.is_finite();
     }
     for l in loads {
-        sum += l.crank_torque;
+        finite &= l.crank_torque.is_finite();
         for j in &l.joints {
-            sum += j.force.re + j.force.im + j.moment;
+            finite &= j.force.re.is_finite() & j.force.im.is_finite() & j.moment.is_finite();
         }
     }
-    if sum.is_finite() {
+    if finite {
         return Ok(());
     }
     let t = mechanism.topology();
@@ -188,7 +201,7 @@ fn check_finite(
     let (quantity, value) = named
         .into_iter()
         .find(|(_, v)| !v.is_finite())
-        .unwrap_or_else(|| ("a sum of the step's quantities".into(), sum));
+        .unwrap_or_else(|| ("a quantity of the step".into(), f64::NAN));
     Err(RunError::NonFinite {
         step,
         angle_deg: state.crank.angle.to_degrees(),
@@ -213,7 +226,7 @@ pub struct StepRecord {
 pub struct Steps(pub Vec<StepRecord>);
 
 impl Sink for Steps {
-    fn wants_shares(&self) -> bool {
+    fn wants_details(&self) -> bool {
         true
     }
 
@@ -247,7 +260,7 @@ pub fn run_summary(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let mut summary = crate::SummarySink::new(mechanism, &names);
+    let mut summary = crate::SummarySink::new(mechanism, &names, motion.len());
     let mut steps = Steps::default();
     {
         let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];

@@ -43,6 +43,15 @@ impl Summary {
 /// far closer than this (1e-9 on the shipped cases); a coarser grid fails the case.
 pub const ENERGY_TOLERANCE: f64 = 1e-3;
 
+/// Raises `peak` to `value`. The stepper has checked every value is finite, so a plain
+/// comparison serves (cheaper than `f64::max`, which must handle NaN).
+#[inline(always)]
+fn raise(peak: &mut f64, value: f64) {
+    if value > *peak {
+        *peak = value;
+    }
+}
+
 /// Peaks, work and crank-angle-averaged power of one family's loads.
 #[derive(Debug, Clone)]
 struct FamilyTotals {
@@ -72,10 +81,10 @@ impl FamilyTotals {
     /// Adds one step; `prev` holds the previous step's (angle, torque, speed).
     fn add(&mut self, l: &Loads, interval: Option<(f64, f64, f64)>, speed: f64) {
         for ((f, m), j) in self.force.iter_mut().zip(&mut self.moment).zip(&l.joints) {
-            *f = f.max(j.force.norm_sqr());
-            *m = m.max(j.moment.abs());
+            raise(f, j.force.norm_sqr());
+            raise(m, j.moment.abs());
         }
-        self.torque = self.torque.max(l.crank_torque.abs());
+        raise(&mut self.torque, l.crank_torque.abs());
         // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
         // trapezoidal rule on the crank-angle grid.
         if let Some((h, t0, w0)) = interval {
@@ -102,13 +111,16 @@ pub struct SummarySink {
     previous_torques: Vec<f64>,
     first: Option<(f64, f64, f64)>,
     last: (f64, f64, f64),
+    /// Index of the run's last step (where the kinetic energy is taken again).
+    last_step: usize,
     gas_force: f64,
     pressure: Option<f64>,
 }
 
 impl SummarySink {
-    /// A summary of `mechanism` under the load families named `families` (in the run's order).
-    pub fn new(mechanism: &dyn Mechanism, families: &[&'static str]) -> Self {
+    /// A summary of `mechanism` under the load families named `families` (in the run's order),
+    /// over a run of `points` steps.
+    pub fn new(mechanism: &dyn Mechanism, families: &[&'static str], points: usize) -> Self {
         let topology = mechanism.topology().clone();
         let joints = topology.joints.len();
         let mut totals: Vec<FamilyTotals> = families
@@ -127,6 +139,7 @@ impl SummarySink {
             previous: None,
             first: None,
             last: (0.0, 0.0, 0.0),
+            last_step: points.saturating_sub(1),
             gas_force: 0.0,
             pressure: None,
         }
@@ -200,14 +213,17 @@ impl Sink for SummarySink {
     fn push(&mut self, s: &Step) -> Result<(), String> {
         let st = s.state;
         for (peaks, p) in self.pistons.iter_mut().zip(&st.pistons) {
-            peaks[0] = peaks[0].max(p.velocity * p.velocity);
-            peaks[1] = peaks[1].max(p.acceleration * p.acceleration);
+            raise(&mut peaks[0], p.velocity * p.velocity);
+            raise(&mut peaks[1], p.acceleration * p.acceleration);
         }
         for (peaks, b) in self.bodies.iter_mut().zip(&st.bodies) {
-            peaks[0] = peaks[0].max(b.cg.velocity.norm_sqr());
-            peaks[1] = peaks[1].max(b.cg.acceleration.norm_sqr());
-            peaks[2] = peaks[2].max(b.angular_velocity * b.angular_velocity);
-            peaks[3] = peaks[3].max(b.angular_acceleration * b.angular_acceleration);
+            raise(&mut peaks[0], b.cg.velocity.norm_sqr());
+            raise(&mut peaks[1], b.cg.acceleration.norm_sqr());
+            raise(&mut peaks[2], b.angular_velocity * b.angular_velocity);
+            raise(
+                &mut peaks[3],
+                b.angular_acceleration * b.angular_acceleration,
+            );
         }
         let (angle, speed) = (st.crank.angle, st.crank.speed);
         for (k, (f, t0)) in self
@@ -222,14 +238,16 @@ impl Sink for SummarySink {
             *t0 = loads.crank_torque;
         }
         self.previous = Some((angle, speed));
-        let energy = kinetic_energy(&self.topology, st);
-        let now = (angle, st.crank.time, energy);
-        self.first.get_or_insert(now);
-        self.last = now;
+        // The kinetic energy is wanted at the first and last steps only.
+        if self.first.is_none() || s.index == self.last_step {
+            let now = (angle, st.crank.time, kinetic_energy(&self.topology, st));
+            self.first.get_or_insert(now);
+            self.last = now;
+        }
         if let Some(p) = s.pressure {
             self.pressure = Some(self.pressure.map_or(p, |q| q.max(p)));
             for f in s.piston_forces {
-                self.gas_force = self.gas_force.max(f.abs());
+                raise(&mut self.gas_force, f.abs());
             }
         }
         Ok(())

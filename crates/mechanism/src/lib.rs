@@ -63,8 +63,13 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
     /// The resolved mass fields (for the summary).
     fn masses(&self) -> &MassProperties;
 
-    /// Fills `state` (made by [`State::for_topology`]) at the crank state `crank`.
+    /// Fills `state` (made by [`State::for_topology`]) at the crank state `crank`, all but its
+    /// extras.
     fn fill(&self, crank: &CrankState, state: &mut State);
+
+    /// Fills the [`Topology::extras`] of a `state` that [`Mechanism::fill`] filled (only done
+    /// when an output wants them).
+    fn fill_extras(&self, _state: &mut State) {}
 
     /// The first piston's position x (m) and dx/dθ (m/rad) at crank angle `angle` (rad): what
     /// the cylinder volume V(θ) and dV/dθ need, without the rest of the state.
@@ -105,6 +110,7 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
     fn state(&self, crank: &CrankState) -> State {
         let mut s = State::for_topology(self.topology());
         self.fill(crank, &mut s);
+        self.fill_extras(&mut s);
         s
     }
 }

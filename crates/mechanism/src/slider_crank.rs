@@ -259,6 +259,12 @@ impl Mechanism for SliderCrank {
         p.acceleration = pin.acceleration.im;
         p.dx_dtheta = r * e_a.re + l * d1 * cos_ba;
         p.d2x_dtheta2 = -r * e_a.im + l * (d2 * cos_ba - d1 * d1 * sin_ba);
+    }
+
+    fn fill_extras(&self, st: &mut State) {
+        let rod = &st.bodies[ROD];
+        let (e_ba, a_ba) = (rod.orientation, rod.angular_acceleration);
+        let rod_cg = rod.cg;
         // The centre of percussion (A5.2.1.6-8): where the rod's inertial force −m·a_g, with
         // the inertial couple −J·α_BA, acts alone; undefined where that force is along the rod.
         let f = -self.masses.rod_mass * rod_cg.acceleration;
