@@ -46,13 +46,15 @@ pub trait LoadFamily: Sync {
     /// Whether it carries the piston forces.
     fn piston_forces(&self) -> bool;
 
-    /// Its loads at `state`, with `piston_forces` the gas force on each piston (N, towards the
-    /// crankshaft), written to `out`.
+    /// Its loads at `state`, written to `out`. `piston_forces` is the gas force on each piston
+    /// (N, towards the crankshaft); `before` the sum of the loads of the families before it in
+    /// the run (what a tooth-load or friction family acts on; zero for the first family).
     fn loads(
         &self,
         mechanism: &dyn Mechanism,
         state: &State,
         piston_forces: &[f64],
+        before: &Loads,
         out: &mut Loads,
     );
 }
@@ -74,7 +76,14 @@ impl LoadFamily for Inertial {
         false
     }
 
-    fn loads(&self, mechanism: &dyn Mechanism, state: &State, _: &[f64], out: &mut Loads) {
+    fn loads(
+        &self,
+        mechanism: &dyn Mechanism,
+        state: &State,
+        _: &[f64],
+        _: &Loads,
+        out: &mut Loads,
+    ) {
         self.0.loads(mechanism, state, true, &[], out);
     }
 }
@@ -96,7 +105,14 @@ impl LoadFamily for Gas {
         true
     }
 
-    fn loads(&self, mechanism: &dyn Mechanism, state: &State, forces: &[f64], out: &mut Loads) {
+    fn loads(
+        &self,
+        mechanism: &dyn Mechanism,
+        state: &State,
+        forces: &[f64],
+        _: &Loads,
+        out: &mut Loads,
+    ) {
         self.0.loads(mechanism, state, false, forces, out);
     }
 }

@@ -95,24 +95,22 @@ pub fn run(
             forces.fill(f);
             p
         });
+        // Each family sees the sum of those before it; one family is its own total.
+        let several = families.len() > 1;
+        if several {
+            total.clear();
+        }
         for ((family, out), share) in families.iter().zip(&mut loads).zip(&mut shares) {
             let applied: &[f64] = if family.piston_forces() { &forces } else { &[] };
-            family.loads(mechanism, &state, applied, out);
+            family.loads(mechanism, &state, applied, &total, out);
             if details {
                 torque_shares(topology, &state, family.inertia(), applied, share);
             }
-        }
-        // The sum of the families (one family is its own total).
-        let total = match loads.as_slice() {
-            [only] => only,
-            all => {
-                total.clear();
-                for l in all {
-                    total.add(l);
-                }
-                &total
+            if several {
+                total.add(out);
             }
-        };
+        }
+        let total = if several { &total } else { &loads[0] };
         check_finite(
             index, &state, pressure, &forces, families, &loads, mechanism,
         )?;
