@@ -5,6 +5,7 @@
 
 pub mod case;
 pub mod gas;
+pub mod gear_file;
 pub mod output;
 pub mod run;
 pub mod units;

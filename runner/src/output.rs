@@ -337,14 +337,12 @@ impl Sink for CsvSink<'_> {
     }
 }
 
-/// Writes `contents` to `path`; `sync` also waits for the disk (once per case folder, on its
-/// last file).
-pub fn write_file(path: &Path, contents: &[u8], sync: bool) -> anyhow::Result<()> {
+/// Writes `contents` to `path`. No fsync: a case folder appears whole by a rename, and waiting
+/// for the disk would cost more than the computation of a small case (10 000 pump cases of
+/// 720 steps: 13.4 s with one fsync per case, 6.7 s without); durability across a power cut is not promised.
+pub fn write_file(path: &Path, contents: &[u8]) -> anyhow::Result<()> {
     let mut f = File::create(path).with_context(|| format!("create {}", path.display()))?;
     f.write_all(contents)?;
-    if sync {
-        f.sync_all()?;
-    }
     Ok(())
 }
 

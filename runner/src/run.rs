@@ -234,7 +234,7 @@ fn run_and_write(case: &Case, out: &Path, options: RunOptions) -> Result<PathBuf
         let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
             .map_err(|e| e.to_string())?;
         summary.push('\n');
-        output::write_file(&tmp.join("summary.json"), summary.as_bytes(), true)
+        output::write_file(&tmp.join("summary.json"), summary.as_bytes())
             .and_then(|()| output::replace_dir(&tmp, &dir))
             .map_err(cannot_write)
     });

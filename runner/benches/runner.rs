@@ -1,0 +1,51 @@
+//! The runner in-process: one shipped case with gas, summaries only; and a sweep of 10 000
+//! two-mechanism pump cases of 720 steps with gas, summaries only, on every core (the issue-8
+//! target through `cardan run` is 20 s; this is the computation without the files).
+
+use cardan_runner::{case, run_case};
+use criterion::{criterion_group, criterion_main, Criterion};
+use rayon::prelude::*;
+use std::hint::black_box;
+use std::path::Path;
+
+fn shipped(name: &str) -> String {
+    std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../configs/{name}.toml")),
+    )
+    .unwrap()
+}
+
+fn runner(c: &mut Criterion) {
+    let pump = shipped("karhula-pump-r60-l140-a0-w30pi");
+    let one = case::parse(Path::new("pump.toml"), &pump).unwrap();
+    c.bench_function("full_case_pump_7200_steps_two_mechanisms", |b| {
+        b.iter(|| black_box(run_case(black_box(&one), None).unwrap()))
+    });
+    let sweep: Vec<case::Case> = (0..10_000)
+        .map(|k| {
+            let text: String = pump
+                .lines()
+                .map(|l| match l.split_whitespace().next() {
+                    Some("initial_speed") => format!("initial_speed = {}\n", 3.0 + 0.02 * k as f64),
+                    Some("steps") => "steps = 720\n".to_string(),
+                    _ => format!("{l}\n"),
+                })
+                .collect();
+            case::parse(Path::new("sweep.toml"), &text).unwrap()
+        })
+        .collect();
+    let mut group = c.benchmark_group("sweep");
+    group.sample_size(10);
+    group.bench_function("10000_pump_cases_720_steps", |b| {
+        b.iter(|| {
+            sweep
+                .par_iter()
+                .map(|c| run_case(c, None).unwrap().len())
+                .sum::<usize>()
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, runner);
+criterion_main!(benches);

@@ -1,0 +1,1602 @@
+//! Gear files: one spur pair (external or internal, any ratio) in a TOML file → the ISO 21771
+//! geometry, the interference checks with their margins and remedies and, when a `[rating]`
+//! table is given, the AGMA 2001-D04 stresses and safety factors → `DIR/<name>/gear.json` and
+//! `DIR/<name>/report.md`. The physics is `cardan-gears`'; this module reads, validates and
+//! writes (see README.md, "Gear pair calculator").
+//!
+//! Values take units as case files do ([`crate::units`]): a bare number is in the field's SI
+//! unit (lengths m, angles deg, speeds rad/s), a string is "NUMBER UNIT". Power, torque and
+//! stress, which case files do not have, use the small table of this module ([`Quantity`]);
+//! lengths also accept inches ("1.5 in") for the US-unit textbook examples.
+//!
+//! Bad input is a [`GearFileError`] naming the file, the pair, the field, its value and the
+//! rule, never a panic. A pair that cannot work (interference, contact ratio below 1, jammed
+//! teeth) is not an input error: it is written, with the failed checks and their remedies, and
+//! [`GearReport::failures`] lists it so the command can exit 1.
+
+use crate::output::{replace_dir, temporary_dir, write_file};
+use crate::units::{to_si, Dimension};
+use cardan_gears::agma::factors::{
+    bending_allowable_through_hardened, contact_allowable_through_hardened, Grade,
+};
+use cardan_gears::units::{FOOT, HORSEPOWER, INCH, LBF, PSI};
+use cardan_gears::{
+    bending_cycle_factor, cardan_module, dynamic_factor, elastic_coefficient,
+    hardness_ratio_factor, pitting_cycle_factor, pitting_geometry_factor, reliability_factor_fit,
+    reliability_factor_table, BendingHighCycle, BendingLowCycle, CheckKind, CheckReport, Enclosure,
+    GearError, GearPair, GearSetRating, GearSpec, HardnessPairing, IForm, LoadDistribution,
+    MemberData, PairSpec, Quality, SizeFactor, Tip,
+};
+use serde::Deserialize;
+use serde_json::{json, Map, Value};
+use std::f64::consts::PI;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Version of the layout of `gear.json`; raised when a name or the shape changes.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// Why a gear file could not be rated or written.
+#[derive(Debug, thiserror::Error)]
+pub enum GearFileError {
+    #[error("{file}: cannot read: {source}")]
+    Io {
+        file: PathBuf,
+        source: std::io::Error,
+    },
+    /// TOML syntax, a missing field, an unknown key or a value of the wrong type; the message
+    /// is the TOML reader's, with the line and column.
+    #[error("{file}: {message}")]
+    Syntax { file: PathBuf, message: String },
+    #[error("{file}: gear pair \"{name}\": {field} = {value}: {rule}")]
+    Invalid {
+        file: PathBuf,
+        name: String,
+        field: String,
+        value: String,
+        rule: String,
+    },
+    #[error("{file}: gear pair \"{name}\": cannot write results to {dir}: {message}")]
+    Write {
+        file: PathBuf,
+        name: String,
+        dir: PathBuf,
+        message: String,
+    },
+}
+
+/// Units a case file has no dimension for: a local table, first entry = unit of a bare number.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Quantity {
+    /// Power, W.
+    Power,
+    /// Torque, N·m.
+    Torque,
+    /// Stress and elastic moduli, Pa.
+    Stress,
+    /// Square root of a stress (the elastic coefficient `Cp`), √Pa.
+    RootStress,
+}
+
+impl Quantity {
+    fn units(self) -> &'static [(&'static str, f64)] {
+        match self {
+            Quantity::Power => &[("W", 1.0), ("kW", 1e3), ("MW", 1e6), ("hp", HORSEPOWER)],
+            Quantity::Torque => &[
+                ("N*m", 1.0),
+                ("N·m", 1.0),
+                ("Nm", 1.0),
+                ("N m", 1.0),
+                ("kN*m", 1e3),
+                ("lbf*in", LBF * INCH),
+                ("lbf*ft", LBF * FOOT),
+            ],
+            Quantity::Stress => &[
+                ("Pa", 1.0),
+                ("kPa", 1e3),
+                ("MPa", 1e6),
+                ("GPa", 1e9),
+                ("psi", PSI),
+                ("kpsi", 1e3 * PSI),
+                ("Mpsi", 1e6 * PSI),
+            ],
+            Quantity::RootStress => &[
+                ("sqrt(Pa)", 1.0),
+                ("√Pa", 1.0),
+                ("sqrt(MPa)", 1e3),
+                ("√MPa", 1e3),
+                ("sqrt(psi)", 0.0), // PSI.sqrt(), filled in by `factor`
+                ("√psi", 0.0),
+            ],
+        }
+    }
+
+    fn factor(self, unit: &str, table_factor: f64) -> f64 {
+        match (self, unit) {
+            (Quantity::RootStress, "sqrt(psi)" | "√psi") => PSI.sqrt(),
+            _ => table_factor,
+        }
+    }
+
+    /// Converts a TOML value (bare number in the first unit, or "NUMBER UNIT") to SI.
+    pub fn to_si(self, value: &toml::Value) -> Result<f64, String> {
+        let units = self.units();
+        let (x, f) = match value {
+            toml::Value::Float(x) => (*x, units[0].1),
+            toml::Value::Integer(i) => (*i as f64, units[0].1),
+            toml::Value::String(s) => {
+                let (x, unit) = split_number(s)?;
+                let unit = if unit.is_empty() { units[0].0 } else { unit };
+                match units.iter().find(|(u, _)| *u == unit) {
+                    Some((u, f)) => (x, self.factor(u, *f)),
+                    None => {
+                        return Err(format!(
+                            "unknown unit \"{unit}\" in \"{}\"; accepted: {}",
+                            s.trim(),
+                            units.iter().map(|(u, _)| *u).collect::<Vec<_>>().join(", ")
+                        ))
+                    }
+                }
+            }
+            _ => {
+                return Err(format!(
+                    "expected a number in {} or a string with a unit, got {value}",
+                    units[0].0
+                ))
+            }
+        };
+        if !x.is_finite() {
+            return Err(format!("must be a finite number, got {value}"));
+        }
+        Ok(x * f)
+    }
+}
+
+/// "12.5 MPa" → (12.5, "MPa").
+fn split_number(s: &str) -> Result<(f64, &str), String> {
+    let s = s.trim();
+    let split = s
+        .find(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c)))
+        .unwrap_or(s.len());
+    let (num, unit) = s.split_at(split);
+    let x: f64 = num
+        .parse()
+        .map_err(|_| format!("cannot read a number in \"{s}\""))?;
+    Ok((x, unit.trim()))
+}
+
+/// A length: case-file units (m, mm, cm; bare number in m) or inches ("1.5 in").
+fn length_to_si(value: &toml::Value) -> Result<f64, String> {
+    if let toml::Value::String(s) = value {
+        if let Ok((x, "in")) = split_number(s) {
+            return if x.is_finite() {
+                Ok(x * INCH)
+            } else {
+                Err(format!("must be a finite number, got {value}"))
+            };
+        }
+    }
+    to_si(value, Dimension::Length).map_err(|e| {
+        if e.contains("accepted:") {
+            format!("{e}, in")
+        } else {
+            e
+        }
+    })
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawGearFile {
+    name: String,
+    module: Option<toml::Value>,
+    cardan_crank_length: Option<toml::Value>,
+    pressure_angle: toml::Value,
+    teeth: toml::Value,
+    profile_shift: Option<toml::Value>,
+    center_distance: Option<toml::Value>,
+    tip_diameter: Option<toml::Value>,
+    addendum_coefficient: Option<toml::Value>,
+    dedendum_coefficient: Option<toml::Value>,
+    thickness_allowance: Option<toml::Value>,
+    face_width: Option<toml::Value>,
+    min_teeth_difference: Option<toml::Value>,
+    rating: Option<RawRating>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawRating {
+    power: Option<toml::Value>,
+    torque: Option<toml::Value>,
+    pinion_speed: toml::Value,
+    quality: Option<toml::Value>,
+    accuracy_level: Option<toml::Value>,
+    dynamic_factor: Option<toml::Value>,
+    overload_factor: Option<toml::Value>,
+    reliability: Option<toml::Value>,
+    reliability_factor: Option<toml::Value>,
+    temperature_factor: Option<toml::Value>,
+    surface_condition_factor: Option<toml::Value>,
+    pinion_cycles: Option<toml::Value>,
+    bending_cycle_low: Option<String>,
+    bending_cycle_high: Option<String>,
+    pitting_nitrided: Option<bool>,
+    geometry_factor_i: Option<toml::Value>,
+    elastic_coefficient: Option<toml::Value>,
+    hardness_ratio_factor: Option<toml::Value>,
+    enclosure: Option<String>,
+    crowned: Option<bool>,
+    offset_ratio: Option<toml::Value>,
+    adjusted_at_assembly: Option<bool>,
+    pinion: RawMember,
+    gear: RawMember,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawMember {
+    j: toml::Value,
+    rim_factor: Option<toml::Value>,
+    lewis_y: Option<toml::Value>,
+    size_factor: Option<toml::Value>,
+    hardness: Option<toml::Value>,
+    grade: Option<toml::Value>,
+    bending_allowable: Option<toml::Value>,
+    contact_allowable: Option<toml::Value>,
+    youngs_modulus: Option<toml::Value>,
+    poisson_ratio: Option<toml::Value>,
+}
+
+/// How the load is given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Load {
+    /// Transmitted power, W.
+    Power(f64),
+    /// Pinion torque, N·m.
+    Torque(f64),
+}
+
+/// How `Kv` is obtained.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum KvInput {
+    /// From an AGMA accuracy grade and the pitch-line velocity.
+    Quality(Quality),
+    /// Given.
+    Given(f64),
+}
+
+/// How the pitting geometry factor `I` is obtained.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum IInput {
+    /// AGMA 908 formula at the given contact point.
+    Form(IForm),
+    /// Given.
+    Given(f64),
+}
+
+/// Validated rating inputs of one member; stresses in Pa.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MemberInputs {
+    pub j: f64,
+    pub rim_factor: f64,
+    pub lewis_y: Option<f64>,
+    pub size_factor: Option<f64>,
+    pub hardness: Option<f64>,
+    pub bending_allowable: f64,
+    pub contact_allowable: f64,
+}
+
+/// Validated `[rating]` table, SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RatingInputs {
+    pub load: Load,
+    /// Pinion speed relative to the gear's frame (the carrier of a cardan gear), rad/s.
+    pub pinion_speed: f64,
+    pub kv: KvInput,
+    pub overload: f64,
+    pub reliability_factor: f64,
+    pub temperature_factor: f64,
+    pub surface_condition: f64,
+    pub pinion_cycles: f64,
+    pub bending_low: BendingLowCycle,
+    pub bending_high: BendingHighCycle,
+    pub nitrided: bool,
+    pub i: IInput,
+    /// √Pa.
+    pub elastic_coefficient: f64,
+    pub hardness_ratio_factor: Option<f64>,
+    pub load_distribution: LoadDistribution,
+    pub members: [MemberInputs; 2],
+}
+
+/// A validated gear file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GearFile {
+    pub file: PathBuf,
+    pub name: String,
+    pub spec: PairSpec,
+    /// The cardan crank length the module was derived from (A9.1.37), m.
+    pub cardan_crank_length: Option<f64>,
+    /// Face width, m.
+    pub face_width: Option<f64>,
+    pub rating: Option<RatingInputs>,
+    /// The fields as written in the file (dotted name, TOML text), for the report.
+    pub given: Vec<(String, String)>,
+}
+
+/// Reads and validates one gear file.
+pub fn load(file: &Path) -> Result<GearFile, GearFileError> {
+    let text = std::fs::read_to_string(file).map_err(|source| GearFileError::Io {
+        file: file.into(),
+        source,
+    })?;
+    parse(file, &text)
+}
+
+type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> GearFileError + 'a;
+
+/// Validates the text of a gear file; `file` is only for the messages.
+pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
+    let raw: RawGearFile = toml::from_str(text).map_err(|e| GearFileError::Syntax {
+        file: file.into(),
+        message: e.to_string().trim_end().to_string(),
+    })?;
+    let name = raw.name.clone();
+    let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| GearFileError::Invalid {
+        file: file.into(),
+        name: name.clone(),
+        field: field.to_string(),
+        value: value.to_string(),
+        rule: rule.to_string(),
+    };
+    if raw.name.is_empty()
+        || raw.name.starts_with('.')
+        || !raw
+            .name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c))
+    {
+        return Err(invalid(
+            "name",
+            &format!("\"{}\"", raw.name),
+            "must be a non-empty folder name of letters, digits, '-', '_' and '.', not starting with '.'",
+        ));
+    }
+    let given = given_fields(text);
+    let length = |field: &str, v: &toml::Value| length_to_si(v).map_err(|r| invalid(field, v, &r));
+    let positive_length = |field: &str, v: &toml::Value| {
+        let x = length(field, v)?;
+        if x > 0.0 {
+            Ok(x)
+        } else {
+            Err(invalid(field, v, "must be positive"))
+        }
+    };
+    let number = |field: &str, v: &toml::Value| {
+        to_si(v, Dimension::Number).map_err(|r| invalid(field, v, &r))
+    };
+
+    // Teeth.
+    let teeth = pair_of(&raw.teeth, "teeth", &invalid)?;
+    let mut z = [0i32; 2];
+    for k in 0..2 {
+        z[k] = match teeth[k].as_integer() {
+            Some(i) if (-100_000..=100_000).contains(&i) => i as i32,
+            _ => {
+                return Err(invalid(
+                    "teeth",
+                    &raw.teeth,
+                    "must be two whole numbers [z1, z2] (z2 negative for an internal gear), |z| <= 100000",
+                ))
+            }
+        };
+    }
+
+    // Module, or the cardan crank length it follows from.
+    let (module, crank) = match (&raw.module, &raw.cardan_crank_length) {
+        (Some(m), None) => (positive_length("module", m)?, None),
+        (None, Some(e)) => {
+            let e_si = positive_length("cardan_crank_length", e)?;
+            let m = cardan_module(e_si, z[0].max(0) as u32).map_err(|err| {
+                invalid(
+                    "cardan_crank_length",
+                    e,
+                    &format!("gives no module m = 2e/z1: {err}"),
+                )
+            })?;
+            (m, Some(e_si))
+        }
+        (Some(m), Some(_)) => {
+            return Err(invalid(
+                "module",
+                m,
+                "give module or cardan_crank_length (m = 2e/z1, Karhula A9.1.37), not both",
+            ))
+        }
+        (None, None) => {
+            return Err(invalid(
+                "module",
+                &"(missing)",
+                "give module (a length, e.g. \"3 mm\") or cardan_crank_length",
+            ))
+        }
+    };
+    let pressure_angle = to_si(&raw.pressure_angle, Dimension::Angle)
+        .map_err(|r| invalid("pressure_angle", &raw.pressure_angle, &r))?;
+
+    let mut spec = PairSpec {
+        module,
+        pressure_angle,
+        pinion: GearSpec::standard(z[0], 0.0),
+        gear: GearSpec::standard(z[1], 0.0),
+        centre_distance: None,
+        min_teeth_difference: 10,
+    };
+    if let Some(v) = &raw.profile_shift {
+        let x = pair_of(v, "profile_shift", &invalid)?;
+        spec.pinion.shift = number("profile_shift", &x[0])?;
+        spec.gear.shift = number("profile_shift", &x[1])?;
+    }
+    if let Some(v) = &raw.addendum_coefficient {
+        let h = pair_of(v, "addendum_coefficient", &invalid)?;
+        spec.pinion.tip = Tip::Coefficient(number("addendum_coefficient", &h[0])?);
+        spec.gear.tip = Tip::Coefficient(number("addendum_coefficient", &h[1])?);
+    }
+    if let Some(v) = &raw.tip_diameter {
+        if raw.addendum_coefficient.is_some() {
+            return Err(invalid(
+                "tip_diameter",
+                v,
+                "give tip_diameter or addendum_coefficient, not both",
+            ));
+        }
+        let d = pair_of(v, "tip_diameter", &invalid)?;
+        spec.pinion.tip = Tip::Diameter(positive_length("tip_diameter", &d[0])?);
+        spec.gear.tip = Tip::Diameter(positive_length("tip_diameter", &d[1])?);
+    }
+    if let Some(v) = &raw.dedendum_coefficient {
+        let h = pair_of(v, "dedendum_coefficient", &invalid)?;
+        spec.pinion.dedendum_coefficient = number("dedendum_coefficient", &h[0])?;
+        spec.gear.dedendum_coefficient = number("dedendum_coefficient", &h[1])?;
+    }
+    if let Some(v) = &raw.thickness_allowance {
+        let t = pair_of(v, "thickness_allowance", &invalid)?;
+        spec.pinion.thickness_allowance = length("thickness_allowance", &t[0])?;
+        spec.gear.thickness_allowance = length("thickness_allowance", &t[1])?;
+    }
+    if let Some(v) = &raw.center_distance {
+        spec.centre_distance = Some(positive_length("center_distance", v)?);
+    }
+    if let Some(v) = &raw.min_teeth_difference {
+        spec.min_teeth_difference = match v.as_integer() {
+            Some(i) if (0..=1000).contains(&i) => i as u32,
+            _ => {
+                return Err(invalid(
+                    "min_teeth_difference",
+                    v,
+                    "must be a whole number from 0 to 1000",
+                ))
+            }
+        };
+    }
+    // The geometry is validated here, so that a bad pair is an input error of this file.
+    GearPair::new(spec).map_err(|e| geometry_error(e, &raw, &invalid))?;
+
+    let face_width = raw
+        .face_width
+        .as_ref()
+        .map(|v| positive_length("face_width", v))
+        .transpose()?;
+    let rating = match &raw.rating {
+        None => None,
+        Some(r) => {
+            if face_width.is_none() {
+                return Err(invalid(
+                    "face_width",
+                    &"(missing)",
+                    "a pair with a [rating] table needs its face width",
+                ));
+            }
+            Some(parse_rating(r, &invalid)?)
+        }
+    };
+    Ok(GearFile {
+        file: file.into(),
+        name: raw.name,
+        spec,
+        cardan_crank_length: crank,
+        face_width,
+        rating,
+        given,
+    })
+}
+
+/// `[a, b]` of a two-entry array field.
+fn pair_of(
+    v: &toml::Value,
+    field: &str,
+    invalid: &Invalid,
+) -> Result<[toml::Value; 2], GearFileError> {
+    match v.as_array() {
+        Some(a) if a.len() == 2 => Ok([a[0].clone(), a[1].clone()]),
+        _ => Err(invalid(
+            field,
+            v,
+            "must be a list of two values [pinion, gear]",
+        )),
+    }
+}
+
+/// Names the file's field behind an input error of the geometry.
+fn geometry_error(e: GearError, raw: &RawGearFile, invalid: &Invalid) -> GearFileError {
+    let GearError::InvalidInput { field, rule, value } = e else {
+        return invalid("teeth", &raw.teeth, &e.to_string());
+    };
+    let tip_field = if raw.tip_diameter.is_some() {
+        "tip_diameter"
+    } else {
+        "addendum_coefficient"
+    };
+    let name = match field {
+        "module" if raw.module.is_none() => "cardan_crank_length",
+        "module" => "module",
+        "pressure_angle" => "pressure_angle",
+        "pinion.teeth" | "gear.teeth" => "teeth",
+        "pinion.shift" | "gear.shift" | "shift" => "profile_shift",
+        "pinion.dedendum_coefficient" | "gear.dedendum_coefficient" => "dedendum_coefficient",
+        "pinion.thickness_allowance" | "gear.thickness_allowance" => "thickness_allowance",
+        "centre_distance" => "center_distance",
+        "tip diameter" => "tip_diameter",
+        _ => tip_field,
+    };
+    let given = match name {
+        "cardan_crank_length" => raw.cardan_crank_length.clone(),
+        "module" => raw.module.clone(),
+        "pressure_angle" => Some(raw.pressure_angle.clone()),
+        "teeth" => Some(raw.teeth.clone()),
+        "profile_shift" => raw.profile_shift.clone(),
+        "dedendum_coefficient" => raw.dedendum_coefficient.clone(),
+        "thickness_allowance" => raw.thickness_allowance.clone(),
+        "center_distance" => raw.center_distance.clone(),
+        "tip_diameter" => raw.tip_diameter.clone(),
+        _ => raw.addendum_coefficient.clone(),
+    };
+    let detail = format!("{rule} ({field} = {value} in SI)");
+    match given {
+        Some(v) => invalid(name, &v, &detail),
+        None => invalid(name, &"(default)", &detail),
+    }
+}
+
+fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFileError> {
+    let quantity = |field: &str, v: &toml::Value, q: Quantity| {
+        q.to_si(v).map_err(|rule| invalid(field, v, &rule))
+    };
+    let number = |field: &str, v: &toml::Value| {
+        to_si(v, Dimension::Number).map_err(|rule| invalid(field, v, &rule))
+    };
+    let positive_number = |field: &str, v: &toml::Value| {
+        let x = number(field, v)?;
+        if x > 0.0 {
+            Ok(x)
+        } else {
+            Err(invalid(field, v, "must be positive"))
+        }
+    };
+    let factor = |field: &str, v: &Option<toml::Value>| match v {
+        Some(v) => positive_number(field, v),
+        None => Ok(1.0),
+    };
+    let gear_err =
+        |field: &str, v: &dyn std::fmt::Display, e: GearError| invalid(field, v, &e.to_string());
+
+    let load = match (&r.power, &r.torque) {
+        (Some(p), None) => Load::Power(quantity("rating.power", p, Quantity::Power)?),
+        (None, Some(t)) => Load::Torque(quantity("rating.torque", t, Quantity::Torque)?),
+        (Some(p), Some(_)) => {
+            return Err(invalid(
+                "rating.power",
+                p,
+                "give power or the pinion torque, not both",
+            ))
+        }
+        (None, None) => {
+            return Err(invalid(
+                "rating.power",
+                &"(missing)",
+                "give power (e.g. \"4 hp\", \"3 kW\") or the pinion torque (\"20 N*m\")",
+            ))
+        }
+    };
+    let (load_field, load_value) = match load {
+        Load::Power(p) => ("rating.power", p),
+        Load::Torque(t) => ("rating.torque", t),
+    };
+    if load_value < 0.0 {
+        let v = r
+            .power
+            .as_ref()
+            .or(r.torque.as_ref())
+            .unwrap_or(&r.pinion_speed);
+        return Err(invalid(load_field, v, "must not be negative"));
+    }
+    let pinion_speed = to_si(&r.pinion_speed, Dimension::AngularSpeed)
+        .map_err(|rule| invalid("rating.pinion_speed", &r.pinion_speed, &rule))?;
+    if pinion_speed <= 0.0 {
+        return Err(invalid(
+            "rating.pinion_speed",
+            &r.pinion_speed,
+            "must be positive",
+        ));
+    }
+
+    let kv = match (&r.quality, &r.accuracy_level, &r.dynamic_factor) {
+        (Some(q), None, None) => {
+            let qv = number("rating.quality", q)?;
+            dynamic_factor(Quality::Qv(qv), 0.0).map_err(|e| gear_err("rating.quality", q, e))?;
+            KvInput::Quality(Quality::Qv(qv))
+        }
+        (None, Some(a), None) => {
+            let av = number("rating.accuracy_level", a)?;
+            dynamic_factor(Quality::Av(av), 0.0)
+                .map_err(|e| gear_err("rating.accuracy_level", a, e))?;
+            KvInput::Quality(Quality::Av(av))
+        }
+        (None, None, Some(k)) => {
+            let kv = number("rating.dynamic_factor", k)?;
+            if kv < 1.0 {
+                return Err(invalid("rating.dynamic_factor", k, "must be >= 1"));
+            }
+            KvInput::Given(kv)
+        }
+        _ => {
+            return Err(invalid(
+                "rating.quality",
+                &r.quality.clone().unwrap_or(toml::Value::String("(missing)".into())),
+                "give exactly one of quality (AGMA 2001 Qv, 5-12), accuracy_level (AGMA 2101 Av, 6-12) or dynamic_factor (Kv)",
+            ))
+        }
+    };
+
+    let reliability_factor = match (&r.reliability, &r.reliability_factor) {
+        (Some(v), None) => {
+            let rel = number("rating.reliability", v)?;
+            reliability_factor_table(rel)
+                .or_else(|_| reliability_factor_fit(rel))
+                .map_err(|e| gear_err("rating.reliability", v, e))?
+        }
+        (None, Some(v)) => positive_number("rating.reliability_factor", v)?,
+        (Some(v), Some(_)) => {
+            return Err(invalid(
+                "rating.reliability",
+                v,
+                "give reliability or reliability_factor (KR), not both",
+            ))
+        }
+        (None, None) => 1.0,
+    };
+    let pinion_cycles = match &r.pinion_cycles {
+        Some(v) => {
+            let n = number("rating.pinion_cycles", v)?;
+            pitting_cycle_factor(n, false).map_err(|e| gear_err("rating.pinion_cycles", v, e))?;
+            n
+        }
+        None => 1e7,
+    };
+    let bending_low =
+        match r.bending_cycle_low.as_deref().unwrap_or("hb250") {
+            "hb400" => BendingLowCycle::Hb400,
+            "case-carburized" => BendingLowCycle::CaseCarburized,
+            "hb250" => BendingLowCycle::Hb250,
+            "nitrided" => BendingLowCycle::Nitrided,
+            "hb160" => BendingLowCycle::Hb160,
+            other => return Err(invalid(
+                "rating.bending_cycle_low",
+                &format!("\"{other}\""),
+                "must be one of \"hb400\", \"case-carburized\", \"hb250\", \"nitrided\", \"hb160\"",
+            )),
+        };
+    let bending_high = match r.bending_cycle_high.as_deref().unwrap_or("upper") {
+        "upper" => BendingHighCycle::Upper,
+        "lower" => BendingHighCycle::Lower,
+        other => {
+            return Err(invalid(
+                "rating.bending_cycle_high",
+                &format!("\"{other}\""),
+                "must be \"upper\" (general) or \"lower\" (critical service)",
+            ))
+        }
+    };
+    let i = match &r.geometry_factor_i {
+        None => IInput::Form(IForm::Lpstc),
+        Some(toml::Value::String(s)) if s == "lpstc" => IInput::Form(IForm::Lpstc),
+        Some(toml::Value::String(s)) if s == "pitch-point" => IInput::Form(IForm::PitchPoint),
+        Some(v @ (toml::Value::Float(_) | toml::Value::Integer(_))) => {
+            IInput::Given(positive_number("rating.geometry_factor_i", v)?)
+        }
+        Some(v) => {
+            return Err(invalid(
+                "rating.geometry_factor_i",
+                v,
+                "must be \"lpstc\" (AGMA 908), \"pitch-point\" (Shigley eq. 14-23) or a number",
+            ))
+        }
+    };
+    let enclosure = match r.enclosure.as_deref().unwrap_or("commercial") {
+        "open" => Enclosure::Open,
+        "commercial" => Enclosure::CommercialEnclosed,
+        "precision" => Enclosure::PrecisionEnclosed,
+        "extra-precision" => Enclosure::ExtraPrecisionEnclosed,
+        other => {
+            return Err(invalid(
+                "rating.enclosure",
+                &format!("\"{other}\""),
+                "must be one of \"open\", \"commercial\", \"precision\", \"extra-precision\"",
+            ))
+        }
+    };
+    let offset_ratio = match &r.offset_ratio {
+        Some(v) => {
+            let x = number("rating.offset_ratio", v)?;
+            if x < 0.0 {
+                return Err(invalid("rating.offset_ratio", v, "must not be negative"));
+            }
+            x
+        }
+        None => 0.0,
+    };
+
+    let member = |which: &str, m: &RawMember| -> Result<MemberInputs, GearFileError> {
+        let f = |k: &str| format!("rating.{which}.{k}");
+        let j = positive_number(&f("j"), &m.j)?;
+        let rim_factor = factor(&f("rim_factor"), &m.rim_factor)?;
+        let lewis_y = m
+            .lewis_y
+            .as_ref()
+            .map(|v| positive_number(&f("lewis_y"), v))
+            .transpose()?;
+        let size_factor = m
+            .size_factor
+            .as_ref()
+            .map(|v| positive_number(&f("size_factor"), v))
+            .transpose()?;
+        if let (Some(v), Some(_)) = (&m.lewis_y, &m.size_factor) {
+            return Err(invalid(
+                &f("lewis_y"),
+                v,
+                "give lewis_y (Ks from Shigley eq. 14-10) or size_factor (Ks), not both",
+            ));
+        }
+        let hardness = m
+            .hardness
+            .as_ref()
+            .map(|v| positive_number(&f("hardness"), v))
+            .transpose()?;
+        let grade = match &m.grade {
+            None => Grade::One,
+            Some(v) => match v.as_integer() {
+                Some(1) => Grade::One,
+                Some(2) => Grade::Two,
+                _ => return Err(invalid(&f("grade"), v, "must be 1 or 2 (AGMA 2001 grade)")),
+            },
+        };
+        let allowable = |key: &str,
+                         given: &Option<toml::Value>,
+                         chart: fn(f64, Grade) -> Result<f64, GearError>|
+         -> Result<f64, GearFileError> {
+            match (given, hardness) {
+                (Some(v), _) => {
+                    let s = quantity(&f(key), v, Quantity::Stress)?;
+                    if s > 0.0 {
+                        Ok(s)
+                    } else {
+                        Err(invalid(&f(key), v, "must be positive"))
+                    }
+                }
+                (None, Some(hb)) => chart(hb, grade).map_err(|e| {
+                    gear_err(&f("hardness"), m.hardness.as_ref().unwrap_or(&m.j), e)
+                }),
+                (None, None) => Err(invalid(
+                    &f(key),
+                    &"(missing)",
+                    "give it (a stress, e.g. \"31350 psi\") or the Brinell hardness of a through-hardened steel (AGMA 2001 charts)",
+                )),
+            }
+        };
+        Ok(MemberInputs {
+            j,
+            rim_factor,
+            lewis_y,
+            size_factor,
+            hardness,
+            bending_allowable: allowable(
+                "bending_allowable",
+                &m.bending_allowable,
+                bending_allowable_through_hardened,
+            )?,
+            contact_allowable: allowable(
+                "contact_allowable",
+                &m.contact_allowable,
+                contact_allowable_through_hardened,
+            )?,
+        })
+    };
+    let members = [member("pinion", &r.pinion)?, member("gear", &r.gear)?];
+    if members[0].lewis_y.is_some() != members[1].lewis_y.is_some() {
+        return Err(invalid(
+            "rating.gear.lewis_y",
+            &r.gear
+                .lewis_y
+                .clone()
+                .unwrap_or(toml::Value::String("(missing)".into())),
+            "give lewis_y for both members or for neither",
+        ));
+    }
+
+    let elastic = match &r.elastic_coefficient {
+        Some(v) => {
+            let cp = quantity("rating.elastic_coefficient", v, Quantity::RootStress)?;
+            if cp <= 0.0 {
+                return Err(invalid("rating.elastic_coefficient", v, "must be positive"));
+            }
+            cp
+        }
+        None => {
+            let mut en = [(0.0, 0.0); 2];
+            for (k, (which, m)) in [("pinion", &r.pinion), ("gear", &r.gear)]
+                .iter()
+                .enumerate()
+            {
+                let (Some(e), Some(nu)) = (&m.youngs_modulus, &m.poisson_ratio) else {
+                    return Err(invalid(
+                        "rating.elastic_coefficient",
+                        &"(missing)",
+                        &format!("give it (e.g. \"2300 sqrt(psi)\", \"190 sqrt(MPa)\") or youngs_modulus and poisson_ratio in [rating.{which}]"),
+                    ));
+                };
+                en[k] = (
+                    quantity(
+                        &format!("rating.{which}.youngs_modulus"),
+                        e,
+                        Quantity::Stress,
+                    )?,
+                    number(&format!("rating.{which}.poisson_ratio"), nu)?,
+                );
+            }
+            elastic_coefficient(en[0].0, en[0].1, en[1].0, en[1].1).map_err(|e| {
+                gear_err(
+                    "rating.pinion.youngs_modulus",
+                    r.pinion.youngs_modulus.as_ref().unwrap_or(&r.pinion.j),
+                    e,
+                )
+            })?
+        }
+    };
+    let hardness_ratio_factor = r
+        .hardness_ratio_factor
+        .as_ref()
+        .map(|v| positive_number("rating.hardness_ratio_factor", v))
+        .transpose()?;
+
+    Ok(RatingInputs {
+        load,
+        pinion_speed,
+        kv,
+        overload: factor("rating.overload_factor", &r.overload_factor)?,
+        reliability_factor,
+        temperature_factor: factor("rating.temperature_factor", &r.temperature_factor)?,
+        surface_condition: factor(
+            "rating.surface_condition_factor",
+            &r.surface_condition_factor,
+        )?,
+        pinion_cycles,
+        bending_low,
+        bending_high,
+        nitrided: r.pitting_nitrided.unwrap_or(false),
+        i,
+        elastic_coefficient: elastic,
+        hardness_ratio_factor,
+        load_distribution: LoadDistribution {
+            crowned: r.crowned.unwrap_or(false),
+            offset_ratio,
+            enclosure,
+            adjusted_at_assembly: r.adjusted_at_assembly.unwrap_or(false),
+        },
+        members,
+    })
+}
+
+/// The top-level and `[rating]` entries of the file as written, for the report.
+fn given_fields(text: &str) -> Vec<(String, String)> {
+    let Ok(table) = text.parse::<toml::Table>() else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    fn walk(prefix: &str, t: &toml::Table, out: &mut Vec<(String, String)>) {
+        for (k, v) in t {
+            let key = if prefix.is_empty() {
+                k.clone()
+            } else {
+                format!("{prefix}.{k}")
+            };
+            match v {
+                toml::Value::Table(sub) => walk(&key, sub, out),
+                _ => out.push((key, v.to_string())),
+            }
+        }
+    }
+    walk("", &table, &mut out);
+    out
+}
+
+/// Whether a failed check makes the pair unusable (`Error`) or only breaks a rule of thumb
+/// (`Warning`: the AGMA 917 teeth difference, the rack-generation undercut limit).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Severity {
+    Error,
+    Warning,
+}
+
+/// The JSON name, severity and meaning of a check.
+pub fn check_info(kind: CheckKind) -> (&'static str, Severity, &'static str) {
+    match kind {
+        CheckKind::InvoluteInterferencePinion => (
+            "involute_interference_pinion",
+            Severity::Error,
+            "the mate's tip stays off the pinion flank below its base circle (KHK); margin in units of rb2·tan α_op",
+        ),
+        CheckKind::InvoluteInterferenceGear => (
+            "involute_interference_gear",
+            Severity::Error,
+            "the pinion tip stays off the gear flank below its base circle; margin in units of rb1·tan α_op",
+        ),
+        CheckKind::TrochoidInterference => (
+            "trochoid_interference",
+            Severity::Error,
+            "no tip/trochoid interference while the pinion leaves the ring (KHK θ1·z1/z2 >= θ2); margin z1/|z2| - θ2/θ1",
+        ),
+        CheckKind::RingTipInsideBaseCircle => (
+            "ring_tip_inside_base_circle",
+            Severity::Error,
+            "the ring tip circle lies outside its base circle; margin (|da2| - |db2|)/(2 m) in modules",
+        ),
+        CheckKind::TeethDifference => (
+            "teeth_difference",
+            Severity::Warning,
+            "|z2| - z1 >= min_teeth_difference (AGMA 917-B97 rule of thumb); margin in teeth",
+        ),
+        CheckKind::ContactRatio => (
+            "contact_ratio",
+            Severity::Error,
+            "transverse contact ratio >= 1; margin εα - 1",
+        ),
+        CheckKind::PinionUndercut => (
+            "pinion_undercut",
+            Severity::Warning,
+            "rack-generated pinion without undercut, x1 >= 1 - z1 sin²α/2 (rule of thumb); margin in shift",
+        ),
+        CheckKind::Backlash => (
+            "backlash",
+            Severity::Error,
+            "backlash not negative (teeth do not jam); margin jt/m in modules",
+        ),
+    }
+}
+
+/// Stresses, factors and safety factors of a rated pair; arrays are `[pinion, gear]`, SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RatingResult {
+    pub power: f64,
+    pub pinion_torque: f64,
+    pub pitch_line_velocity: f64,
+    pub tangential_load: f64,
+    pub kv: f64,
+    /// Pitch-line velocity limit of the Kv curve, m/s (`None` for a given Kv).
+    pub kv_velocity_limit: Option<f64>,
+    pub km: f64,
+    pub i: f64,
+    pub cycles: [f64; 2],
+    pub ks: [f64; 2],
+    pub yn: [f64; 2],
+    pub zn: [f64; 2],
+    pub ch: [f64; 2],
+    pub bending_stress: [f64; 2],
+    pub contact_stress: [f64; 2],
+    pub bending_safety: [f64; 2],
+    pub contact_safety: [f64; 2],
+    pub warnings: Vec<String>,
+}
+
+/// Everything computed for one gear file.
+#[derive(Debug, Clone)]
+pub struct GearReport {
+    pub input: GearFile,
+    pub pair: GearPair,
+    pub checks: Vec<CheckReport>,
+    /// `None` without a `[rating]` table; `Some(Err)` when the pair cannot be rated.
+    pub rating: Option<Result<RatingResult, String>>,
+}
+
+impl GearReport {
+    /// Why the pair cannot work: every failed check of severity `Error` with its remedies,
+    /// and a rating that could not be computed. Empty when the pair is usable.
+    pub fn failures(&self) -> Vec<String> {
+        let mut out: Vec<String> = self
+            .checks
+            .iter()
+            .filter(|c| !c.passed && check_info(c.kind).1 == Severity::Error)
+            .map(|c| format!("{}: {}", check_info(c.kind).0, remedy_text(c)))
+            .collect();
+        if let Some(Err(e)) = &self.rating {
+            out.push(format!("rating: {e}"));
+        }
+        out
+    }
+}
+
+fn remedy_text(c: &CheckReport) -> String {
+    let mut s = format!("margin {:.5}", c.margin);
+    if c.passed {
+        s.push_str(", ok");
+    } else {
+        s.push_str(", FAILED");
+        if !c.remedies.is_empty() {
+            s.push_str("; remedy: ");
+            s.push_str(
+                &c.remedies
+                    .iter()
+                    .map(|r| r.to_string())
+                    .collect::<Vec<_>>()
+                    .join(", or "),
+            );
+        }
+    }
+    s
+}
+
+/// Computes the geometry, the checks and the rating of a validated gear file.
+pub fn evaluate(input: &GearFile) -> Result<GearReport, GearFileError> {
+    let pair = GearPair::new(input.spec).map_err(|e| GearFileError::Invalid {
+        file: input.file.clone(),
+        name: input.name.clone(),
+        field: "teeth".into(),
+        value: format!("{:?}", [input.spec.pinion.teeth, input.spec.gear.teeth]),
+        rule: e.to_string(),
+    })?;
+    let checks = pair.checks();
+    let rating = match (&input.rating, input.face_width) {
+        (Some(r), Some(b)) => Some(rate(&pair, r, b).map_err(|e| e.to_string())),
+        _ => None,
+    };
+    Ok(GearReport {
+        input: input.clone(),
+        pair,
+        checks,
+        rating,
+    })
+}
+
+fn rate(pair: &GearPair, r: &RatingInputs, face_width: f64) -> Result<RatingResult, GearError> {
+    let mut warnings = Vec::new();
+    let u = pair.ratio;
+    if u < 1.0 {
+        warnings.push(
+            "gear 1 is the larger member; AGMA's pinion is the smaller one, so its diameter and CH apply to gear 2 (not applied here: gear 1 is rated as the pinion)".to_string(),
+        );
+    }
+    let d1 = pair.pinion.working;
+    let v = r.pinion_speed * d1 / 2.0;
+    let (power, torque) = match r.load {
+        Load::Power(p) => (p, p / r.pinion_speed),
+        Load::Torque(t) => (t * r.pinion_speed, t),
+    };
+    let wt = torque / (d1 / 2.0);
+    let (kv, kv_limit) = match r.kv {
+        KvInput::Given(k) => (k, None),
+        KvInput::Quality(q) => {
+            let d = dynamic_factor(q, v)?;
+            if !d.within_limit {
+                warnings.push(format!(
+                    "pitch-line velocity {:.3} m/s exceeds the Kv curve's limit {:.3} m/s: Kv is extrapolated",
+                    v, d.v_max
+                ));
+            }
+            (d.kv, Some(d.v_max))
+        }
+    };
+    let i = match r.i {
+        IInput::Given(i) => i,
+        IInput::Form(f) => pitting_geometry_factor(pair, f)?,
+    };
+    let cycles = [r.pinion_cycles, r.pinion_cycles / u];
+    let yn = [
+        bending_cycle_factor(cycles[0], r.bending_low, r.bending_high)?,
+        bending_cycle_factor(cycles[1], r.bending_low, r.bending_high)?,
+    ];
+    let zn = [
+        pitting_cycle_factor(cycles[0], r.nitrided)?,
+        pitting_cycle_factor(cycles[1], r.nitrided)?,
+    ];
+    let ch_gear = match (
+        r.hardness_ratio_factor,
+        r.members[0].hardness,
+        r.members[1].hardness,
+    ) {
+        (Some(ch), _, _) => ch,
+        (None, Some(hp), Some(hg)) if u >= 1.0 => hardness_ratio_factor(
+            HardnessPairing::ThroughHardened {
+                pinion_hb: hp,
+                gear_hb: hg,
+            },
+            u,
+        )?,
+        _ => 1.0,
+    };
+    let ch = [1.0, ch_gear];
+    let m = pair.spec.module;
+    let member = |k: usize| MemberData {
+        j: r.members[k].j,
+        rim: r.members[k].rim_factor,
+        bending_allowable: r.members[k].bending_allowable,
+        contact_allowable: r.members[k].contact_allowable,
+        yn: yn[k],
+        zn: zn[k],
+        ch: ch[k],
+    };
+    let size = match (r.members[0].lewis_y, r.members[1].lewis_y) {
+        (Some(y1), Some(y2)) => SizeFactor::Shigley { lewis_y: [y1, y2] },
+        _ => SizeFactor::Given([
+            r.members[0].size_factor.unwrap_or(1.0),
+            r.members[1].size_factor.unwrap_or(1.0),
+        ]),
+    };
+    let set = GearSetRating {
+        module: m,
+        pinion_diameter: d1,
+        overload: r.overload,
+        load_distribution: r.load_distribution,
+        size,
+        surface_condition: r.surface_condition,
+        geometry_i: i,
+        elastic_coefficient: r.elastic_coefficient,
+        temperature: r.temperature_factor,
+        reliability: r.reliability_factor,
+        pinion: member(0),
+        gear: member(1),
+    };
+    let km = r.load_distribution.factor(face_width, d1)?;
+    if !km.within_validity {
+        warnings.push(format!(
+            "face width / pinion diameter = {:.3} > 2: outside the empirical Km method",
+            face_width / d1
+        ));
+    }
+    let out = set.rate(wt, kv, face_width)?;
+    Ok(RatingResult {
+        power,
+        pinion_torque: torque,
+        pitch_line_velocity: v,
+        tangential_load: wt,
+        kv,
+        kv_velocity_limit: kv_limit,
+        km: out.km,
+        i,
+        cycles,
+        ks: out.ks,
+        yn,
+        zn,
+        ch,
+        bending_stress: out.bending_stress,
+        contact_stress: out.contact_stress,
+        bending_safety: out.bending_safety,
+        contact_safety: out.contact_safety,
+        warnings,
+    })
+}
+
+/// Text for a Markdown table cell: `|` escaped.
+fn cell(s: &str) -> String {
+    s.replace('|', "\\|")
+}
+
+fn diameters_json(d: &cardan_gears::Diameters) -> Value {
+    json!({
+        "reference_diameter": d.reference,
+        "base_diameter": d.base,
+        "tip_diameter": d.tip,
+        "root_diameter": d.root,
+        "working_diameter": d.working,
+    })
+}
+
+impl GearReport {
+    /// `gear.json` (see README.md, "Gear pair calculator"): SI numbers (m, N, Pa, W, rad/s),
+    /// angles in degrees in fields named `*_deg`.
+    pub fn to_json(&self) -> Value {
+        let p = &self.pair;
+        let s = &p.spec;
+        let checks: Vec<Value> = self
+            .checks
+            .iter()
+            .map(|c| {
+                let (name, severity, meaning) = check_info(c.kind);
+                json!({
+                    "check": name,
+                    "severity": match severity { Severity::Error => "error", Severity::Warning => "warning" },
+                    "passed": c.passed,
+                    "margin": c.margin,
+                    "rule": meaning,
+                    "remedies": c.remedies.iter().map(|r| r.to_string()).collect::<Vec<_>>(),
+                })
+            })
+            .collect();
+        let warnings: Vec<String> = self
+            .checks
+            .iter()
+            .filter(|c| !c.passed && check_info(c.kind).1 == Severity::Warning)
+            .map(|c| format!("{}: {}", check_info(c.kind).0, remedy_text(c)))
+            .collect();
+        let rating = match &self.rating {
+            None => Value::Null,
+            Some(Err(e)) => json!({ "error": e }),
+            Some(Ok(r)) => {
+                let inputs = self.input.rating.as_ref().expect("rated pairs have inputs");
+                let member = |k: usize| {
+                    let mi = &inputs.members[k];
+                    json!({
+                        "cycles": r.cycles[k],
+                        "j": mi.j,
+                        "kb": mi.rim_factor,
+                        "ks": r.ks[k],
+                        "yn": r.yn[k],
+                        "zn": r.zn[k],
+                        "ch": r.ch[k],
+                        "bending_allowable": mi.bending_allowable,
+                        "contact_allowable": mi.contact_allowable,
+                        "bending_stress": r.bending_stress[k],
+                        "contact_stress": r.contact_stress[k],
+                        "bending_safety_factor": r.bending_safety[k],
+                        "contact_safety_factor": r.contact_safety[k],
+                    })
+                };
+                json!({
+                    "power": r.power,
+                    "pinion_torque": r.pinion_torque,
+                    "pinion_speed": inputs.pinion_speed,
+                    "pitch_line_velocity": r.pitch_line_velocity,
+                    "tangential_load": r.tangential_load,
+                    "face_width": self.input.face_width,
+                    "kv": r.kv,
+                    "kv_velocity_limit": r.kv_velocity_limit,
+                    "ko": inputs.overload,
+                    "km": r.km,
+                    "i": r.i,
+                    "cp": inputs.elastic_coefficient,
+                    "kt": inputs.temperature_factor,
+                    "kr": inputs.reliability_factor,
+                    "cf": inputs.surface_condition,
+                    "pinion": member(0),
+                    "gear": member(1),
+                    "warnings": r.warnings,
+                })
+            }
+        };
+        let mut inputs = Map::new();
+        for (k, v) in &self.input.given {
+            inputs.insert(k.clone(), json!(v));
+        }
+        json!({
+            "schema_version": SCHEMA_VERSION,
+            "name": self.input.name,
+            "file": self.input.file.display().to_string(),
+            "pair": if p.internal { "internal" } else { "external" },
+            "passed": self.failures().is_empty(),
+            "failures": self.failures(),
+            "warnings": warnings,
+            "inputs": inputs,
+            "module": s.module,
+            "cardan_crank_length": self.input.cardan_crank_length,
+            "pressure_angle_deg": s.pressure_angle.to_degrees(),
+            "teeth": [s.pinion.teeth, s.gear.teeth],
+            "profile_shift": [s.pinion.shift, s.gear.shift],
+            "ratio": p.ratio,
+            "working_pressure_angle_deg": p.working_pressure_angle.to_degrees(),
+            "operating_pressure_angle_deg": p.operating_pressure_angle.to_degrees(),
+            "working_center_distance": p.working_centre_distance,
+            "center_distance": p.centre_distance,
+            "base_pitch": p.base_pitch,
+            "path_of_contact": p.path_of_contact,
+            "contact_ratio": p.contact_ratio,
+            "backlash_circumferential": p.backlash_circumferential,
+            "backlash_normal": p.backlash_normal,
+            "gear_addendum": p.gear_addendum(),
+            "max_gear_addendum_without_interference": p.max_gear_addendum_without_interference(),
+            "trochoid_ratio": if p.internal { json!(p.trochoid_ratio()) } else { Value::Null },
+            "pinion": diameters_json(&p.pinion),
+            "gear": diameters_json(&p.gear),
+            "face_width": self.input.face_width,
+            "checks": checks,
+            "rating": rating,
+        })
+    }
+
+    /// `report.md`: inputs with units, geometry, checks with margins and remedies, rating.
+    pub fn to_markdown(&self) -> String {
+        let p = &self.pair;
+        let s = &p.spec;
+        let mm = |x: f64| format!("{:.4}", x * 1e3);
+        let mut o = String::new();
+        let _ = writeln!(o, "# Gear pair `{}`\n", self.input.name);
+        let _ = writeln!(
+            o,
+            "{} spur pair {}/{} from `{}`.\n",
+            if p.internal { "Internal" } else { "External" },
+            s.pinion.teeth,
+            s.gear.teeth,
+            self.input.file.display()
+        );
+        let failures = self.failures();
+        if failures.is_empty() {
+            let _ = writeln!(
+                o,
+                "**Verdict: the pair works** (every blocking check passed).\n"
+            );
+        } else {
+            let _ = writeln!(o, "**Verdict: the pair cannot work as given.**\n");
+            for f in &failures {
+                let _ = writeln!(o, "- {f}");
+            }
+            o.push('\n');
+        }
+
+        let _ = writeln!(o, "## Inputs\n\n| field | value as given |\n|---|---|");
+        for (k, v) in &self.input.given {
+            let _ = writeln!(o, "| `{k}` | `{}` |", cell(v));
+        }
+        let _ = writeln!(
+            o,
+            "\nBare numbers are SI (lengths m, speeds rad/s, power W, torque N·m, stress Pa), except angles (degrees).\n"
+        );
+
+        let _ = writeln!(o, "## Geometry (ISO 21771)\n");
+        let _ = writeln!(o, "| quantity | value | unit |\n|---|---:|---|");
+        let mut row = |q: &str, v: String, u: &str| {
+            let _ = writeln!(o, "| {} | {v} | {u} |", cell(q));
+        };
+        row("module m", mm(s.module), "mm");
+        if let Some(e) = self.input.cardan_crank_length {
+            row("cardan crank length e (m = 2e/z1, A9.1.37)", mm(e), "mm");
+        }
+        row(
+            "reference pressure angle α",
+            format!("{:.4}", s.pressure_angle.to_degrees()),
+            "deg",
+        );
+        row(
+            "teeth z1 / z2",
+            format!("{} / {}", s.pinion.teeth, s.gear.teeth),
+            "-",
+        );
+        row(
+            "profile shift x1 / x2 (ISO)",
+            format!("{:.4} / {:.4}", s.pinion.shift, s.gear.shift),
+            "-",
+        );
+        row("ratio u = |z2|/z1", format!("{:.4}", p.ratio), "-");
+        row(
+            "working pressure angle αw",
+            format!("{:.4}", p.working_pressure_angle.to_degrees()),
+            "deg",
+        );
+        row(
+            "operating pressure angle",
+            format!("{:.4}", p.operating_pressure_angle.to_degrees()),
+            "deg",
+        );
+        row(
+            "zero-backlash centre distance aw",
+            mm(p.working_centre_distance),
+            "mm",
+        );
+        row("centre distance a", mm(p.centre_distance), "mm");
+        row("base pitch pb", mm(p.base_pitch), "mm");
+        row("path of contact gα", mm(p.path_of_contact), "mm");
+        row("contact ratio εα", format!("{:.4}", p.contact_ratio), "-");
+        row(
+            "backlash jt / jn",
+            format!(
+                "{} / {}",
+                mm(p.backlash_circumferential),
+                mm(p.backlash_normal)
+            ),
+            "mm",
+        );
+        row("gear addendum", mm(p.gear_addendum()), "mm");
+        row(
+            "largest gear addendum without involute interference",
+            mm(p.max_gear_addendum_without_interference()),
+            "mm",
+        );
+        if let Some(b) = self.input.face_width {
+            row("face width b", mm(b), "mm");
+        }
+        let _ = writeln!(o, "\n| diameter [mm] | pinion | gear |\n|---|---:|---:|");
+        for (name, f) in [
+            (
+                "reference d",
+                (|d: &cardan_gears::Diameters| d.reference) as fn(&cardan_gears::Diameters) -> f64,
+            ),
+            ("base db", |d| d.base),
+            ("tip da", |d| d.tip),
+            ("root df", |d| d.root),
+            ("working dw", |d| d.working),
+        ] {
+            let _ = writeln!(o, "| {name} | {} | {} |", mm(f(&p.pinion)), mm(f(&p.gear)));
+        }
+
+        let _ = writeln!(
+            o,
+            "\n## Checks\n\n| check | kind | margin | result | rule | remedy |\n|---|---|---:|---|---|---|"
+        );
+        for c in &self.checks {
+            let (name, severity, meaning) = check_info(c.kind);
+            let _ = writeln!(
+                o,
+                "| {name} | {} | {:.5} | {} | {} | {} |",
+                match severity {
+                    Severity::Error => "blocking",
+                    Severity::Warning => "rule of thumb",
+                },
+                c.margin,
+                if c.passed { "ok" } else { "**FAILED**" },
+                cell(meaning),
+                cell(
+                    &c.remedies
+                        .iter()
+                        .map(|r| r.to_string())
+                        .collect::<Vec<_>>()
+                        .join("; or ")
+                )
+            );
+        }
+
+        match &self.rating {
+            None => {
+                let _ = writeln!(o, "\n## Rating\n\nNo `[rating]` table: geometry only.");
+            }
+            Some(Err(e)) => {
+                let _ = writeln!(o, "\n## Rating\n\nThe pair could not be rated: {e}");
+            }
+            Some(Ok(r)) => {
+                let inputs = self.input.rating.as_ref().expect("rated pairs have inputs");
+                let _ = writeln!(o, "\n## Rating (AGMA 2001-D04)\n");
+                let _ = writeln!(o, "| quantity | value | unit |\n|---|---:|---|");
+                let mut row = |q: &str, v: String, u: &str| {
+                    let _ = writeln!(o, "| {q} | {v} | {u} |");
+                };
+                row("power", format!("{:.1}", r.power), "W");
+                row("pinion torque", format!("{:.3}", r.pinion_torque), "N·m");
+                row(
+                    "pinion speed",
+                    format!("{:.2}", inputs.pinion_speed * 30.0 / PI),
+                    "rpm",
+                );
+                row(
+                    "pitch-line velocity",
+                    format!("{:.4}", r.pitch_line_velocity),
+                    "m/s",
+                );
+                row(
+                    "tangential load Wt",
+                    format!("{:.2}", r.tangential_load),
+                    "N",
+                );
+                row("dynamic factor Kv", format!("{:.4}", r.kv), "-");
+                row("overload factor Ko", format!("{:.4}", inputs.overload), "-");
+                row("load distribution factor Km", format!("{:.4}", r.km), "-");
+                row("pitting geometry factor I", format!("{:.4}", r.i), "-");
+                row(
+                    "elastic coefficient Cp",
+                    format!("{:.2}", inputs.elastic_coefficient / 1e3),
+                    "√MPa",
+                );
+                row(
+                    "temperature factor KT",
+                    format!("{:.4}", inputs.temperature_factor),
+                    "-",
+                );
+                row(
+                    "reliability factor KR",
+                    format!("{:.4}", inputs.reliability_factor),
+                    "-",
+                );
+                let _ = writeln!(
+                    o,
+                    "\n| per member | pinion | gear | unit |\n|---|---:|---:|---|"
+                );
+                let mi = &inputs.members;
+                let mut pair_row = |q: &str, a: [f64; 2], fmt: &dyn Fn(f64) -> String, u: &str| {
+                    let _ = writeln!(o, "| {q} | {} | {} | {u} |", fmt(a[0]), fmt(a[1]));
+                };
+                let f4 = |x: f64| format!("{x:.4}");
+                let f3 = |x: f64| format!("{x:.3}");
+                let mpa = |x: f64| format!("{:.2}", x / 1e6);
+                let cyc = |x: f64| format!("{x:.4e}");
+                pair_row("load cycles", r.cycles, &cyc, "-");
+                pair_row("bending geometry factor J", [mi[0].j, mi[1].j], &f4, "-");
+                pair_row(
+                    "rim thickness factor KB",
+                    [mi[0].rim_factor, mi[1].rim_factor],
+                    &f4,
+                    "-",
+                );
+                pair_row("size factor Ks", r.ks, &f4, "-");
+                pair_row("stress-cycle factor YN", r.yn, &f4, "-");
+                pair_row("stress-cycle factor ZN", r.zn, &f4, "-");
+                pair_row("hardness-ratio factor CH", r.ch, &f4, "-");
+                pair_row(
+                    "allowable bending stress St",
+                    [mi[0].bending_allowable, mi[1].bending_allowable],
+                    &mpa,
+                    "MPa",
+                );
+                pair_row(
+                    "allowable contact stress Sc",
+                    [mi[0].contact_allowable, mi[1].contact_allowable],
+                    &mpa,
+                    "MPa",
+                );
+                pair_row("bending stress σ", r.bending_stress, &mpa, "MPa");
+                pair_row("contact stress σc", r.contact_stress, &mpa, "MPa");
+                pair_row("bending safety factor SF", r.bending_safety, &f3, "-");
+                pair_row(
+                    "pitting safety factor SH (stress ratio; compare SH² with SF)",
+                    r.contact_safety,
+                    &f3,
+                    "-",
+                );
+                for w in &r.warnings {
+                    let _ = writeln!(o, "\nWarning: {w}");
+                }
+            }
+        }
+        o
+    }
+}
+
+/// What [`run`] wrote.
+#[derive(Debug)]
+pub struct GearRun {
+    /// `DIR/<name>`.
+    pub dir: PathBuf,
+    pub report: GearReport,
+}
+
+/// Reads, validates and rates `file` and writes `out/<name>/gear.json` and `report.md`, the
+/// folder replaced as a whole. A pair that cannot work is still written; see
+/// [`GearReport::failures`].
+pub fn run(file: &Path, out: &Path) -> Result<GearRun, GearFileError> {
+    let input = load(file)?;
+    let report = evaluate(&input)?;
+    let dir = out.join(&input.name);
+    let cannot_write = |e: anyhow::Error| GearFileError::Write {
+        file: input.file.clone(),
+        name: input.name.clone(),
+        dir: dir.clone(),
+        message: format!("{e:#}"),
+    };
+    let tmp = temporary_dir(&dir).map_err(cannot_write)?;
+    let written = (|| -> anyhow::Result<()> {
+        let mut json = serde_json::to_string_pretty(&report.to_json())?;
+        json.push('\n');
+        write_file(&tmp.join("gear.json"), json.as_bytes())?;
+        write_file(&tmp.join("report.md"), report.to_markdown().as_bytes())?;
+        replace_dir(&tmp, &dir)
+    })();
+    if let Err(e) = written {
+        let _ = std::fs::remove_dir_all(&tmp);
+        return Err(cannot_write(e));
+    }
+    Ok(GearRun { dir, report })
+}

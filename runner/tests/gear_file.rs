@@ -1,0 +1,422 @@
+//! Gear files against published examples (Shigley Example 14-4, the KHK internal-gear example of
+//! the validation note §1.2), the interfering 20/40 internal pair, the shipped examples in
+//! `configs-gears/`, bad files and the output folder.
+
+use cardan_gears::units::{INCH, LBF, PSI};
+use cardan_runner::gear_file::{evaluate, load, parse, run, GearReport, Quantity};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+fn shipped(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../configs-gears")
+        .join(name)
+}
+
+fn report_of(text: &str) -> GearReport {
+    evaluate(&parse(Path::new("gears/test.toml"), text).unwrap()).unwrap()
+}
+
+fn error_of(text: &str) -> String {
+    match parse(Path::new("gears/bad.toml"), text) {
+        Ok(_) => panic!("accepted a bad gear file:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+fn assert_mentions(message: &str, parts: &[&str]) {
+    for p in parts {
+        assert!(
+            message.contains(p),
+            "message {message:?} does not mention {p:?}"
+        );
+    }
+}
+
+/// The tolerance of `crates/gears/tests/agma.rs`: half a unit of the last printed digit plus
+/// 0.1 % for Shigley's rounding of intermediate factors to 3–4 figures.
+fn close(value: f64, printed: f64, half_unit: f64) -> bool {
+    (value - printed).abs() <= half_unit + 1e-3 * printed.abs()
+}
+
+fn check<'a>(json: &'a Value, name: &str) -> &'a Value {
+    json["checks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["check"] == name)
+        .unwrap_or_else(|| panic!("no check {name}"))
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+#[test]
+fn shigley_example_14_4_through_the_shipped_gear_file() {
+    // Validation note 2.1: Budynas & Nisbett, Shigley's MED, Example 14-4, with its KR = 0.85
+    // (AGMA table at R = 0.90) and Cp = 2300 √psi pinned as the example does.
+    let dir = tempfile::tempdir().unwrap();
+    let written = run(&shipped("shigley-14-4.toml"), dir.path()).unwrap();
+    assert!(written.report.failures().is_empty());
+    let text = std::fs::read_to_string(dir.path().join("shigley-14-4/gear.json")).unwrap();
+    let j: Value = serde_json::from_str(&text).unwrap();
+    let r = &j["rating"];
+    // Factors printed by Shigley.
+    assert!(close(num(&r["tangential_load"]) / LBF, 164.8, 0.05));
+    assert!(close(num(&r["kv"]), 1.377, 0.0005));
+    assert!(close(num(&r["i"]), 0.121, 0.0005));
+    assert!(close(num(&r["km"]), 1.22, 0.005));
+    assert!(close(num(&r["kr"]), 0.85, 0.0));
+    assert!(close(num(&r["pinion"]["ks"]), 1.043, 0.0005));
+    assert!(close(num(&r["gear"]["ks"]), 1.052, 0.0005));
+    // Outputs: bending 6417 / 4854 psi, contact 70 360 / 70 660 psi, SF 5.62 / 6.82,
+    // SH 1.69 / 1.52.
+    let psi = |v: &Value| num(v) / PSI;
+    for (member, bending, contact, sf, sh) in [
+        ("pinion", 6417.0, 70_360.0, 5.62, 1.69),
+        ("gear", 4854.0, 70_660.0, 6.82, 1.52),
+    ] {
+        let m = &r[member];
+        let s = psi(&m["bending_stress"]);
+        assert!(close(s, bending, 0.5), "{member} bending {s}");
+        let sc = psi(&m["contact_stress"]);
+        assert!(close(sc, contact, 5.0), "{member} contact {sc}");
+        let f = num(&m["bending_safety_factor"]);
+        assert!(close(f, sf, 0.005), "{member} SF {f}");
+        let h = num(&m["contact_safety_factor"]);
+        assert!(close(h, sh, 0.005), "{member} SH {h}");
+    }
+    // Geometry: dP = 1.7 in, standard centre distance (17 + 52)/20 in = 3.45 in, exact.
+    assert!((num(&j["pinion"]["working_diameter"]) / INCH - 1.7).abs() < 1e-12);
+    assert!((num(&j["center_distance"]) / INCH - 3.45).abs() < 1e-12);
+    assert!((num(&j["working_pressure_angle_deg"]) - 20.0).abs() < 1e-12);
+    assert_eq!(j["passed"], true);
+    // A 17-tooth 20° pinion without shift is just below the rack-generation undercut limit:
+    // a warning, not a failure.
+    assert_eq!(check(&j, "pinion_undercut")["severity"], "warning");
+    assert_eq!(check(&j, "pinion_undercut")["passed"], false);
+    let md = std::fs::read_to_string(dir.path().join("shigley-14-4/report.md")).unwrap();
+    assert_mentions(
+        &md,
+        &[
+            "bending stress σ",
+            "pitting safety factor SH",
+            "| bending safety factor SF | 5.615 | 6.827 | - |",
+            "`\"4 hp\"`",
+        ],
+    );
+}
+
+#[test]
+fn torque_and_power_give_the_same_rating() {
+    // 4 hp at 1800 rpm = 15.8245 N·m on the pinion: the same stresses to rounding.
+    let text = std::fs::read_to_string(shipped("shigley-14-4.toml")).unwrap();
+    let a = report_of(&text);
+    let t = 4.0 * cardan_gears::units::HORSEPOWER / (1800.0 * std::f64::consts::PI / 30.0);
+    let b = report_of(&text.replace("power = \"4 hp\"", &format!("torque = \"{t} N*m\"")));
+    let (ra, rb) = (
+        a.rating.unwrap().unwrap(),
+        b.rating.unwrap().unwrap(),
+    );
+    for k in 0..2 {
+        assert!((ra.bending_stress[k] / rb.bending_stress[k] - 1.0).abs() < 1e-12);
+        assert!((ra.contact_safety[k] / rb.contact_safety[k] - 1.0).abs() < 1e-12);
+    }
+}
+
+const KHK: &str = r#"
+name = "khk-internal"
+module = "3 mm"
+pressure_angle = 20
+teeth = [16, -24]
+profile_shift = [0.0, -0.516]   # KHK x2 = +0.516 is ISO x2 = -0.516
+"#;
+
+#[test]
+fn khk_internal_gear_example() {
+    // Validation note 1.2 (KHK Gear Technical Reference, m = 3, α = 20°, 16/24, x2 = 0.516):
+    // values printed to 4–6 significant figures, tolerance half a unit of the last digit, as in
+    // crates/gears/tests/geometry.rs.
+    let j = report_of(KHK).to_json();
+    let mm = |v: &Value| num(v) * 1e3;
+    assert_eq!(j["pair"], "internal");
+    assert!((num(&j["working_pressure_angle_deg"]) - 31.3209).abs() < 5e-5);
+    assert!((mm(&j["center_distance"]) - 13.2000).abs() < 5e-5);
+    assert!((mm(&j["pinion"]["reference_diameter"]) - 48.0).abs() < 1e-9);
+    assert!((mm(&j["gear"]["reference_diameter"]) - 72.0).abs() < 1e-9);
+    assert!((mm(&j["pinion"]["base_diameter"]) - 45.1052).abs() < 5e-5);
+    assert!((mm(&j["gear"]["base_diameter"]) - 67.6579).abs() < 5e-5);
+    assert!((mm(&j["pinion"]["working_diameter"]) - 52.7998).abs() < 5e-5);
+    assert!((mm(&j["gear"]["working_diameter"]) - 79.1997).abs() < 5e-5);
+    assert!((mm(&j["pinion"]["tip_diameter"]) - 54.000).abs() < 5e-4);
+    assert!((mm(&j["gear"]["tip_diameter"]) - 69.096).abs() < 5e-4);
+    assert!((num(&j["contact_ratio"]) - 1.6592).abs() < 5e-5);
+    // Path of contact = εα · π m cos α (its definition), so it carries the same check.
+    let pb = std::f64::consts::PI * 3.0 * 20f64.to_radians().cos();
+    assert!((mm(&j["path_of_contact"]) / pb - 1.6592).abs() < 5e-5);
+    // Involute interference OK: z1/z2 = 0.6667 >= KHK limit 0.6594 (margin = z1/z2 − limit).
+    let inv = check(&j, "involute_interference_pinion");
+    assert_eq!(inv["passed"], true);
+    assert!((16.0 / 24.0 - num(&inv["margin"]) - 0.6594).abs() < 5e-5);
+    // Trochoid OK: 0.6667 >= θ2/θ1 = 0.6314.
+    assert!((num(&j["trochoid_ratio"]) - 0.6314).abs() < 5e-5);
+    assert_eq!(check(&j, "trochoid_interference")["passed"], true);
+    // KHK's pair breaks only the rules of thumb (teeth difference 8 < 10, 16-tooth pinion
+    // without shift): warnings, so the pair passes.
+    assert_eq!(j["passed"], true);
+    assert_eq!(j["warnings"].as_array().unwrap().len(), 2);
+    assert_eq!(check(&j, "teeth_difference")["severity"], "warning");
+
+    // The same pair unshifted: the ring tip (66 mm) lies inside its base circle.
+    let q = report_of(&KHK.replace("profile_shift = [0.0, -0.516]", ""));
+    let f = q.failures();
+    assert!(
+        f.iter().any(|m| m.contains("ring_tip_inside_base_circle")
+            && m.contains("shorter ring addendum")),
+        "{f:?}"
+    );
+}
+
+const INTERFERING: &str = r#"
+name = "internal-20-40-full"
+module = "3 mm"
+pressure_angle = "20 deg"
+teeth = [20, -40]
+"#;
+
+#[test]
+fn interfering_internal_pair_is_written_and_fails_naming_the_remedy() {
+    // Validation note 1.3/1.4: 20/40, 20°, full ring addendum interferes (KHK limit 0.592 >
+    // z1/z2 = 0.5); largest ring addendum 0.8975 m (4 decimals, ±5e-5 m).
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("pair.toml");
+    std::fs::write(&file, INTERFERING).unwrap();
+    let written = run(&file, &dir.path().join("out")).unwrap();
+    let f = written.report.failures();
+    assert_eq!(f.len(), 1, "{f:?}");
+    assert_mentions(
+        &f[0],
+        &[
+            "involute_interference_pinion",
+            "FAILED",
+            "shorter ring addendum (at most 2.692",
+            "profile shift",
+            "larger pressure angle",
+        ],
+    );
+    // Geometry is still written, with the check, its margin and remedies.
+    let j: Value = serde_json::from_str(
+        &std::fs::read_to_string(written.dir.join("gear.json")).unwrap(),
+    )
+    .unwrap();
+    assert_eq!(j["passed"], false);
+    let c = check(&j, "involute_interference_pinion");
+    assert_eq!(c["passed"], false);
+    assert!((0.5 - num(&c["margin"]) - 0.592).abs() < 5e-4);
+    assert!(c["remedies"][0]
+        .as_str()
+        .unwrap()
+        .starts_with("shorter ring addendum"));
+    assert!((num(&j["max_gear_addendum_without_interference"]) / 3e-3 - 0.8975).abs() < 5e-5);
+    assert!((num(&j["contact_ratio"]) - 2.1500).abs() < 5e-5);
+    assert!(written.dir.join("report.md").is_file());
+    let md = std::fs::read_to_string(written.dir.join("report.md")).unwrap();
+    assert_mentions(&md, &["cannot work", "**FAILED**", "shorter ring addendum"]);
+}
+
+#[test]
+fn karhula_cardan_pair_example() {
+    // Karhula 2008 A9.1.37: m = 2e/z1 = 2·30 mm/20 = 3 mm; ring addendum 0.8 m gives εα 1.7649
+    // (validation note 1.4, 4 decimals) and no interference.
+    let input = load(&shipped("karhula-cardan-20-40.toml")).unwrap();
+    let report = evaluate(&input).unwrap();
+    assert!(report.failures().is_empty(), "{:?}", report.failures());
+    let j = report.to_json();
+    assert!((num(&j["module"]) - 3e-3).abs() < 1e-15);
+    assert!((num(&j["center_distance"]) - 0.03).abs() < 1e-15);
+    assert!((num(&j["contact_ratio"]) - 1.7649).abs() < 5e-5);
+    assert!((num(&j["gear"]["tip_diameter"]) - 0.1152).abs() < 1e-12);
+    assert_eq!(j["warnings"].as_array().unwrap().len(), 0);
+    assert!(j["rating"].is_null());
+}
+
+#[test]
+fn bad_files_name_file_pair_field_and_rule() {
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "teeth = [20, -40]",
+            "teeth = [20, -15]",
+            &["teeth", "[20, -15]", "more teeth than the pinion"],
+        ),
+        (
+            "teeth = [20, -40]",
+            "teeth = [20]",
+            &["teeth", "two values"],
+        ),
+        (
+            "teeth = [20, -40]",
+            "teeth = [20.5, -40]",
+            &["teeth", "whole numbers"],
+        ),
+        (
+            "module = \"3 mm\"",
+            "module = \"3 furlongs\"",
+            &["module", "furlongs", "accepted: m, mm, cm, in"],
+        ),
+        ("module = \"3 mm\"", "module = -3", &["module", "positive"]),
+        ("module = \"3 mm\"", "", &["module", "cardan_crank_length"]),
+        (
+            "pressure_angle = \"20 deg\"",
+            "pressure_angle = \"50 deg\"",
+            &["pressure_angle", "45"],
+        ),
+        (
+            "teeth = [20, -40]",
+            "teeth = [20, -40]\ncenter_distance = \"1 mm\"",
+            &["center_distance", "1 mm"],
+        ),
+        (
+            "teeth = [20, -40]",
+            "teeth = [20, -40]\ntip_diameter = [\"66 mm\", \"130 mm\"]",
+            &["tip_diameter", "root circle"],
+        ),
+        (
+            "teeth = [20, -40]",
+            "teeth = [20, -40]\nmodul = 3",
+            &["unknown field", "modul"],
+        ),
+        (
+            "name = \"internal-20-40-full\"",
+            "name = \"../x\"",
+            &["name", "folder name"],
+        ),
+    ];
+    for (from, to, parts) in cases {
+        let text = INTERFERING.replace(from, to);
+        let e = error_of(&text);
+        assert_mentions(&e, &["gears/bad.toml"]);
+        assert_mentions(&e, parts);
+    }
+    // Rating inputs.
+    let shigley = std::fs::read_to_string(shipped("shigley-14-4.toml")).unwrap();
+    let rating: &[(&str, &str, &[&str])] = &[
+        (
+            "power = \"4 hp\"",
+            "power = \"4 horses\"",
+            &["rating.power", "horses", "hp"],
+        ),
+        ("power = \"4 hp\"", "", &["rating.power", "torque"]),
+        (
+            "quality = 6 ",
+            "quality = 3 ",
+            &["rating.quality", "[5, 12]"],
+        ),
+        (
+            "reliability = 0.90",
+            "reliability = 1.5",
+            &["rating.reliability", "0.9999"],
+        ),
+        (
+            "hardness = 240",
+            "hardness = 500",
+            &["rating.pinion.hardness", "[140, 400]"],
+        ),
+        (
+            "face_width = \"1.5 in\"",
+            "",
+            &["face_width", "[rating]"],
+        ),
+        (
+            "lewis_y = 0.412",
+            "",
+            &["rating.gear.lewis_y", "both members"],
+        ),
+        (
+            "elastic_coefficient = \"2300 sqrt(psi)\"",
+            "",
+            &["rating.elastic_coefficient", "youngs_modulus"],
+        ),
+        (
+            "enclosure = \"commercial\"",
+            "enclosure = \"closed\"",
+            &["rating.enclosure", "\"precision\""],
+        ),
+        (
+            "pinion_speed = \"1800 rpm\"",
+            "pinion_speed = \"0 rpm\"",
+            &["rating.pinion_speed", "positive"],
+        ),
+    ];
+    for (from, to, parts) in rating {
+        assert!(shigley.contains(from), "{from}");
+        let e = error_of(&shigley.replace(from, to));
+        assert_mentions(&e, &["gears/bad.toml", "shigley-14-4"]);
+        assert_mentions(&e, parts);
+    }
+    // Syntax: the TOML reader's message with the file.
+    assert_mentions(&error_of("name = "), &["gears/bad.toml"]);
+}
+
+#[test]
+fn material_constants_give_the_elastic_coefficient() {
+    // Cp from E = 30 Mpsi, ν = 0.3 on both members is 2290.6 √psi (formula; Shigley's table
+    // rounds it to 2300), so SH rises by 2300/2290.6.
+    let text = std::fs::read_to_string(shipped("shigley-14-4.toml")).unwrap();
+    let table = report_of(&text).rating.unwrap().unwrap();
+    let with_materials = text
+        .replace("elastic_coefficient = \"2300 sqrt(psi)\"", "")
+        .replace(
+            "grade = 1",
+            "grade = 1\nyoungs_modulus = \"30 Mpsi\"\npoisson_ratio = 0.3",
+        );
+    let r = report_of(&with_materials).rating.unwrap().unwrap();
+    let cp = (1.0 / (std::f64::consts::PI * 2.0 * (1.0 - 0.09) / (30e6 * PSI))).sqrt();
+    let ratio = 2300.0 * PSI.sqrt() / cp;
+    assert!((r.contact_safety[0] / table.contact_safety[0] - ratio).abs() < 1e-12);
+}
+
+#[test]
+fn local_units() {
+    let s = |x: &str| toml::Value::String(x.into());
+    let hp = cardan_gears::units::HORSEPOWER;
+    assert!((Quantity::Power.to_si(&s("4 hp")).unwrap() - 4.0 * hp).abs() < 1e-9);
+    assert_eq!(Quantity::Power.to_si(&s("3 kW")).unwrap(), 3000.0);
+    assert_eq!(Quantity::Power.to_si(&toml::Value::Float(5.0)).unwrap(), 5.0);
+    assert_eq!(Quantity::Torque.to_si(&s("20 N*m")).unwrap(), 20.0);
+    assert!((Quantity::Torque.to_si(&s("1 lbf*in")).unwrap() - LBF * INCH).abs() < 1e-15);
+    assert_eq!(Quantity::Stress.to_si(&s("12 MPa")).unwrap(), 12e6);
+    assert!((Quantity::Stress.to_si(&s("1 psi")).unwrap() - PSI).abs() < 1e-12);
+    assert!(
+        (Quantity::RootStress.to_si(&s("2300 sqrt(psi)")).unwrap() - 2300.0 * PSI.sqrt()).abs()
+            < 1e-9
+    );
+    assert_eq!(
+        Quantity::RootStress.to_si(&s("190 √MPa")).unwrap(),
+        190e3
+    );
+    assert!(Quantity::Power
+        .to_si(&s("4 N*m"))
+        .unwrap_err()
+        .contains("accepted: W, kW, MW, hp"));
+    assert!(Quantity::Stress.to_si(&toml::Value::Boolean(true)).is_err());
+    assert!(Quantity::Stress.to_si(&s("nan MPa")).is_err());
+}
+
+#[test]
+fn output_folder_is_replaced_as_a_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = shipped("karhula-cardan-20-40.toml");
+    let first = run(&file, dir.path()).unwrap();
+    std::fs::write(first.dir.join("stale.txt"), "old").unwrap();
+    let second = run(&file, dir.path()).unwrap();
+    assert_eq!(first.dir, second.dir);
+    assert!(!second.dir.join("stale.txt").exists());
+    assert!(second.dir.join("gear.json").is_file() && second.dir.join("report.md").is_file());
+    // Nothing but the pair's folder is left beside it (no temporary folders).
+    let names: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, vec![std::ffi::OsString::from("karhula-cardan-20-40")]);
+}
