@@ -157,41 +157,18 @@ impl CardanGear {
         };
         let topology = Topology {
             bodies: vec![
-                Body {
-                    name: "crankshaft",
-                    mass: 0.0,
-                    inertia: crankshaft_inertia,
-                },
-                Body {
-                    name: "wheel",
-                    mass: 0.0,
-                    inertia: wheel_inertia,
-                },
-                Body {
-                    name: "rod",
-                    mass: masses.rod_mass + masses.piston_mass,
-                    inertia: masses.rod_inertia,
-                },
+                Body::new("crankshaft", 0.0, crankshaft_inertia),
+                Body::new("wheel", 0.0, wheel_inertia),
+                Body::new(
+                    "rod",
+                    masses.rod_mass + masses.piston_mass,
+                    masses.rod_inertia,
+                ),
             ],
             joints: vec![
-                Joint {
-                    name: "main_bearing",
-                    kind: JointKind::Revolute { radius: r_main },
-                    body: CRANKSHAFT,
-                    other: None,
-                },
-                Joint {
-                    name: "crank_pin",
-                    kind: JointKind::Revolute { radius: r_crank },
-                    body: CRANKSHAFT,
-                    other: Some(WHEEL),
-                },
-                Joint {
-                    name: "piston_pin",
-                    kind: JointKind::Revolute { radius: r_pis },
-                    body: ROD,
-                    other: Some(WHEEL),
-                },
+                Joint::pin("main_bearing", r_main, CRANKSHAFT, None),
+                Joint::pin("crank_pin", r_crank, CRANKSHAFT, Some(WHEEL)),
+                Joint::pin("piston_pin", r_pis, ROD, Some(WHEEL)),
                 Joint {
                     name: "gear_mesh",
                     kind: JointKind::GearMesh {
@@ -203,12 +180,7 @@ impl CardanGear {
                     other: None,
                 },
             ],
-            pistons: vec![Piston {
-                name: "piston",
-                body: ROD,
-                axis: C::new(0.0, 1.0),
-                origin: C::new(0.0, 0.0),
-            }],
+            pistons: vec![Piston::in_line(ROD, 0.0)],
             crankshaft: CRANKSHAFT,
             extras: vec![],
         };

@@ -17,6 +17,16 @@ pub struct Body {
     pub inertia: f64,
 }
 
+impl Body {
+    pub fn new(name: &'static str, mass: f64, inertia: f64) -> Self {
+        Self {
+            name,
+            mass,
+            inertia,
+        }
+    }
+}
+
 /// How a joint transmits force.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum JointKind {
@@ -66,6 +76,28 @@ pub struct Joint {
     pub other: Option<usize>,
 }
 
+impl Joint {
+    /// A pin of journal radius `radius` (m) between `body` and `other`.
+    pub fn pin(name: &'static str, radius: f64, body: usize, other: Option<usize>) -> Self {
+        Self {
+            name,
+            kind: JointKind::Revolute { radius },
+            body,
+            other,
+        }
+    }
+
+    /// A slide between `body` and `other`.
+    pub fn slide(name: &'static str, body: usize, other: Option<usize>) -> Self {
+        Self {
+            name,
+            kind: JointKind::Prismatic,
+            body,
+            other,
+        }
+    }
+}
+
 /// A piston: the face the gas pushes, carried by `body`, sliding along `axis`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Piston {
@@ -75,6 +107,19 @@ pub struct Piston {
     pub axis: C,
     /// The point of the cylinder axis from which the piston position is measured, m.
     pub origin: C,
+}
+
+impl Piston {
+    /// The piston of an in-line machine: on `body`, along +y, its line `offset` (m) off the
+    /// main axis.
+    pub fn in_line(body: usize, offset: f64) -> Self {
+        Self {
+            name: "piston",
+            body,
+            axis: C::new(0.0, 1.0),
+            origin: C::new(offset, 0.0),
+        }
+    }
 }
 
 /// A per-step quantity only one mechanism has (a column of its per-step output).

@@ -15,7 +15,7 @@
 //! couple and no side force.
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Body, Joint, JointKind, JointLoad, Loads, Piston, State, Topology};
+use crate::model::{cross, Body, Joint, JointLoad, Loads, Piston, State, Topology};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
@@ -88,54 +88,21 @@ impl ScotchYoke {
         let [_, r_crank, r_main] = radii;
         let topology = Topology {
             bodies: vec![
-                Body {
-                    name: "crankshaft",
-                    mass: 0.0,
-                    inertia: masses.crankshaft_inertia,
-                },
-                Body {
-                    name: "block",
-                    mass: 0.0,
-                    inertia: 0.0,
-                },
-                Body {
-                    name: "yoke",
-                    mass: masses.rod_mass + masses.piston_mass,
-                    inertia: masses.rod_inertia,
-                },
+                Body::new("crankshaft", 0.0, masses.crankshaft_inertia),
+                Body::new("block", 0.0, 0.0),
+                Body::new(
+                    "yoke",
+                    masses.rod_mass + masses.piston_mass,
+                    masses.rod_inertia,
+                ),
             ],
             joints: vec![
-                Joint {
-                    name: "main_bearing",
-                    kind: JointKind::Revolute { radius: r_main },
-                    body: CRANKSHAFT,
-                    other: None,
-                },
-                Joint {
-                    name: "crank_pin",
-                    kind: JointKind::Revolute { radius: r_crank },
-                    body: CRANKSHAFT,
-                    other: Some(BLOCK),
-                },
-                Joint {
-                    name: "yoke_slot",
-                    kind: JointKind::Prismatic,
-                    body: YOKE,
-                    other: Some(BLOCK),
-                },
-                Joint {
-                    name: "piston_side",
-                    kind: JointKind::Prismatic,
-                    body: YOKE,
-                    other: None,
-                },
+                Joint::pin("main_bearing", r_main, CRANKSHAFT, None),
+                Joint::pin("crank_pin", r_crank, CRANKSHAFT, Some(BLOCK)),
+                Joint::slide("yoke_slot", YOKE, Some(BLOCK)),
+                Joint::slide("piston_side", YOKE, None),
             ],
-            pistons: vec![Piston {
-                name: "piston",
-                body: YOKE,
-                axis: C::new(0.0, 1.0),
-                origin: C::new(0.0, 0.0),
-            }],
+            pistons: vec![Piston::in_line(YOKE, 0.0)],
             crankshaft: CRANKSHAFT,
             extras: vec![],
         };

@@ -12,9 +12,7 @@
 //! `piston_pin` (piston–rod), `piston_side` (piston–cylinder wall, a slide along the axis).
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{
-    cross, Body, Extra, Joint, JointKind, JointLoad, Loads, Piston, State, Topology,
-};
+use crate::model::{cross, Body, Extra, Joint, JointLoad, Loads, Piston, State, Topology};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
@@ -107,54 +105,17 @@ impl SliderCrank {
         let [r_pis, r_crank, r_main] = radii;
         let topology = Topology {
             bodies: vec![
-                Body {
-                    name: "crankshaft",
-                    mass: 0.0,
-                    inertia: masses.crankshaft_inertia,
-                },
-                Body {
-                    name: "rod",
-                    mass: masses.rod_mass,
-                    inertia: masses.rod_inertia,
-                },
-                Body {
-                    name: "piston",
-                    mass: masses.piston_mass,
-                    inertia: 0.0,
-                },
+                Body::new("crankshaft", 0.0, masses.crankshaft_inertia),
+                Body::new("rod", masses.rod_mass, masses.rod_inertia),
+                Body::new("piston", masses.piston_mass, 0.0),
             ],
             joints: vec![
-                Joint {
-                    name: "main_bearing",
-                    kind: JointKind::Revolute { radius: r_main },
-                    body: CRANKSHAFT,
-                    other: None,
-                },
-                Joint {
-                    name: "crank_pin",
-                    kind: JointKind::Revolute { radius: r_crank },
-                    body: CRANKSHAFT,
-                    other: Some(ROD),
-                },
-                Joint {
-                    name: "piston_pin",
-                    kind: JointKind::Revolute { radius: r_pis },
-                    body: PISTON,
-                    other: Some(ROD),
-                },
-                Joint {
-                    name: "piston_side",
-                    kind: JointKind::Prismatic,
-                    body: PISTON,
-                    other: None,
-                },
+                Joint::pin("main_bearing", r_main, CRANKSHAFT, None),
+                Joint::pin("crank_pin", r_crank, CRANKSHAFT, Some(ROD)),
+                Joint::pin("piston_pin", r_pis, PISTON, Some(ROD)),
+                Joint::slide("piston_side", PISTON, None),
             ],
-            pistons: vec![Piston {
-                name: "piston",
-                body: PISTON,
-                axis: C::new(0.0, 1.0),
-                origin: C::new(pin_offset, 0.0),
-            }],
+            pistons: vec![Piston::in_line(PISTON, pin_offset)],
             crankshaft: CRANKSHAFT,
             extras: vec![Extra {
                 name: "rod_percussion_centre_m",
