@@ -115,6 +115,10 @@ pub struct SummarySink {
     last_step: usize,
     gas_force: f64,
     pressure: Option<f64>,
+    /// Largest |dx/dθ| of the first piston, m/rad, and ∫|dx/dθ| dθ, m.
+    lever: f64,
+    lever_integral: f64,
+    previous_lever: f64,
 }
 
 impl SummarySink {
@@ -142,6 +146,9 @@ impl SummarySink {
             last_step: points.saturating_sub(1),
             gas_force: 0.0,
             pressure: None,
+            lever: 0.0,
+            lever_integral: 0.0,
+            previous_lever: 0.0,
         }
     }
 
@@ -181,6 +188,19 @@ impl SummarySink {
                                                                       // constant speed this is the time average.
             m.push(format!("{}_power_mean", f.name), f.energy_flow / span);
         }
+        // Power balance: the drive torque per unit force on the piston is dx/dθ. Vidinsky's
+        // (2021) mechanical advantage refers it to the crank radius (F_out = T/p, eq 21 and
+        // L225); per unit stroke it compares mechanisms of equal displacement fairly.
+        let radius = mechanism.crank_radius();
+        m.push("mechanical_advantage_max", self.lever / radius);
+        m.push(
+            "mechanical_advantage_mean",
+            self.lever_integral / span / radius,
+        );
+        m.push(
+            "torque_per_force_stroke_max",
+            self.lever / mechanism.stroke(),
+        );
         let change = last.2 - first.2;
         m.push("kinetic_energy_change", change);
         if let Some(inertial) = self.families.iter().find(|f| f.name == "inertial") {
@@ -236,6 +256,14 @@ impl Sink for SummarySink {
             let interval = self.previous.map(|(a0, w0)| (angle - a0, *t0, w0));
             f.add(loads, interval, speed);
             *t0 = loads.crank_torque;
+        }
+        if let Some(p) = st.pistons.first() {
+            let lever = p.dx_dtheta.abs();
+            raise(&mut self.lever, lever);
+            if let Some((a0, _)) = self.previous {
+                self.lever_integral += 0.5 * (angle - a0) * (lever + self.previous_lever);
+            }
+            self.previous_lever = lever;
         }
         self.previous = Some((angle, speed));
         // The kinetic energy is wanted at the first and last steps only.

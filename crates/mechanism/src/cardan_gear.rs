@@ -280,6 +280,11 @@ impl Mechanism for CardanGear {
         self.rod - 2.0 * self.crank
     }
 
+    /// The crank OS: the cardan wheel's centre, where the crank takes the wheel's force.
+    fn crank_radius(&self) -> f64 {
+        self.crank
+    }
+
     /// The reciprocating assembly (piston, pin and rod, ch. 11.2) moves on the cylinder axis;
     /// its inertial force plus the applied force, P, reaches the cardan wheel at T
     /// (A5.2.1.47-48). The mesh force follows the reading (module note).
