@@ -189,7 +189,18 @@ impl MotionSource for Grid {
         } else {
             self.direction * self.rotation
         };
-        Some(self.motion.at_angle_in(angle, self.direction))
+        let m = &self.motion;
+        if m.angular_acceleration == 0.0 && m.initial_speed > 0.0 {
+            // Constant speed: ω = ω0 and t = Δθ/ω0, what at_angle gives without its square root.
+            return Some(Ok(CrankState {
+                angle,
+                direction: self.direction,
+                speed: m.initial_speed,
+                acceleration: 0.0,
+                time: (angle - m.start_angle) / m.initial_speed,
+            }));
+        }
+        Some(m.at_angle_in(angle, self.direction))
     }
 }
 
@@ -210,6 +221,21 @@ mod tests {
             let t = s.time;
             assert_relative_eq!(0.5 + 3.0 * t + 50.0 * t * t, theta, max_relative = 1e-14);
             assert_relative_eq!(s.speed, 3.0 + 100.0 * t, max_relative = 1e-13);
+        }
+    }
+
+    /// At constant speed the grid's shortcut gives what `at_angle` gives.
+    #[test]
+    fn constant_speed_states_are_the_motion_laws() {
+        let m = CrankMotion {
+            start_angle: 0.7,
+            initial_speed: 628.3185307,
+            angular_acceleration: 0.0,
+        };
+        for s in m.grid(0.7, 13.3, 997).unwrap() {
+            let exact = m.at_angle(s.angle).unwrap();
+            assert_relative_eq!(s.speed, exact.speed, max_relative = 1e-15);
+            assert_relative_eq!(s.time, exact.time, max_relative = 1e-15, epsilon = 1e-300);
         }
     }
 
