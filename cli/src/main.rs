@@ -37,6 +37,13 @@ enum Command {
         /// Write no per-step CSV, whatever the cases' output tables say.
         #[arg(long)]
         no_csv: bool,
+        /// Run only the cases whose name matches PATTERN (`*` matches anything; without `*`,
+        /// any name containing PATTERN).
+        #[arg(long, value_name = "PATTERN")]
+        only: Option<String>,
+        /// No progress bar (it shows on a terminal when a run takes more than a second).
+        #[arg(long)]
+        quiet: bool,
     },
     /// Read and validate every case under PATHS without running them.
     Check {
@@ -44,6 +51,79 @@ enum Command {
         #[arg(required = true)]
         paths: Vec<PathBuf>,
     },
+    /// Rate one spur gear pair (external or internal) from a gear file and write
+    /// OUT/NAME/gear.json and report.md; exit 1 if the file is bad or the pair cannot work.
+    Gear {
+        /// The gear file (TOML; see README.md, "Gear pair calculator").
+        file: PathBuf,
+        /// Output folder; the pair's folder in it is replaced as a whole.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
+}
+
+/// `cardan gear`: 0 the pair works and was written; 1 the file is bad (nothing written) or the
+/// pair cannot work (written, with the reasons on stderr).
+fn gear(file: &std::path::Path, out: &std::path::Path) -> ExitCode {
+    match cardan_runner::gear_file::run(file, out) {
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+        Ok(run) => {
+            let failures = run.report.failures();
+            println!(
+                "{}  {} -> {}",
+                if failures.is_empty() {
+                    "ok    "
+                } else {
+                    "FAILED"
+                },
+                run.report.input.name,
+                run.dir.display()
+            );
+            if failures.is_empty() {
+                ExitCode::SUCCESS
+            } else {
+                eprintln!(
+                    "{}: gear pair \"{}\" cannot work:",
+                    file.display(),
+                    run.report.input.name
+                );
+                for f in &failures {
+                    eprintln!("  {f}");
+                }
+                ExitCode::FAILURE
+            }
+        }
+    }
+}
+
+/// A progress bar on stderr, drawn only on a terminal and only once a run has lasted a second.
+fn progress_bar(quiet: bool) -> indicatif::ProgressBar {
+    if quiet {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::with_draw_target(
+        None,
+        indicatif::ProgressDrawTarget::stderr_with_hz(4),
+    );
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{elapsed:>4} [{wide_bar}] {pos}/{len} cases, {eta} left",
+        )
+        .expect("a valid template"),
+    );
+    // Nothing is drawn before the first second: short runs stay quiet.
+    bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+    let shown = bar.clone();
+    std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_secs(1));
+        if !shown.is_finished() {
+            shown.set_draw_target(indicatif::ProgressDrawTarget::stderr_with_hz(4));
+        }
+    });
+    bar
 }
 
 fn main() -> ExitCode {
@@ -60,17 +140,27 @@ fn main() -> ExitCode {
             out,
             jobs,
             no_csv,
+            only,
+            quiet,
         } => {
             if jobs == Some(0) {
                 eprintln!("error: --jobs must be at least 1");
                 return ExitCode::from(2);
             }
             let started = std::time::Instant::now();
+            let bar = progress_bar(quiet);
+            let progress = bar.clone();
             let options = RunOptions {
                 jobs,
                 csv: no_csv.then_some(false),
+                only,
+                progress: Some(std::sync::Arc::new(move |done, total| {
+                    progress.set_length(total as u64);
+                    progress.set_position(done as u64);
+                })),
             };
             let report = cardan_runner::run_paths(&paths, &out, options);
+            bar.finish_and_clear();
             for (name, dir) in &report.written {
                 println!("ok      {name} -> {}", dir.display());
             }
@@ -83,6 +173,7 @@ fn main() -> ExitCode {
             );
             (report.written.len(), report.failures)
         }
+        Command::Gear { file, out } => return gear(&file, &out),
         Command::Check { paths } => {
             let (cases, failures) = load_cases(&paths);
             for c in &cases {
@@ -92,7 +183,15 @@ fn main() -> ExitCode {
             (cases.len(), failures)
         }
     };
-    if failures.is_empty() && ok > 0 {
+    let failures = if ok == 0 && failures.is_empty() {
+        vec![
+            "no case to run: no *.toml under the paths, or none whose name matches --only"
+                .to_string(),
+        ]
+    } else {
+        failures
+    };
+    if failures.is_empty() {
         ExitCode::SUCCESS
     } else {
         eprintln!("\nfailures:");

@@ -62,6 +62,29 @@ fn failures_give_exit_1_and_are_listed_after_the_good_cases_run() {
     assert_eq!(only.status.code(), Some(0));
     assert!(!case.join("cardan_gear.csv").exists());
 
+    // --only selects cases by name.
+    let only = dir.path().join("only");
+    let some = cardan(&[
+        &"run",
+        &dir.path().join("good.toml"),
+        &"--out",
+        &only,
+        &"--only",
+        &"nothing-like-it",
+    ]);
+    assert_eq!(some.status.code(), Some(1), "no case selected is a failure");
+    let some = cardan(&[
+        &"run",
+        &dir.path().join("good.toml"),
+        &"--out",
+        &only,
+        &"--only",
+        &"karhula-*-w3pi",
+        &"--quiet",
+    ]);
+    assert_eq!(some.status.code(), Some(0));
+    assert!(only.join("karhula-r60-l140-a0-w3pi/summary.json").is_file());
+
     // check validates without running.
     let check = cardan(&[&"check", &dir.path()]);
     assert_eq!(check.status.code(), Some(1));

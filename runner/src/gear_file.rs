@@ -562,7 +562,7 @@ fn geometry_error(e: GearError, raw: &RawGearFile, invalid: &Invalid) -> GearFil
         "tip_diameter" => raw.tip_diameter.clone(),
         _ => raw.addendum_coefficient.clone(),
     };
-    let detail = format!("{rule} ({field} = {value} in SI)");
+    let detail = format!("{rule} (as computed: {field} = {value})");
     match given {
         Some(v) => invalid(name, &v, &detail),
         None => invalid(name, &"(default)", &detail),

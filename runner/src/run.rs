@@ -136,13 +136,52 @@ pub fn run_case(case: &Case, csv_dir: Option<&Path>) -> Result<Vec<MechanismResu
     }
 }
 
+/// Called after each case with (cases finished, cases in the batch).
+pub type Progress = std::sync::Arc<dyn Fn(usize, usize) + Send + Sync>;
+
 /// How a batch runs.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Clone, Default)]
 pub struct RunOptions {
     /// Worker threads (None: one per core).
     pub jobs: Option<usize>,
     /// Overrides every case's `[output] csv`.
     pub csv: Option<bool>,
+    /// Runs only the cases whose name matches this pattern (`*` matches any run of
+    /// characters; without a `*`, any name containing it).
+    pub only: Option<String>,
+    /// Told of every finished case.
+    pub progress: Option<Progress>,
+}
+
+impl std::fmt::Debug for RunOptions {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("RunOptions")
+            .field("jobs", &self.jobs)
+            .field("csv", &self.csv)
+            .field("only", &self.only)
+            .finish_non_exhaustive()
+    }
+}
+
+/// Whether `name` matches `pattern`: `*` matches any run of characters; a pattern without `*`
+/// matches any name that contains it.
+pub fn matches_pattern(pattern: &str, name: &str) -> bool {
+    if !pattern.contains('*') {
+        return name.contains(pattern);
+    }
+    let parts: Vec<&str> = pattern.split('*').collect();
+    let (first, last) = (parts[0], parts[parts.len() - 1]);
+    if !name.starts_with(first) || !name[first.len()..].ends_with(last) {
+        return false;
+    }
+    let mut rest = &name[first.len()..name.len() - last.len()];
+    for middle in &parts[1..parts.len() - 1] {
+        match rest.find(middle) {
+            Some(k) => rest = &rest[k + middle.len()..],
+            None => return false,
+        }
+    }
+    true
 }
 
 /// What a batch did.
@@ -218,7 +257,7 @@ pub fn load_cases(paths: &[PathBuf]) -> (Vec<Case>, Vec<String>) {
 }
 
 /// Runs one case into `out/<case name>/`, replacing that folder as a whole.
-fn run_and_write(case: &Case, out: &Path, options: RunOptions) -> Result<PathBuf, String> {
+fn run_and_write(case: &Case, out: &Path, options: &RunOptions) -> Result<PathBuf, String> {
     let dir = out.join(&case.name);
     let cannot_write = |e: anyhow::Error| {
         format!(
@@ -244,10 +283,16 @@ fn run_and_write(case: &Case, out: &Path, options: RunOptions) -> Result<PathBuf
     result.map(|()| dir)
 }
 
-/// Loads, validates, runs and writes every case under `paths` into `out/<case name>/`. A
-/// panic inside a case is caught and reported as that case's failure.
+/// Loads, validates, runs and writes every case under `paths` (or those `options.only`
+/// selects) into `out/<case name>/`. A panic inside a case is caught and reported as that
+/// case's failure.
 pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
-    let (cases, failures) = load_cases(paths);
+    let (mut cases, failures) = load_cases(paths);
+    if let Some(pattern) = &options.only {
+        cases.retain(|c| matches_pattern(pattern, &c.name));
+    }
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let total = cases.len();
     let mut report = Report {
         failures,
         ..Report::default()
@@ -258,8 +303,11 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
             .map(|case| {
                 let _span = tracing::info_span!("case", name = %case.name).entered();
                 let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                    run_and_write(case, out, options)
+                    run_and_write(case, out, &options)
                 }));
+                if let Some(progress) = &options.progress {
+                    progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1, total);
+                }
                 match outcome {
                     Ok(r) => r.map(|dir| (case.name.clone(), dir)),
                     Err(panic) => Err(format!(
@@ -298,4 +346,20 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         }
     }
     report
+}
+
+#[cfg(test)]
+mod tests {
+    use super::matches_pattern;
+
+    #[test]
+    fn patterns_select_case_names() {
+        assert!(matches_pattern("w30pi", "karhula-pump-r60-l140-a0-w30pi"));
+        assert!(!matches_pattern("w3pi", "karhula-pump-r60-l140-a0-w30pi"));
+        assert!(matches_pattern("karhula-*-w3pi", "karhula-pump-r60-l140-a0-w3pi"));
+        assert!(matches_pattern("*", "anything"));
+        assert!(matches_pattern("k*a*i", "karhula-pi"));
+        assert!(!matches_pattern("karhula-*-w3pi", "karhula-pump-w30pi"));
+        assert!(!matches_pattern("nunes*", "karhula"));
+    }
 }

@@ -115,10 +115,7 @@ fn torque_and_power_give_the_same_rating() {
     let a = report_of(&text);
     let t = 4.0 * cardan_gears::units::HORSEPOWER / (1800.0 * std::f64::consts::PI / 30.0);
     let b = report_of(&text.replace("power = \"4 hp\"", &format!("torque = \"{t} N*m\"")));
-    let (ra, rb) = (
-        a.rating.unwrap().unwrap(),
-        b.rating.unwrap().unwrap(),
-    );
+    let (ra, rb) = (a.rating.unwrap().unwrap(), b.rating.unwrap().unwrap());
     for k in 0..2 {
         assert!((ra.bending_stress[k] / rb.bending_stress[k] - 1.0).abs() < 1e-12);
         assert!((ra.contact_safety[k] / rb.contact_safety[k] - 1.0).abs() < 1e-12);
@@ -172,8 +169,9 @@ fn khk_internal_gear_example() {
     let q = report_of(&KHK.replace("profile_shift = [0.0, -0.516]", ""));
     let f = q.failures();
     assert!(
-        f.iter().any(|m| m.contains("ring_tip_inside_base_circle")
-            && m.contains("shorter ring addendum")),
+        f.iter()
+            .any(|m| m.contains("ring_tip_inside_base_circle")
+                && m.contains("shorter ring addendum")),
         "{f:?}"
     );
 }
@@ -206,10 +204,9 @@ fn interfering_internal_pair_is_written_and_fails_naming_the_remedy() {
         ],
     );
     // Geometry is still written, with the check, its margin and remedies.
-    let j: Value = serde_json::from_str(
-        &std::fs::read_to_string(written.dir.join("gear.json")).unwrap(),
-    )
-    .unwrap();
+    let j: Value =
+        serde_json::from_str(&std::fs::read_to_string(written.dir.join("gear.json")).unwrap())
+            .unwrap();
     assert_eq!(j["passed"], false);
     let c = check(&j, "involute_interference_pinion");
     assert_eq!(c["passed"], false);
@@ -322,11 +319,7 @@ fn bad_files_name_file_pair_field_and_rule() {
             "hardness = 500",
             &["rating.pinion.hardness", "[140, 400]"],
         ),
-        (
-            "face_width = \"1.5 in\"",
-            "",
-            &["face_width", "[rating]"],
-        ),
+        ("face_width = \"1.5 in\"", "", &["face_width", "[rating]"]),
         (
             "lewis_y = 0.412",
             "",
@@ -382,7 +375,10 @@ fn local_units() {
     let hp = cardan_gears::units::HORSEPOWER;
     assert!((Quantity::Power.to_si(&s("4 hp")).unwrap() - 4.0 * hp).abs() < 1e-9);
     assert_eq!(Quantity::Power.to_si(&s("3 kW")).unwrap(), 3000.0);
-    assert_eq!(Quantity::Power.to_si(&toml::Value::Float(5.0)).unwrap(), 5.0);
+    assert_eq!(
+        Quantity::Power.to_si(&toml::Value::Float(5.0)).unwrap(),
+        5.0
+    );
     assert_eq!(Quantity::Torque.to_si(&s("20 N*m")).unwrap(), 20.0);
     assert!((Quantity::Torque.to_si(&s("1 lbf*in")).unwrap() - LBF * INCH).abs() < 1e-15);
     assert_eq!(Quantity::Stress.to_si(&s("12 MPa")).unwrap(), 12e6);
@@ -391,10 +387,7 @@ fn local_units() {
         (Quantity::RootStress.to_si(&s("2300 sqrt(psi)")).unwrap() - 2300.0 * PSI.sqrt()).abs()
             < 1e-9
     );
-    assert_eq!(
-        Quantity::RootStress.to_si(&s("190 √MPa")).unwrap(),
-        190e3
-    );
+    assert_eq!(Quantity::RootStress.to_si(&s("190 √MPa")).unwrap(), 190e3);
     assert!(Quantity::Power
         .to_si(&s("4 N*m"))
         .unwrap_err()
@@ -418,5 +411,8 @@ fn output_folder_is_replaced_as_a_whole() {
         .unwrap()
         .map(|e| e.unwrap().file_name())
         .collect();
-    assert_eq!(names, vec![std::ffi::OsString::from("karhula-cardan-20-40")]);
+    assert_eq!(
+        names,
+        vec![std::ffi::OsString::from("karhula-cardan-20-40")]
+    );
 }

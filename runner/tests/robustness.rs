@@ -71,7 +71,7 @@ fn non_finite_results_fail_the_case_with_step_and_quantity() {
     for (text, quantity) in [
         (
             GOOD.replace("initial_speed = 628.3185307", "initial_speed = 1e300"),
-            "crank_speed",
+            "piston_acceleration",
         ),
         (
             format!("{GOOD}{PUMP_GAS}")
