@@ -5,7 +5,7 @@
 use crate::case::{Case, OutputOptions};
 use crate::run::MechanismResult;
 use anyhow::Context;
-use cardan_dynamics::{Sink, Step};
+use cardan_dynamics::{radial, tangential, Sink, Step};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use serde_json::{json, Map, Value};
 use std::fs::File;
@@ -123,6 +123,8 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("{family}_{joint}_force_y_n", "the same, y"),
     ("{family}_{joint}_force_magnitude_n", "its magnitude"),
     ("{family}_{joint}_moment_nm", "couple a slide carries"),
+    ("{family}_{joint}_tangential_n", "gear meshes: the force along the pitch-circle tangent (the tooth load that transmits torque, Karhula A8.1.10)"),
+    ("{family}_{joint}_radial_n", "gear meshes: the force towards the first gear's centre"),
     ("{family}_torque_nm", "drive torque on the crankshaft, positive in the direction of rotation"),
     ("{family}_torque_{body}_nm", "the body's share of it by the power balance (Karhula's T_1i10, T_2i10, T_3i10); empty while the crank stands still"),
 ];
@@ -182,8 +184,13 @@ fn header(mechanism: &dyn Mechanism, families: &[&str], gas: bool) -> Vec<String
             for s in ["force_x_n", "force_y_n", "force_magnitude_n"] {
                 h.push(format!("{f}_{}_{s}", j.name));
             }
-            if matches!(j.kind, JointKind::Prismatic) {
-                h.push(format!("{f}_{}_moment_nm", j.name));
+            match j.kind {
+                JointKind::Prismatic => h.push(format!("{f}_{}_moment_nm", j.name)),
+                JointKind::GearMesh { .. } => {
+                    h.push(format!("{f}_{}_tangential_n", j.name));
+                    h.push(format!("{f}_{}_radial_n", j.name));
+                }
+                JointKind::Revolute { .. } => {}
             }
         }
         h.push(format!("{f}_torque_nm"));
@@ -294,10 +301,14 @@ impl<'a> CsvSink<'a> {
             families.push((s.total, &self.total_shares));
         }
         for (loads, shares) in families {
-            for (j, l) in t.joints.iter().zip(&loads.joints) {
+            for ((j, l), m) in t.joints.iter().zip(&loads.joints).zip(&st.joints) {
                 r.extend([l.force.re, l.force.im, l.force.norm()]);
-                if matches!(j.kind, JointKind::Prismatic) {
-                    r.push(l.moment);
+                match j.kind {
+                    JointKind::Prismatic => r.push(l.moment),
+                    JointKind::GearMesh { .. } => {
+                        r.extend([tangential(l.force, m), radial(l.force, m)]);
+                    }
+                    JointKind::Revolute { .. } => {}
                 }
             }
             r.push(loads.crank_torque);

@@ -26,4 +26,4 @@ pub use energy::{kinetic_energy, torque_shares};
 pub use family::{Gas, Inertial, LoadFamily, Solver};
 pub use metrics::{Aggregation, MetricDef, METRICS};
 pub use stepper::{run, run_summary, GasAt, RunError, Sink, Step, StepRecord, Steps};
-pub use summary::{Metric, Summary, SummarySink};
+pub use summary::{radial, tangential, Metric, Summary, SummarySink};

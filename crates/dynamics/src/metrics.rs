@@ -61,6 +61,7 @@ pub const METRICS: &[MetricDef] = &[
     def("{body}_angular_acceleration_max", "rad/s^2", T, "largest angular acceleration of the body"),
     def("{family}_{joint}_force_max", "N", T, "largest force magnitude at the joint (frictionless)"),
     def("{family}_{joint}_moment_max", "N*m", T, "largest couple a slide carries (slides only)"),
+    def("{family}_{joint}_tangential_max", "N", T, "gear meshes: largest tangential (torque-transmitting) tooth load, along the pitch-circle tangent (Karhula A8.1.10)"),
     def("{family}_torque_max", "N*m", T, "largest drive torque magnitude on the crankshaft"),
     def("{family}_work", "J", T, "drive work ∫ T dθ over the run (Karhula A5.2.1.37); an engine's gas work is negative"),
     def("{family}_torque_mean", "N*m", T, "work / crank-angle span (A5.2.1.38)"),

@@ -4,7 +4,7 @@
 use crate::energy::kinetic_energy;
 use crate::metrics;
 use crate::stepper::{Sink, Step};
-use cardan_mechanism::{JointKind, Loads, Mechanism, Topology};
+use cardan_mechanism::{JointKind, JointMotion, Loads, Mechanism, Topology, C};
 
 /// One named scalar result, in SI units.
 #[derive(Debug, Clone, PartialEq)]
@@ -52,6 +52,19 @@ fn raise(peak: &mut f64, value: f64) {
     }
 }
 
+/// The component of a mesh force along the pitch-circle tangent t = i·d (d: from the pitch
+/// point towards the centre of the mesh's first gear): the tooth load that transmits torque
+/// (Karhula A8.1.10).
+pub fn tangential(force: C, mesh: &JointMotion) -> f64 {
+    let t = C::i() * mesh.direction;
+    force.re * t.re + force.im * t.im
+}
+
+/// The component of a mesh force along d, towards the centre of the mesh's first gear.
+pub fn radial(force: C, mesh: &JointMotion) -> f64 {
+    force.re * mesh.direction.re + force.im * mesh.direction.im
+}
+
 /// Peaks, work and crank-angle-averaged power of one family's loads.
 #[derive(Debug, Clone)]
 struct FamilyTotals {
@@ -59,6 +72,8 @@ struct FamilyTotals {
     /// Squared peak force of each joint, peak couple of each joint.
     force: Vec<f64>,
     moment: Vec<f64>,
+    /// Peak |tangential force| of each gear mesh (0 for other joints), N.
+    tangential: Vec<f64>,
     torque: f64,
     work: f64,
     abs_work: f64,
@@ -71,6 +86,7 @@ impl FamilyTotals {
             name,
             force: vec![0.0; joints],
             moment: vec![0.0; joints],
+            tangential: vec![0.0; joints],
             torque: 0.0,
             work: 0.0,
             abs_work: 0.0,
@@ -79,10 +95,23 @@ impl FamilyTotals {
     }
 
     /// Adds one step; `prev` holds the previous step's (angle, torque, speed).
-    fn add(&mut self, l: &Loads, interval: Option<(f64, f64, f64)>, speed: f64) {
+    fn add(
+        &mut self,
+        l: &Loads,
+        meshes: &[usize],
+        joints: &[JointMotion],
+        interval: Option<(f64, f64, f64)>,
+        speed: f64,
+    ) {
         for ((f, m), j) in self.force.iter_mut().zip(&mut self.moment).zip(&l.joints) {
             raise(f, j.force.norm_sqr());
             raise(m, j.moment.abs());
+        }
+        for &k in meshes {
+            raise(
+                &mut self.tangential[k],
+                tangential(l.joints[k].force, &joints[k]).abs(),
+            );
         }
         raise(&mut self.torque, l.crank_torque.abs());
         // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
@@ -99,6 +128,8 @@ impl FamilyTotals {
 #[derive(Debug, Clone)]
 pub struct SummarySink {
     topology: Topology,
+    /// The gear-mesh joints.
+    meshes: Vec<usize>,
     /// Squared peaks: each piston's velocity and acceleration.
     pistons: Vec<[f64; 2]>,
     /// Squared peaks: each body's cg velocity and acceleration, angular velocity and acceleration.
@@ -134,7 +165,15 @@ impl SummarySink {
         if families.len() > 1 {
             totals.push(FamilyTotals::new("total", joints));
         }
+        let meshes = topology
+            .joints
+            .iter()
+            .enumerate()
+            .filter(|(_, j)| matches!(j.kind, JointKind::GearMesh { .. }))
+            .map(|(k, _)| k)
+            .collect();
         Self {
+            meshes,
             pistons: vec![[0.0; 2]; topology.pistons.len()],
             bodies: vec![[0.0; 4]; topology.bodies.len()],
             topology,
@@ -180,6 +219,10 @@ impl SummarySink {
                 if matches!(j.kind, JointKind::Prismatic) {
                     m.push(format!("{}_{}_moment_max", f.name, j.name), *moment);
                 }
+            }
+            for &k in &self.meshes {
+                let name = t.joints[k].name;
+                m.push(format!("{}_{name}_tangential_max", f.name), f.tangential[k]);
             }
             m.push(format!("{}_torque_max", f.name), f.torque);
             m.push(format!("{}_work", f.name), f.work);
@@ -254,7 +297,7 @@ impl Sink for SummarySink {
         {
             let loads = s.families.get(k).unwrap_or(s.total);
             let interval = self.previous.map(|(a0, w0)| (angle - a0, *t0, w0));
-            f.add(loads, interval, speed);
+            f.add(loads, &self.meshes, &st.joints, interval, speed);
             *t0 = loads.crank_torque;
         }
         if let Some(p) = st.pistons.first() {
