@@ -306,7 +306,10 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
                     run_and_write(case, out, &options)
                 }));
                 if let Some(progress) = &options.progress {
-                    progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1, total);
+                    progress(
+                        done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1,
+                        total,
+                    );
                 }
                 match outcome {
                     Ok(r) => r.map(|dir| (case.name.clone(), dir)),
@@ -356,7 +359,10 @@ mod tests {
     fn patterns_select_case_names() {
         assert!(matches_pattern("w30pi", "karhula-pump-r60-l140-a0-w30pi"));
         assert!(!matches_pattern("w3pi", "karhula-pump-r60-l140-a0-w30pi"));
-        assert!(matches_pattern("karhula-*-w3pi", "karhula-pump-r60-l140-a0-w3pi"));
+        assert!(matches_pattern(
+            "karhula-*-w3pi",
+            "karhula-pump-r60-l140-a0-w3pi"
+        ));
         assert!(matches_pattern("*", "anything"));
         assert!(matches_pattern("k*a*i", "karhula-pi"));
         assert!(!matches_pattern("karhula-*-w3pi", "karhula-pump-w30pi"));

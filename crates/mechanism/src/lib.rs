@@ -92,6 +92,13 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
         self.piston_top() - self.piston_bottom()
     }
 
+    /// Radius at which the crank delivers its force, m: the crank-pin radius, the radius of
+    /// Vidinsky's (2021) output force F_out in his mechanical advantage MA = F_out/F_in (L225).
+    /// By default half the stroke (the slider-crank's and the Scotch yoke's crank).
+    fn crank_radius(&self) -> f64 {
+        self.stroke() / 2.0
+    }
+
     /// The closed-form kinetostatics, if the mechanism has them: the joint loads and drive
     /// torque caused by the bodies' inertia (if `inertia`) and by the force on each piston
     /// (`piston_forces`, N along the cylinder axis towards the crankshaft), written to `out`.
