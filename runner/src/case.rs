@@ -348,6 +348,18 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         .as_ref()
         .map(|table| crate::gas::parse(table, machine, &invalid))
         .transpose()?;
+    if gas.is_some() {
+        if let Some(m) = mechanisms.iter().find(|m| !m.has_cylinder()) {
+            return Err(invalid(
+                "gas",
+                &format!("a [gas] table with the {}", m.name()),
+                &format!(
+                    "the {}'s pistons do not move in a cylinder, and the gas models need a cylinder volume: run it without [gas]",
+                    m.name()
+                ),
+            ));
+        }
+    }
     Ok(Case {
         file: file.into(),
         name: raw.name,

@@ -543,3 +543,17 @@ combustion_start_per_speed = "-0.0004 deg/rpm"
         assert_mentions(&error_of(&good.replacen(from, to, 1)), parts);
     }
 }
+
+/// Gas models need a cylinder volume: a mechanism whose pistons turn (the hypotrochoid's piston
+/// links) cannot take a `[gas]` table.
+#[test]
+fn gas_needs_pistons_in_cylinders() {
+    let text = format!("{GOOD}{PUMP_GAS}").replace(
+        "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
+        "mechanisms = [\"slider_crank\", \"hypotrochoid\"]",
+    );
+    assert_mentions(
+        &error_of(&text),
+        &["gas", "hypotrochoid", "cylinder", "without [gas]"],
+    );
+}

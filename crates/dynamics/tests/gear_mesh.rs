@@ -26,7 +26,12 @@ fn tangential_tooth_load_by_hand() {
             1e-9,
         );
     }
-    let (_, s) = cycle(thesis("cardan_gear", Material::Steel).as_ref(), w, 0.0, 7200);
+    let (_, s) = cycle(
+        thesis("cardan_gear", Material::Steel).as_ref(),
+        w,
+        0.0,
+        7200,
+    );
     within(
         "ring force",
         s.get("inertial_gear_mesh_force_max").unwrap(),

@@ -11,6 +11,7 @@
 //! which mechanism it has. The mechanisms a case file may name are listed in [`MECHANISMS`].
 
 pub mod cardan_gear;
+pub mod hypotrochoid;
 pub mod mass;
 pub mod model;
 pub mod motion;
@@ -19,6 +20,7 @@ pub mod scotch_yoke;
 pub mod slider_crank;
 
 pub use cardan_gear::{CardanGear, MeshModel};
+pub use hypotrochoid::Hypotrochoid;
 pub use mass::{MassInputs, MassProperties, Material};
 pub use model::{
     cross, Body, BodyMotion, Extra, Joint, JointKind, JointLoad, JointMotion, Loads, MeshForce,
@@ -90,6 +92,13 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
     /// Stroke, m.
     fn stroke(&self) -> f64 {
         self.piston_top() - self.piston_bottom()
+    }
+
+    /// Whether the first piston reciprocates along a cylinder between dead centres, so that a
+    /// gas model can take the chamber volume from its position. The hypotrochoid's piston links
+    /// turn about the main axis instead.
+    fn has_cylinder(&self) -> bool {
+        true
     }
 
     /// Radius at which the crank delivers its force, m: the crank-pin radius, the radius of
@@ -192,7 +201,12 @@ pub struct Entry {
 }
 
 /// Every mechanism a case file may name.
-pub const MECHANISMS: &[Entry] = &[slider_crank::ENTRY, cardan_gear::ENTRY, scotch_yoke::ENTRY];
+pub const MECHANISMS: &[Entry] = &[
+    slider_crank::ENTRY,
+    cardan_gear::ENTRY,
+    scotch_yoke::ENTRY,
+    hypotrochoid::ENTRY,
+];
 
 /// The registry entry called `name`.
 pub fn entry(name: &str) -> Option<&'static Entry> {
