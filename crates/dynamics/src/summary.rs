@@ -36,6 +36,20 @@ impl Summary {
         debug_assert!(unit != "?", "metric {name} is not in the registry");
         self.metrics.push(Metric { name, unit, value });
     }
+
+    /// Adds a metric named from the registry's `template` (its unit found by the template's
+    /// exact name, without matching the filled name against every template).
+    fn push_as(&mut self, template: &'static str, name: String, value: f64) {
+        let unit = metrics::METRICS
+            .iter()
+            .find(|d| d.name == template)
+            .map_or("?", |d| d.unit);
+        debug_assert!(
+            metrics::find(&name).map(|d| d.name) == Some(template),
+            "metric {name} is not the registry's {template}"
+        );
+        self.metrics.push(Metric { name, unit, value });
+    }
 }
 
 /// Largest energy-check error a run may have, relative to the energy the drive moves
@@ -200,14 +214,35 @@ impl SummarySink {
         let t = &self.topology;
         m.push("piston_stroke", mechanism.stroke());
         for (p, peaks) in t.pistons.iter().zip(&self.pistons) {
-            m.push(format!("{}_velocity_max", p.name), peaks[0].sqrt());
-            m.push(format!("{}_acceleration_max", p.name), peaks[1].sqrt());
+            m.push_as(
+                "{piston}_velocity_max",
+                format!("{}_velocity_max", p.name),
+                peaks[0].sqrt(),
+            );
+            m.push_as(
+                "{piston}_acceleration_max",
+                format!("{}_acceleration_max", p.name),
+                peaks[1].sqrt(),
+            );
         }
         for (b, peaks) in t.bodies.iter().zip(&self.bodies) {
-            m.push(format!("{}_cg_velocity_max", b.name), peaks[0].sqrt());
-            m.push(format!("{}_cg_acceleration_max", b.name), peaks[1].sqrt());
-            m.push(format!("{}_angular_velocity_max", b.name), peaks[2].sqrt());
-            m.push(
+            m.push_as(
+                "{body}_cg_velocity_max",
+                format!("{}_cg_velocity_max", b.name),
+                peaks[0].sqrt(),
+            );
+            m.push_as(
+                "{body}_cg_acceleration_max",
+                format!("{}_cg_acceleration_max", b.name),
+                peaks[1].sqrt(),
+            );
+            m.push_as(
+                "{body}_angular_velocity_max",
+                format!("{}_angular_velocity_max", b.name),
+                peaks[2].sqrt(),
+            );
+            m.push_as(
+                "{body}_angular_acceleration_max",
                 format!("{}_angular_acceleration_max", b.name),
                 peaks[3].sqrt(),
             );
@@ -215,21 +250,45 @@ impl SummarySink {
         let span = last.0 - first.0;
         for f in &self.families {
             for (j, (force, moment)) in t.joints.iter().zip(f.force.iter().zip(&f.moment)) {
-                m.push(format!("{}_{}_force_max", f.name, j.name), force.sqrt());
+                m.push_as(
+                    "{family}_{joint}_force_max",
+                    format!("{}_{}_force_max", f.name, j.name),
+                    force.sqrt(),
+                );
                 if matches!(j.kind, JointKind::Prismatic) {
-                    m.push(format!("{}_{}_moment_max", f.name, j.name), *moment);
+                    m.push_as(
+                        "{family}_{joint}_moment_max",
+                        format!("{}_{}_moment_max", f.name, j.name),
+                        *moment,
+                    );
                 }
             }
             for &k in &self.meshes {
                 let name = t.joints[k].name;
-                m.push(format!("{}_{name}_tangential_max", f.name), f.tangential[k]);
+                m.push_as(
+                    "{family}_{joint}_tangential_max",
+                    format!("{}_{name}_tangential_max", f.name),
+                    f.tangential[k],
+                );
             }
-            m.push(format!("{}_torque_max", f.name), f.torque);
-            m.push(format!("{}_work", f.name), f.work);
-            m.push(format!("{}_torque_mean", f.name), f.work / span); // (A5.2.1.38)
-                                                                      // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at
-                                                                      // constant speed this is the time average.
-            m.push(format!("{}_power_mean", f.name), f.energy_flow / span);
+            m.push_as(
+                "{family}_torque_max",
+                format!("{}_torque_max", f.name),
+                f.torque,
+            );
+            m.push_as("{family}_work", format!("{}_work", f.name), f.work);
+            m.push_as(
+                "{family}_torque_mean",
+                format!("{}_torque_mean", f.name),
+                f.work / span,
+            ); // (A5.2.1.38)
+               // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at
+               // constant speed this is the time average.
+            m.push_as(
+                "{family}_power_mean",
+                format!("{}_power_mean", f.name),
+                f.energy_flow / span,
+            );
         }
         // Power balance: the drive torque per unit force on the piston is dx/dθ. Vidinsky's
         // (2021) mechanical advantage refers it to the crank radius (F_out = T/p, eq 21 and

@@ -91,3 +91,16 @@ pub fn cycle(
     let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, steps);
     run_summary(mech, &mut grid, None, Solver::ClosedForm, true).unwrap()
 }
+
+/// [`every_machine`] less the mechanisms without closed forms (their loads come from the
+/// general solve alone, so comparing the two paths means nothing for them).
+pub fn closed_form_machines() -> Vec<(String, Box<dyn Mechanism>)> {
+    every_machine()
+        .into_iter()
+        .filter(|(_, m)| {
+            let st = m.state(&cardan_mechanism::CrankState::new(1.0, 1.0, 0.0, 0.0));
+            let mut loads = cardan_mechanism::Loads::for_topology(m.topology());
+            m.closed_form_loads(&st, true, &[], &mut loads)
+        })
+        .collect()
+}
