@@ -107,3 +107,48 @@ fn nunes_opposed_piston_engine_matches_the_thesis_at_2000_rpm() {
         }
     }
 }
+
+/// The shipped Nunes (2017) case at another speed (the case text with `initial_speed` replaced).
+fn nunes_at(rpm: f64) -> Vec<MechanismResult> {
+    let file =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/nunes-op-r26-l90-2000rpm.toml");
+    let text = std::fs::read_to_string(&file).unwrap().replace(
+        "initial_speed = \"2000 rpm\"",
+        &format!("initial_speed = \"{rpm} rpm\""),
+    );
+    assert!(text.contains(&format!("\"{rpm} rpm\"")));
+    run_case(&case::parse(&file, &text).unwrap(), None).unwrap()
+}
+
+/// Nunes (2017) §3.4.3 (note 4.3) and L1209: the geared hypocycloid's tangential gear-tooth load
+/// F_gt (eq 2.75), the mesh joint's tangential load here: 9365.2 N at 2000 rpm and its global
+/// maximum 9368.4 N at 2360 rpm; the peak piston accelerations at 8000 rpm, 23 519.4 m/s²
+/// (slider-crank, r·ω²·(1 + r/l)) and 18 247.8 m/s² (geared hypocycloid, 2r·ω²). Tolerance
+/// 0.1 %, the for peaks (the tooth load follows the pressure trace, 0.02 % above).
+#[test]
+fn nunes_gear_tooth_load_and_peak_accelerations() {
+    for (rpm, f_gt) in [(2000.0, 9365.2), (2360.0, 9368.4)] {
+        for run in nunes_at(rpm) {
+            if run.mechanism.name() == "cardan_gear" {
+                within(
+                    &format!("F_gt at {rpm} rpm"),
+                    run.summary.get("total_gear_mesh_tangential_max").unwrap(),
+                    f_gt,
+                    0.001,
+                );
+            }
+        }
+    }
+    for run in nunes_at(8000.0) {
+        let a = match run.mechanism.name() {
+            "slider_crank" => 23519.4,
+            _ => 18247.8,
+        };
+        within(
+            &format!("{} peak piston acceleration", run.mechanism.name()),
+            run.summary.get("piston_acceleration_max").unwrap(),
+            a,
+            1e-5,
+        );
+    }
+}
