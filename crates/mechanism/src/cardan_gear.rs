@@ -211,14 +211,9 @@ impl Mechanism for CardanGear {
     fn fill(&self, crank: &CrankState, st: &mut State) {
         let (w, a) = (crank.speed, crank.acceleration);
         let r = self.crank;
-        let i = C::i();
         let e_a = crank.direction;
         let (s, c) = (e_a.im, e_a.re);
-        let crank_pin = PointMotion {
-            position: r * e_a,                       // (A4.2.2.57)
-            velocity: r * i * w * e_a,               // (A4.2.2.65)
-            acceleration: r * (i * a - w * w) * e_a, // (A4.2.2.70)
-        };
+        let crank_pin = PointMotion::on_crank(r, crank);
         // T on the cylinder axis: (A4.2.2.60), (A4.2.2.68), (A4.2.2.73).
         let y = 2.0 * r * s;
         let v = 2.0 * r * w * c;

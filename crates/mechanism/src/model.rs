@@ -154,6 +154,21 @@ pub struct PointMotion {
     pub acceleration: C,
 }
 
+impl PointMotion {
+    /// A point at `radius` (m) on the crank, at the crank state `crank`: Z = r·e^{iθ},
+    /// v = r·i·ω·e^{iθ}, a = r·(i·α − ω²)·e^{iθ} (Karhula 2008 A4.2.2.2, A4.2.2.11, A4.2.2.30; the
+    /// same for the cardan crank, A4.2.2.57, A4.2.2.65, A4.2.2.70).
+    pub fn on_crank(radius: f64, crank: &CrankState) -> Self {
+        let (w, a, e) = (crank.speed, crank.acceleration, crank.direction);
+        let i = C::i();
+        Self {
+            position: radius * e,
+            velocity: radius * i * w * e,
+            acceleration: radius * (i * a - w * w) * e,
+        }
+    }
+}
+
 /// The motion of a body.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BodyMotion {

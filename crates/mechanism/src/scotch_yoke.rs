@@ -131,14 +131,9 @@ impl Mechanism for ScotchYoke {
     fn fill(&self, crank: &CrankState, st: &mut State) {
         let (w, a) = (crank.speed, crank.acceleration);
         let r = self.crank;
-        let i = C::i();
         let e_a = crank.direction;
         let (s, c) = (e_a.im, e_a.re);
-        let pin = PointMotion {
-            position: r * e_a,
-            velocity: r * i * w * e_a,
-            acceleration: r * (i * a - w * w) * e_a,
-        };
+        let pin = PointMotion::on_crank(r, crank);
         // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
         let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
         let up = C::new(0.0, 1.0);

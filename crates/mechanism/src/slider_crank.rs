@@ -162,11 +162,7 @@ impl Mechanism for SliderCrank {
         let (r, l) = (self.crank, self.rod);
         let i = C::i();
         let e_a = crank.direction;
-        let crank_pin = PointMotion {
-            position: r * e_a,                       // (A4.2.2.2)
-            velocity: r * i * w * e_a,               // (A4.2.2.11)
-            acceleration: r * (i * a - w * w) * e_a, // (A4.2.2.30)
-        };
+        let crank_pin = PointMotion::on_crank(r, crank);
         let (cos_ba, sin_ba, d1, d2) = self.rod_angles(e_a.re, e_a.im);
         // (A4.2.2.12) and (A4.2.2.31): ω_BA = ω·dθ_BA/dθ, α_BA = α·dθ_BA/dθ + ω²·d²θ_BA/dθ².
         let (w_ba, a_ba) = (w * d1, a * d1 + w * w * d2);
