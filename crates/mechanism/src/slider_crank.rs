@@ -41,6 +41,8 @@ pub struct SliderCrank {
     pub pin_offset: f64,
     pub masses: MassProperties,
     topology: Topology,
+    /// 1/rod, 1/m.
+    inverse_rod: f64,
 }
 
 impl SliderCrank {
@@ -128,6 +130,7 @@ impl SliderCrank {
             pin_offset,
             masses,
             topology,
+            inverse_rod: 1.0 / rod,
         })
     }
 
@@ -135,9 +138,10 @@ impl SliderCrank {
     /// acceleration per unit crank speed at zero crank acceleration), from cos θ and sin θ.
     fn rod_angles(&self, c: f64, s: f64) -> (f64, f64, f64, f64) {
         let (r, l) = (self.crank, self.rod);
-        let cos_ba = (self.pin_offset - r * c) / l; // (A4.2.2.3)
+        // One division per step: 1/l is the topology's constant.
+        let cos_ba = (self.pin_offset - r * c) * self.inverse_rod; // (A4.2.2.3)
         let sin_ba = (1.0 - cos_ba * cos_ba).sqrt(); // θ_BA in (0, π): the piston is above the crank
-        let inv = 1.0 / (l * sin_ba);
+        let inv = self.inverse_rod / sin_ba;
         let d1 = -r * s * inv; // (A4.2.2.12) at ω = 1
         let d2 = -(r * c + l * d1 * d1 * cos_ba) * inv; // (A4.2.2.31) at ω = 1, α = 0
         (cos_ba, sin_ba, d1, d2)
@@ -282,8 +286,8 @@ impl Mechanism for SliderCrank {
         let rod = &st.bodies[ROD];
         let a_pin = st.joints[1].position;
         let e_rod = rod.orientation;
-        let sin_rod = e_rod.im;
-        let l = self.rod;
+        // One reciprocal of the rod's sine serves both divisions below.
+        let inverse_sin = 1.0 / e_rod.im;
 
         // Rod with a massless piston. Its inertial force −m2·a_g2 (A5.2.1.4) and inertial
         // couple −J2·α_BA (5.1.2) have the moment M_i about the crank pin (A5.2.1.6-8). The
@@ -292,13 +296,13 @@ impl Mechanism for SliderCrank {
         let f_ine2 = -rod_mass * rod.cg.acceleration;
         let couple = -rod_inertia * rod.angular_acceleration;
         let moment_about_crank_pin = cross(m.rod_cg * e_rod, f_ine2) + couple;
-        let f_piston_on_rod = C::new(moment_about_crank_pin / (l * sin_rod), 0.0);
+        let f_piston_on_rod = C::new(moment_about_crank_pin * self.inverse_rod * inverse_sin, 0.0);
         let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
 
         // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
         let load = -piston_mass * st.bodies[PISTON].cg.acceleration
             - C::new(0.0, piston_forces.first().copied().unwrap_or(0.0));
-        let f_rod_on_piston_3 = -load.im / sin_rod * e_rod;
+        let f_rod_on_piston_3 = -load.im * inverse_sin * e_rod;
         let side_3 = -(load.re + f_rod_on_piston_3.re); // (A5.2.1.20)
 
         let f_crank_on_rod = f_crank_on_rod_2 + f_rod_on_piston_3; // (A5.2.1.27)
