@@ -116,3 +116,42 @@ fn usage_errors_exit_2_and_every_command_has_help() {
         assert!(String::from_utf8_lossy(&help.stdout).contains("Usage"));
     }
 }
+
+/// Outputs are the same bytes whatever the number of worker threads.
+#[test]
+fn outputs_do_not_depend_on_the_thread_count() {
+    let dir = tempfile::tempdir().unwrap();
+    let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+    let (one, two) = (dir.path().join("one"), dir.path().join("two"));
+    for (out, jobs) in [(&one, "1"), (&two, "2")] {
+        let run = cardan(&[
+            &"run",
+            &configs,
+            &"--out",
+            out,
+            &"--jobs",
+            &jobs,
+            &"--only",
+            &"karhula-pump",
+            &"--quiet",
+        ]);
+        assert_eq!(run.status.code(), Some(0));
+    }
+    let mut compared = 0;
+    for case in std::fs::read_dir(&one).unwrap() {
+        let case = case.unwrap().path();
+        for file in std::fs::read_dir(&case).unwrap() {
+            let file = file.unwrap().path();
+            let other = two
+                .join(case.file_name().unwrap())
+                .join(file.file_name().unwrap());
+            assert!(
+                std::fs::read(&file).unwrap() == std::fs::read(&other).unwrap(),
+                "{} differs between --jobs 1 and 2",
+                file.display()
+            );
+            compared += 1;
+        }
+    }
+    assert!(compared >= 6, "{compared} files compared");
+}
