@@ -137,21 +137,27 @@ fn outputs_do_not_depend_on_the_thread_count() {
         ]);
         assert_eq!(run.status.code(), Some(0));
     }
-    let mut compared = 0;
-    for case in std::fs::read_dir(&one).unwrap() {
-        let case = case.unwrap().path();
-        for file in std::fs::read_dir(&case).unwrap() {
-            let file = file.unwrap().path();
-            let other = two
-                .join(case.file_name().unwrap())
-                .join(file.file_name().unwrap());
-            assert!(
-                std::fs::read(&file).unwrap() == std::fs::read(&other).unwrap(),
-                "{} differs between --jobs 1 and 2",
-                file.display()
-            );
-            compared += 1;
+    fn files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                files(&p, out);
+            } else {
+                out.push(p);
+            }
         }
+    }
+    let mut all = Vec::new();
+    files(&one, &mut all);
+    let mut compared = 0;
+    for file in all {
+        let other = two.join(file.strip_prefix(&one).unwrap());
+        assert!(
+            std::fs::read(&file).unwrap() == std::fs::read(&other).unwrap(),
+            "{} differs between --jobs 1 and 2",
+            file.display()
+        );
+        compared += 1;
     }
     assert!(compared >= 6, "{compared} files compared");
 }

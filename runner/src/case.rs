@@ -92,6 +92,9 @@ pub struct Case {
     /// The gas loading the pistons; without it the run has inertial loads only.
     pub gas: Option<GasCase>,
     pub output: OutputOptions,
+    /// The sweep this case is a point of (its results go to `out/<sweep>/<case>/`), and the
+    /// value of each swept field (dotted path, value as written).
+    pub sweep: Option<(String, Vec<(String, String)>)>,
 }
 
 #[derive(Deserialize)]
@@ -157,6 +160,31 @@ pub fn load(file: &Path) -> Result<Case, CaseError> {
         source,
     })?;
     parse(file, &text)
+}
+
+/// Reads one case file: one case, or every point of its `[sweep]` (see [`crate::sweep`]).
+pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
+    let text = std::fs::read_to_string(file).map_err(|source| CaseError::Io {
+        file: file.into(),
+        source,
+    })?;
+    let syntax = |e: &dyn std::fmt::Display| CaseError::Syntax {
+        file: file.into(),
+        message: e.to_string().trim_end().to_string(),
+    };
+    let table: toml::Table = toml::from_str(&text).map_err(|e| syntax(&e))?;
+    match crate::sweep::expand(file, table)? {
+        None => Ok(vec![parse(file, &text)?]),
+        Some((sweep, points)) => points
+            .into_iter()
+            .map(|p| {
+                let text = toml::to_string(&p.table).map_err(|e| syntax(&e))?;
+                let mut case = parse(file, &text)?;
+                case.sweep = Some((sweep.clone(), p.values));
+                Ok(case)
+            })
+            .collect(),
+    }
 }
 
 /// Reports a broken rule: the field, its value, the rule.
@@ -372,6 +400,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         mechanisms,
         gas,
         output,
+        sweep: None,
     })
 }
 

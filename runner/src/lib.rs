@@ -8,6 +8,7 @@ pub mod gas;
 pub mod gear_file;
 pub mod output;
 pub mod run;
+pub mod sweep;
 pub mod units;
 
 pub use case::{Case, CaseError};

@@ -236,28 +236,45 @@ pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
 /// with one name would write one folder: the second is a failure.
 pub fn load_cases(paths: &[PathBuf]) -> (Vec<Case>, Vec<String>) {
     let (files, mut failures) = case_files(paths);
-    let loaded: Vec<Result<Case, CaseError>> = files.par_iter().map(|f| case::load(f)).collect();
+    let loaded: Vec<Result<Vec<Case>, CaseError>> =
+        files.par_iter().map(|f| case::load_file(f)).collect();
     let mut cases: Vec<Case> = Vec::new();
+    // Output folders taken: a case's name, or a sweep's (its points go inside it).
+    let mut folders: std::collections::HashMap<String, PathBuf> = std::collections::HashMap::new();
     for result in loaded {
-        match result {
-            Ok(case) => match cases.iter().find(|c| c.name == case.name) {
-                Some(first) => failures.push(format!(
-                    "{}: case \"{}\": name = \"{}\": is already the name of the case in {}; each case needs its own output folder",
-                    case.file.display(),
-                    case.name,
-                    case.name,
-                    first.file.display()
-                )),
-                None => cases.push(case),
-            },
-            Err(e) => failures.push(e.to_string()),
+        let batch = match result {
+            Ok(batch) => batch,
+            Err(e) => {
+                failures.push(e.to_string());
+                continue;
+            }
+        };
+        let Some(first) = batch.first() else { continue };
+        let folder = first
+            .sweep
+            .as_ref()
+            .map_or(first.name.clone(), |(s, _)| s.clone());
+        if let Some(other) = folders.get(&folder) {
+            failures.push(format!(
+                "{}: case \"{}\": name = \"{folder}\": is already the name of the case in {}; each case needs its own output folder",
+                first.file.display(),
+                folder,
+                other.display()
+            ));
+            continue;
         }
+        folders.insert(folder, first.file.clone());
+        cases.extend(batch);
     }
     (cases, failures)
 }
 
 /// Runs one case into `out/<case name>/`, replacing that folder as a whole.
-fn run_and_write(case: &Case, out: &Path, options: &RunOptions) -> Result<PathBuf, String> {
+fn run_and_write(
+    case: &Case,
+    out: &Path,
+    options: &RunOptions,
+) -> Result<(PathBuf, Vec<MechanismResult>), String> {
     let dir = out.join(&case.name);
     let cannot_write = |e: anyhow::Error| {
         format!(
@@ -275,12 +292,57 @@ fn run_and_write(case: &Case, out: &Path, options: &RunOptions) -> Result<PathBu
         summary.push('\n');
         output::write_file(&tmp.join("summary.json"), summary.as_bytes())
             .and_then(|()| output::replace_dir(&tmp, &dir))
-            .map_err(cannot_write)
+            .map_err(cannot_write)?;
+        Ok(results)
     });
     if result.is_err() {
         let _ = std::fs::remove_dir_all(&tmp);
     }
-    result.map(|()| dir)
+    result.map(|results| (dir, results))
+}
+
+/// `sweep.csv`: one row per written point: its name, the value of each swept field, then every
+/// summary metric of every mechanism (`<mechanism>.<metric>`, in SI, units in `summary.json`).
+fn sweep_csv(points: &[(&Case, &[MechanismResult])]) -> String {
+    let mut columns: Vec<(String, String)> = Vec::new();
+    for (_, results) in points {
+        for r in *results {
+            for m in &r.summary.metrics {
+                let key = (r.mechanism.name().to_string(), m.name.clone());
+                if !columns.contains(&key) {
+                    columns.push(key);
+                }
+            }
+        }
+    }
+    let swept: Vec<String> = points
+        .first()
+        .and_then(|(c, _)| c.sweep.as_ref())
+        .map(|(_, v)| v.iter().map(|(p, _)| p.clone()).collect())
+        .unwrap_or_default();
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut header = vec!["case".to_string()];
+    header.extend(swept.iter().cloned());
+    header.extend(columns.iter().map(|(m, k)| format!("{m}.{k}")));
+    let _ = w.write_record(&header);
+    let mut buffer = ryu::Buffer::new();
+    for (case, results) in points {
+        let mut row = vec![case.name.clone()];
+        row.extend(
+            case.sweep
+                .iter()
+                .flat_map(|(_, v)| v.iter().map(|(_, x)| x.clone())),
+        );
+        for (mechanism, metric) in &columns {
+            let value = results
+                .iter()
+                .find(|r| r.mechanism.name() == mechanism)
+                .and_then(|r| r.summary.get(metric));
+            row.push(value.map_or(String::new(), |v| buffer.format(v).to_string()));
+        }
+        let _ = w.write_record(&row);
+    }
+    String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
 }
 
 /// Loads, validates, runs and writes every case under `paths` (or those `options.only`
@@ -292,18 +354,46 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         cases.retain(|c| matches_pattern(pattern, &c.name));
     }
     let done = std::sync::atomic::AtomicUsize::new(0);
-    let total = cases.len();
     let mut report = Report {
         failures,
         ..Report::default()
     };
-    let work = || -> Vec<Result<(String, PathBuf), String>> {
+    // A sweep's points run into a temporary folder that replaces `out/<sweep>` as a whole.
+    let mut sweeps: std::collections::BTreeMap<String, Option<PathBuf>> = Default::default();
+    for case in &cases {
+        if let Some((sweep, _)) = &case.sweep {
+            if !sweeps.contains_key(sweep) {
+                let tmp = output::temporary_dir(&out.join(sweep));
+                if let Err(e) = &tmp {
+                    report.failures.push(format!(
+                        "{}: sweep \"{sweep}\": cannot write results to {}: {e:#}",
+                        case.file.display(),
+                        out.join(sweep).display()
+                    ));
+                }
+                sweeps.insert(sweep.clone(), tmp.ok());
+            }
+        }
+    }
+    cases.retain(|c| match &c.sweep {
+        Some((sweep, _)) => sweeps.get(sweep).is_some_and(Option::is_some),
+        None => true,
+    });
+    let total = cases.len();
+    let base = |case: &Case| -> PathBuf {
+        match &case.sweep {
+            Some((sweep, _)) => sweeps[sweep].clone().expect("kept only with a folder"),
+            None => out.to_path_buf(),
+        }
+    };
+    type Outcome = Result<(String, PathBuf, Vec<MechanismResult>), String>;
+    let work = || -> Vec<Outcome> {
         cases
             .par_iter()
             .map(|case| {
                 let _span = tracing::info_span!("case", name = %case.name).entered();
                 let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                    run_and_write(case, out, &options)
+                    run_and_write(case, &base(case), &options)
                 }));
                 if let Some(progress) = &options.progress {
                     progress(
@@ -312,7 +402,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
                     );
                 }
                 match outcome {
-                    Ok(r) => r.map(|dir| (case.name.clone(), dir)),
+                    Ok(r) => r.map(|(dir, results)| (case.name.clone(), dir, results)),
                     Err(panic) => Err(format!(
                         "{}: case \"{}\": internal error (a bug, please report it): {}",
                         case.file.display(),
@@ -339,13 +429,35 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         },
         None => work(),
     };
-    for o in outcomes {
+    let mut points: std::collections::BTreeMap<&str, Vec<(&Case, &[MechanismResult])>> =
+        Default::default();
+    for (case, o) in cases.iter().zip(&outcomes) {
         match o {
-            Ok(w) => {
-                tracing::info!(case = %w.0, folder = %w.1.display(), "written");
-                report.written.push(w);
+            Ok((name, dir, results)) => {
+                let dir = match &case.sweep {
+                    Some((sweep, _)) => {
+                        points.entry(sweep).or_default().push((case, results));
+                        out.join(sweep).join(name)
+                    }
+                    None => dir.clone(),
+                };
+                tracing::info!(case = %name, folder = %dir.display(), "written");
+                report.written.push((name.clone(), dir));
             }
-            Err(e) => report.failures.push(e),
+            Err(e) => report.failures.push(e.clone()),
+        }
+    }
+    for (sweep, tmp) in &sweeps {
+        let Some(tmp) = tmp else { continue };
+        let rows = points.get(sweep.as_str()).map_or(&[][..], Vec::as_slice);
+        let written = output::write_file(&tmp.join("sweep.csv"), sweep_csv(rows).as_bytes())
+            .and_then(|()| output::replace_dir(tmp, &out.join(sweep)));
+        if let Err(e) = written {
+            let _ = std::fs::remove_dir_all(tmp);
+            report.failures.push(format!(
+                "sweep \"{sweep}\": cannot write results to {}: {e:#}",
+                out.join(sweep).display()
+            ));
         }
     }
     report

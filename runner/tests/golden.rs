@@ -33,10 +33,15 @@ fn shipped_cases_match_golden_summaries() {
     assert!(failures.is_empty(), "{failures:?}");
     assert!(files.len() >= 8, "the shipped cases are missing: {files:?}");
     for file in files {
-        let case = case::load(&file).unwrap_or_else(|e| panic!("{e}"));
+        // A sweep's points are checked by running it (runner/tests/sweep.rs, and CI's main job).
+        let cases = case::load_file(&file).unwrap_or_else(|e| panic!("{e}"));
+        if cases[0].sweep.is_some() {
+            continue;
+        }
+        let case = &cases[0];
         let mut summary = output::summary_json(
-            &case,
-            &run_case(&case, None).unwrap_or_else(|e| panic!("{e}")),
+            case,
+            &run_case(case, None).unwrap_or_else(|e| panic!("{e}")),
         );
         round(&mut summary);
         let name = PathBuf::from(&file)

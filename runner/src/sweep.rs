@@ -1,0 +1,305 @@
+//! Sweeps: a `[sweep]` table varies numeric fields of a case (each by its dotted path, with
+//! units) over a list, a linear range or a logarithmic range, as a grid (every combination) or
+//! zipped (the n-th value of every field together). Each point is an ordinary case with a
+//! stable, readable name; the points run into `out/<sweep name>/<point>/` and their summaries are
+//! gathered in `out/<sweep name>/sweep.csv`.
+//!
+//! ```toml
+//! [sweep]
+//! mode = "grid"                                   # or "zip"
+//! "motion.initial_speed" = ["3 rad/s", "30 rad/s"]
+//! "geometry.rod_length" = { from = "120 mm", to = "200 mm", points = 5 }
+//! "motion.angular_acceleration" = { from = 10, to = 1000, points = 3, scale = "log" }
+//! ```
+
+use crate::case::CaseError;
+use std::path::Path;
+
+/// One point of a sweep: its name, the value of each swept field, and its case table.
+#[derive(Debug, Clone)]
+pub struct Point {
+    pub name: String,
+    /// (dotted path, value as written in the point's case).
+    pub values: Vec<(String, String)>,
+    pub table: toml::Table,
+}
+
+/// Largest number of points a sweep may have.
+pub const MAX_POINTS: usize = 100_000;
+
+fn invalid(
+    file: &Path,
+    case: &str,
+    field: &str,
+    value: &dyn std::fmt::Display,
+    rule: &str,
+) -> CaseError {
+    CaseError::Invalid {
+        file: file.into(),
+        case: case.to_string(),
+        field: field.to_string(),
+        value: value.to_string(),
+        rule: rule.to_string(),
+    }
+}
+
+/// A number and the unit written after it ("120 mm" → (120, "mm"); 0.5 → (0.5, "")).
+fn number_and_unit(v: &toml::Value) -> Option<(f64, String)> {
+    match v {
+        toml::Value::Float(x) => Some((*x, String::new())),
+        toml::Value::Integer(i) => Some((*i as f64, String::new())),
+        toml::Value::String(s) => {
+            let s = s.trim();
+            let split = s
+                .find(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c)))
+                .unwrap_or(s.len());
+            let x = s[..split].parse().ok()?;
+            Some((x, s[split..].trim().to_string()))
+        }
+        _ => None,
+    }
+}
+
+/// The values one swept field takes.
+fn values_of(
+    file: &Path,
+    case: &str,
+    path: &str,
+    spec: &toml::Value,
+) -> Result<Vec<toml::Value>, CaseError> {
+    let field = format!("sweep.\"{path}\"");
+    match spec {
+        toml::Value::Array(list) if !list.is_empty() => Ok(list.clone()),
+        toml::Value::Table(t) => {
+            let get = |k: &str| t.get(k).and_then(number_and_unit);
+            let (Some((from, unit)), Some((to, unit_to))) = (get("from"), get("to")) else {
+                return Err(invalid(
+                    file,
+                    case,
+                    &field,
+                    spec,
+                    "a range needs `from` and `to` (numbers, or strings with the same unit)",
+                ));
+            };
+            if unit != unit_to {
+                return Err(invalid(
+                    file,
+                    case,
+                    &field,
+                    spec,
+                    "`from` and `to` must have the same unit",
+                ));
+            }
+            let points = match t.get("points") {
+                Some(toml::Value::Integer(n)) if (2..=MAX_POINTS as i64).contains(n) => *n as usize,
+                other => {
+                    return Err(invalid(
+                        file,
+                        case,
+                        &format!("{field}.points"),
+                        &format!("{other:?}"),
+                        "must be a whole number from 2",
+                    ))
+                }
+            };
+            let log = match t.get("scale").and_then(|s| s.as_str()) {
+                None | Some("linear") => false,
+                Some("log") => true,
+                Some(other) => {
+                    return Err(invalid(
+                        file,
+                        case,
+                        &format!("{field}.scale"),
+                        &other,
+                        "must be \"linear\" or \"log\"",
+                    ))
+                }
+            };
+            if log && !(from > 0.0 && to > 0.0) {
+                return Err(invalid(
+                    file,
+                    case,
+                    &field,
+                    spec,
+                    "a logarithmic range needs positive `from` and `to`",
+                ));
+            }
+            for key in t.keys() {
+                if !["from", "to", "points", "scale"].contains(&key.as_str()) {
+                    return Err(invalid(
+                        file,
+                        case,
+                        &format!("{field}.{key}"),
+                        &t[key],
+                        "unknown key of a range: from, to, points, scale",
+                    ));
+                }
+            }
+            Ok((0..points)
+                .map(|k| {
+                    let f = k as f64 / (points - 1) as f64;
+                    let x = if log {
+                        from * (to / from).powf(f)
+                    } else {
+                        from + (to - from) * f
+                    };
+                    if unit.is_empty() {
+                        toml::Value::Float(x)
+                    } else {
+                        toml::Value::String(format!("{x} {unit}"))
+                    }
+                })
+                .collect())
+        }
+        _ => Err(invalid(
+            file,
+            case,
+            &field,
+            spec,
+            "must be a non-empty list of values, or a range { from, to, points, scale }",
+        )),
+    }
+}
+
+/// Sets the value at the dotted `path` of `table`, making the tables on the way.
+fn set(table: &mut toml::Table, path: &str, value: toml::Value) -> Result<(), String> {
+    let mut parts: Vec<&str> = path.split('.').collect();
+    let last = parts.pop().ok_or("an empty path")?;
+    let mut t = table;
+    for p in parts {
+        t = t
+            .entry(p)
+            .or_insert_with(|| toml::Value::Table(toml::Table::new()))
+            .as_table_mut()
+            .ok_or_else(|| format!("{p} is not a table"))?;
+    }
+    t.insert(last.to_string(), value);
+    Ok(())
+}
+
+/// A value as a piece of a folder name: "120 mm" → "120mm", "3 rad/s" → "3rad_s".
+fn name_piece(v: &toml::Value) -> String {
+    let text = match v {
+        toml::Value::String(s) => s.clone(),
+        other => other.to_string(),
+    };
+    text.chars()
+        .filter(|c| !c.is_whitespace())
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || "-_.".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// The points of the sweep in `table` (a case file with a `[sweep]` table), or `None` if it
+/// has none.
+pub fn expand(
+    file: &Path,
+    mut table: toml::Table,
+) -> Result<Option<(String, Vec<Point>)>, CaseError> {
+    let Some(sweep) = table.remove("sweep") else {
+        return Ok(None);
+    };
+    let name = table
+        .get("name")
+        .and_then(|n| n.as_str())
+        .unwrap_or("")
+        .to_string();
+    let Some(sweep) = sweep.as_table().cloned() else {
+        return Err(invalid(file, &name, "sweep", &sweep, "must be a table"));
+    };
+    let zip = match sweep.get("mode").and_then(|m| m.as_str()) {
+        None | Some("grid") => false,
+        Some("zip") => true,
+        Some(other) => {
+            return Err(invalid(
+                file,
+                &name,
+                "sweep.mode",
+                &other,
+                "must be \"grid\" or \"zip\"",
+            ))
+        }
+    };
+    let mut fields: Vec<(String, Vec<toml::Value>)> = Vec::new();
+    for (path, spec) in &sweep {
+        if path == "mode" {
+            continue;
+        }
+        if path == "name" || path.starts_with("sweep") || !path.contains('.') {
+            return Err(invalid(file, &name, &format!("sweep.\"{path}\""), spec, "sweep a field by its dotted path, e.g. \"motion.initial_speed\" (not name or sweep)"));
+        }
+        fields.push((path.clone(), values_of(file, &name, path, spec)?));
+    }
+    if fields.is_empty() {
+        return Err(invalid(
+            file,
+            &name,
+            "sweep",
+            &"{}",
+            "names no field to vary",
+        ));
+    }
+    let count = if zip {
+        let n = fields[0].1.len();
+        if let Some((path, v)) = fields.iter().find(|(_, v)| v.len() != n) {
+            return Err(invalid(
+                file,
+                &name,
+                &format!("sweep.\"{path}\""),
+                &v.len(),
+                &format!("a zipped sweep needs as many values in every field ({n})"),
+            ));
+        }
+        n
+    } else {
+        fields.iter().map(|(_, v)| v.len()).product()
+    };
+    if count > MAX_POINTS {
+        return Err(invalid(
+            file,
+            &name,
+            "sweep",
+            &count,
+            &format!("at most {MAX_POINTS} points"),
+        ));
+    }
+    let mut points = Vec::with_capacity(count);
+    for k in 0..count {
+        let mut t = table.clone();
+        let mut values = Vec::new();
+        let mut point_name = name.clone();
+        let mut rest = k;
+        for (path, list) in &fields {
+            let v = if zip {
+                list[k].clone()
+            } else {
+                let v = list[rest % list.len()].clone();
+                rest /= list.len();
+                v
+            };
+            let short = path.rsplit('.').next().unwrap_or(path);
+            point_name.push_str(&format!("-{short}-{}", name_piece(&v)));
+            set(&mut t, path, v.clone())
+                .map_err(|rule| invalid(file, &name, &format!("sweep.\"{path}\""), &v, &rule))?;
+            values.push((
+                path.clone(),
+                match &v {
+                    toml::Value::String(s) => s.clone(),
+                    o => o.to_string(),
+                },
+            ));
+        }
+        t.insert("name".into(), toml::Value::String(point_name.clone()));
+        points.push(Point {
+            name: point_name,
+            values,
+            table: t,
+        });
+    }
+    Ok(Some((name, points)))
+}
