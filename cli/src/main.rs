@@ -104,18 +104,14 @@ fn progress_bar(quiet: bool) -> indicatif::ProgressBar {
     if quiet {
         return indicatif::ProgressBar::hidden();
     }
-    let bar = indicatif::ProgressBar::with_draw_target(
-        None,
-        indicatif::ProgressDrawTarget::stderr_with_hz(4),
-    );
+    // Nothing is drawn before the first second: short runs stay quiet.
+    let bar = indicatif::ProgressBar::hidden();
     bar.set_style(
         indicatif::ProgressStyle::with_template(
             "{elapsed:>4} [{wide_bar}] {pos}/{len} cases, {eta} left",
         )
         .expect("a valid template"),
     );
-    // Nothing is drawn before the first second: short runs stay quiet.
-    bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     let shown = bar.clone();
     std::thread::spawn(move || {
         std::thread::sleep(std::time::Duration::from_secs(1));

@@ -4,7 +4,7 @@
 //! and its own table (`[cardan_gear]`, ...).
 
 use crate::gas::GasCase;
-use crate::units::{to_si, Dimension};
+use crate::units::{is_folder_name, to_si, Dimension};
 use cardan_mechanism::{
     CrankMotion, MachineGeometry, MassInputs, Material, Mechanism, OptionKind, OptionValue, Options,
 };
@@ -204,13 +204,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         value: value.to_string(),
         rule: rule.to_string(),
     };
-    if raw.name.is_empty()
-        || raw.name.starts_with('.')
-        || !raw
-            .name
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c))
-    {
+    if !is_folder_name(&raw.name) {
         return Err(invalid("name", &format!("\"{}\"", raw.name), "must be a non-empty folder name of letters, digits, '-', '_' and '.', not starting with '.'"));
     }
     let machine = match raw.machine.as_str() {

@@ -15,7 +15,7 @@
 //! [`GearReport::failures`] lists it so the command can exit 1.
 
 use crate::output::{replace_dir, temporary_dir, write_file};
-use crate::units::{to_si, Dimension};
+use crate::units::{is_folder_name, split_number, to_si, Dimension};
 use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, contact_allowable_through_hardened, Grade,
 };
@@ -150,19 +150,6 @@ impl Quantity {
         }
         Ok(x * f)
     }
-}
-
-/// "12.5 MPa" → (12.5, "MPa").
-fn split_number(s: &str) -> Result<(f64, &str), String> {
-    let s = s.trim();
-    let split = s
-        .find(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c)))
-        .unwrap_or(s.len());
-    let (num, unit) = s.split_at(split);
-    let x: f64 = num
-        .parse()
-        .map_err(|_| format!("cannot read a number in \"{s}\""))?;
-    Ok((x, unit.trim()))
 }
 
 /// A length: case-file units (m, mm, cm; bare number in m) or inches ("1.5 in").
@@ -350,13 +337,7 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
         value: value.to_string(),
         rule: rule.to_string(),
     };
-    if raw.name.is_empty()
-        || raw.name.starts_with('.')
-        || !raw
-            .name
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c))
-    {
+    if !is_folder_name(&raw.name) {
         return Err(invalid(
             "name",
             &format!("\"{}\"", raw.name),

@@ -13,6 +13,7 @@
 //! ```
 
 use crate::case::CaseError;
+use crate::units::split_number;
 use std::path::Path;
 
 /// One point of a sweep: its name, the value of each swept field, and its case table.
@@ -48,14 +49,7 @@ fn number_and_unit(v: &toml::Value) -> Option<(f64, String)> {
     match v {
         toml::Value::Float(x) => Some((*x, String::new())),
         toml::Value::Integer(i) => Some((*i as f64, String::new())),
-        toml::Value::String(s) => {
-            let s = s.trim();
-            let split = s
-                .find(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c)))
-                .unwrap_or(s.len());
-            let x = s[..split].parse().ok()?;
-            Some((x, s[split..].trim().to_string()))
-        }
+        toml::Value::String(s) => split_number(s).ok().map(|(x, u)| (x, u.to_string())),
         _ => None,
     }
 }

@@ -100,7 +100,8 @@ pub fn to_si(value: &toml::Value, dim: Dimension) -> Result<f64, String> {
     Ok(x * factor + offset)
 }
 
-fn parse(s: &str, dim: Dimension) -> Result<Option<(f64, f64, f64)>, String> {
+/// "12.5 MPa" → (12.5, "MPa"); "0.5" → (0.5, "").
+pub fn split_number(s: &str) -> Result<(f64, &str), String> {
     let s = s.trim();
     let split = s
         .find(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c)))
@@ -109,7 +110,22 @@ fn parse(s: &str, dim: Dimension) -> Result<Option<(f64, f64, f64)>, String> {
     let x: f64 = num
         .parse()
         .map_err(|_| format!("cannot read a number in \"{s}\""))?;
-    let unit = unit.trim();
+    Ok((x, unit.trim()))
+}
+
+/// Whether `name` can be an output folder: letters, digits, '-', '_' and '.', not empty and
+/// not starting with '.' (no hidden or parent folders).
+pub fn is_folder_name(name: &str) -> bool {
+    !name.is_empty()
+        && !name.starts_with('.')
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c))
+}
+
+fn parse(s: &str, dim: Dimension) -> Result<Option<(f64, f64, f64)>, String> {
+    let s = s.trim();
+    let (x, unit) = split_number(s)?;
     let unit = if unit.is_empty() {
         dim.default_unit()
     } else {
