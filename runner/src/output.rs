@@ -288,19 +288,16 @@ impl<'a> CsvSink<'a> {
             r.push(p);
             r.push(s.piston_forces.first().copied().unwrap_or(0.0));
         }
-        let mut families: Vec<(&cardan_mechanism::Loads, &[f64])> = s
-            .families
-            .iter()
-            .zip(s.shares)
-            .map(|(l, sh)| (l, sh.as_slice()))
-            .collect();
         if self.with_total {
             for (k, total) in self.total_shares.iter_mut().enumerate() {
                 *total = s.shares.iter().map(|sh| sh[k]).sum();
             }
-            families.push((s.total, &self.total_shares));
         }
-        for (loads, shares) in families {
+        let total = self
+            .with_total
+            .then_some((s.total, self.total_shares.as_slice()));
+        let families = s.families.iter().zip(s.shares.iter().map(Vec::as_slice));
+        for (loads, shares) in families.chain(total) {
             for ((j, l), m) in t.joints.iter().zip(&loads.joints).zip(&st.joints) {
                 r.extend([l.force.re, l.force.im, l.force.norm()]);
                 match j.kind {
