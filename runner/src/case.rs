@@ -5,6 +5,7 @@
 
 use crate::gas::GasCase;
 use crate::units::{is_folder_name, to_si, Dimension};
+use cardan_dynamics::{Friction, LossBudget};
 use cardan_mechanism::{
     CrankMotion, MachineGeometry, MassInputs, Material, Mechanism, OptionKind, OptionValue, Options,
 };
@@ -91,6 +92,8 @@ pub struct Case {
     pub mechanisms: Vec<Arc<dyn Mechanism>>,
     /// The gas loading the pistons; without it the run has inertial loads only.
     pub gas: Option<GasCase>,
+    /// The loss models; without them the run has no losses.
+    pub friction: Option<Friction>,
     pub output: OutputOptions,
     /// The sweep this case is a point of (its results go to `out/<sweep>/<case>/`), and the
     /// value of each swept field (dotted path, value as written).
@@ -106,6 +109,8 @@ struct RawCase {
     motion: RawMotion,
     masses: Option<toml::Table>,
     gas: Option<toml::Table>,
+    friction: Option<toml::Table>,
+    gear: Option<toml::Table>,
     output: Option<RawOutput>,
     /// The mechanisms' own tables, checked against the registry.
     #[serde(flatten)]
@@ -188,7 +193,7 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
 }
 
 /// Reports a broken rule: the field, its value, the rule.
-type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> CaseError + 'a;
+pub(crate) type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> CaseError + 'a;
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
@@ -307,7 +312,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
                 key,
                 &raw.rest[key],
                 &format!(
-                    "unknown field or table: a case has name, machine, mechanisms, [geometry], [motion], [masses], [gas], [output], and a table per mechanism ({})",
+                    "unknown field or table: a case has name, machine, mechanisms, [geometry], [motion], [masses], [gas], [friction], [gear], [output], and a table per mechanism ({})",
                     cardan_mechanism::names()
                 ),
             ));
@@ -382,6 +387,39 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
             ));
         }
     }
+    if raw.gear.is_some() && raw.friction.is_none() {
+        return Err(invalid(
+            "gear",
+            &"a [gear] table without [friction]",
+            "the gear pair is read by the gear mesh loss: add a [friction] table",
+        ));
+    }
+    let friction = match &raw.friction {
+        None => None,
+        Some(table) => {
+            let f = crate::friction::parse(table, raw.gear.as_ref(), geometry.bore, &invalid)?;
+            for (joint, _) in &f.joint_bearings {
+                let revolute = |m: &Arc<dyn Mechanism>| {
+                    m.topology().joints.iter().any(|j| {
+                        j.name == joint
+                            && matches!(j.kind, cardan_mechanism::JointKind::Revolute(_))
+                    })
+                };
+                if !mechanisms.iter().any(revolute) {
+                    return Err(invalid(
+                        &format!("friction.joints.{joint}"),
+                        &table["joints"][joint],
+                        "no mechanism of the case has a revolute joint of this name (see summary.json's joints)",
+                    ));
+                }
+            }
+            for m in &mechanisms {
+                LossBudget::new(&f, m.as_ref(), geometry.bore)
+                    .map_err(|e| invalid(&e.field, &format!("(for the {})", m.name()), &e.rule))?;
+            }
+            Some(f)
+        }
+    };
     Ok(Case {
         file: file.into(),
         name: raw.name,
@@ -393,6 +431,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         steps: m.steps as usize,
         mechanisms,
         gas,
+        friction,
         output,
         sweep: None,
     })

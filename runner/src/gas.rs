@@ -5,7 +5,9 @@ use crate::case::{CaseError, Machine};
 use crate::units::{to_si, Dimension};
 use cardan_gas::closed_cycle::ClosedCycle;
 use cardan_gas::compressor::{Compressor, AIR_GAS_CONSTANT};
-use cardan_gas::{Cylinder, GasError, GasModel, KarhulaEngine, KarhulaPump, Polytropic};
+use cardan_gas::{
+    Cylinder, EngineReading, GasError, GasModel, KarhulaEngine, KarhulaPump, Polytropic,
+};
 use std::cell::RefCell;
 
 /// A validated gas model of a case.
@@ -288,17 +290,30 @@ pub(crate) fn parse(
             GasModelCase::KarhulaPump(KarhulaPump { gas: polytropic()? }),
             compression_ratio()?,
         ),
-        "karhula_engine" => (
-            GasModelCase::KarhulaEngine(
-                KarhulaEngine::new(
-                    polytropic()?,
-                    f.required("peak_pressure", Dimension::Pressure)?,
-                    f.required("combustion_delay", Dimension::Angle)?,
-                )
-                .map_err(|e| f.broken(e))?,
-            ),
-            compression_ratio()?,
-        ),
+        "karhula_engine" => {
+            let mut engine = KarhulaEngine::new(
+                polytropic()?,
+                f.required("peak_pressure", Dimension::Pressure)?,
+                f.required("combustion_delay", Dimension::Angle)?,
+            )
+            .map_err(|e| f.broken(e))?;
+            f.read.borrow_mut().push("reading");
+            engine.reading = match table.get("reading") {
+                None => EngineReading::Direct,
+                Some(v) => match v.as_str() {
+                    Some("direct") => EngineReading::Direct,
+                    Some("thesis") => EngineReading::Thesis,
+                    _ => {
+                        return Err(invalid(
+                            "gas.reading",
+                            v,
+                            "must be \"direct\" (polytropic compression stroke) or \"thesis\" (the combustion pressure on the compression stroke too, as Karhula's work columns imply)",
+                        ))
+                    }
+                },
+            };
+            (GasModelCase::KarhulaEngine(engine), compression_ratio()?)
+        }
         "closed_cycle" => (
             GasModelCase::ClosedCycle(closed_cycle(&f)?),
             compression_ratio()?,

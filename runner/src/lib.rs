@@ -4,6 +4,7 @@
 //! writes.
 
 pub mod case;
+pub mod friction;
 pub mod gas;
 pub mod gear_file;
 pub mod output;

@@ -53,18 +53,23 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
                     j.other.map_or("frame", |o| t.bodies[o].name)
                 ]);
                 let v = match j.kind {
-                    JointKind::Revolute { radius } => {
-                        json!({"kind": "revolute", "bodies": between, "journal_radius_m": radius})
+                    JointKind::Revolute(b) => {
+                        json!({"kind": "revolute", "bodies": between, "journal_radius_m": b.radius,
+                            "bearings": b.count, "static_load_rating_N": b.static_load_rating})
                     }
                     JointKind::Prismatic => json!({"kind": "prismatic", "bodies": between}),
                     JointKind::GearMesh {
                         ratio,
+                        pitch_radius,
+                        internal,
                         pressure_angle,
                         ..
                     } => json!({
                         "kind": "gear_mesh",
                         "bodies": between,
                         "ratio": ratio,
+                        "pitch_radius_m": pitch_radius,
+                        "internal": internal,
                         "pressure_angle_deg": pressure_angle.to_degrees()
                     }),
                 };
@@ -127,10 +132,17 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("{family}_{joint}_radial_n", "gear meshes: the force towards the first gear's centre"),
     ("{family}_torque_nm", "drive torque on the crankshaft, positive in the direction of rotation"),
     ("{family}_torque_{body}_nm", "the body's share of it by the power balance (Karhula's T_1i10, T_2i10, T_3i10); empty while the crank stands still"),
+    ("friction_torque_nm", "with [friction]: the drive torque that covers the losses, Σ P / ω"),
+    ("power_loss_{component}_w", "with [friction]: one loss component's power (rings, skirt, a slide, a revolute joint's bearings by joint name, a gear mesh by joint name)"),
 ];
 
 /// The CSV header of `mechanism` run with the load families `families`.
-fn header(mechanism: &dyn Mechanism, families: &[&str], gas: bool) -> Vec<String> {
+fn header(
+    mechanism: &dyn Mechanism,
+    families: &[&str],
+    gas: bool,
+    losses: &[String],
+) -> Vec<String> {
     let t = mechanism.topology();
     let mut h: Vec<String> = [
         "crank_angle_deg",
@@ -169,7 +181,7 @@ fn header(mechanism: &dyn Mechanism, families: &[&str], gas: bool) -> Vec<String
     }
     for j in &t.joints {
         let unit = match j.kind {
-            JointKind::Revolute { .. } => "rad_s",
+            JointKind::Revolute(_) => "rad_s",
             JointKind::Prismatic | JointKind::GearMesh { .. } => "m_s",
         };
         h.push(format!("{}_speed_{unit}", j.name));
@@ -190,13 +202,17 @@ fn header(mechanism: &dyn Mechanism, families: &[&str], gas: bool) -> Vec<String
                     h.push(format!("{f}_{}_tangential_n", j.name));
                     h.push(format!("{f}_{}_radial_n", j.name));
                 }
-                JointKind::Revolute { .. } => {}
+                JointKind::Revolute(_) => {}
             }
         }
         h.push(format!("{f}_torque_nm"));
         for b in &t.bodies {
             h.push(format!("{f}_torque_{}_nm", b.name));
         }
+    }
+    if !losses.is_empty() {
+        h.push("friction_torque_nm".into());
+        h.extend(losses.iter().map(|c| format!("power_loss_{c}_w")));
     }
     h
 }
@@ -215,13 +231,14 @@ pub struct CsvSink<'a> {
 }
 
 impl<'a> CsvSink<'a> {
-    /// A CSV at `path` for `mechanism` run with the load families `families` over
-    /// `last_step + 1` steps.
+    /// A CSV at `path` for `mechanism` run with the load families `families` and the loss
+    /// components `losses` over `last_step + 1` steps.
     pub fn create(
         path: &Path,
         mechanism: &'a dyn Mechanism,
         families: &[&str],
         gas: bool,
+        losses: &[String],
         options: OutputOptions,
         last_step: usize,
     ) -> anyhow::Result<Self> {
@@ -233,7 +250,7 @@ impl<'a> CsvSink<'a> {
         if with_total {
             names.push("total");
         }
-        writer.write_record(header(mechanism, &names, gas))?;
+        writer.write_record(header(mechanism, &names, gas, losses))?;
         Ok(Self {
             mechanism,
             writer,
@@ -305,11 +322,15 @@ impl<'a> CsvSink<'a> {
                     JointKind::GearMesh { .. } => {
                         r.extend([tangential(l.force, m), radial(l.force, m)]);
                     }
-                    JointKind::Revolute { .. } => {}
+                    JointKind::Revolute(_) => {}
                 }
             }
             r.push(loads.crank_torque);
             r.extend(shares);
+        }
+        if !s.losses.is_empty() {
+            r.push(s.friction_torque);
+            r.extend(s.losses);
         }
     }
 }

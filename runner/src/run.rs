@@ -4,7 +4,9 @@
 use crate::case::{self, Case, CaseError};
 use crate::output::{self, CsvSink};
 use cardan_dynamics::stepper::GasAt;
-use cardan_dynamics::{run, Gas, Inertial, LoadFamily, Sink, Solver, Summary, SummarySink};
+use cardan_dynamics::{
+    run, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Summary, SummarySink,
+};
 use cardan_mechanism::{Grid, Mechanism};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -39,7 +41,18 @@ fn run_mechanism(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
+    let mut losses = match &case.friction {
+        Some(f) => Some(
+            LossBudget::new(f, mechanism, case.geometry.bore)
+                .map_err(|e| format!("{}: {}", e.field, e.rule))?,
+        ),
+        None => None,
+    };
+    let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
     let mut summary = SummarySink::new(mechanism, &names, case.steps + 1);
+    if let Some(l) = &losses {
+        summary = summary.with_losses(l.names());
+    }
     let mut csv = match csv_dir {
         Some(dir) => Some(
             CsvSink::create(
@@ -47,6 +60,7 @@ fn run_mechanism(
                 mechanism,
                 &names,
                 case.gas.is_some(),
+                &loss_names,
                 case.output,
                 case.steps,
             )
@@ -65,7 +79,15 @@ fn run_mechanism(
         if let Some(c) = csv.as_mut() {
             sinks.push(c);
         }
-        run(mechanism, &mut grid, &families, gas, &mut sinks).map_err(|e| e.to_string())
+        run(
+            mechanism,
+            &mut grid,
+            &families,
+            gas,
+            losses.as_mut(),
+            &mut sinks,
+        )
+        .map_err(|e| e.to_string())
     };
     let gas_metrics = match &case.gas {
         None => {

@@ -24,6 +24,10 @@ pub enum Dimension {
     /// A change of crank angle per change of crank speed (ignition-timing slopes), s
     /// (rad per rad/s); "deg/rpm" as the correlations print them.
     AnglePerSpeed,
+    /// Kinematic viscosity: a bare number is in m²/s; "mm^2/s" and "cSt" are the same unit.
+    KinematicViscosity,
+    /// Density, kg/m³.
+    Density,
     /// A pure number (ratios, exponents, factors), or a coefficient in the SI unit its field
     /// names.
     Number,
@@ -34,7 +38,13 @@ impl Dimension {
     /// have an offset, see [`Dimension::offset`].
     fn units(self) -> &'static [(&'static str, f64)] {
         match self {
-            Dimension::Length => &[("m", 1.0), ("mm", 1e-3), ("cm", 1e-2)],
+            Dimension::Length => &[
+                ("m", 1.0),
+                ("mm", 1e-3),
+                ("cm", 1e-2),
+                ("um", 1e-6),
+                ("µm", 1e-6),
+            ],
             Dimension::Angle => &[("deg", PI / 180.0), ("°", PI / 180.0), ("rad", 1.0)],
             Dimension::AngularSpeed => &[
                 ("rad/s", 1.0),
@@ -64,6 +74,14 @@ impl Dimension {
             Dimension::SpecificEnergy => &[("J/kg", 1.0), ("kJ/kg", 1e3), ("MJ/kg", 1e6)],
             Dimension::GasConstant => &[("J/(kg*K)", 1.0), ("J/(kg·K)", 1.0), ("J/kgK", 1.0)],
             Dimension::AnglePerSpeed => &[("s", 1.0), ("deg/rpm", 1.0 / 6.0)],
+            Dimension::KinematicViscosity => &[
+                ("m^2/s", 1.0),
+                ("m²/s", 1.0),
+                ("mm^2/s", 1e-6),
+                ("mm²/s", 1e-6),
+                ("cSt", 1e-6),
+            ],
+            Dimension::Density => &[("kg/m^3", 1.0), ("kg/m³", 1.0), ("g/cm^3", 1e3)],
             Dimension::Number => &[("", 1.0)],
         }
     }

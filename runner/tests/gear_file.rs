@@ -259,7 +259,7 @@ fn bad_files_name_file_pair_field_and_rule() {
         (
             "module = \"3 mm\"",
             "module = \"3 furlongs\"",
-            &["module", "furlongs", "accepted: m, mm, cm, in"],
+            &["module", "furlongs", "accepted: m, mm, cm, um, µm, in"],
         ),
         ("module = \"3 mm\"", "module = -3", &["module", "positive"]),
         ("module = \"3 mm\"", "", &["module", "cardan_crank_length"]),

@@ -42,7 +42,7 @@ fn mechanisms_table() -> String {
             .iter()
             .map(|j| {
                 let kind = match j.kind {
-                    JointKind::Revolute { .. } => "pin",
+                    JointKind::Revolute(_) => "pin",
                     JointKind::Prismatic => "slide",
                     JointKind::GearMesh { .. } => "gear mesh",
                 };

@@ -17,6 +17,7 @@
 
 pub mod energy;
 pub mod family;
+pub mod losses;
 pub mod metrics;
 pub mod planar;
 pub mod stepper;
@@ -24,6 +25,7 @@ pub mod summary;
 
 pub use energy::{kinetic_energy, torque_shares};
 pub use family::{Gas, Inertial, LoadFamily, Solver};
+pub use losses::{Bearing, Friction, LossBudget, LossError, MeshLossModel, Oil, Rings, Skirt};
 pub use metrics::{Aggregation, MetricDef, METRICS};
 pub use stepper::{run, run_summary, GasAt, RunError, Sink, Step, StepRecord, Steps};
 pub use summary::{radial, tangential, Metric, Summary, SummarySink};

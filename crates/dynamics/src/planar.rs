@@ -78,7 +78,7 @@ fn solve(
     for (j, joint) in joints.iter().enumerate() {
         let m = &state.joints[j];
         let u = match joint.kind {
-            JointKind::Revolute { .. } => Unknowns::Pin,
+            JointKind::Revolute(_) => Unknowns::Pin,
             JointKind::Prismatic => Unknowns::Slide {
                 n: C::i() * m.direction,
             },

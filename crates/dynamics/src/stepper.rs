@@ -4,6 +4,7 @@
 
 use crate::energy::torque_shares;
 use crate::family::LoadFamily;
+use crate::losses::LossBudget;
 use cardan_mechanism::{Loads, Mechanism, MotionError, MotionSource, State};
 
 /// One step, as the sinks see it.
@@ -20,6 +21,11 @@ pub struct Step<'a> {
     pub families: &'a [Loads],
     /// Their sum.
     pub total: &'a Loads,
+    /// The power loss of each component of the run's [`LossBudget`], W (empty without one).
+    pub losses: &'a [f64],
+    /// The drive torque that covers the losses, Σ losses / ω, N·m (0 at rest, where the
+    /// losses are 0 too).
+    pub friction_torque: f64,
     /// Each family's torque shares by body ([`torque_shares`]), N·m; computed, with the
     /// state's extras, only when a sink [wants](Sink::wants_details) them (zeros otherwise).
     pub shares: &'a [Vec<f64>],
@@ -57,12 +63,14 @@ pub enum RunError {
 pub type GasAt<'a> = &'a dyn Fn(f64) -> (f64, f64);
 
 /// Runs `mechanism` through every crank state of `motion`, with the loads of `families`, the
-/// pistons pushed by `gas` if given, every step to every sink.
+/// pistons pushed by `gas` if given, the losses of `losses` if given (from the total loads),
+/// every step to every sink.
 pub fn run(
     mechanism: &dyn Mechanism,
     motion: &mut dyn MotionSource,
     families: &[&dyn LoadFamily],
     gas: Option<GasAt>,
+    mut losses: Option<&mut LossBudget>,
     sinks: &mut [&mut dyn Sink],
 ) -> Result<(), RunError> {
     let topology = mechanism.topology();
@@ -78,6 +86,7 @@ pub fn run(
             0
         }
     ];
+    let mut power_losses = vec![0.0; losses.as_ref().map_or(0, |l| l.names().len())];
     let mut previous_torque = None;
     let mut index = 0;
     let details = sinks.iter().any(|s| s.wants_details());
@@ -114,6 +123,31 @@ pub fn run(
         check_finite(
             index, &state, pressure, &forces, families, &loads, mechanism,
         )?;
+        let mut friction_torque = 0.0;
+        if let Some(budget) = losses.as_deref_mut() {
+            budget
+                .evaluate(&state, total, pressure, &mut power_losses)
+                .map_err(|message| RunError::Sink {
+                    step: index,
+                    message,
+                })?;
+            let sum: f64 = power_losses.iter().sum();
+            if !sum.is_finite() {
+                let k = power_losses
+                    .iter()
+                    .position(|p| !p.is_finite())
+                    .unwrap_or(0);
+                return Err(RunError::NonFinite {
+                    step: index,
+                    angle_deg: state.crank.angle.to_degrees(),
+                    quantity: format!("power_loss_{}", budget.names()[k]),
+                    value: power_losses[k],
+                });
+            }
+            if state.crank.speed != 0.0 {
+                friction_torque = sum / state.crank.speed.abs();
+            }
+        }
         let step = Step {
             index,
             state: &state,
@@ -121,6 +155,8 @@ pub fn run(
             piston_forces: &forces,
             families: &loads,
             total,
+            losses: &power_losses,
+            friction_torque,
             shares: &shares,
         };
         for sink in sinks.iter_mut() {
@@ -216,6 +252,8 @@ pub struct StepRecord {
     pub piston_forces: Vec<f64>,
     pub families: Vec<Loads>,
     pub total: Loads,
+    pub losses: Vec<f64>,
+    pub friction_torque: f64,
     pub shares: Vec<Vec<f64>>,
 }
 
@@ -235,6 +273,8 @@ impl Sink for Steps {
             piston_forces: s.piston_forces.to_vec(),
             families: s.families.to_vec(),
             total: s.total.clone(),
+            losses: s.losses.to_vec(),
+            friction_torque: s.friction_torque,
             shares: s.shares.to_vec(),
         });
         Ok(())
@@ -265,7 +305,7 @@ pub fn run_summary(
         if keep_steps {
             sinks.push(&mut steps);
         }
-        run(mechanism, motion, &families, gas, &mut sinks).map_err(|e| e.to_string())?;
+        run(mechanism, motion, &families, gas, None, &mut sinks).map_err(|e| e.to_string())?;
     }
     Ok((steps.0, summary.finish(mechanism)?))
 }

@@ -138,6 +138,16 @@ impl FamilyTotals {
     }
 }
 
+/// The works of the loss components and the peak friction torque.
+#[derive(Debug, Clone)]
+struct LossTotals {
+    names: Vec<String>,
+    /// ∫ P dt of each component, J (Karhula A9.1.68-71), by the trapezoidal rule in time.
+    work: Vec<f64>,
+    previous: Vec<f64>,
+    friction_torque: f64,
+}
+
 /// A sink that accumulates the summary of one mechanism's run.
 #[derive(Debug, Clone)]
 pub struct SummarySink {
@@ -164,6 +174,9 @@ pub struct SummarySink {
     lever: f64,
     lever_integral: f64,
     previous_lever: f64,
+    /// Time of the previous step, s.
+    previous_time: f64,
+    losses: Option<LossTotals>,
 }
 
 impl SummarySink {
@@ -202,6 +215,60 @@ impl SummarySink {
             lever: 0.0,
             lever_integral: 0.0,
             previous_lever: 0.0,
+            previous_time: 0.0,
+            losses: None,
+        }
+    }
+
+    /// The same summary, with the loss components named `names` (a [`crate::LossBudget`]'s).
+    pub fn with_losses(mut self, names: &[String]) -> Self {
+        self.losses = Some(LossTotals {
+            names: names.to_vec(),
+            work: vec![0.0; names.len()],
+            previous: vec![0.0; names.len()],
+            friction_torque: 0.0,
+        });
+        self
+    }
+
+    /// The loss metrics (Karhula A9.1.56-75): mean power loss in all and per component, the
+    /// work lost, the peak friction torque, and, with a gas model, the efficiency and the
+    /// torque and power the machine needs (a pump: net work into the crank) or gives (an
+    /// engine: net work out).
+    fn push_losses(&self, m: &mut Summary, span: f64, time: f64) {
+        let Some(l) = &self.losses else { return };
+        let lost: f64 = l.work.iter().sum();
+        m.push("loss_work", lost);
+        m.push("power_loss_mean", lost / time);
+        for (name, work) in l.names.iter().zip(&l.work) {
+            m.push_as(
+                "power_loss_mean_{component}",
+                format!("power_loss_mean_{name}"),
+                work / time,
+            );
+        }
+        m.push("friction_torque_max", l.friction_torque);
+        let work = |name: &str| {
+            self.families
+                .iter()
+                .find(|f| f.name == name)
+                .map(|f| f.work)
+        };
+        let (Some(gas), Some(total)) = (work("gas"), work("total")) else {
+            return;
+        };
+        if total > 0.0 {
+            // (A9.1.60-61, 64-65, 72-73)
+            let need = total + lost;
+            m.push("torque_need_mean", need / span);
+            m.push("power_need_mean", need / time);
+            m.push("mechanical_efficiency", gas / need);
+        } else if total < 0.0 {
+            // (A9.1.62-63, 66-67, 74-75)
+            let out = -total - lost;
+            m.push("output_torque_mean", out / span);
+            m.push("output_power_mean", out / time);
+            m.push("mechanical_efficiency", out / -total);
         }
     }
 
@@ -323,6 +390,7 @@ impl SummarySink {
             }
         }
         m.push("cycle_time", last.1 - first.1);
+        self.push_losses(&mut m, span, last.1 - first.1);
         if let Some(p) = self.pressure {
             m.push("cylinder_pressure_max", p);
             m.push("gas_force_max", self.gas_force);
@@ -367,6 +435,18 @@ impl Sink for SummarySink {
             }
             self.previous_lever = lever;
         }
+        if let Some(l) = &mut self.losses {
+            let dt = st.crank.time - self.previous_time;
+            let started = self.previous.is_some();
+            for ((w, p0), &p) in l.work.iter_mut().zip(&mut l.previous).zip(s.losses) {
+                if started {
+                    *w += 0.5 * dt * (p + *p0);
+                }
+                *p0 = p;
+            }
+            raise(&mut l.friction_torque, s.friction_torque);
+        }
+        self.previous_time = st.crank.time;
         self.previous = Some((angle, speed));
         // The kinetic energy is wanted at the first and last steps only.
         if self.first.is_none() || s.index == self.last_step {

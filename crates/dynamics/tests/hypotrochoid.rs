@@ -7,7 +7,8 @@
 use cardan_dynamics::{planar, torque_shares};
 use cardan_mechanism::hypotrochoid::Hypotrochoid;
 use cardan_mechanism::{
-    entry, CrankMotion, Loads, MachineGeometry, MassInputs, Mechanism, OptionValue, Options,
+    entry, Bearings, CrankMotion, Loads, MachineGeometry, MassInputs, Mechanism, OptionValue,
+    Options,
 };
 
 /// The validation model (§6): p = 75 mm, u = 100 mm, r = 1.7·m·u; masses made up (the paper
@@ -123,7 +124,7 @@ fn chamber_force_reaches_the_crank_with_the_mechanical_advantage() {
             h.link,
             h.planet,
             cardan_mechanism::hypotrochoid::massless(),
-            [0.005; 3],
+            [Bearings::single(0.005, 1e4); 3],
         )
         .unwrap();
         let crank = CrankMotion {

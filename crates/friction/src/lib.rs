@@ -57,7 +57,7 @@ pub use rings::{
 };
 pub use rolling_bearing::{
     rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing, RollingLoss,
-    RollingReading, SkfDeepGrooveBall,
+    RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT, KARHULA_LOAD_CONSTANT_PRINTED,
 };
 pub use skirt::{
     coulomb_sliding, karhula_skirt, thai_skirt_mean_power, viscous_skirt, ViscousSkirt,

@@ -3,7 +3,7 @@
 
 use cardan_friction::{
     rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing,
-    RollingReading, SkfDeepGrooveBall,
+    RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT_PRINTED,
 };
 use std::f64::consts::PI;
 
@@ -62,7 +62,16 @@ fn bearing_6208_karhula_reading_and_ratio() {
     // Harris's (0.313 vs 0.0174 N·m). Tolerances: half a unit of the printed last decimal; the
     // ratio 18.0 to one decimal.
     let (b, f, w, nu) = case();
-    let k = rolling_bearing_loss(&b, RollingReading::Karhula { f0: 2.0 }, f, w, nu);
+    let k = rolling_bearing_loss(
+        &b,
+        RollingReading::Karhula {
+            f0: 2.0,
+            load_constant: KARHULA_LOAD_CONSTANT_PRINTED,
+        },
+        f,
+        w,
+        nu,
+    );
     printed(k.load_torque, 0.3131, 4);
     printed(k.viscous_torque, 0.0648, 4);
     let p = rolling_bearing_loss(
@@ -107,7 +116,10 @@ fn karhula_low_speed_constant_is_discontinuous() {
     let nu = 10e-6; // 10 mm²/s → n = 200 rpm at νn = 2000
     let w_at = |nun: f64| nun / 10.0 * 2.0 * PI / 60.0;
     let tv = |r, nun| rolling_bearing_loss(&b, r, 0.0, w_at(nun), nu).viscous_torque;
-    let k = RollingReading::Karhula { f0: 2.0 };
+    let k = RollingReading::Karhula {
+        f0: 2.0,
+        load_constant: KARHULA_LOAD_CONSTANT_PRINTED,
+    };
     let jump = tv(k, 1999.0) / tv(k, 2001.0);
     assert!((jump - 1.55).abs() < 0.01, "{jump}");
     let p = RollingReading::Palmgren(PalmgrenCoefficients::DEEP_GROOVE_BALL);
@@ -118,7 +130,10 @@ fn karhula_low_speed_constant_is_discontinuous() {
 fn zero_speed_zero_power_and_nonnegative() {
     let s = KarhulaBearingSizes::from_piston_diameter(0.12).unwrap();
     for r in [
-        RollingReading::Karhula { f0: 2.0 },
+        RollingReading::Karhula {
+            f0: 2.0,
+            load_constant: KARHULA_LOAD_CONSTANT_PRINTED,
+        },
         RollingReading::Palmgren(PalmgrenCoefficients::CYLINDRICAL_ROLLER),
         RollingReading::Skf(SkfDeepGrooveBall::SERIES_60),
     ] {

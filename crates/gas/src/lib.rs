@@ -15,7 +15,7 @@ pub mod karhula;
 pub use closed_cycle::ClosedCycle;
 pub use compressor::Compressor;
 pub use cylinder::{Chamber, Cylinder, Volume};
-pub use karhula::{KarhulaEngine, KarhulaPump, Polytropic};
+pub use karhula::{EngineReading, KarhulaEngine, KarhulaPump, Polytropic};
 
 /// The gas over one run of crank angles.
 #[derive(Debug, Clone, PartialEq, Default)]

@@ -32,7 +32,7 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
-    cross, Body, Joint, JointKind, JointLoad, Loads, MeshForce, Piston, State, Topology,
+    cross, Bearings, Body, Joint, JointKind, JointLoad, Loads, MeshForce, Piston, State, Topology,
 };
 use crate::{
     check_length, check_rod_cg, number, word, CrankState, Entry, MachineGeometry, Mechanism,
@@ -121,7 +121,7 @@ impl CardanGear {
             mesh,
             pressure_angle,
             MassProperties::resolve(estimate, inputs),
-            geometry.bearing_radii(),
+            geometry.bearings(),
         )
     }
 
@@ -132,12 +132,12 @@ impl CardanGear {
         mesh: MeshModel,
         pressure_angle: f64,
         masses: MassProperties,
-        radii: [f64; 3],
+        bearings: [Bearings; 3],
     ) -> Result<Self, MechanismError> {
         check_length("geometry.crank_length", crank)?;
         check_length("geometry.rod_length", rod)?;
         check_rod_cg(masses.rod_cg, rod)?;
-        let [r_pis, r_crank, r_main] = radii;
+        let [r_pis, r_crank, r_main] = bearings;
         // In the thesis reading the wheel's inertia rides with the crankshaft's (module note).
         let (crankshaft_inertia, wheel_inertia, force) = match mesh {
             MeshModel::Karhula => (
@@ -167,12 +167,23 @@ impl CardanGear {
             ],
             joints: vec![
                 Joint::pin("main_bearing", r_main, CRANKSHAFT, None),
-                Joint::pin("crank_pin", r_crank, CRANKSHAFT, Some(WHEEL)),
+                Joint::pin(
+                    "crank_pin",
+                    // Two bearings side by side hold the wheel steady (Karhula A9.1.23).
+                    Bearings {
+                        count: 2,
+                        ..r_crank
+                    },
+                    CRANKSHAFT,
+                    Some(WHEEL),
+                ),
                 Joint::pin("piston_pin", r_pis, ROD, Some(WHEEL)),
                 Joint {
                     name: "gear_mesh",
                     kind: JointKind::GearMesh {
                         ratio: 2.0,
+                        pitch_radius: crank,
+                        internal: true,
                         pressure_angle,
                         force,
                     },

@@ -75,7 +75,7 @@
 //! `chamber_angle_deg` (δ between links 1 and 2, eq 15), `mechanical_advantage` (eq 21).
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{Body, Extra, Joint, JointKind, MeshForce, Piston, State, Topology};
+use crate::model::{Bearings, Body, Extra, Joint, JointKind, MeshForce, Piston, State, Topology};
 use crate::{check_length, number, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
@@ -228,18 +228,18 @@ impl Hypotrochoid {
         estimate.piston_mass = 0.0;
         let mut masses = MassProperties::resolve(estimate, inputs);
         masses.piston_mass = 0.0;
-        Self::new(m as usize, p, r, u, masses, geometry.bearing_radii())
+        Self::new(m as usize, p, r, u, masses, geometry.bearings())
     }
 
     /// A mechanism of modulus `m`, crank `p`, piston link `r` and planet radius `u` (m), with
-    /// `masses` and journal radii [link pin, crank and coupler pins, main axis] (m).
+    /// `masses` and bearings [link pin, crank and coupler pins, main axis].
     pub fn new(
         m: usize,
         p: f64,
         r: f64,
         u: f64,
         masses: MassProperties,
-        radii: [f64; 3],
+        bearings: [Bearings; 3],
     ) -> Result<Self, MechanismError> {
         if !(2..=MAX_MODULUS).contains(&m) {
             return Err(MechanismError::new(
@@ -267,7 +267,7 @@ impl Hypotrochoid {
                 format!("the piston link's centre of gravity must lie on it, between 0 and hypotrochoid.piston_link_length ({r} m)"),
             ));
         }
-        let [r_pin, r_crank, r_main] = radii;
+        let [r_pin, r_crank, r_main] = bearings;
         let mut bodies = vec![
             Body {
                 name: "crankshaft",
@@ -302,7 +302,7 @@ impl Hypotrochoid {
         }));
         let pin = |name, radius, body, other| Joint {
             name,
-            kind: JointKind::Revolute { radius },
+            kind: JointKind::Revolute(radius),
             body,
             other,
         };
@@ -314,6 +314,8 @@ impl Hypotrochoid {
                 name: "ring_mesh",
                 kind: JointKind::GearMesh {
                     ratio: (m + 1) as f64,
+                    pitch_radius: u,
+                    internal: true,
                     pressure_angle: PRESSURE_ANGLE,
                     force: MeshForce::Involute,
                 },
@@ -622,7 +624,15 @@ mod tests {
     use super::*;
 
     fn paper(m: usize) -> Hypotrochoid {
-        Hypotrochoid::new(m, 0.75, 1.7 * m as f64, 1.0, massless(), [0.01; 3]).unwrap()
+        Hypotrochoid::new(
+            m,
+            0.75,
+            1.7 * m as f64,
+            1.0,
+            massless(),
+            [Bearings::single(0.01, 1e4); 3],
+        )
+        .unwrap()
     }
 
     /// Loop closure A + (B − A) = B (eq 8) with q of eq 13 (both forms) along rod k.

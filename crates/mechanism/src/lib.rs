@@ -23,8 +23,8 @@ pub use cardan_gear::{CardanGear, MeshModel};
 pub use hypotrochoid::Hypotrochoid;
 pub use mass::{MassInputs, MassProperties, Material};
 pub use model::{
-    cross, Body, BodyMotion, Extra, Joint, JointKind, JointLoad, JointMotion, Loads, MeshForce,
-    Piston, PistonMotion, PointMotion, State, Topology,
+    cross, Bearings, Body, BodyMotion, Extra, Joint, JointKind, JointLoad, JointMotion, Loads,
+    MeshForce, Piston, PistonMotion, PointMotion, State, Topology,
 };
 pub use motion::{CrankMotion, CrankState, Grid, MotionError, MotionSource};
 pub use num_complex::Complex64 as C;
@@ -146,12 +146,26 @@ pub struct MachineGeometry {
 }
 
 impl MachineGeometry {
-    /// Journal radii of the piston pin, crank pin and main bearings, m, from the rolling-bearing
-    /// pitch diameters of Karhula (2008) A9.1.10-11: d_pis/4 at the piston pin, 1.5 times that
-    /// at the crank pin and main bearings.
-    pub fn bearing_radii(&self) -> [f64; 3] {
-        let piston_pin = self.bore / 4.0;
-        [piston_pin / 2.0, 0.75 * piston_pin, 0.75 * piston_pin]
+    /// The rolling bearings of the piston pin, crank pin and main axis by the rules of Karhula
+    /// (2008) App. 9.1: pitch diameters d_m = d_pis/4 at the piston pin (A9.1.10), 1.5 times
+    /// that at the crank pin and main bearings (A9.1.11); static load ratings C0 = d_m\[mm\]·10³ N
+    /// at the piston pin (A9.1.12), twice that at the crank pin and main bearings (A9.1.13); two
+    /// main bearings sharing the load (A9.1.24-25), one bearing elsewhere (a mechanism with two
+    /// side by side says so itself).
+    pub fn bearings(&self) -> [Bearings; 3] {
+        let dm_pin = self.bore / 4.0;
+        let c0_pin = dm_pin * 1e3 * 1e3;
+        let pin = Bearings {
+            radius: dm_pin / 2.0,
+            count: 1,
+            static_load_rating: c0_pin,
+        };
+        let crank = Bearings {
+            radius: 0.75 * dm_pin,
+            count: 1,
+            static_load_rating: 2.0 * c0_pin,
+        };
+        [pin, crank, Bearings { count: 2, ..crank }]
     }
 }
 

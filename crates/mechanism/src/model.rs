@@ -30,11 +30,8 @@ impl Body {
 /// How a joint transmits force.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum JointKind {
-    /// A pin: any force in the plane, no moment.
-    Revolute {
-        /// Journal (bearing) radius, m: half the bearing pitch diameter.
-        radius: f64,
-    },
+    /// A pin on its bearings: any force in the plane, no moment.
+    Revolute(Bearings),
     /// A slide along the joint's direction ([`JointMotion::direction`]): a force across it
     /// and a couple.
     Prismatic,
@@ -42,11 +39,40 @@ pub enum JointKind {
     GearMesh {
         /// Teeth of the gear on `other` over teeth of the gear on `body` (2 for the cardan pair).
         ratio: f64,
+        /// Pitch radius of the gear on `body`, m.
+        pitch_radius: f64,
+        /// Whether the gear on `other` is an internal (ring) gear.
+        internal: bool,
         /// Pressure angle of the tooth profiles, rad.
         pressure_angle: f64,
         /// Which direction the mesh force takes.
         force: MeshForce,
     },
+}
+
+/// The bearings a revolute joint turns on. The friction models read them; the dynamics only
+/// needs the joint's position. Default sizes follow Karhula (2008) App. 9.1 (see
+/// [`crate::MachineGeometry::bearings`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bearings {
+    /// Journal radius, m: half the rolling bearing's pitch (mean) diameter d_m.
+    pub radius: f64,
+    /// Bearings side by side, sharing the joint's load equally (2 main bearings, A9.1.24-25;
+    /// 2 crank-pin bearings in the cardan wheel, A9.1.23).
+    pub count: u32,
+    /// Basic static load rating C0 of one bearing, N.
+    pub static_load_rating: f64,
+}
+
+impl Bearings {
+    /// One bearing of journal radius `radius` (m) and static load rating `static_load_rating` (N).
+    pub fn single(radius: f64, static_load_rating: f64) -> Self {
+        Self {
+            radius,
+            count: 1,
+            static_load_rating,
+        }
+    }
 }
 
 /// The direction of a gear-mesh force.
@@ -77,11 +103,11 @@ pub struct Joint {
 }
 
 impl Joint {
-    /// A pin of journal radius `radius` (m) between `body` and `other`.
-    pub fn pin(name: &'static str, radius: f64, body: usize, other: Option<usize>) -> Self {
+    /// A pin on `bearings` between `body` and `other`.
+    pub fn pin(name: &'static str, bearings: Bearings, body: usize, other: Option<usize>) -> Self {
         Self {
             name,
-            kind: JointKind::Revolute { radius },
+            kind: JointKind::Revolute(bearings),
             body,
             other,
         }

@@ -15,7 +15,7 @@
 //! couple and no side force.
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Body, Joint, JointLoad, Loads, Piston, State, Topology};
+use crate::model::{cross, Bearings, Body, Joint, JointLoad, Loads, Piston, State, Topology};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
@@ -63,17 +63,17 @@ impl ScotchYoke {
             crank,
             rod,
             MassProperties::resolve(estimate, inputs),
-            geometry.bearing_radii(),
+            geometry.bearings(),
         )
     }
 
-    /// A yoke of crank `crank` and rod `rod` (m), with `masses` and journal radii [piston pin
-    /// (unused), crank pin, main bearing] (m).
+    /// A yoke of crank `crank` and rod `rod` (m), with `masses` and bearings [piston pin
+    /// (unused), crank pin, main axis].
     pub fn new(
         crank: f64,
         rod: f64,
         masses: MassProperties,
-        radii: [f64; 3],
+        bearings: [Bearings; 3],
     ) -> Result<Self, MechanismError> {
         check_length("geometry.crank_length", crank)?;
         check_length("geometry.rod_length", rod)?;
@@ -85,7 +85,7 @@ impl ScotchYoke {
             ));
         }
         check_rod_cg(masses.rod_cg, rod)?;
-        let [_, r_crank, r_main] = radii;
+        let [_, r_crank, r_main] = bearings;
         let topology = Topology {
             bodies: vec![
                 Body::new("crankshaft", 0.0, masses.crankshaft_inertia),

@@ -12,7 +12,9 @@
 //! `piston_pin` (piston–rod), `piston_side` (piston–cylinder wall, a slide along the axis).
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Body, Extra, Joint, JointLoad, Loads, Piston, State, Topology};
+use crate::model::{
+    cross, Bearings, Body, Extra, Joint, JointLoad, Loads, Piston, State, Topology,
+};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
@@ -64,18 +66,18 @@ impl SliderCrank {
             rod,
             geometry.pin_offset,
             MassProperties::resolve(estimate, inputs),
-            geometry.bearing_radii(),
+            geometry.bearings(),
         )
     }
 
     /// A slider-crank of crank `crank`, rod `rod`, pin offset `pin_offset` (m), with `masses`
-    /// and journal radii [piston pin, crank pin, main bearing] (m).
+    /// and bearings [piston pin, crank pin, main axis].
     pub fn new(
         crank: f64,
         rod: f64,
         pin_offset: f64,
         masses: MassProperties,
-        radii: [f64; 3],
+        bearings: [Bearings; 3],
     ) -> Result<Self, MechanismError> {
         check_length("geometry.crank_length", crank)?;
         check_length("geometry.rod_length", rod)?;
@@ -104,7 +106,7 @@ impl SliderCrank {
             ));
         }
         check_rod_cg(masses.rod_cg, rod)?;
-        let [r_pis, r_crank, r_main] = radii;
+        let [r_pis, r_crank, r_main] = bearings;
         let topology = Topology {
             bodies: vec![
                 Body::new("crankshaft", 0.0, masses.crankshaft_inertia),
@@ -329,7 +331,7 @@ mod tests {
     fn machine(offset: f64) -> SliderCrank {
         let mut masses = mass::estimate(0.06, 0.14, 0.12, Material::Steel);
         masses.rod_cg = 0.07;
-        SliderCrank::new(0.06, 0.14, offset, masses, [0.01; 3]).unwrap()
+        SliderCrank::new(0.06, 0.14, offset, masses, [Bearings::single(0.01, 1e4); 3]).unwrap()
     }
 
     #[test]
@@ -366,7 +368,9 @@ mod tests {
     #[test]
     fn impossible_machines_are_refused() {
         let masses = mass::estimate(0.06, 0.14, 0.12, Material::Steel);
-        let new = |crank, rod, offset| SliderCrank::new(crank, rod, offset, masses, [0.01; 3]);
+        let new = |crank, rod, offset| {
+            SliderCrank::new(crank, rod, offset, masses, [Bearings::single(0.01, 1e4); 3])
+        };
         let field = |r: Result<SliderCrank, MechanismError>| r.unwrap_err().field;
         assert_eq!(field(new(0.06, 0.06, 0.0)), "geometry.rod_length");
         assert_eq!(field(new(0.06, 0.1, 0.05)), "geometry.pin_offset");
@@ -375,7 +379,13 @@ mod tests {
         let mut far = masses;
         far.rod_cg = 0.2;
         assert_eq!(
-            field(SliderCrank::new(0.06, 0.14, 0.0, far, [0.01; 3])),
+            field(SliderCrank::new(
+                0.06,
+                0.14,
+                0.0,
+                far,
+                [Bearings::single(0.01, 1e4); 3]
+            )),
             "masses.rod_cg"
         );
     }

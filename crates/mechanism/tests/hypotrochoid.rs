@@ -4,7 +4,8 @@
 
 use cardan_mechanism::hypotrochoid::{slider_crank_mechanical_advantage, Hypotrochoid};
 use cardan_mechanism::{
-    CrankMotion, CrankState, MachineGeometry, MassInputs, Mechanism, OptionValue, Options, State, C,
+    Bearings, CrankMotion, CrankState, MachineGeometry, MassInputs, Mechanism, OptionValue,
+    Options, State, C,
 };
 use std::f64::consts::{PI, TAU};
 
@@ -16,7 +17,7 @@ fn paper(m: usize) -> Hypotrochoid {
         1.7 * m as f64,
         1.0,
         cardan_mechanism::hypotrochoid::massless(),
-        [0.01; 3],
+        [Bearings::single(0.01, 1e4); 3],
     )
     .unwrap()
 }
@@ -309,7 +310,7 @@ fn finite_differences() {
                     |y: &State, b: Option<usize>| b.map_or(0.0, |b| y.bodies[b].angular_velocity);
                 let rel = s.bodies[joint.body].angular_velocity - w(&s, joint.other);
                 match joint.kind {
-                    cardan_mechanism::JointKind::Revolute { .. } => {
+                    cardan_mechanism::JointKind::Revolute(_) => {
                         assert!(
                             (s.joints[j].relative_speed - rel).abs() < 1e-12,
                             "{}",

@@ -1,0 +1,575 @@
+//! The loss budget: friction models of `cardan-friction` and the gear-mesh loss of
+//! `cardan-gears` attached to a mechanism's pistons and joints by kind, with no mechanism code.
+//! At every step each component's power loss follows from the joint's total (lossless) load and
+//! relative speed, or from the piston's speed, as Karhula (2008) App. 9.1 computes them: the
+//! losses are charged to the drive afterwards (A9.1.56-75) and do not change the loads.
+//!
+//! The components, in this order:
+//! - `rings`: the piston rings of every piston in a cylinder (A9.1.2-4, A9.1.8), or each ring
+//!   on its oil film (Reynolds with squeeze film and asperity contact, [`cardan_friction::RingFilm`]);
+//! - per prismatic joint: `skirt` for the slide of a piston on the frame (its side force,
+//!   A9.1.5; the viscous skirt of the Thai thesis 2.5.c.1-3 in the other reading), the joint's
+//!   own name for any other slide (a Scotch-yoke slot: Coulomb friction on its force);
+//! - per revolute joint, by its name: its rolling bearings (A9.1.10-35; Palmgren; SKF) or a
+//!   plain journal bearing (Petroff; short bearing with the eccentricity from the load);
+//! - per gear mesh, by its name: Anderson & Loewenthal's sliding, rolling and windage loss
+//!   (A9.1.36-55) in the thesis's or the corrected reading.
+
+use cardan_friction::{
+    coulomb_sliding, petroff, rolling_bearing_loss, short_bearing, viscous_skirt, AsperityContact,
+    JournalBearing, KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing,
+    RollingReading, ViscousSkirt, KARHULA_LOAD_CONSTANT,
+};
+use cardan_gears::geometry::{GearPair, PairSpec};
+use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
+use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
+
+use crate::summary::tangential;
+
+/// Atmospheric pressure, Pa: the pressure behind the top ring is the cylinder's above it.
+const ATMOSPHERE: f64 = 101_325.0;
+
+/// The lubricant of every lubricated contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Oil {
+    /// Kinematic viscosity ν at the running temperature, m²/s (Karhula: ≲ 5 mm²/s).
+    pub kinematic_viscosity: f64,
+    /// Density ρ, kg/m³ (Karhula: ≈ 900).
+    pub density: f64,
+}
+
+impl Oil {
+    /// Dynamic viscosity η = ν·ρ, Pa·s (Karhula A9.1.47).
+    pub fn dynamic_viscosity(&self) -> f64 {
+        self.kinematic_viscosity * self.density
+    }
+}
+
+/// How the piston rings are modelled.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Rings {
+    /// Karhula's pack (2 compression rings of 2 mm at 0.19 MPa, 1 oil ring of 4 mm at 1 MPa)
+    /// with a constant friction coefficient (A9.1.2-4, A9.1.8).
+    Karhula {
+        /// μ_ring (Karhula: 0.07, Andersson et al. 2002).
+        friction_coefficient: f64,
+    },
+    /// Each ring of the same pack on an oil film: a barrel face of the ring's height and
+    /// `crown_height`, loaded by its elastic pressure and, for the top ring, the cylinder
+    /// pressure above atmospheric behind it (the lower rings see none: inter-ring pressures are
+    /// not modelled); squeeze film stepped in time, Greenwood-Tripp asperity contact with
+    /// [`AsperityContact::typical`] surfaces.
+    Film {
+        /// Crown height of the barrel faces, m.
+        crown_height: f64,
+    },
+}
+
+/// How the skirt of a piston sliding on the frame is modelled.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Skirt {
+    /// Coulomb friction on the side force (A9.1.5; μ_skirt = 0.09 in the thesis).
+    Coulomb { friction_coefficient: f64 },
+    /// Couette shear of a concentric full film (Thai thesis 2.5.c.1-3): needs no side force.
+    Viscous {
+        /// Skirt length, m.
+        length: f64,
+        /// Radial skirt-to-liner clearance, m.
+        clearance: f64,
+    },
+}
+
+/// How the bearings of a revolute joint are modelled.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Bearing {
+    /// The joint's rolling bearings ([`Bearings`]: pitch diameter, C0, how many share the load)
+    /// in one of the readings of [`rolling_bearing_loss`].
+    Rolling(RollingReading),
+    /// A plain journal bearing of the joint's journal radius.
+    Journal {
+        /// Short-bearing (Ocvirk) solution with the eccentricity from the instantaneous load;
+        /// `false`: Petroff's concentric journal.
+        short_bearing: bool,
+        /// Bearing length over diameter L/D.
+        length_ratio: f64,
+        /// Radial clearance over journal radius c/R.
+        clearance_ratio: f64,
+    },
+}
+
+/// The gear mesh loss and the pair it is computed on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshLossModel {
+    pub reading: Reading,
+    /// Teeth of the gear on the mesh's body (the cardan wheel; Karhula: 20).
+    pub teeth: u32,
+    /// Face width, m; `None`: a third of the pinion's pitch diameter (A9.1.46).
+    pub face_width: Option<f64>,
+    /// Addendum of the internal (ring) gear in modules: a full 1.0 interferes on 2:1 pairs
+    /// below 25 teeth (validation note §1); 0.8 gives the contact ratio ≈ 1.8 that Karhula's
+    /// text assumes.
+    pub ring_addendum: f64,
+}
+
+/// Every loss model of a case, SI.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Friction {
+    pub oil: Oil,
+    /// `None`: no ring loss.
+    pub rings: Option<Rings>,
+    /// `None`: no skirt loss.
+    pub skirt: Option<Skirt>,
+    /// Coulomb friction coefficient of the other slides (a Scotch-yoke slot).
+    pub slide_friction_coefficient: f64,
+    /// Model of every revolute joint; `None`: no bearing loss.
+    pub bearings: Option<Bearing>,
+    /// Models of named revolute joints (`None`: no loss), overriding [`Friction::bearings`].
+    pub joint_bearings: Vec<(String, Option<Bearing>)>,
+    /// `None`: no gear mesh loss.
+    pub gear_mesh: Option<MeshLossModel>,
+}
+
+impl Friction {
+    /// Karhula's (2008) App. 9.1 models and values: ring pack with μ = 0.07, Coulomb skirt with
+    /// μ = 0.09, rolling bearings in his reading with f0 = 2, mesh loss as printed with z1 = 20,
+    /// oil of 5 mm²/s and 900 kg/m³.
+    pub fn karhula() -> Self {
+        Self {
+            oil: Oil {
+                kinematic_viscosity: 5e-6,
+                density: 900.0,
+            },
+            rings: Some(Rings::Karhula {
+                friction_coefficient: 0.07,
+            }),
+            skirt: Some(Skirt::Coulomb {
+                friction_coefficient: 0.09,
+            }),
+            slide_friction_coefficient: 0.09,
+            bearings: Some(Bearing::Rolling(RollingReading::Karhula {
+                f0: 2.0,
+                load_constant: KARHULA_LOAD_CONSTANT,
+            })),
+            joint_bearings: Vec::new(),
+            gear_mesh: Some(MeshLossModel {
+                reading: Reading::Karhula,
+                teeth: 20,
+                face_width: None,
+                ring_addendum: 0.8,
+            }),
+        }
+    }
+}
+
+/// One component's model, bound to its piston or joint.
+#[derive(Debug, Clone)]
+enum Part {
+    /// All pistons' rings, constant force μ·F_cont.
+    RingPack { force: f64 },
+    /// All pistons' rings on films; the minimum film of each ring of each piston (`None` before
+    /// the first step) and the time of the previous step.
+    RingFilms {
+        rings: Vec<(RingFilm, f64, bool)>,
+        films: Vec<Option<f64>>,
+        time: Option<f64>,
+        viscosity: f64,
+    },
+    Coulomb {
+        joint: usize,
+        friction_coefficient: f64,
+    },
+    ViscousSkirt {
+        joint: usize,
+        skirt: ViscousSkirt,
+        viscosity: f64,
+    },
+    Rolling {
+        joint: usize,
+        bearing: RollingBearing,
+        count: f64,
+        reading: RollingReading,
+        /// Kinematic viscosity, m²/s (the rolling readings' input).
+        viscosity: f64,
+    },
+    Journal {
+        joint: usize,
+        bearing: JournalBearing,
+        count: f64,
+        short: bool,
+        viscosity: f64,
+    },
+    Mesh {
+        joint: usize,
+        /// The body carrying the pinion.
+        body: usize,
+        geometry: MeshGeometry,
+        lubricant: Lubricant,
+        reading: Reading,
+        pitch_radius: f64,
+    },
+}
+
+/// The loss models of one mechanism, ready to evaluate step by step.
+#[derive(Debug, Clone)]
+pub struct LossBudget {
+    names: Vec<String>,
+    parts: Vec<Part>,
+}
+
+/// A loss model that cannot be set up for a mechanism: the case field at fault and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LossError {
+    pub field: String,
+    pub rule: String,
+}
+
+impl std::fmt::Display for LossError {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        write!(f, "{}: {}", self.field, self.rule)
+    }
+}
+
+impl LossBudget {
+    /// The budget of `mechanism` in a cylinder of `bore` (m) under `friction`.
+    pub fn new(
+        friction: &Friction,
+        mechanism: &dyn Mechanism,
+        bore: f64,
+    ) -> Result<Self, LossError> {
+        let t = mechanism.topology();
+        let failed = |field: &str, e: &dyn std::fmt::Display| LossError {
+            field: field.to_string(),
+            rule: e.to_string(),
+        };
+        let viscosity = friction.oil.dynamic_viscosity();
+        let mut names = Vec::new();
+        let mut parts = Vec::new();
+        if mechanism.has_cylinder() {
+            if let Some(rings) = friction.rings {
+                let pack =
+                    KarhulaRingPack::karhula(bore).map_err(|e| failed("geometry.bore", &e))?;
+                names.push("rings".to_string());
+                parts.push(match rings {
+                    Rings::Karhula {
+                        friction_coefficient,
+                    } => Part::RingPack {
+                        force: friction_coefficient * pack.contact_force(),
+                    },
+                    Rings::Film { crown_height } => {
+                        let ring = |height: f64, pressure: f64, top: bool| {
+                            let profile = RingProfile::Barrel {
+                                width: height,
+                                crown_height,
+                            };
+                            RingFilm::new(profile, bore, AsperityContact::typical())
+                                .map(|f| (f, pressure, top))
+                                .map_err(|e| failed("friction.ring_crown_height", &e))
+                        };
+                        let mut rings = Vec::new();
+                        for k in 0..pack.compression_rings {
+                            rings.push(ring(
+                                pack.compression_ring_height,
+                                pack.compression_ring_pressure,
+                                k == 0,
+                            )?);
+                        }
+                        for _ in 0..pack.oil_rings {
+                            rings.push(ring(pack.oil_ring_height, pack.oil_ring_pressure, false)?);
+                        }
+                        Part::RingFilms {
+                            films: vec![None; rings.len() * t.pistons.len()],
+                            rings,
+                            time: None,
+                            viscosity,
+                        }
+                    }
+                });
+            }
+        }
+        for (k, j) in t.joints.iter().enumerate() {
+            match j.kind {
+                JointKind::Prismatic => {
+                    let skirt = j.other.is_none() && t.pistons.iter().any(|p| p.body == j.body);
+                    let part = match (skirt, friction.skirt) {
+                        (true, None) => continue,
+                        (true, Some(Skirt::Viscous { length, clearance })) => Part::ViscousSkirt {
+                            joint: k,
+                            skirt: ViscousSkirt::new(bore, length, clearance)
+                                .map_err(|e| failed("friction.skirt_length", &e))?,
+                            viscosity,
+                        },
+                        (
+                            true,
+                            Some(Skirt::Coulomb {
+                                friction_coefficient,
+                            }),
+                        ) => Part::Coulomb {
+                            joint: k,
+                            friction_coefficient,
+                        },
+                        (false, _) => Part::Coulomb {
+                            joint: k,
+                            friction_coefficient: friction.slide_friction_coefficient,
+                        },
+                    };
+                    names.push(if skirt { "skirt" } else { j.name }.to_string());
+                    parts.push(part);
+                }
+                JointKind::Revolute(b) => {
+                    let model = friction
+                        .joint_bearings
+                        .iter()
+                        .find(|(name, _)| name == j.name)
+                        .map_or(friction.bearings, |(_, m)| *m);
+                    let Some(model) = model else { continue };
+                    parts.push(bearing_part(k, b, model, &friction.oil)?);
+                    names.push(j.name.to_string());
+                }
+                JointKind::GearMesh {
+                    ratio,
+                    pitch_radius,
+                    internal,
+                    pressure_angle,
+                    ..
+                } => {
+                    let Some(mesh) = friction.gear_mesh else {
+                        continue;
+                    };
+                    let geometry =
+                        mesh_geometry(&mesh, ratio, pitch_radius, internal, pressure_angle)?;
+                    names.push(j.name.to_string());
+                    parts.push(Part::Mesh {
+                        joint: k,
+                        body: j.body,
+                        geometry,
+                        lubricant: Lubricant {
+                            kinematic_viscosity: friction.oil.kinematic_viscosity,
+                            density: friction.oil.density,
+                        },
+                        reading: mesh.reading,
+                        pitch_radius,
+                    });
+                }
+            }
+        }
+        Ok(Self { names, parts })
+    }
+
+    /// The components' names, in the order of [`LossBudget::evaluate`]'s output.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The power loss of each component at `state` under the `total` loads, W, into `out`
+    /// (one per name). `pressure` is the absolute cylinder pressure, Pa, if a gas model runs.
+    pub fn evaluate(
+        &mut self,
+        state: &State,
+        total: &Loads,
+        pressure: Option<f64>,
+        out: &mut [f64],
+    ) -> Result<(), String> {
+        for (part, out) in self.parts.iter_mut().zip(out.iter_mut()) {
+            *out = match part {
+                Part::RingPack { force } => state
+                    .pistons
+                    .iter()
+                    .map(|p| *force * p.velocity.abs())
+                    .sum(),
+                Part::RingFilms {
+                    rings,
+                    films,
+                    time,
+                    viscosity,
+                } => {
+                    let now = state.crank.time;
+                    let dt = time.map(|t0| now - t0).filter(|dt| *dt > 0.0);
+                    *time = Some(now);
+                    let gauge = pressure.map_or(0.0, |p| (p - ATMOSPHERE).max(0.0));
+                    let mut power = 0.0;
+                    let per_piston = rings.len();
+                    for (k, p) in state.pistons.iter().enumerate() {
+                        for (r, (film, elastic, top)) in rings.iter().enumerate() {
+                            let load = RingLoad {
+                                elastic_pressure: *elastic,
+                                gas_pressure_behind: if *top { gauge } else { 0.0 },
+                            };
+                            let h = &mut films[k * per_piston + r];
+                            let s = match (*h, dt) {
+                                (Some(h0), Some(dt)) => {
+                                    film.step(h0, dt, *viscosity, p.velocity, load)
+                                }
+                                _ => film.quasi_steady(*viscosity, p.velocity, load),
+                            };
+                            *h = Some(s.min_film_thickness);
+                            power += s.loss.power;
+                        }
+                    }
+                    power
+                }
+                Part::Coulomb {
+                    joint,
+                    friction_coefficient,
+                } => {
+                    coulomb_sliding(
+                        *friction_coefficient,
+                        total.joints[*joint].force.norm(),
+                        state.joints[*joint].relative_speed,
+                    )
+                    .power
+                }
+                Part::ViscousSkirt {
+                    joint,
+                    skirt,
+                    viscosity,
+                } => viscous_skirt(skirt, *viscosity, state.joints[*joint].relative_speed).power,
+                Part::Rolling {
+                    joint,
+                    bearing,
+                    count,
+                    reading,
+                    viscosity,
+                } => {
+                    // Each of `count` bearings carries an equal share (A9.1.23-25).
+                    let share = total.joints[*joint].force.norm() / *count;
+                    *count
+                        * rolling_bearing_loss(
+                            bearing,
+                            *reading,
+                            share,
+                            state.joints[*joint].relative_speed,
+                            *viscosity,
+                        )
+                        .power
+                }
+                Part::Journal {
+                    joint,
+                    bearing,
+                    count,
+                    short,
+                    viscosity,
+                } => {
+                    let share = total.joints[*joint].force.norm() / *count;
+                    let w = state.joints[*joint].relative_speed;
+                    *count
+                        * if *short {
+                            short_bearing(bearing, *viscosity, share, w, w).loss.power
+                        } else {
+                            petroff(bearing, *viscosity, w, share).0.power
+                        }
+                }
+                Part::Mesh {
+                    joint,
+                    body,
+                    geometry,
+                    lubricant,
+                    reading,
+                    pitch_radius,
+                } => {
+                    let motion = &state.joints[*joint];
+                    let ft = tangential(total.joints[*joint].force, motion);
+                    let pinion = state.bodies[*body].angular_velocity;
+                    // The mesh's relative speed is the pitch-line speed relative to the carrier.
+                    let speeds = MeshSpeeds {
+                        pinion_absolute: pinion,
+                        carrier: pinion - motion.relative_speed / *pitch_radius,
+                    };
+                    mesh_loss(geometry, lubricant, &speeds, ft, *reading)
+                        .map_err(|e| format!("gear mesh loss: {e}"))?
+                        .total_power
+                }
+            };
+        }
+        Ok(())
+    }
+}
+
+/// The part of revolute joint `joint` on bearings `b` under `model`.
+fn bearing_part(joint: usize, b: Bearings, model: Bearing, oil: &Oil) -> Result<Part, LossError> {
+    let count = f64::from(b.count.max(1));
+    Ok(match model {
+        Bearing::Rolling(reading) => Part::Rolling {
+            joint,
+            bearing: RollingBearing::new(2.0 * b.radius, b.static_load_rating).map_err(|e| {
+                LossError {
+                    field: "friction.bearings".into(),
+                    rule: e.to_string(),
+                }
+            })?,
+            count,
+            reading,
+            viscosity: oil.kinematic_viscosity,
+        },
+        Bearing::Journal {
+            short_bearing,
+            length_ratio,
+            clearance_ratio,
+        } => Part::Journal {
+            joint,
+            bearing: JournalBearing::new(
+                b.radius,
+                2.0 * b.radius * length_ratio,
+                b.radius * clearance_ratio,
+            )
+            .map_err(|e| LossError {
+                field: "friction.journal_length_ratio".into(),
+                rule: e.to_string(),
+            })?,
+            count,
+            short: short_bearing,
+            viscosity: oil.dynamic_viscosity(),
+        },
+    })
+}
+
+/// The mesh geometry of a pair whose pinion (on the mesh's body) has pitch radius
+/// `pitch_radius` and `mesh.teeth` teeth: module m = 2·r/z1 (Karhula A9.1.37 for the cardan
+/// wheel, r = Z_AA0c), z2 = ratio·z1 (negative for an internal gear, ISO 21771), standard
+/// addenda except the ring's `mesh.ring_addendum`; the pair must pass the interference checks.
+fn mesh_geometry(
+    mesh: &MeshLossModel,
+    ratio: f64,
+    pitch_radius: f64,
+    internal: bool,
+    pressure_angle: f64,
+) -> Result<MeshGeometry, LossError> {
+    let z1 = mesh.teeth as i32;
+    let z2 = (ratio * f64::from(z1)).round() as i32;
+    let failed = |field: &str, rule: String| LossError {
+        field: field.into(),
+        rule,
+    };
+    if (f64::from(z2) - ratio * f64::from(z1)).abs() > 1e-9 {
+        return Err(failed(
+            "gear.teeth",
+            format!(
+                "{z1} teeth on the pinion give {} on the gear of ratio {ratio}, not a whole number",
+                ratio * f64::from(z1)
+            ),
+        ));
+    }
+    let module = 2.0 * pitch_radius / f64::from(z1);
+    let mut spec = PairSpec::standard(
+        module,
+        z1,
+        if internal { -z2 } else { z2 },
+        pressure_angle,
+        0.0,
+        0.0,
+    );
+    if internal {
+        spec.gear = spec.gear.with_addendum(mesh.ring_addendum);
+    }
+    let pair = GearPair::new(spec).map_err(|e| failed("gear", e.to_string()))?;
+    pair.verify().map_err(|e| {
+        failed(
+            "gear.ring_addendum",
+            format!(
+                "{} (a ring addendum of {} modules on {z1}/{z2} teeth)",
+                e, mesh.ring_addendum
+            ),
+        )
+    })?;
+    let face_width = mesh.face_width.unwrap_or(pair.pinion.reference / 3.0);
+    MeshGeometry::from_pair(&pair, face_width).map_err(|e| failed("gear.face_width", e.to_string()))
+}

@@ -1,0 +1,170 @@
+//! Friction and mechanical efficiency against Karhula (2008), appendix 11.6.1
+//! (shared/reference/karhula-r60-l140.md, "With friction"), through the shipped sweeps.
+//!
+//! Tolerances are the issue's: mechanical efficiency within 0.03, power loss and power need (or
+//! output torque) within 15 %. Why not closer: the thesis's masses and centres of gravity are
+//! estimates it does not print in full (we use the masses its inertial tables imply, which
+//! reproduce its crank-pin forces to 0.1 %), its ring heights are missing from the seed (2 and
+//! 4 mm, validation note §7.3), and the losses grow with the inertial loads at speed.
+
+use cardan_runner::case::load_file;
+use cardan_runner::run_case;
+use std::collections::BTreeMap;
+use std::f64::consts::PI;
+use std::path::Path;
+
+/// The thesis's columns at ω0 = 3π, 30π, 100π, 110π, 140π, 200π rad/s.
+const SPEEDS: [f64; 6] = [3.0, 30.0, 100.0, 110.0, 140.0, 200.0];
+
+/// Air pump, steel links, α = 0: mean power loss (kW), power need (kW), efficiency.
+const PUMP_LOSS: [[f64; 6]; 2] = [
+    [0.072, 0.797, 5.398, 6.639, 11.65, 29.28],
+    [0.070, 0.660, 2.602, 3.002, 4.506, 9.582],
+];
+const PUMP_NEED: [[f64; 6]; 2] = [
+    [1.108, 11.16, 39.95, 44.65, 60.03, 98.39],
+    [1.108, 11.04, 37.19, 41.04, 52.92, 78.75],
+];
+const PUMP_EFFICIENCY: [[f64; 6]; 2] = [
+    [0.935, 0.929, 0.865, 0.851, 0.806, 0.702],
+    [0.937, 0.941, 0.930, 0.927, 0.915, 0.879],
+];
+
+/// Four-stroke engine, titanium cardan rod, α = 0: output torque (N·m), power loss (kW),
+/// efficiency.
+const ENGINE_TORQUE: [[f64; 6]; 2] = [
+    [99.27, 98.43, 89.76, 87.75, 80.53, 60.64],
+    [83.29, 85.14, 85.59, 85.50, 84.96, 82.79],
+];
+const ENGINE_LOSS: [[f64; 6]; 2] = [
+    [0.147, 1.547, 7.881, 9.364, 15.10, 34.06],
+    [0.154, 1.362, 4.396, 4.867, 6.431, 10.55],
+];
+const ENGINE_EFFICIENCY: [[f64; 6]; 2] = [
+    [0.864, 0.857, 0.782, 0.764, 0.701, 0.528],
+    [0.836, 0.855, 0.860, 0.859, 0.853, 0.832],
+];
+
+const MECHANISMS: [&str; 2] = ["slider_crank", "cardan_gear"];
+
+/// Every metric of both mechanisms at every speed of a shipped sweep, keyed by ω0/π.
+fn sweep(file: &str) -> BTreeMap<u64, [BTreeMap<String, f64>; 2]> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../configs/sweeps")
+        .join(file);
+    let mut out = BTreeMap::new();
+    for case in load_file(&path).unwrap() {
+        let w = (case.motion.initial_speed / PI).round() as u64;
+        let results = run_case(&case, None).unwrap();
+        let metrics = MECHANISMS.map(|name| {
+            let r = results.iter().find(|r| r.mechanism.name() == name).unwrap();
+            r.summary
+                .metrics
+                .iter()
+                .map(|m| (m.name.clone(), m.value))
+                .collect()
+        });
+        out.insert(w, metrics);
+    }
+    assert_eq!(
+        out.keys().copied().collect::<Vec<_>>(),
+        SPEEDS.map(|w| w as u64)
+    );
+    out
+}
+
+fn relative(what: &str, got: f64, want: f64, tolerance: f64) {
+    let e = got / want - 1.0;
+    assert!(
+        e.abs() <= tolerance,
+        "{what}: {got} against the thesis's {want} ({:+.1} %, tolerance {} %)",
+        e * 100.0,
+        tolerance * 100.0
+    );
+}
+
+fn absolute(what: &str, got: f64, want: f64, tolerance: f64) {
+    assert!(
+        (got - want).abs() <= tolerance,
+        "{what}: {got} against the thesis's {want} (tolerance {tolerance})"
+    );
+}
+
+#[test]
+fn the_pump_reproduces_the_thesis_efficiency_table() {
+    let runs = sweep("karhula-pump-speed-sweep.toml");
+    for (k, w) in SPEEDS.iter().enumerate() {
+        let [s, c] = &runs[&(*w as u64)];
+        for (m, metrics) in [s, c].into_iter().enumerate() {
+            let at = |q: &str| format!("pump {} at {w}π rad/s: {q}", MECHANISMS[m]);
+            relative(
+                &at("power_loss_mean"),
+                metrics["power_loss_mean"] / 1e3,
+                PUMP_LOSS[m][k],
+                0.15,
+            );
+            relative(
+                &at("power_need_mean"),
+                metrics["power_need_mean"] / 1e3,
+                PUMP_NEED[m][k],
+                0.15,
+            );
+            // T_need = P_need / ω at constant speed (A9.1.64-65).
+            relative(
+                &at("torque_need_mean"),
+                metrics["torque_need_mean"],
+                PUMP_NEED[m][k] * 1e3 / (w * PI),
+                0.15,
+            );
+            absolute(
+                &at("mechanical_efficiency"),
+                metrics["mechanical_efficiency"],
+                PUMP_EFFICIENCY[m][k],
+                0.03,
+            );
+        }
+        // The thesis's conclusion: the cardan gear is the more efficient pump from 30π up.
+        if *w >= 30.0 {
+            assert!(
+                c["mechanical_efficiency"] > s["mechanical_efficiency"],
+                "{w}π: {} vs {}",
+                c["mechanical_efficiency"],
+                s["mechanical_efficiency"]
+            );
+        }
+    }
+}
+
+#[test]
+fn the_engine_reproduces_the_thesis_efficiency_table() {
+    let runs = sweep("karhula-engine-speed-sweep.toml");
+    for (k, w) in SPEEDS.iter().enumerate() {
+        let [s, c] = &runs[&(*w as u64)];
+        for (m, metrics) in [s, c].into_iter().enumerate() {
+            let at = |q: &str| format!("engine {} at {w}π rad/s: {q}", MECHANISMS[m]);
+            relative(
+                &at("power_loss_mean"),
+                metrics["power_loss_mean"] / 1e3,
+                ENGINE_LOSS[m][k],
+                0.15,
+            );
+            relative(
+                &at("output_torque_mean"),
+                metrics["output_torque_mean"],
+                ENGINE_TORQUE[m][k],
+                0.15,
+            );
+            absolute(
+                &at("mechanical_efficiency"),
+                metrics["mechanical_efficiency"],
+                ENGINE_EFFICIENCY[m][k],
+                0.03,
+            );
+        }
+        // The cardan gear engine is the more efficient from 100π up (the thesis: from about
+        // 30π; at 30π its two efficiencies differ by 0.002).
+        if *w >= 100.0 {
+            assert!(c["mechanical_efficiency"] > s["mechanical_efficiency"]);
+        }
+    }
+}
