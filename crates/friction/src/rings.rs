@@ -397,6 +397,10 @@ impl RingFilm {
 
     /// Asperity load per unit circumference, N/m.
     fn asperity_load(&self, s: &[f64; GRID + 1], dx: f64, h_min: f64) -> f64 {
+        // The offsets are non-negative: no asperity touches once h_min is 4σ.
+        if h_min >= 4.0 * self.asperity.composite_roughness {
+            return 0.0;
+        }
         let mut w = 0.0;
         for (i, si) in s.iter().enumerate() {
             let wt = if i == 0 || i == GRID { 0.5 } else { 1.0 };
@@ -448,30 +452,77 @@ impl RingFilm {
     }
 
     /// Solves the load balance film + asperities = `target` (N/m) for h in [1e-10, 1e-3] m,
-    /// with ḣ = `hdot(h)`; the carried load decreases monotonically with h.
-    fn solve(&self, target: f64, eval: impl Fn(f64) -> RingFilmState) -> RingFilmState {
-        let (mut lo, mut hi) = (1e-10_f64.ln(), 1e-3_f64.ln());
-        let carried = |st: &RingFilmState| st.film_load + st.asperity_load;
-        let top = eval(hi.exp());
-        if carried(&top) >= target {
-            return top;
+    /// with ḣ = `hdot(h)`; the carried load decreases monotonically with h. The root is
+    /// bracketed outwards from `guess` (the previous step's film, when stepping) by factors of
+    /// 4 and then found by the Illinois variant of regula falsi on ln h to 1e-10 in ln h or
+    /// 1e-10 of the load: about a dozen film evaluations instead of the 45 of a bisection.
+    fn solve(
+        &self,
+        target: f64,
+        guess: Option<f64>,
+        eval: impl Fn(f64) -> RingFilmState,
+    ) -> RingFilmState {
+        let (floor, ceiling) = (1e-10_f64.ln(), 1e-3_f64.ln());
+        // g(x) = carried(e^x) − target, decreasing in x.
+        let g = |x: f64| {
+            let st = eval(x.exp());
+            (st.film_load + st.asperity_load - target, st)
+        };
+        let start = guess
+            .filter(|h| h.is_finite() && *h > 0.0)
+            .map_or(0.5 * (floor + ceiling), |h| h.ln().clamp(floor, ceiling));
+        let (mut lo, mut hi) = (start, start);
+        let (mut g_lo, st) = g(start);
+        if g_lo == 0.0 {
+            return st;
         }
-        let bottom = eval(lo.exp());
-        if carried(&bottom) <= target {
-            return bottom;
+        let mut g_hi = g_lo;
+        let step = 4f64.ln();
+        // Expand until g(lo) > 0 > g(hi), or a limit is reached.
+        while g_lo < 0.0 {
+            if lo <= floor {
+                return eval(floor.exp());
+            }
+            hi = lo;
+            g_hi = g_lo;
+            lo = (lo - step).max(floor);
+            g_lo = g(lo).0;
         }
+        while g_hi > 0.0 {
+            if hi >= ceiling {
+                return eval(ceiling.exp());
+            }
+            lo = hi;
+            g_lo = g_hi;
+            hi = (hi + step).min(ceiling);
+            g_hi = g(hi).0;
+        }
+        let mut side = 0;
+        let mut best = (lo, g_lo);
         for _ in 0..100 {
-            let mid = 0.5 * (lo + hi);
-            if carried(&eval(mid.exp())) > target {
-                lo = mid;
+            let x = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+            let (gx, st) = g(x);
+            if gx.abs() <= 1e-10 * target.abs() || hi - lo < 1e-10 {
+                return st;
+            }
+            if gx > 0.0 {
+                lo = x;
+                g_lo = gx;
+                if side == 1 {
+                    g_hi *= 0.5;
+                }
+                side = 1;
             } else {
-                hi = mid;
+                hi = x;
+                g_hi = gx;
+                if side == -1 {
+                    g_lo *= 0.5;
+                }
+                side = -1;
             }
-            if hi - lo < 1e-12 {
-                break;
-            }
+            best = (x, gx);
         }
-        eval((0.5 * (lo + hi)).exp())
+        eval(best.0.exp())
     }
 
     /// Quasi-steady ring film (∂h/∂t = 0): h_min such that film + asperity load equals the
@@ -484,7 +535,7 @@ impl RingFilm {
         load: RingLoad,
     ) -> RingFilmState {
         let target = self.load_per_length(load);
-        self.solve(target, |h| self.evaluate(viscosity, sliding_speed, h, 0.0))
+        self.solve(target, None, |h| self.evaluate(viscosity, sliding_speed, h, 0.0))
     }
 
     /// One backward-Euler step of the squeeze-film state: from the previous minimum film
@@ -499,7 +550,7 @@ impl RingFilm {
         load: RingLoad,
     ) -> RingFilmState {
         let target = self.load_per_length(load);
-        self.solve(target, |h| {
+        self.solve(target, Some(previous_min_film), |h| {
             self.evaluate(viscosity, sliding_speed, h, (h - previous_min_film) / dt)
         })
     }
