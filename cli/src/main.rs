@@ -44,6 +44,10 @@ enum Command {
         /// No progress bar (it shows on a terminal when a run takes more than a second).
         #[arg(long)]
         quiet: bool,
+        /// Write no comparison reports (report.md, report.html and plots/ per case and sweep,
+        /// OUT/index.html).
+        #[arg(long)]
+        no_report: bool,
     },
     /// Read and validate every case under PATHS without running them.
     Check {
@@ -138,6 +142,7 @@ fn main() -> ExitCode {
             no_csv,
             only,
             quiet,
+            no_report,
         } => {
             if jobs == Some(0) {
                 eprintln!("error: --jobs must be at least 1");
@@ -150,6 +155,7 @@ fn main() -> ExitCode {
                 jobs,
                 csv: no_csv.then_some(false),
                 only,
+                reports: !no_report,
                 progress: Some(std::sync::Arc::new(move |done, total| {
                     progress.set_length(total as u64);
                     progress.set_position(done as u64);
@@ -167,6 +173,10 @@ fn main() -> ExitCode {
                 report.failures.len(),
                 started.elapsed().as_secs_f64()
             );
+            let index = out.join("index.html");
+            if !no_report && index.is_file() {
+                println!("reports: {}", index.display());
+            }
             (report.written.len(), report.failures)
         }
         Command::Gear { file, out } => return gear(&file, &out),

@@ -8,6 +8,7 @@ pub mod friction;
 pub mod gas;
 pub mod gear_file;
 pub mod output;
+pub mod report;
 pub mod run;
 pub mod sweep;
 pub mod units;

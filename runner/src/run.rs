@@ -3,6 +3,7 @@
 
 use crate::case::{self, Case, CaseError};
 use crate::output::{self, CsvSink};
+use anyhow::Context;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
     run, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Summary, SummarySink,
@@ -173,6 +174,9 @@ pub struct RunOptions {
     pub only: Option<String>,
     /// Told of every finished case.
     pub progress: Option<Progress>,
+    /// Writes the comparison reports ([`crate::report`]): one per case (not per sweep point),
+    /// one per sweep, and `index.html` at the top of the output folder.
+    pub reports: bool,
 }
 
 impl std::fmt::Debug for RunOptions {
@@ -181,6 +185,7 @@ impl std::fmt::Debug for RunOptions {
             .field("jobs", &self.jobs)
             .field("csv", &self.csv)
             .field("only", &self.only)
+            .field("reports", &self.reports)
             .finish_non_exhaustive()
     }
 }
@@ -313,7 +318,13 @@ fn run_and_write(
             .map_err(|e| e.to_string())?;
         summary.push('\n');
         output::write_file(&tmp.join("summary.json"), summary.as_bytes())
-            .and_then(|()| output::replace_dir(&tmp, &dir))
+            .and_then(|()| {
+                // A sweep's points are reported by the sweep's report.
+                if options.reports && case.sweep.is_none() {
+                    crate::report::case_report(&tmp, None).context("the report")?;
+                }
+                output::replace_dir(&tmp, &dir)
+            })
             .map_err(cannot_write)?;
         Ok(results)
     });
@@ -473,12 +484,25 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         let Some(tmp) = tmp else { continue };
         let rows = points.get(sweep.as_str()).map_or(&[][..], Vec::as_slice);
         let written = output::write_file(&tmp.join("sweep.csv"), sweep_csv(rows).as_bytes())
-            .and_then(|()| output::replace_dir(tmp, &out.join(sweep)));
+            .and_then(|()| {
+                if options.reports && !rows.is_empty() {
+                    crate::report::sweep_report(tmp, sweep, None).context("the sweep report")?;
+                }
+                output::replace_dir(tmp, &out.join(sweep))
+            });
         if let Err(e) = written {
             let _ = std::fs::remove_dir_all(tmp);
             report.failures.push(format!(
                 "sweep \"{sweep}\": cannot write results to {}: {e:#}",
                 out.join(sweep).display()
+            ));
+        }
+    }
+    if options.reports && !report.written.is_empty() {
+        if let Err(e) = crate::report::index(out) {
+            report.failures.push(format!(
+                "cannot write {}: {e:#}",
+                out.join("index.html").display()
             ));
         }
     }

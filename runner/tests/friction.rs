@@ -168,3 +168,34 @@ fn the_engine_reproduces_the_thesis_efficiency_table() {
         }
     }
 }
+
+#[test]
+fn every_non_thesis_reading_runs_the_shipped_pump() {
+    // The shipped 30π pump with the film rings, the viscous skirt, the corrected mesh loss and
+    // each physical bearing model in turn: complete, finite results, and losses that cost
+    // efficiency without exceeding the input.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../configs/karhula-pump-r60-l140-a0-w30pi.toml");
+    let base = std::fs::read_to_string(&path).unwrap();
+    for bearings in ["palmgren", "skf", "petroff", "short_bearing"] {
+        let text = format!(
+            "{base}\n[friction]\nrings = \"film\"\nskirt = \"viscous\"\ngear_mesh = \"corrected\"\nbearings = \"{bearings}\"\n"
+        );
+        let case = cardan_runner::case::parse(&path, &text).unwrap();
+        for r in run_case(&case, None).unwrap() {
+            let get = |name: &str| r.summary.get(name).unwrap();
+            let efficiency = get("mechanical_efficiency");
+            assert!(
+                efficiency > 0.9 && efficiency < 1.0,
+                "{bearings}, {}: {efficiency}",
+                r.mechanism.name()
+            );
+            for m in &r.summary.metrics {
+                assert!(m.value.is_finite(), "{bearings}: {} = {}", m.name, m.value);
+                if m.name.starts_with("power_loss_mean_") {
+                    assert!(m.value > 0.0, "{bearings}: {} = {}", m.name, m.value);
+                }
+            }
+        }
+    }
+}

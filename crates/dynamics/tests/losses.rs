@@ -63,7 +63,13 @@ fn cardan_gear_components_are_their_models_at_their_joints() {
     let mut budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
     assert_eq!(
         budget.names(),
-        ["rings", "main_bearing", "crank_pin", "piston_pin", "gear_mesh"]
+        [
+            "rings",
+            "main_bearing",
+            "crank_pin",
+            "piston_pin",
+            "gear_mesh"
+        ]
     );
     let mut out = vec![f64::NAN; budget.names().len()];
     budget.evaluate(&state, &loads, None, &mut out).unwrap();

@@ -535,7 +535,9 @@ impl RingFilm {
         load: RingLoad,
     ) -> RingFilmState {
         let target = self.load_per_length(load);
-        self.solve(target, None, |h| self.evaluate(viscosity, sliding_speed, h, 0.0))
+        self.solve(target, None, |h| {
+            self.evaluate(viscosity, sliding_speed, h, 0.0)
+        })
     }
 
     /// One backward-Euler step of the squeeze-film state: from the previous minimum film

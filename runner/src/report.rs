@@ -1,0 +1,209 @@
+//! Comparison reports and charts made from a run's output folder, so that a reader sees at a
+//! glance which mechanism is better where, and by how much, without a spreadsheet.
+//!
+//! - [`case_report`]: for one case folder (`summary.json` and the per-step CSVs), `report.md`
+//!   and `report.html` with every metric of every mechanism side by side (units, and the
+//!   percentage difference to a reference mechanism, as in Karhula's (2008) appendix tables),
+//!   grouped into kinematics, joint loads (per joint), torque/power/work, cylinder and gas,
+//!   and losses; a generated "which is better" summary; a loss budget when the summary holds
+//!   friction losses; and charts over crank angle (piston motion, cylinder pressure, drive
+//!   torques, joint forces, friction) in `plots/*.svg`.
+//! - [`sweep_report`]: for a sweep folder (`sweep.csv`), the [`KEY_METRICS`] over one swept
+//!   field (line charts of every mechanism and of the difference in %), or over two (heat maps
+//!   of each mechanism and of the difference, with the 0 % contour: where the mechanisms swap
+//!   places).
+//! - [`index`]: `<out>/index.html`, linking every report with a few headline metrics per case.
+//!
+//! The differences are `Δ = (mechanism − reference) / |reference| × 100 %`; lower is better for
+//! loads, torques, power need and losses, higher for efficiency and output. The reference is
+//! the one asked for, else the first registered mechanism of the results (the slider-crank when
+//! present).
+//!
+//! Charts are SVG written here (see `svg.rs`): no font or system library, reproducible bytes,
+//! series decimated to at most [`MAX_POINTS`] points keeping each bucket's extremes. Reports
+//! hold no timestamps and list everything in a fixed order, so that two runs give the same
+//! bytes.
+
+mod case_plots;
+mod cases;
+mod data;
+mod doc;
+mod heatmap;
+mod index;
+mod svg;
+mod sweeps;
+
+pub use svg::MAX_POINTS;
+
+use anyhow::Context;
+use std::path::Path;
+
+/// The metrics a sweep report charts, in this order: each entry is a list of alternatives of
+/// which the first present in `sweep.csv` is taken (a metric already taken is not repeated).
+/// Efficiency and losses come first (present once friction is modelled), then the power need
+/// or output, the peak drive torque (total, then inertial), the peak crank-pin force and the
+/// mean drive power.
+pub const KEY_METRICS: &[&[&str]] = &[
+    &["mechanical_efficiency"],
+    &["power_loss_mean"],
+    &["power_need_mean", "output_power_mean"],
+    &["total_torque_max", "inertial_torque_max"],
+    &["inertial_torque_max"],
+    &["total_crank_pin_force_max", "inertial_crank_pin_force_max"],
+    &["total_power_mean", "inertial_power_mean"],
+];
+
+/// Whether a larger or a smaller value of a metric is better.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Better {
+    Lower,
+    Higher,
+}
+
+impl Better {
+    fn phrase(self) -> &'static str {
+        match self {
+            Better::Lower => "lower is better",
+            Better::Higher => "higher is better",
+        }
+    }
+}
+
+/// The direction of a metric, where one is obvious: efficiencies and outputs higher; losses,
+/// peak loads and torques, power and torque need lower. None for the rest (kinematics, mean
+/// drive power, energy checks).
+pub(crate) fn better(metric: &str) -> Option<Better> {
+    if metric.ends_with("efficiency") || metric.starts_with("output_") {
+        Some(Better::Higher)
+    } else if metric.starts_with("power_loss")
+        || metric.starts_with("friction_")
+        || metric.ends_with("_need_mean")
+        || metric.ends_with("_force_max")
+        || metric.ends_with("_moment_max")
+        || metric.ends_with("_tangential_max")
+        || metric.ends_with("_torque_max")
+    {
+        Some(Better::Lower)
+    } else {
+        None
+    }
+}
+
+/// `(value − reference) / |reference|` in %, if defined.
+pub(crate) fn pct_diff(value: f64, reference: f64) -> Option<f64> {
+    let d = (value - reference) / reference.abs() * 100.0;
+    (reference != 0.0 && d.is_finite()).then_some(d)
+}
+
+/// A percentage with its sign and one decimal, e.g. `-17.2 %`; `—` if undefined.
+pub(crate) fn fmt_pct(d: Option<f64>) -> String {
+    match d {
+        Some(d) => {
+            let s = format!("{d:+.1} %");
+            if s == "-0.0 %" {
+                "+0.0 %".into()
+            } else {
+                s
+            }
+        }
+        None => "—".into(),
+    }
+}
+
+/// A value with 5 significant digits (trailing zeros dropped), scientific outside
+/// [1e-3, 1e6); `—` for a missing value.
+pub(crate) fn fmt_num(v: f64) -> String {
+    if !v.is_finite() {
+        return "—".into();
+    }
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if !(1e-3..1e6).contains(&a) {
+        let s = format!("{v:.4e}");
+        // 1.2000e5 → 1.2e5
+        return match s.split_once('e') {
+            Some((m, e)) if m.contains('.') => {
+                format!("{}e{e}", m.trim_end_matches('0').trim_end_matches('.'))
+            }
+            _ => s,
+        };
+    }
+    let decimals = (4 - a.log10().floor() as i32).clamp(0, 8) as usize;
+    let s = format!("{v:.decimals$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+/// Writes `report.md`, `report.html` and `plots/<name>.svg` into `dir`; an older `plots/`
+/// folder is replaced.
+fn write_report(dir: &Path, doc: &doc::Doc, plots: &[(String, String)]) -> anyhow::Result<()> {
+    let plots_dir = dir.join("plots");
+    if plots_dir.exists() {
+        std::fs::remove_dir_all(&plots_dir)
+            .with_context(|| format!("remove {}", plots_dir.display()))?;
+    }
+    if !plots.is_empty() {
+        std::fs::create_dir_all(&plots_dir)
+            .with_context(|| format!("create {}", plots_dir.display()))?;
+    }
+    for (name, svg) in plots {
+        crate::output::write_file(&plots_dir.join(name), svg.as_bytes())?;
+    }
+    crate::output::write_file(&dir.join("report.md"), doc.markdown().as_bytes())?;
+    crate::output::write_file(&dir.join("report.html"), doc.html().as_bytes())?;
+    Ok(())
+}
+
+/// Writes the report of the case in `case_dir` (`summary.json`, and `<mechanism>.csv` where
+/// present): `report.md`, `report.html` (self-contained) and `plots/*.svg`. Differences are
+/// taken to `reference` (a mechanism of the case), by default the first registered mechanism
+/// present (the slider-crank when the case has it).
+pub fn case_report(case_dir: &Path, reference: Option<&str>) -> anyhow::Result<()> {
+    cases::case_report(case_dir, reference)
+        .with_context(|| format!("report of {}", case_dir.display()))
+}
+
+/// Writes the report of the sweep in `sweep_dir` (`sweep.csv` and the points' folders):
+/// `report.md`, `report.html` and `plots/*.svg` with the [`KEY_METRICS`] present: over one
+/// swept field, line charts of every mechanism and of the difference to `reference` in %;
+/// over a grid of two, heat maps of each mechanism and of the difference, with its 0 %
+/// contour. A point is linked to its `report.html` if that exists, else to its
+/// `summary.json`: call this after [`case_report`] of the points. `name` is the sweep's (its
+/// folder may be a temporary one).
+pub fn sweep_report(sweep_dir: &Path, name: &str, reference: Option<&str>) -> anyhow::Result<()> {
+    sweeps::sweep_report(sweep_dir, name, reference)
+        .with_context(|| format!("report of {}", sweep_dir.display()))
+}
+
+/// Writes `<out_dir>/index.html`: a link to every case and sweep folder's report (or, without
+/// one, its results), and a table of headline metrics per case and mechanism. Call it after
+/// the reports.
+pub fn index(out_dir: &Path) -> anyhow::Result<()> {
+    index::index(out_dir).with_context(|| format!("index of {}", out_dir.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_and_percentages_are_printed_fixed() {
+        assert_eq!(fmt_num(563.236980502139), "563.24");
+        assert_eq!(fmt_num(80326.51054262005), "80327");
+        assert_eq!(fmt_num(0.12), "0.12");
+        assert_eq!(fmt_num(3611624.18), "3.6116e6");
+        assert_eq!(fmt_num(-2.5e-5), "-2.5e-5");
+        assert_eq!(fmt_num(f64::NAN), "—");
+        assert_eq!(fmt_pct(pct_diff(563.24, 679.87)), "-17.2 %");
+        assert_eq!(fmt_pct(pct_diff(1.0, 0.0)), "—");
+        assert_eq!(fmt_pct(pct_diff(0.9999999, 1.0)), "+0.0 %");
+        assert_eq!(better("total_crank_pin_force_max"), Some(Better::Lower));
+        assert_eq!(better("mechanical_efficiency"), Some(Better::Higher));
+        assert_eq!(better("total_power_mean"), None);
+    }
+}

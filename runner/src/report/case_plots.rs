@@ -1,0 +1,326 @@
+//! The charts of a case over crank angle, every mechanism on one axis: piston position,
+//! velocity and acceleration; cylinder pressure; the drive torque of each load family; the
+//! force at each joint (total loads, else the last family); and, when the CSVs have them, the
+//! friction torque and the power loss (all components, and each one). Only the columns a
+//! chart needs are read.
+
+use super::cases::family_rank;
+use super::data::{CaseSummary, Columns};
+use super::svg::{self, LineChart, Series};
+
+/// One chart over crank angle: the file name, title, y quantity and unit, and per mechanism
+/// the columns to draw (column name, label suffix).
+pub(super) struct PlotSpec {
+    file: String,
+    title: String,
+    y_label: String,
+    unit: String,
+    zero_line: bool,
+    /// Per mechanism (index into the summary's order): (column, label suffix).
+    columns: Vec<Vec<(String, String)>>,
+    /// Sum the columns of a mechanism into one series (the total power loss).
+    sum: bool,
+}
+
+/// The columns of the charts a CSV header allows.
+pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Vec<PlotSpec> {
+    let has = |k: usize, c: &str| {
+        headers[k]
+            .as_ref()
+            .is_some_and(|h| h.iter().any(|x| x == c))
+    };
+    let n = s.mechanisms.len();
+    let pistons = |k: usize| -> Vec<String> {
+        headers[k]
+            .iter()
+            .flatten()
+            .filter_map(|h| h.strip_suffix("_dx_dtheta_m_rad"))
+            .map(String::from)
+            .collect()
+    };
+    let mut specs = Vec::new();
+    let per_piston = |suffix: &str| -> Vec<Vec<(String, String)>> {
+        (0..n)
+            .map(|k| {
+                let ps = pistons(k);
+                let many = ps.len() > 1;
+                ps.iter()
+                    .map(|p| {
+                        (
+                            format!("{p}_{suffix}"),
+                            if many { format!(" {p}") } else { String::new() },
+                        )
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    for (file, title, quantity, unit, suffix) in [
+        (
+            "piston_position",
+            "Piston position",
+            "position",
+            "m",
+            "position_m",
+        ),
+        (
+            "piston_velocity",
+            "Piston velocity",
+            "velocity",
+            "m/s",
+            "velocity_m_s",
+        ),
+        (
+            "piston_acceleration",
+            "Piston acceleration",
+            "acceleration",
+            "m/s^2",
+            "acceleration_m_s2",
+        ),
+    ] {
+        specs.push(PlotSpec {
+            file: file.into(),
+            title: title.into(),
+            y_label: quantity.into(),
+            unit: unit.into(),
+            zero_line: suffix != "position_m",
+            columns: per_piston(suffix),
+            sum: false,
+        });
+    }
+    let single = |column: &str| -> Vec<Vec<(String, String)>> {
+        (0..n)
+            .map(|k| {
+                if has(k, column) {
+                    vec![(column.to_string(), String::new())]
+                } else {
+                    Vec::new()
+                }
+            })
+            .collect()
+    };
+    specs.push(PlotSpec {
+        file: "cylinder_pressure".into(),
+        title: "Cylinder pressure (absolute)".into(),
+        y_label: "pressure".into(),
+        unit: "Pa".into(),
+        zero_line: false,
+        columns: single("cylinder_pressure_pa"),
+        sum: false,
+    });
+    let families: Vec<String> = {
+        let mut f: Vec<String> = headers
+            .iter()
+            .flatten()
+            .flat_map(|h| h.iter())
+            .filter_map(|c| c.strip_suffix("_torque_nm"))
+            .filter(|f| !f.is_empty() && !f.contains("_torque_"))
+            .map(String::from)
+            .collect();
+        f.sort_by_key(|x| family_rank(x));
+        f.dedup();
+        f
+    };
+    for f in &families {
+        specs.push(PlotSpec {
+            file: format!("torque_{f}"),
+            title: format!("Drive torque, {f} loads"),
+            y_label: "torque".into(),
+            unit: "N*m".into(),
+            zero_line: true,
+            columns: single(&format!("{f}_torque_nm")),
+            sum: false,
+        });
+    }
+    // Joint forces of the total loads (else the last family).
+    if let Some(f) = families.last() {
+        let mut joints: Vec<String> = s
+            .mechanisms
+            .iter()
+            .flat_map(|m| m.joints.iter().cloned())
+            .collect();
+        joints.sort();
+        joints.dedup();
+        for j in joints {
+            specs.push(PlotSpec {
+                file: format!("force_{j}"),
+                title: format!("Force at {j}, {f} loads"),
+                y_label: "force magnitude".into(),
+                unit: "N".into(),
+                zero_line: false,
+                columns: single(&format!("{f}_{j}_force_magnitude_n")),
+                sum: false,
+            });
+        }
+    }
+    specs.push(PlotSpec {
+        file: "friction_torque".into(),
+        title: "Friction torque".into(),
+        y_label: "torque".into(),
+        unit: "N*m".into(),
+        zero_line: true,
+        columns: single("friction_torque_nm"),
+        sum: false,
+    });
+    let loss_columns = |k: usize| -> Vec<String> {
+        headers[k]
+            .iter()
+            .flatten()
+            .filter(|h| h.starts_with("power_loss_") && h.ends_with("_w"))
+            .cloned()
+            .collect()
+    };
+    let total_loss: Vec<Vec<(String, String)>> = (0..n)
+        .map(|k| {
+            loss_columns(k)
+                .into_iter()
+                .map(|c| (c, String::new()))
+                .collect()
+        })
+        .collect();
+    specs.push(PlotSpec {
+        file: "power_loss".into(),
+        title: "Friction power loss, all components".into(),
+        y_label: "power loss".into(),
+        unit: "W".into(),
+        zero_line: false,
+        columns: total_loss,
+        sum: true,
+    });
+    let mut components: Vec<String> = (0..n).flat_map(loss_columns).collect();
+    components.sort();
+    components.dedup();
+    for c in components {
+        let name = c
+            .strip_prefix("power_loss_")
+            .and_then(|x| x.strip_suffix("_w"))
+            .unwrap_or(&c)
+            .to_string();
+        specs.push(PlotSpec {
+            file: format!("power_loss_{name}"),
+            title: format!("Friction power loss: {name}"),
+            y_label: "power loss".into(),
+            unit: "W".into(),
+            zero_line: false,
+            columns: single(&c),
+            sum: false,
+        });
+    }
+    specs
+}
+
+/// Draws the charts of `specs` from the columns read.
+pub(super) fn charts(
+    s: &CaseSummary,
+    specs: &[PlotSpec],
+    data: &[Option<Columns>],
+) -> Vec<(String, String, String)> {
+    let mut out = Vec::new();
+    for spec in specs {
+        let mut series = Vec::new();
+        for (k, m) in s.mechanisms.iter().enumerate() {
+            let Some(cols) = &data[k] else { continue };
+            let Some(x) = cols.get("crank_angle_deg") else {
+                continue;
+            };
+            let file = format!("{}.csv", m.name);
+            if spec.sum {
+                let parts: Vec<&[f64]> = spec.columns[k]
+                    .iter()
+                    .filter_map(|(c, _)| cols.get(c))
+                    .collect();
+                if parts.is_empty() {
+                    continue;
+                }
+                let y: Vec<f64> = (0..x.len())
+                    .map(|r| parts.iter().map(|p| p[r]).filter(|v| v.is_finite()).sum())
+                    .collect();
+                let names: Vec<&str> = spec.columns[k].iter().map(|(c, _)| c.as_str()).collect();
+                series.push(Series {
+                    label: m.name.clone(),
+                    source: format!("{file}:{}", names.join("+")),
+                    x: x.to_vec(),
+                    y,
+                    colour: k,
+                    dash: 0,
+                    markers: false,
+                });
+                continue;
+            }
+            for (d, (column, suffix)) in spec.columns[k].iter().enumerate() {
+                let Some(y) = cols.get(column) else { continue };
+                if !y.iter().any(|v| v.is_finite()) {
+                    continue;
+                }
+                series.push(Series {
+                    label: format!("{}{suffix}", m.name),
+                    source: format!("{file}:{column}"),
+                    x: x.to_vec(),
+                    y: y.to_vec(),
+                    colour: k,
+                    dash: d,
+                    markers: false,
+                });
+            }
+        }
+        if series.is_empty() {
+            continue;
+        }
+        let chart = LineChart {
+            title: spec.title.clone(),
+            x_label: "crank angle θ, °".into(),
+            y_label: spec.y_label.clone(),
+            y_unit: spec.unit.clone(),
+            series,
+            zero_line: spec.zero_line,
+            x_categories: None,
+            angle_axis: true,
+        };
+        out.push((
+            format!("{}.svg", spec.file),
+            svg::line_chart(&chart),
+            format!("{}: every mechanism over crank angle", spec.title),
+        ));
+    }
+    out
+}
+
+/// The CSV columns the charts use, of the header `h` (the mechanism's `joints`): crank angle,
+/// piston motion, pressure, drive torques, the joint forces of the last load family (the
+/// total), friction.
+pub(super) fn wanted_columns(h: &[String], joints: &[String]) -> Vec<String> {
+    let pistons: Vec<&str> = h
+        .iter()
+        .filter_map(|x| x.strip_suffix("_dx_dtheta_m_rad"))
+        .collect();
+    let mut families: Vec<&str> = h
+        .iter()
+        .filter_map(|x| x.strip_suffix("_torque_nm"))
+        .filter(|f| !f.is_empty() && !f.contains("_torque_"))
+        .collect();
+    families.sort_by_key(|x| family_rank(x));
+    let forces: Vec<String> = families
+        .last()
+        .map(|f| {
+            joints
+                .iter()
+                .map(|j| format!("{f}_{j}_force_magnitude_n"))
+                .collect()
+        })
+        .unwrap_or_default();
+    h.iter()
+        .filter(|c| {
+            c.as_str() == "crank_angle_deg"
+                || c.as_str() == "cylinder_pressure_pa"
+                || c.as_str() == "friction_torque_nm"
+                || (c.starts_with("power_loss_") && c.ends_with("_w"))
+                || ["_position_m", "_velocity_m_s", "_acceleration_m_s2"]
+                    .iter()
+                    .any(|s| c.strip_suffix(s).is_some_and(|p| pistons.contains(&p)))
+                || c.strip_suffix("_torque_nm")
+                    .is_some_and(|f| families.contains(&f))
+                || forces.contains(c)
+        })
+        .cloned()
+        .collect()
+}

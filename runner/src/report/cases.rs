@@ -1,0 +1,443 @@
+//! The report of one case: metric tables by group with the difference to the reference, the
+//! "which is better" summary, the loss budget; the charts over crank angle are drawn by
+//! `case_plots.rs`.
+
+use super::case_plots::{charts, plot_specs, wanted_columns};
+use super::data::{self, CaseSummary, Columns, MechanismSummary};
+use super::doc::{Align, Block, Doc};
+use super::svg;
+use super::{fmt_num, fmt_pct, pct_diff, write_report, Better};
+use rayon::prelude::*;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// Groups of the metric tables, in report order.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+enum Group {
+    Kinematics,
+    /// Loads at one joint.
+    Joint(String),
+    Torque,
+    Gas,
+    Losses,
+    Other,
+}
+
+impl Group {
+    fn title(&self) -> String {
+        match self {
+            Group::Kinematics => "Kinematics".into(),
+            Group::Joint(j) => format!("Joint loads: `{j}`"),
+            Group::Torque => "Drive torque, power and work".into(),
+            Group::Gas => "Cylinder and gas".into(),
+            Group::Losses => "Losses and efficiency".into(),
+            Group::Other => "Other".into(),
+        }
+    }
+}
+
+/// Load families in display order: the registry's (inertial, gas, total), then by name.
+pub(super) fn family_rank(f: &str) -> (usize, String) {
+    let k = ["inertial", "gas", "total"]
+        .iter()
+        .position(|x| *x == f)
+        .unwrap_or(3);
+    (k, f.to_string())
+}
+
+/// The group of a metric and its sort key within the group.
+fn classify(metric: &str, families: &[String]) -> (Group, (usize, (usize, String), String)) {
+    let def = cardan_dynamics::metrics::find(metric);
+    let registry = def.map_or(usize::MAX, |d| {
+        cardan_dynamics::METRICS
+            .iter()
+            .position(|m| m.name == d.name)
+            .unwrap_or(usize::MAX)
+    });
+    let family = families
+        .iter()
+        .find(|f| metric.starts_with(&format!("{f}_")))
+        .cloned();
+    let key = (
+        registry,
+        family_rank(family.as_deref().unwrap_or("")),
+        metric.to_string(),
+    );
+    let template = def.map_or("", |d| d.name);
+    let group = if metric.starts_with("power_loss")
+        || metric.starts_with("friction_")
+        || metric == "mechanical_efficiency"
+    {
+        Group::Losses
+    } else if metric.ends_with("_need_mean") || metric.starts_with("output_") {
+        Group::Torque
+    } else if let (Some(f), true) = (
+        &family,
+        template.starts_with("{family}_{joint}_")
+            || ["_force_max", "_moment_max", "_tangential_max"]
+                .iter()
+                .any(|s| metric.ends_with(s) && metric != "gas_force_max"),
+    ) {
+        let rest = &metric[f.len() + 1..];
+        let joint = ["_force_max", "_moment_max", "_tangential_max"]
+            .iter()
+            .find_map(|s| rest.strip_suffix(s))
+            .unwrap_or(rest);
+        Group::Joint(joint.to_string())
+    } else if template.starts_with("{family}_")
+        || metric == "kinetic_energy_change"
+        || metric == "energy_balance_error"
+    {
+        Group::Torque
+    } else if def.is_some_and(|d| d.aggregation == cardan_dynamics::Aggregation::Cylinder)
+        || metric == "gas_force_max"
+    {
+        Group::Gas
+    } else if def.is_some() {
+        Group::Kinematics
+    } else {
+        Group::Other
+    };
+    (group, key)
+}
+
+/// The load families of a case: the prefixes `f` of the metrics `f_torque_max`.
+fn families(s: &CaseSummary) -> Vec<String> {
+    let mut f: Vec<String> = s
+        .mechanisms
+        .iter()
+        .flat_map(|m| m.metrics.keys())
+        .filter_map(|k| k.strip_suffix("_torque_max"))
+        .filter(|f| !f.is_empty() && *f != "friction")
+        .map(String::from)
+        .collect();
+    f.sort_by_key(|x| family_rank(x));
+    f.dedup();
+    f
+}
+
+/// The headline comparisons of the summary: (what, alternatives, direction).
+const COMPARISONS: &[(&str, &[&str], Better)] = &[
+    (
+        "Peak drive torque",
+        &["total_torque_max", "inertial_torque_max"],
+        Better::Lower,
+    ),
+    (
+        "Peak crank-pin force",
+        &["total_crank_pin_force_max", "inertial_crank_pin_force_max"],
+        Better::Lower,
+    ),
+    (
+        "Peak main-bearing force",
+        &[
+            "total_main_bearing_force_max",
+            "inertial_main_bearing_force_max",
+        ],
+        Better::Lower,
+    ),
+    ("Mean power loss", &["power_loss_mean"], Better::Lower),
+    (
+        "Mechanical efficiency",
+        &["mechanical_efficiency"],
+        Better::Higher,
+    ),
+    ("Mean power need", &["power_need_mean"], Better::Lower),
+    ("Mean output power", &["output_power_mean"], Better::Higher),
+    (
+        "Peak friction torque",
+        &["friction_torque_max"],
+        Better::Lower,
+    ),
+];
+
+/// One sentence per headline comparison present.
+fn summary_items(s: &CaseSummary) -> Vec<String> {
+    let reference = &s.mechanisms[0];
+    let mut items = Vec::new();
+    for (what, alternatives, direction) in COMPARISONS {
+        let Some(metric) = alternatives
+            .iter()
+            .find(|m| s.mechanisms.iter().filter(|x| x.get(m).is_some()).count() >= 2)
+        else {
+            continue;
+        };
+        let unit = svg::pretty_unit(reference.unit(metric));
+        let with_unit = |v: f64| {
+            if unit.is_empty() {
+                fmt_num(v)
+            } else {
+                format!("{} {unit}", fmt_num(v))
+            }
+        };
+        let present: Vec<(&MechanismSummary, f64)> = s
+            .mechanisms
+            .iter()
+            .filter_map(|m| m.get(metric).filter(|v| v.is_finite()).map(|v| (m, v)))
+            .collect();
+        let best = present.iter().fold(None::<(&str, f64)>, |best, (m, v)| {
+            let wins = best.is_none_or(|(_, b)| match direction {
+                Better::Lower => *v < b,
+                Better::Higher => *v > b,
+            });
+            if wins {
+                Some((m.name.as_str(), *v))
+            } else {
+                best
+            }
+        });
+        let mut parts = Vec::new();
+        if let Some(r) = reference.get(metric).filter(|v| v.is_finite()) {
+            for (m, v) in present.iter().filter(|(m, _)| m.name != reference.name) {
+                let d = pct_diff(*v, r);
+                let verdict = match d {
+                    Some(d) if d.abs() < 0.05 => "equal".to_string(),
+                    Some(d) => {
+                        let is_better = match direction {
+                            Better::Lower => d < 0.0,
+                            Better::Higher => d > 0.0,
+                        };
+                        format!(
+                            "{} by {:.1} %: {}",
+                            if d < 0.0 { "lower" } else { "higher" },
+                            d.abs(),
+                            if is_better { "better" } else { "worse" }
+                        )
+                    }
+                    None => "not comparable".to_string(),
+                };
+                parts.push(format!(
+                    "`{}` {} vs `{}` {} ({verdict})",
+                    m.name,
+                    with_unit(*v),
+                    reference.name,
+                    with_unit(r)
+                ));
+            }
+        }
+        if let Some((name, _)) = best {
+            items.push(format!(
+                "**{what}** (`{metric}`, {}): best `{name}`; {}.",
+                direction.phrase(),
+                parts.join("; ")
+            ));
+        }
+    }
+    items
+}
+
+/// The loss budget: per component `power_loss_mean_<component>` the mean power loss of each
+/// mechanism in W and in % of its total (`power_loss_mean`, else the components' sum).
+fn loss_budget(s: &CaseSummary) -> Option<Block> {
+    let mut components: Vec<String> = s
+        .mechanisms
+        .iter()
+        .flat_map(|m| m.metrics.keys())
+        .filter_map(|k| k.strip_prefix("power_loss_mean_"))
+        .map(String::from)
+        .collect();
+    components.sort();
+    components.dedup();
+    if components.is_empty() {
+        return None;
+    }
+    let totals: Vec<f64> = s
+        .mechanisms
+        .iter()
+        .map(|m| {
+            m.get("power_loss_mean").unwrap_or_else(|| {
+                components
+                    .iter()
+                    .filter_map(|c| m.get(&format!("power_loss_mean_{c}")))
+                    .filter(|v| v.is_finite())
+                    .sum()
+            })
+        })
+        .collect();
+    let mut header = vec!["component".to_string()];
+    let mut align = vec![Align::Left];
+    for m in &s.mechanisms {
+        header.push(format!("`{}`, W", m.name));
+        header.push(format!("`{}`, % of total", m.name));
+        align.extend([Align::Right, Align::Right]);
+    }
+    let share = |v: f64, total: f64| {
+        if total > 0.0 && v.is_finite() {
+            format!("{:.1} %", v / total * 100.0)
+        } else {
+            "—".into()
+        }
+    };
+    let mut rows: Vec<Vec<String>> = components
+        .iter()
+        .map(|c| {
+            let mut row = vec![format!("`{c}`")];
+            for (m, total) in s.mechanisms.iter().zip(&totals) {
+                let v = m.get(&format!("power_loss_mean_{c}")).unwrap_or(f64::NAN);
+                row.push(fmt_num(v));
+                row.push(share(v, *total));
+            }
+            row
+        })
+        .collect();
+    let mut total_row = vec!["**total**".to_string()];
+    for total in &totals {
+        total_row.push(fmt_num(*total));
+        total_row.push(share(*total, *total));
+    }
+    rows.push(total_row);
+    Some(Block::Table {
+        header,
+        align,
+        rows,
+    })
+}
+
+/// The metric tables, one per group.
+fn metric_tables(s: &CaseSummary) -> Vec<Block> {
+    let families = families(s);
+    let mut names: Vec<String> = s
+        .mechanisms
+        .iter()
+        .flat_map(|m| m.metrics.keys().cloned())
+        .collect();
+    names.sort();
+    names.dedup();
+    let mut grouped: BTreeMap<Group, Vec<(_, String)>> = BTreeMap::new();
+    for n in names {
+        let (g, key) = classify(&n, &families);
+        grouped.entry(g).or_default().push((key, n));
+    }
+    let reference = &s.mechanisms[0];
+    let mut header = vec!["metric".to_string(), "unit".to_string()];
+    let mut align = vec![Align::Left, Align::Left];
+    for (k, m) in s.mechanisms.iter().enumerate() {
+        header.push(if k == 0 {
+            format!("`{}` (reference)", m.name)
+        } else {
+            format!("`{}`", m.name)
+        });
+        align.push(Align::Right);
+    }
+    for m in &s.mechanisms[1..] {
+        header.push(format!("Δ `{}`", m.name));
+        align.push(Align::Right);
+    }
+    let mut blocks = Vec::new();
+    for (group, mut metrics) in grouped {
+        metrics.sort();
+        blocks.push(Block::Heading(3, group.title()));
+        let rows = metrics
+            .iter()
+            .map(|(_, n)| {
+                let unit = s
+                    .mechanisms
+                    .iter()
+                    .map(|m| m.unit(n))
+                    .find(|u| !u.is_empty())
+                    .unwrap_or("");
+                let mut row = vec![format!("`{n}`"), svg::pretty_unit(unit)];
+                row.extend(
+                    s.mechanisms
+                        .iter()
+                        .map(|m| fmt_num(m.get(n).unwrap_or(f64::NAN))),
+                );
+                let r = reference.get(n);
+                for m in &s.mechanisms[1..] {
+                    let d = match (m.get(n), r) {
+                        (Some(v), Some(r)) => pct_diff(v, r),
+                        _ => None,
+                    };
+                    row.push(fmt_pct(d));
+                }
+                row
+            })
+            .collect();
+        blocks.push(Block::Table {
+            header: header.clone(),
+            align: align.clone(),
+            rows,
+        });
+    }
+    blocks
+}
+
+pub(super) fn case_report(case_dir: &Path, reference: Option<&str>) -> anyhow::Result<()> {
+    let (s, reference) = data::read_summary(&case_dir.join("summary.json"), reference)?;
+    // The CSVs, read in parallel; only the columns the charts use.
+    let data: Vec<Option<Columns>> = s
+        .mechanisms
+        .par_iter()
+        .map(|m| {
+            let path = case_dir.join(format!("{}.csv", m.name));
+            if !path.is_file() {
+                return Ok(None);
+            }
+            data::read_columns(&path, |h| wanted_columns(h, &m.joints)).map(Some)
+        })
+        .collect::<anyhow::Result<_>>()?;
+    let headers: Vec<Option<Vec<String>>> = data
+        .iter()
+        .map(|c| c.as_ref().map(|c| c.header.clone()))
+        .collect();
+    let specs = plot_specs(&s, &headers);
+    let plots = charts(&s, &specs, &data);
+
+    let mut doc = Doc {
+        title: format!("Case report: {}", s.case),
+        blocks: Vec::new(),
+    };
+    let names: Vec<String> = s
+        .mechanisms
+        .iter()
+        .map(|m| format!("`{}`", m.name))
+        .collect();
+    doc.push(Block::Paragraph(format!(
+        "Machine: **{}**; gas model: **{}**; mechanisms: {}. Reference: `{reference}`.",
+        s.machine,
+        s.gas_model.as_deref().unwrap_or("none"),
+        names.join(", ")
+    )));
+    doc.push(Block::Paragraph(format!(
+        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
+         for loads, torques, power need and losses; higher is better for efficiency and output. \
+         Values in SI units as in `summary.json`; — where a mechanism has no such metric."
+    )));
+    if s.mechanisms.len() > 1 {
+        doc.push(Block::Heading(2, "Which is better".into()));
+        let items = summary_items(&s);
+        if items.is_empty() {
+            doc.push(Block::Paragraph(
+                "No headline metric is shared by two mechanisms.".into(),
+            ));
+        } else {
+            doc.push(Block::List(items));
+        }
+    }
+    if let Some(budget) = loss_budget(&s) {
+        doc.push(Block::Heading(2, "Loss budget".into()));
+        doc.push(Block::Paragraph(
+            "Mean friction power loss by component (`power_loss_mean_<component>`), and its \
+             share of the mechanism's total (`power_loss_mean`)."
+                .into(),
+        ));
+        doc.push(budget);
+    }
+    doc.push(Block::Heading(2, "Metrics".into()));
+    doc.blocks.extend(metric_tables(&s));
+    doc.push(Block::Heading(2, "Charts".into()));
+    if plots.is_empty() {
+        doc.push(Block::Paragraph(
+            "No per-step CSV in this folder (`[output] csv = false`): no charts.".into(),
+        ));
+    }
+    for (file, svg_text, caption) in &plots {
+        doc.push(Block::Figure {
+            file: format!("plots/{file}"),
+            svg: svg_text.clone(),
+            caption: caption.clone(),
+        });
+    }
+    let files: Vec<(String, String)> = plots.into_iter().map(|(f, s, _)| (f, s)).collect();
+    write_report(case_dir, &doc, &files)
+}

@@ -1,0 +1,132 @@
+//! `<out>/index.html`: every case and sweep of an output folder, each linked to its report
+//! (or, without one, to its results), and a table of headline metrics per case and mechanism.
+
+use super::data;
+use super::doc::{href, Align, Block, Doc};
+use super::fmt_num;
+use std::path::Path;
+
+/// The headline columns: (title, alternatives, first present is shown).
+const HEADLINES: &[(&str, &[&str])] = &[
+    (
+        "peak drive torque, N·m",
+        &["total_torque_max", "inertial_torque_max"],
+    ),
+    (
+        "peak crank-pin force, N",
+        &["total_crank_pin_force_max", "inertial_crank_pin_force_max"],
+    ),
+    (
+        "mean drive power, W",
+        &["total_power_mean", "inertial_power_mean"],
+    ),
+    ("mean power loss, W", &["power_loss_mean"]),
+    ("mechanical efficiency", &["mechanical_efficiency"]),
+];
+
+/// The folders of `dir` (not hidden), sorted by name.
+fn folders(dir: &Path) -> anyhow::Result<Vec<String>> {
+    let mut names = Vec::new();
+    for entry in std::fs::read_dir(dir)? {
+        let entry = entry?;
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if entry.file_type()?.is_dir() && !name.starts_with('.') {
+            names.push(name);
+        }
+    }
+    names.sort();
+    Ok(names)
+}
+
+/// The link to a folder's report, else to its results file.
+fn target(dir: &Path, name: &str, results: &str) -> String {
+    if dir.join(name).join("report.html").is_file() {
+        href(&format!("{name}/report.html"))
+    } else {
+        href(&format!("{name}/{results}"))
+    }
+}
+
+pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
+    let mut cases = Vec::new();
+    let mut sweeps = Vec::new();
+    for name in folders(out_dir)? {
+        let dir = out_dir.join(&name);
+        if dir.join("sweep.csv").is_file() {
+            sweeps.push(name);
+        } else if dir.join("summary.json").is_file() {
+            cases.push(name);
+        }
+    }
+    let mut doc = Doc {
+        title: "cardan results".into(),
+        blocks: Vec::new(),
+    };
+    doc.push(Block::Paragraph(format!(
+        "{} case(s) and {} sweep(s). Headline metrics: the total loads where a gas model \
+         adds them, else the inertial ones; — where a mechanism has no such metric.",
+        cases.len(),
+        sweeps.len()
+    )));
+    if !cases.is_empty() {
+        doc.push(Block::Heading(2, "Cases".into()));
+        doc.push(Block::Links(
+            cases
+                .iter()
+                .map(|c| (c.clone(), target(out_dir, c, "summary.json"), String::new()))
+                .collect(),
+        ));
+        let mut header = vec![
+            "case".to_string(),
+            "machine".to_string(),
+            "mechanism".to_string(),
+        ];
+        let mut align = vec![Align::Left; 3];
+        for (title, _) in HEADLINES {
+            header.push(title.to_string());
+            align.push(Align::Right);
+        }
+        let mut rows = Vec::new();
+        for c in &cases {
+            let (s, _) = data::read_summary(&out_dir.join(c).join("summary.json"), None)?;
+            for m in &s.mechanisms {
+                let mut row = vec![c.clone(), s.machine.clone(), format!("`{}`", m.name)];
+                for (_, alternatives) in HEADLINES {
+                    let v = alternatives.iter().find_map(|a| m.get(a));
+                    row.push(match v {
+                        Some(v) => fmt_num(v),
+                        None => "—".into(),
+                    });
+                }
+                rows.push(row);
+            }
+        }
+        doc.push(Block::Heading(2, "Headline metrics".into()));
+        doc.push(Block::Table {
+            header,
+            align,
+            rows,
+        });
+    }
+    if !sweeps.is_empty() {
+        doc.push(Block::Heading(2, "Sweeps".into()));
+        doc.push(Block::Links(
+            sweeps
+                .iter()
+                .map(|s| {
+                    let points = folders(&out_dir.join(s)).map_or(0, |f| {
+                        f.iter()
+                            .filter(|p| out_dir.join(s).join(p).join("summary.json").is_file())
+                            .count()
+                    });
+                    (
+                        s.clone(),
+                        target(out_dir, s, "sweep.csv"),
+                        format!("{points} points"),
+                    )
+                })
+                .collect(),
+        ));
+    }
+    crate::output::write_file(&out_dir.join("index.html"), doc.html().as_bytes())
+}

@@ -1,0 +1,545 @@
+//! The report of a sweep: the key metrics over one swept field (line charts of every mechanism
+//! and of the difference to the reference), or over a grid of two (heat maps of each mechanism
+//! and of the difference, with the 0 % contour where the mechanisms swap places).
+
+use super::data::{self, parse_quantity, SweepTable};
+use super::doc::{Align, Block, Doc};
+use super::heatmap::{self, HeatMap};
+use super::svg::{self, LineChart, Series};
+use super::{better, fmt_num, fmt_pct, pct_diff, write_report, Better, KEY_METRICS};
+use std::path::Path;
+
+/// One swept field's values as an axis.
+#[derive(Debug, Clone)]
+pub(super) struct Axis {
+    /// Axis title: the field's path and unit.
+    pub title: String,
+    /// Each point's number, when every value reads as a number with one unit.
+    pub numbers: Option<Vec<f64>>,
+    /// Each point's text.
+    pub texts: Vec<String>,
+}
+
+impl Axis {
+    fn of(t: &SweepTable, k: usize) -> Axis {
+        let texts: Vec<String> = t.params.iter().map(|p| p[k].clone()).collect();
+        let parsed: Option<Vec<(f64, String)>> = texts.iter().map(|s| parse_quantity(s)).collect();
+        let numbers = parsed.as_ref().and_then(|p| {
+            let unit = &p.first()?.1;
+            p.iter()
+                .all(|(_, u)| u == unit)
+                .then(|| p.iter().map(|(v, _)| *v).collect())
+        });
+        let unit = parsed
+            .as_ref()
+            .and_then(|p| p.first().map(|(_, u)| u.clone()))
+            .filter(|u| !u.is_empty() && numbers.is_some());
+        Axis {
+            title: match unit {
+                Some(u) => format!("{}, {u}", t.swept[k]),
+                None => t.swept[k].clone(),
+            },
+            numbers,
+            texts,
+        }
+    }
+
+    /// The distinct values in axis order (numeric ascending, else first appearance): their
+    /// texts, and each point's index among them.
+    fn levels(&self) -> (Vec<String>, Vec<usize>) {
+        let mut order: Vec<usize> = Vec::new();
+        for (k, s) in self.texts.iter().enumerate() {
+            if !order.iter().any(|&o| self.texts[o] == *s) {
+                order.push(k);
+            }
+        }
+        if let Some(n) = &self.numbers {
+            order.sort_by(|a, b| n[*a].total_cmp(&n[*b]));
+        }
+        let labels: Vec<String> = order.iter().map(|&o| self.texts[o].clone()).collect();
+        let index = self
+            .texts
+            .iter()
+            .map(|s| labels.iter().position(|l| l == s).unwrap_or(0))
+            .collect();
+        (labels, index)
+    }
+
+    /// The levels as tick labels: without their unit when the axis title carries it.
+    fn tick_labels(&self) -> Vec<String> {
+        let (levels, _) = self.levels();
+        if self.numbers.is_none() {
+            return levels;
+        }
+        levels
+            .iter()
+            .map(|l| l.split_whitespace().next().unwrap_or(l).to_string())
+            .collect()
+    }
+}
+
+/// The key metrics present: the first alternative of each [`KEY_METRICS`] entry that some
+/// mechanism has (with a finite value), without repeats.
+pub(super) fn key_metrics(t: &SweepTable) -> Vec<String> {
+    let mut chosen: Vec<String> = Vec::new();
+    for alternatives in KEY_METRICS {
+        let found = alternatives.iter().find(|m| {
+            t.mechanisms.iter().any(|mech| {
+                t.column(mech, m)
+                    .is_some_and(|c| c.iter().any(|v| v.is_finite()))
+            })
+        });
+        if let Some(m) = found {
+            if !chosen.iter().any(|c| c == m) {
+                chosen.push(m.to_string());
+            }
+        }
+    }
+    chosen
+}
+
+/// How the points lie: along one axis, or on a full grid of two.
+enum Layout {
+    Line(Axis),
+    Grid(Axis, Axis),
+}
+
+fn layout(t: &SweepTable) -> Layout {
+    let n = t.cases.len();
+    if t.swept.len() == 2 {
+        let (a, b) = (Axis::of(t, 0), Axis::of(t, 1));
+        let (la, ia) = a.levels();
+        let (lb, ib) = b.levels();
+        let mut pairs: Vec<(usize, usize)> = ia.iter().copied().zip(ib.iter().copied()).collect();
+        pairs.sort_unstable();
+        pairs.dedup();
+        if la.len() > 1 && lb.len() > 1 && la.len() * lb.len() == n && pairs.len() == n {
+            return Layout::Grid(a, b);
+        }
+    }
+    if t.swept.is_empty() {
+        return Layout::Line(Axis {
+            title: "point".into(),
+            numbers: None,
+            texts: t.cases.clone(),
+        });
+    }
+    // Along the first field when its values are distinct numbers (one field, or a zip);
+    // else the points in file order, named by all their values.
+    let first = Axis::of(t, 0);
+    if first.numbers.is_some() && first.levels().0.len() == n {
+        return Layout::Line(first);
+    }
+    Layout::Line(Axis {
+        title: t.swept.join(" / "),
+        numbers: None,
+        texts: t.params.iter().map(|p| p.join(" / ")).collect(),
+    })
+}
+
+/// The difference of `mechanism` to the reference per point, in %.
+fn differences(t: &SweepTable, metric: &str, mechanism: &str, reference: &str) -> Vec<f64> {
+    match (t.column(mechanism, metric), t.column(reference, metric)) {
+        (Some(v), Some(r)) => v
+            .iter()
+            .zip(r)
+            .map(|(v, r)| pct_diff(*v, *r).unwrap_or(f64::NAN))
+            .collect(),
+        _ => vec![f64::NAN; t.cases.len()],
+    }
+}
+
+/// A sentence per key metric and mechanism: at how many points it beats the reference, the
+/// range of Δ, and along a numeric axis where Δ changes sign.
+fn verdicts(t: &SweepTable, keys: &[String], reference: &str, line: Option<&Axis>) -> Vec<String> {
+    let mut items = Vec::new();
+    for metric in keys {
+        for mech in t.mechanisms.iter().filter(|m| *m != reference) {
+            let d = differences(t, metric, mech, reference);
+            let finite: Vec<f64> = d.iter().copied().filter(|v| v.is_finite()).collect();
+            if finite.is_empty() {
+                continue;
+            }
+            let (lo, hi) = finite
+                .iter()
+                .fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(*v), b.max(*v)));
+            let mut text = match better(metric) {
+                Some(direction) => {
+                    let wins = finite
+                        .iter()
+                        .filter(|v| match direction {
+                            Better::Lower => **v < 0.0,
+                            Better::Higher => **v > 0.0,
+                        })
+                        .count();
+                    format!(
+                        "`{metric}` ({}): `{mech}` is better than `{reference}` at {wins} of {} points; Δ from {} to {}",
+                        direction.phrase(),
+                        finite.len(),
+                        fmt_pct(Some(lo)),
+                        fmt_pct(Some(hi))
+                    )
+                }
+                None => format!(
+                    "`{metric}`: Δ `{mech}` to `{reference}` from {} to {}",
+                    fmt_pct(Some(lo)),
+                    fmt_pct(Some(hi))
+                ),
+            };
+            if let Some(Axis {
+                numbers: Some(x),
+                texts,
+                ..
+            }) = line
+            {
+                let mut order: Vec<usize> = (0..x.len()).filter(|&k| d[k].is_finite()).collect();
+                order.sort_by(|a, b| x[*a].total_cmp(&x[*b]));
+                let unit = parse_quantity(&texts[0]).map(|q| q.1).unwrap_or_default();
+                for w in order.windows(2) {
+                    let (a, b) = (w[0], w[1]);
+                    if (d[a] < 0.0) != (d[b] < 0.0) && d[a] != 0.0 && d[b] != 0.0 {
+                        let at = x[a] + (x[b] - x[a]) * d[a] / (d[a] - d[b]);
+                        text.push_str(&format!(
+                            "; Δ crosses 0 between {} and {} (≈ {} {unit} by linear interpolation)",
+                            texts[a],
+                            texts[b],
+                            fmt_num(at)
+                        ));
+                    }
+                }
+            }
+            text.push('.');
+            items.push(text);
+        }
+    }
+    items
+}
+
+/// The table of one metric: each point's swept values, every mechanism's value and Δ.
+fn metric_table(t: &SweepTable, metric: &str, reference: &str) -> Block {
+    let mut header: Vec<String> = t.swept.iter().map(|s| format!("`{s}`")).collect();
+    let mut align = vec![Align::Left; header.len()];
+    for m in &t.mechanisms {
+        header.push(format!("`{m}`"));
+        align.push(Align::Right);
+    }
+    let others: Vec<&String> = t.mechanisms.iter().filter(|m| *m != reference).collect();
+    for m in &others {
+        header.push(format!("Δ `{m}`"));
+        align.push(Align::Right);
+    }
+    let diffs: Vec<Vec<f64>> = others
+        .iter()
+        .map(|m| differences(t, metric, m, reference))
+        .collect();
+    let rows = (0..t.cases.len())
+        .map(|r| {
+            let mut row = t.params[r].clone();
+            for m in &t.mechanisms {
+                row.push(fmt_num(t.column(m, metric).map_or(f64::NAN, |c| c[r])));
+            }
+            for d in &diffs {
+                row.push(fmt_pct(d[r].is_finite().then_some(d[r])));
+            }
+            row
+        })
+        .collect();
+    Block::Table {
+        header,
+        align,
+        rows,
+    }
+}
+
+/// Line charts over one axis: each key metric of every mechanism, and all differences.
+fn line_charts(
+    t: &SweepTable,
+    keys: &[String],
+    reference: &str,
+    axis: &Axis,
+) -> Vec<(String, String, String)> {
+    let n = t.cases.len();
+    let (x, categories): (Vec<f64>, Option<Vec<String>>) = match &axis.numbers {
+        Some(v) => (v.clone(), None),
+        None => ((0..n).map(|k| k as f64).collect(), Some(axis.texts.clone())),
+    };
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|a, b| x[*a].total_cmp(&x[*b]));
+    let pick = |v: &[f64]| -> Vec<f64> { order.iter().map(|&k| v[k]).collect() };
+    let xs = pick(&x);
+    let mut out = Vec::new();
+    for metric in keys {
+        let series: Vec<Series> = t
+            .mechanisms
+            .iter()
+            .enumerate()
+            .filter_map(|(k, m)| {
+                t.column(m, metric).map(|c| Series {
+                    label: m.clone(),
+                    source: format!("sweep.csv:{m}.{metric}"),
+                    x: xs.clone(),
+                    y: pick(c),
+                    colour: k,
+                    dash: 0,
+                    markers: true,
+                })
+            })
+            .collect();
+        let unit = t.units.get(metric).cloned().unwrap_or_default();
+        let chart = LineChart {
+            title: format!("{metric} over {}", axis.title),
+            x_label: axis.title.clone(),
+            y_label: metric.clone(),
+            y_unit: unit,
+            series,
+            zero_line: true,
+            x_categories: categories.clone(),
+            angle_axis: false,
+        };
+        out.push((
+            format!("{metric}.svg"),
+            svg::line_chart(&chart),
+            format!("`{metric}` of every mechanism over `{}`", axis.title),
+        ));
+    }
+    let others: Vec<&String> = t.mechanisms.iter().filter(|m| *m != reference).collect();
+    let mut series = Vec::new();
+    for (a, m) in others.iter().enumerate() {
+        for (b, metric) in keys.iter().enumerate() {
+            let d = differences(t, metric, m, reference);
+            if !d.iter().any(|v| v.is_finite()) {
+                continue;
+            }
+            series.push(Series {
+                label: if others.len() > 1 {
+                    format!("{m}: {metric}")
+                } else {
+                    metric.clone()
+                },
+                source: format!("sweep.csv:{m}.{metric}-{reference}.{metric}"),
+                x: xs.clone(),
+                y: pick(&d),
+                colour: b,
+                dash: a,
+                markers: true,
+            });
+        }
+    }
+    if !series.is_empty() {
+        let names: Vec<&str> = others.iter().map(|s| s.as_str()).collect();
+        let chart = LineChart {
+            title: format!("Difference of {} to {reference}", names.join(", ")),
+            x_label: axis.title.clone(),
+            y_label: "Δ".into(),
+            y_unit: "%".into(),
+            series,
+            zero_line: true,
+            x_categories: categories,
+            angle_axis: false,
+        };
+        out.push((
+            "difference.svg".into(),
+            svg::line_chart(&chart),
+            format!(
+                "Δ = (mechanism − `{reference}`) / |`{reference}`| in % over `{}`; below 0 the mechanism's value is smaller",
+                axis.title
+            ),
+        ));
+    }
+    out
+}
+
+/// Heat maps over a grid: each key metric of every mechanism, and each difference.
+fn heat_maps(
+    t: &SweepTable,
+    keys: &[String],
+    reference: &str,
+    a: &Axis,
+    b: &Axis,
+) -> Vec<(String, String, String)> {
+    let (_, xi) = a.levels();
+    let (_, yi) = b.levels();
+    let (xl, yl) = (a.tick_labels(), b.tick_labels());
+    let grid = |v: &[f64]| -> Vec<Vec<f64>> {
+        let mut g = vec![vec![f64::NAN; xl.len()]; yl.len()];
+        for r in 0..v.len() {
+            g[yi[r]][xi[r]] = v[r];
+        }
+        g
+    };
+    let mut out = Vec::new();
+    for metric in keys {
+        let unit = svg::pretty_unit(t.units.get(metric).map_or("", String::as_str));
+        for m in &t.mechanisms {
+            let Some(c) = t.column(m, metric) else {
+                continue;
+            };
+            let map = HeatMap {
+                title: format!("{metric}: {m}"),
+                x_label: a.title.clone(),
+                y_label: b.title.clone(),
+                x_labels: xl.clone(),
+                y_labels: yl.clone(),
+                values: grid(c),
+                value_label: if unit.is_empty() {
+                    metric.clone()
+                } else {
+                    unit.clone()
+                },
+                diverging: false,
+                zero_contour: false,
+            };
+            out.push((
+                format!("{metric}_{m}.svg"),
+                heatmap::heat_map(&map),
+                format!("`{metric}` of `{m}` over the grid"),
+            ));
+        }
+        for m in t.mechanisms.iter().filter(|m| *m != reference) {
+            let d = differences(t, metric, m, reference);
+            if !d.iter().any(|v| v.is_finite()) {
+                continue;
+            }
+            let map = HeatMap {
+                title: format!("{metric}: Δ {m} to {reference}"),
+                x_label: a.title.clone(),
+                y_label: b.title.clone(),
+                x_labels: xl.clone(),
+                y_labels: yl.clone(),
+                values: grid(&d),
+                value_label: "Δ, %".into(),
+                diverging: true,
+                zero_contour: true,
+            };
+            let sense = match better(metric) {
+                Some(Better::Lower) => format!("; blue (Δ < 0) is where `{m}` is better"),
+                Some(Better::Higher) => format!("; red (Δ > 0) is where `{m}` is better"),
+                None => String::new(),
+            };
+            out.push((
+                format!("{metric}_difference_{m}.svg"),
+                heatmap::heat_map(&map),
+                format!("Δ `{metric}` of `{m}` to `{reference}` in %, black line at Δ = 0{sense}"),
+            ));
+        }
+    }
+    out
+}
+
+pub(super) fn sweep_report(
+    sweep_dir: &Path,
+    name: &str,
+    reference: Option<&str>,
+) -> anyhow::Result<()> {
+    let (t, reference) = data::read_sweep(sweep_dir, reference)?;
+    let keys = key_metrics(&t);
+    let layout = layout(&t);
+    let mut doc = Doc {
+        title: format!("Sweep report: {name}"),
+        blocks: Vec::new(),
+    };
+    let fields: Vec<String> = (0..t.swept.len())
+        .map(|k| {
+            let axis = Axis::of(&t, k);
+            let (levels, _) = axis.levels();
+            format!(
+                "`{}` ({} values: {} … {})",
+                t.swept[k],
+                levels.len(),
+                levels.first().map_or("", String::as_str),
+                levels.last().map_or("", String::as_str)
+            )
+        })
+        .collect();
+    doc.push(Block::Paragraph(format!(
+        "{} points; swept: {}; {}. Mechanisms: {}; reference `{reference}`.",
+        t.cases.len(),
+        if fields.is_empty() {
+            "nothing".into()
+        } else {
+            fields.join(", ")
+        },
+        match &layout {
+            Layout::Grid(..) => "a full grid of two fields: heat maps",
+            Layout::Line(_) => "charts along the points",
+        },
+        t.mechanisms
+            .iter()
+            .map(|m| format!("`{m}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )));
+    doc.push(Block::Paragraph(format!(
+        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better for \
+         loads, torques, power need and losses; higher is better for efficiency and output. Key \
+         metrics (the first present of each entry of the list mechanical_efficiency; \
+         power_loss_mean; power_need_mean or output_power_mean; total_torque_max or \
+         inertial_torque_max; inertial_torque_max; total_crank_pin_force_max or \
+         inertial_crank_pin_force_max; total_power_mean or inertial_power_mean): {}.",
+        keys.iter()
+            .map(|k| format!("`{k}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )));
+    if t.mechanisms.len() > 1 {
+        doc.push(Block::Heading(2, "Where each mechanism is better".into()));
+        let line = match &layout {
+            Layout::Line(a) => Some(a),
+            Layout::Grid(..) => None,
+        };
+        let items = verdicts(&t, &keys, &reference, line);
+        if items.is_empty() {
+            doc.push(Block::Paragraph("No key metric to compare.".into()));
+        } else {
+            doc.push(Block::List(items));
+        }
+    }
+    doc.push(Block::Heading(2, "Key metrics".into()));
+    for metric in &keys {
+        let unit = svg::pretty_unit(t.units.get(metric).map_or("", String::as_str));
+        doc.push(Block::Heading(
+            3,
+            if unit.is_empty() {
+                format!("`{metric}`")
+            } else {
+                format!("`{metric}`, {unit}")
+            },
+        ));
+        doc.push(metric_table(&t, metric, &reference));
+    }
+    let plots = match &layout {
+        Layout::Line(axis) => line_charts(&t, &keys, &reference, axis),
+        Layout::Grid(a, b) => heat_maps(&t, &keys, &reference, a, b),
+    };
+    doc.push(Block::Heading(2, "Charts".into()));
+    for (file, svg_text, caption) in &plots {
+        doc.push(Block::Figure {
+            file: format!("plots/{file}"),
+            svg: svg_text.clone(),
+            caption: caption.clone(),
+        });
+    }
+    let mut points = Vec::new();
+    for c in &t.cases {
+        let dir = sweep_dir.join(c);
+        if dir.join("report.html").is_file() {
+            points.push((
+                c.clone(),
+                super::doc::href(&format!("{c}/report.html")),
+                String::new(),
+            ));
+        } else if dir.join("summary.json").is_file() {
+            points.push((
+                c.clone(),
+                super::doc::href(&format!("{c}/summary.json")),
+                String::new(),
+            ));
+        }
+    }
+    if !points.is_empty() {
+        doc.push(Block::Heading(2, "Points".into()));
+        doc.push(Block::Links(points));
+    }
+    let files: Vec<(String, String)> = plots.into_iter().map(|(f, s, _)| (f, s)).collect();
+    write_report(sweep_dir, &doc, &files)
+}
