@@ -132,11 +132,14 @@ fn values_of(
             Ok((0..points)
                 .map(|k| {
                     let f = k as f64 / (points - 1) as f64;
+                    // Six significant digits: readable point names and axes (185.714 mm, not
+                    // 185.71428571428572 mm); the ends are exact.
                     let x = if log {
                         from * (to / from).powf(f)
                     } else {
                         from + (to - from) * f
                     };
+                    let x = format!("{x:.5e}").parse::<f64>().unwrap_or(x);
                     if unit.is_empty() {
                         toml::Value::Float(x)
                     } else {

@@ -105,18 +105,23 @@ mode = "zip"
     assert_eq!(t[3][2], "0.4 kg");
 }
 
-/// 1000 points over two parameters from one file (issue 12).
+/// 1000 points over two parameters from one file (issue 12), with the sweep's report: its heat
+/// maps hold one cell per point.
 #[test]
 fn a_thousand_point_sweep_runs_from_one_file() {
     let dir = tempfile::tempdir().unwrap();
-    let report = run(
-        dir.path(),
-        r#"
+    let file = dir.path().join("sweep.toml");
+    let sweep = r#"
 [sweep]
 "motion.initial_speed" = { from = 10, to = 700, points = 40 }
 "geometry.rod_length" = { from = "100 mm", to = "300 mm", points = 25 }
-"#,
-    );
+"#;
+    std::fs::write(&file, format!("{BASE}{sweep}")).unwrap();
+    let options = RunOptions {
+        reports: true,
+        ..RunOptions::default()
+    };
+    let report = run_paths(&[file], &dir.path().join("out"), options);
     assert!(
         report.failures.is_empty(),
         "{:#?}",
@@ -124,6 +129,16 @@ fn a_thousand_point_sweep_runs_from_one_file() {
     );
     assert_eq!(report.written.len(), 1000);
     assert_eq!(rows(dir.path()).len(), 1001);
+    let folder = dir.path().join("out/pump-sweep");
+    let map = std::fs::read_to_string(
+        folder.join("plots/inertial_torque_max_difference_cardan_gear.svg"),
+    )
+    .unwrap();
+    assert_eq!(map.matches("class=\"cell\"").count(), 1000);
+    assert!(std::fs::read_to_string(folder.join("report.md"))
+        .unwrap()
+        .contains("inertial_torque_max_difference_cardan_gear.svg"));
+    assert!(dir.path().join("out/index.html").is_file());
 }
 
 #[test]
