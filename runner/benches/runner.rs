@@ -1,5 +1,6 @@
 //! The runner in-process: one shipped case with gas, summaries only; and a sweep of 10 000
-//! two-mechanism pump cases of 720 steps with gas, summaries only, on every core (the issue-8
+//! two-mechanism pump cases of 720 steps with gas, summaries only, on every core, without and
+//! with the thesis's loss models (the issue-8
 //! target through `cardan run` is 20 s; this is the computation without the files).
 
 use cardan_runner::{case, run_case};
@@ -36,13 +37,24 @@ fn runner(c: &mut Criterion) {
         .collect();
     let mut group = c.benchmark_group("sweep");
     group.sample_size(10);
-    group.bench_function("10000_pump_cases_720_steps", |b| {
-        b.iter(|| {
-            sweep
-                .par_iter()
-                .map(|c| run_case(c, None).unwrap().len())
-                .sum::<usize>()
+    let all = |cases: &[case::Case]| {
+        cases
+            .par_iter()
+            .map(|c| run_case(c, None).unwrap().len())
+            .sum::<usize>()
+    };
+    group.bench_function("10000_pump_cases_720_steps", |b| b.iter(|| all(&sweep)));
+    // The same with the thesis's loss models (rings, skirt, bearings, gear mesh).
+    let with_friction: Vec<case::Case> = sweep
+        .iter()
+        .map(|c| {
+            let mut c = c.clone();
+            c.friction = Some(cardan_dynamics::Friction::karhula());
+            c
         })
+        .collect();
+    group.bench_function("10000_pump_cases_720_steps_friction", |b| {
+        b.iter(|| all(&with_friction))
     });
     group.finish();
 }
