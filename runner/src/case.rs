@@ -5,7 +5,8 @@
 
 use crate::gas::GasCase;
 use crate::units::{is_folder_name, to_si, Dimension};
-use cardan_dynamics::{Friction, LossBudget};
+use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget};
+use cardan_gears::mesh_loss::Reading;
 use cardan_mechanism::{
     CrankMotion, MachineGeometry, MassInputs, Material, Mechanism, OptionKind, OptionValue, Options,
 };
@@ -94,6 +95,8 @@ pub struct Case {
     pub gas: Option<GasCase>,
     /// The loss models; without them the run has no losses.
     pub friction: Option<Friction>,
+    /// The gear pair and rating data of every gear mesh; without it no mesh is rated.
+    pub gear: Option<GearSpec>,
     pub output: OutputOptions,
     /// The sweep this case is a point of (its results go to `out/<sweep>/<case>/`), and the
     /// value of each swept field (dotted path, value as written).
@@ -387,17 +390,37 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
             ));
         }
     }
-    if raw.gear.is_some() && raw.friction.is_none() {
-        return Err(invalid(
-            "gear",
-            &"a [gear] table without [friction]",
-            "the gear pair is read by the gear mesh loss: add a [friction] table",
-        ));
-    }
+    let gear = match &raw.gear {
+        None => None,
+        Some(table) => {
+            let spec = crate::gear::parse(table, &invalid)?;
+            let mut meshes = 0;
+            for m in &mechanisms {
+                let ratings = GearRatings::new(&spec, m.as_ref(), Reading::Corrected, 5e-6, 900.0)
+                    .map_err(|e| invalid(&e.field, &format!("(for the {})", m.name()), &e.rule))?;
+                meshes += ratings.names().len();
+            }
+            if meshes == 0 {
+                return Err(invalid(
+                    "gear",
+                    &"a [gear] table",
+                    "no mechanism of the case has a gear mesh to rate",
+                ));
+            }
+            Some(spec)
+        }
+    };
     let friction = match &raw.friction {
         None => None,
         Some(table) => {
-            let f = crate::friction::parse(table, raw.gear.as_ref(), geometry.bore, &invalid)?;
+            let f = crate::friction::parse(
+                table,
+                gear.as_ref(),
+                geometry.bore,
+                machine,
+                gas.as_ref(),
+                &invalid,
+            )?;
             for (joint, _) in &f.joint_bearings {
                 let revolute = |m: &Arc<dyn Mechanism>| {
                     m.topology().joints.iter().any(|j| {
@@ -432,6 +455,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         mechanisms,
         gas,
         friction,
+        gear,
         output,
         sweep: None,
     })

@@ -1,17 +1,25 @@
-//! The `[friction]` and `[gear]` tables of a case: which loss model at which piston and joint,
+//! The `[friction]` table of a case: which loss model at which piston and joint,
 //! converted to SI and validated once, here. Without `[friction]` a case has no losses; an
-//! empty `[friction]` table is Karhula's (2008) App. 9.1 set ([`Friction::karhula`]).
+//! empty `[friction]` table is Karhula's (2008) App. 9.1 set ([`Friction::karhula`]). An
+//! engine's `[friction]` also reads the engine components (valve train, accessories, pumping;
+//! all off by default) and the settings of the fmep cross-check
+//! ([`cardan_dynamics::EngineLosses`]).
 
-use crate::case::{CaseError, Invalid};
+use crate::case::{CaseError, Invalid, Machine};
+use crate::gas::{Clearance, GasCase};
 use crate::units::{to_si, Dimension};
-use cardan_dynamics::{Bearing, Friction, MeshLossModel, Rings, Skirt};
+use cardan_dynamics::engine_losses::AMBIENT_PRESSURE;
+use cardan_dynamics::{
+    Bearing, EngineLosses, FmepModel, FollowerContact, Friction, GearSpec, MeshLossModel, Rings,
+    Skirt, ValveTrain,
+};
 use cardan_friction::{
     PalmgrenCoefficients, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
 };
 use cardan_gears::mesh_loss::Reading;
 
 /// The fields of `[friction]`, with their dimensions.
-const FIELDS: [(&str, Dimension); 17] = [
+const FIELDS: [(&str, Dimension); 24] = [
     ("rings", Dimension::Number),
     ("ring_friction_coefficient", Dimension::Number),
     ("ring_crown_height", Dimension::Length),
@@ -29,14 +37,28 @@ const FIELDS: [(&str, Dimension); 17] = [
     ("oil_viscosity", Dimension::KinematicViscosity),
     ("oil_density", Dimension::Density),
     ("joints", Dimension::Number),
+    ("valve_train", Dimension::Number),
+    ("cam_friction_coefficient", Dimension::Number),
+    ("valve_spring_speed", Dimension::AngularSpeed),
+    ("accessories", Dimension::Number),
+    ("pumping", Dimension::Number),
+    ("intake_pressure", Dimension::Pressure),
+    ("fmep_model", Dimension::Number),
 ];
 
-/// The fields of `[gear]`.
-const GEAR_FIELDS: [(&str, Dimension); 3] = [
-    ("teeth", Dimension::Number),
-    ("face_width", Dimension::Length),
-    ("ring_addendum", Dimension::Number),
+/// The fields only an engine reads.
+const ENGINE_FIELDS: [&str; 7] = [
+    "valve_train",
+    "cam_friction_coefficient",
+    "valve_spring_speed",
+    "accessories",
+    "pumping",
+    "intake_pressure",
+    "fmep_model",
 ];
+
+/// Compression ratio of the PNH gas-loading term when the case has no gas model that gives one.
+const DEFAULT_COMPRESSION_RATIO: f64 = 10.0;
 
 const BEARING_WORDS: &[&str] = &[
     "karhula",
@@ -47,12 +69,15 @@ const BEARING_WORDS: &[&str] = &[
     "none",
 ];
 
-/// Reads `[friction]` (and `[gear]`, which only the mesh loss reads today) for a cylinder of
-/// `bore` (m).
+/// Reads `[friction]`, its mesh loss on the pair of `[gear]` (`gear`), for a cylinder of
+/// `bore` (m) of a `machine`; an engine's compression ratio (for the fmep cross-check) comes
+/// from its `gas` model.
 pub fn parse(
     table: &toml::Table,
-    gear: Option<&toml::Table>,
+    gear: Option<&GearSpec>,
     bore: f64,
+    machine: Machine,
+    gas: Option<&GasCase>,
     invalid: &Invalid,
 ) -> Result<Friction, CaseError> {
     for (key, value) in table {
@@ -174,77 +199,124 @@ pub fn parse(
             }
         }
     }
+    f.engine = match machine {
+        Machine::Engine => Some(engine(table, gas, &number, &word, invalid)?),
+        Machine::Pump => {
+            if let Some(key) = ENGINE_FIELDS.iter().find(|k| table.contains_key(**k)) {
+                return Err(invalid(
+                    &format!("friction.{key}"),
+                    &table[*key],
+                    "only an engine has a valve train, accessories and pumping losses (and an fmep): this case has machine = \"pump\"",
+                ));
+            }
+            None
+        }
+    };
     f.gear_mesh = match word("gear_mesh", &["karhula", "corrected", "none"], "karhula")?.as_str() {
         "none" => None,
-        w => Some(gear_mesh(
-            gear,
-            if w == "karhula" {
+        w => Some(MeshLossModel {
+            reading: if w == "karhula" {
                 Reading::Karhula
             } else {
                 Reading::Corrected
             },
-            invalid,
-        )?),
+            pair: gear.copied().unwrap_or_default(),
+        }),
     };
     Ok(f)
 }
 
-/// The gear pair the mesh loss is computed on, from `[gear]`.
-fn gear_mesh(
-    gear: Option<&toml::Table>,
-    reading: Reading,
+/// Reads a number field of `[friction]`: (name, default, must be positive).
+type NumberField<'a> = dyn Fn(&str, f64, bool) -> Result<f64, CaseError> + 'a;
+
+/// Reads a word field of `[friction]`: (name, the words it may be, default).
+type WordField<'a> = dyn Fn(&str, &[&str], &'static str) -> Result<String, CaseError> + 'a;
+
+/// The engine components of `[friction]` (every one off by default) and the settings of the
+/// fmep cross-check.
+fn engine(
+    table: &toml::Table,
+    gas: Option<&GasCase>,
+    number: &NumberField,
+    word: &WordField,
     invalid: &Invalid,
-) -> Result<MeshLossModel, CaseError> {
-    let mut mesh = MeshLossModel {
-        reading,
-        ..Friction::karhula()
-            .gear_mesh
-            .expect("Karhula's set has a mesh loss")
+) -> Result<EngineLosses, CaseError> {
+    let flag = |name: &str| -> Result<bool, CaseError> {
+        match table.get(name) {
+            None => Ok(false),
+            Some(v) => v
+                .as_bool()
+                .ok_or_else(|| invalid(&format!("friction.{name}"), v, "must be true or false")),
+        }
     };
-    let Some(gear) = gear else { return Ok(mesh) };
-    for (key, value) in gear {
-        let Some((_, dim)) = GEAR_FIELDS.iter().find(|(f, _)| f == key) else {
+    let mut e = EngineLosses::off();
+    if let Some(Clearance::CompressionRatio(r)) = gas.map(|g| g.clearance) {
+        e.compression_ratio = r;
+    } else {
+        e.compression_ratio = DEFAULT_COMPRESSION_RATIO;
+    }
+    let train = word("valve_train", &["none", "flat", "roller"], "none")?;
+    // A field that only one valve train reads is an error with any other.
+    let only = |name: &str, rule: &str| -> Result<(), CaseError> {
+        match table.get(name) {
+            Some(v) => Err(invalid(&format!("friction.{name}"), v, rule)),
+            None => Ok(()),
+        }
+    };
+    e.valve_train = match train.as_str() {
+        "none" => {
+            for name in ["cam_friction_coefficient", "valve_spring_speed"] {
+                only(
+                    name,
+                    "is read only with valve_train = \"flat\" or \"roller\" (the valve train is off)",
+                )?;
+            }
+            None
+        }
+        w => {
+            let follower = if w == "flat" {
+                FollowerContact::Flat {
+                    friction_coefficient: number("cam_friction_coefficient", 0.08, false)?,
+                }
+            } else {
+                only(
+                    "cam_friction_coefficient",
+                    "is read only with valve_train = \"flat\" (a roller follower rolls: its loss is rolling resistance and the roller's pin bearing)",
+                )?;
+                FollowerContact::ROLLER
+            };
+            let mut v = ValveTrain::new(follower);
+            v.spring_speed = number("valve_spring_speed", v.spring_speed, true)?;
+            Some(v)
+        }
+    };
+    e.accessories = flag("accessories")?;
+    e.pumping = flag("pumping")?;
+    e.intake_pressure = number("intake_pressure", AMBIENT_PRESSURE, true)?;
+    if let Some(v) = table.get("intake_pressure") {
+        let pa = e.ambient_pressure;
+        if !(e.intake_pressure > 0.1 * pa && e.intake_pressure <= pa) {
             return Err(invalid(
-                &format!("gear.{key}"),
-                value,
+                "friction.intake_pressure",
+                v,
                 &format!(
-                    "unknown field: [gear] has {}",
-                    GEAR_FIELDS.map(|(f, _)| f).join(", ")
+                    "must be above 0.1 × ambient ({} Pa, where Bishop's standard imep is zero) and at most ambient ({pa} Pa: wide-open throttle; Bishop's engines are not boosted)",
+                    0.1 * pa
                 ),
             ));
-        };
-        let path = format!("gear.{key}");
-        let x = to_si(value, *dim).map_err(|rule| invalid(&path, value, &rule))?;
-        match key.as_str() {
-            "teeth" => {
-                if x.fract() != 0.0 || !(5.0..=1000.0).contains(&x) {
-                    return Err(invalid(
-                        &path,
-                        value,
-                        "must be a whole number from 5 to 1000",
-                    ));
-                }
-                mesh.teeth = x as u32;
-            }
-            "face_width" => {
-                if x <= 0.0 {
-                    return Err(invalid(&path, value, "must be positive"));
-                }
-                mesh.face_width = Some(x);
-            }
-            _ => {
-                if !(0.0..=1.5).contains(&x) {
-                    return Err(invalid(
-                        &path,
-                        value,
-                        "must be from 0 to 1.5 modules (1 is a full addendum)",
-                    ));
-                }
-                mesh.ring_addendum = x;
-            }
         }
     }
-    Ok(mesh)
+    e.fmep_model = match word(
+        "fmep_model",
+        &["sandoval_heywood", "pnh"],
+        "sandoval_heywood",
+    )?
+    .as_str()
+    {
+        "pnh" => FmepModel::Pnh1989,
+        _ => FmepModel::SandovalHeywood2003,
+    };
+    Ok(e)
 }
 
 fn one_of(words: &[&str]) -> String {

@@ -6,6 +6,7 @@
 pub mod case;
 pub mod friction;
 pub mod gas;
+pub mod gear;
 pub mod gear_file;
 pub mod output;
 pub mod report;

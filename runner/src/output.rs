@@ -5,7 +5,7 @@
 use crate::case::{Case, OutputOptions};
 use crate::run::MechanismResult;
 use anyhow::Context;
-use cardan_dynamics::{radial, tangential, Sink, Step};
+use cardan_dynamics::{radial, tangential, GearRatings, Sink, Step};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use serde_json::{json, Map, Value};
 use std::fs::File;
@@ -132,6 +132,9 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("{family}_{joint}_radial_n", "gear meshes: the force towards the first gear's centre"),
     ("{family}_torque_nm", "drive torque on the crankshaft, positive in the direction of rotation"),
     ("{family}_torque_{body}_nm", "the body's share of it by the power balance (Karhula's T_1i10, T_2i10, T_3i10); empty while the crank stands still"),
+    ("{joint}_dynamic_tooth_load_n", "with [gear]: Buckingham's dynamic tooth load of the mesh (Karhula A8.1.14), per gear set"),
+    ("{joint}_contact_stress_pa", "with [gear]: AGMA contact stress of the mesh"),
+    ("{joint}_bending_stress_pa", "with [gear] and known J: AGMA bending stress, the larger member's"),
     ("friction_torque_nm", "with [friction]: the drive torque that covers the losses, Σ P / ω"),
     ("power_loss_{component}_w", "with [friction]: one loss component's power (rings, skirt, a slide, a revolute joint's bearings by joint name, a gear mesh by joint name)"),
 ];
@@ -142,6 +145,7 @@ fn header(
     families: &[&str],
     gas: bool,
     losses: &[String],
+    gears: Option<&GearRatings>,
 ) -> Vec<String> {
     let t = mechanism.topology();
     let mut h: Vec<String> = [
@@ -210,11 +214,29 @@ fn header(
             h.push(format!("{f}_torque_{}_nm", b.name));
         }
     }
+    if let Some(g) = gears {
+        for (name, bending) in g.names().into_iter().zip(g.bending()) {
+            h.push(format!("{name}_dynamic_tooth_load_n"));
+            h.push(format!("{name}_contact_stress_pa"));
+            if bending {
+                h.push(format!("{name}_bending_stress_pa"));
+            }
+        }
+    }
     if !losses.is_empty() {
         h.push("friction_torque_nm".into());
         h.extend(losses.iter().map(|c| format!("power_loss_{c}_w")));
     }
     h
+}
+
+/// What a run's steps hold besides the mechanism's own state: the load families (in the run's
+/// order), a gas model, the loss components, the rated gear meshes.
+pub struct RunLayout<'b> {
+    pub families: &'b [&'b str],
+    pub gas: bool,
+    pub losses: &'b [String],
+    pub gears: Option<&'b GearRatings>,
 }
 
 /// A sink writing one CSV row per step (every `decimation`-th step and the last).
@@ -231,26 +253,24 @@ pub struct CsvSink<'a> {
 }
 
 impl<'a> CsvSink<'a> {
-    /// A CSV at `path` for `mechanism` run with the load families `families` and the loss
-    /// components `losses` over `last_step + 1` steps.
+    /// A CSV at `path` for `mechanism` run with `run`'s families and stages over
+    /// `last_step + 1` steps.
     pub fn create(
         path: &Path,
         mechanism: &'a dyn Mechanism,
-        families: &[&str],
-        gas: bool,
-        losses: &[String],
+        run: &RunLayout,
         options: OutputOptions,
         last_step: usize,
     ) -> anyhow::Result<Self> {
         let file = File::create(path).with_context(|| format!("create {}", path.display()))?;
         let mut writer =
             csv::WriterBuilder::new().from_writer(BufWriter::with_capacity(1 << 16, file));
-        let mut names: Vec<&str> = families.to_vec();
-        let with_total = families.len() > 1;
+        let mut names: Vec<&str> = run.families.to_vec();
+        let with_total = run.families.len() > 1;
         if with_total {
             names.push("total");
         }
-        writer.write_record(header(mechanism, &names, gas, losses))?;
+        writer.write_record(header(mechanism, &names, run.gas, run.losses, run.gears))?;
         Ok(Self {
             mechanism,
             writer,
@@ -327,6 +347,12 @@ impl<'a> CsvSink<'a> {
             }
             r.push(loads.crank_torque);
             r.extend(shares);
+        }
+        for g in s.gears {
+            r.extend([g.dynamic_load, g.contact_stress]);
+            if !g.bending_stress.is_nan() {
+                r.push(g.bending_stress);
+            }
         }
         if !s.losses.is_empty() {
             r.push(s.friction_torque);

@@ -2,12 +2,14 @@
 //! one failure (an error or a panic) never stops the rest.
 
 use crate::case::{self, Case, CaseError};
-use crate::output::{self, CsvSink};
+use crate::output::{self, CsvSink, RunLayout};
 use anyhow::Context;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Summary, SummarySink,
+    run, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Sink, Solver, Stages, Summary,
+    SummarySink,
 };
+use cardan_gears::mesh_loss::Reading;
 use cardan_mechanism::{Grid, Mechanism};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -50,18 +52,43 @@ fn run_mechanism(
         None => None,
     };
     let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
+    let gears = match &case.gear {
+        Some(spec) => {
+            // The rating's mesh loss in the friction table's reading and oil, if it has them.
+            let (reading, oil) = match &case.friction {
+                Some(f) => (f.gear_mesh.map_or(Reading::Corrected, |g| g.reading), f.oil),
+                None => (Reading::Corrected, cardan_dynamics::Friction::karhula().oil),
+            };
+            let ratings = GearRatings::new(
+                spec,
+                mechanism,
+                reading,
+                oil.kinematic_viscosity,
+                oil.density,
+            )
+            .map_err(|e| format!("{}: {}", e.field, e.rule))?;
+            (!ratings.names().is_empty()).then_some(ratings)
+        }
+        None => None,
+    };
     let mut summary = SummarySink::new(mechanism, &names, case.steps + 1);
     if let Some(l) = &losses {
         summary = summary.with_losses(l.names());
+    }
+    if let Some(g) = &gears {
+        summary = summary.with_gears(g);
     }
     let mut csv = match csv_dir {
         Some(dir) => Some(
             CsvSink::create(
                 &dir.join(format!("{}.csv", mechanism.name())),
                 mechanism,
-                &names,
-                case.gas.is_some(),
-                &loss_names,
+                &RunLayout {
+                    families: &names,
+                    gas: case.gas.is_some(),
+                    losses: &loss_names,
+                    gears: gears.as_ref(),
+                },
                 case.output,
                 case.steps,
             )
@@ -80,15 +107,11 @@ fn run_mechanism(
         if let Some(c) = csv.as_mut() {
             sinks.push(c);
         }
-        run(
-            mechanism,
-            &mut grid,
-            &families,
-            gas,
-            losses.as_mut(),
-            &mut sinks,
-        )
-        .map_err(|e| e.to_string())
+        let stages = Stages {
+            losses: losses.as_mut(),
+            gears: gears.as_ref(),
+        };
+        run(mechanism, &mut grid, &families, gas, stages, &mut sinks).map_err(|e| e.to_string())
     };
     let gas_metrics = match &case.gas {
         None => {
@@ -120,6 +143,19 @@ fn run_mechanism(
             ));
         }
         summary.push(m.name, m.value);
+    }
+    if let Some(f) = &case.friction {
+        // An engine's fmep and the whole-engine correlation beside it.
+        for (name, value) in cardan_dynamics::engine_metrics(
+            f,
+            mechanism,
+            case.geometry.bore,
+            &case.motion,
+            case.end_angle,
+            &summary,
+        ) {
+            summary.push(name, value);
+        }
     }
     if let Some(c) = csv {
         c.finish()

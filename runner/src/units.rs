@@ -67,6 +67,7 @@ impl Dimension {
                 ("Pa", 1.0),
                 ("kPa", 1e3),
                 ("MPa", 1e6),
+                ("GPa", 1e9),
                 ("bar", 1e5),
                 ("atm", 101_325.0),
             ],

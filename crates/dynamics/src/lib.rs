@@ -16,7 +16,9 @@
 //! the bodies plus the work done on the gas.
 
 pub mod energy;
+pub mod engine_losses;
 pub mod family;
+pub mod gear_rating;
 pub mod losses;
 pub mod metrics;
 pub mod planar;
@@ -24,8 +26,13 @@ pub mod stepper;
 pub mod summary;
 
 pub use energy::{kinetic_energy, torque_shares};
+pub use engine_losses::{
+    engine_metrics, fmep_breakdown, pnh_engine, CircularArcCam, EngineLosses, FmepModel,
+    FollowerContact, ValveTrain, ValveTrainGeometry, ValveTrainLoss,
+};
 pub use family::{Gas, Inertial, LoadFamily, Solver};
+pub use gear_rating::{GearRatings, GearSpec, MeshRating, ToothLoad};
 pub use losses::{Bearing, Friction, LossBudget, LossError, MeshLossModel, Oil, Rings, Skirt};
 pub use metrics::{Aggregation, MetricDef, METRICS};
-pub use stepper::{run, run_summary, GasAt, RunError, Sink, Step, StepRecord, Steps};
+pub use stepper::{run, run_summary, GasAt, RunError, Sink, Stages, Step, StepRecord, Steps};
 pub use summary::{radial, tangential, Metric, Summary, SummarySink};

@@ -13,17 +13,22 @@
 //! - per revolute joint, by its name: its rolling bearings (A9.1.10-35; Palmgren; SKF) or a
 //!   plain journal bearing (Petroff; short bearing with the eccentricity from the load);
 //! - per gear mesh, by its name: Anderson & Loewenthal's sliding, rolling and windage loss
-//!   (A9.1.36-55) in the thesis's or the corrected reading.
+//!   (A9.1.36-55) in the thesis's or the corrected reading;
+//! - of an engine ([`Friction::engine`]) with a cylinder, each if switched on: `valve_train`,
+//!   `accessories`, `pumping` ([`crate::engine_losses`]), at the step's crank speed.
 
+use crate::gear_rating::{mesh_pair, GearSpec};
 use cardan_friction::{
     coulomb_sliding, petroff, rolling_bearing_loss, short_bearing, viscous_skirt, AsperityContact,
     JournalBearing, KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing,
     RollingReading, ViscousSkirt, KARHULA_LOAD_CONSTANT,
 };
-use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
 use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
 
+use crate::engine_losses::{
+    accessories_power, displacement, pumping_power, EngineLosses, ValveTrainLoss,
+};
 use crate::summary::tangential;
 
 /// Atmospheric pressure, Pa: the pressure behind the top ring is the cylinder's above it.
@@ -101,14 +106,9 @@ pub enum Bearing {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MeshLossModel {
     pub reading: Reading,
-    /// Teeth of the gear on the mesh's body (the cardan wheel; Karhula: 20).
-    pub teeth: u32,
-    /// Face width, m; `None`: a third of the pinion's pitch diameter (A9.1.46).
-    pub face_width: Option<f64>,
-    /// Addendum of the internal (ring) gear in modules: a full 1.0 interferes on 2:1 pairs
-    /// below 25 teeth (validation note §1); 0.8 gives the contact ratio ≈ 1.8 that Karhula's
-    /// text assumes.
-    pub ring_addendum: f64,
+    /// The pair (the case's `[gear]`; Karhula's 20-tooth wheel with a 0.8-module ring addendum
+    /// and b = d1/3 by default, A9.1.36-46).
+    pub pair: GearSpec,
 }
 
 /// Every loss model of a case, SI.
@@ -127,12 +127,16 @@ pub struct Friction {
     pub joint_bearings: Vec<(String, Option<Bearing>)>,
     /// `None`: no gear mesh loss.
     pub gear_mesh: Option<MeshLossModel>,
+    /// The engine components (valve train, accessories, pumping) and the fmep cross-check of a
+    /// four-stroke engine; `None` for a machine that is not an engine. The runner sets it for
+    /// `machine = "engine"`, with every component off unless the case switches it on.
+    pub engine: Option<EngineLosses>,
 }
 
 impl Friction {
     /// Karhula's (2008) App. 9.1 models and values: ring pack with μ = 0.07, Coulomb skirt with
     /// μ = 0.09, rolling bearings in his reading with f0 = 2, mesh loss as printed with z1 = 20,
-    /// oil of 5 mm²/s and 900 kg/m³.
+    /// oil of 5 mm²/s and 900 kg/m³; no engine components (the thesis has none).
     pub fn karhula() -> Self {
         Self {
             oil: Oil {
@@ -153,10 +157,9 @@ impl Friction {
             joint_bearings: Vec::new(),
             gear_mesh: Some(MeshLossModel {
                 reading: Reading::Karhula,
-                teeth: 20,
-                face_width: None,
-                ring_addendum: 0.8,
+                pair: GearSpec::default(),
             }),
+            engine: None,
         }
     }
 }
@@ -206,6 +209,15 @@ enum Part {
         lubricant: Lubricant,
         reading: Reading,
         pitch_radius: f64,
+    },
+    /// The cylinder's valve train.
+    ValveTrain(ValveTrainLoss),
+    /// Bishop's accessories on the swept volume, m³.
+    Accessories { displacement: f64 },
+    /// Bishop's throttling loss on the swept volume, m³.
+    Pumping {
+        displacement: f64,
+        engine: EngineLosses,
     },
 }
 
@@ -352,6 +364,31 @@ impl LossBudget {
                 }
             }
         }
+        if let (Some(engine), true) = (&friction.engine, mechanism.has_cylinder()) {
+            engine
+                .check()
+                .map_err(|(field, rule)| failed(field, &rule))?;
+            let volume = displacement(bore, mechanism.stroke());
+            if let Some(train) = &engine.valve_train {
+                let part = ValveTrainLoss::new(train, bore, mechanism.top_dead_centre())
+                    .map_err(|e| failed("friction.valve_train", &e))?;
+                names.push("valve_train".to_string());
+                parts.push(Part::ValveTrain(part));
+            }
+            if engine.accessories {
+                names.push("accessories".to_string());
+                parts.push(Part::Accessories {
+                    displacement: volume,
+                });
+            }
+            if engine.pumping {
+                names.push("pumping".to_string());
+                parts.push(Part::Pumping {
+                    displacement: volume,
+                    engine: *engine,
+                });
+            }
+        }
         Ok(Self { names, parts })
     }
 
@@ -478,6 +515,18 @@ impl LossBudget {
                         .map_err(|e| format!("gear mesh loss: {e}"))?
                         .total_power
                 }
+                Part::ValveTrain(train) => train.power(
+                    state.crank.angle,
+                    state.crank.speed,
+                    state.crank.acceleration,
+                ),
+                Part::Accessories { displacement } => {
+                    accessories_power(*displacement, state.crank.speed)
+                }
+                Part::Pumping {
+                    displacement,
+                    engine,
+                } => pumping_power(engine, *displacement, state.crank.speed),
             };
         }
         Ok(())
@@ -522,10 +571,7 @@ fn bearing_part(joint: usize, b: Bearings, model: Bearing, oil: &Oil) -> Result<
     })
 }
 
-/// The mesh geometry of a pair whose pinion (on the mesh's body) has pitch radius
-/// `pitch_radius` and `mesh.teeth` teeth: module m = 2·r/z1 (Karhula A9.1.37 for the cardan
-/// wheel, r = Z_AA0c), z2 = ratio·z1 (negative for an internal gear, ISO 21771), standard
-/// addenda except the ring's `mesh.ring_addendum`; the pair must pass the interference checks.
+/// The mesh geometry of the pair [`mesh_pair`] builds for a mesh joint.
 fn mesh_geometry(
     mesh: &MeshLossModel,
     ratio: f64,
@@ -533,43 +579,9 @@ fn mesh_geometry(
     internal: bool,
     pressure_angle: f64,
 ) -> Result<MeshGeometry, LossError> {
-    let z1 = mesh.teeth as i32;
-    let z2 = (ratio * f64::from(z1)).round() as i32;
-    let failed = |field: &str, rule: String| LossError {
-        field: field.into(),
-        rule,
-    };
-    if (f64::from(z2) - ratio * f64::from(z1)).abs() > 1e-9 {
-        return Err(failed(
-            "gear.teeth",
-            format!(
-                "{z1} teeth on the pinion give {} on the gear of ratio {ratio}, not a whole number",
-                ratio * f64::from(z1)
-            ),
-        ));
-    }
-    let module = 2.0 * pitch_radius / f64::from(z1);
-    let mut spec = PairSpec::standard(
-        module,
-        z1,
-        if internal { -z2 } else { z2 },
-        pressure_angle,
-        0.0,
-        0.0,
-    );
-    if internal {
-        spec.gear = spec.gear.with_addendum(mesh.ring_addendum);
-    }
-    let pair = GearPair::new(spec).map_err(|e| failed("gear", e.to_string()))?;
-    pair.verify().map_err(|e| {
-        failed(
-            "gear.ring_addendum",
-            format!(
-                "{} (a ring addendum of {} modules on {z1}/{z2} teeth)",
-                e, mesh.ring_addendum
-            ),
-        )
-    })?;
-    let face_width = mesh.face_width.unwrap_or(pair.pinion.reference / 3.0);
-    MeshGeometry::from_pair(&pair, face_width).map_err(|e| failed("gear.face_width", e.to_string()))
+    let (pair, face_width) = mesh_pair(&mesh.pair, ratio, pitch_radius, internal, pressure_angle)?;
+    MeshGeometry::from_pair(&pair, face_width).map_err(|e| LossError {
+        field: "gear.face_width".into(),
+        rule: e.to_string(),
+    })
 }

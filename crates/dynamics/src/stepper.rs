@@ -4,6 +4,7 @@
 
 use crate::energy::torque_shares;
 use crate::family::LoadFamily;
+use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
 use cardan_mechanism::{Loads, Mechanism, MotionError, MotionSource, State};
 
@@ -26,6 +27,8 @@ pub struct Step<'a> {
     /// The drive torque that covers the losses, Σ losses / ω, N·m (0 at rest, where the
     /// losses are 0 too).
     pub friction_torque: f64,
+    /// The rating of each gear mesh of the run's [`GearRatings`] (empty without one).
+    pub gears: &'a [MeshRating],
     /// Each family's torque shares by body ([`torque_shares`]), N·m; computed, with the
     /// state's extras, only when a sink [wants](Sink::wants_details) them (zeros otherwise).
     pub shares: &'a [Vec<f64>],
@@ -62,17 +65,28 @@ pub enum RunError {
 /// The gas at a crank angle: (absolute pressure in Pa, force on each piston in N).
 pub type GasAt<'a> = &'a dyn Fn(f64) -> (f64, f64);
 
+/// What each step computes from its total loads besides the loads themselves.
+#[derive(Default)]
+pub struct Stages<'a> {
+    /// The power loss of each component and the friction torque.
+    pub losses: Option<&'a mut LossBudget>,
+    /// The rating of each gear mesh.
+    pub gears: Option<&'a GearRatings>,
+}
+
 /// Runs `mechanism` through every crank state of `motion`, with the loads of `families`, the
-/// pistons pushed by `gas` if given, the losses of `losses` if given (from the total loads),
-/// every step to every sink.
+/// pistons pushed by `gas` if given, the `stages` computed from the total loads, every step to
+/// every sink.
 pub fn run(
     mechanism: &dyn Mechanism,
     motion: &mut dyn MotionSource,
     families: &[&dyn LoadFamily],
     gas: Option<GasAt>,
-    mut losses: Option<&mut LossBudget>,
+    stages: Stages,
     sinks: &mut [&mut dyn Sink],
 ) -> Result<(), RunError> {
+    let Stages { mut losses, gears } = stages;
+    let mut ratings = vec![MeshRating::default(); gears.map_or(0, |g| g.names().len())];
     let topology = mechanism.topology();
     let mut state = State::for_topology(topology);
     let mut loads = vec![Loads::for_topology(topology); families.len()];
@@ -148,6 +162,13 @@ pub fn run(
                 friction_torque = sum / state.crank.speed.abs();
             }
         }
+        if let Some(g) = gears {
+            g.evaluate(&state, total, &mut ratings)
+                .map_err(|message| RunError::Sink {
+                    step: index,
+                    message,
+                })?;
+        }
         let step = Step {
             index,
             state: &state,
@@ -157,6 +178,7 @@ pub fn run(
             total,
             losses: &power_losses,
             friction_torque,
+            gears: &ratings,
             shares: &shares,
         };
         for sink in sinks.iter_mut() {
@@ -305,7 +327,15 @@ pub fn run_summary(
         if keep_steps {
             sinks.push(&mut steps);
         }
-        run(mechanism, motion, &families, gas, None, &mut sinks).map_err(|e| e.to_string())?;
+        run(
+            mechanism,
+            motion,
+            &families,
+            gas,
+            Stages::default(),
+            &mut sinks,
+        )
+        .map_err(|e| e.to_string())?;
     }
     Ok((steps.0, summary.finish(mechanism)?))
 }

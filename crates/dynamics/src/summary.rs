@@ -148,6 +148,22 @@ struct LossTotals {
     friction_torque: f64,
 }
 
+/// The gear meshes' rating over the run: peaks of the loads and stresses, the smallest safety
+/// factors, the mesh loss work.
+#[derive(Debug, Clone)]
+struct GearTotals {
+    contact_ratio: f64,
+    bending: bool,
+    tooth_load: f64,
+    dynamic_load: f64,
+    contact_stress: f64,
+    contact_safety: f64,
+    bending_stress: f64,
+    bending_safety: f64,
+    loss_work: f64,
+    previous_loss: f64,
+}
+
 /// A sink that accumulates the summary of one mechanism's run.
 #[derive(Debug, Clone)]
 pub struct SummarySink {
@@ -177,6 +193,7 @@ pub struct SummarySink {
     /// Time of the previous step, s.
     previous_time: f64,
     losses: Option<LossTotals>,
+    gears: Option<GearTotals>,
 }
 
 impl SummarySink {
@@ -217,7 +234,50 @@ impl SummarySink {
             previous_lever: 0.0,
             previous_time: 0.0,
             losses: None,
+            gears: None,
         }
+    }
+
+    /// The same summary, with the gear meshes of `ratings` rated (their smallest contact ratio
+    /// is reported, and the bending rating if every mesh has one).
+    pub fn with_gears(mut self, ratings: &crate::GearRatings) -> Self {
+        self.gears = Some(GearTotals {
+            contact_ratio: ratings
+                .contact_ratios()
+                .into_iter()
+                .fold(f64::INFINITY, f64::min),
+            bending: ratings.bending().iter().all(|b| *b),
+            tooth_load: 0.0,
+            dynamic_load: 0.0,
+            contact_stress: 0.0,
+            contact_safety: f64::INFINITY,
+            bending_stress: 0.0,
+            bending_safety: f64::INFINITY,
+            loss_work: 0.0,
+            previous_loss: 0.0,
+        });
+        self
+    }
+
+    /// The gear metrics (issue 10): peaks over the run and the meshes, smallest safety factors
+    /// (infinite only if no mesh ever carried a load), mean mesh loss.
+    fn push_gears(&self, m: &mut Summary, time: f64) {
+        let Some(g) = &self.gears else { return };
+        m.push("contact_ratio", g.contact_ratio);
+        m.push("mesh_tangential_load_max", g.tooth_load);
+        m.push("dynamic_tooth_load_max", g.dynamic_load);
+        m.push("contact_stress_max", g.contact_stress);
+        // A mesh that never carried a load has no finite safety factor: none is reported.
+        if g.contact_safety.is_finite() {
+            m.push("contact_safety_factor", g.contact_safety);
+        }
+        if g.bending {
+            m.push("bending_stress_max", g.bending_stress);
+            if g.bending_safety.is_finite() {
+                m.push("bending_safety_factor", g.bending_safety);
+            }
+        }
+        m.push("gear_mesh_power_loss_mean", g.loss_work / time);
     }
 
     /// The same summary, with the loss components named `names` (a [`crate::LossBudget`]'s).
@@ -391,6 +451,7 @@ impl SummarySink {
         }
         m.push("cycle_time", last.1 - first.1);
         self.push_losses(&mut m, span, last.1 - first.1);
+        self.push_gears(&mut m, last.1 - first.1);
         if let Some(p) = self.pressure {
             m.push("cylinder_pressure_max", p);
             m.push("gas_force_max", self.gas_force);
@@ -445,6 +506,24 @@ impl Sink for SummarySink {
                 *p0 = p;
             }
             raise(&mut l.friction_torque, s.friction_torque);
+        }
+        if let Some(g) = &mut self.gears {
+            let loss: f64 = s.gears.iter().map(|r| r.loss).sum();
+            if self.previous.is_some() {
+                g.loss_work +=
+                    0.5 * (st.crank.time - self.previous_time) * (loss + g.previous_loss);
+            }
+            g.previous_loss = loss;
+            for r in s.gears {
+                raise(&mut g.tooth_load, r.tooth_load);
+                raise(&mut g.dynamic_load, r.dynamic_load);
+                raise(&mut g.contact_stress, r.contact_stress);
+                g.contact_safety = g.contact_safety.min(r.contact_safety);
+                if g.bending {
+                    raise(&mut g.bending_stress, r.bending_stress);
+                    g.bending_safety = g.bending_safety.min(r.bending_safety);
+                }
+            }
         }
         self.previous_time = st.crank.time;
         self.previous = Some((angle, speed));

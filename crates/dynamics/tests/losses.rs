@@ -6,7 +6,7 @@
 mod common;
 
 use cardan_dynamics::{
-    run, Friction, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Steps, SummarySink,
+    run, Friction, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Stages, Steps, SummarySink,
 };
 use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
@@ -192,7 +192,10 @@ fn losses_keep_the_energy_books() {
         &mut grid,
         &families,
         Some(&gas),
-        Some(&mut budget),
+        Stages {
+            losses: Some(&mut budget),
+            gears: None,
+        },
         &mut [&mut summary, &mut torque, &mut steps],
     )
     .unwrap();

@@ -1,0 +1,356 @@
+//! Rating of every gear mesh of a mechanism at every step, from the mesh joint's total load:
+//! Buckingham's dynamic tooth load (Karhula 2008 A8.1.1-14), AGMA 2001-D04 contact and bending
+//! stresses with their safety factors, and the Anderson & Loewenthal mesh loss, through
+//! [`cardan_gears::GearSet`]. The pair is built from the mesh joint's declared pitch radius,
+//! ratio, pressure angle and internal ring, and the case's [`GearSpec`]; no mechanism code.
+//!
+//! The tooth load is the mesh force along the pitch-circle tangent (A8.1.10, A9.1.44), in either
+//! mesh-force reading of the cardan gear. [`ToothLoad::RingForce`] rates the magnitude of the
+//! ring's force instead: the thesis's dynamic tooth loads are far above what its tangential
+//! loads give (48 380 N at 3π rad/s against a tangential load below 10 kN), and the magnitude is
+//! the nearest reading we found (README, "Gear rating in runs", has the comparison).
+
+use cardan_gears::agma::factors::{
+    bending_allowable_through_hardened, contact_allowable_through_hardened, elastic_coefficient,
+    Enclosure, Grade, LoadDistribution, Quality,
+};
+use cardan_gears::agma::{GearSetRating, MemberData, SizeFactor};
+use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
+use cardan_gears::geometry::{GearPair, PairSpec};
+use cardan_gears::mesh_loss::{Lubricant, MeshSpeeds, Reading};
+use cardan_gears::{pitting_geometry_factor, GearSet, IForm, MeshStep, ShiftCase};
+use cardan_mechanism::{JointKind, Loads, Mechanism, State};
+
+use crate::losses::LossError;
+use crate::summary::tangential;
+
+/// Which force the rating takes as the tooth load.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ToothLoad {
+    /// The component along the pitch-circle tangent (A8.1.10): the torque-transmitting load.
+    #[default]
+    Tangential,
+    /// The magnitude of the mesh force (the thesis's ring force |F_Σ02c|).
+    RingForce,
+}
+
+/// The gear pair of a mesh and its rating data, SI. Defaults: Karhula (2008) App. 8.1 and 9.1
+/// where it gives a value, this project's stated choice elsewhere.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GearSpec {
+    /// Teeth of the gear on the mesh's body (the cardan wheel; Karhula A9.1.36: 20).
+    pub teeth: u32,
+    /// Face width, m; `None`: a third of the pinion's pitch diameter (A8.1.9, A9.1.46).
+    pub face_width: Option<f64>,
+    /// Addendum of an internal (ring) gear in modules: 0.8 gives the contact ratio ≈ 1.8 of
+    /// Karhula's text (a full 1.0 interferes on 20/40 at 20°, validation note §1).
+    pub ring_addendum: f64,
+    /// Profile shift coefficients [pinion, gear] (ISO 21771 signs).
+    pub profile_shift: [f64; 2],
+    /// AGMA 2000 quality number Qv for the dynamic factor (this project's default 8).
+    pub quality: f64,
+    /// Through-hardened steel, grade 2, Brinell hardness of [pinion, gear] for the allowable
+    /// stresses (AGMA 2001-D04 Figs. 3, 8; this project's default 300 HB).
+    pub hardness: [f64; 2],
+    /// AGMA bending geometry factors [pinion, gear]; `None`: the AGMA 908 25° table proxy for an
+    /// internal pair at 25°, no bending rating otherwise (AGMA 908 tabulates no 20° internal J).
+    pub j: Option<[f64; 2]>,
+    /// Buckingham's effective profile error (backlash), m (Karhula: 0.005 in = 0.127 mm).
+    pub error: f64,
+    /// Young's modulus of both gears, Pa (Karhula: 210 GPa).
+    pub youngs_modulus: f64,
+    /// Two identical gear sets side by side share the load (Nunes 2017's twin set).
+    pub twin: bool,
+    pub tooth_load: ToothLoad,
+}
+
+impl Default for GearSpec {
+    fn default() -> Self {
+        Self {
+            teeth: 20,
+            face_width: None,
+            ring_addendum: 0.8,
+            profile_shift: [0.0, 0.0],
+            quality: 8.0,
+            hardness: [300.0, 300.0],
+            j: None,
+            error: 0.005 * 0.0254,
+            youngs_modulus: 210e9,
+            twin: false,
+            tooth_load: ToothLoad::Tangential,
+        }
+    }
+}
+
+/// The validated pair of a mesh whose pinion has pitch radius `pitch_radius` (m): module
+/// m = 2·r/z1 (Karhula A9.1.37 for the cardan wheel, r = Z_AA0c), z2 = ratio·z1 (negative for an
+/// internal gear, ISO 21771); the pair must pass the interference and contact checks, each
+/// failure naming the field to change.
+pub fn mesh_pair(
+    spec: &GearSpec,
+    ratio: f64,
+    pitch_radius: f64,
+    internal: bool,
+    pressure_angle: f64,
+) -> Result<(GearPair, f64), LossError> {
+    let failed = |field: &str, rule: String| LossError {
+        field: field.into(),
+        rule,
+    };
+    let z1 = spec.teeth as i32;
+    let z2_real = ratio * f64::from(z1);
+    let z2 = z2_real.round() as i32;
+    if (f64::from(z2) - z2_real).abs() > 1e-9 {
+        return Err(failed(
+            "gear.teeth",
+            format!("{z1} teeth on the pinion give {z2_real} on the gear of ratio {ratio}: choose a number of teeth that makes it whole"),
+        ));
+    }
+    let module = 2.0 * pitch_radius / f64::from(z1);
+    let [x1, x2] = spec.profile_shift;
+    let mut pair_spec = PairSpec::standard(
+        module,
+        z1,
+        if internal { -z2 } else { z2 },
+        pressure_angle,
+        x1,
+        x2,
+    );
+    if internal {
+        pair_spec.gear = pair_spec.gear.with_addendum(spec.ring_addendum);
+    }
+    let pair = GearPair::new(pair_spec).map_err(|e| failed("gear", e.to_string()))?;
+    pair.verify().map_err(|e| {
+        failed(
+            "gear.ring_addendum",
+            format!(
+                "{e} (ring addendum {} modules, {z1}/{z2} teeth): shorten the ring addendum, shift the profiles or raise the pressure angle",
+                spec.ring_addendum
+            ),
+        )
+    })?;
+    let face_width = spec.face_width.unwrap_or(pair.pinion.reference / 3.0);
+    Ok((pair, face_width))
+}
+
+/// One mesh's rating at one step.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MeshRating {
+    /// The rated tooth load (tangential or ring force, per gear set), N.
+    pub tooth_load: f64,
+    /// Buckingham's dynamic tooth load, N (A8.1.14).
+    pub dynamic_load: f64,
+    /// AGMA contact stress, Pa.
+    pub contact_stress: f64,
+    /// AGMA pitting safety factor (the smaller member's; infinite at zero load).
+    pub contact_safety: f64,
+    /// AGMA bending stress, the larger member's, Pa (NaN without J).
+    pub bending_stress: f64,
+    /// AGMA bending safety factor, the smaller member's (NaN without J).
+    pub bending_safety: f64,
+    /// Anderson & Loewenthal mesh power loss, W (all gear sets).
+    pub loss: f64,
+}
+
+/// The rated meshes of one mechanism.
+#[derive(Debug, Clone)]
+pub struct GearRatings {
+    meshes: Vec<Rated>,
+}
+
+#[derive(Debug, Clone)]
+struct Rated {
+    joint: usize,
+    body: usize,
+    name: &'static str,
+    set: GearSet,
+    pitch_radius: f64,
+    /// Gear sets sharing the load.
+    sets: f64,
+    bending: bool,
+    tooth_load: ToothLoad,
+    contact_ratio: f64,
+}
+
+impl GearRatings {
+    /// The ratings of every gear mesh of `mechanism` under `spec`, the mesh loss in `reading`
+    /// with oil of kinematic viscosity `oil_viscosity` (m²/s) and density `oil_density` (kg/m³).
+    pub fn new(
+        spec: &GearSpec,
+        mechanism: &dyn Mechanism,
+        reading: Reading,
+        oil_viscosity: f64,
+        oil_density: f64,
+    ) -> Result<Self, LossError> {
+        let failed = |field: &str, e: &dyn std::fmt::Display| LossError {
+            field: field.into(),
+            rule: e.to_string(),
+        };
+        let mut meshes = Vec::new();
+        for (k, j) in mechanism.topology().joints.iter().enumerate() {
+            let JointKind::GearMesh {
+                ratio,
+                pitch_radius,
+                internal,
+                pressure_angle,
+                ..
+            } = j.kind
+            else {
+                continue;
+            };
+            let (pair, face_width) =
+                mesh_pair(spec, ratio, pitch_radius, internal, pressure_angle)?;
+            let table_j = (internal && (pressure_angle.to_degrees() - 25.0).abs() < 1e-9)
+                .then(|| {
+                    cardan_gears::agma::geometry_factors::internal_j_conservative(
+                        ShiftCase::Zero,
+                        spec.teeth,
+                    )
+                    .ok()
+                })
+                .flatten();
+            let j_factors = spec.j.or(table_j.map(|(a, b)| [a, b]));
+            let member = |m: usize| -> Result<MemberData, LossError> {
+                Ok(MemberData {
+                    j: j_factors.map_or(1.0, |j| j[m]),
+                    rim: 1.0,
+                    bending_allowable: bending_allowable_through_hardened(
+                        spec.hardness[m],
+                        Grade::Two,
+                    )
+                    .map_err(|e| failed("gear.hardness", &e))?,
+                    contact_allowable: contact_allowable_through_hardened(
+                        spec.hardness[m],
+                        Grade::Two,
+                    )
+                    .map_err(|e| failed("gear.hardness", &e))?,
+                    yn: 1.0,
+                    zn: 1.0,
+                    ch: 1.0,
+                })
+            };
+            let rating = GearSetRating {
+                module: pair.spec.module,
+                pinion_diameter: pair.pinion.working,
+                overload: 1.0,
+                load_distribution: LoadDistribution {
+                    crowned: false,
+                    offset_ratio: 0.0,
+                    enclosure: Enclosure::PrecisionEnclosed,
+                    adjusted_at_assembly: false,
+                },
+                size: SizeFactor::Given([1.0, 1.0]),
+                surface_condition: 1.0,
+                geometry_i: pitting_geometry_factor(&pair, IForm::Lpstc)
+                    .map_err(|e| failed("gear", &e))?,
+                elastic_coefficient: elastic_coefficient(
+                    spec.youngs_modulus,
+                    0.3,
+                    spec.youngs_modulus,
+                    0.3,
+                )
+                .map_err(|e| failed("gear.youngs_modulus", &e))?,
+                temperature: 1.0,
+                reliability: 1.0,
+                pinion: member(0)?,
+                gear: member(1)?,
+            };
+            let set = GearSet {
+                buckingham: BuckinghamPair {
+                    pinion_radius: pair.pinion.reference / 2.0,
+                    gear_radius: pair.gear.reference.abs() / 2.0,
+                    internal,
+                    face_width,
+                    error: spec.error,
+                    e1: spec.youngs_modulus,
+                    e2: spec.youngs_modulus,
+                    form: FULL_DEPTH_20,
+                },
+                pair,
+                face_width,
+                quality: Quality::Qv(spec.quality),
+                rating,
+                lubricant: Lubricant {
+                    kinematic_viscosity: oil_viscosity,
+                    density: oil_density,
+                },
+                loss_reading: reading,
+            };
+            meshes.push(Rated {
+                joint: k,
+                body: j.body,
+                name: j.name,
+                contact_ratio: set.pair.contact_ratio,
+                set,
+                pitch_radius,
+                sets: if spec.twin { 2.0 } else { 1.0 },
+                bending: j_factors.is_some(),
+                tooth_load: spec.tooth_load,
+            });
+        }
+        Ok(Self { meshes })
+    }
+
+    /// The rated meshes' joint names.
+    pub fn names(&self) -> Vec<&'static str> {
+        self.meshes.iter().map(|m| m.name).collect()
+    }
+
+    /// Transverse contact ratio of each rated mesh.
+    pub fn contact_ratios(&self) -> Vec<f64> {
+        self.meshes.iter().map(|m| m.contact_ratio).collect()
+    }
+
+    /// Whether each mesh gets a bending rating (its J is known).
+    pub fn bending(&self) -> Vec<bool> {
+        self.meshes.iter().map(|m| m.bending).collect()
+    }
+
+    /// Each mesh's rating at `state` under the `total` loads, into `out`.
+    pub fn evaluate(
+        &self,
+        state: &State,
+        total: &Loads,
+        out: &mut [MeshRating],
+    ) -> Result<(), String> {
+        for (m, out) in self.meshes.iter().zip(out.iter_mut()) {
+            let motion = &state.joints[m.joint];
+            let force = total.joints[m.joint].force;
+            let load = match m.tooth_load {
+                ToothLoad::Tangential => tangential(force, motion).abs(),
+                ToothLoad::RingForce => force.norm(),
+            } / m.sets;
+            let pinion = state.bodies[m.body].angular_velocity;
+            let step = MeshStep {
+                tangential_load: load,
+                pitch_line_velocity: motion.relative_speed,
+                speeds: MeshSpeeds {
+                    pinion_absolute: pinion,
+                    carrier: pinion - motion.relative_speed / m.pitch_radius,
+                },
+            };
+            let r = m
+                .set
+                .evaluate(&step)
+                .map_err(|e| format!("gear rating of {}: {e}", m.name))?;
+            let (bending_stress, bending_safety) = if m.bending {
+                (
+                    r.rating.bending_stress[0].max(r.rating.bending_stress[1]),
+                    r.rating.bending_safety[0].min(r.rating.bending_safety[1]),
+                )
+            } else {
+                (f64::NAN, f64::NAN)
+            };
+            *out = MeshRating {
+                tooth_load: load,
+                dynamic_load: r.dynamic.dynamic_load,
+                contact_stress: r.rating.contact_stress[0].max(r.rating.contact_stress[1]),
+                contact_safety: r.rating.contact_safety[0].min(r.rating.contact_safety[1]),
+                bending_stress,
+                bending_safety,
+                loss: r.loss.total_power * m.sets,
+            };
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,137 @@
+//! Gear rating in runs: each mesh's rating is the gears crate's chain evaluated on the mesh
+//! joint's own tooth load and pitch-line velocity (Buckingham A8.1.1-14 checked against the
+//! chain evaluated by hand here), the twin set halves the load, and the ring-force reading takes
+//! the force's magnitude.
+
+mod common;
+
+use cardan_dynamics::{GearRatings, GearSpec, MeshRating, ToothLoad};
+use cardan_gears::mesh_loss::Reading;
+use cardan_mechanism::{CrankState, Loads, Material, C};
+use common::thesis;
+use std::f64::consts::PI;
+
+/// Karhula's Buckingham chain in US units as printed (A8.1.3-14) for the cardan pair of crank
+/// e = 0.03 m, 20/40 teeth, b = d1/3, E = 210 GPa (Karhula's "≈ 30e6 psi", taken exactly here
+/// as the code's SI default), e = 0.005 in: tangential load `ft` (N) at crank speed `w` (rad/s),
+/// N.
+fn karhula_dynamic_load(ft: f64, w: f64) -> f64 {
+    let (inch, lbf) = (0.0254, 4.448_221_615_260_5);
+    let (r1, r2): (f64, f64) = (0.03 / inch, 0.06 / inch);
+    let h = 0.00120 * (1.0 / r1 - 1.0 / r2);
+    let d1 = 2.0 * r1;
+    let m1 = PI * d1.powi(4) / 32.0 / (r1 * r1);
+    let v = 2.0 * 0.03 * w / 0.00508; // ft/min (A8.1.7)
+    let f1 = h * m1 * v * v;
+    let ft = ft / lbf;
+    let e_psi = 210e9 / 6_894.757_293_168;
+    let def = 9.0 * ft / (d1 / 3.0) * (2.0 / e_psi);
+    let f2 = ft * (0.005 / def + 1.0);
+    let fa = f1 * f2 / (f1 + f2);
+    (ft + (fa * (2.0 * f2 - fa)).sqrt()) * lbf
+}
+
+fn rate(spec: &GearSpec, w: f64, force: C) -> (MeshRating, C) {
+    let m = thesis("cardan_gear", Material::Steel);
+    let state = m.state(&CrankState::new(1.0, w, 0.0, 0.0));
+    let mesh = m
+        .topology()
+        .joints
+        .iter()
+        .position(|j| j.name == "gear_mesh")
+        .unwrap();
+    let mut loads = Loads::for_topology(m.topology());
+    let d = state.joints[mesh].direction;
+    loads.joints[mesh].force = force.re * C::i() * d + force.im * d;
+    let ratings = GearRatings::new(spec, m.as_ref(), Reading::Corrected, 5e-6, 900.0).unwrap();
+    assert_eq!(ratings.names(), ["gear_mesh"]);
+    let mut out = [MeshRating::default()];
+    ratings.evaluate(&state, &loads, &mut out).unwrap();
+    (out[0], loads.joints[mesh].force)
+}
+
+#[test]
+fn the_dynamic_tooth_load_is_buckingham_on_the_tangential_load() {
+    // A mesh force of 8 kN tangential and 3 kN radial, at 30π and 200π rad/s. Tolerance 1e-6:
+    // the chain in US units and the SI one differ only by the unit constants' roundings.
+    for w in [30.0 * PI, 200.0 * PI] {
+        let (r, _) = rate(&GearSpec::default(), w, C::new(8000.0, 3000.0));
+        assert!((r.tooth_load - 8000.0).abs() < 1e-9, "{}", r.tooth_load);
+        let want = karhula_dynamic_load(8000.0, w);
+        assert!(
+            (r.dynamic_load / want - 1.0).abs() < 1e-6,
+            "{} vs {want}",
+            r.dynamic_load
+        );
+        assert!(r.dynamic_load > r.tooth_load);
+        assert!(r.contact_stress > 0.0 && r.contact_safety.is_finite());
+        // AGMA 908 tabulates no 20° internal J: no bending rating unless J is given.
+        assert!(r.bending_stress.is_nan());
+    }
+}
+
+#[test]
+fn twin_sets_share_and_the_ring_force_reading_takes_the_magnitude() {
+    let w = 100.0 * PI;
+    let force = C::new(6000.0, 8000.0);
+    let single = rate(&GearSpec::default(), w, force).0;
+    let twin = rate(
+        &GearSpec {
+            twin: true,
+            j: Some([0.3, 0.4]),
+            ..GearSpec::default()
+        },
+        w,
+        force,
+    )
+    .0;
+    assert!((twin.tooth_load - 3000.0).abs() < 1e-9);
+    assert!((twin.dynamic_load - karhula_dynamic_load(3000.0, w)).abs() < 1e-6 * twin.dynamic_load);
+    assert!(twin.contact_stress < single.contact_stress);
+    assert!(twin.bending_stress > 0.0 && twin.bending_safety.is_finite());
+    let (ring, applied) = rate(
+        &GearSpec {
+            tooth_load: ToothLoad::RingForce,
+            ..GearSpec::default()
+        },
+        w,
+        force,
+    );
+    assert!((ring.tooth_load - applied.norm()).abs() < 1e-9);
+    assert!((ring.tooth_load - 10_000.0).abs() < 1e-9);
+}
+
+#[test]
+fn an_interfering_pair_is_refused_with_its_remedy() {
+    // 20/40 at 20° with a full ring addendum interferes (validation note §1): the error names
+    // the field and the remedies.
+    let m = thesis("cardan_gear", Material::Steel);
+    let spec = GearSpec {
+        ring_addendum: 1.0,
+        ..GearSpec::default()
+    };
+    let e = GearRatings::new(&spec, m.as_ref(), Reading::Corrected, 5e-6, 900.0).unwrap_err();
+    assert_eq!(e.field, "gear.ring_addendum");
+    assert!(e.rule.contains("shorten the ring addendum"), "{}", e.rule);
+    // 25 teeth on the wheel do not (the module follows: 2·30 mm / 25).
+    let spec = GearSpec {
+        teeth: 25,
+        ring_addendum: 1.0,
+        ..GearSpec::default()
+    };
+    assert!(GearRatings::new(&spec, m.as_ref(), Reading::Corrected, 5e-6, 900.0).is_ok());
+    // Karhula's pair with the 0.8-module ring addendum: εα = 1.765 (configs-gears).
+    let r = GearRatings::new(
+        &GearSpec::default(),
+        m.as_ref(),
+        Reading::Corrected,
+        5e-6,
+        900.0,
+    )
+    .unwrap();
+    assert!(
+        (r.contact_ratios()[0] - 1.765).abs() < 5e-4,
+        "{:?}",
+        r.contact_ratios()
+    );
+}
