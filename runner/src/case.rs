@@ -421,7 +421,8 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
                 gas.as_ref(),
                 &invalid,
             )?;
-            for (joint, _) in &f.joint_bearings {
+            let named = f.joint_bearings.iter().map(|(j, _)| j);
+            for joint in named.chain(f.joint_sizes.iter().map(|(j, _)| j)) {
                 let revolute = |m: &Arc<dyn Mechanism>| {
                     m.topology().joints.iter().any(|j| {
                         j.name == joint

@@ -10,8 +10,8 @@ use crate::gas::{Clearance, GasCase};
 use crate::units::{to_si, Dimension};
 use cardan_dynamics::engine_losses::AMBIENT_PRESSURE;
 use cardan_dynamics::{
-    Bearing, EngineLosses, FmepModel, FollowerContact, Friction, GearSpec, MeshLossModel, Rings,
-    Skirt, ValveTrain,
+    Bearing, BearingSize, EngineLosses, FmepModel, FollowerContact, Friction, GearSpec,
+    MeshLossModel, Rings, Skirt, ValveTrain,
 };
 use cardan_friction::{
     PalmgrenCoefficients, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
@@ -181,22 +181,54 @@ pub fn parse(
             return Err(invalid(
                 &path,
                 v,
-                "must be a table of joint name = bearing model",
+                "must be a table of joint name = bearing model, or joint name = { model, pitch_diameter, static_load_rating, count }",
             ));
         };
         for (joint, v) in joints {
-            match v.as_str() {
-                Some(w) if BEARING_WORDS.contains(&w) => {
-                    f.joint_bearings.push((joint.clone(), bearing(w)));
-                }
-                _ => {
-                    return Err(invalid(
-                        &format!("{path}.{joint}"),
-                        v,
-                        &one_of(BEARING_WORDS),
-                    ))
+            let at = format!("{path}.{joint}");
+            let model = |v: &toml::Value, at: &str| match v.as_str() {
+                Some(w) if BEARING_WORDS.contains(&w) => Ok(bearing(w)),
+                _ => Err(invalid(at, v, &one_of(BEARING_WORDS))),
+            };
+            // A model name, or a table of a model and catalogue values.
+            let Some(t) = v.as_table() else {
+                f.joint_bearings.push((joint.clone(), model(v, &at)?));
+                continue;
+            };
+            let mut size = BearingSize::default();
+            for (key, value) in t {
+                let field = format!("{at}.{key}");
+                let positive = |dim: Dimension| {
+                    let x = to_si(value, dim).map_err(|rule| invalid(&field, value, &rule))?;
+                    if x > 0.0 {
+                        Ok(x)
+                    } else {
+                        Err(invalid(&field, value, "must be positive"))
+                    }
+                };
+                match key.as_str() {
+                    "model" => f.joint_bearings.push((joint.clone(), model(value, &field)?)),
+                    "pitch_diameter" => size.pitch_diameter = Some(positive(Dimension::Length)?),
+                    "static_load_rating" => {
+                        size.static_load_rating = Some(positive(Dimension::Force)?)
+                    }
+                    "count" => {
+                        let x = positive(Dimension::Number)?;
+                        if x.fract() != 0.0 || x > 16.0 {
+                            return Err(invalid(&field, value, "must be a whole number from 1 to 16"));
+                        }
+                        size.count = Some(x as u32);
+                    }
+                    _ => {
+                        return Err(invalid(
+                            &field,
+                            value,
+                            "unknown field: a joint's table has model, pitch_diameter, static_load_rating, count",
+                        ))
+                    }
                 }
             }
+            f.joint_sizes.push((joint.clone(), size));
         }
     }
     f.engine = match machine {

@@ -28,6 +28,8 @@ pub enum Dimension {
     KinematicViscosity,
     /// Density, kg/m³.
     Density,
+    /// Force: a bare number is in N.
+    Force,
     /// A pure number (ratios, exponents, factors), or a coefficient in the SI unit its field
     /// names.
     Number,
@@ -83,6 +85,7 @@ impl Dimension {
                 ("cSt", 1e-6),
             ],
             Dimension::Density => &[("kg/m^3", 1.0), ("kg/m³", 1.0), ("g/cm^3", 1e3)],
+            Dimension::Force => &[("N", 1.0), ("kN", 1e3), ("MN", 1e6)],
             Dimension::Number => &[("", 1.0)],
         }
     }

@@ -199,3 +199,56 @@ fn every_non_thesis_reading_runs_the_shipped_pump() {
         }
     }
 }
+
+#[test]
+fn joint_tables_take_catalogue_values_and_name_bad_ones() {
+    let path = Path::new("pump.toml");
+    let base = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../configs/karhula-pump-r60-l140-a0-w30pi.toml"),
+    )
+    .unwrap();
+    let with = |joints: &str| format!("{base}\n[friction]\n[friction.joints]\n{joints}\n");
+    let case = cardan_runner::case::parse(
+        path,
+        &with("crank_pin = { model = \"palmgren\", pitch_diameter = \"50 mm\", static_load_rating = \"80 kN\", count = 1 }"),
+    )
+    .unwrap();
+    let f = case.friction.unwrap();
+    let (name, size) = &f.joint_sizes[0];
+    assert_eq!(name, "crank_pin");
+    assert_eq!(size.pitch_diameter, Some(0.05));
+    assert_eq!(size.static_load_rating, Some(80e3));
+    assert_eq!(size.count, Some(1));
+    assert!(matches!(
+        f.joint_bearings[0],
+        (ref j, Some(cardan_dynamics::Bearing::Rolling(cardan_friction::RollingReading::Palmgren(_)))) if j == "crank_pin"
+    ));
+    for (joints, field, rule) in [
+        (
+            "crank_pin = { count = 1.5 }",
+            "friction.joints.crank_pin.count",
+            "whole number",
+        ),
+        (
+            "crank_pin = { static_load_rating = \"80 furlongs\" }",
+            "friction.joints.crank_pin.static_load_rating",
+            "unknown unit",
+        ),
+        (
+            "crank_pin = { size = 3 }",
+            "friction.joints.crank_pin.size",
+            "unknown field",
+        ),
+        (
+            "wrist_pin = \"skf\"",
+            "friction.joints.wrist_pin",
+            "no mechanism of the case has a revolute joint",
+        ),
+    ] {
+        let e = cardan_runner::case::parse(path, &with(joints))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(field) && e.contains(rule), "{joints}: {e}");
+    }
+}

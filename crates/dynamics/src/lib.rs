@@ -32,7 +32,9 @@ pub use engine_losses::{
 };
 pub use family::{Gas, Inertial, LoadFamily, Solver};
 pub use gear_rating::{GearRatings, GearSpec, MeshRating, ToothLoad};
-pub use losses::{Bearing, Friction, LossBudget, LossError, MeshLossModel, Oil, Rings, Skirt};
+pub use losses::{
+    Bearing, BearingSize, Friction, LossBudget, LossError, MeshLossModel, Oil, Rings, Skirt,
+};
 pub use metrics::{Aggregation, MetricDef, METRICS};
 pub use stepper::{run, run_summary, GasAt, RunError, Sink, Stages, Step, StepRecord, Steps};
 pub use summary::{radial, tangential, Metric, Summary, SummarySink};

@@ -102,6 +102,30 @@ pub enum Bearing {
     },
 }
 
+/// Catalogue values of a joint's bearings; `None` keeps the declared value.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BearingSize {
+    /// Pitch (mean) diameter d_m of one bearing, m (the journal diameter of a plain bearing).
+    pub pitch_diameter: Option<f64>,
+    /// Basic static load rating C0 of one bearing, N.
+    pub static_load_rating: Option<f64>,
+    /// Bearings side by side sharing the joint's load.
+    pub count: Option<u32>,
+}
+
+impl BearingSize {
+    /// `declared` with these values put in.
+    pub fn apply(&self, declared: Bearings) -> Bearings {
+        Bearings {
+            radius: self.pitch_diameter.map_or(declared.radius, |d| d / 2.0),
+            count: self.count.unwrap_or(declared.count),
+            static_load_rating: self
+                .static_load_rating
+                .unwrap_or(declared.static_load_rating),
+        }
+    }
+}
+
 /// The gear mesh loss and the pair it is computed on.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MeshLossModel {
@@ -125,6 +149,9 @@ pub struct Friction {
     pub bearings: Option<Bearing>,
     /// Models of named revolute joints (`None`: no loss), overriding [`Friction::bearings`].
     pub joint_bearings: Vec<(String, Option<Bearing>)>,
+    /// Catalogue values of named revolute joints' bearings, overriding the sizing rules the
+    /// mechanism declared (Karhula A9.1.10-13).
+    pub joint_sizes: Vec<(String, BearingSize)>,
     /// `None`: no gear mesh loss.
     pub gear_mesh: Option<MeshLossModel>,
     /// The engine components (valve train, accessories, pumping) and the fmep cross-check of a
@@ -155,6 +182,7 @@ impl Friction {
                 load_constant: KARHULA_LOAD_CONSTANT,
             })),
             joint_bearings: Vec::new(),
+            joint_sizes: Vec::new(),
             gear_mesh: Some(MeshLossModel {
                 reading: Reading::Karhula,
                 pair: GearSpec::default(),
@@ -334,6 +362,11 @@ impl LossBudget {
                         .find(|(name, _)| name == j.name)
                         .map_or(friction.bearings, |(_, m)| *m);
                     let Some(model) = model else { continue };
+                    let b = friction
+                        .joint_sizes
+                        .iter()
+                        .find(|(name, _)| name == j.name)
+                        .map_or(b, |(_, size)| size.apply(b));
                     parts.push(bearing_part(k, b, model, &friction.oil)?);
                     names.push(j.name.to_string());
                 }

@@ -234,3 +234,32 @@ fn losses_keep_the_energy_books() {
         assert!((sum - r.friction_torque * r.state.crank.speed).abs() <= 1e-9 * sum.max(1.0));
     }
 }
+
+#[test]
+fn catalogue_values_override_the_declared_bearings() {
+    // The cardan crank pin on one catalogue bearing of d_m = 50 mm and C0 = 80 kN instead of
+    // the two rule-sized ones: the whole 5 kN on it, at 2ω.
+    let m = thesis("cardan_gear", Material::Steel);
+    let w = 100.0 * PI;
+    let state = m.state(&CrankState::new(0.5, w, 0.0, 0.0));
+    let mut loads = Loads::for_topology(m.topology());
+    loads.joints[joint(m.as_ref(), "crank_pin")].force = C::new(0.0, 5000.0);
+    let mut friction = Friction::karhula();
+    friction.joint_sizes.push((
+        "crank_pin".into(),
+        cardan_dynamics::BearingSize {
+            pitch_diameter: Some(0.05),
+            static_load_rating: Some(80e3),
+            count: Some(1),
+        },
+    ));
+    let mut budget = LossBudget::new(&friction, m.as_ref(), 0.12).unwrap();
+    let mut out = vec![0.0; budget.names().len()];
+    budget.evaluate(&state, &loads, None, &mut out).unwrap();
+    let want = karhula_torque(5000.0, 80e3, 0.05, 2.0 * w) * 2.0 * w;
+    let got = loss(&budget, &out, "crank_pin");
+    assert!((got - want).abs() <= 1e-12 * want, "{got} vs {want}");
+    // The main bearings keep their declared sizes.
+    let main = loss(&budget, &out, "main_bearing");
+    assert!((main - 2.0 * karhula_torque(0.0, 60e3, 0.045, w) * w).abs() <= 1e-12 * main);
+}
