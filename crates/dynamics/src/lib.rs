@@ -1,7 +1,7 @@
 //! Kinetostatics of any mechanism of `cardan-mechanism`, step by step: the joint loads and
-//! drive torque of each load family (inertia, gas, and later friction and gear dynamics), their
-//! totals, and the cycle summary, streamed to sinks so that memory does not grow with the
-//! number of steps.
+//! drive torque of each load family (inertia, gas), their totals, the losses and gear ratings
+//! computed from the totals, and the cycle summary, streamed to sinks so that memory does not
+//! grow with the number of steps.
 //!
 //! Two independent paths compute the same loads:
 //! - the closed forms each mechanism carries (Karhula 2008, appendix 5.2.1, for the slider-crank
