@@ -4,15 +4,16 @@
 
 use crate::case::{CaseError, Invalid};
 use crate::units::{to_si, Dimension};
-use cardan_dynamics::{GearSpec, ToothLoad};
+use cardan_dynamics::{GearMaterial, GearSpec, ToothLoad};
 
 /// The fields of `[gear]`, with their dimensions.
-const FIELDS: [(&str, Dimension); 11] = [
+const FIELDS: [(&str, Dimension); 12] = [
     ("teeth", Dimension::Number),
     ("face_width", Dimension::Length),
     ("ring_addendum", Dimension::Number),
     ("profile_shift", Dimension::Number),
     ("quality", Dimension::Number),
+    ("material", Dimension::Number),
     ("hardness", Dimension::Number),
     ("j", Dimension::Number),
     ("backlash", Dimension::Length),
@@ -118,6 +119,19 @@ pub fn parse(table: &toml::Table, invalid: &Invalid) -> Result<GearSpec, CaseErr
                 let x = number(value)?;
                 check(x > 0.0, "must be positive")?;
                 g.youngs_modulus = x;
+            }
+            "material" => {
+                g.material = match value.as_str() {
+                    Some("through_hardened") => GearMaterial::ThroughHardened,
+                    Some("carburized") => GearMaterial::Carburized,
+                    _ => {
+                        return Err(invalid(
+                            &path,
+                            value,
+                            "must be \"through_hardened\" (allowables from the hardness) or \"carburized\" (carburized and hardened, grade 2)",
+                        ))
+                    }
+                };
             }
             "twin" => {
                 g.twin = value.as_bool().ok_or_else(|| {

@@ -99,3 +99,26 @@ fn bad_gear_fields_are_named() {
         "{e}"
     );
 }
+
+#[test]
+fn carburized_gears_raise_the_safety_factors_by_their_allowables() {
+    // Same loads and stresses; the pitting safety factor scales with Sc: carburized grade 2
+    // 225 000 psi against through-hardened grade 2 at 300 HB, 349·300 + 34 300 = 139 000 psi
+    // (AGMA 2001-D04 Table 4, Fig. 8).
+    let safety = |extra: &str| {
+        let case = parse(Path::new("pump.toml"), &pump(extra)).unwrap();
+        run_case(&case, None)
+            .unwrap()
+            .iter()
+            .find_map(|r| r.summary.get("contact_safety_factor"))
+            .unwrap()
+    };
+    let through = safety("[gear]\n");
+    let carburized = safety("[gear]\nmaterial = \"carburized\"\n");
+    let ratio = carburized / through;
+    assert!((ratio - 225_000.0 / 139_000.0).abs() < 1e-9, "{ratio}");
+    let e = parse(Path::new("pump.toml"), &pump("[gear]\nmaterial = \"cast iron\"\n"))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("gear.material") && e.contains("carburized"), "{e}");
+}

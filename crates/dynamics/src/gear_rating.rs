@@ -11,8 +11,8 @@
 //! the nearest reading we found (README, "Gear rating in runs", has the comparison).
 
 use cardan_gears::agma::factors::{
-    bending_allowable_through_hardened, contact_allowable_through_hardened, elastic_coefficient,
-    Enclosure, Grade, LoadDistribution, Quality,
+    bending_allowable_through_hardened, carburized_allowables, contact_allowable_through_hardened,
+    elastic_coefficient, Enclosure, Grade, LoadDistribution, Quality,
 };
 use cardan_gears::agma::{GearSetRating, MemberData, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
@@ -34,6 +34,17 @@ pub enum ToothLoad {
     RingForce,
 }
 
+/// The gears' steel, for the AGMA allowable stress numbers (grade 2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GearMaterial {
+    /// Through-hardened, from the hardness (AGMA 2001-D04 Figs. 3 and 8).
+    #[default]
+    ThroughHardened,
+    /// Carburized and hardened (AGMA 2001-D04 Tables 3 and 4): Karhula's chapter 8 names
+    /// carburizing steel for the cardan pair.
+    Carburized,
+}
+
 /// The gear pair of a mesh and its rating data, SI. Defaults: Karhula (2008) App. 8.1 and 9.1
 /// where it gives a value, this project's stated choice elsewhere.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,8 +60,10 @@ pub struct GearSpec {
     pub profile_shift: [f64; 2],
     /// AGMA 2000 quality number Qv for the dynamic factor (this project's default 8).
     pub quality: f64,
-    /// Through-hardened steel, grade 2, Brinell hardness of [pinion, gear] for the allowable
-    /// stresses (AGMA 2001-D04 Figs. 3, 8; this project's default 300 HB).
+    /// The gears' steel and its treatment, for the allowable stresses.
+    pub material: GearMaterial,
+    /// Brinell hardness of [pinion, gear] of through-hardened steel (this project's default
+    /// 300 HB).
     pub hardness: [f64; 2],
     /// AGMA bending geometry factors [pinion, gear]; `None`: the AGMA 908 25° table proxy for an
     /// internal pair at 25°, no bending rating otherwise (AGMA 908 tabulates no 20° internal J).
@@ -72,6 +85,7 @@ impl Default for GearSpec {
             ring_addendum: 0.8,
             profile_shift: [0.0, 0.0],
             quality: 8.0,
+            material: GearMaterial::ThroughHardened,
             hardness: [300.0, 300.0],
             j: None,
             error: 0.005 * 0.0254,
@@ -211,19 +225,20 @@ impl GearRatings {
                 .flatten();
             let j_factors = spec.j.or(table_j.map(|(a, b)| [a, b]));
             let member = |m: usize| -> Result<MemberData, LossError> {
+                let (bending_allowable, contact_allowable) = match spec.material {
+                    GearMaterial::ThroughHardened => (
+                        bending_allowable_through_hardened(spec.hardness[m], Grade::Two)
+                            .map_err(|e| failed("gear.hardness", &e))?,
+                        contact_allowable_through_hardened(spec.hardness[m], Grade::Two)
+                            .map_err(|e| failed("gear.hardness", &e))?,
+                    ),
+                    GearMaterial::Carburized => carburized_allowables(Grade::Two),
+                };
                 Ok(MemberData {
                     j: j_factors.map_or(1.0, |j| j[m]),
                     rim: 1.0,
-                    bending_allowable: bending_allowable_through_hardened(
-                        spec.hardness[m],
-                        Grade::Two,
-                    )
-                    .map_err(|e| failed("gear.hardness", &e))?,
-                    contact_allowable: contact_allowable_through_hardened(
-                        spec.hardness[m],
-                        Grade::Two,
-                    )
-                    .map_err(|e| failed("gear.hardness", &e))?,
+                    bending_allowable,
+                    contact_allowable,
                     yn: 1.0,
                     zn: 1.0,
                     ch: 1.0,

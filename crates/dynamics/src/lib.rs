@@ -31,7 +31,7 @@ pub use engine_losses::{
     FollowerContact, ValveTrain, ValveTrainGeometry, ValveTrainLoss,
 };
 pub use family::{Gas, Inertial, LoadFamily, Solver};
-pub use gear_rating::{GearRatings, GearSpec, MeshRating, ToothLoad};
+pub use gear_rating::{GearMaterial, GearRatings, GearSpec, MeshRating, ToothLoad};
 pub use losses::{
     Bearing, BearingSize, Friction, LossBudget, LossError, MeshLossModel, Oil, Rings, Skirt,
 };

@@ -505,3 +505,30 @@ mod tests {
         assert!((d.v_max - 50.0).abs() < 1e-12 && d.within_limit);
     }
 }
+
+/// Allowable stress numbers `(St, Sc)` of carburized and hardened steel \[Pa\] (AGMA 2001-D04
+/// Tables 3 and 4; Shigley Tables 14-3 and 14-6): grade 1 St = 55 000 psi, Sc = 180 000 psi;
+/// grade 2 St = 65 000 psi (the tables' lower value; 70 000 psi with a higher core hardness),
+/// Sc = 225 000 psi.
+pub fn carburized_allowables(grade: Grade) -> (f64, f64) {
+    let (st, sc) = match grade {
+        Grade::One => (55_000.0, 180_000.0),
+        Grade::Two => (65_000.0, 225_000.0),
+    };
+    (st * PSI, sc * PSI)
+}
+
+#[cfg(test)]
+mod carburized_tests {
+    use super::*;
+
+    #[test]
+    fn carburized_allowables_in_mpa() {
+        // 65 000 psi = 448.2 MPa, 225 000 psi = 1551.3 MPa (1 psi = 6894.757 Pa).
+        let (st, sc) = carburized_allowables(Grade::Two);
+        assert!((st / 1e6 - 448.159).abs() < 1e-3, "{st}");
+        assert!((sc / 1e6 - 1551.320).abs() < 1e-3, "{sc}");
+        let (st, sc) = carburized_allowables(Grade::One);
+        assert!((st / 1e6 - 379.212).abs() < 1e-3 && (sc / 1e6 - 1241.056).abs() < 1e-3);
+    }
+}
