@@ -117,8 +117,14 @@ fn carburized_gears_raise_the_safety_factors_by_their_allowables() {
     let carburized = safety("[gear]\nmaterial = \"carburized\"\n");
     let ratio = carburized / through;
     assert!((ratio - 225_000.0 / 139_000.0).abs() < 1e-9, "{ratio}");
-    let e = parse(Path::new("pump.toml"), &pump("[gear]\nmaterial = \"cast iron\"\n"))
-        .unwrap_err()
-        .to_string();
-    assert!(e.contains("gear.material") && e.contains("carburized"), "{e}");
+    let e = parse(
+        Path::new("pump.toml"),
+        &pump("[gear]\nmaterial = \"cast iron\"\n"),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.contains("gear.material") && e.contains("carburized"),
+        "{e}"
+    );
 }

@@ -26,13 +26,11 @@ use cardan_friction::{
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
 use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
 
+// The pressure behind the top ring is the cylinder's above the ambient.
 use crate::engine_losses::{
-    accessories_power, displacement, pumping_power, EngineLosses, ValveTrainLoss,
+    accessories_power, displacement, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
 use crate::summary::tangential;
-
-/// Atmospheric pressure, Pa: the pressure behind the top ring is the cylinder's above it.
-const ATMOSPHERE: f64 = 101_325.0;
 
 /// The lubricant of every lubricated contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -455,7 +453,7 @@ impl LossBudget {
                     let now = state.crank.time;
                     let dt = time.map(|t0| now - t0).filter(|dt| *dt > 0.0);
                     *time = Some(now);
-                    let gauge = pressure.map_or(0.0, |p| (p - ATMOSPHERE).max(0.0));
+                    let gauge = pressure.map_or(0.0, |p| (p - AMBIENT_PRESSURE).max(0.0));
                     let mut power = 0.0;
                     let per_piston = rings.len();
                     for (k, p) in state.pistons.iter().enumerate() {
