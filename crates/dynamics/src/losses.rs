@@ -26,7 +26,6 @@ use cardan_friction::{
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
 use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
 
-// The pressure behind the top ring is the cylinder's above the ambient.
 use crate::engine_losses::{
     accessories_power, displacement, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
