@@ -19,6 +19,8 @@ enum Group {
     Joint(String),
     Torque,
     Gas,
+    /// The rating of the gear meshes.
+    Gears,
     Losses,
     Other,
 }
@@ -30,6 +32,7 @@ impl Group {
             Group::Joint(j) => format!("Joint loads: `{j}`"),
             Group::Torque => "Drive torque, power and work".into(),
             Group::Gas => "Cylinder and gas".into(),
+            Group::Gears => "Gear rating".into(),
             Group::Losses => "Losses and efficiency".into(),
             Group::Other => "Other".into(),
         }
@@ -66,9 +69,13 @@ fn classify(metric: &str, families: &[String]) -> (Group, (usize, (usize, String
     let template = def.map_or("", |d| d.name);
     let group = if metric.starts_with("power_loss")
         || metric.starts_with("friction_")
+        || metric.starts_with("fmep")
+        || metric == "loss_work"
         || metric == "mechanical_efficiency"
     {
         Group::Losses
+    } else if def.is_some_and(|d| d.meaning.starts_with("gear rating")) {
+        Group::Gears
     } else if metric.ends_with("_need_mean") || metric.starts_with("output_") {
         Group::Torque
     } else if let (Some(f), true) = (
