@@ -82,9 +82,13 @@ pub struct Case {
     pub machine: Machine,
     pub geometry: MachineGeometry,
     /// Pistons sharing one cylinder: 1, or 2 for the opposed-piston layout (two identical
-    /// mirrored crank trains, no cylinder head, Nunes 2017). The case runs one crank train;
-    /// the other carries the same loads.
+    /// crank trains, no cylinder head, Nunes 2017). Without a crank phase the trains mirror
+    /// each other: the case runs one, the other carries the same loads.
     pub pistons: u32,
+    /// Lead of the second crank train's crank over the first's, rad (opposed pistons only; 0:
+    /// the two trains mirror each other and one is run). With a lead both trains run, on one
+    /// chamber ([`cardan_gas::Cylinder::with_phased_chamber`]).
+    pub crank_phase: f64,
     pub motion: CrankMotion,
     /// Crank angle at the end of the run, rad.
     pub end_angle: f64,
@@ -128,6 +132,7 @@ struct RawGeometry {
     bore: toml::Value,
     pin_offset: Option<toml::Value>,
     opposed_pistons: Option<bool>,
+    crank_phase: Option<toml::Value>,
 }
 
 #[derive(Deserialize)]
@@ -252,6 +257,27 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         2
     } else {
         1
+    };
+    let crank_phase = match &g.crank_phase {
+        None => 0.0,
+        Some(v) => {
+            let phase = quantity("geometry.crank_phase", v, Dimension::Angle)?;
+            if pistons != 2 {
+                return Err(invalid(
+                    "geometry.crank_phase",
+                    v,
+                    "a phase between two crank trains needs opposed_pistons = true",
+                ));
+            }
+            if phase.abs() > std::f64::consts::FRAC_PI_2 {
+                return Err(invalid(
+                    "geometry.crank_phase",
+                    v,
+                    "must be from -90° to 90° (the second crank's lead over the first)",
+                ));
+            }
+            phase
+        }
     };
 
     let m = &raw.motion;
@@ -450,6 +476,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
         machine,
         geometry,
         pistons,
+        crank_phase,
         motion,
         end_angle,
         steps: m.steps as usize,

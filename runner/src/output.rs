@@ -77,7 +77,7 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
             })
             .collect();
         mechanisms.insert(
-            m.name().to_string(),
+            r.label.clone(),
             json!({
                 "metrics": metrics,
                 "units": units,

@@ -10,15 +10,19 @@ use cardan_dynamics::{
     SummarySink,
 };
 use cardan_gears::mesh_loss::Reading;
-use cardan_mechanism::{Grid, Mechanism};
+use cardan_mechanism::{CrankMotion, Grid, Mechanism};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-/// The result of one mechanism of a case.
+/// The result of one crank train of a case: one per mechanism, two per mechanism in an
+/// opposed-piston case with a crank phase offset.
 #[derive(Debug, Clone)]
 pub struct MechanismResult {
     pub mechanism: Arc<dyn Mechanism>,
+    /// Its name in the outputs (the key in `summary.json`, the CSV's name): the mechanism's
+    /// name, with `_crank2` for the second crank train of a phased opposed-piston case.
+    pub label: String,
     pub summary: Summary,
 }
 
@@ -31,10 +35,14 @@ fn mean_speed(case: &Case) -> f64 {
     }
 }
 
-/// Runs one mechanism of `case`, writing its CSV into `csv_dir` if given.
+/// Runs one crank train of `case`: `mechanism` with its crank `shift` (rad) ahead of the
+/// case's (the second train of a phased opposed-piston case; 0 otherwise), writing its CSV as
+/// `label`.csv into `csv_dir` if given. Both trains' pistons see the one chamber's pressure.
 fn run_mechanism(
     case: &Case,
     mechanism: &dyn Mechanism,
+    shift: f64,
+    label: &str,
     csv_dir: Option<&Path>,
 ) -> Result<Summary, String> {
     let inertial = Inertial(Solver::ClosedForm);
@@ -81,7 +89,7 @@ fn run_mechanism(
     let mut csv = match csv_dir {
         Some(dir) => Some(
             CsvSink::create(
-                &dir.join(format!("{}.csv", mechanism.name())),
+                &dir.join(format!("{label}.csv")),
                 mechanism,
                 &RunLayout {
                     families: &names,
@@ -97,10 +105,14 @@ fn run_mechanism(
         None => None,
     };
     let mut steps = |gas: Option<GasAt>| {
+        let motion = CrankMotion {
+            start_angle: case.motion.start_angle + shift,
+            ..case.motion
+        };
         let mut grid = Grid::new(
-            case.motion,
-            case.motion.start_angle,
-            case.end_angle,
+            motion,
+            motion.start_angle,
+            case.end_angle + shift,
             case.steps,
         );
         let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
@@ -123,12 +135,13 @@ fn run_mechanism(
             let cylinder = gas
                 .cylinder(case.geometry.bore, mechanism.stroke(), case.pistons)
                 .map_err(failed)?;
-            cylinder.with_chamber(mechanism, |chamber| {
+            cylinder.with_phased_chamber(mechanism, case.crank_phase, |chamber| {
                 let prepared = gas
                     .model()
                     .prepare(*chamber, mean_speed(case))
                     .map_err(failed)?;
-                let at = |theta: f64| prepared.at(theta);
+                // The chamber's pressure is a function of the first train's crank angle.
+                let at = |theta: f64| prepared.at(theta - shift);
                 steps(Some(&at))?;
                 Ok::<_, String>(prepared.metrics())
             })?
@@ -168,20 +181,27 @@ fn run_mechanism(
 /// A failure names the file, the case, the mechanism, and the step and quantity that went
 /// wrong.
 pub fn run_case(case: &Case, csv_dir: Option<&Path>) -> Result<Vec<MechanismResult>, String> {
-    let results: Vec<Result<MechanismResult, String>> = case
-        .mechanisms
+    // Each mechanism's crank train, and its second one in a phased opposed-piston case.
+    let mut trains = Vec::new();
+    for m in &case.mechanisms {
+        trains.push((m, 0.0, m.name().to_string()));
+        if case.crank_phase != 0.0 {
+            trains.push((m, case.crank_phase, format!("{}_crank2", m.name())));
+        }
+    }
+    let results: Vec<Result<MechanismResult, String>> = trains
         .par_iter()
-        .map(|m| {
-            let summary = run_mechanism(case, m.as_ref(), csv_dir).map_err(|e| {
+        .map(|(m, shift, label)| {
+            let summary = run_mechanism(case, m.as_ref(), *shift, label, csv_dir).map_err(|e| {
                 format!(
-                    "{}: case \"{}\": {}: {e}",
+                    "{}: case \"{}\": {label}: {e}",
                     case.file.display(),
-                    case.name,
-                    m.name()
+                    case.name
                 )
             })?;
             Ok(MechanismResult {
-                mechanism: m.clone(),
+                mechanism: Arc::clone(m),
+                label: label.clone(),
                 summary,
             })
         })
@@ -377,7 +397,7 @@ fn sweep_csv(points: &[(&Case, &[MechanismResult])]) -> String {
     for (_, results) in points {
         for r in *results {
             for m in &r.summary.metrics {
-                let key = (r.mechanism.name().to_string(), m.name.clone());
+                let key = (r.label.clone(), m.name.clone());
                 if !columns.contains(&key) {
                     columns.push(key);
                 }
@@ -405,7 +425,7 @@ fn sweep_csv(points: &[(&Case, &[MechanismResult])]) -> String {
         for (mechanism, metric) in &columns {
             let value = results
                 .iter()
-                .find(|r| r.mechanism.name() == mechanism)
+                .find(|r| r.label == *mechanism)
                 .and_then(|r| r.summary.get(metric));
             row.push(value.map_or(String::new(), |v| buffer.format(v).to_string()));
         }

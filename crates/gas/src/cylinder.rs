@@ -123,6 +123,39 @@ impl Cylinder {
         })
     }
 
+    /// Runs `f` on the chamber of an opposed-piston cylinder (two pistons) whose second piston's
+    /// crank leads the first's by `phase` (rad): V(θ) = V_comp + A_pis·[(x_TDC − x(θ)) +
+    /// (x_TDC − x(θ + φ))] (Nunes 2017's chamber, each piston on its own crank train, with a
+    /// phase offset between the cranks). The smallest volume, which opens the cycle, is at
+    /// θ_TDC − φ/2 for a motion symmetric about its top dead centre (every in-line mechanism);
+    /// with φ ≠ 0 it exceeds V_comp, so the compression ratio given for the cylinder is the
+    /// zero-offset one. With `phase` = 0 this is [`Cylinder::with_chamber`].
+    pub fn with_phased_chamber<R>(
+        self,
+        mechanism: &dyn Mechanism,
+        phase: f64,
+        f: impl FnOnce(&Chamber) -> R,
+    ) -> R {
+        if phase == 0.0 || self.pistons != 2 {
+            return self.with_chamber(mechanism, f);
+        }
+        let (clearance, area) = (self.clearance_volume, self.area);
+        let top = mechanism.piston_top();
+        let volume = move |theta: f64| {
+            let (x1, dx1) = mechanism.piston_position(theta);
+            let (x2, dx2) = mechanism.piston_position(theta + phase);
+            Volume {
+                volume: clearance + area * (2.0 * top - x1 - x2),
+                rate: -area * (dx1 + dx2),
+            }
+        };
+        f(&Chamber {
+            cylinder: self,
+            tdc_angle: mechanism.top_dead_centre() - phase / 2.0,
+            volume: &volume,
+        })
+    }
+
     /// Gas-side wall area at volume `v`, m²: two flat ends (crown and head, or two crowns)
     /// and the liner between them, 2·A_pis + π·B·V/A_pis (Nunes 2017, L700-703).
     pub fn wall_area(&self, v: f64) -> f64 {
