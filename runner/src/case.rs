@@ -6,7 +6,6 @@
 use crate::gas::GasCase;
 use crate::units::{is_folder_name, to_si, Dimension};
 use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget};
-use cardan_gears::mesh_loss::Reading;
 use cardan_mechanism::{
     CrankMotion, MachineGeometry, MassInputs, Material, Mechanism, OptionKind, OptionValue, Options,
 };
@@ -422,7 +421,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
             let spec = crate::gear::parse(table, &invalid)?;
             let mut meshes = 0;
             for m in &mechanisms {
-                let ratings = GearRatings::new(&spec, m.as_ref(), Reading::Corrected, 5e-6, 900.0)
+                let ratings = GearRatings::new(&spec, m.as_ref(), None)
                     .map_err(|e| invalid(&e.field, &format!("(for the {})", m.name()), &e.rule))?;
                 meshes += ratings.names().len();
             }

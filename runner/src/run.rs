@@ -9,7 +9,6 @@ use cardan_dynamics::{
     run, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Sink, Solver, Stages, Summary,
     SummarySink,
 };
-use cardan_gears::mesh_loss::Reading;
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -62,19 +61,8 @@ fn run_mechanism(
     let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
     let gears = match &case.gear {
         Some(spec) => {
-            // The rating's mesh loss in the friction table's reading and oil, if it has them.
-            let (reading, oil) = match &case.friction {
-                Some(f) => (f.gear_mesh.map_or(Reading::Corrected, |g| g.reading), f.oil),
-                None => (Reading::Corrected, cardan_dynamics::Friction::karhula().oil),
-            };
-            let ratings = GearRatings::new(
-                spec,
-                mechanism,
-                reading,
-                oil.kinematic_viscosity,
-                oil.density,
-            )
-            .map_err(|e| format!("{}: {}", e.field, e.rule))?;
+            let ratings = GearRatings::new(spec, mechanism, case.friction.as_ref())
+                .map_err(|e| format!("{}: {}", e.field, e.rule))?;
             (!ratings.names().is_empty()).then_some(ratings)
         }
         None => None,

@@ -21,7 +21,7 @@ use cardan_gears::mesh_loss::{Lubricant, MeshSpeeds, Reading};
 use cardan_gears::{pitting_geometry_factor, GearSet, IForm, MeshStep, ShiftCase};
 use cardan_mechanism::{JointKind, Loads, Mechanism, State};
 
-use crate::losses::LossError;
+use crate::losses::{Friction, LossError};
 use crate::summary::tangential;
 
 /// Which force the rating takes as the tooth load.
@@ -147,6 +147,22 @@ pub fn mesh_pair(
     Ok((pair, face_width))
 }
 
+/// The speeds of a mesh joint `joint` whose pinion is on `body` with pitch radius
+/// `pitch_radius` (m): the pinion's absolute angular speed, and the carrier's from the joint's
+/// relative speed, which is the pitch-line speed relative to the carrier.
+pub(crate) fn mesh_speeds(
+    state: &State,
+    joint: usize,
+    body: usize,
+    pitch_radius: f64,
+) -> MeshSpeeds {
+    let pinion = state.bodies[body].angular_velocity;
+    MeshSpeeds {
+        pinion_absolute: pinion,
+        carrier: pinion - state.joints[joint].relative_speed / pitch_radius,
+    }
+}
+
 /// One mesh's rating at one step.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct MeshRating {
@@ -183,19 +199,21 @@ struct Rated {
     sets: f64,
     bending: bool,
     tooth_load: ToothLoad,
-    contact_ratio: f64,
 }
 
 impl GearRatings {
-    /// The ratings of every gear mesh of `mechanism` under `spec`, the mesh loss in `reading`
-    /// with oil of kinematic viscosity `oil_viscosity` (m²/s) and density `oil_density` (kg/m³).
+    /// The ratings of every gear mesh of `mechanism` under `spec`, the mesh loss in the reading
+    /// and oil of `friction` (its gear-mesh reading and its oil), or without one in the corrected
+    /// reading with Karhula's oil ([`Friction::karhula`]).
     pub fn new(
         spec: &GearSpec,
         mechanism: &dyn Mechanism,
-        reading: Reading,
-        oil_viscosity: f64,
-        oil_density: f64,
+        friction: Option<&Friction>,
     ) -> Result<Self, LossError> {
+        let (reading, oil) = match friction {
+            Some(f) => (f.gear_mesh.map_or(Reading::Corrected, |g| g.reading), f.oil),
+            None => (Reading::Corrected, Friction::karhula().oil),
+        };
         let failed = |field: &str, e: &dyn std::fmt::Display| LossError {
             field: field.into(),
             rule: e.to_string(),
@@ -286,8 +304,8 @@ impl GearRatings {
                 quality: Quality::Qv(spec.quality),
                 rating,
                 lubricant: Lubricant {
-                    kinematic_viscosity: oil_viscosity,
-                    density: oil_density,
+                    kinematic_viscosity: oil.kinematic_viscosity,
+                    density: oil.density,
                 },
                 loss_reading: reading,
             };
@@ -295,7 +313,6 @@ impl GearRatings {
                 joint: k,
                 body: j.body,
                 name: j.name,
-                contact_ratio: set.pair.contact_ratio,
                 set,
                 pitch_radius,
                 sets: if spec.twin { 2.0 } else { 1.0 },
@@ -313,7 +330,10 @@ impl GearRatings {
 
     /// Transverse contact ratio of each rated mesh.
     pub fn contact_ratios(&self) -> Vec<f64> {
-        self.meshes.iter().map(|m| m.contact_ratio).collect()
+        self.meshes
+            .iter()
+            .map(|m| m.set.pair.contact_ratio)
+            .collect()
     }
 
     /// Whether each mesh gets a bending rating (its J is known).
@@ -335,14 +355,10 @@ impl GearRatings {
                 ToothLoad::Tangential => tangential(force, motion).abs(),
                 ToothLoad::RingForce => force.norm(),
             } / m.sets;
-            let pinion = state.bodies[m.body].angular_velocity;
             let step = MeshStep {
                 tangential_load: load,
                 pitch_line_velocity: motion.relative_speed,
-                speeds: MeshSpeeds {
-                    pinion_absolute: pinion,
-                    carrier: pinion - motion.relative_speed / m.pitch_radius,
-                },
+                speeds: mesh_speeds(state, m.joint, m.body, m.pitch_radius),
             };
             let r = m
                 .set

@@ -17,13 +17,13 @@
 //! - of an engine ([`Friction::engine`]) with a cylinder, each if switched on: `valve_train`,
 //!   `accessories`, `pumping` ([`crate::engine_losses`]), at the step's crank speed.
 
-use crate::gear_rating::{mesh_pair, GearSpec};
+use crate::gear_rating::{mesh_pair, mesh_speeds, GearSpec};
 use cardan_friction::{
     coulomb_sliding, petroff, rolling_bearing_loss, short_bearing, viscous_skirt, AsperityContact,
     JournalBearing, KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing,
     RollingReading, ViscousSkirt, KARHULA_LOAD_CONSTANT,
 };
-use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
+use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, Reading};
 use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
 
 use crate::engine_losses::{
@@ -533,14 +533,8 @@ impl LossBudget {
                     reading,
                     pitch_radius,
                 } => {
-                    let motion = &state.joints[*joint];
-                    let ft = tangential(total.joints[*joint].force, motion);
-                    let pinion = state.bodies[*body].angular_velocity;
-                    // The mesh's relative speed is the pitch-line speed relative to the carrier.
-                    let speeds = MeshSpeeds {
-                        pinion_absolute: pinion,
-                        carrier: pinion - motion.relative_speed / *pitch_radius,
-                    };
+                    let ft = tangential(total.joints[*joint].force, &state.joints[*joint]);
+                    let speeds = mesh_speeds(state, *joint, *body, *pitch_radius);
                     mesh_loss(geometry, lubricant, &speeds, ft, *reading)
                         .map_err(|e| format!("gear mesh loss: {e}"))?
                         .total_power

@@ -6,7 +6,6 @@
 mod common;
 
 use cardan_dynamics::{GearRatings, GearSpec, MeshRating, ToothLoad};
-use cardan_gears::mesh_loss::Reading;
 use cardan_mechanism::{CrankState, Loads, Material, C};
 use common::thesis;
 use std::f64::consts::PI;
@@ -43,7 +42,7 @@ fn rate(spec: &GearSpec, w: f64, force: C) -> (MeshRating, C) {
     let mut loads = Loads::for_topology(m.topology());
     let d = state.joints[mesh].direction;
     loads.joints[mesh].force = force.re * C::i() * d + force.im * d;
-    let ratings = GearRatings::new(spec, m.as_ref(), Reading::Corrected, 5e-6, 900.0).unwrap();
+    let ratings = GearRatings::new(spec, m.as_ref(), None).unwrap();
     assert_eq!(ratings.names(), ["gear_mesh"]);
     let mut out = [MeshRating::default()];
     ratings.evaluate(&state, &loads, &mut out).unwrap();
@@ -110,7 +109,7 @@ fn an_interfering_pair_is_refused_with_its_remedy() {
         ring_addendum: 1.0,
         ..GearSpec::default()
     };
-    let e = GearRatings::new(&spec, m.as_ref(), Reading::Corrected, 5e-6, 900.0).unwrap_err();
+    let e = GearRatings::new(&spec, m.as_ref(), None).unwrap_err();
     assert_eq!(e.field, "gear.ring_addendum");
     assert!(e.rule.contains("shorten the ring addendum"), "{}", e.rule);
     // 25 teeth on the wheel do not (the module follows: 2·30 mm / 25).
@@ -119,16 +118,9 @@ fn an_interfering_pair_is_refused_with_its_remedy() {
         ring_addendum: 1.0,
         ..GearSpec::default()
     };
-    assert!(GearRatings::new(&spec, m.as_ref(), Reading::Corrected, 5e-6, 900.0).is_ok());
+    assert!(GearRatings::new(&spec, m.as_ref(), None).is_ok());
     // Karhula's pair with the 0.8-module ring addendum: εα = 1.765 (configs-gears).
-    let r = GearRatings::new(
-        &GearSpec::default(),
-        m.as_ref(),
-        Reading::Corrected,
-        5e-6,
-        900.0,
-    )
-    .unwrap();
+    let r = GearRatings::new(&GearSpec::default(), m.as_ref(), None).unwrap();
     assert!(
         (r.contact_ratios()[0] - 1.765).abs() < 5e-4,
         "{:?}",
