@@ -37,6 +37,10 @@ enum Command {
         /// Write no per-step CSV, whatever the cases' output tables say.
         #[arg(long)]
         no_csv: bool,
+        /// Write every case's per-step NPY file (binary, column after column, with
+        /// MECHANISM.columns.json), whatever the cases' output tables say.
+        #[arg(long)]
+        npy: bool,
         /// Run only the cases whose name matches PATTERN (`*` matches anything; without `*`,
         /// any name containing PATTERN).
         #[arg(long, value_name = "PATTERN")]
@@ -140,6 +144,7 @@ fn main() -> ExitCode {
             out,
             jobs,
             no_csv,
+            npy,
             only,
             quiet,
             no_report,
@@ -154,6 +159,7 @@ fn main() -> ExitCode {
             let options = RunOptions {
                 jobs,
                 csv: no_csv.then_some(false),
+                npy: npy.then_some(true),
                 only,
                 reports: !no_report,
                 progress: Some(std::sync::Arc::new(move |done, total| {

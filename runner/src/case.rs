@@ -56,6 +56,8 @@ impl Machine {
 pub struct OutputOptions {
     /// Write `<mechanism>.csv`, one row per step.
     pub csv: bool,
+    /// Write `<mechanism>.npy` (binary, column after column) and `<mechanism>.columns.json`.
+    pub npy: bool,
     /// Write every n-th step (and the last).
     pub decimation: usize,
     /// Significant digits of the CSV numbers; `None`: the shortest text that reads back to
@@ -67,6 +69,7 @@ impl Default for OutputOptions {
     fn default() -> Self {
         Self {
             csv: true,
+            npy: false,
             decimation: 1,
             significant_digits: None,
         }
@@ -148,6 +151,7 @@ struct RawMotion {
 #[serde(deny_unknown_fields)]
 struct RawOutput {
     csv: Option<bool>,
+    npy: Option<bool>,
     decimation: Option<i64>,
     significant_digits: Option<i64>,
 }
@@ -492,6 +496,7 @@ fn output_options(raw: Option<&RawOutput>, invalid: &Invalid) -> Result<OutputOp
     let mut o = OutputOptions::default();
     let Some(raw) = raw else { return Ok(o) };
     o.csv = raw.csv.unwrap_or(true);
+    o.npy = raw.npy.unwrap_or(false);
     if let Some(d) = raw.decimation {
         if d < 1 {
             return Err(invalid(

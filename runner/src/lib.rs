@@ -1,6 +1,6 @@
 //! The batch runner: TOML case files → validated cases → mechanism runs in parallel, each step
-//! streamed to the summary and the per-step CSV → `summary.json` and one CSV per mechanism per
-//! case. Physics lives in the `cardan-*` crates; this crate only reads, validates, schedules and
+//! streamed to the summary and the per-step files → `summary.json` and, per mechanism, a CSV
+//! and/or an NPY file per case. Physics lives in the `cardan-*` crates; this crate only reads, validates, schedules and
 //! writes.
 
 pub mod case;
@@ -9,6 +9,7 @@ pub mod gas;
 pub mod gear;
 pub mod gear_file;
 pub mod output;
+pub mod per_step;
 pub mod report;
 pub mod run;
 pub mod sweep;

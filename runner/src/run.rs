@@ -2,7 +2,8 @@
 //! one failure (an error or a panic) never stops the rest.
 
 use crate::case::{self, Case, CaseError};
-use crate::output::{self, CsvSink, RunLayout};
+use crate::output;
+use crate::per_step::{PerStepSink, RunLayout};
 use anyhow::Context;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
@@ -36,13 +37,13 @@ fn mean_speed(case: &Case) -> f64 {
 
 /// Runs one crank train of `case`: `mechanism` with its crank `shift` (rad) ahead of the
 /// case's (the second train of a phased opposed-piston case; 0 otherwise), writing its CSV as
-/// `label`.csv into `csv_dir` if given. Both trains' pistons see the one chamber's pressure.
+/// its per-step files (named `label`, as `case.output` asks) into `dir` if given. Both trains' pistons see the one chamber's pressure.
 fn run_mechanism(
     case: &Case,
     mechanism: &dyn Mechanism,
     shift: f64,
     label: &str,
-    csv_dir: Option<&Path>,
+    dir: Option<&Path>,
 ) -> Result<Summary, String> {
     let inertial = Inertial(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
@@ -74,22 +75,21 @@ fn run_mechanism(
     if let Some(g) = &gears {
         summary = summary.with_gears(g);
     }
-    let mut csv = match csv_dir {
-        Some(dir) => Some(
-            CsvSink::create(
-                &dir.join(format!("{label}.csv")),
-                mechanism,
-                &RunLayout {
-                    families: &names,
-                    gas: case.gas.is_some(),
-                    losses: &loss_names,
-                    gears: gears.as_ref(),
-                },
-                case.output,
-                case.steps,
-            )
-            .map_err(|e| format!("{e:#}"))?,
-        ),
+    let mut per_step = match dir {
+        Some(dir) => PerStepSink::create(
+            dir,
+            label,
+            mechanism,
+            &RunLayout {
+                families: &names,
+                gas: case.gas.is_some(),
+                losses: &loss_names,
+                gears: gears.as_ref(),
+            },
+            case.output,
+            case.steps,
+        )
+        .map_err(|e| format!("{e:#}"))?,
         None => None,
     };
     let mut steps = |gas: Option<GasAt>| {
@@ -104,8 +104,8 @@ fn run_mechanism(
             case.steps,
         );
         let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
-        if let Some(c) = csv.as_mut() {
-            sinks.push(c);
+        if let Some(p) = per_step.as_mut() {
+            sinks.push(p);
         }
         let stages = Stages {
             losses: losses.as_mut(),
@@ -158,17 +158,18 @@ fn run_mechanism(
             summary.push(name, value);
         }
     }
-    if let Some(c) = csv {
-        c.finish()
-            .map_err(|e| format!("cannot write the CSV: {e:#}"))?;
+    if let Some(p) = per_step {
+        p.finish()
+            .map_err(|e| format!("cannot write the per-step files: {e:#}"))?;
     }
     Ok(summary)
 }
 
-/// Runs every mechanism of a case (in parallel), writing their CSVs into `csv_dir` if given.
+/// Runs every mechanism of a case (in parallel), writing their per-step files into `dir` if
+/// given (as the case's `[output]` asks).
 /// A failure names the file, the case, the mechanism, and the step and quantity that went
 /// wrong.
-pub fn run_case(case: &Case, csv_dir: Option<&Path>) -> Result<Vec<MechanismResult>, String> {
+pub fn run_case(case: &Case, dir: Option<&Path>) -> Result<Vec<MechanismResult>, String> {
     // Each mechanism's crank train, and its second one in a phased opposed-piston case.
     let mut trains = Vec::new();
     for m in &case.mechanisms {
@@ -180,7 +181,7 @@ pub fn run_case(case: &Case, csv_dir: Option<&Path>) -> Result<Vec<MechanismResu
     let results: Vec<Result<MechanismResult, String>> = trains
         .par_iter()
         .map(|(m, shift, label)| {
-            let summary = run_mechanism(case, m.as_ref(), *shift, label, csv_dir).map_err(|e| {
+            let summary = run_mechanism(case, m.as_ref(), *shift, label, dir).map_err(|e| {
                 format!(
                     "{}: case \"{}\": {label}: {e}",
                     case.file.display(),
@@ -213,6 +214,8 @@ pub struct RunOptions {
     pub jobs: Option<usize>,
     /// Overrides every case's `[output] csv`.
     pub csv: Option<bool>,
+    /// Overrides every case's `[output] npy`.
+    pub npy: Option<bool>,
     /// Runs only the cases whose name matches this pattern (`*` matches any run of
     /// characters; without a `*`, any name containing it).
     pub only: Option<String>,
@@ -228,6 +231,7 @@ impl std::fmt::Debug for RunOptions {
         f.debug_struct("RunOptions")
             .field("jobs", &self.jobs)
             .field("csv", &self.csv)
+            .field("npy", &self.npy)
             .field("only", &self.only)
             .field("reports", &self.reports)
             .finish_non_exhaustive()
@@ -356,8 +360,7 @@ fn run_and_write(
         )
     };
     let tmp = output::temporary_dir(&dir).map_err(cannot_write)?;
-    let csv = options.csv.unwrap_or(case.output.csv);
-    let result = run_case(case, csv.then_some(tmp.as_path())).and_then(|results| {
+    let result = run_case(case, Some(&tmp)).and_then(|results| {
         let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
             .map_err(|e| e.to_string())?;
         summary.push('\n');
@@ -402,7 +405,7 @@ fn sweep_csv(points: &[(&Case, &[MechanismResult])]) -> String {
     header.extend(swept.iter().cloned());
     header.extend(columns.iter().map(|(m, k)| format!("{m}.{k}")));
     let _ = w.write_record(&header);
-    let mut buffer = ryu::Buffer::new();
+    let mut buffer = zmij::Buffer::new();
     for (case, results) in points {
         let mut row = vec![case.name.clone()];
         row.extend(
@@ -429,6 +432,10 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let (mut cases, failures) = load_cases(paths);
     if let Some(pattern) = &options.only {
         cases.retain(|c| matches_pattern(pattern, &c.name));
+    }
+    for case in &mut cases {
+        case.output.csv = options.csv.unwrap_or(case.output.csv);
+        case.output.npy = options.npy.unwrap_or(case.output.npy);
     }
     let done = std::sync::atomic::AtomicUsize::new(0);
     let mut report = Report {

@@ -15,7 +15,7 @@ pub fn sections() -> Vec<(&'static str, String)> {
 
 fn columns_table() -> String {
     let mut t = String::from("| column | meaning |\n|---|---|\n");
-    for (name, meaning) in cardan_runner::output::COLUMNS {
+    for (name, meaning) in cardan_runner::per_step::COLUMNS {
         t.push_str(&format!("| `{name}` | {meaning} |\n"));
     }
     t
