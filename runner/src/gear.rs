@@ -146,11 +146,12 @@ pub fn parse(table: &toml::Table, invalid: &Invalid) -> Result<GearSpec, CaseErr
                 g.tooth_load = match value.as_str() {
                     Some("tangential") => ToothLoad::Tangential,
                     Some("ring_force") => ToothLoad::RingForce,
+                    Some("thesis") => ToothLoad::Thesis,
                     _ => {
                         return Err(invalid(
                             &path,
                             value,
-                            "must be \"tangential\" (the mesh force along the pitch-circle tangent, A8.1.10) or \"ring_force\" (its magnitude)",
+                            "must be \"tangential\" (the mesh force along the pitch-circle tangent, A8.1.10) or \"ring_force\" (its magnitude) or \"thesis\" (Karhula's reading that reproduces his published dynamic tooth loads)",
                         ))
                     }
                 };

@@ -45,6 +45,12 @@ const ENGINE_EFFICIENCY: [[f64; 6]; 2] = [
     [0.836, 0.855, 0.860, 0.859, 0.853, 0.832],
 ];
 
+/// The cardan gear's dynamic tooth load (N): air pump (steel links), engine (titanium rod).
+const DYNAMIC_TOOTH_LOAD: [[f64; 6]; 2] = [
+    [48380.0, 49010.0, 55580.0, 56990.0, 62730.0, 81590.0],
+    [119100.0, 119700.0, 124300.0, 125400.0, 129300.0, 139700.0],
+];
+
 const MECHANISMS: [&str; 2] = ["slider_crank", "cardan_gear"];
 
 /// Every metric of both mechanisms at every speed of a shipped sweep, keyed by ω0/π.
@@ -165,6 +171,41 @@ fn the_engine_reproduces_the_thesis_efficiency_table() {
         // 30π; at 30π its two efficiencies differ by 0.002).
         if *w >= 100.0 {
             assert!(c["mechanical_efficiency"] > s["mechanical_efficiency"]);
+        }
+    }
+}
+
+/// The shipped sweeps rate the cardan pair in the `thesis` tooth-load reading (README.md, "Gear
+/// rating in runs"). Tolerances: the pump within 1.2 %, the engine within 0.4 %: the loads at
+/// 3π rad/s (no inertia) are 0.2 % / 0.1 % off, the level of this project's gas torque against
+/// the thesis's (578.8 vs 576 N·m, 2693 vs 2701 N·m); the pump's peak falls 30-40° before top
+/// dead centre from 110π rad/s up, where its pressure curve and the thesis's differ most
+/// (observed worst +1.12 % at 140π). Without the wheel's inertia (the reading's inferred part)
+/// the pump would be 1.7-7.2 % low from 100π up.
+#[test]
+fn the_cardan_pair_reproduces_the_thesis_dynamic_tooth_loads() {
+    for (k, (file, tolerance)) in [
+        ("karhula-pump-speed-sweep.toml", 0.012),
+        ("karhula-engine-speed-sweep.toml", 0.004),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let runs = sweep(file);
+        for (i, w) in SPEEDS.iter().enumerate() {
+            let c = &runs[&(*w as u64)][1];
+            eprintln!(
+                "{file} {w}π: {:.0} N (thesis {}), tangential {:.0} N",
+                c["dynamic_tooth_load_max"],
+                DYNAMIC_TOOTH_LOAD[k][i],
+                c["mesh_tangential_load_max"]
+            );
+            relative(
+                &format!("{file} at {w}π rad/s: dynamic_tooth_load_max"),
+                c["dynamic_tooth_load_max"],
+                DYNAMIC_TOOTH_LOAD[k][i],
+                tolerance,
+            );
         }
     }
 }

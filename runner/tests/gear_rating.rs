@@ -128,3 +128,39 @@ fn carburized_gears_raise_the_safety_factors_by_their_allowables() {
         "{e}"
     );
 }
+
+/// With `[friction]` and `[gear]`, the loss budget's mesh component and the rating's mesh loss
+/// are one figure in every tooth-load reading and for single and twin sets: the loss is charged
+/// on the tangential load, shared by the sets (issue "Gears", review finding).
+#[test]
+fn the_mesh_loss_of_the_budget_and_of_the_rating_agree() {
+    let mut losses = Vec::new();
+    for gear in [
+        "[gear]\n",
+        "[gear]\ntwin = true\n",
+        "[gear]\ntwin = true\ntooth_load = \"ring_force\"\n",
+        "[gear]\ntooth_load = \"thesis\"\n",
+    ] {
+        let text = pump(&format!("[friction]\n{gear}"));
+        let case = parse(Path::new("pump.toml"), &text).unwrap();
+        let results = run_case(&case, None).unwrap();
+        let cardan = results
+            .iter()
+            .find(|r| r.summary.get("gear_mesh_power_loss_mean").is_some())
+            .unwrap();
+        let rating = cardan.summary.get("gear_mesh_power_loss_mean").unwrap();
+        let budget = cardan.summary.get("power_loss_mean_gear_mesh").unwrap();
+        assert!(rating > 0.0);
+        assert!(
+            (rating / budget - 1.0).abs() < 1e-12,
+            "{gear}: rating {rating} W, budget {budget} W"
+        );
+        losses.push(rating);
+    }
+    // The twin sets are charged as two sets at half the load each, not as one set.
+    eprintln!("mesh loss: single {} W, twin {} W", losses[0], losses[1]);
+    assert!((losses[1] / losses[0] - 1.0).abs() > 1e-3);
+    // The rated load does not change the loss: ring-force rating, same loss as tangential.
+    assert_eq!(losses[1], losses[2]);
+    assert_eq!(losses[0], losses[3]);
+}

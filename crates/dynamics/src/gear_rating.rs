@@ -5,10 +5,10 @@
 //! ratio, pressure angle and internal ring, and the case's [`GearSpec`]; no mechanism code.
 //!
 //! The tooth load is the mesh force along the pitch-circle tangent (A8.1.10, A9.1.44), in either
-//! mesh-force reading of the cardan gear. [`ToothLoad::RingForce`] rates the magnitude of the
-//! ring's force instead: the thesis's dynamic tooth loads are far above what its tangential
-//! loads give (48 380 N at 3π rad/s against a tangential load below 10 kN), and the magnitude is
-//! the nearest reading we found (README, "Gear rating in runs", has the comparison).
+//! mesh-force reading of the cardan gear. [`ToothLoad::Thesis`] is the reading that reproduces
+//! Karhula's published dynamic tooth loads (App. 11.6.1); [`ToothLoad::RingForce`] rates the
+//! magnitude of the mesh force. The mesh loss is always charged on the tangential load, whatever
+//! load is rated, so that it equals the loss budget's mesh component.
 
 use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, carburized_allowables, contact_allowable_through_hardened,
@@ -19,7 +19,7 @@ use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
 use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::{Lubricant, MeshSpeeds, Reading};
 use cardan_gears::{pitting_geometry_factor, GearSet, IForm, MeshStep, ShiftCase};
-use cardan_mechanism::{JointKind, Loads, Mechanism, State};
+use cardan_mechanism::{JointKind, Loads, Material, Mechanism, State, C};
 
 use crate::losses::{Friction, LossError};
 use crate::summary::tangential;
@@ -32,6 +32,23 @@ pub enum ToothLoad {
     Tangential,
     /// The magnitude of the mesh force (the thesis's ring force |F_Σ02c|).
     RingForce,
+    /// Karhula's reading, which reproduces his published dynamic tooth loads of the cardan gear
+    /// (App. 11.6.1: air pump within 1.2 %, engine within 0.4 %; README "Gear rating in runs")
+    /// with the `karhula` mesh-force reading:
+    /// - the mesh force of A8.1.10 with the thesis's sign slip: A6.2.1.36 and A6.2.1.51 give
+    ///   the ring force the gas force's sign (F_comp02c = +F_comp23c) where A5.2.1.49 gives
+    ///   the inertial force the opposite one (F_3i02c = −F_3i23c), so A7.1.15 adds what
+    ///   physically cancels: gas − inertial, i.e. total − 2·inertial;
+    /// - plus the cardan wheel's own translational inertia force (inferred, not printed: the
+    ///   thesis's model gives the wheel only a torque, A5.2.1.43-46, and this project, as the
+    ///   thesis, carries the wheel's mass on the balanced crankshaft): the wheel is the steel
+    ///   disc of A8.1.5 of its pitch diameter and face width (0.444 kg for Karhula's pair, not
+    ///   fitted); without it the pump's loads at 100π-200π rad/s are 1.7-7.2 % low;
+    /// - its part along the cylinder axis, projected on the pitch-circle tangent (A8.1.10; the
+    ///   thesis's ring force is axial), as a magnitude;
+    /// - Buckingham's load in its saturated limit
+    ///   ([`BuckinghamPair::saturated_dynamic_load`]).
+    Thesis,
 }
 
 /// The gears' steel, for the AGMA allowable stress numbers (grade 2).
@@ -199,6 +216,11 @@ struct Rated {
     sets: f64,
     bending: bool,
     tooth_load: ToothLoad,
+    /// The mesh's first gear as a solid steel disc of its pitch diameter and the rated face
+    /// width, m = ρ·b·π·d²/4, kg (A8.1.5, A8.1.9; the wheel's mass of [`ToothLoad::Thesis`]).
+    disc_mass: f64,
+    /// Unit vector of the cylinder axis (the first piston's; +y without a piston).
+    axis: C,
 }
 
 impl GearRatings {
@@ -218,8 +240,10 @@ impl GearRatings {
             field: field.into(),
             rule: e.to_string(),
         };
+        let topology = mechanism.topology();
+        let axis = topology.pistons.first().map_or(C::i(), |p| p.axis);
         let mut meshes = Vec::new();
-        for (k, j) in mechanism.topology().joints.iter().enumerate() {
+        for (k, j) in topology.joints.iter().enumerate() {
             let JointKind::GearMesh {
                 ratio,
                 pitch_radius,
@@ -318,6 +342,12 @@ impl GearRatings {
                 sets: if spec.twin { 2.0 } else { 1.0 },
                 bending: j_factors.is_some(),
                 tooth_load: spec.tooth_load,
+                disc_mass: Material::Steel.density()
+                    * face_width
+                    * std::f64::consts::PI
+                    * pitch_radius
+                    * pitch_radius,
+                axis,
             });
         }
         Ok(Self { meshes })
@@ -341,29 +371,54 @@ impl GearRatings {
         self.meshes.iter().map(|m| m.bending).collect()
     }
 
-    /// Each mesh's rating at `state` under the `total` loads, into `out`.
+    /// Each mesh's rating at `state` under the `total` loads (and the `inertial` family's, which
+    /// [`ToothLoad::Thesis`] needs; `None` without one), into `out`.
     pub fn evaluate(
         &self,
         state: &State,
         total: &Loads,
+        inertial: Option<&Loads>,
         out: &mut [MeshRating],
     ) -> Result<(), String> {
         for (m, out) in self.meshes.iter().zip(out.iter_mut()) {
             let motion = &state.joints[m.joint];
             let force = total.joints[m.joint].force;
-            let load = match m.tooth_load {
-                ToothLoad::Tangential => tangential(force, motion).abs(),
-                ToothLoad::RingForce => force.norm(),
-            } / m.sets;
+            let tangential_load = tangential(force, motion).abs() / m.sets;
             let step = MeshStep {
-                tangential_load: load,
+                tangential_load,
                 pitch_line_velocity: motion.relative_speed,
                 speeds: mesh_speeds(state, m.joint, m.body, m.pitch_radius),
             };
-            let r = m
-                .set
-                .evaluate(&step)
-                .map_err(|e| format!("gear rating of {}: {e}", m.name))?;
+            let failed = |e: cardan_gears::GearError| format!("gear rating of {}: {e}", m.name);
+            let mut r = m.set.evaluate(&step).map_err(failed)?;
+            let load = match m.tooth_load {
+                ToothLoad::Tangential => tangential_load,
+                ToothLoad::RingForce => force.norm() / m.sets,
+                ToothLoad::Thesis => {
+                    let inertial = inertial.map_or(C::new(0.0, 0.0), |l| l.joints[m.joint].force);
+                    let wheel = m.disc_mass * state.bodies[m.body].cg.acceleration;
+                    let slipped = force - 2.0 * inertial + wheel;
+                    let axial = m.axis * (slipped.re * m.axis.re + slipped.im * m.axis.im);
+                    tangential(axial, motion).abs() / m.sets
+                }
+            };
+            // Another rated load: the rating and Buckingham's load at it (the loss stays on the
+            // tangential load).
+            if m.tooth_load != ToothLoad::Tangential {
+                r.dynamic = if m.tooth_load == ToothLoad::Thesis {
+                    m.set.buckingham.saturated_dynamic_load(load)
+                } else {
+                    m.set
+                        .buckingham
+                        .dynamic_load(load, motion.relative_speed.abs())
+                }
+                .map_err(failed)?;
+                r.rating = m
+                    .set
+                    .rating
+                    .rate(load, r.kv.kv, m.set.face_width)
+                    .map_err(failed)?;
+            }
             let (bending_stress, bending_safety) = if m.bending {
                 (
                     r.rating.bending_stress[0].max(r.rating.bending_stress[1]),

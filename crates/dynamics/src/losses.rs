@@ -234,6 +234,9 @@ enum Part {
         lubricant: Lubricant,
         reading: Reading,
         pitch_radius: f64,
+        /// Gear sets sharing the load (2 for a twin set): each carries its share and loses
+        /// its own, as in the gear rating.
+        sets: f64,
     },
     /// The cylinder's valve train.
     ValveTrain(ValveTrainLoss),
@@ -390,6 +393,7 @@ impl LossBudget {
                         },
                         reading: mesh.reading,
                         pitch_radius,
+                        sets: if mesh.pair.twin { 2.0 } else { 1.0 },
                     });
                 }
             }
@@ -532,12 +536,14 @@ impl LossBudget {
                     lubricant,
                     reading,
                     pitch_radius,
+                    sets,
                 } => {
                     let ft = tangential(total.joints[*joint].force, &state.joints[*joint]);
                     let speeds = mesh_speeds(state, *joint, *body, *pitch_radius);
-                    mesh_loss(geometry, lubricant, &speeds, ft, *reading)
-                        .map_err(|e| format!("gear mesh loss: {e}"))?
-                        .total_power
+                    *sets
+                        * mesh_loss(geometry, lubricant, &speeds, ft / *sets, *reading)
+                            .map_err(|e| format!("gear mesh loss: {e}"))?
+                            .total_power
                 }
                 Part::ValveTrain(train) => train.power(
                     state.crank.angle,

@@ -104,6 +104,7 @@ pub fn run(
     let mut previous_torque = None;
     let mut index = 0;
     let details = sinks.iter().any(|s| s.wants_details());
+    let inertial = families.iter().position(|f| f.inertia());
     while let Some(crank) = motion.next(previous_torque) {
         let crank = crank.map_err(|source| RunError::Motion {
             step: index,
@@ -163,7 +164,7 @@ pub fn run(
             }
         }
         if let Some(g) = gears {
-            g.evaluate(&state, total, &mut ratings)
+            g.evaluate(&state, total, inertial.map(|k| &loads[k]), &mut ratings)
                 .map_err(|message| RunError::Sink {
                     step: index,
                     message,

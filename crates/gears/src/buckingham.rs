@@ -136,6 +136,34 @@ impl BuckinghamPair {
     }
 }
 
+impl BuckinghamPair {
+    /// The limit of the chain for an effective mass without bound (f1 → ∞ in A8.1.13): the
+    /// acceleration load reaches f2 and A8.1.14 becomes `Fdyn = Ft + f2 = 2·Ft + b·e/(k·(1/E1 +
+    /// 1/E2))` at any speed. Karhula's published dynamic tooth loads (App. 11.6.1) follow this
+    /// limit to within 1 % (their values at 3π rad/s for the pump and the engine fix the
+    /// intercept b·e/(k·(1/E1+1/E2)) = 29.2 kN of his 20-tooth pair, e = 0.005 in, E = 30·10⁶
+    /// psi), although his own f1 (A8.1.8) is 10⁴ times smaller than that would need; some unit
+    /// slip in A8.1.5-8 must have made f1 huge, and the table cannot tell which. For
+    /// [`crate::GearSet`] users who reproduce the thesis; [`Self::dynamic_load`] is the chain.
+    pub fn saturated_dynamic_load(&self, ft: f64) -> Result<DynamicLoad, GearError> {
+        positive("face_width", self.face_width)?;
+        non_negative("error", self.error)?;
+        positive("e1", self.e1)?;
+        positive("e2", self.e2)?;
+        positive("form.deformation", self.form.deformation)?;
+        non_negative("tangential load", ft)?;
+        let compliance = 1.0 / self.e1 + 1.0 / self.e2;
+        let f2 = self.face_width * self.error / (self.form.deformation * compliance) + ft;
+        Ok(DynamicLoad {
+            f1: f64::INFINITY,
+            deformation: self.form.deformation * ft / self.face_width * compliance,
+            f2,
+            fa: f2,
+            dynamic_load: if ft == 0.0 { 0.0 } else { ft + f2 },
+        })
+    }
+}
+
 /// Pitch-line velocity of the cardan gear mesh `v = 2 v_AA0c = 2 |ω| e` \[m/s\] (Karhula A8.1.7),
 /// `crank_speed` ω \[rad/s\], `cardan_crank_length` e \[m\].
 pub fn cardan_pitch_line_velocity(crank_speed: f64, cardan_crank_length: f64) -> f64 {

@@ -130,3 +130,28 @@ fn limits() {
     q.face_width = -1.0;
     assert!(q.dynamic_load(1.0, 1.0).is_err());
 }
+
+#[test]
+fn saturated_load_is_the_chain_without_bound_on_f1() {
+    // Paper-free: the chain's f1 grows as H (A8.1.3); with H a million times Buckingham's the
+    // chain must sit on the saturated limit Ft + f2 (fa → f2), and the limit must exceed the
+    // chain at the real H (fa < f2 there).
+    let p = karhula_pair();
+    let mut huge = p;
+    huge.form.h_us *= 1e12;
+    for (ft, v) in [(1000.0, 1.0), (12_000.0, 5.0), (40_000.0, 37.7)] {
+        let s = p.saturated_dynamic_load(ft).unwrap();
+        let limit = huge.dynamic_load(ft, v).unwrap();
+        assert!(
+            (s.dynamic_load / limit.dynamic_load - 1.0).abs() < 1e-9,
+            "{ft} N, {v} m/s: {} vs {}",
+            s.dynamic_load,
+            limit.dynamic_load
+        );
+        assert!(s.dynamic_load > p.dynamic_load(ft, v).unwrap().dynamic_load);
+        // 2·Ft + b·e/(k·(1/E1+1/E2)), written out.
+        let c = p.face_width * p.error / (p.form.deformation * (1.0 / p.e1 + 1.0 / p.e2));
+        assert!((s.dynamic_load - (2.0 * ft + c)).abs() < 1e-9 * s.dynamic_load);
+    }
+    assert_eq!(p.saturated_dynamic_load(0.0).unwrap().dynamic_load, 0.0);
+}
