@@ -73,7 +73,7 @@ pub const METRICS: &[MetricDef] = &[
     def("energy_balance_error", "1", T, "|inertial_work − kinetic_energy_change| / ∫|T_inertial| dθ: a case fails above 1e-3"),
     def("cycle_time", "s", R, "duration of the run"),
     def("contact_ratio", "1", T, "gear rating: transverse contact ratio of the mesh's pair (the smallest over the meshes)"),
-    def("mesh_tangential_load_max", "N", T, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\""),
+    def("mesh_tangential_load_max", "N", T, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\", or Karhula's reading with \"thesis\""),
     def("dynamic_tooth_load_max", "N", T, "gear rating: largest Buckingham dynamic tooth load (Karhula A8.1.1-14)"),
     def("contact_stress_max", "Pa", T, "gear rating: largest AGMA 2001-D04 contact stress"),
     def("contact_safety_factor", "1", T, "gear rating: smallest AGMA pitting safety factor S_H over the run (stress ratio)"),
