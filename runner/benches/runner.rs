@@ -1,4 +1,5 @@
-//! The runner in-process: one shipped case with gas, summaries only; and a sweep of 10 000
+//! The runner in-process: one shipped case with gas, summaries only and with its per-step
+//! files (CSV, NPY: written by their own thread, into a temporary folder); and a sweep of 10 000
 //! two-mechanism pump cases of 720 steps with gas, summaries only, on every core, without and
 //! with the thesis's loss models (the issue-8
 //! target through `cardan run` is 20 s; this is the computation without the files).
@@ -22,6 +23,16 @@ fn runner(c: &mut Criterion) {
     c.bench_function("full_case_pump_7200_steps_two_mechanisms", |b| {
         b.iter(|| black_box(run_case(black_box(&one), None).unwrap()))
     });
+    let dir = tempfile::tempdir().unwrap();
+    for (label, csv, npy) in [("csv", true, false), ("npy", false, true)] {
+        let mut with_files = one.clone();
+        with_files.output.csv = csv;
+        with_files.output.npy = npy;
+        c.bench_function(
+            &format!("full_case_pump_7200_steps_two_mechanisms_{label}"),
+            |b| b.iter(|| black_box(run_case(black_box(&with_files), Some(dir.path())).unwrap())),
+        );
+    }
     let sweep: Vec<case::Case> = (0..10_000)
         .map(|k| {
             let text: String = pump

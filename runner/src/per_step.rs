@@ -1,6 +1,9 @@
-//! Per-step files: one row per step (every `decimation`-th step and the last) as CSV text
-//! (`<label>.csv`) and/or as a binary columnar array (`<label>.npy`, NPY format 1.0, `<f8`,
-//! Fortran order: each column contiguous, with its names in `<label>.columns.json`).
+//! Per-step rows: one row per step (every `decimation`-th step and the last), defined once
+//! ([`Row`]: the header and how a step fills it), written as CSV text (`<label>.csv`) and/or
+//! as a binary columnar array (`<label>.npy`, NPY format 1.0, `<f8`, Fortran order: each
+//! column contiguous, with its names in `<label>.columns.json`), and/or thinned for the
+//! report's charts ([`ChartRecorder`]: a few hundred points per charted column, whatever the
+//! number of steps). The one sink fills each row once for all of them.
 //!
 //! The run's thread only copies each row's numbers into a block; a thread of the sink's own
 //! formats and writes the blocks, so a large case keeps two cores busy (float formatting is
@@ -9,11 +12,13 @@
 //! pieces are written in place.
 
 use crate::case::OutputOptions;
+use crate::report::{ChartData, ChartRecorder, MAX_POINTS};
 use anyhow::{bail, Context};
 use cardan_dynamics::{radial, tangential, GearRatings, Sink, Step};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use std::fs::File;
 use std::io::{BufWriter, Seek, SeekFrom, Write};
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
 use std::thread::JoinHandle;
@@ -61,14 +66,16 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("power_loss_{component}_w", "with [friction]: one loss component's power (rings, skirt, a slide, a revolute joint's bearings by joint name, a gear mesh by joint name)"),
 ];
 
-/// The CSV header of `mechanism` run with the load families `families`.
+/// The CSV header of `mechanism` run with the load families `families` (the run's, then
+/// `total` when there are several), and where its body columns are; [`Row::fill`] fills a
+/// row in this order.
 fn header(
     mechanism: &dyn Mechanism,
     families: &[&str],
     gas: bool,
     losses: &[String],
     gears: Option<&GearRatings>,
-) -> Vec<String> {
+) -> (Vec<String>, Range<usize>) {
     let t = mechanism.topology();
     let mut h: Vec<String> = [
         "crank_angle_deg",
@@ -88,6 +95,7 @@ fn header(
             h.push(format!("{}_{s}", p.name));
         }
     }
+    let bodies_start = h.len();
     for b in &t.bodies {
         for s in [
             "angle_deg",
@@ -105,6 +113,7 @@ fn header(
             h.push(format!("{}_{s}", b.name));
         }
     }
+    let bodies = bodies_start..h.len();
     for j in &t.joints {
         let unit = match j.kind {
             JointKind::Revolute(_) => "rad_s",
@@ -149,7 +158,7 @@ fn header(
         h.push("friction_torque_nm".into());
         h.extend(losses.iter().map(|c| format!("power_loss_{c}_w")));
     }
-    h
+    (h, bodies)
 }
 
 /// What a run's steps hold besides the mechanism's own state: the load families (in the run's
@@ -171,136 +180,55 @@ pub fn row_count(last_step: usize, decimation: usize) -> usize {
     last_step / decimation + 1 + usize::from(last_step % decimation != 0)
 }
 
-/// A sink writing the per-step files of one crank train into a folder.
-pub struct PerStepSink<'a> {
+/// The per-step row of one crank train: its column names and how a [`Step`] fills it. The
+/// files and the charts both take their rows from here, so that a column's name and its value
+/// are defined in one place.
+pub struct Row<'a> {
     mechanism: &'a dyn Mechanism,
-    decimation: usize,
-    last_step: usize,
+    header: Vec<String>,
+    /// The body columns (orientation, centre-of-gravity motion and its polar parts).
+    bodies: Range<usize>,
+    /// Whether to compute them; else they are NaN. Their arc tangents and hypotenuses are
+    /// most of a row's cost, and no chart draws them: a row for the charts alone skips them.
+    fill_bodies: bool,
     /// Families with a total (the names of the header's force blocks).
     with_total: bool,
     total_shares: Vec<f64>,
-    /// The rows of the block being filled, one after the other.
-    block: Vec<f64>,
-    columns: usize,
-    to_writer: Option<SyncSender<Vec<f64>>>,
-    /// Blocks the writer is done with, for reuse.
-    spare: Receiver<Vec<f64>>,
-    writer: Option<JoinHandle<anyhow::Result<()>>>,
 }
 
-impl<'a> PerStepSink<'a> {
-    /// Creates `<label>.csv` and/or `<label>.npy` (with `<label>.columns.json`) in `dir`, as
-    /// `options` asks, for `mechanism` run with `run`'s families and stages over
-    /// `last_step + 1` steps; `None` if `options` asks for neither.
-    pub fn create(
-        dir: &Path,
-        label: &str,
-        mechanism: &'a dyn Mechanism,
-        run: &RunLayout,
-        options: OutputOptions,
-        last_step: usize,
-    ) -> anyhow::Result<Option<Self>> {
-        if !options.csv && !options.npy {
-            return Ok(None);
-        }
+impl<'a> Row<'a> {
+    /// The row of `mechanism` run with `run`'s families and stages.
+    pub fn new(mechanism: &'a dyn Mechanism, run: &RunLayout) -> Self {
         let mut names: Vec<&str> = run.families.to_vec();
         let with_total = run.families.len() > 1;
         if with_total {
             names.push("total");
         }
-        let header = header(mechanism, &names, run.gas, run.losses, run.gears);
-        let rows = row_count(last_step, options.decimation);
-        let csv = if options.csv {
-            Some(CsvFile::create(
-                &dir.join(format!("{label}.csv")),
-                &header,
-                options.significant_digits,
-            )?)
-        } else {
-            None
-        };
-        let npy = if options.npy {
-            let names = dir.join(format!("{label}.columns.json"));
-            let json = serde_json::to_string(&header)? + "\n";
-            crate::output::write_file(&names, json.as_bytes())?;
-            Some(NpyFile::create(
-                &dir.join(format!("{label}.npy")),
-                rows,
-                header.len(),
-            )?)
-        } else {
-            None
-        };
-        let columns = header.len();
-        let (to_writer, blocks) = sync_channel::<Vec<f64>>(2);
-        let (give_back, spare) = sync_channel::<Vec<f64>>(3);
-        let writer = std::thread::Builder::new()
-            .name(format!("{label} writer"))
-            .spawn(move || {
-                let mut files = Files { csv, npy, columns };
-                for block in blocks {
-                    files.write(&block)?;
-                    // The run may have finished and stopped taking blocks back.
-                    let _ = give_back.try_send(block);
-                }
-                files.finish(rows)
-            })
-            .context("start the thread writing the per-step files")?;
-        Ok(Some(Self {
+        let (header, bodies) = header(mechanism, &names, run.gas, run.losses, run.gears);
+        Self {
             mechanism,
-            decimation: options.decimation,
-            last_step,
+            header,
+            bodies,
+            fill_bodies: true,
             with_total,
             total_shares: vec![0.0; mechanism.topology().bodies.len()],
-            block: Vec::with_capacity(BLOCK_ROWS * columns),
-            columns,
-            to_writer: Some(to_writer),
-            spare,
-            writer: Some(writer),
-        }))
-    }
-
-    /// Hands the filled rows to the writer.
-    fn send(&mut self) -> Result<(), String> {
-        let next = self
-            .spare
-            .try_recv()
-            .unwrap_or_else(|_| Vec::with_capacity(BLOCK_ROWS * self.columns));
-        let block = std::mem::replace(&mut self.block, next);
-        self.block.clear();
-        let sent = self.to_writer.as_ref().map(|w| w.send(block));
-        match sent {
-            Some(Ok(())) => Ok(()),
-            // The writer stopped: its error says why.
-            _ => Err(self
-                .join()
-                .err()
-                .unwrap_or_else(|| "the writer stopped".into())),
         }
     }
 
-    /// Waits for the writer to write everything it was given.
-    fn join(&mut self) -> Result<(), String> {
-        self.to_writer = None;
-        match self.writer.take().map(JoinHandle::join) {
-            Some(Ok(Ok(()))) | None => Ok(()),
-            Some(Ok(Err(e))) => Err(format!("{e:#}")),
-            Some(Err(_)) => Err("the thread writing the per-step files panicked".into()),
-        }
+    /// The column names.
+    pub fn header(&self) -> &[String] {
+        &self.header
     }
 
-    /// Writes out the last rows and waits until every file is complete.
-    pub fn finish(mut self) -> anyhow::Result<()> {
-        if !self.block.is_empty() {
-            self.send().map_err(anyhow::Error::msg)?;
-        }
-        self.join().map_err(anyhow::Error::msg)
+    /// Leaves the body columns NaN unless `reads` says one of them is read (by its index).
+    pub fn skip_unread_bodies(&mut self, reads: impl Fn(usize) -> bool) {
+        self.fill_bodies = self.bodies.clone().any(reads);
     }
 
-    fn fill_row(&mut self, s: &Step) {
+    /// Appends the step's row to `r` (NaN for a quantity undefined at the step).
+    pub fn fill(&mut self, s: &Step, r: &mut Vec<f64>) {
         let t = self.mechanism.topology();
         let st = s.state;
-        let r = &mut self.block;
         let start = r.len();
         r.extend([
             st.crank.angle.to_degrees(),
@@ -311,21 +239,25 @@ impl<'a> PerStepSink<'a> {
         for p in &st.pistons {
             r.extend([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
         }
-        for b in &st.bodies {
-            let polar = PolarComponents::of(&b.cg);
-            r.extend([
-                b.orientation.arg().to_degrees(),
-                b.angular_velocity,
-                b.angular_acceleration,
-                b.cg.position.re,
-                b.cg.position.im,
-                b.cg.velocity.norm(),
-                b.cg.acceleration.norm(),
-                polar.radial_acceleration,
-                polar.coriolis_acceleration,
-                polar.tangential_acceleration,
-                polar.normal_acceleration,
-            ]);
+        if self.fill_bodies {
+            for b in &st.bodies {
+                let polar = PolarComponents::of(&b.cg);
+                r.extend([
+                    b.orientation.arg().to_degrees(),
+                    b.angular_velocity,
+                    b.angular_acceleration,
+                    b.cg.position.re,
+                    b.cg.position.im,
+                    b.cg.velocity.norm(),
+                    b.cg.acceleration.norm(),
+                    polar.radial_acceleration,
+                    polar.coriolis_acceleration,
+                    polar.tangential_acceleration,
+                    polar.normal_acceleration,
+                ]);
+            }
+        } else {
+            r.resize(r.len() + self.bodies.len(), f64::NAN);
         }
         r.extend(st.joints.iter().map(|j| j.relative_speed));
         r.extend(&st.extras);
@@ -366,28 +298,231 @@ impl<'a> PerStepSink<'a> {
             r.push(s.friction_torque);
             r.extend(s.losses);
         }
-        debug_assert_eq!(r.len() - start, self.columns, "a row must match the header");
+        debug_assert_eq!(
+            r.len() - start,
+            self.header.len(),
+            "a row must match the header"
+        );
+    }
+}
+
+/// A sink taking the per-step rows of one crank train: written to its files, and/or thinned
+/// for the report's charts.
+pub struct PerStepSink<'a> {
+    row: Row<'a>,
+    decimation: usize,
+    last_step: usize,
+    files: Option<Writer>,
+    charts: Option<ChartRecorder>,
+    /// The row being filled when no file takes it (the charts only).
+    scratch: Vec<f64>,
+}
+
+impl<'a> PerStepSink<'a> {
+    /// Creates `<label>.csv` and/or `<label>.npy` (with `<label>.columns.json`) in `dir`, as
+    /// `options` asks, and records the report's charts if `charts`, for `mechanism` run with
+    /// `run`'s families and stages over `last_step + 1` steps; `None` if asked for nothing.
+    /// The charts take the rows the files take (every `options.decimation`-th step and the
+    /// last), so that a chart draws the very rows of the CSV it names.
+    pub fn create(
+        dir: &Path,
+        label: &str,
+        mechanism: &'a dyn Mechanism,
+        run: &RunLayout,
+        options: OutputOptions,
+        last_step: usize,
+        charts: bool,
+    ) -> anyhow::Result<Option<Self>> {
+        let files = options.csv || options.npy;
+        if !files && !charts {
+            return Ok(None);
+        }
+        let mut row = Row::new(mechanism, run);
+        let rows = row_count(last_step, options.decimation);
+        let charts = charts.then(|| {
+            let joints: Vec<String> = mechanism
+                .topology()
+                .joints
+                .iter()
+                .map(|j| j.name.to_string())
+                .collect();
+            // The series name the file that holds its rows, if any.
+            let file = if options.csv {
+                format!("{label}.csv")
+            } else if options.npy {
+                format!("{label}.npy")
+            } else {
+                label.to_string()
+            };
+            ChartRecorder::new(row.header(), &joints, rows, MAX_POINTS, file)
+        });
+        let files = if files {
+            Some(Writer::start(dir, label, row.header(), rows, options)?)
+        } else {
+            if let Some(c) = &charts {
+                row.skip_unread_bodies(|k| c.reads(k));
+            }
+            None
+        };
+        Ok(Some(Self {
+            row,
+            decimation: options.decimation,
+            last_step,
+            files,
+            charts,
+            scratch: Vec::new(),
+        }))
+    }
+
+    /// Writes out the last rows and waits until every file is complete; returns the charts'
+    /// series if they were recorded.
+    pub fn finish(mut self) -> anyhow::Result<Option<ChartData>> {
+        if let Some(files) = self.files.take() {
+            files.finish()?;
+        }
+        Ok(self.charts.take().map(ChartRecorder::finish))
     }
 }
 
 impl Sink for PerStepSink<'_> {
+    /// The files hold the torque shares and the extras; the charts alone do not draw them.
     fn wants_details(&self) -> bool {
-        true
+        self.files.is_some()
     }
 
     fn push(&mut self, s: &Step) -> Result<(), String> {
         if s.index % self.decimation != 0 && s.index != self.last_step {
             return Ok(());
         }
-        self.fill_row(s);
-        if self.block.len() >= BLOCK_ROWS * self.columns {
-            self.send()?;
+        match &mut self.files {
+            Some(files) => {
+                let start = files.block.len();
+                self.row.fill(s, &mut files.block);
+                if let Some(c) = &mut self.charts {
+                    c.record(&files.block[start..]);
+                }
+                if files.block.len() >= BLOCK_ROWS * files.columns {
+                    files.send()?;
+                }
+            }
+            None => {
+                self.scratch.clear();
+                self.row.fill(s, &mut self.scratch);
+                if let Some(c) = &mut self.charts {
+                    c.record(&self.scratch);
+                }
+            }
         }
         Ok(())
     }
 }
 
-impl Drop for PerStepSink<'_> {
+/// The per-step files of one crank train: the run's thread copies rows into a block, a thread
+/// of the writer's own formats and writes the blocks.
+struct Writer {
+    /// The rows of the block being filled, one after the other.
+    block: Vec<f64>,
+    columns: usize,
+    to_writer: Option<SyncSender<Vec<f64>>>,
+    /// Blocks the writer is done with, for reuse.
+    spare: Receiver<Vec<f64>>,
+    writer: Option<JoinHandle<anyhow::Result<()>>>,
+}
+
+impl Writer {
+    /// Creates the files `options` asks for in `dir`, named by `label`, for `rows` rows of
+    /// `header`, and starts their thread.
+    fn start(
+        dir: &Path,
+        label: &str,
+        header: &[String],
+        rows: usize,
+        options: OutputOptions,
+    ) -> anyhow::Result<Self> {
+        let csv = if options.csv {
+            Some(CsvFile::create(
+                &dir.join(format!("{label}.csv")),
+                header,
+                options.significant_digits,
+            )?)
+        } else {
+            None
+        };
+        let npy = if options.npy {
+            let names = dir.join(format!("{label}.columns.json"));
+            let json = serde_json::to_string(header)? + "\n";
+            crate::output::write_file(&names, json.as_bytes())?;
+            Some(NpyFile::create(
+                &dir.join(format!("{label}.npy")),
+                rows,
+                header.len(),
+            )?)
+        } else {
+            None
+        };
+        let columns = header.len();
+        let (to_writer, blocks) = sync_channel::<Vec<f64>>(2);
+        let (give_back, spare) = sync_channel::<Vec<f64>>(3);
+        let writer = std::thread::Builder::new()
+            .name(format!("{label} writer"))
+            .spawn(move || {
+                let mut files = Files { csv, npy, columns };
+                for block in blocks {
+                    files.write(&block)?;
+                    // The run may have finished and stopped taking blocks back.
+                    let _ = give_back.try_send(block);
+                }
+                files.finish(rows)
+            })
+            .context("start the thread writing the per-step files")?;
+        Ok(Self {
+            block: Vec::with_capacity(BLOCK_ROWS * columns),
+            columns,
+            to_writer: Some(to_writer),
+            spare,
+            writer: Some(writer),
+        })
+    }
+
+    /// Hands the filled rows to the writer.
+    fn send(&mut self) -> Result<(), String> {
+        let next = self
+            .spare
+            .try_recv()
+            .unwrap_or_else(|_| Vec::with_capacity(BLOCK_ROWS * self.columns));
+        let block = std::mem::replace(&mut self.block, next);
+        self.block.clear();
+        let sent = self.to_writer.as_ref().map(|w| w.send(block));
+        match sent {
+            Some(Ok(())) => Ok(()),
+            // The writer stopped: its error says why.
+            _ => Err(self
+                .join()
+                .err()
+                .unwrap_or_else(|| "the writer stopped".into())),
+        }
+    }
+
+    /// Waits for the writer to write everything it was given.
+    fn join(&mut self) -> Result<(), String> {
+        self.to_writer = None;
+        match self.writer.take().map(JoinHandle::join) {
+            Some(Ok(Ok(()))) | None => Ok(()),
+            Some(Ok(Err(e))) => Err(format!("{e:#}")),
+            Some(Err(_)) => Err("the thread writing the per-step files panicked".into()),
+        }
+    }
+
+    /// Writes out the last rows and waits until every file is complete.
+    fn finish(mut self) -> anyhow::Result<()> {
+        if !self.block.is_empty() {
+            self.send().map_err(anyhow::Error::msg)?;
+        }
+        self.join().map_err(anyhow::Error::msg)
+    }
+}
+
+impl Drop for Writer {
     /// A run that stopped early (an error) still stops its writer; the files are left
     /// incomplete in the case's temporary folder, which is then removed.
     fn drop(&mut self) {

@@ -1,9 +1,11 @@
 //! Comparison reports and charts made from a run's output folder, so that a reader sees at a
 //! glance which mechanism is better where, and by how much, without a spreadsheet.
 //!
-//! - [`case_report`]: for one case folder (`summary.json` and the per-step CSVs), `report.md`
-//!   and `report.html` with every metric of every mechanism side by side (units, and the
-//!   percentage difference to a reference mechanism, as in Karhula's (2008) appendix tables),
+//! - [`case_report`]: for one case folder (`summary.json`, and for the charts the series its
+//!   run recorded ([`ChartRecorder`], given to [`case_report_from_run`]) or else the per-step
+//!   CSVs), `report.md` and `report.html` with every metric of every mechanism side by side
+//!   (units, and the percentage difference to a reference mechanism, as in Karhula's (2008)
+//!   appendix tables),
 //!   grouped into kinematics, joint loads (per joint), torque/power/work, cylinder and gas,
 //!   and losses; a generated "which is better" summary; a loss budget when the summary holds
 //!   friction losses; and charts over crank angle (piston motion, cylinder pressure, drive
@@ -20,22 +22,27 @@
 //! present).
 //!
 //! Charts are SVG written here (see `svg.rs`): no font or system library, reproducible bytes,
-//! series decimated to at most [`MAX_POINTS`] points keeping each bucket's extremes. Reports
-//! hold no timestamps and list everything in a fixed order, so that two runs give the same
-//! bytes.
+//! series decimated to at most [`MAX_POINTS`] points keeping each bucket's extremes. A run
+//! thins its series that way while it steps (`envelope.rs`), so its report neither reads back
+//! the CSV it wrote nor holds more than [`MAX_POINTS`] points per series, and draws the same
+//! bytes as a report made from the CSV. Reports hold no timestamps and list everything in a
+//! fixed order, so that two runs give the same bytes.
 
 mod case_plots;
 mod cases;
 mod data;
 mod doc;
+mod envelope;
 mod heatmap;
 mod index;
 mod svg;
 mod sweeps;
 
+pub use envelope::{ChartData, ChartRecorder, Envelope, Trace};
 pub use svg::MAX_POINTS;
 
 use anyhow::Context;
+use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The metrics a sweep report charts, in this order: each entry is a list of alternatives of
@@ -164,7 +171,20 @@ fn write_report(dir: &Path, doc: &doc::Doc, plots: &[(String, String)]) -> anyho
 /// taken to `reference` (a mechanism of the case), by default the first registered mechanism
 /// present (the slider-crank when the case has it).
 pub fn case_report(case_dir: &Path, reference: Option<&str>) -> anyhow::Result<()> {
-    cases::case_report(case_dir, reference)
+    cases::case_report(case_dir, reference, BTreeMap::new())
+        .with_context(|| format!("report of {}", case_dir.display()))
+}
+
+/// [`case_report`] with the charts of the crank trains in `charts` (keyed by their names in
+/// `summary.json`) drawn from the series their run recorded ([`ChartRecorder`]) instead of
+/// their CSVs, which need not exist (`[output] csv = false`). A crank train not in `charts`
+/// is drawn from its CSV, if any.
+pub fn case_report_from_run(
+    case_dir: &Path,
+    reference: Option<&str>,
+    charts: BTreeMap<String, ChartData>,
+) -> anyhow::Result<()> {
+    cases::case_report(case_dir, reference, charts)
         .with_context(|| format!("report of {}", case_dir.display()))
 }
 

@@ -4,6 +4,7 @@
 use crate::case::{self, Case, CaseError};
 use crate::output;
 use crate::per_step::{PerStepSink, RunLayout};
+use crate::report::ChartData;
 use anyhow::Context;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
@@ -36,15 +37,19 @@ fn mean_speed(case: &Case) -> f64 {
 }
 
 /// Runs one crank train of `case`: `mechanism` with its crank `shift` (rad) ahead of the
-/// case's (the second train of a phased opposed-piston case; 0 otherwise), writing its CSV as
-/// its per-step files (named `label`, as `case.output` asks) into `dir` if given. Both trains' pistons see the one chamber's pressure.
+/// case's (the second train of a phased opposed-piston case; 0 otherwise), writing its
+/// per-step files (named `label`, as `case.output` asks) into `dir` if given. Both trains'
+/// pistons see the one chamber's pressure. With `dir` and `charts`, it also records the
+/// series of the report's charts (thinned as it steps, see `report/envelope.rs`) and returns
+/// them, so that the report need not read the CSV back, nor the CSV exist.
 fn run_mechanism(
     case: &Case,
     mechanism: &dyn Mechanism,
     shift: f64,
     label: &str,
     dir: Option<&Path>,
-) -> Result<Summary, String> {
+    charts: bool,
+) -> Result<(Summary, Option<ChartData>), String> {
     let inertial = Inertial(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
@@ -88,6 +93,7 @@ fn run_mechanism(
             },
             case.output,
             case.steps,
+            charts,
         )
         .map_err(|e| format!("{e:#}"))?,
         None => None,
@@ -158,11 +164,13 @@ fn run_mechanism(
             summary.push(name, value);
         }
     }
-    if let Some(p) = per_step {
-        p.finish()
-            .map_err(|e| format!("cannot write the per-step files: {e:#}"))?;
-    }
-    Ok(summary)
+    let charts = match per_step {
+        Some(p) => p
+            .finish()
+            .map_err(|e| format!("cannot write the per-step files: {e:#}"))?,
+        None => None,
+    };
+    Ok((summary, charts))
 }
 
 /// Runs every mechanism of a case (in parallel), writing their per-step files into `dir` if
@@ -170,6 +178,16 @@ fn run_mechanism(
 /// A failure names the file, the case, the mechanism, and the step and quantity that went
 /// wrong.
 pub fn run_case(case: &Case, dir: Option<&Path>) -> Result<Vec<MechanismResult>, String> {
+    let trains = run_trains(case, dir, false)?;
+    Ok(trains.into_iter().map(|(r, _)| r).collect())
+}
+
+/// [`run_case`], with each crank train's chart series if `charts` (and `dir`) are given.
+fn run_trains(
+    case: &Case,
+    dir: Option<&Path>,
+    charts: bool,
+) -> Result<Vec<(MechanismResult, Option<ChartData>)>, String> {
     // Each mechanism's crank train, and its second one in a phased opposed-piston case.
     let mut trains = Vec::new();
     for m in &case.mechanisms {
@@ -178,25 +196,30 @@ pub fn run_case(case: &Case, dir: Option<&Path>) -> Result<Vec<MechanismResult>,
             trains.push((m, case.crank_phase, format!("{}_crank2", m.name())));
         }
     }
-    let results: Vec<Result<MechanismResult, String>> = trains
+    let results: Vec<Result<(MechanismResult, Option<ChartData>), String>> = trains
         .par_iter()
         .map(|(m, shift, label)| {
-            let summary = run_mechanism(case, m.as_ref(), *shift, label, dir).map_err(|e| {
-                format!(
-                    "{}: case \"{}\": {label}: {e}",
-                    case.file.display(),
-                    case.name
-                )
-            })?;
-            Ok(MechanismResult {
+            let (summary, series) = run_mechanism(case, m.as_ref(), *shift, label, dir, charts)
+                .map_err(|e| {
+                    format!(
+                        "{}: case \"{}\": {label}: {e}",
+                        case.file.display(),
+                        case.name
+                    )
+                })?;
+            let result = MechanismResult {
                 mechanism: Arc::clone(m),
                 label: label.clone(),
                 summary,
-            })
+            };
+            Ok((result, series))
         })
         .collect();
     // Every mechanism's failure, not only the first.
-    let failures: Vec<String> = results.iter().filter_map(|r| r.clone().err()).collect();
+    let failures: Vec<String> = results
+        .iter()
+        .filter_map(|r| r.as_ref().err().cloned())
+        .collect();
     if failures.is_empty() {
         Ok(results.into_iter().flatten().collect())
     } else {
@@ -360,15 +383,26 @@ fn run_and_write(
         )
     };
     let tmp = output::temporary_dir(&dir).map_err(cannot_write)?;
-    let result = run_case(case, Some(&tmp)).and_then(|results| {
+    // A sweep's points are reported by the sweep's report: no charts of their own.
+    let report = options.reports && case.sweep.is_none();
+    let result = run_trains(case, Some(&tmp), report).and_then(|trains| {
+        // The chart series go to the report, and are dropped with it: a batch keeps only
+        // the summaries.
+        let (results, series): (Vec<MechanismResult>, Vec<Option<ChartData>>) =
+            trains.into_iter().unzip();
+        let charts: std::collections::BTreeMap<String, ChartData> = results
+            .iter()
+            .zip(series)
+            .filter_map(|(r, s)| Some((r.label.clone(), s?)))
+            .collect();
         let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
             .map_err(|e| e.to_string())?;
         summary.push('\n');
         output::write_file(&tmp.join("summary.json"), summary.as_bytes())
             .and_then(|()| {
-                // A sweep's points are reported by the sweep's report.
-                if options.reports && case.sweep.is_none() {
-                    crate::report::case_report(&tmp, None).context("the report")?;
+                if report {
+                    crate::report::case_report_from_run(&tmp, None, charts)
+                        .context("the report")?;
                 }
                 output::replace_dir(&tmp, &dir)
             })

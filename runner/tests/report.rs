@@ -1,32 +1,33 @@
-//! Reports and charts: the shipped configs run in-process, every case and sweep report
-//! rendered, and each chart read back and checked against the CSV it claims to draw; metric
-//! tables against `summary.json`; the index's links; a synthetic grid sweep's heat maps; the
-//! friction metrics' loss budget on a synthetic case.
+//! Reports and charts: the shipped configs run in-process with their reports (charts from the
+//! run's own thinned series), and each chart read back and checked against the CSV it claims
+//! to draw, and against the report made again from the folder alone; metric tables against
+//! `summary.json`; the index's links; a synthetic grid sweep's heat maps; the friction
+//! metrics' loss budget on a synthetic case; charts without a CSV, and of a long run.
 
-use cardan_runner::report::{case_report, index, sweep_report, MAX_POINTS};
+use cardan_runner::report::{case_report, sweep_report, MAX_POINTS};
 use cardan_runner::{run_paths, RunOptions};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
-/// The shipped configs, run once, with every report rendered.
+/// The shipped configs, run once with their reports (as `cardan run` does).
 fn shipped() -> &'static Path {
     static OUT: OnceLock<tempfile::TempDir> = OnceLock::new();
     OUT.get_or_init(|| {
         let dir = tempfile::tempdir().unwrap();
         let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
-        let report = run_paths(&[configs], dir.path(), RunOptions::default());
+        let report = run_paths(&[configs], dir.path(), with_reports());
         assert!(report.failures.is_empty(), "{:#?}", report.failures);
-        for (_, folder) in &report.written {
-            case_report(folder, None).unwrap();
-        }
-        for sweep in sweeps(dir.path()) {
-            sweep_report(&sweep, &sweep.file_name().unwrap().to_string_lossy(), None).unwrap();
-        }
-        index(dir.path()).unwrap();
         dir
     })
     .path()
+}
+
+fn with_reports() -> RunOptions {
+    RunOptions {
+        reports: true,
+        ..RunOptions::default()
+    }
 }
 
 fn folders(dir: &Path) -> Vec<PathBuf> {
@@ -357,7 +358,7 @@ fn an_explicit_reference_changes_the_differences_and_a_wrong_one_fails() {
     assert!(md.contains(
         "| metric | unit | `cardan_gear` (reference) | `slider_crank` | Δ `slider_crank` |"
     ));
-    assert!(md.contains("No per-step CSV"));
+    assert!(md.contains("No charts"));
     assert!(!case.join("plots").exists());
     let e = case_report(&case, Some("nonsense")).unwrap_err();
     assert!(format!("{e:#}").contains("nonsense"), "{e:#}");
@@ -509,22 +510,42 @@ fn index_links_every_report() {
     );
 }
 
+/// The report a run writes (charts from its own thinned series) is the one made again from the
+/// folder alone (charts from the CSVs), byte for byte: every case, every chart. (Made again in
+/// a copy: the other tests read the shipped folders meanwhile.)
 #[test]
 fn reports_are_reproducible() {
-    let case = shipped().join("karhula-r60-l140-a0-w3pi");
-    let read = || {
-        let mut files = vec![
-            std::fs::read(case.join("report.md")).unwrap(),
-            std::fs::read(case.join("report.html")).unwrap(),
-        ];
-        for p in ["plots/torque_inertial.svg", "plots/force_crank_pin.svg"] {
-            files.push(std::fs::read(case.join(p)).unwrap());
+    let out = shipped();
+    let again = tempfile::tempdir().unwrap();
+    let mut compared = 0;
+    for case in cases(out) {
+        let copy = again.path().join(case.file_name().unwrap());
+        std::fs::create_dir(&copy).unwrap();
+        for e in std::fs::read_dir(&case).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_file() && p.extension().is_some_and(|x| x == "csv" || x == "json") {
+                std::fs::copy(&p, copy.join(p.file_name().unwrap())).unwrap();
+            }
         }
-        files
-    };
-    let before = read();
-    case_report(&case, None).unwrap();
-    assert!(before == read());
+        case_report(&copy, None).unwrap();
+        let read = |dir: &Path| {
+            let mut files = vec![
+                std::fs::read(dir.join("report.md")).unwrap(),
+                std::fs::read(dir.join("report.html")).unwrap(),
+            ];
+            if let Ok(plots) = std::fs::read_dir(dir.join("plots")) {
+                let mut plots: Vec<PathBuf> = plots.map(|e| e.unwrap().path()).collect();
+                plots.sort();
+                files.extend(plots.iter().map(|p| std::fs::read(p).unwrap()));
+            }
+            files
+        };
+        let (run, folder) = (read(&case), read(&copy));
+        assert!(run.len() > 2, "{}: charts", case.display());
+        assert!(run == folder, "{}", case.display());
+        compared += run.len();
+    }
+    assert!(compared > 200, "{compared} files");
 }
 
 /// A 10 × 10 grid sweep written by hand: a value map per mechanism, the difference map with
@@ -774,4 +795,137 @@ fn categorical_zipped_and_empty_sweeps() {
         "case,motion.initial_speed,slider_crank.total_torque_max\n",
     );
     assert!(sweep.join("report.html").is_file());
+}
+
+/// A shipped case's text with `[output]` replaced by `output` and `steps` steps.
+fn shipped_case_text(name: &str, steps: usize, output: &str) -> String {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../configs")
+        .join(format!("{name}.toml"));
+    let text = std::fs::read_to_string(file).unwrap();
+    let mut lines: Vec<String> = Vec::new();
+    let mut in_output = false;
+    for line in text.lines() {
+        if line.starts_with('[') {
+            in_output = line.trim() == "[output]";
+        }
+        if in_output {
+            continue;
+        }
+        if line.starts_with("steps = ") {
+            lines.push(format!("steps = {steps}"));
+        } else {
+            lines.push(line.to_string());
+        }
+    }
+    format!("{}\n\n[output]\n{output}\n", lines.join("\n"))
+}
+
+/// The plots of a case folder: file name → SVG text.
+fn plots_of(case: &Path) -> BTreeMap<String, String> {
+    std::fs::read_dir(case.join("plots"))
+        .unwrap_or_else(|e| panic!("{}: {e}", case.display()))
+        .map(|e| {
+            let p = e.unwrap().path();
+            (
+                p.file_name().unwrap().to_string_lossy().into_owned(),
+                std::fs::read_to_string(&p).unwrap(),
+            )
+        })
+        .collect()
+}
+
+/// `[output] csv = false`: no CSV, and the same charts as with one (only their `data-source`
+/// names no file).
+#[test]
+fn a_case_without_csv_gets_its_charts() {
+    let dir = tempfile::tempdir().unwrap();
+    let name = "karhula-pump-r60-l140-a0-w3pi";
+    let mut folders = Vec::new();
+    for (sub, output) in [("with", "csv = true"), ("without", "csv = false")] {
+        let cases = dir.path().join(format!("{sub}-cases"));
+        std::fs::create_dir(&cases).unwrap();
+        std::fs::write(
+            cases.join("case.toml"),
+            shipped_case_text(name, 7200, output),
+        )
+        .unwrap();
+        let out = dir.path().join(sub);
+        let report = run_paths(&[cases], &out, with_reports());
+        assert!(report.failures.is_empty(), "{:#?}", report.failures);
+        folders.push(out.join(name));
+    }
+    let (with, without) = (&folders[0], &folders[1]);
+    assert!(with.join("slider_crank.csv").is_file());
+    assert!(!without.join("slider_crank.csv").exists());
+    let md = std::fs::read_to_string(without.join("report.md")).unwrap();
+    assert!(!md.contains("No charts"), "{md}");
+    assert!(md.contains("![Drive torque, total loads"), "{md}");
+    let (a, b) = (plots_of(with), plots_of(without));
+    assert_eq!(a.keys().collect::<Vec<_>>(), b.keys().collect::<Vec<_>>());
+    assert!(a.contains_key("torque_total.svg") && a.contains_key("cylinder_pressure.svg"));
+    for (file, svg) in &a {
+        let named = b[file].replace(
+            "data-source=\"slider_crank:",
+            "data-source=\"slider_crank.csv:",
+        );
+        let named = named.replace(
+            "data-source=\"cardan_gear:",
+            "data-source=\"cardan_gear.csv:",
+        );
+        assert!(*svg == named, "{file}");
+    }
+}
+
+/// A long run without files: charts of at most [`MAX_POINTS`] points a series, whose peak
+/// drive torque is the run's (`total_torque_max` of `summary.json`, to the drawing's 0.1 px).
+#[test]
+fn a_long_run_is_charted_in_bounded_points_with_its_peaks() {
+    let dir = tempfile::tempdir().unwrap();
+    let name = "karhula-pump-r60-l140-a0-w3pi";
+    let cases = dir.path().join("cases");
+    std::fs::create_dir(&cases).unwrap();
+    std::fs::write(
+        cases.join("case.toml"),
+        shipped_case_text(name, 100_000, "csv = false"),
+    )
+    .unwrap();
+    let report = run_paths(&[cases], dir.path(), with_reports());
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    let case = dir.path().join(name);
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(case.join("summary.json")).unwrap()).unwrap();
+    let plots = plots_of(&case);
+    assert!(plots.len() > 10, "{:?}", plots.keys());
+    for (file, text) in &plots {
+        let doc = roxmltree::Document::parse(text).unwrap();
+        for s in doc
+            .descendants()
+            .filter(|n| n.attribute("class") == Some("series"))
+        {
+            let n: usize = s.attribute("data-n").unwrap().parse().unwrap();
+            assert!((MAX_POINTS / 2..=MAX_POINTS).contains(&n), "{file}: {n}");
+        }
+    }
+    let doc = roxmltree::Document::parse(&plots["torque_total.svg"]).unwrap();
+    let axes = Axes::of(&doc);
+    let per_px = (axes.y.1 - axes.y.0) / axes.height;
+    for m in ["slider_crank", "cardan_gear"] {
+        let s = doc
+            .descendants()
+            .find(|n| n.attribute("data-label") == Some(m))
+            .unwrap();
+        let ys: Vec<f64> = points(s)
+            .iter()
+            .map(|(_, py)| axes.y.1 - (py - axes.top) * per_px)
+            .collect();
+        let peak = ys.iter().fold(0.0f64, |a, y| a.max(y.abs()));
+        let expected = summary["mechanisms"][m]["metrics"]["total_torque_max"]
+            .as_f64()
+            .unwrap();
+        assert!(
+            (peak - expected).abs() <= 0.06 * per_px,
+            "{m}: drawn {peak}, run {expected}"
+        );
+    }
 }

@@ -1,11 +1,13 @@
 //! The charts of a case over crank angle, every mechanism on one axis: piston position,
 //! velocity and acceleration; cylinder pressure; the drive torque of each load family; the
 //! force at each joint (total loads, else the last family); and, when the CSVs have them, the
-//! friction torque and the power loss (all components, and each one). Only the columns a
-//! chart needs are read.
+//! friction torque and the power loss (all components, and each one). Only the series a chart
+//! draws are kept ([`traces`]), thinned as the run makes them (`envelope.rs`) or read from
+//! the CSV.
 
 use super::cases::family_rank;
-use super::data::{CaseSummary, Columns};
+use super::data::CaseSummary;
+use super::envelope::ChartData;
 use super::svg::{self, LineChart, Series};
 
 /// One chart over crank angle: the file name, title, y quantity and unit, and per mechanism
@@ -162,17 +164,11 @@ pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Ve
         columns: single("friction_torque_nm"),
         sum: false,
     });
-    let loss_columns = |k: usize| -> Vec<String> {
-        headers[k]
-            .iter()
-            .flatten()
-            .filter(|h| h.starts_with("power_loss_") && h.ends_with("_w"))
-            .cloned()
-            .collect()
-    };
+    let losses_of =
+        |k: usize| -> Vec<String> { headers[k].as_deref().map_or(Vec::new(), loss_columns) };
     let total_loss: Vec<Vec<(String, String)>> = (0..n)
         .map(|k| {
-            loss_columns(k)
+            losses_of(k)
                 .into_iter()
                 .map(|c| (c, String::new()))
                 .collect()
@@ -187,7 +183,7 @@ pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Ve
         columns: total_loss,
         sum: true,
     });
-    let mut components: Vec<String> = (0..n).flat_map(loss_columns).collect();
+    let mut components: Vec<String> = (0..n).flat_map(losses_of).collect();
     components.sort();
     components.dedup();
     for c in components {
@@ -209,56 +205,49 @@ pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Ve
     specs
 }
 
-/// Draws the charts of `specs` from the columns read.
+/// Draws the charts of `specs` from each mechanism's series (None: the mechanism has no
+/// chart data).
 pub(super) fn charts(
     s: &CaseSummary,
     specs: &[PlotSpec],
-    data: &[Option<Columns>],
+    data: &[Option<ChartData>],
 ) -> Vec<(String, String, String)> {
     let mut out = Vec::new();
     for spec in specs {
         let mut series = Vec::new();
         for (k, m) in s.mechanisms.iter().enumerate() {
-            let Some(cols) = &data[k] else { continue };
-            let Some(x) = cols.get("crank_angle_deg") else {
-                continue;
-            };
-            let file = format!("{}.csv", m.name);
+            let Some(d) = &data[k] else { continue };
+            let file = &d.file;
             if spec.sum {
-                let parts: Vec<&[f64]> = spec.columns[k]
-                    .iter()
-                    .filter_map(|(c, _)| cols.get(c))
-                    .collect();
-                if parts.is_empty() {
+                let names: Vec<String> = spec.columns[k].iter().map(|(c, _)| c.clone()).collect();
+                let Some(t) = d.traces.get(&sum_key(&names)).filter(|t| !t.x.is_empty()) else {
                     continue;
-                }
-                let y: Vec<f64> = (0..x.len())
-                    .map(|r| parts.iter().map(|p| p[r]).filter(|v| v.is_finite()).sum())
-                    .collect();
-                let names: Vec<&str> = spec.columns[k].iter().map(|(c, _)| c.as_str()).collect();
+                };
                 series.push(Series {
                     label: m.name.clone(),
                     source: format!("{file}:{}", names.join("+")),
-                    x: x.to_vec(),
-                    y,
+                    x: t.x.clone(),
+                    y: t.y.clone(),
                     colour: k,
                     dash: 0,
                     markers: false,
                 });
                 continue;
             }
-            for (d, (column, suffix)) in spec.columns[k].iter().enumerate() {
-                let Some(y) = cols.get(column) else { continue };
-                if !y.iter().any(|v| v.is_finite()) {
+            for (dash, (column, suffix)) in spec.columns[k].iter().enumerate() {
+                let Some(t) = d.traces.get(column) else {
+                    continue;
+                };
+                if !t.y.iter().any(|v| v.is_finite()) {
                     continue;
                 }
                 series.push(Series {
                     label: format!("{}{suffix}", m.name),
                     source: format!("{file}:{column}"),
-                    x: x.to_vec(),
-                    y: y.to_vec(),
+                    x: t.x.clone(),
+                    y: t.y.clone(),
                     colour: k,
-                    dash: d,
+                    dash,
                     markers: false,
                 });
             }
@@ -281,6 +270,39 @@ pub(super) fn charts(
             svg::line_chart(&chart),
             format!("{}: every mechanism over crank angle", spec.title),
         ));
+    }
+    out
+}
+
+/// The power-loss columns of a header (`power_loss_<component>_w`): each one's chart, and
+/// their sum's (the total loss).
+pub(super) fn loss_columns(h: &[String]) -> Vec<String> {
+    h.iter()
+        .filter(|c| c.starts_with("power_loss_") && c.ends_with("_w"))
+        .cloned()
+        .collect()
+}
+
+/// The key of the series that sums `columns`: their names joined by `+` (as its charts'
+/// `data-source` names it) after `sum:`, which no column name starts with, so that the sum of
+/// one column stays apart from the column itself (the sum counts a gap as 0).
+pub(super) fn sum_key(columns: &[String]) -> String {
+    format!("sum:{}", columns.join("+"))
+}
+
+/// The series the charts can draw from rows with the header `h` (the mechanism's `joints`):
+/// every wanted column but the crank angle (the x of them all) on its own, keyed by its name,
+/// and the sum of the power-loss columns ([`sum_key`]). Summing per row before thinning keeps
+/// the total's own peaks, which the sum of the thinned parts would not.
+pub(super) fn traces(h: &[String], joints: &[String]) -> Vec<(String, Vec<String>)> {
+    let mut out: Vec<(String, Vec<String>)> = wanted_columns(h, joints)
+        .into_iter()
+        .filter(|c| c != "crank_angle_deg")
+        .map(|c| (c.clone(), vec![c]))
+        .collect();
+    let losses = loss_columns(h);
+    if !losses.is_empty() {
+        out.push((sum_key(&losses), losses));
     }
     out
 }

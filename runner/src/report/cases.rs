@@ -3,9 +3,10 @@
 //! `case_plots.rs`.
 
 use super::case_plots::{charts, plot_specs, wanted_columns};
-use super::data::{self, CaseSummary, Columns, MechanismSummary};
+use super::data::{self, CaseSummary, MechanismSummary};
 use super::doc::{Align, Block, Doc};
-use super::svg;
+use super::envelope::{ChartData, ChartRecorder};
+use super::svg::{self, MAX_POINTS};
 use super::{fmt_num, fmt_pct, pct_diff, write_report, Better};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -369,18 +370,56 @@ fn metric_tables(s: &CaseSummary) -> Vec<Block> {
     blocks
 }
 
-pub(super) fn case_report(case_dir: &Path, reference: Option<&str>) -> anyhow::Result<()> {
+/// The chart data of a mechanism from its CSV at `path` (the charts' columns only), thinned
+/// as the run would have (a report made from a folder alone).
+fn chart_data_from_csv(path: &Path, joints: &[String], file: String) -> anyhow::Result<ChartData> {
+    let cols = data::read_columns(path, |h| wanted_columns(h, joints))?;
+    let rows = cols.get("crank_angle_deg").map_or(0, <[f64]>::len);
+    let mut recorder = ChartRecorder::new(&cols.header, joints, rows, MAX_POINTS, file);
+    let read: Vec<(usize, &[f64])> = cols
+        .header
+        .iter()
+        .enumerate()
+        .filter_map(|(k, h)| cols.get(h).map(|v| (k, v)))
+        .collect();
+    let mut row = vec![f64::NAN; cols.header.len()];
+    for r in 0..rows {
+        for (k, v) in &read {
+            row[*k] = v[r];
+        }
+        recorder.record(&row);
+    }
+    Ok(recorder.finish())
+}
+
+/// The report of the case in `case_dir`; a mechanism's charts from `from_run` (keyed by its
+/// name in `summary.json`) when it is there, else from its CSV if the folder has one.
+pub(super) fn case_report(
+    case_dir: &Path,
+    reference: Option<&str>,
+    mut from_run: BTreeMap<String, ChartData>,
+) -> anyhow::Result<()> {
     let (s, reference) = data::read_summary(&case_dir.join("summary.json"), reference)?;
-    // The CSVs, read in parallel; only the columns the charts use.
-    let data: Vec<Option<Columns>> = s
+    let given: Vec<Option<ChartData>> = s
+        .mechanisms
+        .iter()
+        .map(|m| from_run.remove(&m.name))
+        .collect();
+    // Only the mechanisms the run did not chart read their CSV (in parallel).
+    let data: Vec<Option<ChartData>> = s
         .mechanisms
         .par_iter()
-        .map(|m| {
-            let path = case_dir.join(format!("{}.csv", m.name));
+        .zip(given)
+        .map(|(m, given)| {
+            if given.is_some() {
+                return Ok(given);
+            }
+            let file = format!("{}.csv", m.name);
+            let path = case_dir.join(&file);
             if !path.is_file() {
                 return Ok(None);
             }
-            data::read_columns(&path, |h| wanted_columns(h, &m.joints)).map(Some)
+            chart_data_from_csv(&path, &m.joints, file).map(Some)
         })
         .collect::<anyhow::Result<_>>()?;
     let headers: Vec<Option<Vec<String>>> = data
@@ -435,7 +474,10 @@ pub(super) fn case_report(case_dir: &Path, reference: Option<&str>) -> anyhow::R
     doc.push(Block::Heading(2, "Charts".into()));
     if plots.is_empty() {
         doc.push(Block::Paragraph(
-            "No per-step CSV in this folder (`[output] csv = false`): no charts.".into(),
+            "No charts: this report was made from the folder alone, which holds no per-step \
+             CSV (`[output] csv = false`); a run with its report (`cardan run` without \
+             `--no-report`) charts its steps whatever its files."
+                .into(),
         ));
     }
     for (file, svg_text, caption) in &plots {

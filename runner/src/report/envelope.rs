@@ -1,0 +1,332 @@
+//! A series thinned while it is being made: a case's charts come from its run, step by step,
+//! in memory that does not grow with the number of steps.
+//!
+//! [`Envelope`] keeps what the SVG writer's [`decimate`](super::svg::decimate) would keep of
+//! the whole series, computed on the fly: all the points when the run has at most the budget,
+//! else the first point, per bucket of consecutive rows the points of smallest and largest
+//! value in their order, and the last point. The buckets are decimate's (`buckets = (budget −
+//! 2) / 2`, bucket `b` the rows `b·n/buckets .. (b+1)·n/buckets` of the `n` announced), so a
+//! series without gaps thins to the very points the writer would have drawn from the whole
+//! CSV: the charts are byte-identical, and the writer keeps them as they are (the envelope
+//! never holds more than the budget). A finer envelope (more bins than the writer draws)
+//! would be thinned again by the writer, so it would buy nothing on the page.
+//!
+//! [`ChartRecorder`] applies one envelope per series the charts draw to a crank train's
+//! per-step rows (the rows of `per_step.rs`, whose header names their columns).
+
+use super::case_plots::traces;
+use std::collections::BTreeMap;
+
+/// The running min/max thinning of one series (see the module's documentation).
+#[derive(Debug, Clone)]
+pub struct Envelope {
+    /// Rows announced (the buckets' bounds follow from it).
+    rows: usize,
+    /// Buckets; 0 when every point is kept (`rows` ≤ budget).
+    buckets: usize,
+    /// The next row's index.
+    row: usize,
+    /// The current bucket and the row where the next one begins.
+    bucket: usize,
+    bucket_end: usize,
+    /// The current bucket's points of smallest and largest value: (row, x, y).
+    lo: Option<(usize, f64, f64)>,
+    hi: Option<(usize, f64, f64)>,
+    /// The last finite point so far.
+    last: Option<(usize, f64, f64)>,
+    /// The row of the last point kept (so that a point is never kept twice).
+    kept_row: Option<usize>,
+    x: Vec<f64>,
+    y: Vec<f64>,
+}
+
+impl Envelope {
+    /// An envelope for a series of `rows` rows keeping at most `budget` points (at least 4: the
+    /// two ends and one bucket's two extremes).
+    pub fn new(rows: usize, budget: usize) -> Self {
+        let budget = budget.max(4);
+        let buckets = if rows <= budget {
+            0
+        } else {
+            // decimate's: the ends and two points per bucket, 2 + 2·buckets ≤ budget.
+            (budget - 2) / 2
+        };
+        Self {
+            rows,
+            buckets,
+            row: 0,
+            bucket: 0,
+            // No buckets (every point kept): no bucket ever ends.
+            bucket_end: rows.checked_div(buckets).unwrap_or(usize::MAX),
+            lo: None,
+            hi: None,
+            last: None,
+            kept_row: None,
+            x: Vec::with_capacity(rows.min(budget)),
+            y: Vec::with_capacity(rows.min(budget)),
+        }
+    }
+
+    fn keep(&mut self, (row, x, y): (usize, f64, f64)) {
+        if self.kept_row != Some(row) {
+            self.kept_row = Some(row);
+            self.x.push(x);
+            self.y.push(y);
+        }
+    }
+
+    /// Keeps the current bucket's extremes, the earlier first.
+    fn close_bucket(&mut self) {
+        if let (Some(lo), Some(hi)) = (self.lo.take(), self.hi.take()) {
+            let (a, b) = if lo.0 <= hi.0 { (lo, hi) } else { (hi, lo) };
+            self.keep(a);
+            self.keep(b);
+        }
+    }
+
+    /// Takes the next row's point; a NaN or infinite one is a gap, as in the charts (skipped).
+    pub fn push(&mut self, x: f64, y: f64) {
+        let row = self.row;
+        self.row += 1;
+        if !(x.is_finite() && y.is_finite()) {
+            return;
+        }
+        let point = (row, x, y);
+        if self.buckets == 0 {
+            self.keep(point);
+            return;
+        }
+        // Rows past the announced count stay in the last bucket.
+        while row >= self.bucket_end && self.bucket + 1 < self.buckets {
+            self.close_bucket();
+            self.bucket += 1;
+            self.bucket_end = (self.bucket + 1) * self.rows / self.buckets;
+        }
+        if self.last.is_none() {
+            self.keep(point);
+        }
+        self.last = Some(point);
+        // Strict comparisons: the first point of the smallest (largest) value, as decimate.
+        if self.lo.is_none_or(|(_, _, v)| y < v) {
+            self.lo = Some(point);
+        }
+        if self.hi.is_none_or(|(_, _, v)| y > v) {
+            self.hi = Some(point);
+        }
+    }
+
+    /// Points held so far (never more than the budget).
+    pub fn len(&self) -> usize {
+        self.x.len()
+    }
+
+    /// Whether no point is held yet.
+    pub fn is_empty(&self) -> bool {
+        self.x.is_empty()
+    }
+
+    /// The kept points, in row order: (x, y).
+    pub fn finish(mut self) -> (Vec<f64>, Vec<f64>) {
+        self.close_bucket();
+        if let Some(last) = self.last {
+            self.keep(last);
+        }
+        (self.x, self.y)
+    }
+}
+
+/// What a chart draws of one crank train: x (the crank angle) and y, thinned.
+#[derive(Debug, Clone, Default)]
+pub struct Trace {
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+}
+
+/// The chart data of one crank train, from its run or its CSV.
+#[derive(Debug, Clone, Default)]
+pub struct ChartData {
+    /// The crank train's per-step column names (the CSV header), which say which charts apply.
+    pub header: Vec<String>,
+    /// Where the rows are, for each series' `data-source` (`<label>.csv`, `<label>.npy`, or the
+    /// label alone when the run wrote no per-step file).
+    pub file: String,
+    /// Per series: a column's name, or the names of the columns summed joined by `+`.
+    pub traces: BTreeMap<String, Trace>,
+}
+
+/// Thins, row by row, the series the charts draw from a crank train's per-step rows.
+pub struct ChartRecorder {
+    header: Vec<String>,
+    file: String,
+    /// The crank angle's index in a row.
+    x: Option<usize>,
+    /// Per series: its key, the row indices it sums (one for a plain column), its envelope.
+    series: Vec<(String, Vec<usize>, Envelope)>,
+}
+
+impl ChartRecorder {
+    /// A recorder for rows named by `header` of a mechanism with the joints `joints`, `rows`
+    /// rows in all, each series thinned to `budget` points; `file` names the rows' file.
+    pub fn new(
+        header: &[String],
+        joints: &[String],
+        rows: usize,
+        budget: usize,
+        file: String,
+    ) -> Self {
+        let index = |c: &str| header.iter().position(|h| h == c);
+        let series = traces(header, joints)
+            .into_iter()
+            .map(|(key, columns)| {
+                let at = columns.iter().filter_map(|c| index(c)).collect();
+                (key, at, Envelope::new(rows, budget))
+            })
+            .collect();
+        Self {
+            header: header.to_vec(),
+            file,
+            x: index("crank_angle_deg"),
+            series,
+        }
+    }
+
+    /// Whether a series reads the row's column `k` (the others may be left unfilled).
+    pub fn reads(&self, k: usize) -> bool {
+        self.x == Some(k) || self.series.iter().any(|(_, at, _)| at.contains(&k))
+    }
+
+    /// Takes one row (in the header's order).
+    pub fn record(&mut self, row: &[f64]) {
+        let Some(x) = self.x.map(|k| row[k]) else {
+            return;
+        };
+        for (_, at, envelope) in &mut self.series {
+            let y = match at.as_slice() {
+                [k] => row[*k],
+                // A sum (the total power loss): of the finite parts, as the charts always did.
+                parts => parts
+                    .iter()
+                    .map(|k| row[*k])
+                    .filter(|v| v.is_finite())
+                    .sum(),
+            };
+            envelope.push(x, y);
+        }
+    }
+
+    /// The thinned series.
+    pub fn finish(self) -> ChartData {
+        let traces = self
+            .series
+            .into_iter()
+            .map(|(key, _, envelope)| {
+                let (x, y) = envelope.finish();
+                (key, Trace { x, y })
+            })
+            .collect();
+        ChartData {
+            header: self.header,
+            file: self.file,
+            traces,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::svg::decimate;
+    use super::*;
+
+    fn thin(x: &[f64], y: &[f64], budget: usize) -> (Vec<f64>, Vec<f64>) {
+        let mut e = Envelope::new(x.len(), budget);
+        for (a, b) in x.iter().zip(y) {
+            e.push(*a, *b);
+            assert!(e.len() <= budget);
+        }
+        e.finish()
+    }
+
+    #[test]
+    fn the_envelope_keeps_the_extremes_and_the_ends() {
+        for n in [2usize, 999, 1000, 1001, 7201, 100_003] {
+            let x: Vec<f64> = (0..n).map(|k| k as f64 * 0.05).collect();
+            let mut y: Vec<f64> = x
+                .iter()
+                .map(|t| (t * 0.37).sin() + 0.1 * (t * 7.1).cos())
+                .collect();
+            y[n / 3] = 5.0;
+            y[n / 2] = -7.0;
+            let (tx, ty) = thin(&x, &y, 1000);
+            assert!(tx.len() <= 1000);
+            assert_eq!((tx[0], ty[0]), (x[0], y[0]), "{n}: first");
+            assert_eq!(
+                (*tx.last().unwrap(), *ty.last().unwrap()),
+                (x[n - 1], y[n - 1]),
+                "{n}: last"
+            );
+            assert!(ty.contains(&5.0) && ty.contains(&-7.0), "{n}: the extremes");
+            assert!(tx.windows(2).all(|w| w[0] < w[1]), "{n}: in order");
+            if n <= 1000 {
+                assert_eq!((tx, ty), (x, y), "every step under the budget");
+            }
+        }
+    }
+
+    /// The envelope is what the SVG writer keeps of the whole series: the charts made from the
+    /// run are those made from the CSV, point for point.
+    #[test]
+    fn the_envelope_is_the_writers_decimation() {
+        for (n, budget) in [
+            (7201, 1000),
+            (3601, 1000),
+            (1001, 1000),
+            (50_000, 64),
+            (10, 4),
+        ] {
+            let x: Vec<f64> = (0..n).map(|k| k as f64).collect();
+            let y: Vec<f64> = x
+                .iter()
+                .map(|t| ((t * 0.013).sin() * 1e3).round() + (t * 0.7).cos())
+                .collect();
+            assert_eq!(
+                thin(&x, &y, budget),
+                decimate(&x, &y, budget),
+                "{n} {budget}"
+            );
+            // Flat stretches (ties: the first of equal values, as decimate).
+            let flat: Vec<f64> = x.iter().map(|t| (t / 500.0).floor()).collect();
+            assert_eq!(thin(&x, &flat, budget), decimate(&x, &flat, budget));
+        }
+    }
+
+    /// Memory: a long run holds at most the budget, whatever its length.
+    #[test]
+    fn a_long_run_keeps_at_most_the_budget() {
+        let n = 3_000_000;
+        let mut e = Envelope::new(n, 1000);
+        let mut most = 0;
+        for k in 0..n {
+            let t = k as f64 * 1e-4;
+            e.push(t, t.sin() * (1.0 + (t * 13.0).cos()));
+            most = most.max(e.len());
+        }
+        assert!(most <= 1000, "{most}");
+        let (x, _) = e.finish();
+        assert!((900..=1000).contains(&x.len()), "{}", x.len());
+        // Gaps are skipped; more rows than announced stay in the last bucket.
+        let mut e = Envelope::new(10_000, 100);
+        for k in 0..20_000 {
+            e.push(
+                k as f64,
+                if k % 7 == 3 {
+                    f64::NAN
+                } else {
+                    (k % 100) as f64
+                },
+            );
+        }
+        let (x, y) = e.finish();
+        assert!(x.len() <= 100 && y.iter().all(|v| v.is_finite()));
+        assert_eq!(*x.last().unwrap(), 19_999.0);
+    }
+}
