@@ -406,10 +406,14 @@ impl Sink for PerStepSink<'_> {
                 }
             }
             None => {
-                self.scratch.clear();
-                self.row.fill(s, &mut self.scratch);
                 if let Some(c) = &mut self.charts {
-                    c.record(&self.scratch);
+                    if c.takes_next() {
+                        self.scratch.clear();
+                        self.row.fill(s, &mut self.scratch);
+                        c.record(&self.scratch);
+                    } else {
+                        c.skip();
+                    }
                 }
             }
         }

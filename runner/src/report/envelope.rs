@@ -12,7 +12,12 @@
 //! would be thinned again by the writer, so it would buy nothing on the page.
 //!
 //! [`ChartRecorder`] applies one envelope per series the charts draw to a crank train's
-//! per-step rows (the rows of `per_step.rs`, whose header names their columns).
+//! per-step rows (the rows of `per_step.rs`, whose header names their columns). Of a run of
+//! more than [`MAX_CHART_ROWS`] rows it takes every k-th row (and the last), the fewest k that
+//! keeps it within that many: at least 32 rows per bucket of the envelope still, so a peak of
+//! a smooth curve is drawn within a small fraction of a pixel (the summary has the exact
+//! peaks), and a summary-only run of millions of steps does not pay the charts' per-row cost
+//! at every step. Reading the rows back from a CSV takes the same rows.
 
 use super::case_plots::traces;
 use std::collections::BTreeMap;
@@ -154,10 +159,17 @@ pub struct ChartData {
     pub traces: BTreeMap<String, Trace>,
 }
 
+/// The most rows a chart series takes from a run (see the module's documentation).
+pub const MAX_CHART_ROWS: usize = 16 * super::svg::MAX_POINTS;
+
 /// Thins, row by row, the series the charts draw from a crank train's per-step rows.
 pub struct ChartRecorder {
     header: Vec<String>,
     file: String,
+    /// Rows announced, the stride of the rows taken, and the next row's index.
+    rows: usize,
+    stride: usize,
+    next: usize,
     /// The crank angle's index in a row.
     x: Option<usize>,
     /// Per series: its key, the row indices it sums (one for a plain column), its envelope.
@@ -175,16 +187,21 @@ impl ChartRecorder {
         file: String,
     ) -> Self {
         let index = |c: &str| header.iter().position(|h| h == c);
+        let stride = rows.div_ceil(MAX_CHART_ROWS).max(1);
+        let taken = crate::per_step::row_count(rows.saturating_sub(1), stride);
         let series = traces(header, joints)
             .into_iter()
             .map(|(key, columns)| {
                 let at = columns.iter().filter_map(|c| index(c)).collect();
-                (key, at, Envelope::new(rows, budget))
+                (key, at, Envelope::new(taken, budget))
             })
             .collect();
         Self {
             header: header.to_vec(),
             file,
+            rows,
+            stride,
+            next: 0,
             x: index("crank_angle_deg"),
             series,
         }
@@ -195,8 +212,23 @@ impl ChartRecorder {
         self.x == Some(k) || self.series.iter().any(|(_, at, _)| at.contains(&k))
     }
 
-    /// Takes one row (in the header's order).
+    /// Whether the next row is one the series take (every `stride`-th and the last).
+    pub fn takes_next(&self) -> bool {
+        self.next % self.stride == 0 || self.next + 1 == self.rows
+    }
+
+    /// Passes over the next row without taking it (a row [`Self::takes_next`] declines).
+    pub fn skip(&mut self) {
+        self.next += 1;
+    }
+
+    /// Takes one row (in the header's order), if it is one the series take.
     pub fn record(&mut self, row: &[f64]) {
+        let taken = self.takes_next();
+        self.next += 1;
+        if !taken {
+            return;
+        }
         let Some(x) = self.x.map(|k| row[k]) else {
             return;
         };
@@ -328,5 +360,40 @@ mod tests {
         let (x, y) = e.finish();
         assert!(x.len() <= 100 && y.iter().all(|v| v.is_finite()));
         assert_eq!(*x.last().unwrap(), 19_999.0);
+    }
+
+    #[test]
+    fn a_recorder_takes_every_row_up_to_its_limit_then_every_kth_and_the_last() {
+        let header: Vec<String> = ["crank_angle_deg", "total_torque_nm"]
+            .map(String::from)
+            .to_vec();
+        for (rows, stride) in [
+            (7201, 1),
+            (MAX_CHART_ROWS, 1),
+            (MAX_CHART_ROWS + 1, 2),
+            (720_001, 46),
+        ] {
+            let mut r = ChartRecorder::new(&header, &[], rows, 1000, "c.csv".into());
+            let mut taken = Vec::new();
+            for k in 0..rows {
+                if r.takes_next() {
+                    taken.push(k);
+                }
+                r.record(&[k as f64, (k as f64 * 1e-3).sin()]);
+            }
+            assert_eq!(r.stride, stride, "{rows} rows");
+            assert!(
+                taken.len() <= MAX_CHART_ROWS + 1,
+                "{rows} rows: {}",
+                taken.len()
+            );
+            assert_eq!(taken.len(), crate::per_step::row_count(rows - 1, stride));
+            assert_eq!(taken.last(), Some(&(rows - 1)), "the last row is taken");
+            assert!(taken.iter().all(|k| k % stride == 0 || *k == rows - 1));
+            let data = r.finish();
+            let t = &data.traces["total_torque_nm"];
+            assert_eq!(*t.x.first().unwrap(), 0.0);
+            assert_eq!(*t.x.last().unwrap(), (rows - 1) as f64);
+        }
     }
 }
