@@ -24,6 +24,22 @@ const HEADLINES: &[(&str, &[&str])] = &[
     ("mechanical efficiency", &["mechanical_efficiency"]),
 ];
 
+/// A family's mean drive power `v` (metric `metric`, `<family>_power_mean`) as 0 when it is
+/// below 1e-12 of the largest |T|·|ω| of the run (the family's peak torque times the crank's
+/// peak speed): the round-off left of a zero mean, e.g. an inertia-only run over whole cycles at
+/// constant speed, whose drive work is the kinetic energy change, 0 (a headline of
+/// "−5.6e−11 W" would read as a result). The case's own metric tables keep the raw value.
+fn round_off_to_zero(v: f64, metric: &str, m: &data::MechanismSummary) -> f64 {
+    let family = metric.trim_end_matches("_power_mean");
+    let scale = m.get(&format!("{family}_torque_max")).unwrap_or(f64::NAN)
+        * m.get("crankshaft_angular_velocity_max").unwrap_or(f64::NAN);
+    if v.abs() < 1e-12 * scale {
+        0.0
+    } else {
+        v
+    }
+}
+
 /// The folders of `dir` (not hidden), sorted by name.
 fn folders(dir: &Path) -> anyhow::Result<Vec<String>> {
     let mut names = Vec::new();
@@ -92,7 +108,14 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
             for m in &s.mechanisms {
                 let mut row = vec![c.clone(), s.machine.clone(), format!("`{}`", m.name)];
                 for (_, alternatives) in HEADLINES {
-                    let v = alternatives.iter().find_map(|a| m.get(a));
+                    let v = alternatives.iter().find_map(|a| {
+                        let v = m.get(a)?;
+                        Some(if a.ends_with("_power_mean") {
+                            round_off_to_zero(v, a, m)
+                        } else {
+                            v
+                        })
+                    });
                     row.push(match v {
                         Some(v) => fmt_num(v),
                         None => "—".into(),
@@ -129,4 +152,36 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
         ));
     }
     crate::output::write_file(&out_dir.join("index.html"), doc.html().as_bytes())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn mechanism(metrics: &[(&str, f64)]) -> data::MechanismSummary {
+        data::MechanismSummary {
+            name: "m".into(),
+            metrics: metrics.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
+            units: Default::default(),
+            joints: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn a_round_off_mean_power_is_shown_as_zero_and_a_real_one_is_not() {
+        let m = mechanism(&[
+            ("inertial_torque_max", 556.0),
+            ("crankshaft_angular_velocity_max", 628.3),
+        ]);
+        // 556 N·m × 628 rad/s = 3.5e5 W: 5.6e-11 W is 1.6e-16 of it.
+        assert_eq!(round_off_to_zero(-5.6e-11, "inertial_power_mean", &m), 0.0);
+        assert_eq!(round_off_to_zero(8309.0, "inertial_power_mean", &m), 8309.0);
+        assert_eq!(round_off_to_zero(1e-3, "inertial_power_mean", &m), 1e-3);
+        // Without the scale the value stays as it is.
+        let bare = mechanism(&[("inertial_torque_max", 556.0)]);
+        assert_eq!(
+            round_off_to_zero(-5.6e-11, "inertial_power_mean", &bare),
+            -5.6e-11
+        );
+    }
 }
