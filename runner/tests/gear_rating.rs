@@ -80,6 +80,12 @@ fn bad_gear_fields_are_named() {
         ),
         ("[gear]\nteeth = 20.5\n", "gear.teeth", "whole number"),
         ("[gear]\nmodule = 3\n", "gear.module", "unknown field"),
+        // Karhula's reading needs his mesh force, which the involute reading does not have.
+        (
+            "[gear]\ntooth_load = \"thesis\"\n[cardan_gear]\ngear_mesh_model = \"involute\"\n",
+            "gear.tooth_load",
+            "rate it with \"tangential\"",
+        ),
     ] {
         let e = parse(Path::new("pump.toml"), &pump(extra))
             .unwrap_err()

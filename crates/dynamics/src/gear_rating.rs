@@ -19,7 +19,7 @@ use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
 use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::{Lubricant, MeshSpeeds, Reading};
 use cardan_gears::{pitting_geometry_factor, GearSet, IForm, MeshStep, ShiftCase};
-use cardan_mechanism::{JointKind, Loads, Material, Mechanism, State, C};
+use cardan_mechanism::{JointKind, Loads, Material, Mechanism, MeshForce, State, C};
 
 use crate::losses::{Friction, LossError};
 use crate::summary::tangential;
@@ -44,8 +44,8 @@ pub enum ToothLoad {
     ///   thesis, carries the wheel's mass on the balanced crankshaft): the wheel is the steel
     ///   disc of A8.1.5 of its pitch diameter and face width (0.444 kg for Karhula's pair, not
     ///   fitted); without it the pump's loads at 100π-200π rad/s are 1.7-7.2 % low;
-    /// - its part along the cylinder axis, projected on the pitch-circle tangent (A8.1.10; the
-    ///   thesis's ring force is axial), as a magnitude;
+    /// - its part along the tied mesh force's direction (the cylinder axis; A5.2.1.48-51),
+    ///   projected on the pitch-circle tangent (A8.1.10), as a magnitude;
     /// - Buckingham's load in its saturated limit
     ///   ([`BuckinghamPair::saturated_dynamic_load`]).
     Thesis,
@@ -219,7 +219,8 @@ struct Rated {
     /// The mesh's first gear as a solid steel disc of its pitch diameter and the rated face
     /// width, m = ρ·b·π·d²/4, kg (A8.1.5, A8.1.9; the wheel's mass of [`ToothLoad::Thesis`]).
     disc_mass: f64,
-    /// Unit vector of the cylinder axis (the first piston's; +y without a piston).
+    /// Unit vector of the thesis's ring force: the tied mesh force's direction (the cylinder
+    /// axis in the cardan gear; unused with involute teeth).
     axis: C,
 }
 
@@ -241,7 +242,6 @@ impl GearRatings {
             rule: e.to_string(),
         };
         let topology = mechanism.topology();
-        let axis = topology.pistons.first().map_or(C::i(), |p| p.axis);
         let mut meshes = Vec::new();
         for (k, j) in topology.joints.iter().enumerate() {
             let JointKind::GearMesh {
@@ -249,10 +249,28 @@ impl GearRatings {
                 pitch_radius,
                 internal,
                 pressure_angle,
-                ..
+                force,
             } = j.kind
             else {
                 continue;
+            };
+            // The thesis's ring force acts along its tied direction (A5.2.1.48-51); involute
+            // teeth have no such direction.
+            let axis = match (spec.tooth_load, force) {
+                (_, MeshForce::Tied { direction, .. }) => direction,
+                (ToothLoad::Thesis, MeshForce::Involute) => {
+                    return Err(LossError {
+                        field: "gear.tooth_load".into(),
+                        rule: format!(
+                            "\"thesis\" is Karhula's reading of his own mesh force, which acts \
+                             along a fixed direction; the mesh {} has involute teeth pushing \
+                             along the line of action (the `involute` mesh-force reading): rate \
+                             it with \"tangential\", or use the `karhula` mesh-force reading",
+                            j.name
+                        ),
+                    });
+                }
+                (_, MeshForce::Involute) => C::i(),
             };
             let (pair, face_width) =
                 mesh_pair(spec, ratio, pitch_radius, internal, pressure_angle)?;
