@@ -106,6 +106,18 @@ fn npy_holds_the_csv_numbers_column_after_column() {
 }
 
 #[test]
+fn npy_of_many_blocks_holds_the_csv_numbers() {
+    // 9001 rows: 17 full blocks of the writer (512 rows) and a part, each written in place.
+    let dir = tempfile::tempdir().unwrap();
+    run(
+        dir.path(),
+        &CASE.replace("steps = 1441", "steps = 9000"),
+        None,
+    );
+    check_npy_equals_csv(&dir.path().join("out/npy"), "cardan_gear", 9001);
+}
+
+#[test]
 fn npy_follows_decimation() {
     let dir = tempfile::tempdir().unwrap();
     run(
