@@ -24,6 +24,10 @@ impl MotionSource for Prebuilt<'_> {
     fn next(&mut self, _: Option<f64>) -> Option<Result<CrankState, MotionError>> {
         self.0.next().map(|c| Ok(*c))
     }
+
+    fn prescribed(&self) -> bool {
+        true
+    }
 }
 
 fn cycle(c: &mut Criterion) {

@@ -6,7 +6,7 @@ use crate::energy::torque_shares;
 use crate::family::LoadFamily;
 use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
-use cardan_mechanism::{Loads, Mechanism, MotionError, MotionSource, State};
+use cardan_mechanism::{CrankState, Loads, Mechanism, MotionError, MotionSource, State};
 
 /// One step, as the sinks see it.
 #[derive(Debug, Clone, Copy)]
@@ -88,7 +88,12 @@ pub fn run(
     let Stages { mut losses, gears } = stages;
     let mut ratings = vec![MeshRating::default(); gears.map_or(0, |g| g.names().len())];
     let topology = mechanism.topology();
-    let mut state = State::for_topology(topology);
+    // A prescribed motion's states come a block at a time, so that the mechanism can fill
+    // them together (`Mechanism::fill_block`); a solved motion's one at a time, each after the
+    // torque of the one before.
+    let block = if motion.prescribed() { STEP_BLOCK } else { 1 };
+    let mut cranks: Vec<CrankState> = Vec::with_capacity(block);
+    let mut states = vec![State::for_topology(topology); block];
     let mut loads = vec![Loads::for_topology(topology); families.len()];
     let mut total = Loads::for_topology(topology);
     let mut shares = vec![vec![0.0; topology.bodies.len()]; families.len()];
@@ -105,94 +110,116 @@ pub fn run(
     let mut index = 0;
     let details = sinks.iter().any(|s| s.wants_details());
     let inertial = families.iter().position(|f| f.inertia());
-    while let Some(crank) = motion.next(previous_torque) {
-        let crank = crank.map_err(|source| RunError::Motion {
-            step: index,
-            source,
-        })?;
-        mechanism.fill(&crank, &mut state);
-        if details {
-            mechanism.fill_extras(&mut state);
+    let mut ended = false;
+    while !ended {
+        cranks.clear();
+        let mut stopped = None;
+        while cranks.len() < block {
+            match motion.next(previous_torque) {
+                None => {
+                    ended = true;
+                    break;
+                }
+                Some(Ok(crank)) => cranks.push(crank),
+                Some(Err(source)) => {
+                    stopped = Some(RunError::Motion {
+                        step: index + cranks.len(),
+                        source,
+                    });
+                    break;
+                }
+            }
         }
-        let pressure = gas.map(|g| {
-            let (p, f) = g(crank.angle);
-            forces.fill(f);
-            p
-        });
-        // Each family sees the sum of those before it; one family is its own total.
-        let several = families.len() > 1;
-        if several {
-            total.clear();
-        }
-        for ((family, out), share) in families.iter().zip(&mut loads).zip(&mut shares) {
-            let applied: &[f64] = if family.piston_forces() { &forces } else { &[] };
-            family.loads(mechanism, &state, applied, &total, out);
+        mechanism.fill_block(&cranks, &mut states[..cranks.len()]);
+        for (crank, state) in cranks.iter().zip(&mut states) {
             if details {
-                torque_shares(topology, &state, family.inertia(), applied, share);
+                mechanism.fill_extras(state);
             }
+            let state: &State = state;
+            let pressure = gas.map(|g| {
+                let (p, f) = g(crank.angle);
+                forces.fill(f);
+                p
+            });
+            // Each family sees the sum of those before it; one family is its own total.
+            let several = families.len() > 1;
             if several {
-                total.add(out);
+                total.clear();
             }
-        }
-        let total = if several { &total } else { &loads[0] };
-        check_finite(
-            index, &state, pressure, &forces, families, &loads, mechanism,
-        )?;
-        let mut friction_torque = 0.0;
-        if let Some(budget) = losses.as_deref_mut() {
-            budget
-                .evaluate(&state, total, pressure, &mut power_losses)
-                .map_err(|message| RunError::Sink {
+            for ((family, out), share) in families.iter().zip(&mut loads).zip(&mut shares) {
+                let applied: &[f64] = if family.piston_forces() { &forces } else { &[] };
+                family.loads(mechanism, state, applied, &total, out);
+                if details {
+                    torque_shares(topology, state, family.inertia(), applied, share);
+                }
+                if several {
+                    total.add(out);
+                }
+            }
+            let total = if several { &total } else { &loads[0] };
+            check_finite(index, state, pressure, &forces, families, &loads, mechanism)?;
+            let mut friction_torque = 0.0;
+            if let Some(budget) = losses.as_deref_mut() {
+                budget
+                    .evaluate(state, total, pressure, &mut power_losses)
+                    .map_err(|message| RunError::Sink {
+                        step: index,
+                        message,
+                    })?;
+                let sum: f64 = power_losses.iter().sum();
+                if !sum.is_finite() {
+                    let k = power_losses
+                        .iter()
+                        .position(|p| !p.is_finite())
+                        .unwrap_or(0);
+                    return Err(RunError::NonFinite {
+                        step: index,
+                        angle_deg: state.crank.angle.to_degrees(),
+                        quantity: format!("power_loss_{}", budget.names()[k]),
+                        value: power_losses[k],
+                    });
+                }
+                if state.crank.speed != 0.0 {
+                    friction_torque = sum / state.crank.speed.abs();
+                }
+            }
+            if let Some(g) = gears {
+                g.evaluate(state, total, inertial.map(|k| &loads[k]), &mut ratings)
+                    .map_err(|message| RunError::Sink {
+                        step: index,
+                        message,
+                    })?;
+            }
+            let step = Step {
+                index,
+                state,
+                pressure,
+                piston_forces: &forces,
+                families: &loads,
+                total,
+                losses: &power_losses,
+                friction_torque,
+                gears: &ratings,
+                shares: &shares,
+            };
+            for sink in sinks.iter_mut() {
+                sink.push(&step).map_err(|message| RunError::Sink {
                     step: index,
                     message,
                 })?;
-            let sum: f64 = power_losses.iter().sum();
-            if !sum.is_finite() {
-                let k = power_losses
-                    .iter()
-                    .position(|p| !p.is_finite())
-                    .unwrap_or(0);
-                return Err(RunError::NonFinite {
-                    step: index,
-                    angle_deg: state.crank.angle.to_degrees(),
-                    quantity: format!("power_loss_{}", budget.names()[k]),
-                    value: power_losses[k],
-                });
             }
-            if state.crank.speed != 0.0 {
-                friction_torque = sum / state.crank.speed.abs();
-            }
+            previous_torque = Some(total.crank_torque);
+            index += 1;
         }
-        if let Some(g) = gears {
-            g.evaluate(&state, total, inertial.map(|k| &loads[k]), &mut ratings)
-                .map_err(|message| RunError::Sink {
-                    step: index,
-                    message,
-                })?;
+        if let Some(e) = stopped {
+            return Err(e);
         }
-        let step = Step {
-            index,
-            state: &state,
-            pressure,
-            piston_forces: &forces,
-            families: &loads,
-            total,
-            losses: &power_losses,
-            friction_torque,
-            gears: &ratings,
-            shares: &shares,
-        };
-        for sink in sinks.iter_mut() {
-            sink.push(&step).map_err(|message| RunError::Sink {
-                step: index,
-                message,
-            })?;
-        }
-        previous_torque = Some(total.crank_torque);
-        index += 1;
     }
     Ok(())
 }
+
+/// Crank states a run takes at once from a prescribed motion.
+const STEP_BLOCK: usize = 8;
 
 /// Fails the step if any computed quantity is not finite, naming the first such quantity. One
 /// sum of everything is checked per step (a NaN or infinity anywhere makes it non-finite); the

@@ -69,6 +69,16 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
     /// extras.
     fn fill(&self, crank: &CrankState, state: &mut State);
 
+    /// Fills `states[k]` at `cranks[k]` for a block of crank states known together (a
+    /// prescribed motion), each exactly as [`Mechanism::fill`] would. A mechanism whose
+    /// kinematics wait on a square root or a division per step may compute those across the
+    /// block first, where the processor overlaps them.
+    fn fill_block(&self, cranks: &[CrankState], states: &mut [State]) {
+        for (crank, state) in cranks.iter().zip(states) {
+            self.fill(crank, state);
+        }
+    }
+
     /// Fills the [`Topology::extras`] of a `state` that [`Mechanism::fill`] filled (only done
     /// when an output wants them).
     fn fill_extras(&self, _state: &mut State) {}

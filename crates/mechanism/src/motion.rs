@@ -142,6 +142,12 @@ pub trait MotionSource {
     /// The next crank state, given the drive torque (N·m) the previous one needed (`None`
     /// at the first); `None` after the last.
     fn next(&mut self, previous_torque: Option<f64>) -> Option<Result<CrankState, MotionError>>;
+
+    /// Whether the states do not depend on the torques (a prescribed motion): then a run may
+    /// take several at once.
+    fn prescribed(&self) -> bool {
+        false
+    }
 }
 
 /// The prescribed motion on a grid uniform in crank angle, from `start` to exactly `end`.
@@ -250,6 +256,10 @@ impl Grid {
 impl MotionSource for Grid {
     fn len(&self) -> usize {
         self.steps + 1
+    }
+
+    fn prescribed(&self) -> bool {
+        true
     }
 
     fn next(&mut self, _previous_torque: Option<f64>) -> Option<Result<CrankState, MotionError>> {

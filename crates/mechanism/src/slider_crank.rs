@@ -32,6 +32,9 @@ const CRANKSHAFT: usize = 0;
 const ROD: usize = 1;
 const PISTON: usize = 2;
 
+/// Crank states whose rod angles [`SliderCrank`]'s `fill_block` computes together.
+const BLOCK: usize = 8;
+
 /// Slider-crank geometry and masses.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SliderCrank {
@@ -148,28 +151,20 @@ impl SliderCrank {
         let d2 = -(r * c + l * d1 * d1 * cos_ba) * inv; // (A4.2.2.31) at ω = 1, α = 0
         (cos_ba, sin_ba, d1, d2)
     }
-}
 
-impl Mechanism for SliderCrank {
-    fn name(&self) -> &'static str {
-        ENTRY.name
-    }
-
-    fn topology(&self) -> &Topology {
-        &self.topology
-    }
-
-    fn masses(&self) -> &MassProperties {
-        &self.masses
-    }
-
-    fn fill(&self, crank: &CrankState, st: &mut State) {
+    /// [`Mechanism::fill`] with the rod angles (cos θ_BA, sin θ_BA, dθ_BA/dθ, d²θ_BA/dθ²) of
+    /// [`Self::rod_angles`] given.
+    fn fill_with(
+        &self,
+        crank: &CrankState,
+        (cos_ba, sin_ba, d1, d2): (f64, f64, f64, f64),
+        st: &mut State,
+    ) {
         let (w, a) = (crank.speed, crank.acceleration);
         let (r, l) = (self.crank, self.rod);
         let i = C::i();
         let e_a = crank.direction;
         let crank_pin = PointMotion::on_crank(r, crank);
-        let (cos_ba, sin_ba, d1, d2) = self.rod_angles(e_a.re, e_a.im);
         // (A4.2.2.12) and (A4.2.2.31): ω_BA = ω·dθ_BA/dθ, α_BA = α·dθ_BA/dθ + ω²·d²θ_BA/dθ².
         let (w_ba, a_ba) = (w * d1, a * d1 + w * w * d2);
         let e_ba = C::new(cos_ba, sin_ba);
@@ -222,6 +217,39 @@ impl Mechanism for SliderCrank {
         p.acceleration = pin.acceleration.im;
         p.dx_dtheta = r * e_a.re + l * d1 * cos_ba;
         p.d2x_dtheta2 = -r * e_a.im + l * (d2 * cos_ba - d1 * d1 * sin_ba);
+    }
+}
+
+impl Mechanism for SliderCrank {
+    fn name(&self) -> &'static str {
+        ENTRY.name
+    }
+
+    fn topology(&self) -> &Topology {
+        &self.topology
+    }
+
+    fn masses(&self) -> &MassProperties {
+        &self.masses
+    }
+
+    fn fill(&self, crank: &CrankState, st: &mut State) {
+        let e_a = crank.direction;
+        self.fill_with(crank, self.rod_angles(e_a.re, e_a.im), st);
+    }
+
+    /// The rod angles of the whole block first: their square roots and divisions are
+    /// independent across steps, so the processor overlaps them instead of waiting on each.
+    fn fill_block(&self, cranks: &[CrankState], states: &mut [State]) {
+        let mut angles = [(0.0, 0.0, 0.0, 0.0); BLOCK];
+        for (cranks, states) in cranks.chunks(BLOCK).zip(states.chunks_mut(BLOCK)) {
+            for (a, c) in angles.iter_mut().zip(cranks) {
+                *a = self.rod_angles(c.direction.re, c.direction.im);
+            }
+            for ((c, st), a) in cranks.iter().zip(states).zip(angles) {
+                self.fill_with(c, a, st);
+            }
+        }
     }
 
     fn fill_extras(&self, st: &mut State) {

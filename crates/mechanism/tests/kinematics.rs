@@ -130,3 +130,27 @@ fn piston_position_is_the_states_and_dead_centres() {
         assert!(tdc.1.abs() < 1e-14, "{}", m.name());
     }
 }
+
+/// A block of crank states filled together is, state by state, what filling each alone gives,
+/// for every mechanism, whatever the block's length (a mechanism may work across the block).
+#[test]
+fn fill_block_is_fill_state_by_state() {
+    let motion = CrankMotion {
+        start_angle: 0.3,
+        initial_speed: 200.0,
+        angular_acceleration: 300.0,
+    };
+    let cranks = motion.grid(0.3, 7.0, 37).unwrap();
+    for m in machines() {
+        let t = m.topology();
+        for len in [1, 7, 8, 9, 16, 38] {
+            let mut block = vec![State::for_topology(t); len];
+            m.fill_block(&cranks[..len], &mut block);
+            for (c, got) in cranks[..len].iter().zip(&block) {
+                let mut alone = State::for_topology(t);
+                m.fill(c, &mut alone);
+                assert_eq!(*got, alone, "{} at {} rad, block {len}", m.name(), c.angle);
+            }
+        }
+    }
+}

@@ -1,0 +1,93 @@
+//! The step loop takes a prescribed motion's crank states a block at a time and a solved one's
+//! one at a time; either way every step reaches the sinks in order, and a motion that cannot
+//! go on fails at the step where it stops.
+
+use cardan_dynamics::{run, Inertial, LoadFamily, RunError, Sink, Solver, Stages, Steps};
+use cardan_mechanism::{
+    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, MotionError, MotionSource, Options,
+    MECHANISMS,
+};
+
+/// The same states, handed out as a solved motion would (one at a time).
+struct OneByOne(Grid);
+
+impl MotionSource for OneByOne {
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn next(&mut self, previous: Option<f64>) -> Option<Result<CrankState, MotionError>> {
+        self.0.next(previous)
+    }
+}
+
+fn steps(
+    motion: &mut dyn MotionSource,
+) -> (Vec<cardan_dynamics::StepRecord>, Result<(), RunError>) {
+    let g = MachineGeometry {
+        crank_length: 0.06,
+        rod_length: 0.14,
+        bore: 0.12,
+        pin_offset: 0.0,
+    };
+    let slider = MECHANISMS
+        .iter()
+        .find(|e| e.name == "slider_crank")
+        .unwrap();
+    let m = (slider.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
+    let inertial = Inertial(Solver::ClosedForm);
+    let families: [&dyn LoadFamily; 1] = [&inertial];
+    let mut kept = Steps::default();
+    let result = {
+        let mut sinks: [&mut dyn Sink; 1] = [&mut kept];
+        run(
+            m.as_ref(),
+            motion,
+            &families,
+            None,
+            Stages::default(),
+            &mut sinks,
+        )
+    };
+    (kept.0, result)
+}
+
+#[test]
+fn blocks_and_single_steps_give_the_same_run() {
+    let motion = CrankMotion {
+        start_angle: 1.0,
+        initial_speed: 100.0,
+        angular_acceleration: 500.0,
+    };
+    // 101 states: twelve blocks of eight and a part.
+    let (blocks, a) = steps(&mut Grid::new(motion, 1.0, 8.0, 100));
+    let (single, b) = steps(&mut OneByOne(Grid::new(motion, 1.0, 8.0, 100)));
+    assert!(a.is_ok() && b.is_ok());
+    assert_eq!(blocks.len(), 101);
+    assert_eq!(blocks, single);
+}
+
+#[test]
+fn a_crank_that_stops_mid_block_fails_at_its_step() {
+    // ω² = 1 − 2·Δθ: the crank stops between grid points 101 and 102 (h = 0.00495 rad).
+    let motion = CrankMotion {
+        start_angle: 0.0,
+        initial_speed: 1.0,
+        angular_acceleration: -1.0,
+    };
+    for source in [
+        &mut Grid::new(motion, 0.0, 0.99, 200) as &mut dyn MotionSource,
+        &mut OneByOne(Grid::new(motion, 0.0, 0.99, 200)),
+    ] {
+        let (kept, result) = steps(source);
+        assert_eq!(
+            kept.len(),
+            102,
+            "every step before the stop reached the sinks"
+        );
+        match result {
+            Err(RunError::Motion { step, .. }) => assert_eq!(step, 102),
+            other => panic!("{other:?}"),
+        }
+    }
+}
