@@ -58,12 +58,12 @@ impl Summary {
 pub const ENERGY_TOLERANCE: f64 = 1e-3;
 
 /// Raises `peak` to `value`. The stepper has checked every value is finite, so a plain
-/// comparison serves (cheaper than `f64::max`, which must handle NaN).
+/// comparison serves (cheaper than `f64::max`, which must handle NaN); written as a select, not
+/// a branch, so that it compiles to one `maxsd` instead of a jump the processor mispredicts
+/// whenever a peak rises (the same result for every pair of numbers).
 #[inline(always)]
 fn raise(peak: &mut f64, value: f64) {
-    if value > *peak {
-        *peak = value;
-    }
+    *peak = if value > *peak { value } else { *peak };
 }
 
 /// The component of a mesh force along the pitch-circle tangent t = i·d (d: from the pitch
