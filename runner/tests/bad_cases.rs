@@ -2,6 +2,7 @@
 //! the other cases of a batch.
 
 use cardan_runner::case::parse;
+use cardan_testing::mentions;
 use std::path::Path;
 
 const GOOD: &str = r#"
@@ -24,15 +25,6 @@ fn error_of(text: &str) -> String {
     match parse(Path::new("configs/bad.toml"), text) {
         Ok(_) => panic!("accepted a bad case:\n{text}"),
         Err(e) => e.to_string(),
-    }
-}
-
-fn assert_mentions(message: &str, parts: &[&str]) {
-    for p in parts {
-        assert!(
-            message.contains(p),
-            "error message {message:?} does not mention {p:?}"
-        );
     }
 }
 
@@ -158,25 +150,25 @@ fn each_rule_names_file_case_field_rule_and_value() {
             GOOD.contains(from),
             "test set-up: {from:?} not in the good case"
         );
-        assert_mentions(&error_of(&GOOD.replacen(from, to, 1)), parts);
+        mentions(&error_of(&GOOD.replacen(from, to, 1)), parts);
     }
 }
 
 #[test]
 fn syntax_missing_fields_and_unknown_keys_are_located() {
-    assert_mentions(
+    mentions(
         &error_of(&GOOD.replace("bore = 0.12\n", "")),
         &["configs/bad.toml", "missing field", "bore"],
     );
-    assert_mentions(
+    mentions(
         &error_of(&GOOD.replace("bore = 0.12", "bore = 0.12\nstroke = 0.1")),
         &["configs/bad.toml", "unknown field", "stroke"],
     );
-    assert_mentions(
+    mentions(
         &error_of(&GOOD.replace("steps = 720", "steps = 72.5")),
         &["configs/bad.toml", "steps"],
     );
-    assert_mentions(&error_of("name = "), &["configs/bad.toml", "line 1"]);
+    mentions(&error_of("name = "), &["configs/bad.toml", "line 1"]);
 }
 
 /// One bad file and one duplicate name among good cases: the good cases are written, the
@@ -331,7 +323,7 @@ fn bad_gas_inputs_name_the_gas_field() {
             pump.contains(from),
             "test set-up: {from:?} not in the pump case"
         );
-        assert_mentions(&error_of(&pump.replacen(from, to, 1)), parts);
+        mentions(&error_of(&pump.replacen(from, to, 1)), parts);
     }
 
     let engine = format!(
@@ -357,7 +349,7 @@ fn bad_gas_inputs_name_the_gas_field() {
             &["gas.combustion_delay", "required"][..],
         ),
     ] {
-        assert_mentions(&error_of(&engine.replacen(from, to, 1)), parts);
+        mentions(&error_of(&engine.replacen(from, to, 1)), parts);
     }
 }
 
@@ -479,7 +471,7 @@ compression_exponent = 1.3
             good.contains(from),
             "test set-up: {from:?} not in the compressor case"
         );
-        assert_mentions(&error_of(&good.replacen(from, to, 1)), parts);
+        mentions(&error_of(&good.replacen(from, to, 1)), parts);
     }
 }
 
@@ -540,7 +532,7 @@ combustion_start_per_speed = "-0.0004 deg/rpm"
             good.contains(from),
             "test set-up: {from:?} not in the closed-cycle case"
         );
-        assert_mentions(&error_of(&good.replacen(from, to, 1)), parts);
+        mentions(&error_of(&good.replacen(from, to, 1)), parts);
     }
 }
 
@@ -552,7 +544,7 @@ fn gas_needs_pistons_in_cylinders() {
         "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
         "mechanisms = [\"slider_crank\", \"hypotrochoid\"]",
     );
-    assert_mentions(
+    mentions(
         &error_of(&text),
         &["gas", "hypotrochoid", "cylinder", "without [gas]"],
     );

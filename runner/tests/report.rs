@@ -84,18 +84,22 @@ struct Axes {
     y: (f64, f64),
 }
 
+/// A plot group's drawing area, `data-area="left top width height"` (SVG units).
+fn data_area(g: roxmltree::Node) -> Vec<f64> {
+    g.attribute("data-area")
+        .unwrap()
+        .split(' ')
+        .map(|s| s.parse().unwrap())
+        .collect()
+}
+
 impl Axes {
     fn of(doc: &roxmltree::Document) -> Axes {
         let g = doc
             .descendants()
             .find(|n| n.attribute("class") == Some("plot"))
             .expect("a plot group");
-        let area: Vec<f64> = g
-            .attribute("data-area")
-            .unwrap()
-            .split(' ')
-            .map(|s| s.parse().unwrap())
-            .collect();
+        let area = data_area(g);
         Axes {
             left: area[0],
             top: area[1],
@@ -632,12 +636,7 @@ fn heat_maps_of_a_grid_sweep() {
         .descendants()
         .find(|n| n.attribute("class") == Some("heatmap"))
         .unwrap();
-    let area: Vec<f64> = g
-        .attribute("data-area")
-        .unwrap()
-        .split(' ')
-        .map(|s| s.parse().unwrap())
-        .collect();
+    let area = data_area(g);
     let centre = |i: f64| area[0] + (i + 0.5) * area[2] / 10.0;
     let contour = doc
         .descendants()

@@ -1,5 +1,6 @@
-//! Tolerance checks for tests: each failure message names the quantity, both values and the
-//! tolerance, so a failing validation test reads like a line of a validation report.
+//! Checks for tests: each failure message names the quantity, both values and the tolerance, so
+//! a failing validation test reads like a line of a validation report; and that a message names
+//! what it must.
 
 /// Asserts |got/want − 1| ≤ `rel`.
 #[track_caller]
@@ -31,6 +32,17 @@ pub fn close(name: &str, got: f64, want: f64, rel: f64, floor: f64) {
     );
 }
 
+/// Asserts that `message` (an error or a report) contains every one of `parts`.
+#[track_caller]
+pub fn mentions(message: &str, parts: &[&str]) {
+    for p in parts {
+        assert!(
+            message.contains(p),
+            "message {message:?} does not mention {p:?}"
+        );
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -43,5 +55,10 @@ mod tests {
         assert!(std::panic::catch_unwind(|| within("a", 1.01, 1.0, 1e-3)).is_err());
         assert!(std::panic::catch_unwind(|| near("b", 1.01, 1.0, 1e-3)).is_err());
         assert!(std::panic::catch_unwind(|| close("c", 1e-2, 0.0, 1e-6, 1e-3)).is_err());
+        mentions(
+            "gear.teeth: must be a whole number",
+            &["gear.teeth", "whole"],
+        );
+        assert!(std::panic::catch_unwind(|| mentions("gear.teeth", &["hardness"])).is_err());
     }
 }
