@@ -331,36 +331,29 @@ pub fn line_chart(chart: &LineChart) -> String {
             y = c(y)
         );
     }
+    // A vertical grid line at x with its label under the plot.
+    let x_tick = |o: &mut String, x: f64, label: &str| {
+        let _ = writeln!(
+            o,
+            "<line x1=\"{x}\" y1=\"{}\" x2=\"{x}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x}\" y=\"{}\" text-anchor=\"middle\">{label}</text>",
+            c(TOP),
+            c(TOP + PLOT_HEIGHT),
+            c(TOP + PLOT_HEIGHT + 16.0),
+            x = c(x)
+        );
+    };
     match &chart.x_categories {
         Some(cats) => {
             let every = cats.len().div_ceil(12).max(1);
             for (k, cat) in cats.iter().enumerate().step_by(every) {
-                let x = px(k as f64);
-                let _ = writeln!(
-                    o,
-                    "<line x1=\"{x}\" y1=\"{}\" x2=\"{x}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
-                    c(TOP),
-                    c(TOP + PLOT_HEIGHT),
-                    c(TOP + PLOT_HEIGHT + 16.0),
-                    esc(cat),
-                    x = c(x)
-                );
+                x_tick(&mut o, px(k as f64), &esc(cat));
             }
         }
         None => {
             let x_ticks = ((x_hi - x_lo) / x_step).round() as usize;
             for k in 0..=x_ticks {
                 let v = x_lo + k as f64 * x_step;
-                let x = px(v);
-                let _ = writeln!(
-                    o,
-                    "<line x1=\"{x}\" y1=\"{}\" x2=\"{x}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
-                    c(TOP),
-                    c(TOP + PLOT_HEIGHT),
-                    c(TOP + PLOT_HEIGHT + 16.0),
-                    tick_label(v, x_step),
-                    x = c(x)
-                );
+                x_tick(&mut o, px(v), &tick_label(v, x_step));
             }
         }
     }
