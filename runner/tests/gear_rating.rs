@@ -136,8 +136,9 @@ fn carburized_gears_raise_the_safety_factors_by_their_allowables() {
 }
 
 /// With `[friction]` and `[gear]`, the loss budget's mesh component and the rating's mesh loss
-/// are one figure in every tooth-load reading and for single and twin sets: the loss is charged
-/// on the tangential load, shared by the sets (issue "Gears", review finding).
+/// are one figure (computed once, by the rating) in every tooth-load reading and for single and
+/// twin sets: the loss is charged on the tangential load, shared by the sets; and the budget
+/// alone gives the same figure for the same pair (issue "Gears", review finding).
 #[test]
 fn the_mesh_loss_of_the_budget_and_of_the_rating_agree() {
     let mut losses = Vec::new();
@@ -163,6 +164,19 @@ fn the_mesh_loss_of_the_budget_and_of_the_rating_agree() {
         );
         losses.push(rating);
     }
+    // The budget takes a rated mesh's loss from the rating; on its own (no [gear]) it computes
+    // the same figure for the same single pair: the two are one model.
+    let alone = parse(Path::new("pump.toml"), &pump("[friction]\n")).unwrap();
+    let budget_alone = run_case(&alone, None)
+        .unwrap()
+        .iter()
+        .find_map(|r| r.summary.get("power_loss_mean_gear_mesh"))
+        .unwrap();
+    assert!(
+        (budget_alone / losses[0] - 1.0).abs() < 1e-12,
+        "budget alone {budget_alone} W, rating {} W",
+        losses[0]
+    );
     // The twin sets are charged as two sets at half the load each, not as one set.
     eprintln!("mesh loss: single {} W, twin {} W", losses[0], losses[1]);
     assert!((losses[1] / losses[0] - 1.0).abs() > 1e-3);

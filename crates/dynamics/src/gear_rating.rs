@@ -371,6 +371,11 @@ impl GearRatings {
         Ok(Self { meshes })
     }
 
+    /// The rated meshes' joints (indices in the topology), in rating order.
+    pub fn joints(&self) -> impl Iterator<Item = usize> + '_ {
+        self.meshes.iter().map(|m| m.joint)
+    }
+
     /// The rated meshes' joint names.
     pub fn names(&self) -> Vec<&'static str> {
         self.meshes.iter().map(|m| m.name).collect()

@@ -432,12 +432,15 @@ impl LossBudget {
     }
 
     /// The power loss of each component at `state` under the `total` loads, W, into `out`
-    /// (one per name). `pressure` is the absolute cylinder pressure, Pa, if a gas model runs.
+    /// (one per name). `pressure` is the absolute cylinder pressure, Pa, if a gas model runs;
+    /// `rated_meshes` the loss (W) of each gear-mesh joint a [`crate::GearRatings`] has rated
+    /// at this step, taken as it is instead of being computed again.
     pub fn evaluate(
         &mut self,
         state: &State,
         total: &Loads,
         pressure: Option<f64>,
+        rated_meshes: &[(usize, f64)],
         out: &mut [f64],
     ) -> Result<(), String> {
         for (part, out) in self.parts.iter_mut().zip(out.iter_mut()) {
@@ -538,12 +541,19 @@ impl LossBudget {
                     pitch_radius,
                     sets,
                 } => {
-                    let ft = tangential(total.joints[*joint].force, &state.joints[*joint]);
-                    let speeds = mesh_speeds(state, *joint, *body, *pitch_radius);
-                    *sets
-                        * mesh_loss(geometry, lubricant, &speeds, ft / *sets, *reading)
-                            .map_err(|e| format!("gear mesh loss: {e}"))?
-                            .total_power
+                    // A rated mesh's loss is the rating's (the same model on the same pair):
+                    // computed once.
+                    match rated_meshes.iter().find(|(j, _)| j == joint) {
+                        Some(&(_, loss)) => loss,
+                        None => {
+                            let ft = tangential(total.joints[*joint].force, &state.joints[*joint]);
+                            let speeds = mesh_speeds(state, *joint, *body, *pitch_radius);
+                            *sets
+                                * mesh_loss(geometry, lubricant, &speeds, ft / *sets, *reading)
+                                    .map_err(|e| format!("gear mesh loss: {e}"))?
+                                    .total_power
+                        }
+                    }
                 }
                 Part::ValveTrain(train) => train.power(
                     state.crank.angle,

@@ -87,6 +87,9 @@ pub fn run(
 ) -> Result<(), RunError> {
     let Stages { mut losses, gears } = stages;
     let mut ratings = vec![MeshRating::default(); gears.map_or(0, |g| g.names().len())];
+    // The rated meshes' losses by joint, which the loss budget takes instead of computing them
+    // again.
+    let mut mesh_losses: Vec<(usize, f64)> = Vec::with_capacity(ratings.len());
     let topology = mechanism.topology();
     // A prescribed motion's states come a block at a time, so that the mechanism can fill
     // them together (`Mechanism::fill_block`); a solved motion's one at a time, each after the
@@ -158,10 +161,19 @@ pub fn run(
             }
             let total = if several { &total } else { &loads[0] };
             check_finite(index, state, pressure, &forces, families, &loads, mechanism)?;
+            if let Some(g) = gears {
+                g.evaluate(state, total, inertial.map(|k| &loads[k]), &mut ratings)
+                    .map_err(|message| RunError::Sink {
+                        step: index,
+                        message,
+                    })?;
+                mesh_losses.clear();
+                mesh_losses.extend(g.joints().zip(ratings.iter().map(|r| r.loss)));
+            }
             let mut friction_torque = 0.0;
             if let Some(budget) = losses.as_deref_mut() {
                 budget
-                    .evaluate(state, total, pressure, &mut power_losses)
+                    .evaluate(state, total, pressure, &mesh_losses, &mut power_losses)
                     .map_err(|message| RunError::Sink {
                         step: index,
                         message,
@@ -182,13 +194,6 @@ pub fn run(
                 if state.crank.speed != 0.0 {
                     friction_torque = sum / state.crank.speed.abs();
                 }
-            }
-            if let Some(g) = gears {
-                g.evaluate(state, total, inertial.map(|k| &loads[k]), &mut ratings)
-                    .map_err(|message| RunError::Sink {
-                        step: index,
-                        message,
-                    })?;
             }
             let step = Step {
                 index,

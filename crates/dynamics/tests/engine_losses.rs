@@ -57,7 +57,9 @@ fn losses_at(
     let state = m.state(&CrankState::new(PI / 2.0 + angle, w, alpha, 0.0));
     let loads = Loads::for_topology(m.topology());
     let mut out = vec![f64::NAN; budget.names().len()];
-    budget.evaluate(&state, &loads, None, &mut out).unwrap();
+    budget
+        .evaluate(&state, &loads, None, &[], &mut out)
+        .unwrap();
     budget.names().iter().cloned().zip(out).collect()
 }
 

@@ -72,7 +72,9 @@ fn cardan_gear_components_are_their_models_at_their_joints() {
         ]
     );
     let mut out = vec![f64::NAN; budget.names().len()];
-    budget.evaluate(&state, &loads, None, &mut out).unwrap();
+    budget
+        .evaluate(&state, &loads, None, &[], &mut out)
+        .unwrap();
     let close = |what: &str, got: f64, want: f64| {
         assert!(
             (got - want).abs() <= 1e-12 * want.abs().max(1.0),
@@ -117,7 +119,9 @@ fn cardan_gear_components_are_their_models_at_their_joints() {
         let mut friction = Friction::karhula();
         friction.gear_mesh.as_mut().unwrap().reading = reading;
         let mut budget = LossBudget::new(&friction, m.as_ref(), 0.12).unwrap();
-        budget.evaluate(&state, &loads, None, &mut out).unwrap();
+        budget
+            .evaluate(&state, &loads, None, &[], &mut out)
+            .unwrap();
         let speeds = MeshSpeeds {
             pinion_absolute: -w,
             carrier: w,
@@ -139,7 +143,9 @@ fn the_skirt_carries_coulomb_friction_on_the_side_force() {
     loads.joints[joint(m.as_ref(), "piston_side")].force = C::new(-1500.0, 0.0);
     let mut budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
     let mut out = vec![0.0; budget.names().len()];
-    budget.evaluate(&state, &loads, None, &mut out).unwrap();
+    budget
+        .evaluate(&state, &loads, None, &[], &mut out)
+        .unwrap();
     let v = state.pistons[0].velocity.abs();
     assert!(v > 1.0);
     let skirt = loss(&budget, &out, "skirt");
@@ -255,7 +261,9 @@ fn catalogue_values_override_the_declared_bearings() {
     ));
     let mut budget = LossBudget::new(&friction, m.as_ref(), 0.12).unwrap();
     let mut out = vec![0.0; budget.names().len()];
-    budget.evaluate(&state, &loads, None, &mut out).unwrap();
+    budget
+        .evaluate(&state, &loads, None, &[], &mut out)
+        .unwrap();
     let want = karhula_torque(5000.0, 80e3, 0.05, 2.0 * w) * 2.0 * w;
     let got = loss(&budget, &out, "crank_pin");
     assert!((got - want).abs() <= 1e-12 * want, "{got} vs {want}");
