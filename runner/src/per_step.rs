@@ -12,7 +12,7 @@
 //! pieces are written in place.
 
 use crate::case::OutputOptions;
-use crate::report::{ChartData, ChartRecorder, MAX_POINTS};
+use crate::report::{ChartData, ChartRecorder, ChartRows, MAX_POINTS};
 use anyhow::{bail, Context};
 use cardan_dynamics::{radial, tangential, GearRatings, Sink, Step};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
@@ -21,6 +21,7 @@ use std::io::{BufWriter, Seek, SeekFrom, Write};
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
+use std::sync::Arc;
 use std::thread::JoinHandle;
 
 /// The per-step CSV columns: a name template (units in the name; `{piston}`, `{body}`,
@@ -183,9 +184,11 @@ pub fn row_count(last_step: usize, decimation: usize) -> usize {
 /// The per-step row of one crank train: its column names and how a [`Step`] fills it. The
 /// files and the charts both take their rows from here, so that a column's name and its value
 /// are defined in one place.
+#[derive(Clone)]
 pub struct Row<'a> {
     mechanism: &'a dyn Mechanism,
-    header: Vec<String>,
+    /// Shared by the copies a shared run makes.
+    header: Arc<[String]>,
     /// The body columns (orientation, centre-of-gravity motion and its polar parts).
     bodies: Range<usize>,
     /// Whether to compute them; else they are NaN. Their arc tangents and hypotenuses are
@@ -207,7 +210,7 @@ impl<'a> Row<'a> {
         let (header, bodies) = header(mechanism, &names, run.gas, run.losses, run.gears);
         Self {
             mechanism,
-            header,
+            header: header.into(),
             bodies,
             fill_bodies: true,
             with_total,
@@ -306,24 +309,40 @@ impl<'a> Row<'a> {
     }
 }
 
-/// A sink taking the per-step rows of one crank train: written to its files, and/or thinned
-/// for the report's charts.
+/// The recorder of the report's charts of `mechanism`'s rows `row`, `rows` of them, held in
+/// the file `file` names (or none: the crank train's label).
+fn chart_recorder(
+    row: &Row,
+    mechanism: &dyn Mechanism,
+    rows: usize,
+    file: String,
+) -> ChartRecorder {
+    let joints: Vec<String> = mechanism
+        .topology()
+        .joints
+        .iter()
+        .map(|j| j.name.to_string())
+        .collect();
+    ChartRecorder::new(row.header(), &joints, rows, MAX_POINTS, file)
+}
+
+/// A sink writing the per-step rows of one crank train to its files, and thinning them for the
+/// report's charts if asked.
 pub struct PerStepSink<'a> {
     row: Row<'a>,
     decimation: usize,
     last_step: usize,
-    files: Option<Writer>,
+    files: Writer,
     charts: Option<ChartRecorder>,
-    /// The row being filled when no file takes it (the charts only).
-    scratch: Vec<f64>,
 }
 
 impl<'a> PerStepSink<'a> {
     /// Creates `<label>.csv` and/or `<label>.npy` (with `<label>.columns.json`) in `dir`, as
     /// `options` asks, and records the report's charts if `charts`, for `mechanism` run with
-    /// `run`'s families and stages over `last_step + 1` steps; `None` if asked for nothing.
-    /// The charts take the rows the files take (every `options.decimation`-th step and the
-    /// last), so that a chart draws the very rows of the CSV it names.
+    /// `run`'s families and stages over `last_step + 1` steps; `None` if `options` asks for no
+    /// file ([`ChartSink`] records the charts alone). The charts take the rows the files take
+    /// (every `options.decimation`-th step and the last), so that a chart draws the very rows
+    /// of the file it names.
     pub fn create(
         dir: &Path,
         label: &str,
@@ -333,91 +352,181 @@ impl<'a> PerStepSink<'a> {
         last_step: usize,
         charts: bool,
     ) -> anyhow::Result<Option<Self>> {
-        let files = options.csv || options.npy;
-        if !files && !charts {
+        if !(options.csv || options.npy) {
             return Ok(None);
         }
-        let mut row = Row::new(mechanism, run);
+        let row = Row::new(mechanism, run);
         let rows = row_count(last_step, options.decimation);
         let charts = charts.then(|| {
-            let joints: Vec<String> = mechanism
-                .topology()
-                .joints
-                .iter()
-                .map(|j| j.name.to_string())
-                .collect();
-            // The series name the file that holds its rows, if any.
             let file = if options.csv {
                 format!("{label}.csv")
-            } else if options.npy {
-                format!("{label}.npy")
             } else {
-                label.to_string()
+                format!("{label}.npy")
             };
-            ChartRecorder::new(row.header(), &joints, rows, MAX_POINTS, file)
+            chart_recorder(&row, mechanism, rows, file)
         });
-        let files = if files {
-            Some(Writer::start(dir, label, row.header(), rows, options)?)
-        } else {
-            if let Some(c) = &charts {
-                row.skip_unread_bodies(|k| c.reads(k));
-            }
-            None
-        };
+        let files = Writer::start(dir, label, row.header(), rows, options)?;
         Ok(Some(Self {
             row,
             decimation: options.decimation,
             last_step,
             files,
             charts,
-            scratch: Vec::new(),
         }))
     }
 
     /// Writes out the last rows and waits until every file is complete; returns the charts'
     /// series if they were recorded.
-    pub fn finish(mut self) -> anyhow::Result<Option<ChartData>> {
-        if let Some(files) = self.files.take() {
-            files.finish()?;
-        }
-        Ok(self.charts.take().map(ChartRecorder::finish))
+    pub fn finish(self) -> anyhow::Result<Option<ChartData>> {
+        self.files.finish()?;
+        Ok(self.charts.map(ChartRecorder::finish))
     }
 }
 
 impl Sink for PerStepSink<'_> {
-    /// The files hold the torque shares and the extras; the charts alone do not draw them.
+    /// The files hold the torque shares and the extras.
     fn wants_details(&self) -> bool {
-        self.files.is_some()
+        true
     }
 
     fn push(&mut self, s: &Step) -> Result<(), String> {
         if s.index % self.decimation != 0 && s.index != self.last_step {
             return Ok(());
         }
-        match &mut self.files {
-            Some(files) => {
-                let start = files.block.len();
-                self.row.fill(s, &mut files.block);
-                if let Some(c) = &mut self.charts {
-                    c.record(&files.block[start..]);
-                }
-                if files.block.len() >= BLOCK_ROWS * files.columns {
-                    files.send()?;
-                }
-            }
-            None => {
-                if let Some(c) = &mut self.charts {
-                    if c.takes_next() {
-                        self.scratch.clear();
-                        self.row.fill(s, &mut self.scratch);
-                        c.record(&self.scratch);
-                    } else {
-                        c.skip();
-                    }
-                }
-            }
+        let files = &mut self.files;
+        let start = files.block.len();
+        self.row.fill(s, &mut files.block);
+        if let Some(c) = &mut self.charts {
+            c.record(&files.block[start..]);
+        }
+        if files.block.len() >= BLOCK_ROWS * files.columns {
+            files.send()?;
         }
         Ok(())
+    }
+}
+
+/// A sink thinning the per-step rows of a crank train that writes no file for the report's
+/// charts: the rows [`PerStepSink`] would write (every `decimation`-th step and the last) that
+/// the charts take ([`ChartRows`]), the row's undrawn columns left unfilled. The
+/// pieces of a shared run ([`cardan_dynamics::run_parallel`]) keep their rows until they are
+/// joined, in the steps' order: the charts are the same as a run by one thread gives.
+#[derive(Clone)]
+pub struct ChartSink<'a> {
+    row: Row<'a>,
+    decimation: usize,
+    last_step: usize,
+    pick: ChartRows,
+    /// The next step the charts take (found at the first step this sink takes, then counted on:
+    /// no division per step).
+    next: Option<usize>,
+    /// The recorder; `None` in a piece of a shared run.
+    recorder: Option<ChartRecorder>,
+    /// The rows taken and not yet recorded, one after the other, and the steps of the first
+    /// and the last one taken.
+    rows: Vec<f64>,
+    first_taken: Option<usize>,
+    last_taken: Option<usize>,
+}
+
+impl<'a> ChartSink<'a> {
+    /// The charts of `mechanism` run with `run`'s families and stages over `last_step + 1`
+    /// steps, its rows every `decimation`-th step and the last; `label` names the series.
+    pub fn new(
+        mechanism: &'a dyn Mechanism,
+        run: &RunLayout,
+        decimation: usize,
+        last_step: usize,
+        label: &str,
+    ) -> Self {
+        let mut row = Row::new(mechanism, run);
+        let rows = row_count(last_step, decimation);
+        let recorder = chart_recorder(&row, mechanism, rows, label.to_string());
+        row.skip_unread_bodies(|k| recorder.reads(k));
+        Self {
+            row,
+            decimation,
+            last_step,
+            pick: recorder.rows(),
+            next: None,
+            recorder: Some(recorder),
+            rows: Vec::new(),
+            first_taken: None,
+            last_taken: None,
+        }
+    }
+
+    /// The first step from `step` on whose row the charts take (`usize::MAX` past the last).
+    fn taken_from(&self, step: usize) -> usize {
+        if step > self.last_step {
+            return usize::MAX;
+        }
+        // The rows taken are every stride-th and the last (whose step is the last step).
+        let last_row = row_count(self.last_step, self.decimation) - 1;
+        let k = self.pick.next_taken(step.div_ceil(self.decimation));
+        if k >= last_row {
+            self.last_step
+        } else {
+            k * self.decimation
+        }
+    }
+
+    /// Records the rows taken so far (in a sink that has the recorder).
+    fn record(&mut self) {
+        if let Some(r) = &mut self.recorder {
+            for row in self.rows.chunks_exact(self.row.header().len()) {
+                r.add(row);
+            }
+            self.rows.clear();
+        }
+    }
+
+    /// The thinned series.
+    pub fn finish(mut self) -> Option<ChartData> {
+        self.record();
+        self.recorder.map(ChartRecorder::finish)
+    }
+}
+
+impl Sink for ChartSink<'_> {
+    fn push(&mut self, s: &Step) -> Result<(), String> {
+        let next = match self.next {
+            Some(n) => n,
+            None => self.taken_from(s.index),
+        };
+        if s.index != next {
+            self.next = Some(next);
+            return Ok(());
+        }
+        self.next = Some(self.taken_from(s.index + 1));
+        self.row.fill(s, &mut self.rows);
+        self.first_taken.get_or_insert(s.index);
+        self.last_taken = Some(s.index);
+        // One row at a time, unless this is a piece of a shared run.
+        self.record();
+        Ok(())
+    }
+}
+
+impl cardan_dynamics::Joinable for ChartSink<'_> {
+    fn fork(&self) -> Self {
+        Self {
+            recorder: None,
+            ..self.clone()
+        }
+    }
+
+    fn join(&mut self, mut later: Self) {
+        // The step both pieces took is recorded once.
+        let width = self.row.header().len();
+        let skip = usize::from(later.first_taken.is_some() && later.first_taken <= self.last_taken);
+        self.rows
+            .extend_from_slice(&later.rows[(skip * width).min(later.rows.len())..]);
+        later.rows.clear();
+        if later.last_taken.is_some() {
+            self.last_taken = later.last_taken;
+        }
+        self.record();
     }
 }
 
@@ -708,6 +817,55 @@ impl NpyFile {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The chart sink finds the next step the charts take by arithmetic: the steps the files
+    /// would write (every `decimation`-th and the last) whose rows the charts take.
+    #[test]
+    fn chart_sink_takes_the_rows_the_recorder_takes() {
+        let m = (cardan_mechanism::entry("cardan_gear").unwrap().build)(
+            &cardan_mechanism::MachineGeometry {
+                crank_length: 0.06,
+                rod_length: 0.14,
+                bore: 0.12,
+                pin_offset: 0.0,
+            },
+            &cardan_mechanism::MassInputs::default(),
+            &cardan_mechanism::Options::new(),
+        )
+        .unwrap();
+        let layout = RunLayout {
+            families: &["inertial"],
+            gas: false,
+            losses: &[],
+            gears: None,
+        };
+        for (last_step, decimation) in [(10, 1), (100_000, 1), (100_000, 3), (700_001, 7)] {
+            let sink = ChartSink::new(m.as_ref(), &layout, decimation, last_step, "c");
+            let rows = row_count(last_step, decimation);
+            let taken = |i: usize| {
+                let row = if i % decimation == 0 {
+                    i / decimation
+                } else if i == last_step {
+                    rows - 1
+                } else {
+                    return false;
+                };
+                sink.pick.takes(row)
+            };
+            let mut next = usize::MAX;
+            for i in (0..=last_step).rev() {
+                if taken(i) {
+                    next = i;
+                }
+                assert_eq!(
+                    sink.taken_from(i),
+                    next,
+                    "step {i} of {last_step}, every {decimation}"
+                );
+            }
+            assert_eq!(sink.taken_from(last_step + 1), usize::MAX);
+        }
+    }
 
     #[test]
     fn row_count_is_every_nth_step_and_the_last() {

@@ -38,7 +38,7 @@ mod index;
 mod svg;
 mod sweeps;
 
-pub use envelope::{ChartData, ChartRecorder, Envelope, Trace};
+pub use envelope::{ChartData, ChartRecorder, ChartRows, Envelope, Trace};
 pub use svg::MAX_POINTS;
 
 use anyhow::Context;

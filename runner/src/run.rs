@@ -3,12 +3,12 @@
 
 use crate::case::{self, Case, CaseError};
 use crate::output;
-use crate::per_step::{PerStepSink, RunLayout};
+use crate::per_step::{ChartSink, PerStepSink, RunLayout};
 use crate::report::ChartData;
 use anyhow::Context;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Sink, Solver, Stages, Summary,
+    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stages, Summary,
     SummarySink,
 };
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
@@ -80,17 +80,18 @@ fn run_mechanism(
     if let Some(g) = &gears {
         summary = summary.with_gears(g);
     }
+    let layout = RunLayout {
+        families: &names,
+        gas: case.gas.is_some(),
+        losses: &loss_names,
+        gears: gears.as_ref(),
+    };
     let mut per_step = match dir {
         Some(dir) => PerStepSink::create(
             dir,
             label,
             mechanism,
-            &RunLayout {
-                families: &names,
-                gas: case.gas.is_some(),
-                losses: &loss_names,
-                gears: gears.as_ref(),
-            },
+            &layout,
             case.output,
             case.steps,
             charts,
@@ -98,6 +99,19 @@ fn run_mechanism(
         .map_err(|e| format!("{e:#}"))?,
         None => None,
     };
+    // Without files, the charts take their rows on their own, so that the run can be shared.
+    let mut summary = (
+        summary,
+        (per_step.is_none() && dir.is_some() && charts).then(|| {
+            ChartSink::new(
+                mechanism,
+                &layout,
+                case.output.decimation,
+                case.steps,
+                label,
+            )
+        }),
+    );
     let mut steps = |gas: Option<GasAt>| {
         let motion = CrankMotion {
             start_angle: case.motion.start_angle + shift,
@@ -109,15 +123,24 @@ fn run_mechanism(
             case.end_angle + shift,
             case.steps,
         );
-        let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
-        if let Some(p) = per_step.as_mut() {
-            sinks.push(p);
-        }
         let stages = Stages {
             losses: losses.as_mut(),
             gears: gears.as_ref(),
         };
-        run(mechanism, &mut grid, &families, gas, stages, &mut sinks).map_err(|e| e.to_string())
+        // Without files the run is shared by the threads (the same results bit for bit); the
+        // files are written in the steps' order, by a thread of their own.
+        match per_step.as_mut() {
+            Some(p) => run(
+                mechanism,
+                &mut grid,
+                &families,
+                gas,
+                stages,
+                &mut [&mut summary.0, p],
+            ),
+            None => run_parallel(mechanism, &mut grid, &families, gas, stages, &mut summary),
+        }
+        .map_err(|e| e.to_string())
     };
     let gas_metrics = match &case.gas {
         None => {
@@ -141,6 +164,7 @@ fn run_mechanism(
             })?
         }
     };
+    let (summary, chart_rows) = summary;
     let mut summary = summary.finish(mechanism)?;
     for m in gas_metrics {
         if !m.value.is_finite() {
@@ -168,7 +192,7 @@ fn run_mechanism(
         Some(p) => p
             .finish()
             .map_err(|e| format!("cannot write the per-step files: {e:#}"))?,
-        None => None,
+        None => chart_rows.and_then(ChartSink::finish),
     };
     Ok((summary, charts))
 }

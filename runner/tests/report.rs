@@ -834,8 +834,8 @@ fn plots_of(case: &Path) -> BTreeMap<String, String> {
         .collect()
 }
 
-/// `[output] csv = false`: no CSV, and the same charts as with one (only their `data-source`
-/// names no file).
+/// `[output] csv = false`: no CSV, and the same charts and summary as with one (only the
+/// charts' `data-source` names no file).
 #[test]
 fn a_case_without_csv_gets_its_charts() {
     let dir = tempfile::tempdir().unwrap();
@@ -855,6 +855,13 @@ fn a_case_without_csv_gets_its_charts() {
         folders.push(out.join(name));
     }
     let (with, without) = (&folders[0], &folders[1]);
+    // The run without files is shared by the threads, the one with them is not: the same
+    // summary, bit for bit.
+    let metrics = |case: &Path| -> serde_json::Value {
+        let text = std::fs::read_to_string(case.join("summary.json")).unwrap();
+        serde_json::from_str::<serde_json::Value>(&text).unwrap()["mechanisms"].clone()
+    };
+    assert_eq!(metrics(with), metrics(without));
     assert!(with.join("slider_crank.csv").is_file());
     assert!(!without.join("slider_crank.csv").exists());
     let md = std::fs::read_to_string(without.join("report.md")).unwrap();

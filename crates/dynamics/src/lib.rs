@@ -21,6 +21,7 @@ pub mod family;
 pub mod gear_rating;
 pub mod losses;
 pub mod metrics;
+pub mod parallel;
 pub mod planar;
 pub mod stepper;
 pub mod summary;
@@ -36,5 +37,6 @@ pub use losses::{
     Bearing, BearingSize, Friction, LossBudget, LossError, MeshLossModel, Oil, Rings, Skirt,
 };
 pub use metrics::{Aggregation, MetricDef, METRICS};
+pub use parallel::{run_parallel, Joinable};
 pub use stepper::{run, run_summary, GasAt, RunError, Sink, Stages, Step, StepRecord, Steps};
-pub use summary::{radial, tangential, Metric, Summary, SummarySink};
+pub use summary::{radial, tangential, Metric, Summary, SummarySink, SUMMARY_CHUNK};

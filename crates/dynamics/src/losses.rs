@@ -431,6 +431,15 @@ impl LossBudget {
         &self.names
     }
 
+    /// Whether a step's losses depend on the steps before it (the ring films' squeeze term
+    /// carries each film's thickness from step to step): then the steps must be taken in
+    /// order, by one thread.
+    pub fn carries_history(&self) -> bool {
+        self.parts
+            .iter()
+            .any(|p| matches!(p, Part::RingFilms { .. }))
+    }
+
     /// The power loss of each component at `state` under the `total` loads, W, into `out`
     /// (one per name). `pressure` is the absolute cylinder pressure, Pa, if a gas model runs;
     /// `rated_meshes` the loss (W) of each gear-mesh joint a [`crate::GearRatings`] has rated

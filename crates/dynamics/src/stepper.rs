@@ -62,8 +62,9 @@ pub enum RunError {
     Sink { step: usize, message: String },
 }
 
-/// The gas at a crank angle: (absolute pressure in Pa, force on each piston in N).
-pub type GasAt<'a> = &'a dyn Fn(f64) -> (f64, f64);
+/// The gas at a crank angle: (absolute pressure in Pa, force on each piston in N); `Sync`, so
+/// that the threads sharing a run ([`crate::run_parallel`]) can all ask it.
+pub type GasAt<'a> = &'a (dyn Fn(f64) -> (f64, f64) + Sync);
 
 /// What each step computes from its total loads besides the loads themselves.
 #[derive(Default)]
@@ -110,7 +111,8 @@ pub fn run(
     ];
     let mut power_losses = vec![0.0; losses.as_ref().map_or(0, |l| l.names().len())];
     let mut previous_torque = None;
-    let mut index = 0;
+    // A part of a run numbers its steps as the whole run does.
+    let mut index = motion.first_index();
     let details = sinks.iter().any(|s| s.wants_details());
     let inertial = families.iter().position(|f| f.inertia());
     let mut ended = false;
@@ -338,7 +340,8 @@ impl Sink for Steps {
 
 /// Runs `mechanism` through `motion` with the inertial loads (and the gas loads, if `gas` is
 /// given), both by `solver`, and returns every step (if `keep_steps`) with the summary: the
-/// whole pipeline in one call, for tests and small studies.
+/// whole pipeline in one call, for tests and small studies. Without the steps, the run is
+/// shared by the threads of the rayon pool ([`crate::run_parallel`]).
 pub fn run_summary(
     mechanism: &dyn Mechanism,
     motion: &mut dyn MotionSource,
@@ -355,20 +358,25 @@ pub fn run_summary(
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
     let mut summary = crate::SummarySink::new(mechanism, &names, motion.len());
     let mut steps = Steps::default();
-    {
-        let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
-        if keep_steps {
-            sinks.push(&mut steps);
-        }
+    if keep_steps {
         run(
             mechanism,
             motion,
             &families,
             gas,
             Stages::default(),
-            &mut sinks,
+            &mut [&mut summary, &mut steps],
         )
-        .map_err(|e| e.to_string())?;
+    } else {
+        crate::run_parallel(
+            mechanism,
+            motion,
+            &families,
+            gas,
+            Stages::default(),
+            &mut summary,
+        )
     }
+    .map_err(|e| e.to_string())?;
     Ok((steps.0, summary.finish(mechanism)?))
 }

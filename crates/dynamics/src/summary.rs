@@ -57,6 +57,43 @@ impl Summary {
 /// far closer than this (1e-9 on the shipped cases); a coarser grid fails the case.
 pub const ENERGY_TOLERANCE: f64 = 1e-3;
 
+/// Steps whose integral terms a summary adds up apart before adding their sum to the run's:
+/// the chunks of a run that several threads share ([`crate::run_parallel`]), whose sums are
+/// added in the chunks' order. A summary made step by step adds the same sums in the same
+/// order, so it is the same bit for bit however the run is shared (tested). A multiple of
+/// [`cardan_mechanism::REANCHOR`], where a grid can be split.
+pub const SUMMARY_CHUNK: usize = 64 * cardan_mechanism::REANCHOR;
+
+/// A trapezoidal integral summed chunk by chunk ([`SUMMARY_CHUNK`]).
+#[derive(Debug, Clone, Copy, Default)]
+struct Integral {
+    /// The sum of the chunks closed so far, and of the chunk under way.
+    closed: f64,
+    open: f64,
+}
+
+impl Integral {
+    fn add(&mut self, term: f64) {
+        self.open += term;
+    }
+
+    fn close_chunk(&mut self) {
+        self.closed += self.open;
+        self.open = 0.0;
+    }
+
+    fn value(&self) -> f64 {
+        self.closed + self.open
+    }
+
+    /// Continues with the chunks of `later`, a summary of the steps after these (its first
+    /// step closed this one's last chunk).
+    fn merge(&mut self, later: &Integral) {
+        self.closed += later.closed;
+        self.open = later.open;
+    }
+}
+
 /// Raises `peak` to `value`. The stepper has checked every value is finite, so a plain
 /// comparison serves (cheaper than `f64::max`, which must handle NaN); written as a select, not
 /// a branch, so that it compiles to one `maxsd` instead of a jump the processor mispredicts
@@ -89,9 +126,9 @@ struct FamilyTotals {
     /// Peak |tangential force| of each gear mesh (0 for other joints), N.
     tangential: Vec<f64>,
     torque: f64,
-    work: f64,
-    abs_work: f64,
-    energy_flow: f64,
+    work: Integral,
+    abs_work: Integral,
+    energy_flow: Integral,
 }
 
 impl FamilyTotals {
@@ -102,10 +139,32 @@ impl FamilyTotals {
             moment: vec![0.0; joints],
             tangential: vec![0.0; joints],
             torque: 0.0,
-            work: 0.0,
-            abs_work: 0.0,
-            energy_flow: 0.0,
+            work: Integral::default(),
+            abs_work: Integral::default(),
+            energy_flow: Integral::default(),
         }
+    }
+
+    fn close_chunk(&mut self) {
+        self.work.close_chunk();
+        self.abs_work.close_chunk();
+        self.energy_flow.close_chunk();
+    }
+
+    fn merge(&mut self, later: &FamilyTotals) {
+        for (a, b) in self.force.iter_mut().zip(&later.force) {
+            raise(a, *b);
+        }
+        for (a, b) in self.moment.iter_mut().zip(&later.moment) {
+            raise(a, *b);
+        }
+        for (a, b) in self.tangential.iter_mut().zip(&later.tangential) {
+            raise(a, *b);
+        }
+        raise(&mut self.torque, later.torque);
+        self.work.merge(&later.work);
+        self.abs_work.merge(&later.abs_work);
+        self.energy_flow.merge(&later.energy_flow);
     }
 
     /// Adds one step; `prev` holds the previous step's (angle, torque, speed).
@@ -131,9 +190,11 @@ impl FamilyTotals {
         // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
         // trapezoidal rule on the crank-angle grid.
         if let Some((h, t0, w0)) = interval {
-            self.work += 0.5 * h * (l.crank_torque + t0);
-            self.abs_work += 0.5 * h * (l.crank_torque.abs() + t0.abs());
-            self.energy_flow += 0.5 * h * (l.crank_torque * speed + t0 * w0);
+            self.work.add(0.5 * h * (l.crank_torque + t0));
+            self.abs_work
+                .add(0.5 * h * (l.crank_torque.abs() + t0.abs()));
+            self.energy_flow
+                .add(0.5 * h * (l.crank_torque * speed + t0 * w0));
         }
     }
 }
@@ -143,7 +204,7 @@ impl FamilyTotals {
 struct LossTotals {
     names: Vec<String>,
     /// ∫ P dt of each component, J (Karhula A9.1.68-71), by the trapezoidal rule in time.
-    work: Vec<f64>,
+    work: Vec<Integral>,
     previous: Vec<f64>,
     friction_torque: f64,
 }
@@ -160,7 +221,7 @@ struct GearTotals {
     contact_safety: f64,
     bending_stress: f64,
     bending_safety: f64,
-    loss_work: f64,
+    loss_work: Integral,
     previous_loss: f64,
 }
 
@@ -188,7 +249,7 @@ pub struct SummarySink {
     pressure: Option<f64>,
     /// Largest |dx/dθ| of the first piston, m/rad, and ∫|dx/dθ| dθ, m.
     lever: f64,
-    lever_integral: f64,
+    lever_integral: Integral,
     previous_lever: f64,
     /// Time of the previous step, s.
     previous_time: f64,
@@ -230,7 +291,7 @@ impl SummarySink {
             gas_force: 0.0,
             pressure: None,
             lever: 0.0,
-            lever_integral: 0.0,
+            lever_integral: Integral::default(),
             previous_lever: 0.0,
             previous_time: 0.0,
             losses: None,
@@ -253,7 +314,7 @@ impl SummarySink {
             contact_safety: f64::INFINITY,
             bending_stress: 0.0,
             bending_safety: f64::INFINITY,
-            loss_work: 0.0,
+            loss_work: Integral::default(),
             previous_loss: 0.0,
         });
         self
@@ -277,14 +338,14 @@ impl SummarySink {
                 m.push("bending_safety_factor", g.bending_safety);
             }
         }
-        m.push("gear_mesh_power_loss_mean", g.loss_work / time);
+        m.push("gear_mesh_power_loss_mean", g.loss_work.value() / time);
     }
 
     /// The same summary, with the loss components named `names` (a [`crate::LossBudget`]'s).
     pub fn with_losses(mut self, names: &[String]) -> Self {
         self.losses = Some(LossTotals {
             names: names.to_vec(),
-            work: vec![0.0; names.len()],
+            work: vec![Integral::default(); names.len()],
             previous: vec![0.0; names.len()],
             friction_torque: 0.0,
         });
@@ -297,14 +358,14 @@ impl SummarySink {
     /// engine: net work out).
     fn push_losses(&self, m: &mut Summary, span: f64, time: f64) {
         let Some(l) = &self.losses else { return };
-        let lost: f64 = l.work.iter().sum();
+        let lost: f64 = l.work.iter().map(Integral::value).sum();
         m.push("loss_work", lost);
         m.push("power_loss_mean", lost / time);
         for (name, work) in l.names.iter().zip(&l.work) {
             m.push_as(
                 "power_loss_mean_{component}",
                 format!("power_loss_mean_{name}"),
-                work / time,
+                work.value() / time,
             );
         }
         m.push("friction_torque_max", l.friction_torque);
@@ -312,7 +373,7 @@ impl SummarySink {
             self.families
                 .iter()
                 .find(|f| f.name == name)
-                .map(|f| f.work)
+                .map(|f| f.work.value())
         };
         let (Some(gas), Some(total)) = (work("gas"), work("total")) else {
             return;
@@ -330,6 +391,74 @@ impl SummarySink {
             m.push("output_power_mean", out / time);
             m.push("mechanical_efficiency", out / -total);
         }
+    }
+
+    /// Closes the chunk of every integral (at each step whose index is a multiple of
+    /// [`SUMMARY_CHUNK`], after its interval was added).
+    fn close_chunk(&mut self) {
+        for f in &mut self.families {
+            f.close_chunk();
+        }
+        self.lever_integral.close_chunk();
+        if let Some(l) = &mut self.losses {
+            l.work.iter_mut().for_each(Integral::close_chunk);
+        }
+        if let Some(g) = &mut self.gears {
+            g.loss_work.close_chunk();
+        }
+    }
+
+    /// Continues this summary with `later`, the summary of the steps from the last one this
+    /// summary took (a chunk boundary: its index a multiple of [`SUMMARY_CHUNK`]) on, made
+    /// from a copy of the same fresh summary: the summary of all the steps, the same bit for
+    /// bit as if one summary had taken them all (peaks are maxima; the integrals add the same
+    /// chunk sums in the same order).
+    pub fn merge(&mut self, later: &SummarySink) {
+        for (a, b) in self.pistons.iter_mut().zip(&later.pistons) {
+            for (a, b) in a.iter_mut().zip(b) {
+                raise(a, *b);
+            }
+        }
+        for (a, b) in self.bodies.iter_mut().zip(&later.bodies) {
+            for (a, b) in a.iter_mut().zip(b) {
+                raise(a, *b);
+            }
+        }
+        for (a, b) in self.families.iter_mut().zip(&later.families) {
+            a.merge(b);
+        }
+        raise(&mut self.lever, later.lever);
+        self.lever_integral.merge(&later.lever_integral);
+        if let (Some(a), Some(b)) = (&mut self.losses, &later.losses) {
+            for (x, y) in a.work.iter_mut().zip(&b.work) {
+                x.merge(y);
+            }
+            raise(&mut a.friction_torque, b.friction_torque);
+            a.previous.clone_from(&b.previous);
+        }
+        if let (Some(a), Some(b)) = (&mut self.gears, &later.gears) {
+            raise(&mut a.tooth_load, b.tooth_load);
+            raise(&mut a.dynamic_load, b.dynamic_load);
+            raise(&mut a.contact_stress, b.contact_stress);
+            a.contact_safety = a.contact_safety.min(b.contact_safety);
+            raise(&mut a.bending_stress, b.bending_stress);
+            a.bending_safety = a.bending_safety.min(b.bending_safety);
+            a.loss_work.merge(&b.loss_work);
+            a.previous_loss = b.previous_loss;
+        }
+        if later.first.is_some() {
+            self.first = self.first.or(later.first);
+            self.last = later.last;
+            self.previous = later.previous;
+            self.previous_torques.clone_from(&later.previous_torques);
+            self.previous_lever = later.previous_lever;
+            self.previous_time = later.previous_time;
+        }
+        self.pressure = match (self.pressure, later.pressure) {
+            (Some(a), Some(b)) => Some(a.max(b)),
+            (a, b) => a.or(b),
+        };
+        raise(&mut self.gas_force, later.gas_force);
     }
 
     /// The summary, or why the run cannot be trusted (the energy check).
@@ -403,18 +532,19 @@ impl SummarySink {
                 format!("{}_torque_max", f.name),
                 f.torque,
             );
-            m.push_as("{family}_work", format!("{}_work", f.name), f.work);
+            let work = f.work.value();
+            m.push_as("{family}_work", format!("{}_work", f.name), work);
             m.push_as(
                 "{family}_torque_mean",
                 format!("{}_torque_mean", f.name),
-                f.work / span,
+                work / span,
             ); // (A5.2.1.38)
                // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at
                // constant speed this is the time average.
             m.push_as(
                 "{family}_power_mean",
                 format!("{}_power_mean", f.name),
-                f.energy_flow / span,
+                f.energy_flow.value() / span,
             );
         }
         // Power balance: the drive torque per unit force on the piston is dx/dθ. Vidinsky's
@@ -424,7 +554,7 @@ impl SummarySink {
         m.push("mechanical_advantage_max", self.lever / radius);
         m.push(
             "mechanical_advantage_mean",
-            self.lever_integral / span / radius,
+            self.lever_integral.value() / span / radius,
         );
         m.push(
             "torque_per_force_stroke_max",
@@ -433,19 +563,16 @@ impl SummarySink {
         let change = last.2 - first.2;
         m.push("kinetic_energy_change", change);
         if let Some(inertial) = self.families.iter().find(|f| f.name == "inertial") {
-            let error = (inertial.work - change).abs();
-            let relative = if error == 0.0 {
-                0.0
-            } else {
-                error / inertial.abs_work
-            };
+            let (work, abs_work) = (inertial.work.value(), inertial.abs_work.value());
+            let error = (work - change).abs();
+            let relative = if error == 0.0 { 0.0 } else { error / abs_work };
             m.push("energy_balance_error", relative);
             if relative > ENERGY_TOLERANCE {
                 return Err(format!(
                     "the energy check fails: inertial work {} J against a kinetic energy change of {} J, \
                      {relative:.2e} of the {} J the drive moves (tolerance {ENERGY_TOLERANCE:e}): \
                      the crank-angle grid is too coarse for this motion; raise motion.steps",
-                    inertial.work, change, inertial.abs_work
+                    work, change, abs_work
                 ));
             }
         }
@@ -492,7 +619,8 @@ impl Sink for SummarySink {
             let lever = p.dx_dtheta.abs();
             raise(&mut self.lever, lever);
             if let Some((a0, _)) = self.previous {
-                self.lever_integral += 0.5 * (angle - a0) * (lever + self.previous_lever);
+                self.lever_integral
+                    .add(0.5 * (angle - a0) * (lever + self.previous_lever));
             }
             self.previous_lever = lever;
         }
@@ -501,7 +629,7 @@ impl Sink for SummarySink {
             let started = self.previous.is_some();
             for ((w, p0), &p) in l.work.iter_mut().zip(&mut l.previous).zip(s.losses) {
                 if started {
-                    *w += 0.5 * dt * (p + *p0);
+                    w.add(0.5 * dt * (p + *p0));
                 }
                 *p0 = p;
             }
@@ -510,8 +638,8 @@ impl Sink for SummarySink {
         if let Some(g) = &mut self.gears {
             let loss: f64 = s.gears.iter().map(|r| r.loss).sum();
             if self.previous.is_some() {
-                g.loss_work +=
-                    0.5 * (st.crank.time - self.previous_time) * (loss + g.previous_loss);
+                g.loss_work
+                    .add(0.5 * (st.crank.time - self.previous_time) * (loss + g.previous_loss));
             }
             g.previous_loss = loss;
             for r in s.gears {
@@ -524,6 +652,9 @@ impl Sink for SummarySink {
                     g.bending_safety = g.bending_safety.min(r.bending_safety);
                 }
             }
+        }
+        if s.index % SUMMARY_CHUNK == 0 {
+            self.close_chunk();
         }
         self.previous_time = st.crank.time;
         self.previous = Some((angle, speed));

@@ -148,6 +148,20 @@ pub trait MotionSource {
     fn prescribed(&self) -> bool {
         false
     }
+
+    /// The index in the whole run of the first state this source gives (not 0 for a
+    /// [`MotionSource::part`]).
+    fn first_index(&self) -> usize {
+        0
+    }
+
+    /// The states of indices `first..=last` alone, exactly as this source gives them, if it
+    /// can give them apart from the others (a prescribed motion can, from any `first` that is
+    /// a multiple of [`REANCHOR`]): the pieces of a run that several threads share.
+    fn part(&self, first: usize, last: usize) -> Option<Box<dyn MotionSource + Send>> {
+        let _ = (first, last);
+        None
+    }
 }
 
 /// The prescribed motion on a grid uniform in crank angle, from `start` to exactly `end`.
@@ -167,6 +181,10 @@ pub struct Grid {
     rotation: C,
     /// The next state's index.
     k: usize,
+    /// The indices of the first and the last state this grid gives (0 and `steps`, unless it
+    /// is a part).
+    first: usize,
+    last: usize,
     /// The block being handed out, from index `block_start`; a motion error at its end.
     block: Vec<CrankState>,
     block_start: usize,
@@ -185,6 +203,8 @@ impl Grid {
             h,
             rotation: C::from_polar(1.0, h),
             k: 0,
+            first: 0,
+            last: steps,
             block: Vec::with_capacity(REANCHOR),
             block_start: 0,
             error: None,
@@ -196,7 +216,7 @@ impl Grid {
         self.block.clear();
         self.block_start = k;
         self.error = None;
-        let n = (self.steps + 1 - k).min(REANCHOR);
+        let n = (self.last + 1 - k).min(REANCHOR);
         let mut direction = C::new(1.0, 0.0);
         for j in 0..n {
             let i = k + j;
@@ -255,16 +275,42 @@ impl Grid {
 
 impl MotionSource for Grid {
     fn len(&self) -> usize {
-        self.steps + 1
+        self.last + 1 - self.first_index()
     }
 
     fn prescribed(&self) -> bool {
         true
     }
 
+    fn first_index(&self) -> usize {
+        self.first
+    }
+
+    /// Bit for bit the states of the whole grid: a part starts on a block's start, where the
+    /// direction is anchored (tested).
+    fn part(&self, first: usize, last: usize) -> Option<Box<dyn MotionSource + Send>> {
+        if first % REANCHOR != 0 || first > last || last > self.steps {
+            return None;
+        }
+        Some(Box::new(Grid {
+            motion: self.motion,
+            start: self.start,
+            end: self.end,
+            steps: self.steps,
+            h: self.h,
+            rotation: self.rotation,
+            k: first,
+            first,
+            last,
+            block: Vec::with_capacity(REANCHOR),
+            block_start: first,
+            error: None,
+        }))
+    }
+
     fn next(&mut self, _previous_torque: Option<f64>) -> Option<Result<CrankState, MotionError>> {
         let k = self.k;
-        if k > self.steps {
+        if k > self.last {
             return None;
         }
         if k % REANCHOR == 0 {
@@ -339,6 +385,31 @@ mod tests {
                 assert_eq!(s.acceleration, m.angular_acceleration);
             }
         }
+    }
+
+    /// A part of a grid gives the whole grid's states of its indices, bit for bit; it starts
+    /// on a block's start only.
+    #[test]
+    fn grid_parts_are_the_whole_grids_states() {
+        let m = CrankMotion {
+            start_angle: 1.5,
+            initial_speed: 3.0,
+            angular_acceleration: 10.0,
+        };
+        let whole = Grid::new(m, 1.5, 14.1, 1000);
+        let states: Vec<CrankState> = m.grid(1.5, 14.1, 1000).unwrap();
+        for (first, last) in [(0, 1000), (128, 256), (960, 1000), (64, 64), (0, 0)] {
+            let mut part = whole.part(first, last).unwrap();
+            assert_eq!((part.first_index(), part.len()), (first, last + 1 - first));
+            let got: Vec<CrankState> = std::iter::from_fn(|| part.next(None))
+                .map(Result::unwrap)
+                .collect();
+            assert_eq!(got, states[first..=last], "{first}..={last}");
+        }
+        assert!(whole.part(100, 200).is_none(), "not on a block's start");
+        assert!(whole.part(64, 1001).is_none(), "past the end");
+        assert!(whole.part(128, 64).is_none(), "empty");
+        assert_eq!(whole.first_index(), 0);
     }
 
     /// A crank that stops inside a block: every state before the stop, then the error of

@@ -162,13 +162,41 @@ pub struct ChartData {
 /// The most rows a chart series takes from a run (see the module's documentation).
 pub const MAX_CHART_ROWS: usize = 16 * super::svg::MAX_POINTS;
 
+/// Which of a run's per-step rows the charts take: every `stride`-th of the `rows` and the
+/// last, the fewest that keeps them within [`MAX_CHART_ROWS`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChartRows {
+    rows: usize,
+    stride: usize,
+}
+
+impl ChartRows {
+    fn new(rows: usize) -> Self {
+        Self {
+            rows,
+            stride: rows.div_ceil(MAX_CHART_ROWS).max(1),
+        }
+    }
+
+    /// Whether the charts take the row of index `k`.
+    pub fn takes(&self, k: usize) -> bool {
+        k % self.stride == 0 || k + 1 == self.rows
+    }
+
+    /// The first row from `k` on that the charts take (`rows - 1` or more past the last
+    /// stride-th row).
+    pub fn next_taken(&self, k: usize) -> usize {
+        k.div_ceil(self.stride) * self.stride
+    }
+}
+
 /// Thins, row by row, the series the charts draw from a crank train's per-step rows.
+#[derive(Debug, Clone)]
 pub struct ChartRecorder {
     header: Vec<String>,
     file: String,
-    /// Rows announced, the stride of the rows taken, and the next row's index.
-    rows: usize,
-    stride: usize,
+    /// The rows taken, and the next row's index.
+    pick: ChartRows,
     next: usize,
     /// The crank angle's index in a row.
     x: Option<usize>,
@@ -187,8 +215,8 @@ impl ChartRecorder {
         file: String,
     ) -> Self {
         let index = |c: &str| header.iter().position(|h| h == c);
-        let stride = rows.div_ceil(MAX_CHART_ROWS).max(1);
-        let taken = crate::per_step::row_count(rows.saturating_sub(1), stride);
+        let pick = ChartRows::new(rows);
+        let taken = crate::per_step::row_count(rows.saturating_sub(1), pick.stride);
         let series = traces(header, joints)
             .into_iter()
             .map(|(key, columns)| {
@@ -199,8 +227,7 @@ impl ChartRecorder {
         Self {
             header: header.to_vec(),
             file,
-            rows,
-            stride,
+            pick,
             next: 0,
             x: index("crank_angle_deg"),
             series,
@@ -213,22 +240,26 @@ impl ChartRecorder {
     }
 
     /// Whether the next row is one the series take (every `stride`-th and the last).
-    pub fn takes_next(&self) -> bool {
-        self.next % self.stride == 0 || self.next + 1 == self.rows
+    fn takes_next(&self) -> bool {
+        self.pick.takes(self.next)
     }
 
-    /// Passes over the next row without taking it (a row [`Self::takes_next`] declines).
-    pub fn skip(&mut self) {
-        self.next += 1;
+    /// The rows the series take.
+    pub fn rows(&self) -> ChartRows {
+        self.pick
     }
 
     /// Takes one row (in the header's order), if it is one the series take.
     pub fn record(&mut self, row: &[f64]) {
         let taken = self.takes_next();
         self.next += 1;
-        if !taken {
-            return;
+        if taken {
+            self.add(row);
         }
+    }
+
+    /// Adds a row the series take ([`Self::takes`]) to them, the rows in their order.
+    pub fn add(&mut self, row: &[f64]) {
         let Some(x) = self.x.map(|k| row[k]) else {
             return;
         };
@@ -381,7 +412,7 @@ mod tests {
                 }
                 r.record(&[k as f64, (k as f64 * 1e-3).sin()]);
             }
-            assert_eq!(r.stride, stride, "{rows} rows");
+            assert_eq!(r.pick.stride, stride, "{rows} rows");
             assert!(
                 taken.len() <= MAX_CHART_ROWS + 1,
                 "{rows} rows: {}",

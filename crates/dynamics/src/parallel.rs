@@ -1,0 +1,147 @@
+//! One run shared by the threads of the rayon pool, so that a single long case fills every
+//! core: a prescribed motion is split into chunks of [`SUMMARY_CHUNK`] steps, each chunk is run
+//! into sinks of its own, and the sinks are joined in the chunks' order. The summary adds its
+//! integrals chunk by chunk in any run, so the result is the one [`run`] gives, bit for bit,
+//! whatever the number of threads (tested in `tests/parallel.rs`).
+
+use crate::family::LoadFamily;
+use crate::losses::LossBudget;
+use crate::stepper::{run, GasAt, RunError, Sink, Stages, Step};
+use crate::summary::{SummarySink, SUMMARY_CHUNK};
+use cardan_mechanism::{Mechanism, MotionSource};
+use rayon::prelude::*;
+
+/// A sink whose steps several threads may take in pieces, each piece into a sink of its own,
+/// the pieces' sinks then joined in the steps' order.
+pub trait Joinable: Sink + Clone + Send + Sync {
+    /// A sink for a piece of the run, made from this one before it takes any step.
+    fn fork(&self) -> Self {
+        self.clone()
+    }
+
+    /// Continues this sink with `later`, a [`Joinable::fork`] that took the steps from the
+    /// last one this sink took (a chunk's start, taken by both) on.
+    fn join(&mut self, later: Self);
+}
+
+impl Joinable for SummarySink {
+    fn join(&mut self, later: Self) {
+        self.merge(&later);
+    }
+}
+
+impl<A: Sink, B: Sink> Sink for (A, B) {
+    fn push(&mut self, step: &Step) -> Result<(), String> {
+        self.0.push(step)?;
+        self.1.push(step)
+    }
+
+    fn wants_details(&self) -> bool {
+        self.0.wants_details() || self.1.wants_details()
+    }
+}
+
+impl<S: Sink> Sink for Option<S> {
+    fn push(&mut self, step: &Step) -> Result<(), String> {
+        self.as_mut().map_or(Ok(()), |s| s.push(step))
+    }
+
+    fn wants_details(&self) -> bool {
+        self.as_ref().is_some_and(Sink::wants_details)
+    }
+}
+
+impl<S: Joinable> Joinable for Option<S> {
+    fn fork(&self) -> Self {
+        self.as_ref().map(Joinable::fork)
+    }
+
+    fn join(&mut self, later: Self) {
+        if let (Some(a), Some(b)) = (self, later) {
+            a.join(b);
+        }
+    }
+}
+
+impl<A: Joinable, B: Joinable> Joinable for (A, B) {
+    fn fork(&self) -> Self {
+        (self.0.fork(), self.1.fork())
+    }
+
+    fn join(&mut self, later: Self) {
+        self.0.join(later.0);
+        self.1.join(later.1);
+    }
+}
+
+/// Chunks run at a time before their summaries are merged: bounds the memory held (a few
+/// kilobytes a chunk) whatever the run's length, and gives every thread many chunks.
+const WAVE: usize = 8;
+
+/// Runs as [`run`] does with `sink` (no step taken yet) as the only sink, the steps shared by
+/// the threads of the current rayon pool. A run of at most two chunks, a motion that
+/// cannot be split ([`MotionSource::part`]: a solved one) or a loss budget whose steps depend
+/// on the ones before ([`LossBudget::carries_history`]) runs on the calling thread alone. A
+/// failure is the one [`run`] reports: the first failing step's.
+pub fn run_parallel(
+    mechanism: &dyn Mechanism,
+    motion: &mut dyn MotionSource,
+    families: &[&dyn LoadFamily],
+    gas: Option<GasAt>,
+    stages: Stages,
+    sink: &mut impl Joinable,
+) -> Result<(), RunError> {
+    let first = motion.first_index();
+    let count = motion.len();
+    let splittable = count > SUMMARY_CHUNK + 1
+        && first % SUMMARY_CHUNK == 0
+        && !stages
+            .losses
+            .as_deref()
+            .is_some_and(LossBudget::carries_history)
+        && motion.part(first, first).is_some();
+    if !splittable {
+        return run(mechanism, motion, families, gas, stages, &mut [sink]);
+    }
+    let Stages { losses, gears } = stages;
+    let losses = losses.as_deref();
+    let template = sink.fork();
+    let last = first + count - 1;
+    // Chunk k takes the steps from its start to the next chunk's start: the interval that
+    // ends a chunk is the chunk's (its last step is taken twice; a peak does not mind).
+    let starts: Vec<usize> = (first..last).step_by(SUMMARY_CHUNK).collect();
+    for wave in starts.chunks(WAVE) {
+        let parts: Vec<_> = wave
+            .iter()
+            .map(|&s| {
+                motion
+                    .part(s, (s + SUMMARY_CHUNK).min(last))
+                    .expect("a splittable motion splits at every chunk start")
+            })
+            .collect();
+        let pieces: Vec<Result<_, RunError>> = parts
+            .into_par_iter()
+            .map(|mut part| {
+                let mut piece = template.clone();
+                let mut budget = losses.cloned();
+                let stages = Stages {
+                    losses: budget.as_mut(),
+                    gears,
+                };
+                run(
+                    mechanism,
+                    part.as_mut(),
+                    families,
+                    gas,
+                    stages,
+                    &mut [&mut piece],
+                )?;
+                Ok(piece)
+            })
+            .collect();
+        for piece in pieces {
+            sink.join(piece?);
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,168 @@
+//! A run shared by threads ([`run_parallel`]) gives the summary of the same run taken step by
+//! step by one thread ([`run`]), bit for bit, whatever the number of threads: with gas, losses
+//! and gear ratings, on every closed-form mechanism, from rest, and when a step fails.
+
+mod common;
+
+use cardan_dynamics::{
+    run, run_parallel, Friction, Gas, GearRatings, GearSpec, Inertial, LoadFamily, LossBudget,
+    RunError, Solver, Stages, Summary, SummarySink, SUMMARY_CHUNK,
+};
+use cardan_mechanism::{CrankMotion, Grid, Material, Mechanism};
+use common::thesis;
+use std::f64::consts::PI;
+
+/// The summary of `m` over `steps` steps of `motion` from 90°, with a gas force and the
+/// thesis's loss budget (and the gear rating where the mechanism has a mesh), run by
+/// `run_parallel` in a pool of `threads` threads, or by `run` if `threads` is 0.
+fn summary(
+    m: &dyn Mechanism,
+    motion: CrankMotion,
+    steps: usize,
+    threads: usize,
+) -> Result<Summary, String> {
+    let gas = |theta: f64| {
+        let f = 2e4 * (1.0 + theta.sin());
+        (f / (PI / 4.0 * 0.12 * 0.12), f)
+    };
+    let inertial = Inertial(Solver::ClosedForm);
+    let gas_family = Gas(Solver::ClosedForm);
+    let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
+    let mut budget = LossBudget::new(&Friction::karhula(), m, 0.12).unwrap();
+    assert!(!budget.carries_history());
+    let gears = GearRatings::new(&GearSpec::default(), m, None)
+        .ok()
+        .filter(|g| !g.names().is_empty());
+    let mut sink = SummarySink::new(m, &["inertial", "gas"], steps + 1).with_losses(budget.names());
+    if let Some(g) = &gears {
+        sink = sink.with_gears(g);
+    }
+    let mut grid = Grid::new(
+        motion,
+        motion.start_angle,
+        motion.start_angle + 4.0 * PI,
+        steps,
+    );
+    let stages = Stages {
+        losses: Some(&mut budget),
+        gears: gears.as_ref(),
+    };
+    let ran = if threads == 0 {
+        run(
+            m,
+            &mut grid,
+            &families,
+            Some(&gas),
+            stages,
+            &mut [&mut sink],
+        )
+    } else {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| run_parallel(m, &mut grid, &families, Some(&gas), stages, &mut sink))
+    };
+    ran.map_err(|e: RunError| e.to_string())?;
+    sink.finish(m)
+}
+
+fn accelerating() -> CrankMotion {
+    CrankMotion {
+        start_angle: PI / 2.0,
+        initial_speed: 30.0 * PI,
+        angular_acceleration: 400.0 * PI,
+    }
+}
+
+#[test]
+fn shared_runs_are_the_single_threads_bit_for_bit() {
+    // SUMMARY_CHUNK + 1 steps: the shortest run that is shared (two pieces, the second of
+    // one step); 7200 steps: two pieces; 3·SUMMARY_CHUNK + 7 steps: four.
+    for name in ["slider_crank", "cardan_gear", "scotch_yoke"] {
+        let m = thesis(name, Material::Steel);
+        for steps in [SUMMARY_CHUNK + 1, 7200, 3 * SUMMARY_CHUNK + 7] {
+            let one = summary(m.as_ref(), accelerating(), steps, 0).unwrap();
+            assert!(one.get("loss_work").unwrap() > 0.0);
+            assert_eq!(
+                one.get("gear_mesh_power_loss_mean").is_some(),
+                name == "cardan_gear"
+            );
+            for threads in [1, 2, 3] {
+                let shared = summary(m.as_ref(), accelerating(), steps, threads).unwrap();
+                assert_eq!(shared, one, "{name}, {steps} steps, {threads} threads");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_shared_run_fails_at_the_single_threads_step() {
+    // ω² = (2π)² − 6·Δθ: the crank stops 6.58 rad after the start, between steps 10471 and
+    // 10472 of h = π/5000, in the third of five pieces.
+    let m = thesis("slider_crank", Material::Steel);
+    let stopping = CrankMotion {
+        start_angle: PI / 2.0,
+        initial_speed: 2.0 * PI,
+        angular_acceleration: -3.0,
+    };
+    let one = summary(m.as_ref(), stopping, 20_000, 0).unwrap_err();
+    assert!(one.starts_with("step 10472:"), "{one}");
+    for threads in [1, 2] {
+        assert_eq!(
+            summary(m.as_ref(), stopping, 20_000, threads).unwrap_err(),
+            one
+        );
+    }
+}
+
+/// Counts the steps it takes and the pieces joined into it.
+#[derive(Clone, Default)]
+struct Pieces {
+    steps: usize,
+    pieces: usize,
+}
+
+impl cardan_dynamics::Sink for Pieces {
+    fn push(&mut self, _: &cardan_dynamics::Step) -> Result<(), String> {
+        self.steps += 1;
+        Ok(())
+    }
+}
+
+impl cardan_dynamics::Joinable for Pieces {
+    fn join(&mut self, later: Self) {
+        self.steps += later.steps;
+        self.pieces += 1;
+    }
+}
+
+#[test]
+fn a_long_prescribed_run_is_split_at_chunk_starts() {
+    // Each piece takes the step that starts the next one too.
+    let m = thesis("cardan_gear", Material::Steel);
+    let inertial = Inertial(Solver::ClosedForm);
+    for (steps, pieces) in [
+        (SUMMARY_CHUNK, 0),
+        (SUMMARY_CHUNK + 1, 2),
+        (3 * SUMMARY_CHUNK + 7, 4),
+    ] {
+        let mut grid = Grid::new(accelerating(), PI / 2.0, 4.5 * PI, steps);
+        let mut sink = Pieces::default();
+        run_parallel(
+            m.as_ref(),
+            &mut grid,
+            &[&inertial],
+            None,
+            Stages::default(),
+            &mut sink,
+        )
+        .unwrap();
+        assert_eq!(sink.pieces, pieces, "{steps} steps");
+        assert_eq!(
+            sink.steps,
+            steps + 1 + pieces.saturating_sub(1),
+            "{steps} steps"
+        );
+    }
+}
