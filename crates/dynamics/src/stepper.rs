@@ -119,19 +119,23 @@ pub fn run(
     while !ended {
         cranks.clear();
         let mut stopped = None;
-        while cranks.len() < block {
+        if block > 1 {
+            if let Err(source) = motion.next_states(&mut cranks, block) {
+                stopped = Some(RunError::Motion {
+                    step: index + cranks.len(),
+                    source,
+                });
+            }
+            ended = cranks.len() < block;
+        } else {
             match motion.next(previous_torque) {
-                None => {
-                    ended = true;
-                    break;
-                }
+                None => ended = true,
                 Some(Ok(crank)) => cranks.push(crank),
                 Some(Err(source)) => {
                     stopped = Some(RunError::Motion {
-                        step: index + cranks.len(),
+                        step: index,
                         source,
-                    });
-                    break;
+                    })
                 }
             }
         }

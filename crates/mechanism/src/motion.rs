@@ -149,6 +149,19 @@ pub trait MotionSource {
         false
     }
 
+    /// Appends the next `n` states of a prescribed motion to `out`: fewer after the last, and
+    /// an error at the first state that cannot be reached (the states before it appended).
+    fn next_states(&mut self, out: &mut Vec<CrankState>, n: usize) -> Result<(), MotionError> {
+        for _ in 0..n {
+            match self.next(None) {
+                None => break,
+                Some(Ok(c)) => out.push(c),
+                Some(Err(e)) => return Err(e),
+            }
+        }
+        Ok(())
+    }
+
     /// The index in the whole run of the first state this source gives (not 0 for a
     /// [`MotionSource::part`]).
     fn first_index(&self) -> usize {
@@ -308,6 +321,28 @@ impl MotionSource for Grid {
         }))
     }
 
+    /// Copies from the blocks (the states of [`MotionSource::next`], bit for bit).
+    fn next_states(&mut self, out: &mut Vec<CrankState>, n: usize) -> Result<(), MotionError> {
+        let wanted = out.len() + n;
+        while out.len() < wanted && self.k <= self.last {
+            if self.k % REANCHOR == 0 {
+                self.fill_block(self.k);
+            }
+            let from = self.k - self.block_start;
+            // The states of this block still to give, the ones wanted, the ones before `last`.
+            let take = (self.block.len().saturating_sub(from))
+                .min(wanted - out.len())
+                .min(self.last + 1 - self.k);
+            if take == 0 {
+                self.k += 1;
+                return Err(self.error.clone().unwrap_or(MotionError::Still));
+            }
+            out.extend_from_slice(&self.block[from..from + take]);
+            self.k += take;
+        }
+        Ok(())
+    }
+
     fn next(&mut self, _previous_torque: Option<f64>) -> Option<Result<CrankState, MotionError>> {
         let k = self.k;
         if k > self.last {
@@ -410,6 +445,51 @@ mod tests {
         assert!(whole.part(64, 1001).is_none(), "past the end");
         assert!(whole.part(128, 64).is_none(), "empty");
         assert_eq!(whole.first_index(), 0);
+    }
+
+    /// States taken several at a time are the ones taken one at a time, to the same error.
+    #[test]
+    fn states_taken_in_blocks_are_the_ones_taken_singly() {
+        let stopping = CrankMotion {
+            start_angle: 0.0,
+            initial_speed: 1.0,
+            angular_acceleration: -1.0,
+        };
+        let running = CrankMotion {
+            angular_acceleration: 1.0,
+            ..stopping
+        };
+        for (m, steps) in [
+            (stopping, 200),
+            (running, 200),
+            (running, 64),
+            (running, 130),
+        ] {
+            let mut g = Grid::new(m, 0.0, 0.99, steps);
+            let mut singly = Vec::new();
+            let end = loop {
+                match g.next(None) {
+                    Some(Ok(s)) => singly.push(s),
+                    Some(Err(e)) => break Err(e),
+                    None => break Ok(()),
+                }
+            };
+            for n in [1, 5, 8, 64, 100] {
+                let mut g = Grid::new(m, 0.0, 0.99, steps);
+                let mut blocks = Vec::new();
+                let end_in_blocks = loop {
+                    let before = blocks.len();
+                    if let Err(e) = g.next_states(&mut blocks, n) {
+                        break Err(e);
+                    }
+                    if blocks.len() < before + n {
+                        break Ok(());
+                    }
+                };
+                assert_eq!(blocks, singly, "{steps} steps, {n} at a time");
+                assert_eq!(end_in_blocks, end, "{steps} steps, {n} at a time");
+            }
+        }
     }
 
     /// A crank that stops inside a block: every state before the stop, then the error of
