@@ -1,8 +1,9 @@
 //! One mechanism over the thesis cycle at 7200 steps: kinematics, closed-form inertial loads
 //! and the streamed summary (no per-step record), the unit of work of the runner, with the crank
-//! grid made as it goes (`*_7200_steps`) or made beforehand (`*_7200_steps_prebuilt_grid`, the
-//! work the benchmark of the earlier, stored-steps design timed); and the same with every step
-//! kept in memory.
+//! grid made as it goes, the run shared by the rayon pool's threads as the runner shares it
+//! (`*_7200_steps`) or on one thread (`*_7200_steps_one_thread`), or with the grid made
+//! beforehand (`*_7200_steps_prebuilt_grid`, one thread: the work the benchmark of the earlier,
+//! stored-steps design timed); and the same with every step kept in memory.
 
 use cardan_dynamics::{run_summary, Solver};
 use cardan_mechanism::{
@@ -27,6 +28,27 @@ impl MotionSource for Prebuilt<'_> {
 
     fn prescribed(&self) -> bool {
         true
+    }
+}
+
+/// A grid that cannot be split: its run takes one thread.
+struct OneThread(Grid);
+
+impl MotionSource for OneThread {
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn next(&mut self, t: Option<f64>) -> Option<Result<CrankState, MotionError>> {
+        self.0.next(t)
+    }
+
+    fn prescribed(&self) -> bool {
+        true
+    }
+
+    fn next_states(&mut self, out: &mut Vec<CrankState>, n: usize) -> Result<(), MotionError> {
+        self.0.next_states(out, n)
     }
 }
 
@@ -61,6 +83,21 @@ fn cycle(c: &mut Criterion) {
                     run_summary(
                         black_box(mech.as_ref()),
                         &mut source,
+                        None,
+                        Solver::ClosedForm,
+                        false,
+                    )
+                    .unwrap(),
+                )
+            })
+        });
+        c.bench_function(&format!("{name}_7200_steps_one_thread"), |b| {
+            b.iter(|| {
+                let mut grid = OneThread(Grid::new(motion, PI / 2.0, 4.5 * PI, 7200));
+                black_box(
+                    run_summary(
+                        black_box(mech.as_ref()),
+                        &mut grid,
                         None,
                         Solver::ClosedForm,
                         false,
