@@ -422,8 +422,13 @@ pub struct ChartSink<'a> {
     next: Option<usize>,
     /// The recorder; `None` in a piece of a shared run.
     recorder: Option<ChartRecorder>,
-    /// The rows taken and not yet recorded, one after the other, and the steps of the first
-    /// and the last one taken.
+    /// The columns the charts read (shared by the pieces).
+    read: Arc<[usize]>,
+    /// The row being filled, and a row being recorded (NaN where the charts do not read).
+    scratch: Vec<f64>,
+    whole: Vec<f64>,
+    /// The rows taken and not yet recorded, one after the other, each of the `read` columns
+    /// only, and the steps of the first and the last one taken.
     rows: Vec<f64>,
     first_taken: Option<usize>,
     last_taken: Option<usize>,
@@ -443,13 +448,17 @@ impl<'a> ChartSink<'a> {
         let rows = row_count(last_step, decimation);
         let recorder = chart_recorder(&row, mechanism, rows, label.to_string());
         row.skip_unread_bodies(|k| recorder.reads(k));
+        let width = row.header().len();
         Self {
             row,
             decimation,
             last_step,
             pick: recorder.rows(),
             next: None,
+            read: (0..width).filter(|&k| recorder.reads(k)).collect(),
             recorder: Some(recorder),
+            scratch: Vec::with_capacity(width),
+            whole: vec![f64::NAN; width],
             rows: Vec::new(),
             first_taken: None,
             last_taken: None,
@@ -474,8 +483,11 @@ impl<'a> ChartSink<'a> {
     /// Records the rows taken so far (in a sink that has the recorder).
     fn record(&mut self) {
         if let Some(r) = &mut self.recorder {
-            for row in self.rows.chunks_exact(self.row.header().len()) {
-                r.add(row);
+            for row in self.rows.chunks_exact(self.read.len()) {
+                for (&k, &v) in self.read.iter().zip(row) {
+                    self.whole[k] = v;
+                }
+                r.add(&self.whole);
             }
             self.rows.clear();
         }
@@ -499,7 +511,9 @@ impl Sink for ChartSink<'_> {
             return Ok(());
         }
         self.next = Some(self.taken_from(s.index + 1));
-        self.row.fill(s, &mut self.rows);
+        self.scratch.clear();
+        self.row.fill(s, &mut self.scratch);
+        self.rows.extend(self.read.iter().map(|&k| self.scratch[k]));
         self.first_taken.get_or_insert(s.index);
         self.last_taken = Some(s.index);
         // One row at a time, unless this is a piece of a shared run.
@@ -516,13 +530,12 @@ impl cardan_dynamics::Joinable for ChartSink<'_> {
         }
     }
 
-    fn join(&mut self, mut later: Self) {
+    fn join(&mut self, later: Self) {
         // The step both pieces took is recorded once.
-        let width = self.row.header().len();
+        let width = self.read.len();
         let skip = usize::from(later.first_taken.is_some() && later.first_taken <= self.last_taken);
         self.rows
             .extend_from_slice(&later.rows[(skip * width).min(later.rows.len())..]);
-        later.rows.clear();
         if later.last_taken.is_some() {
             self.last_taken = later.last_taken;
         }
