@@ -100,7 +100,7 @@ fn run_mechanism(
         None => None,
     };
     // Without files, the charts take their rows on their own, so that the run can be shared.
-    let mut summary = (
+    let mut sinks = (
         summary,
         (per_step.is_none() && dir.is_some() && charts).then(|| {
             ChartSink::new(
@@ -136,9 +136,9 @@ fn run_mechanism(
                 &families,
                 gas,
                 stages,
-                &mut [&mut summary.0, p],
+                &mut [&mut sinks.0, p],
             ),
-            None => run_parallel(mechanism, &mut grid, &families, gas, stages, &mut summary),
+            None => run_parallel(mechanism, &mut grid, &families, gas, stages, &mut sinks),
         }
         .map_err(|e| e.to_string())
     };
@@ -164,7 +164,7 @@ fn run_mechanism(
             })?
         }
     };
-    let (summary, chart_rows) = summary;
+    let (summary, chart_rows) = sinks;
     let mut summary = summary.finish(mechanism)?;
     for m in gas_metrics {
         if !m.value.is_finite() {

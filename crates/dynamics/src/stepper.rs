@@ -1,6 +1,7 @@
-//! The step loop: a motion source gives crank states one at a time, the mechanism fills its
-//! state, each load family its loads, and every step is handed to the sinks (summaries,
-//! per-step files) and then forgotten. Nothing here grows with the number of steps.
+//! The step loop: a motion source gives crank states (a prescribed one a block at a time), the
+//! mechanism fills its state, each load family its loads, and every step is handed to the sinks
+//! (summaries, per-step files) and then forgotten. Nothing here grows with the number of steps.
+//! [`crate::run_parallel`] shares one run among threads, each piece through this loop.
 
 use crate::energy::torque_shares;
 use crate::family::LoadFamily;
@@ -360,7 +361,8 @@ pub fn run_summary(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let mut summary = crate::SummarySink::new(mechanism, &names, motion.len());
+    let points = motion.first_index() + motion.len();
+    let mut summary = crate::SummarySink::new(mechanism, &names, points);
     let mut steps = Steps::default();
     if keep_steps {
         run(
