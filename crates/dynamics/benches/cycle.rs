@@ -7,8 +7,8 @@
 
 use cardan_dynamics::{run_summary, Solver};
 use cardan_mechanism::{
-    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, MotionError, MotionSource, Options,
-    MECHANISMS,
+    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, Mechanism, MotionError,
+    MotionSource, Options, MECHANISMS,
 };
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
@@ -52,6 +52,31 @@ impl MotionSource for OneThread {
     }
 }
 
+/// Times `mech` through the motion `source` makes, the summary only or every step `kept`.
+fn time<'a>(
+    c: &mut Criterion,
+    label: &str,
+    mech: &dyn Mechanism,
+    kept: bool,
+    source: &dyn Fn() -> Box<dyn MotionSource + 'a>,
+) {
+    c.bench_function(label, |b| {
+        b.iter(|| {
+            let mut source = source();
+            black_box(
+                run_summary(
+                    black_box(mech),
+                    source.as_mut(),
+                    None,
+                    Solver::ClosedForm,
+                    kept,
+                )
+                .unwrap(),
+            )
+        })
+    });
+}
+
 fn cycle(c: &mut Criterion) {
     let motion = CrankMotion {
         start_angle: PI / 2.0,
@@ -76,53 +101,23 @@ fn cycle(c: &mut Criterion) {
             continue;
         }
         let grid = motion.grid(PI / 2.0, 4.5 * PI, 7200).unwrap();
-        c.bench_function(&format!("{name}_7200_steps_prebuilt_grid"), |b| {
-            b.iter(|| {
-                let mut source = Prebuilt(grid.iter(), grid.len());
-                black_box(
-                    run_summary(
-                        black_box(mech.as_ref()),
-                        &mut source,
-                        None,
-                        Solver::ClosedForm,
-                        false,
-                    )
-                    .unwrap(),
-                )
-            })
+        let whole = || Grid::new(motion, PI / 2.0, 4.5 * PI, 7200);
+        let name = format!("{name}_7200_steps");
+        let mech = mech.as_ref();
+        time(c, &format!("{name}_prebuilt_grid"), mech, false, &|| {
+            Box::new(Prebuilt(grid.iter(), grid.len()))
         });
-        c.bench_function(&format!("{name}_7200_steps_one_thread"), |b| {
-            b.iter(|| {
-                let mut grid = OneThread(Grid::new(motion, PI / 2.0, 4.5 * PI, 7200));
-                black_box(
-                    run_summary(
-                        black_box(mech.as_ref()),
-                        &mut grid,
-                        None,
-                        Solver::ClosedForm,
-                        false,
-                    )
-                    .unwrap(),
-                )
-            })
+        time(c, &format!("{name}_one_thread"), mech, false, &|| {
+            Box::new(OneThread(whole()))
         });
-        for (label, keep) in [("7200_steps", false), ("7200_steps_kept", true)] {
-            c.bench_function(&format!("{name}_{label}"), |b| {
-                b.iter(|| {
-                    let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, 7200);
-                    black_box(
-                        run_summary(
-                            black_box(mech.as_ref()),
-                            &mut grid,
-                            None,
-                            Solver::ClosedForm,
-                            keep,
-                        )
-                        .unwrap(),
-                    )
-                })
-            });
-        }
+        time(c, &name, mech, false, &|| Box::new(whole()));
+        time(
+            c,
+            &format!("{name}_kept"),
+            mech,
+            true,
+            &|| Box::new(whole()),
+        );
     }
 }
 
