@@ -165,3 +165,41 @@ fn per_step_files_are_byte_identical_between_thread_counts() {
         assert!(a == b, "{file} differs between 1 and 2 threads");
     }
 }
+
+/// A case without per-step files is shared by the threads (pieces of 4096 steps), one with
+/// them is not: the same summary.json, byte for byte, with 1 and 2 threads, with and without
+/// files, with the report (its charts taken by the pieces) and without.
+#[test]
+fn a_shared_run_writes_the_summary_of_a_run_on_one_thread() {
+    let case = CASE.replace("steps = 1441", "steps = 9000");
+    let mut summaries = Vec::new();
+    for (jobs, files, reports) in [
+        (1, true, false),
+        (1, false, false),
+        (2, false, false),
+        (2, false, true),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("case.toml");
+        std::fs::write(&file, &case).unwrap();
+        let options = RunOptions {
+            jobs: Some(jobs),
+            csv: Some(files),
+            npy: Some(false),
+            reports,
+            ..RunOptions::default()
+        };
+        let report = run_paths(&[file], &dir.path().join("out"), options);
+        assert!(report.failures.is_empty(), "{:?}", report.failures);
+        let out = dir.path().join("out/npy");
+        assert_eq!(out.join("slider_crank.csv").exists(), files);
+        assert_eq!(out.join("plots").exists(), reports);
+        summaries.push(std::fs::read(out.join("summary.json")).unwrap());
+    }
+    for (k, s) in summaries.iter().enumerate() {
+        assert!(
+            *s == summaries[0],
+            "run {k} differs from the run with files"
+        );
+    }
+}
