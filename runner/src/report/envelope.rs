@@ -163,7 +163,7 @@ pub struct ChartData {
 pub const MAX_CHART_ROWS: usize = 16 * super::svg::MAX_POINTS;
 
 /// Which of a run's per-step rows the charts take: every `stride`-th of the `rows` and the
-/// last, the fewest that keeps them within [`MAX_CHART_ROWS`].
+/// last, the fewest that keeps them within `MAX_CHART_ROWS` (16 000).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ChartRows {
     rows: usize,
@@ -258,7 +258,7 @@ impl ChartRecorder {
         }
     }
 
-    /// Adds a row the series take ([`Self::takes`]) to them, the rows in their order.
+    /// Adds a row the series take ([`ChartRows::takes`]) to them, the rows in their order.
     pub fn add(&mut self, row: &[f64]) {
         let Some(x) = self.x.map(|k| row[k]) else {
             return;
