@@ -835,51 +835,53 @@ fn plots_of(case: &Path) -> BTreeMap<String, String> {
 }
 
 /// `[output] csv = false`: no CSV, and the same charts and summary as with one (only the
-/// charts' `data-source` names no file).
+/// charts' `data-source` names no file): every step, and every 7th of a run split into three
+/// pieces (the run without files is shared by the threads, the one with them is not).
 #[test]
 fn a_case_without_csv_gets_its_charts() {
-    let dir = tempfile::tempdir().unwrap();
-    let name = "karhula-pump-r60-l140-a0-w3pi";
-    let mut folders = Vec::new();
-    for (sub, output) in [("with", "csv = true"), ("without", "csv = false")] {
-        let cases = dir.path().join(format!("{sub}-cases"));
-        std::fs::create_dir(&cases).unwrap();
-        std::fs::write(
-            cases.join("case.toml"),
-            shipped_case_text(name, 7200, output),
-        )
-        .unwrap();
-        let out = dir.path().join(sub);
-        let report = run_paths(&[cases], &out, with_reports());
-        assert!(report.failures.is_empty(), "{:#?}", report.failures);
-        folders.push(out.join(name));
-    }
-    let (with, without) = (&folders[0], &folders[1]);
-    // The run without files is shared by the threads, the one with them is not: the same
-    // summary, bit for bit.
-    let metrics = |case: &Path| -> serde_json::Value {
-        let text = std::fs::read_to_string(case.join("summary.json")).unwrap();
-        serde_json::from_str::<serde_json::Value>(&text).unwrap()["mechanisms"].clone()
-    };
-    assert_eq!(metrics(with), metrics(without));
-    assert!(with.join("slider_crank.csv").is_file());
-    assert!(!without.join("slider_crank.csv").exists());
-    let md = std::fs::read_to_string(without.join("report.md")).unwrap();
-    assert!(!md.contains("No charts"), "{md}");
-    assert!(md.contains("![Drive torque, total loads"), "{md}");
-    let (a, b) = (plots_of(with), plots_of(without));
-    assert_eq!(a.keys().collect::<Vec<_>>(), b.keys().collect::<Vec<_>>());
-    assert!(a.contains_key("torque_total.svg") && a.contains_key("cylinder_pressure.svg"));
-    for (file, svg) in &a {
-        let named = b[file].replace(
-            "data-source=\"slider_crank:",
-            "data-source=\"slider_crank.csv:",
-        );
-        let named = named.replace(
-            "data-source=\"cardan_gear:",
-            "data-source=\"cardan_gear.csv:",
-        );
-        assert!(*svg == named, "{file}");
+    for (steps, decimation) in [(7200, 1), (9001, 7)] {
+        let dir = tempfile::tempdir().unwrap();
+        let name = "karhula-pump-r60-l140-a0-w3pi";
+        let mut folders = Vec::new();
+        for (sub, csv) in [("with", true), ("without", false)] {
+            let cases = dir.path().join(format!("{sub}-cases"));
+            std::fs::create_dir(&cases).unwrap();
+            let output = format!("csv = {csv}\ndecimation = {decimation}");
+            std::fs::write(
+                cases.join("case.toml"),
+                shipped_case_text(name, steps, &output),
+            )
+            .unwrap();
+            let out = dir.path().join(sub);
+            let report = run_paths(&[cases], &out, with_reports());
+            assert!(report.failures.is_empty(), "{:#?}", report.failures);
+            folders.push(out.join(name));
+        }
+        let (with, without) = (&folders[0], &folders[1]);
+        let metrics = |case: &Path| -> serde_json::Value {
+            let text = std::fs::read_to_string(case.join("summary.json")).unwrap();
+            serde_json::from_str::<serde_json::Value>(&text).unwrap()["mechanisms"].clone()
+        };
+        assert_eq!(metrics(with), metrics(without));
+        assert!(with.join("slider_crank.csv").is_file());
+        assert!(!without.join("slider_crank.csv").exists());
+        let md = std::fs::read_to_string(without.join("report.md")).unwrap();
+        assert!(!md.contains("No charts"), "{md}");
+        assert!(md.contains("![Drive torque, total loads"), "{md}");
+        let (a, b) = (plots_of(with), plots_of(without));
+        assert_eq!(a.keys().collect::<Vec<_>>(), b.keys().collect::<Vec<_>>());
+        assert!(a.contains_key("torque_total.svg") && a.contains_key("cylinder_pressure.svg"));
+        for (file, svg) in &a {
+            let named = b[file].replace(
+                "data-source=\"slider_crank:",
+                "data-source=\"slider_crank.csv:",
+            );
+            let named = named.replace(
+                "data-source=\"cardan_gear:",
+                "data-source=\"cardan_gear.csv:",
+            );
+            assert!(*svg == named, "{file}, {steps} steps, every {decimation}");
+        }
     }
 }
 
