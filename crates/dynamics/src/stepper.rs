@@ -40,6 +40,15 @@ pub trait Sink {
     /// Takes one step; an error stops the run (a file that cannot be written).
     fn push(&mut self, step: &Step) -> Result<(), String>;
 
+    /// Takes consecutive steps, in order (a block of a prescribed motion); an error names the
+    /// index of the step it stopped at.
+    fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
+        for s in steps {
+            self.push(s).map_err(|message| (s.index, message))?;
+        }
+        Ok(())
+    }
+
     /// Whether it reads [`Step::shares`] and the state's extras (they cost divisions and square
     /// roots per step that a summary does not need).
     fn wants_details(&self) -> bool {
@@ -88,34 +97,44 @@ pub fn run(
     sinks: &mut [&mut dyn Sink],
 ) -> Result<(), RunError> {
     let Stages { mut losses, gears } = stages;
-    let mut ratings = vec![MeshRating::default(); gears.map_or(0, |g| g.names().len())];
-    // The rated meshes' losses by joint, which the loss budget takes instead of computing them
-    // again.
-    let mut mesh_losses: Vec<(usize, f64)> = Vec::with_capacity(ratings.len());
     let topology = mechanism.topology();
     // A prescribed motion's states come a block at a time, so that the mechanism can fill
-    // them together (`Mechanism::fill_block`); a solved motion's one at a time, each after the
-    // torque of the one before.
+    // them together (`Mechanism::fill_block`) and the sinks take them together
+    // (`Sink::push_block`); a solved motion's one at a time, each after the torque of the one
+    // before.
     let block = if motion.prescribed() { STEP_BLOCK } else { 1 };
     let mut cranks: Vec<CrankState> = Vec::with_capacity(block);
     let mut states = vec![State::for_topology(topology); block];
-    let mut loads = vec![Loads::for_topology(topology); families.len()];
-    let mut total = Loads::for_topology(topology);
-    let mut shares = vec![vec![0.0; topology.bodies.len()]; families.len()];
-    let mut forces = vec![
-        0.0;
-        if gas.is_some() {
-            topology.pistons.len()
-        } else {
-            0
-        }
+    let pistons = if gas.is_some() {
+        topology.pistons.len()
+    } else {
+        0
+    };
+    let mut out = vec![
+        StepOut {
+            pressure: None,
+            forces: vec![0.0; pistons],
+            loads: vec![Loads::for_topology(topology); families.len()],
+            total: Loads::for_topology(topology),
+            shares: vec![vec![0.0; topology.bodies.len()]; families.len()],
+            losses: vec![0.0; losses.as_ref().map_or(0, |l| l.names().len())],
+            friction_torque: 0.0,
+            ratings: vec![MeshRating::default(); gears.map_or(0, |g| g.names().len())],
+        };
+        block
     ];
-    let mut power_losses = vec![0.0; losses.as_ref().map_or(0, |l| l.names().len())];
+    // The rated meshes' losses by joint, which the loss budget takes instead of computing them
+    // again.
+    let mut mesh_losses: Vec<(usize, f64)> = Vec::with_capacity(out[0].ratings.len());
+    // The allocation of the block's steps, kept from block to block.
+    let mut spare: Vec<Step<'static>> = Vec::with_capacity(block);
     let mut previous_torque = None;
     // A part of a run numbers its steps as the whole run does.
     let mut index = motion.first_index();
     let details = sinks.iter().any(|s| s.wants_details());
     let inertial = families.iter().position(|f| f.inertia());
+    // Each family sees the sum of those before it; one family is its own total.
+    let several = families.len() > 1;
     let mut ended = false;
     while !ended {
         cranks.clear();
@@ -140,25 +159,35 @@ pub fn run(
                 }
             }
         }
-        mechanism.fill_block(&cranks, &mut states[..cranks.len()]);
-        for (crank, state) in cranks.iter().zip(&mut states) {
+        let n = cranks.len();
+        mechanism.fill_block(&cranks, &mut states[..n]);
+        for (j, ((crank, state), o)) in cranks.iter().zip(&mut states).zip(&mut out).enumerate() {
+            let step = index + j;
             if details {
                 mechanism.fill_extras(state);
             }
             let state: &State = state;
-            let pressure = gas.map(|g| {
+            let StepOut {
+                pressure,
+                forces,
+                loads,
+                total,
+                shares,
+                losses: power_losses,
+                friction_torque,
+                ratings,
+            } = o;
+            *pressure = gas.map(|g| {
                 let (p, f) = g(crank.angle);
                 forces.fill(f);
                 p
             });
-            // Each family sees the sum of those before it; one family is its own total.
-            let several = families.len() > 1;
             if several {
                 total.clear();
             }
-            for ((family, out), share) in families.iter().zip(&mut loads).zip(&mut shares) {
-                let applied: &[f64] = if family.piston_forces() { &forces } else { &[] };
-                family.loads(mechanism, state, applied, &total, out);
+            for ((family, out), share) in families.iter().zip(loads.iter_mut()).zip(shares) {
+                let applied: &[f64] = if family.piston_forces() { forces } else { &[] };
+                family.loads(mechanism, state, applied, total, out);
                 if details {
                     torque_shares(topology, state, family.inertia(), applied, share);
                 }
@@ -166,25 +195,19 @@ pub fn run(
                     total.add(out);
                 }
             }
-            let total = if several { &total } else { &loads[0] };
-            check_finite(index, state, pressure, &forces, families, &loads, mechanism)?;
+            let total: &Loads = if several { total } else { &loads[0] };
+            check_finite(step, state, *pressure, forces, families, loads, mechanism)?;
             if let Some(g) = gears {
-                g.evaluate(state, total, inertial.map(|k| &loads[k]), &mut ratings)
-                    .map_err(|message| RunError::Sink {
-                        step: index,
-                        message,
-                    })?;
+                g.evaluate(state, total, inertial.map(|k| &loads[k]), ratings)
+                    .map_err(|message| RunError::Sink { step, message })?;
                 mesh_losses.clear();
                 mesh_losses.extend(g.joints().zip(ratings.iter().map(|r| r.loss)));
             }
-            let mut friction_torque = 0.0;
+            *friction_torque = 0.0;
             if let Some(budget) = losses.as_deref_mut() {
                 budget
-                    .evaluate(state, total, pressure, &mesh_losses, &mut power_losses)
-                    .map_err(|message| RunError::Sink {
-                        step: index,
-                        message,
-                    })?;
+                    .evaluate(state, total, *pressure, &mesh_losses, power_losses)
+                    .map_err(|message| RunError::Sink { step, message })?;
                 let sum: f64 = power_losses.iter().sum();
                 if !sum.is_finite() {
                     let k = power_losses
@@ -192,42 +215,59 @@ pub fn run(
                         .position(|p| !p.is_finite())
                         .unwrap_or(0);
                     return Err(RunError::NonFinite {
-                        step: index,
+                        step,
                         angle_deg: state.crank.angle.to_degrees(),
                         quantity: format!("power_loss_{}", budget.names()[k]),
                         value: power_losses[k],
                     });
                 }
                 if state.crank.speed != 0.0 {
-                    friction_torque = sum / state.crank.speed.abs();
+                    *friction_torque = sum / state.crank.speed.abs();
                 }
             }
-            let step = Step {
-                index,
-                state,
-                pressure,
-                piston_forces: &forces,
-                families: &loads,
-                total,
-                losses: &power_losses,
-                friction_torque,
-                gears: &ratings,
-                shares: &shares,
-            };
-            for sink in sinks.iter_mut() {
-                sink.push(&step).map_err(|message| RunError::Sink {
-                    step: index,
-                    message,
-                })?;
-            }
             previous_torque = Some(total.crank_torque);
-            index += 1;
         }
+        // The block's steps, in an allocation kept from block to block (emptied, it takes
+        // steps borrowing this block's results).
+        let mut steps: Vec<Step> = spare.into_iter().map(|_| unreachable!()).collect();
+        steps.extend(states.iter().zip(&out).take(n).enumerate().map(|(j, (state, o))| Step {
+            index: index + j,
+            state,
+            pressure: o.pressure,
+            piston_forces: &o.forces,
+            families: &o.loads,
+            total: if several { &o.total } else { &o.loads[0] },
+            losses: &o.losses,
+            friction_torque: o.friction_torque,
+            gears: &o.ratings,
+            shares: &o.shares,
+        }));
+        for sink in sinks.iter_mut() {
+            sink.push_block(&steps)
+                .map_err(|(step, message)| RunError::Sink { step, message })?;
+        }
+        steps.clear();
+        spare = steps.into_iter().map(|_| unreachable!()).collect();
+        index += n;
         if let Some(e) = stopped {
             return Err(e);
         }
     }
     Ok(())
+}
+
+/// What a step computes besides its state, kept for each step of a block until the sinks have
+/// taken the block.
+#[derive(Clone)]
+struct StepOut {
+    pressure: Option<f64>,
+    forces: Vec<f64>,
+    loads: Vec<Loads>,
+    total: Loads,
+    shares: Vec<Vec<f64>>,
+    losses: Vec<f64>,
+    friction_torque: f64,
+    ratings: Vec<MeshRating>,
 }
 
 /// Crank states a run takes at once from a prescribed motion.

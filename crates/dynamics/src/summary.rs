@@ -167,34 +167,53 @@ impl FamilyTotals {
         self.energy_flow.merge(&later.energy_flow);
     }
 
-    /// Adds one step; `prev` holds the previous step's (angle, torque, speed).
-    fn add(
+    /// Takes the steps `steps` (`loads` gives this family's loads at a step; `previous` the
+    /// angle and speed of the step before them, `torque` its torque, then the last step's).
+    fn take<'s>(
         &mut self,
-        l: &Loads,
+        steps: &[Step<'s>],
+        loads: impl Fn(&Step<'s>) -> &'s Loads,
         meshes: &[usize],
-        joints: &[JointMotion],
-        interval: Option<(f64, f64, f64)>,
-        speed: f64,
+        previous: Option<(f64, f64)>,
+        torque: &mut f64,
     ) {
-        for ((f, m), j) in self.force.iter_mut().zip(&mut self.moment).zip(&l.joints) {
-            raise(f, j.force.norm_sqr());
-            raise(m, j.moment.abs());
+        for (j, (f, m)) in self.force.iter_mut().zip(&mut self.moment).enumerate() {
+            let (mut fv, mut mv) = (*f, *m);
+            for s in steps {
+                let l = &loads(s).joints[j];
+                raise(&mut fv, l.force.norm_sqr());
+                raise(&mut mv, l.moment.abs());
+            }
+            (*f, *m) = (fv, mv);
         }
-        for &k in meshes {
-            raise(
-                &mut self.tangential[k],
-                tangential(l.joints[k].force, &joints[k]).abs(),
-            );
+        for &j in meshes {
+            let mut t = self.tangential[j];
+            for s in steps {
+                raise(
+                    &mut t,
+                    tangential(loads(s).joints[j].force, &s.state.joints[j]).abs(),
+                );
+            }
+            self.tangential[j] = t;
         }
-        raise(&mut self.torque, l.crank_torque.abs());
+        let mut peak = self.torque;
+        for s in steps {
+            raise(&mut peak, loads(s).crank_torque.abs());
+        }
+        self.torque = peak;
         // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
         // trapezoidal rule on the crank-angle grid.
-        if let Some((h, t0, w0)) = interval {
-            self.work.add(0.5 * h * (l.crank_torque + t0));
-            self.abs_work
-                .add(0.5 * h * (l.crank_torque.abs() + t0.abs()));
-            self.energy_flow
-                .add(0.5 * h * (l.crank_torque * speed + t0 * w0));
+        let mut previous = previous;
+        for s in steps {
+            let (t, angle, speed) = (loads(s).crank_torque, s.state.crank.angle, s.state.crank.speed);
+            if let Some((a0, w0)) = previous {
+                let (h, t0) = (angle - a0, *torque);
+                self.work.add(0.5 * h * (t + t0));
+                self.abs_work.add(0.5 * h * (t.abs() + t0.abs()));
+                self.energy_flow.add(0.5 * h * (t * speed + t0 * w0));
+            }
+            *torque = t;
+            previous = Some((angle, speed));
         }
     }
 }
@@ -587,88 +606,136 @@ impl SummarySink {
     }
 }
 
-impl Sink for SummarySink {
-    fn push(&mut self, s: &Step) -> Result<(), String> {
-        let st = s.state;
-        for (peaks, p) in self.pistons.iter_mut().zip(&st.pistons) {
-            raise(&mut peaks[0], p.velocity * p.velocity);
-            raise(&mut peaks[1], p.acceleration * p.acceleration);
+/// The loads of family `k` at a step (the total after the families).
+fn family_loads<'s>(s: &Step<'s>, k: usize) -> &'s Loads {
+    s.families.get(k).unwrap_or(s.total)
+}
+
+impl SummarySink {
+    /// Takes the steps `steps` (in order, none of them but the last closing a chunk): each
+    /// peak raised over all of them in a register before it is stored back (a store per peak
+    /// and step was most of a step's summary), each integral's terms added in the steps' order.
+    fn take(&mut self, steps: &[Step<'_>]) {
+        let Some(last) = steps.last() else { return };
+        for (k, peaks) in self.pistons.iter_mut().enumerate() {
+            let [mut v, mut a] = *peaks;
+            for s in steps {
+                let p = &s.state.pistons[k];
+                raise(&mut v, p.velocity * p.velocity);
+                raise(&mut a, p.acceleration * p.acceleration);
+            }
+            *peaks = [v, a];
         }
-        for (peaks, b) in self.bodies.iter_mut().zip(&st.bodies) {
-            raise(&mut peaks[0], b.cg.velocity.norm_sqr());
-            raise(&mut peaks[1], b.cg.acceleration.norm_sqr());
-            raise(&mut peaks[2], b.angular_velocity * b.angular_velocity);
-            raise(
-                &mut peaks[3],
-                b.angular_acceleration * b.angular_acceleration,
-            );
+        for (k, peaks) in self.bodies.iter_mut().enumerate() {
+            let [mut v, mut a, mut w, mut e] = *peaks;
+            for s in steps {
+                let b = &s.state.bodies[k];
+                raise(&mut v, b.cg.velocity.norm_sqr());
+                raise(&mut a, b.cg.acceleration.norm_sqr());
+                raise(&mut w, b.angular_velocity * b.angular_velocity);
+                raise(&mut e, b.angular_acceleration * b.angular_acceleration);
+            }
+            *peaks = [v, a, w, e];
         }
-        let (angle, speed) = (st.crank.angle, st.crank.speed);
         for (k, (f, t0)) in self
             .families
             .iter_mut()
             .zip(&mut self.previous_torques)
             .enumerate()
         {
-            let loads = s.families.get(k).unwrap_or(s.total);
-            let interval = self.previous.map(|(a0, w0)| (angle - a0, *t0, w0));
-            f.add(loads, &self.meshes, &st.joints, interval, speed);
-            *t0 = loads.crank_torque;
+            f.take(steps, |s| family_loads(s, k), &self.meshes, self.previous, t0);
         }
-        if let Some(p) = st.pistons.first() {
-            let lever = p.dx_dtheta.abs();
-            raise(&mut self.lever, lever);
-            if let Some((a0, _)) = self.previous {
-                self.lever_integral
-                    .add(0.5 * (angle - a0) * (lever + self.previous_lever));
+        if !self.topology.pistons.is_empty() {
+            let mut previous = self.previous;
+            for s in steps {
+                let (angle, speed) = (s.state.crank.angle, s.state.crank.speed);
+                let lever = s.state.pistons[0].dx_dtheta.abs();
+                raise(&mut self.lever, lever);
+                if let Some((a0, _)) = previous {
+                    self.lever_integral
+                        .add(0.5 * (angle - a0) * (lever + self.previous_lever));
+                }
+                self.previous_lever = lever;
+                previous = Some((angle, speed));
             }
-            self.previous_lever = lever;
         }
         if let Some(l) = &mut self.losses {
-            let dt = st.crank.time - self.previous_time;
-            let started = self.previous.is_some();
-            for ((w, p0), &p) in l.work.iter_mut().zip(&mut l.previous).zip(s.losses) {
-                if started {
-                    w.add(0.5 * dt * (p + *p0));
+            let (mut started, mut t0) = (self.previous.is_some(), self.previous_time);
+            for s in steps {
+                let dt = s.state.crank.time - t0;
+                for ((w, p0), &p) in l.work.iter_mut().zip(&mut l.previous).zip(s.losses) {
+                    if started {
+                        w.add(0.5 * dt * (p + *p0));
+                    }
+                    *p0 = p;
                 }
-                *p0 = p;
+                raise(&mut l.friction_torque, s.friction_torque);
+                (started, t0) = (true, s.state.crank.time);
             }
-            raise(&mut l.friction_torque, s.friction_torque);
         }
         if let Some(g) = &mut self.gears {
-            let loss: f64 = s.gears.iter().map(|r| r.loss).sum();
-            if self.previous.is_some() {
-                g.loss_work
-                    .add(0.5 * (st.crank.time - self.previous_time) * (loss + g.previous_loss));
+            let (mut started, mut t0) = (self.previous.is_some(), self.previous_time);
+            for s in steps {
+                let loss: f64 = s.gears.iter().map(|r| r.loss).sum();
+                if started {
+                    g.loss_work
+                        .add(0.5 * (s.state.crank.time - t0) * (loss + g.previous_loss));
+                }
+                g.previous_loss = loss;
+                for r in s.gears {
+                    raise(&mut g.tooth_load, r.tooth_load);
+                    raise(&mut g.dynamic_load, r.dynamic_load);
+                    raise(&mut g.contact_stress, r.contact_stress);
+                    g.contact_safety = g.contact_safety.min(r.contact_safety);
+                    if g.bending {
+                        raise(&mut g.bending_stress, r.bending_stress);
+                        g.bending_safety = g.bending_safety.min(r.bending_safety);
+                    }
+                }
+                (started, t0) = (true, s.state.crank.time);
             }
-            g.previous_loss = loss;
-            for r in s.gears {
-                raise(&mut g.tooth_load, r.tooth_load);
-                raise(&mut g.dynamic_load, r.dynamic_load);
-                raise(&mut g.contact_stress, r.contact_stress);
-                g.contact_safety = g.contact_safety.min(r.contact_safety);
-                if g.bending {
-                    raise(&mut g.bending_stress, r.bending_stress);
-                    g.bending_safety = g.bending_safety.min(r.bending_safety);
+        }
+        for s in steps {
+            // The kinetic energy is wanted at the first and last steps only.
+            if self.first.is_none() || s.index == self.last_step {
+                let st = s.state;
+                let now = (st.crank.angle, st.crank.time, kinetic_energy(&self.topology, st));
+                self.first.get_or_insert(now);
+                self.last = now;
+            }
+            if let Some(p) = s.pressure {
+                self.pressure = Some(self.pressure.map_or(p, |q| q.max(p)));
+                for f in s.piston_forces {
+                    raise(&mut self.gas_force, f.abs());
                 }
             }
         }
-        if s.index % SUMMARY_CHUNK == 0 {
-            self.close_chunk();
-        }
-        self.previous_time = st.crank.time;
-        self.previous = Some((angle, speed));
-        // The kinetic energy is wanted at the first and last steps only.
-        if self.first.is_none() || s.index == self.last_step {
-            let now = (angle, st.crank.time, kinetic_energy(&self.topology, st));
-            self.first.get_or_insert(now);
-            self.last = now;
-        }
-        if let Some(p) = s.pressure {
-            self.pressure = Some(self.pressure.map_or(p, |q| q.max(p)));
-            for f in s.piston_forces {
-                raise(&mut self.gas_force, f.abs());
+        self.previous_time = last.state.crank.time;
+        self.previous = Some((last.state.crank.angle, last.state.crank.speed));
+    }
+}
+
+impl Sink for SummarySink {
+    fn push(&mut self, s: &Step) -> Result<(), String> {
+        self.push_block(std::slice::from_ref(s))
+            .map_err(|(_, message)| message)
+    }
+
+    /// The steps up to each one that closes a chunk (its index a multiple of
+    /// [`SUMMARY_CHUNK`]) taken together, then the chunk closed.
+    fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
+        let mut rest = steps;
+        while !rest.is_empty() {
+            let end = rest
+                .iter()
+                .position(|s| s.index % SUMMARY_CHUNK == 0)
+                .map_or(rest.len(), |k| k + 1);
+            let (part, after) = rest.split_at(end);
+            self.take(part);
+            if part[end - 1].index % SUMMARY_CHUNK == 0 {
+                self.close_chunk();
             }
+            rest = after;
         }
         Ok(())
     }
