@@ -36,6 +36,11 @@ impl<A: Sink, B: Sink> Sink for (A, B) {
         self.1.push(step)
     }
 
+    fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
+        self.0.push_block(steps)?;
+        self.1.push_block(steps)
+    }
+
     fn wants_details(&self) -> bool {
         self.0.wants_details() || self.1.wants_details()
     }
@@ -44,6 +49,10 @@ impl<A: Sink, B: Sink> Sink for (A, B) {
 impl<S: Sink> Sink for Option<S> {
     fn push(&mut self, step: &Step) -> Result<(), String> {
         self.as_mut().map_or(Ok(()), |s| s.push(step))
+    }
+
+    fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
+        self.as_mut().map_or(Ok(()), |s| s.push_block(steps))
     }
 
     fn wants_details(&self) -> bool {

@@ -230,18 +230,25 @@ pub fn run(
         // The block's steps, in an allocation kept from block to block (emptied, it takes
         // steps borrowing this block's results).
         let mut steps: Vec<Step> = spare.into_iter().map(|_| unreachable!()).collect();
-        steps.extend(states.iter().zip(&out).take(n).enumerate().map(|(j, (state, o))| Step {
-            index: index + j,
-            state,
-            pressure: o.pressure,
-            piston_forces: &o.forces,
-            families: &o.loads,
-            total: if several { &o.total } else { &o.loads[0] },
-            losses: &o.losses,
-            friction_torque: o.friction_torque,
-            gears: &o.ratings,
-            shares: &o.shares,
-        }));
+        steps.extend(
+            states
+                .iter()
+                .zip(&out)
+                .take(n)
+                .enumerate()
+                .map(|(j, (state, o))| Step {
+                    index: index + j,
+                    state,
+                    pressure: o.pressure,
+                    piston_forces: &o.forces,
+                    families: &o.loads,
+                    total: if several { &o.total } else { &o.loads[0] },
+                    losses: &o.losses,
+                    friction_torque: o.friction_torque,
+                    gears: &o.ratings,
+                    shares: &o.shares,
+                }),
+        );
         for sink in sinks.iter_mut() {
             sink.push_block(&steps)
                 .map_err(|(step, message)| RunError::Sink { step, message })?;

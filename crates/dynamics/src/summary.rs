@@ -205,7 +205,11 @@ impl FamilyTotals {
         // trapezoidal rule on the crank-angle grid.
         let mut previous = previous;
         for s in steps {
-            let (t, angle, speed) = (loads(s).crank_torque, s.state.crank.angle, s.state.crank.speed);
+            let (t, angle, speed) = (
+                loads(s).crank_torque,
+                s.state.crank.angle,
+                s.state.crank.speed,
+            );
             if let Some((a0, w0)) = previous {
                 let (h, t0) = (angle - a0, *torque);
                 self.work.add(0.5 * h * (t + t0));
@@ -643,7 +647,13 @@ impl SummarySink {
             .zip(&mut self.previous_torques)
             .enumerate()
         {
-            f.take(steps, |s| family_loads(s, k), &self.meshes, self.previous, t0);
+            f.take(
+                steps,
+                |s| family_loads(s, k),
+                &self.meshes,
+                self.previous,
+                t0,
+            );
         }
         if !self.topology.pistons.is_empty() {
             let mut previous = self.previous;
@@ -699,7 +709,11 @@ impl SummarySink {
             // The kinetic energy is wanted at the first and last steps only.
             if self.first.is_none() || s.index == self.last_step {
                 let st = s.state;
-                let now = (st.crank.angle, st.crank.time, kinetic_energy(&self.topology, st));
+                let now = (
+                    st.crank.angle,
+                    st.crank.time,
+                    kinetic_energy(&self.topology, st),
+                );
                 self.first.get_or_insert(now);
                 self.last = now;
             }
