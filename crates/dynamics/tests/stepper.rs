@@ -2,7 +2,10 @@
 //! one at a time; either way every step reaches the sinks in order, and a motion that cannot
 //! go on fails at the step where it stops.
 
-use cardan_dynamics::{run, Inertial, LoadFamily, RunError, Sink, Solver, Stages, Steps};
+use cardan_dynamics::{
+    run, Inertial, LoadFamily, RunError, Sink, Solver, Stages, Steps, Summary, SummarySink,
+    SUMMARY_CHUNK,
+};
 use cardan_mechanism::{
     CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, MotionError, MotionSource, Options,
     MECHANISMS,
@@ -24,6 +27,19 @@ impl MotionSource for OneByOne {
 fn steps(
     motion: &mut dyn MotionSource,
 ) -> (Vec<cardan_dynamics::StepRecord>, Result<(), RunError>) {
+    let (kept, _, result) = run_slider_crank(motion, true);
+    (kept, result)
+}
+
+/// The slider-crank run through `motion`: its steps if `keep`, its summary, how it ended.
+fn run_slider_crank(
+    motion: &mut dyn MotionSource,
+    keep: bool,
+) -> (
+    Vec<cardan_dynamics::StepRecord>,
+    Result<Summary, String>,
+    Result<(), RunError>,
+) {
     let g = MachineGeometry {
         crank_length: 0.06,
         rod_length: 0.14,
@@ -38,8 +54,12 @@ fn steps(
     let inertial = Inertial(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 1] = [&inertial];
     let mut kept = Steps::default();
+    let mut summary = SummarySink::new(m.as_ref(), &["inertial"], motion.len());
     let result = {
-        let mut sinks: [&mut dyn Sink; 1] = [&mut kept];
+        let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
+        if keep {
+            sinks.push(&mut kept);
+        }
         run(
             m.as_ref(),
             motion,
@@ -49,7 +69,25 @@ fn steps(
             &mut sinks,
         )
     };
-    (kept.0, result)
+    (kept.0, summary.finish(m.as_ref()), result)
+}
+
+/// The summary takes a block's steps together (`Sink::push_block`), closing its integrals'
+/// chunk inside a block: the summary of steps taken one at a time, bit for bit.
+#[test]
+fn a_summary_of_blocks_is_the_summary_of_single_steps() {
+    let motion = CrankMotion {
+        start_angle: 1.0,
+        initial_speed: 100.0,
+        angular_acceleration: 500.0,
+    };
+    for steps in [100, SUMMARY_CHUNK + 3, 2 * SUMMARY_CHUNK + 11] {
+        let (_, blocks, a) = run_slider_crank(&mut Grid::new(motion, 1.0, 20.0, steps), false);
+        let (_, single, b) =
+            run_slider_crank(&mut OneByOne(Grid::new(motion, 1.0, 20.0, steps)), false);
+        assert!(a.is_ok() && b.is_ok());
+        assert_eq!(blocks.unwrap(), single.unwrap(), "{steps} steps");
+    }
 }
 
 #[test]
