@@ -224,6 +224,19 @@ impl Grid {
         }
     }
 
+    /// The states of the block from index `k` on (the block made when `k` starts one; `k` at
+    /// most `last`), or the motion's error if it cannot reach the angle of `k`.
+    fn ahead(&mut self) -> Result<&[CrankState], MotionError> {
+        if self.k % REANCHOR == 0 {
+            self.fill_block(self.k);
+        }
+        match self.block.get(self.k - self.block_start..) {
+            Some(states) if !states.is_empty() => Ok(states),
+            // Past the block's valid states: the motion cannot reach this angle.
+            _ => Err(self.error.clone().unwrap_or(MotionError::Still)),
+        }
+    }
+
     /// Makes the block of states from index `k` (a multiple of [`REANCHOR`]).
     fn fill_block(&mut self, k: usize) {
         self.block.clear();
@@ -306,18 +319,11 @@ impl MotionSource for Grid {
             return None;
         }
         Some(Box::new(Grid {
-            motion: self.motion,
-            start: self.start,
-            end: self.end,
-            steps: self.steps,
-            h: self.h,
-            rotation: self.rotation,
             k: first,
             first,
             last,
-            block: Vec::with_capacity(REANCHOR),
             block_start: first,
-            error: None,
+            ..Grid::new(self.motion, self.start, self.end, self.steps)
         }))
     }
 
@@ -325,38 +331,29 @@ impl MotionSource for Grid {
     fn next_states(&mut self, out: &mut Vec<CrankState>, n: usize) -> Result<(), MotionError> {
         let wanted = out.len() + n;
         while out.len() < wanted && self.k <= self.last {
-            if self.k % REANCHOR == 0 {
-                self.fill_block(self.k);
-            }
-            let from = self.k - self.block_start;
-            // The states of this block still to give, the ones wanted, the ones before `last`.
-            let take = (self.block.len().saturating_sub(from))
-                .min(wanted - out.len())
-                .min(self.last + 1 - self.k);
-            if take == 0 {
-                self.k += 1;
-                return Err(self.error.clone().unwrap_or(MotionError::Still));
-            }
-            out.extend_from_slice(&self.block[from..from + take]);
+            let take = match self.ahead() {
+                Ok(states) => {
+                    let take = states.len().min(wanted - out.len());
+                    out.extend_from_slice(&states[..take]);
+                    take
+                }
+                Err(e) => {
+                    self.k += 1;
+                    return Err(e);
+                }
+            };
             self.k += take;
         }
         Ok(())
     }
 
     fn next(&mut self, _previous_torque: Option<f64>) -> Option<Result<CrankState, MotionError>> {
-        let k = self.k;
-        if k > self.last {
+        if self.k > self.last {
             return None;
         }
-        if k % REANCHOR == 0 {
-            self.fill_block(k);
-        }
+        let state = self.ahead().map(|states| states[0]);
         self.k += 1;
-        match self.block.get(k - self.block_start) {
-            Some(s) => Some(Ok(*s)),
-            // Past the block's valid states: the motion cannot reach this angle.
-            None => Some(Err(self.error.clone().unwrap_or(MotionError::Still))),
-        }
+        Some(state)
     }
 }
 
