@@ -281,7 +281,7 @@ struct StepOut {
 const STEP_BLOCK: usize = 8;
 
 /// Fails the step if any computed quantity is not finite, naming the first such quantity. One
-/// sum of everything is checked per step (a NaN or infinity anywhere makes it non-finite); the
+/// flag, the and of every quantity's finiteness, is checked per step; the
 /// culprit is looked for only then.
 fn check_finite(
     step: usize,
