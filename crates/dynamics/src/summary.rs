@@ -120,7 +120,8 @@ pub fn radial(force: C, mesh: &JointMotion) -> f64 {
 #[derive(Debug, Clone)]
 struct FamilyTotals {
     name: &'static str,
-    /// Squared peak force of each joint, peak couple of each joint.
+    /// Squared peak force of each joint, peak couple of each joint (of the slides only: the
+    /// only joints with a couple; 0 for the others).
     force: Vec<f64>,
     moment: Vec<f64>,
     /// Peak |tangential force| of each gear mesh (0 for other joints), N.
@@ -173,20 +174,25 @@ impl FamilyTotals {
         &mut self,
         steps: &[Step<'s>],
         loads: impl Fn(&Step<'s>) -> &'s Loads,
-        meshes: &[usize],
+        joints: &Joints,
         previous: Option<(f64, f64)>,
         torque: &mut f64,
     ) {
-        for (j, (f, m)) in self.force.iter_mut().zip(&mut self.moment).enumerate() {
-            let (mut fv, mut mv) = (*f, *m);
+        for (j, f) in self.force.iter_mut().enumerate() {
+            let mut peak = *f;
             for s in steps {
-                let l = &loads(s).joints[j];
-                raise(&mut fv, l.force.norm_sqr());
-                raise(&mut mv, l.moment.abs());
+                raise(&mut peak, loads(s).joints[j].force.norm_sqr());
             }
-            (*f, *m) = (fv, mv);
+            *f = peak;
         }
-        for &j in meshes {
+        for &j in &joints.slides {
+            let mut peak = self.moment[j];
+            for s in steps {
+                raise(&mut peak, loads(s).joints[j].moment.abs());
+            }
+            self.moment[j] = peak;
+        }
+        for &j in &joints.meshes {
             let mut t = self.tangential[j];
             for s in steps {
                 raise(
@@ -222,6 +228,15 @@ impl FamilyTotals {
     }
 }
 
+/// The joints whose couples and tangential forces a summary reports, by index.
+#[derive(Debug, Clone)]
+struct Joints {
+    /// The slides (the joints that carry a couple).
+    slides: Vec<usize>,
+    /// The gear meshes.
+    meshes: Vec<usize>,
+}
+
 /// The works of the loss components and the peak friction torque.
 #[derive(Debug, Clone)]
 struct LossTotals {
@@ -252,8 +267,7 @@ struct GearTotals {
 #[derive(Debug, Clone)]
 pub struct SummarySink {
     topology: Topology,
-    /// The gear-mesh joints.
-    meshes: Vec<usize>,
+    joints: Joints,
     /// Squared peaks: each piston's velocity and acceleration.
     pistons: Vec<[f64; 2]>,
     /// Squared peaks: each body's cg velocity and acceleration, angular velocity and acceleration.
@@ -293,15 +307,19 @@ impl SummarySink {
         if families.len() > 1 {
             totals.push(FamilyTotals::new("total", joints));
         }
-        let meshes = topology
-            .joints
-            .iter()
-            .enumerate()
-            .filter(|(_, j)| matches!(j.kind, JointKind::GearMesh { .. }))
-            .map(|(k, _)| k)
-            .collect();
+        let of_kind = |kind: fn(&JointKind) -> bool| {
+            let joints = topology.joints.iter().enumerate();
+            joints
+                .filter(|(_, j)| kind(&j.kind))
+                .map(|(k, _)| k)
+                .collect()
+        };
+        let joints = Joints {
+            slides: of_kind(|k| matches!(k, JointKind::Prismatic)),
+            meshes: of_kind(|k| matches!(k, JointKind::GearMesh { .. })),
+        };
         Self {
-            meshes,
+            joints,
             pistons: vec![[0.0; 2]; topology.pistons.len()],
             bodies: vec![[0.0; 4]; topology.bodies.len()],
             topology,
@@ -542,7 +560,7 @@ impl SummarySink {
                     );
                 }
             }
-            for &k in &self.meshes {
+            for &k in &self.joints.meshes {
                 let name = t.joints[k].name;
                 m.push_as(
                     "{family}_{joint}_tangential_max",
@@ -650,7 +668,7 @@ impl SummarySink {
             f.take(
                 steps,
                 |s| family_loads(s, k),
-                &self.meshes,
+                &self.joints,
                 self.previous,
                 t0,
             );

@@ -219,6 +219,8 @@ impl Mechanism for CardanGear {
         &self.masses
     }
 
+    // Inlined into the default `fill_block`'s loop: a call per step cost 1-2 % of a run.
+    #[inline(always)]
     fn fill(&self, crank: &CrankState, st: &mut State) {
         let (w, a) = (crank.speed, crank.acceleration);
         let r = self.crank;

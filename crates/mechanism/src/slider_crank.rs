@@ -154,6 +154,8 @@ impl SliderCrank {
 
     /// [`Mechanism::fill`] with the rod angles (cos θ_BA, sin θ_BA, dθ_BA/dθ, d²θ_BA/dθ²) of
     /// [`Self::rod_angles`] given.
+    // Inlined into `fill_block`'s loop: a call per step cost 7 % of a run.
+    #[inline(always)]
     fn fill_with(
         &self,
         crank: &CrankState,
