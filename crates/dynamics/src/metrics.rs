@@ -118,7 +118,12 @@ pub const METRICS: &[MetricDef] = &[
 
 /// The definition a metric name falls under: the matching template with the most fixed
 /// characters (so `rod_cg_velocity_max` is a body's, not a piston's, `{piston}_velocity_max`).
+/// A template without placeholders equal to the name has the most (a placeholder takes at least
+/// one character): it is looked for first, by plain comparison.
 pub fn find(name: &str) -> Option<&'static MetricDef> {
+    if let Some(exact) = METRICS.iter().find(|d| d.name == name) {
+        return Some(exact);
+    }
     let fixed = |t: &str| t.split(['{', '}']).step_by(2).map(str::len).sum::<usize>();
     METRICS
         .iter()
