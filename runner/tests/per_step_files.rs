@@ -166,7 +166,7 @@ fn per_step_files_are_byte_identical_between_thread_counts() {
     }
 }
 
-/// A case without per-step files is shared by the threads (pieces of 4096 steps), one with
+/// A case without per-step files is shared by the threads (four pieces of 2304 steps), one with
 /// them is not: the same summary.json, byte for byte, with 1 and 2 threads, with and without
 /// files, with the report (its charts taken by the pieces) and without.
 #[test]

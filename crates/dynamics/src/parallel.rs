@@ -1,5 +1,6 @@
 //! One run shared by the threads of the rayon pool, so that a single long case fills every
-//! core: a prescribed motion is split into chunks of [`SUMMARY_CHUNK`] steps, each chunk is run
+//! core: a prescribed motion is split into the chunks of its summary ([`summary_chunk`]: an
+//! even number of near-equal pieces, none longer than [`MAX_CHUNK`] steps), each chunk is run
 //! into sinks of its own, and the sinks are joined in the chunks' order. The summary adds its
 //! integrals chunk by chunk in any run, so the result is the one [`run`] gives, bit for bit,
 //! whatever the number of threads (tested in `tests/parallel.rs`).
@@ -7,7 +8,7 @@
 use crate::family::LoadFamily;
 use crate::losses::LossBudget;
 use crate::stepper::{run, GasAt, RunError, Sink, Stages, Step};
-use crate::summary::{SummarySink, SUMMARY_CHUNK};
+use crate::summary::{summary_chunk, SummarySink, MAX_CHUNK};
 use cardan_mechanism::{Mechanism, MotionSource};
 use rayon::prelude::*;
 
@@ -90,7 +91,8 @@ impl<A: Joinable, B: Joinable> Joinable for (A, B) {
 const WAVE: usize = 8;
 
 /// Runs as [`run`] does with `sink` (no step taken yet) as the only sink, the steps shared by
-/// the threads of the current rayon pool. A run of at most one chunk, a motion that
+/// the threads of the current rayon pool. A run of at most [`MAX_CHUNK`] steps (not worth the
+/// threads' start: a sweep's short cases share the pool case by case), a motion that
 /// cannot be split ([`MotionSource::part`]: a solved one) or a loss budget whose steps depend
 /// on the ones before ([`LossBudget::carries_history`]) runs on the calling thread alone. A
 /// failure is the one [`run`] reports: the first failing step's.
@@ -104,8 +106,9 @@ pub fn run_parallel(
 ) -> Result<(), RunError> {
     let first = motion.first_index();
     let count = motion.len();
-    let splittable = count > SUMMARY_CHUNK + 1
-        && first % SUMMARY_CHUNK == 0
+    let chunk = summary_chunk(first + count);
+    let splittable = count > MAX_CHUNK + 1
+        && first % chunk == 0
         && !stages
             .losses
             .as_deref()
@@ -120,13 +123,13 @@ pub fn run_parallel(
     let last = first + count - 1;
     // Chunk k takes the steps from its start to the next chunk's start: the interval that
     // ends a chunk is the chunk's (its last step is taken twice; a peak does not mind).
-    let starts: Vec<usize> = (first..last).step_by(SUMMARY_CHUNK).collect();
+    let starts: Vec<usize> = (first..last).step_by(chunk).collect();
     for wave in starts.chunks(WAVE) {
         let parts: Vec<_> = wave
             .iter()
             .map(|&s| {
                 motion
-                    .part(s, (s + SUMMARY_CHUNK).min(last))
+                    .part(s, (s + chunk).min(last))
                     .expect("a splittable motion splits at every chunk start")
             })
             .collect();

@@ -57,14 +57,26 @@ impl Summary {
 /// far closer than this (1e-9 on the shipped cases); a coarser grid fails the case.
 pub const ENERGY_TOLERANCE: f64 = 1e-3;
 
-/// Steps whose integral terms a summary adds up apart before adding their sum to the run's:
-/// the chunks of a run that several threads share ([`crate::run_parallel`]), whose sums are
-/// added in the chunks' order. A summary made step by step adds the same sums in the same
-/// order, so it is the same bit for bit however the run is shared (tested). A multiple of
-/// [`cardan_mechanism::REANCHOR`], where a grid can be split.
-pub const SUMMARY_CHUNK: usize = 64 * cardan_mechanism::REANCHOR;
+/// The most steps in a chunk of [`summary_chunk`].
+pub const MAX_CHUNK: usize = 4096;
 
-/// A trapezoidal integral summed chunk by chunk ([`SUMMARY_CHUNK`]).
+/// Steps whose integral terms a summary adds up apart before adding their sum to the run's,
+/// in a run of `points` states: the pieces a run is shared in among threads
+/// ([`crate::run_parallel`]), each piece whole chunks, whose sums are added in the chunks'
+/// order. A summary made step by step adds the same sums in the same order, so it is the same
+/// bit for bit however the run is shared (tested). A function of the run's length alone, not
+/// of the threads, so that a run on one thread and a shared one agree: an even number of
+/// near-equal chunks, so that two cores share a run evenly, of whole grid blocks
+/// ([`cardan_mechanism::REANCHOR`], where a grid can be split), none longer than
+/// [`MAX_CHUNK`] (bounding what a piece holds).
+pub fn summary_chunk(points: usize) -> usize {
+    const BLOCK: usize = cardan_mechanism::REANCHOR;
+    let blocks = points.saturating_sub(1).div_ceil(BLOCK).max(1);
+    let chunks = blocks.div_ceil(MAX_CHUNK / BLOCK).next_multiple_of(2);
+    blocks.div_ceil(chunks) * BLOCK
+}
+
+/// A trapezoidal integral summed chunk by chunk ([`summary_chunk`]).
 #[derive(Debug, Clone, Copy, Default)]
 struct Integral {
     /// The sum of the chunks closed so far, and of the chunk under way.
@@ -282,6 +294,8 @@ pub struct SummarySink {
     last: (f64, f64, f64),
     /// Index of the run's last step (where the kinetic energy is taken again).
     last_step: usize,
+    /// Steps of the chunks of its integrals ([`summary_chunk`]).
+    chunk: usize,
     gas_force: f64,
     pressure: Option<f64>,
     /// Largest |dx/dθ| of the first piston, m/rad, and ∫|dx/dθ| dθ, m.
@@ -329,6 +343,7 @@ impl SummarySink {
             first: None,
             last: (0.0, 0.0, 0.0),
             last_step: points.saturating_sub(1),
+            chunk: summary_chunk(points),
             gas_force: 0.0,
             pressure: None,
             lever: 0.0,
@@ -435,7 +450,7 @@ impl SummarySink {
     }
 
     /// Closes the chunk of every integral (at each step whose index is a multiple of
-    /// [`SUMMARY_CHUNK`], after its interval was added).
+    /// its chunk, after its interval was added).
     fn close_chunk(&mut self) {
         for f in &mut self.families {
             f.close_chunk();
@@ -450,7 +465,7 @@ impl SummarySink {
     }
 
     /// Continues this summary with `later`, the summary of the steps from the last one this
-    /// summary took (a chunk boundary: its index a multiple of [`SUMMARY_CHUNK`]) on, made
+    /// summary took (a chunk boundary: its index a multiple of its chunk) on, made
     /// from a copy of the same fresh summary: the summary of all the steps, the same bit for
     /// bit as if one summary had taken them all (peaks are maxima; the integrals add the same
     /// chunk sums in the same order).
@@ -754,21 +769,49 @@ impl Sink for SummarySink {
     }
 
     /// The steps up to each one that closes a chunk (its index a multiple of
-    /// [`SUMMARY_CHUNK`]) taken together, then the chunk closed.
+    /// its chunk) taken together, then the chunk closed.
     fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
         let mut rest = steps;
         while !rest.is_empty() {
             let end = rest
                 .iter()
-                .position(|s| s.index % SUMMARY_CHUNK == 0)
+                .position(|s| s.index % self.chunk == 0)
                 .map_or(rest.len(), |k| k + 1);
             let (part, after) = rest.split_at(end);
             self.take(part);
-            if part[end - 1].index % SUMMARY_CHUNK == 0 {
+            if part[end - 1].index % self.chunk == 0 {
                 self.close_chunk();
             }
             rest = after;
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cardan_mechanism::REANCHOR;
+
+    /// Chunks are whole grid blocks, at most MAX_CHUNK steps, an even number of them for a
+    /// run, differing by less than a block but the last (which takes what is left).
+    #[test]
+    fn a_run_is_chunked_evenly_in_whole_blocks() {
+        for points in (2..40_000).step_by(37).chain([4097, 4098, 7201, 720_001]) {
+            let chunk = summary_chunk(points);
+            assert_eq!(chunk % REANCHOR, 0, "{points}");
+            assert!((REANCHOR..=MAX_CHUNK).contains(&chunk), "{points}: {chunk}");
+            let intervals = points - 1;
+            let chunks = intervals.div_ceil(chunk);
+            let wanted = intervals.div_ceil(REANCHOR).div_ceil(MAX_CHUNK / REANCHOR);
+            assert!(chunks <= wanted.next_multiple_of(2), "{points}: {chunks} chunks");
+            if intervals > REANCHOR {
+                assert_eq!(chunks % 2, 0, "{points}: {chunks} chunks");
+            }
+            // The last chunk is short by less than one block per chunk.
+            let short = chunks * chunk - intervals;
+            assert!(short < chunks * REANCHOR, "{points}: last chunk short by {short}");
+        }
+        assert_eq!(summary_chunk(7201), 3648);
     }
 }

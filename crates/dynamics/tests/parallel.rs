@@ -6,7 +6,7 @@ mod common;
 
 use cardan_dynamics::{
     run, run_parallel, Friction, Gas, GearRatings, GearSpec, Inertial, LoadFamily, LossBudget,
-    RunError, Solver, Stages, Summary, SummarySink, SUMMARY_CHUNK,
+    RunError, Solver, Stages, Summary, SummarySink, MAX_CHUNK,
 };
 use cardan_mechanism::{CrankMotion, Grid, Material, Mechanism};
 use common::thesis;
@@ -77,11 +77,12 @@ fn accelerating() -> CrankMotion {
 
 #[test]
 fn shared_runs_are_the_single_threads_bit_for_bit() {
-    // SUMMARY_CHUNK + 1 steps: the shortest run that is shared (two pieces, the second of
-    // one step); 7200 steps: two pieces; 3·SUMMARY_CHUNK + 7 steps: four.
+    // MAX_CHUNK + 1 steps: the shortest run that is shared (two pieces of 2112 and 1985
+    // steps); 7200 steps: two pieces (3648 and 3552); 3·MAX_CHUNK + 7 steps: four (3136 steps
+    // each, the last 2887).
     for name in ["slider_crank", "cardan_gear", "scotch_yoke"] {
         let m = thesis(name, Material::Steel);
-        for steps in [SUMMARY_CHUNK + 1, 7200, 3 * SUMMARY_CHUNK + 7] {
+        for steps in [MAX_CHUNK + 1, 7200, 3 * MAX_CHUNK + 7] {
             let one = summary(m.as_ref(), accelerating(), steps, 0).unwrap();
             assert!(one.get("loss_work").unwrap() > 0.0);
             assert_eq!(
@@ -99,7 +100,7 @@ fn shared_runs_are_the_single_threads_bit_for_bit() {
 #[test]
 fn a_shared_run_fails_at_the_single_threads_step() {
     // ω² = (2π)² − 6·Δθ: the crank stops 6.58 rad after the start, between steps 10471 and
-    // 10472 of h = π/5000, in the third of five pieces.
+    // 10472 of h = π/5000, in the fourth of six pieces (of 3392 steps).
     let m = thesis("slider_crank", Material::Steel);
     let stopping = CrankMotion {
         start_angle: PI / 2.0,
@@ -143,9 +144,10 @@ fn a_long_prescribed_run_is_split_at_chunk_starts() {
     let m = thesis("cardan_gear", Material::Steel);
     let inertial = Inertial(Solver::ClosedForm);
     for (steps, pieces) in [
-        (SUMMARY_CHUNK, 0),
-        (SUMMARY_CHUNK + 1, 2),
-        (3 * SUMMARY_CHUNK + 7, 4),
+        (MAX_CHUNK, 0),
+        (MAX_CHUNK + 1, 2),
+        (7200, 2),
+        (3 * MAX_CHUNK + 7, 4),
     ] {
         let mut grid = Grid::new(accelerating(), PI / 2.0, 4.5 * PI, steps);
         let mut sink = Pieces::default();
