@@ -282,9 +282,8 @@ const STEP_BLOCK: usize = 8;
 
 /// Fails the step if any computed quantity is not finite, naming the first such quantity. The
 /// check per step is one sum of the quantities: an infinity or a NaN among them makes the sum an
-/// infinity or a NaN, whose difference with itself is a NaN, where a finite sum's is 0 (one
-/// addition per quantity: `is_finite` on each, compared and flagged, was a sixth of a
-/// summary-only run). Only then is the culprit looked for, value by value; finite values whose
+/// infinity or a NaN (one addition per quantity: `is_finite` on each, compared and flagged,
+/// was a sixth of a summary-only run). Only then is the culprit looked for, value by value; finite values whose
 /// sum overflows (beyond 1e308 together) find none and pass.
 fn check_finite(
     step: usize,
@@ -308,7 +307,7 @@ fn check_finite(
         }
         sum += s;
     }
-    if sum - sum == 0.0 {
+    if sum.is_finite() {
         return Ok(());
     }
     let t = mechanism.topology();
