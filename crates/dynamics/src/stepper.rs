@@ -281,10 +281,10 @@ struct StepOut {
 const STEP_BLOCK: usize = 8;
 
 /// Fails the step if any computed quantity is not finite, naming the first such quantity. The
-/// check per step is one sum of the quantities: an infinity or a NaN among them makes the sum an
-/// infinity or a NaN (one addition per quantity: `is_finite` on each, compared and flagged,
-/// was a sixth of a summary-only run). Only then is the culprit looked for, value by value; finite values whose
-/// sum overflows (beyond 1e308 together) find none and pass.
+/// check per step is one sum of the quantities: an infinity or a NaN among them makes the sum
+/// an infinity or a NaN (one addition per quantity: `is_finite` on each, compared and flagged,
+/// was a sixth of a summary-only run). Only then is the culprit looked for, value by value;
+/// finite values whose sum overflows (beyond 1e308 together) find none and pass.
 fn check_finite(
     step: usize,
     state: &State,

@@ -804,13 +804,19 @@ mod tests {
             let intervals = points - 1;
             let chunks = intervals.div_ceil(chunk);
             let wanted = intervals.div_ceil(REANCHOR).div_ceil(MAX_CHUNK / REANCHOR);
-            assert!(chunks <= wanted.next_multiple_of(2), "{points}: {chunks} chunks");
+            assert!(
+                chunks <= wanted.next_multiple_of(2),
+                "{points}: {chunks} chunks"
+            );
             if intervals > REANCHOR {
                 assert_eq!(chunks % 2, 0, "{points}: {chunks} chunks");
             }
             // The last chunk is short by less than one block per chunk.
             let short = chunks * chunk - intervals;
-            assert!(short < chunks * REANCHOR, "{points}: last chunk short by {short}");
+            assert!(
+                short < chunks * REANCHOR,
+                "{points}: last chunk short by {short}"
+            );
         }
         assert_eq!(summary_chunk(7201), 3648);
     }
