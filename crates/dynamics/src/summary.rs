@@ -310,7 +310,9 @@ pub struct SummarySink {
 
 impl SummarySink {
     /// A summary of `mechanism` under the load families named `families` (in the run's order),
-    /// over a run of `points` steps.
+    /// over a run of `points` steps (numbered from 0: the motion's first index plus its
+    /// length), which set its chunks ([`summary_chunk`]) as [`crate::run_parallel`] sets its
+    /// pieces.
     pub fn new(mechanism: &dyn Mechanism, families: &[&'static str], points: usize) -> Self {
         let topology = mechanism.topology().clone();
         let joints = topology.joints.len();
