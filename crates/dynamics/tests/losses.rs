@@ -10,8 +10,8 @@ use cardan_dynamics::{
 };
 use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
-use cardan_mechanism::{CrankMotion, CrankState, Grid, Loads, Material, Mechanism, C};
-use common::thesis;
+use cardan_mechanism::{CrankState, Grid, Loads, Material, Mechanism, C};
+use common::{accelerating_pump, pump_gas, thesis};
 use std::f64::consts::PI;
 
 /// Karhula's ring pack contact force for the 120 mm piston: 2·0.19 MPa·π·d·2 mm +
@@ -175,15 +175,7 @@ fn losses_keep_the_energy_books() {
     // the works (A9.1.60-73). The two integrals are different quadratures of the same energy:
     // they agree to the rule's error, O(h²).
     let m = thesis("slider_crank", Material::Steel);
-    let motion = CrankMotion {
-        start_angle: PI / 2.0,
-        initial_speed: 30.0 * PI,
-        angular_acceleration: 400.0 * PI,
-    };
-    let gas = |theta: f64| {
-        let f = 2e4 * (1.0 + theta.sin());
-        (f / (PI / 4.0 * 0.12 * 0.12), f)
-    };
+    let motion = accelerating_pump();
     let inertial = Inertial(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
@@ -197,7 +189,7 @@ fn losses_keep_the_energy_books() {
         m.as_ref(),
         &mut grid,
         &families,
-        Some(&gas),
+        Some(&pump_gas),
         Stages {
             losses: Some(&mut budget),
             gears: None,

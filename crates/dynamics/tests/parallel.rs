@@ -9,7 +9,7 @@ use cardan_dynamics::{
     RunError, Solver, Stages, Summary, SummarySink, MAX_CHUNK,
 };
 use cardan_mechanism::{CrankMotion, Grid, Material, Mechanism};
-use common::thesis;
+use common::{accelerating_pump, pump_gas, thesis};
 use std::f64::consts::PI;
 
 /// The summary of `m` over `steps` steps of `motion` from 90°, with a gas force and the
@@ -21,10 +21,6 @@ fn summary(
     steps: usize,
     threads: usize,
 ) -> Result<Summary, String> {
-    let gas = |theta: f64| {
-        let f = 2e4 * (1.0 + theta.sin());
-        (f / (PI / 4.0 * 0.12 * 0.12), f)
-    };
     let inertial = Inertial(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
@@ -52,7 +48,7 @@ fn summary(
             m,
             &mut grid,
             &families,
-            Some(&gas),
+            Some(&pump_gas),
             stages,
             &mut [&mut sink],
         )
@@ -61,18 +57,10 @@ fn summary(
             .num_threads(threads)
             .build()
             .unwrap()
-            .install(|| run_parallel(m, &mut grid, &families, Some(&gas), stages, &mut sink))
+            .install(|| run_parallel(m, &mut grid, &families, Some(&pump_gas), stages, &mut sink))
     };
     ran.map_err(|e: RunError| e.to_string())?;
     sink.finish(m)
-}
-
-fn accelerating() -> CrankMotion {
-    CrankMotion {
-        start_angle: PI / 2.0,
-        initial_speed: 30.0 * PI,
-        angular_acceleration: 400.0 * PI,
-    }
 }
 
 #[test]
@@ -83,14 +71,14 @@ fn shared_runs_are_the_single_threads_bit_for_bit() {
     for name in ["slider_crank", "cardan_gear", "scotch_yoke"] {
         let m = thesis(name, Material::Steel);
         for steps in [MAX_CHUNK + 1, 7200, 3 * MAX_CHUNK + 7] {
-            let one = summary(m.as_ref(), accelerating(), steps, 0).unwrap();
+            let one = summary(m.as_ref(), accelerating_pump(), steps, 0).unwrap();
             assert!(one.get("loss_work").unwrap() > 0.0);
             assert_eq!(
                 one.get("gear_mesh_power_loss_mean").is_some(),
                 name == "cardan_gear"
             );
             for threads in [1, 2, 3] {
-                let shared = summary(m.as_ref(), accelerating(), steps, threads).unwrap();
+                let shared = summary(m.as_ref(), accelerating_pump(), steps, threads).unwrap();
                 assert_eq!(shared, one, "{name}, {steps} steps, {threads} threads");
             }
         }
@@ -149,7 +137,7 @@ fn a_long_prescribed_run_is_split_at_chunk_starts() {
         (7200, 2),
         (3 * MAX_CHUNK + 7, 4),
     ] {
-        let mut grid = Grid::new(accelerating(), PI / 2.0, 4.5 * PI, steps);
+        let mut grid = Grid::new(accelerating_pump(), PI / 2.0, 4.5 * PI, steps);
         let mut sink = Pieces::default();
         run_parallel(
             m.as_ref(),

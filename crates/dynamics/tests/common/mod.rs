@@ -92,6 +92,23 @@ pub fn cycle(
     run_summary(mech, &mut grid, None, Solver::ClosedForm, true).unwrap()
 }
 
+/// An accelerating pump cycle from 90°: ω from 30π rad/s at α = 400π rad/s² (about 78π rad/s
+/// after 720°).
+pub fn accelerating_pump() -> CrankMotion {
+    CrankMotion {
+        start_angle: PI / 2.0,
+        initial_speed: 30.0 * PI,
+        angular_acceleration: 400.0 * PI,
+    }
+}
+
+/// A made-up gas load for the 0.12 m bore: a piston force of 2·10⁴·(1 + sin θ) N and its
+/// cylinder pressure, (Pa, N) at crank angle `theta`.
+pub fn pump_gas(theta: f64) -> (f64, f64) {
+    let f = 2e4 * (1.0 + theta.sin());
+    (f / (PI / 4.0 * 0.12 * 0.12), f)
+}
+
 /// [`every_machine`] less the mechanisms without closed forms (their loads come from the
 /// general solve alone, so comparing the two paths means nothing for them).
 pub fn closed_form_machines() -> Vec<(String, Box<dyn Mechanism>)> {
