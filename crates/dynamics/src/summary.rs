@@ -691,17 +691,17 @@ impl SummarySink {
             );
         }
         if !self.topology.pistons.is_empty() {
-            let mut previous = self.previous;
+            let mut previous = self.previous.map(|(angle, _)| angle);
             for s in steps {
-                let (angle, speed) = (s.state.crank.angle, s.state.crank.speed);
+                let angle = s.state.crank.angle;
                 let lever = s.state.pistons[0].dx_dtheta.abs();
                 raise(&mut self.lever, lever);
-                if let Some((a0, _)) = previous {
+                if let Some(a0) = previous {
                     self.lever_integral
                         .add(0.5 * (angle - a0) * (lever + self.previous_lever));
                 }
                 self.previous_lever = lever;
-                previous = Some((angle, speed));
+                previous = Some(angle);
             }
         }
         if let Some(l) = &mut self.losses {
@@ -775,13 +775,10 @@ impl Sink for SummarySink {
     fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
         let mut rest = steps;
         while !rest.is_empty() {
-            let end = rest
-                .iter()
-                .position(|s| s.index % self.chunk == 0)
-                .map_or(rest.len(), |k| k + 1);
-            let (part, after) = rest.split_at(end);
+            let closing = rest.iter().position(|s| s.index % self.chunk == 0);
+            let (part, after) = rest.split_at(closing.map_or(rest.len(), |k| k + 1));
             self.take(part);
-            if part[end - 1].index % self.chunk == 0 {
+            if closing.is_some() {
                 self.close_chunk();
             }
             rest = after;
