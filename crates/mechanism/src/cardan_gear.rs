@@ -32,12 +32,14 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
-    cross, Bearings, Body, Joint, JointKind, JointLoad, Loads, MeshForce, Piston, State, Topology,
+    cross, Bearings, Body, Joint, JointKind, JointLoad, JointMotion, MeshForce, Piston,
+    PistonMotion, Topology,
 };
 use crate::{
     check_length, check_rod_cg, number, word, CrankState, Entry, MachineGeometry, Mechanism,
 };
 use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
+use crate::{Column, LoadsBlock, StateBlock, LANES};
 
 /// The registry line.
 pub const ENTRY: Entry = Entry {
@@ -206,6 +208,82 @@ impl CardanGear {
     }
 }
 
+impl CardanGear {
+    /// Lane `i` of `st` at the crank state `crank`.
+    #[inline(always)]
+    fn fill_lane(&self, crank: &CrankState, st: &mut StateBlock, i: usize) {
+        let (w, a) = (crank.speed, crank.acceleration);
+        let r = self.crank;
+        let e_a = crank.direction;
+        let (s, c) = (e_a.im, e_a.re);
+        let crank_pin = PointMotion::on_crank(r, crank);
+        // T on the cylinder axis: (A4.2.2.60), (A4.2.2.68), (A4.2.2.73).
+        let y = 2.0 * r * s;
+        let v = 2.0 * r * w * c;
+        let acc = 2.0 * r * (a * c - w * w * s);
+        let up = C::new(0.0, 1.0);
+        st.set_crank(i, crank);
+        st.set_body(
+            CRANKSHAFT,
+            i,
+            &BodyMotion {
+                cg: PointMotion::default(),
+                orientation: e_a,
+                angular_velocity: w,
+                angular_acceleration: a,
+            },
+        );
+        // The wheel turns at −ω (A4.2.2.66, A4.2.2.71); the line S→T is at π − θ.
+        st.set_body(
+            WHEEL,
+            i,
+            &BodyMotion {
+                cg: crank_pin,
+                orientation: C::new(-c, s),
+                angular_velocity: -w,
+                angular_acceleration: -a,
+            },
+        );
+        st.set_body(
+            ROD,
+            i,
+            &BodyMotion {
+                cg: PointMotion {
+                    position: C::new(0.0, y + self.masses.rod_cg),
+                    velocity: v * up,
+                    acceleration: acc * up,
+                },
+                orientation: up,
+                angular_velocity: 0.0,
+                angular_acceleration: 0.0,
+            },
+        );
+        // Body relative to other: crankshaft to wheel 2ω; rod to wheel +ω (A9.1.15, A9.1.17).
+        let joint = |position, direction, relative_speed| JointMotion {
+            position,
+            direction,
+            relative_speed,
+        };
+        let zero = C::new(0.0, 0.0);
+        st.set_joint(0, i, &joint(zero, zero, w));
+        st.set_joint(1, i, &joint(crank_pin.position, zero, 2.0 * w));
+        st.set_joint(2, i, &joint(C::new(0.0, y), zero, w));
+        // (A8.1.7): the pitch-line velocity, twice the crank-pin speed.
+        st.set_joint(3, i, &joint(2.0 * r * e_a, -e_a, 2.0 * r * w));
+        st.set_piston(
+            0,
+            i,
+            &PistonMotion {
+                position: y + self.rod,
+                velocity: v,
+                acceleration: acc,
+                dx_dtheta: 2.0 * r * c,
+                d2x_dtheta2: -2.0 * r * s,
+            },
+        );
+    }
+}
+
 impl Mechanism for CardanGear {
     fn name(&self) -> &'static str {
         ENTRY.name
@@ -219,62 +297,12 @@ impl Mechanism for CardanGear {
         &self.masses
     }
 
-    // Inlined into the default `fill_block`'s loop: a call per step cost 1-2 % of a run.
-    #[inline(always)]
-    fn fill(&self, crank: &CrankState, st: &mut State) {
-        let (w, a) = (crank.speed, crank.acceleration);
-        let r = self.crank;
-        let e_a = crank.direction;
-        let (s, c) = (e_a.im, e_a.re);
-        let crank_pin = PointMotion::on_crank(r, crank);
-        // T on the cylinder axis: (A4.2.2.60), (A4.2.2.68), (A4.2.2.73).
-        let y = 2.0 * r * s;
-        let v = 2.0 * r * w * c;
-        let acc = 2.0 * r * (a * c - w * w * s);
-        let up = C::new(0.0, 1.0);
-        st.crank = *crank;
-        st.bodies[CRANKSHAFT] = BodyMotion {
-            cg: PointMotion::default(),
-            orientation: e_a,
-            angular_velocity: w,
-            angular_acceleration: a,
-        };
-        // The wheel turns at −ω (A4.2.2.66, A4.2.2.71); the line S→T is at π − θ.
-        st.bodies[WHEEL] = BodyMotion {
-            cg: crank_pin,
-            orientation: C::new(-c, s),
-            angular_velocity: -w,
-            angular_acceleration: -a,
-        };
-        st.bodies[ROD] = BodyMotion {
-            cg: PointMotion {
-                position: C::new(0.0, y + self.masses.rod_cg),
-                velocity: v * up,
-                acceleration: acc * up,
-            },
-            orientation: up,
-            angular_velocity: 0.0,
-            angular_acceleration: 0.0,
-        };
-        // Body relative to other: crankshaft to wheel 2ω; rod to wheel +ω (A9.1.15, A9.1.17).
-        st.joints[0].relative_speed = w;
-        st.joints[1].position = crank_pin.position;
-        st.joints[1].relative_speed = 2.0 * w;
-        st.joints[2].position = C::new(0.0, y);
-        st.joints[2].relative_speed = w;
-        st.joints[3].position = 2.0 * r * e_a;
-        st.joints[3].direction = -e_a;
-        // (A8.1.7): the pitch-line velocity, twice the crank-pin speed.
-        st.joints[3].relative_speed = 2.0 * r * w;
-        let p = &mut st.pistons[0];
-        p.position = y + self.rod;
-        p.velocity = v;
-        p.acceleration = acc;
-        p.dx_dtheta = 2.0 * r * c;
-        p.d2x_dtheta2 = -2.0 * r * s;
+    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+        for (i, crank) in cranks.iter().take(LANES).enumerate() {
+            self.fill_lane(crank, block, i);
+        }
     }
 
-    /// x = 2·Z_AA0·sin θ + Z_bBC (A4.2.2.60) and its θ-derivative, as in [`Mechanism::fill`].
     fn piston_position(&self, angle: f64) -> (f64, f64) {
         let (s, c) = angle.sin_cos();
         (2.0 * self.crank * s + self.rod, 2.0 * self.crank * c)
@@ -296,12 +324,12 @@ impl Mechanism for CardanGear {
     /// The reciprocating assembly (piston, pin and rod, ch. 11.2) moves on the cylinder axis;
     /// its inertial force plus the applied force, P, reaches the cardan wheel at T
     /// (A5.2.1.47-48). The mesh force follows the reading (module note).
-    fn closed_form_loads(
+    fn closed_form_block(
         &self,
-        st: &State,
+        st: &StateBlock,
         inertia: bool,
-        piston_forces: &[f64],
-        out: &mut Loads,
+        piston_force: Option<&Column>,
+        out: &mut LoadsBlock,
     ) -> bool {
         let m = &self.masses;
         let (mass, crank_inertia, wheel_inertia) = if inertia {
@@ -313,33 +341,35 @@ impl Mechanism for CardanGear {
         } else {
             (0.0, 0.0, 0.0)
         };
-        let gas = piston_forces.first().copied().unwrap_or(0.0);
-        let p = -mass * st.bodies[ROD].cg.acceleration - C::new(0.0, gas);
-        let alpha = st.crank.acceleration;
-        let s = st.joints[1].position;
-        let mesh = match self.mesh {
-            MeshModel::Karhula => p, // (A5.2.1.48-51)
-            MeshModel::Involute => {
-                // Moments about S: (T − S)×P + r·F_t = J_w·α_w, with α_w = −α.
-                let t = st.joints[2].position;
-                let f_t = (-wheel_inertia * alpha - cross(t - s, p)) / self.crank;
-                let e = st.crank.direction;
-                f_t * C::i() * e - f_t.abs() * self.pressure_angle.tan() * e
-            }
-        };
-        let crank_pin = p + mesh; // 2·P in the thesis reading (A5.2.1.51)
-                                  // −T_1i10c − T_2i10c (A5.2.1.40-46, module note) and −T_3i10c (A5.2.1.52): in the
-                                  // involute reading the wheel's inertia enters through F_t instead.
+        // −T_1i10c − T_2i10c (A5.2.1.40-46, module note) and −T_3i10c (A5.2.1.52): in the
+        // involute reading the wheel's inertia enters through F_t instead.
         let lumped = match self.mesh {
             MeshModel::Karhula => crank_inertia + wheel_inertia,
             MeshModel::Involute => crank_inertia,
         };
         let force = |force: C| JointLoad { force, moment: 0.0 };
-        out.joints[0] = force(-crank_pin); // (A5.2.1.54)
-        out.joints[1] = force(crank_pin);
-        out.joints[2] = force(-p); // (A5.2.1.49)
-        out.joints[3] = force(mesh);
-        out.crank_torque = lumped * alpha - cross(s, crank_pin); // −T_Σi10c (A5.2.1.69)
+        for i in 0..st.len.min(LANES) {
+            let gas = piston_force.map_or(0.0, |f| f[i]);
+            let p = -mass * st.body(ROD, i).cg.acceleration - C::new(0.0, gas);
+            let alpha = st.crank.acceleration[i];
+            let s = st.joint(1, i).position;
+            let mesh = match self.mesh {
+                MeshModel::Karhula => p, // (A5.2.1.48-51)
+                MeshModel::Involute => {
+                    // Moments about S: (T − S)×P + r·F_t = J_w·α_w, with α_w = −α.
+                    let t = st.joint(2, i).position;
+                    let f_t = (-wheel_inertia * alpha - cross(t - s, p)) / self.crank;
+                    let e = C::new(st.crank.cos[i], st.crank.sin[i]);
+                    f_t * C::i() * e - f_t.abs() * self.pressure_angle.tan() * e
+                }
+            };
+            let crank_pin = p + mesh; // 2·P in the thesis reading (A5.2.1.51)
+            out.set(0, i, &force(-crank_pin)); // (A5.2.1.54)
+            out.set(1, i, &force(crank_pin));
+            out.set(2, i, &force(-p)); // (A5.2.1.49)
+            out.set(3, i, &force(mesh));
+            out.crank_torque[i] = lumped * alpha - cross(s, crank_pin); // −T_Σi10c (A5.2.1.69)
+        }
         true
     }
 }

@@ -76,7 +76,7 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{Bearings, Body, Extra, Joint, JointKind, MeshForce, Piston, State, Topology};
-use crate::{check_length, number, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::{check_length, number, CrankState, Entry, MachineGeometry, Mechanism, StateBlock};
 use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -486,20 +486,9 @@ pub fn slider_crank_mechanical_advantage(a: f64, h: f64, theta: f64) -> f64 {
     s * (1.0 + a * c / (h * h - a * a * s * s).sqrt())
 }
 
-impl Mechanism for Hypotrochoid {
-    fn name(&self) -> &'static str {
-        ENTRY.name
-    }
-
-    fn topology(&self) -> &Topology {
-        &self.topology
-    }
-
-    fn masses(&self) -> &MassProperties {
-        &self.masses
-    }
-
-    fn fill(&self, crank: &CrankState, st: &mut State) {
+impl Hypotrochoid {
+    /// The state at `crank`, all but its extras.
+    fn fill_state(&self, crank: &CrankState, st: &mut State) {
         let (m, p, r, u) = (self.mf(), self.crank, self.link, self.planet);
         let n = self.modulus;
         let i = C::i();
@@ -581,6 +570,24 @@ impl Mechanism for Hypotrochoid {
             };
         }
     }
+}
+
+impl Mechanism for Hypotrochoid {
+    fn name(&self) -> &'static str {
+        ENTRY.name
+    }
+
+    fn topology(&self) -> &Topology {
+        &self.topology
+    }
+
+    fn masses(&self) -> &MassProperties {
+        &self.masses
+    }
+
+    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+        block.fill_each(&self.topology, cranks, |c, st| self.fill_state(c, st));
+    }
 
     fn fill_extras(&self, st: &mut State) {
         let theta = self.carrier_angle(st.crank.angle);
@@ -589,7 +596,7 @@ impl Mechanism for Hypotrochoid {
         st.extras[2] = self.mechanical_advantage(theta);
     }
 
-    /// x₁ = r·ψ(θ) and dx₁/dφ (module note), as in [`Mechanism::fill`].
+    /// x₁ = r·ψ(θ) and dx₁/dφ (module note), as in [`Mechanism::fill_block`].
     fn piston_position(&self, angle: f64) -> (f64, f64) {
         let (x, dx, _) = self.piston_curve(0, self.carrier_angle(angle));
         (x, dx)

@@ -10,6 +10,7 @@
 //! a mechanism's own module reads bodies, joints and pistons from those lists and never asks
 //! which mechanism it has. The mechanisms a case file may name are listed in [`MECHANISMS`].
 
+pub mod block;
 pub mod cardan_gear;
 pub mod hypotrochoid;
 pub mod mass;
@@ -19,6 +20,10 @@ pub mod polar;
 pub mod scotch_yoke;
 pub mod slider_crank;
 
+pub use block::{
+    BodyColumns, Column, CrankColumns, JointColumns, JointLoadColumns, LoadsBlock, PistonColumns,
+    PointColumns, StateBlock, LANES,
+};
 pub use cardan_gear::{CardanGear, MeshModel};
 pub use hypotrochoid::Hypotrochoid;
 pub use mass::{MassInputs, MassProperties, Material};
@@ -65,22 +70,13 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
     /// The resolved mass fields (for the summary).
     fn masses(&self) -> &MassProperties;
 
-    /// Fills `state` (made by [`State::for_topology`]) at the crank state `crank`, all but its
-    /// extras.
-    fn fill(&self, crank: &CrankState, state: &mut State);
+    /// Fills lanes `0..cranks.len()` of `block` (made by [`StateBlock::for_topology`]; at most
+    /// [`LANES`] crank states) at the crank states `cranks`, all but the extras. Callers go
+    /// through [`StateBlock::fill`], which sets the block's length.
+    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock);
 
-    /// Fills `states[k]` at `cranks[k]` for a block of crank states known together (a
-    /// prescribed motion), each exactly as [`Mechanism::fill`] would. A mechanism whose
-    /// kinematics wait on a square root or a division per step may compute those across the
-    /// block first, where the processor overlaps them.
-    fn fill_block(&self, cranks: &[CrankState], states: &mut [State]) {
-        for (crank, state) in cranks.iter().zip(states) {
-            self.fill(crank, state);
-        }
-    }
-
-    /// Fills the [`Topology::extras`] of a `state` that [`Mechanism::fill`] filled (only done
-    /// when an output wants them).
+    /// Fills the [`Topology::extras`] of a `state` that [`Mechanism::fill_block`] filled (only
+    /// done when an output wants them).
     fn fill_extras(&self, _state: &mut State) {}
 
     /// The first piston's position x (m) and dx/dθ (m/rad) at crank angle `angle` (rad): what
@@ -118,24 +114,48 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
         self.stroke() / 2.0
     }
 
-    /// The closed-form kinetostatics, if the mechanism has them: the joint loads and drive
-    /// torque caused by the bodies' inertia (if `inertia`) and by the force on each piston
-    /// (`piston_forces`, N along the cylinder axis towards the crankshaft), written to `out`.
-    /// Returns false (and leaves `out` alone) where the general planar solve must serve.
-    fn closed_form_loads(
+    /// The closed-form kinetostatics over a block, if the mechanism has them: the joint loads
+    /// and drive torque caused by the bodies' inertia (if `inertia`) and by the force
+    /// `piston_force` on every piston (N along the cylinder axis towards the crankshaft; none
+    /// without one), at the block's steps, written to `out`. Returns false (and leaves `out`
+    /// alone) where the general planar solve must serve.
+    fn closed_form_block(
         &self,
-        _state: &State,
+        _block: &StateBlock,
         _inertia: bool,
-        _piston_forces: &[f64],
-        _out: &mut Loads,
+        _piston_force: Option<&Column>,
+        _out: &mut LoadsBlock,
     ) -> bool {
         false
     }
 
-    /// A new state at `crank` (allocates; steppers reuse one state with [`Mechanism::fill`]).
+    /// [`Mechanism::closed_form_block`] at one state (allocates a block: for tests and single
+    /// states), with `piston_forces` the force on each piston (the first serves all).
+    fn closed_form_loads(
+        &self,
+        state: &State,
+        inertia: bool,
+        piston_forces: &[f64],
+        out: &mut Loads,
+    ) -> bool {
+        let mut block = StateBlock::for_topology(self.topology());
+        block.len = 1;
+        block.scatter(0, state);
+        let force = piston_forces.first().map(|&f| [f; LANES]);
+        let mut loads = LoadsBlock::for_topology(self.topology());
+        if !self.closed_form_block(&block, inertia, force.as_ref(), &mut loads) {
+            return false;
+        }
+        loads.gather(0, out);
+        true
+    }
+
+    /// A new state at `crank`, with its extras (allocates a block; steppers fill blocks).
     fn state(&self, crank: &CrankState) -> State {
+        let mut block = StateBlock::for_topology(self.topology());
+        block.fill(self, std::slice::from_ref(crank));
         let mut s = State::for_topology(self.topology());
-        self.fill(crank, &mut s);
+        block.gather(0, &mut s);
         self.fill_extras(&mut s);
         s
     }

@@ -15,7 +15,8 @@
 //! couple and no side force.
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Bearings, Body, Joint, JointLoad, Loads, Piston, State, Topology};
+use crate::model::{cross, Bearings, Body, Joint, JointLoad, JointMotion, Piston, PistonMotion, Topology};
+use crate::{Column, LoadsBlock, StateBlock, LANES};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
@@ -115,6 +116,78 @@ impl ScotchYoke {
     }
 }
 
+impl ScotchYoke {
+    /// Lane `i` of `st` at the crank state `crank`.
+    #[inline(always)]
+    fn fill_lane(&self, crank: &CrankState, st: &mut StateBlock, i: usize) {
+        let (w, a) = (crank.speed, crank.acceleration);
+        let r = self.crank;
+        let e_a = crank.direction;
+        let (s, c) = (e_a.im, e_a.re);
+        let pin = PointMotion::on_crank(r, crank);
+        // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
+        let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
+        let up = C::new(0.0, 1.0);
+        st.set_crank(i, crank);
+        st.set_body(
+            CRANKSHAFT,
+            i,
+            &BodyMotion {
+                cg: PointMotion::default(),
+                orientation: e_a,
+                angular_velocity: w,
+                angular_acceleration: a,
+            },
+        );
+        st.set_body(
+            BLOCK,
+            i,
+            &BodyMotion {
+                cg: pin,
+                orientation: C::new(1.0, 0.0),
+                angular_velocity: 0.0,
+                angular_acceleration: 0.0,
+            },
+        );
+        st.set_body(
+            YOKE,
+            i,
+            &BodyMotion {
+                cg: PointMotion {
+                    position: C::new(0.0, y + self.masses.rod_cg),
+                    velocity: v * up,
+                    acceleration: acc * up,
+                },
+                orientation: up,
+                angular_velocity: 0.0,
+                angular_acceleration: 0.0,
+            },
+        );
+        let joint = |position, direction, relative_speed| JointMotion {
+            position,
+            direction,
+            relative_speed,
+        };
+        let zero = C::new(0.0, 0.0);
+        st.set_joint(0, i, &joint(zero, zero, w));
+        st.set_joint(1, i, &joint(pin.position, zero, w)); // the block does not turn
+        // The yoke relative to the block, along +x.
+        st.set_joint(2, i, &joint(pin.position, C::new(1.0, 0.0), -pin.velocity.re));
+        st.set_joint(3, i, &joint(C::new(0.0, y + self.rod), up, v));
+        st.set_piston(
+            0,
+            i,
+            &PistonMotion {
+                position: y + self.rod,
+                velocity: v,
+                acceleration: acc,
+                dx_dtheta: r * c,
+                d2x_dtheta2: -r * s,
+            },
+        );
+    }
+}
+
 impl Mechanism for ScotchYoke {
     fn name(&self) -> &'static str {
         ENTRY.name
@@ -128,55 +201,10 @@ impl Mechanism for ScotchYoke {
         &self.masses
     }
 
-    // Inlined into the default `fill_block`'s loop: a call per step cost 1-2 % of a run.
-    #[inline(always)]
-    fn fill(&self, crank: &CrankState, st: &mut State) {
-        let (w, a) = (crank.speed, crank.acceleration);
-        let r = self.crank;
-        let e_a = crank.direction;
-        let (s, c) = (e_a.im, e_a.re);
-        let pin = PointMotion::on_crank(r, crank);
-        // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
-        let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
-        let up = C::new(0.0, 1.0);
-        st.crank = *crank;
-        st.bodies[CRANKSHAFT] = BodyMotion {
-            cg: PointMotion::default(),
-            orientation: e_a,
-            angular_velocity: w,
-            angular_acceleration: a,
-        };
-        st.bodies[BLOCK] = BodyMotion {
-            cg: pin,
-            orientation: C::new(1.0, 0.0),
-            angular_velocity: 0.0,
-            angular_acceleration: 0.0,
-        };
-        st.bodies[YOKE] = BodyMotion {
-            cg: PointMotion {
-                position: C::new(0.0, y + self.masses.rod_cg),
-                velocity: v * up,
-                acceleration: acc * up,
-            },
-            orientation: up,
-            angular_velocity: 0.0,
-            angular_acceleration: 0.0,
-        };
-        st.joints[0].relative_speed = w;
-        st.joints[1].position = pin.position;
-        st.joints[1].relative_speed = w; // the block does not turn
-        st.joints[2].position = pin.position;
-        st.joints[2].direction = C::new(1.0, 0.0);
-        st.joints[2].relative_speed = -pin.velocity.re; // yoke relative to block, along +x
-        st.joints[3].position = C::new(0.0, y + self.rod);
-        st.joints[3].direction = up;
-        st.joints[3].relative_speed = v;
-        let p = &mut st.pistons[0];
-        p.position = y + self.rod;
-        p.velocity = v;
-        p.acceleration = acc;
-        p.dx_dtheta = r * c;
-        p.d2x_dtheta2 = -r * s;
+    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+        for (i, crank) in cranks.iter().take(LANES).enumerate() {
+            self.fill_lane(crank, block, i);
+        }
     }
 
     fn piston_position(&self, angle: f64) -> (f64, f64) {
@@ -197,12 +225,12 @@ impl Mechanism for ScotchYoke {
     /// carry no side force); F_s acts at the block, r·cos θ off the axis, so the guides answer
     /// with the couple −r·cos θ·F_s. The massless block passes F_s on to the crank pin; the
     /// drive supplies J·α + r·cos θ·F_s (= (M·a + F_gas)·v/ω: the power balance).
-    fn closed_form_loads(
+    fn closed_form_block(
         &self,
-        st: &State,
+        st: &StateBlock,
         inertia: bool,
-        piston_forces: &[f64],
-        out: &mut Loads,
+        piston_force: Option<&Column>,
+        out: &mut LoadsBlock,
     ) -> bool {
         let (mass, crank_inertia) = if inertia {
             (
@@ -212,18 +240,25 @@ impl Mechanism for ScotchYoke {
         } else {
             (0.0, 0.0)
         };
-        let gas = piston_forces.first().copied().unwrap_or(0.0);
-        let slot = mass * st.bodies[YOKE].cg.acceleration + C::new(0.0, gas);
-        let a_pin = st.joints[1].position;
         let force = |force: C| JointLoad { force, moment: 0.0 };
-        out.joints[0] = force(slot);
-        out.joints[1] = force(-slot);
-        out.joints[2] = force(slot);
-        out.joints[3] = JointLoad {
-            force: C::new(0.0, 0.0),
-            moment: -cross(a_pin - st.bodies[YOKE].cg.position, slot),
-        };
-        out.crank_torque = crank_inertia * st.crank.acceleration + cross(a_pin, slot);
+        for i in 0..st.len.min(LANES) {
+            let gas = piston_force.map_or(0.0, |f| f[i]);
+            let yoke = st.body(YOKE, i).cg;
+            let slot = mass * yoke.acceleration + C::new(0.0, gas);
+            let a_pin = st.joint(1, i).position;
+            out.set(0, i, &force(slot));
+            out.set(1, i, &force(-slot));
+            out.set(2, i, &force(slot));
+            out.set(
+                3,
+                i,
+                &JointLoad {
+                    force: C::new(0.0, 0.0),
+                    moment: -cross(a_pin - yoke.position, slot),
+                },
+            );
+            out.crank_torque[i] = crank_inertia * st.crank.acceleration[i] + cross(a_pin, slot);
+        }
         true
     }
 }
@@ -231,6 +266,7 @@ impl Mechanism for ScotchYoke {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Loads;
     use approx::assert_relative_eq;
 
     /// With only a gas force F at θ = 0 (pin at (r, 0)): the slot pushes F, the guide couple is

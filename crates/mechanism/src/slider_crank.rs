@@ -13,8 +13,10 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
-    cross, Bearings, Body, Extra, Joint, JointLoad, Loads, Piston, State, Topology,
+    cross, Bearings, Body, Extra, Joint, JointLoad, JointMotion, Piston, PistonMotion, State,
+    Topology,
 };
+use crate::{Column, LoadsBlock, StateBlock, LANES};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
@@ -152,15 +154,16 @@ impl SliderCrank {
         (cos_ba, sin_ba, d1, d2)
     }
 
-    /// [`Mechanism::fill`] with the rod angles (cos θ_BA, sin θ_BA, dθ_BA/dθ, d²θ_BA/dθ²) of
-    /// [`Self::rod_angles`] given.
+    /// Lane `i` of `st` at the crank state `crank`, with the rod angles (cos θ_BA, sin θ_BA,
+    /// dθ_BA/dθ, d²θ_BA/dθ²) of [`Self::rod_angles`] given.
     // Inlined into `fill_block`'s loop: a call per step cost 7 % of a run.
     #[inline(always)]
-    fn fill_with(
+    fn fill_lane(
         &self,
         crank: &CrankState,
         (cos_ba, sin_ba, d1, d2): (f64, f64, f64, f64),
-        st: &mut State,
+        st: &mut StateBlock,
+        lane: usize,
     ) {
         let (w, a) = (crank.speed, crank.acceleration);
         let (r, l) = (self.crank, self.rod);
@@ -184,41 +187,60 @@ impl SliderCrank {
             acceleration: C::new(0.0, pin.acceleration.im),
         };
         let rod_cg = along(self.masses.rod_cg);
-        st.crank = *crank;
-        st.bodies[CRANKSHAFT] = BodyMotion {
-            cg: PointMotion::default(),
-            orientation: e_a,
-            angular_velocity: w,
-            angular_acceleration: a,
-        };
-        st.bodies[ROD] = BodyMotion {
-            cg: rod_cg,
-            orientation: e_ba,
-            angular_velocity: w_ba,
-            angular_acceleration: a_ba,
-        };
-        st.bodies[PISTON] = BodyMotion {
-            cg: piston_pin,
-            orientation: C::new(1.0, 0.0),
-            ..BodyMotion::default()
-        };
+        st.set_crank(lane, crank);
+        st.set_body(
+            CRANKSHAFT,
+            lane,
+            &BodyMotion {
+                cg: PointMotion::default(),
+                orientation: e_a,
+                angular_velocity: w,
+                angular_acceleration: a,
+            },
+        );
+        st.set_body(
+            ROD,
+            lane,
+            &BodyMotion {
+                cg: rod_cg,
+                orientation: e_ba,
+                angular_velocity: w_ba,
+                angular_acceleration: a_ba,
+            },
+        );
+        st.set_body(
+            PISTON,
+            lane,
+            &BodyMotion {
+                cg: piston_pin,
+                orientation: C::new(1.0, 0.0),
+                ..BodyMotion::default()
+            },
+        );
         let axis = C::new(0.0, 1.0);
+        let joint = |position, direction, relative_speed| JointMotion {
+            position,
+            direction,
+            relative_speed,
+        };
+        let zero = C::new(0.0, 0.0);
         // Relative speeds of the joints (A9.1.14-18), body relative to other.
-        st.joints[0].relative_speed = w;
-        st.joints[1].position = crank_pin.position;
-        st.joints[1].relative_speed = w - w_ba;
-        st.joints[2].position = piston_pin.position;
-        st.joints[2].relative_speed = -w_ba;
-        st.joints[3].position = piston_pin.position;
-        st.joints[3].direction = axis;
-        st.joints[3].relative_speed = pin.velocity.im;
+        st.set_joint(0, lane, &joint(zero, zero, w));
+        st.set_joint(1, lane, &joint(crank_pin.position, zero, w - w_ba));
+        st.set_joint(2, lane, &joint(piston_pin.position, zero, -w_ba));
+        st.set_joint(3, lane, &joint(piston_pin.position, axis, pin.velocity.im));
         // dx/dθ and d²x/dθ²: the piston velocity and acceleration at ω = 1 rad/s, α = 0.
-        let p = &mut st.pistons[0];
-        p.position = pin.position.im;
-        p.velocity = pin.velocity.im;
-        p.acceleration = pin.acceleration.im;
-        p.dx_dtheta = r * e_a.re + l * d1 * cos_ba;
-        p.d2x_dtheta2 = -r * e_a.im + l * (d2 * cos_ba - d1 * d1 * sin_ba);
+        st.set_piston(
+            0,
+            lane,
+            &PistonMotion {
+                position: pin.position.im,
+                velocity: pin.velocity.im,
+                acceleration: pin.acceleration.im,
+                dx_dtheta: r * e_a.re + l * d1 * cos_ba,
+                d2x_dtheta2: -r * e_a.im + l * (d2 * cos_ba - d1 * d1 * sin_ba),
+            },
+        );
     }
 }
 
@@ -235,21 +257,17 @@ impl Mechanism for SliderCrank {
         &self.masses
     }
 
-    fn fill(&self, crank: &CrankState, st: &mut State) {
-        let e_a = crank.direction;
-        self.fill_with(crank, self.rod_angles(e_a.re, e_a.im), st);
-    }
-
     /// The rod angles of the whole block first: their square roots and divisions are
     /// independent across steps, so the processor overlaps them instead of waiting on each.
-    fn fill_block(&self, cranks: &[CrankState], states: &mut [State]) {
+    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
         let mut angles = [(0.0, 0.0, 0.0, 0.0); BLOCK];
-        for (cranks, states) in cranks.chunks(BLOCK).zip(states.chunks_mut(BLOCK)) {
+        let cranks = &cranks[..cranks.len().min(LANES)];
+        for (k, cranks) in cranks.chunks(BLOCK).enumerate() {
             for (a, c) in angles.iter_mut().zip(cranks) {
                 *a = self.rod_angles(c.direction.re, c.direction.im);
             }
-            for ((c, st), a) in cranks.iter().zip(states).zip(angles) {
-                self.fill_with(c, a, st);
+            for (j, (c, a)) in cranks.iter().zip(angles).enumerate() {
+                self.fill_lane(c, a, block, k * BLOCK + j);
             }
         }
     }
@@ -270,7 +288,7 @@ impl Mechanism for SliderCrank {
         };
     }
 
-    /// x = Z_AA0·sin θ + Z_BA·sin θ_BA and its θ-derivative, as in [`Mechanism::fill`].
+    /// x = Z_AA0·sin θ + Z_BA·sin θ_BA and its θ-derivative, as in [`Mechanism::fill_block`].
     fn piston_position(&self, angle: f64) -> (f64, f64) {
         let (s, c) = angle.sin_cos();
         let (cos_ba, sin_ba, d1, _) = self.rod_angles(c, s);
@@ -297,12 +315,12 @@ impl Mechanism for SliderCrank {
     /// Karhula (2008) A5.2.1.1-39. As in the thesis the loads are superposed: the rod's inertia
     /// with a massless piston, then the piston's inertia (and the applied force) with a
     /// massless rod. All joints are frictionless.
-    fn closed_form_loads(
+    fn closed_form_block(
         &self,
-        st: &State,
+        st: &StateBlock,
         inertia: bool,
-        piston_forces: &[f64],
-        out: &mut Loads,
+        piston_force: Option<&Column>,
+        out: &mut LoadsBlock,
     ) -> bool {
         let m = &self.masses;
         let (rod_mass, rod_inertia, piston_mass, crank_inertia) = if inertia {
@@ -315,39 +333,41 @@ impl Mechanism for SliderCrank {
         } else {
             (0.0, 0.0, 0.0, 0.0)
         };
-        let rod = &st.bodies[ROD];
-        let a_pin = st.joints[1].position;
-        let e_rod = rod.orientation;
-        // One reciprocal of the rod's sine serves both divisions below.
-        let inverse_sin = 1.0 / e_rod.im;
-
-        // Rod with a massless piston. Its inertial force −m2·a_g2 (A5.2.1.4) and inertial
-        // couple −J2·α_BA (5.1.2) have the moment M_i about the crank pin (A5.2.1.6-8). The
-        // massless piston can only pass on a force across the cylinder, so the piston pin
-        // force on the rod is horizontal, and moments about the crank pin give it (A5.2.1.9-10).
-        let f_ine2 = -rod_mass * rod.cg.acceleration;
-        let couple = -rod_inertia * rod.angular_acceleration;
-        let moment_about_crank_pin = cross(m.rod_cg * e_rod, f_ine2) + couple;
-        let f_piston_on_rod = C::new(moment_about_crank_pin * self.inverse_rod * inverse_sin, 0.0);
-        let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
-
-        // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
-        let load = -piston_mass * st.bodies[PISTON].cg.acceleration
-            - C::new(0.0, piston_forces.first().copied().unwrap_or(0.0));
-        let f_rod_on_piston_3 = -load.im * inverse_sin * e_rod;
-        let side_3 = -(load.re + f_rod_on_piston_3.re); // (A5.2.1.20)
-
-        let f_crank_on_rod = f_crank_on_rod_2 + f_rod_on_piston_3; // (A5.2.1.27)
-        let crankshaft = crank_inertia * st.crank.acceleration; // −T_ine1 (A5.2.1.1)
-        let rod_share = -cross(a_pin, -f_crank_on_rod_2); // −T_2i10 (A5.2.1.15)
-        let piston_share = -cross(a_pin, -f_rod_on_piston_3); // −T_3i10 (A5.2.1.23)
         let force = |force: C| JointLoad { force, moment: 0.0 };
-        // (A5.2.1.25): the crankshaft's centre of gravity is on its axis.
-        out.joints[0] = force(f_crank_on_rod);
-        out.joints[1] = force(-f_crank_on_rod); // (A5.2.1.28)
-        out.joints[2] = force(f_rod_on_piston_3 - f_piston_on_rod);
-        out.joints[3] = force(C::new(f_piston_on_rod.re + side_3, 0.0));
-        out.crank_torque = crankshaft + rod_share + piston_share; // −T_Σi10 (A5.2.1.36)
+        for i in 0..st.len.min(LANES) {
+            let rod = st.body(ROD, i);
+            let a_pin = st.joint(1, i).position;
+            let e_rod = rod.orientation;
+            // One reciprocal of the rod's sine serves both divisions below.
+            let inverse_sin = 1.0 / e_rod.im;
+
+            // Rod with a massless piston. Its inertial force −m2·a_g2 (A5.2.1.4) and inertial
+            // couple −J2·α_BA (5.1.2) have the moment M_i about the crank pin (A5.2.1.6-8). The
+            // massless piston can only pass on a force across the cylinder, so the piston pin
+            // force on the rod is horizontal, and moments about the crank pin give it (A5.2.1.9-10).
+            let f_ine2 = -rod_mass * rod.cg.acceleration;
+            let couple = -rod_inertia * rod.angular_acceleration;
+            let moment_about_crank_pin = cross(m.rod_cg * e_rod, f_ine2) + couple;
+            let f_piston_on_rod = C::new(moment_about_crank_pin * self.inverse_rod * inverse_sin, 0.0);
+            let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
+
+            // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
+            let load = -piston_mass * st.body(PISTON, i).cg.acceleration
+                - C::new(0.0, piston_force.map_or(0.0, |f| f[i]));
+            let f_rod_on_piston_3 = -load.im * inverse_sin * e_rod;
+            let side_3 = -(load.re + f_rod_on_piston_3.re); // (A5.2.1.20)
+
+            let f_crank_on_rod = f_crank_on_rod_2 + f_rod_on_piston_3; // (A5.2.1.27)
+            let crankshaft = crank_inertia * st.crank.acceleration[i]; // −T_ine1 (A5.2.1.1)
+            let rod_share = -cross(a_pin, -f_crank_on_rod_2); // −T_2i10 (A5.2.1.15)
+            let piston_share = -cross(a_pin, -f_rod_on_piston_3); // −T_3i10 (A5.2.1.23)
+            // (A5.2.1.25): the crankshaft's centre of gravity is on its axis.
+            out.set(0, i, &force(f_crank_on_rod));
+            out.set(1, i, &force(-f_crank_on_rod)); // (A5.2.1.28)
+            out.set(2, i, &force(f_rod_on_piston_3 - f_piston_on_rod));
+            out.set(3, i, &force(C::new(f_piston_on_rod.re + side_3, 0.0)));
+            out.crank_torque[i] = crankshaft + rod_share + piston_share; // −T_Σi10 (A5.2.1.36)
+        }
         true
     }
 }

@@ -3,7 +3,8 @@
 //! is the full state's; dead centres.
 
 use cardan_mechanism::{
-    CrankMotion, CrankState, MachineGeometry, MassInputs, Mechanism, Options, State, C, MECHANISMS,
+    CrankMotion, CrankState, MachineGeometry, MassInputs, Mechanism, Options, State, StateBlock, C,
+    LANES, MECHANISMS,
 };
 
 fn machines() -> Vec<Box<dyn Mechanism>> {
@@ -131,8 +132,9 @@ fn piston_position_is_the_states_and_dead_centres() {
     }
 }
 
-/// A block of crank states filled together is, state by state, what filling each alone gives,
-/// for every mechanism, whatever the block's length (a mechanism may work across the block).
+/// A block of crank states filled together is, lane by lane, what filling each alone (a block
+/// of one, [`Mechanism::state`]) gives, for every mechanism, whatever the block's length (a
+/// mechanism may work across the block); a lane scattered back is the lane.
 #[test]
 fn fill_block_is_fill_state_by_state() {
     let motion = CrankMotion {
@@ -140,16 +142,22 @@ fn fill_block_is_fill_state_by_state() {
         initial_speed: 200.0,
         angular_acceleration: 300.0,
     };
-    let cranks = motion.grid(0.3, 7.0, 37).unwrap();
+    let cranks = motion.grid(0.3, 7.0, LANES + 3).unwrap();
     for m in machines() {
         let t = m.topology();
-        for len in [1, 7, 8, 9, 16, 38] {
-            let mut block = vec![State::for_topology(t); len];
-            m.fill_block(&cranks[..len], &mut block);
-            for (c, got) in cranks[..len].iter().zip(&block) {
-                let mut alone = State::for_topology(t);
-                m.fill(c, &mut alone);
-                assert_eq!(*got, alone, "{} at {} rad, block {len}", m.name(), c.angle);
+        let mut block = StateBlock::for_topology(t);
+        for len in [1, 7, 8, 9, 16, 38, LANES] {
+            block.fill(m.as_ref(), &cranks[..len]);
+            assert_eq!(block.len, len);
+            for (i, c) in cranks[..len].iter().enumerate() {
+                let mut got = State::for_topology(t);
+                block.gather(i, &mut got);
+                let alone = m.state(c);
+                got.extras.clone_from(&alone.extras);
+                assert_eq!(got, alone, "{} at {} rad, block {len}", m.name(), c.angle);
+                let mut back = block.clone();
+                back.scatter(i, &got);
+                assert_eq!(back, block, "{} lane {i}", m.name());
             }
         }
     }

@@ -1,0 +1,401 @@
+//! A block of consecutive steps stored as columns (a struct of arrays): each quantity of every
+//! body, joint and piston, and each load, one fixed-length array over the block's steps. The
+//! step loop fills a block at a time and the summary reads its columns, so that a quantity's
+//! values over the block lie side by side (peaks and sums over them vectorise) and no step is
+//! reached through a chain of pointers. A lane `i` of a block is one step; [`StateBlock::gather`]
+//! gives it as a [`State`] for the code that works a step at a time (per-step files, losses,
+//! gear ratings, the general solve).
+
+use crate::model::{BodyMotion, JointLoad, JointMotion, Loads, PistonMotion, PointMotion, State};
+use crate::motion::CrankState;
+use crate::{Mechanism, Topology, C};
+
+/// Steps in a block: the length of every column.
+pub const LANES: usize = 64;
+
+/// One quantity over the steps of a block, in the unit of the quantity it holds.
+pub type Column = [f64; LANES];
+
+const ZERO: Column = [0.0; LANES];
+
+/// The crank state of every step of a block (the fields of [`CrankState`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CrankColumns {
+    /// Crank angle θ, rad.
+    pub angle: Column,
+    /// cos θ and sin θ.
+    pub cos: Column,
+    pub sin: Column,
+    /// ω, rad/s.
+    pub speed: Column,
+    /// α, rad/s².
+    pub acceleration: Column,
+    /// Time, s.
+    pub time: Column,
+}
+
+/// A point's motion over a block (the fields of [`PointMotion`], x and y components).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointColumns {
+    /// Position, m.
+    pub x: Column,
+    pub y: Column,
+    /// Velocity, m/s.
+    pub vx: Column,
+    pub vy: Column,
+    /// Acceleration, m/s².
+    pub ax: Column,
+    pub ay: Column,
+}
+
+/// A body's motion over a block (the fields of [`BodyMotion`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyColumns {
+    pub cg: PointColumns,
+    /// The orientation's unit vector, x and y components.
+    pub orientation_x: Column,
+    pub orientation_y: Column,
+    /// rad/s.
+    pub angular_velocity: Column,
+    /// rad/s².
+    pub angular_acceleration: Column,
+}
+
+/// A joint's motion over a block (the fields of [`JointMotion`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointColumns {
+    /// Position, m.
+    pub x: Column,
+    pub y: Column,
+    /// Direction (unit vector), x and y components.
+    pub direction_x: Column,
+    pub direction_y: Column,
+    /// rad/s for a pin, m/s for a slide or a mesh.
+    pub relative_speed: Column,
+}
+
+/// A piston's motion over a block (the fields of [`PistonMotion`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PistonColumns {
+    /// m.
+    pub position: Column,
+    /// m/s.
+    pub velocity: Column,
+    /// m/s².
+    pub acceleration: Column,
+    /// m/rad.
+    pub dx_dtheta: Column,
+    /// m/rad².
+    pub d2x_dtheta2: Column,
+}
+
+/// The states of the steps of a block, in the order of a [`Topology`]: lane `i` of every
+/// column is step `i` of the block, for `i < len`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StateBlock {
+    /// Steps the block holds (at most [`LANES`]).
+    pub len: usize,
+    pub crank: CrankColumns,
+    pub bodies: Vec<BodyColumns>,
+    pub joints: Vec<JointColumns>,
+    pub pistons: Vec<PistonColumns>,
+}
+
+fn point() -> PointColumns {
+    PointColumns {
+        x: ZERO,
+        y: ZERO,
+        vx: ZERO,
+        vy: ZERO,
+        ax: ZERO,
+        ay: ZERO,
+    }
+}
+
+impl StateBlock {
+    /// An empty block with the columns of `topology`.
+    pub fn for_topology(topology: &Topology) -> Self {
+        let body = BodyColumns {
+            cg: point(),
+            orientation_x: ZERO,
+            orientation_y: ZERO,
+            angular_velocity: ZERO,
+            angular_acceleration: ZERO,
+        };
+        let joint = JointColumns {
+            x: ZERO,
+            y: ZERO,
+            direction_x: ZERO,
+            direction_y: ZERO,
+            relative_speed: ZERO,
+        };
+        let piston = PistonColumns {
+            position: ZERO,
+            velocity: ZERO,
+            acceleration: ZERO,
+            dx_dtheta: ZERO,
+            d2x_dtheta2: ZERO,
+        };
+        Self {
+            len: 0,
+            crank: CrankColumns {
+                angle: ZERO,
+                cos: ZERO,
+                sin: ZERO,
+                speed: ZERO,
+                acceleration: ZERO,
+                time: ZERO,
+            },
+            bodies: vec![body; topology.bodies.len()],
+            joints: vec![joint; topology.joints.len()],
+            pistons: vec![piston; topology.pistons.len()],
+        }
+    }
+
+    /// Fills the block with `mechanism` at `cranks` (at most [`LANES`] of them).
+    pub fn fill<M: Mechanism + ?Sized>(&mut self, mechanism: &M, cranks: &[CrankState]) {
+        assert!(cranks.len() <= LANES, "a block holds at most {LANES} steps");
+        self.len = cranks.len();
+        mechanism.fill_block(cranks, self);
+    }
+
+    /// The crank state of lane `i`.
+    #[inline(always)]
+    pub fn crank(&self, i: usize) -> CrankState {
+        let c = &self.crank;
+        CrankState {
+            angle: c.angle[i],
+            direction: C::new(c.cos[i], c.sin[i]),
+            speed: c.speed[i],
+            acceleration: c.acceleration[i],
+            time: c.time[i],
+        }
+    }
+
+    /// Sets lane `i`'s crank state.
+    #[inline(always)]
+    pub fn set_crank(&mut self, i: usize, s: &CrankState) {
+        let c = &mut self.crank;
+        c.angle[i] = s.angle;
+        c.cos[i] = s.direction.re;
+        c.sin[i] = s.direction.im;
+        c.speed[i] = s.speed;
+        c.acceleration[i] = s.acceleration;
+        c.time[i] = s.time;
+    }
+
+    /// Body `k`'s motion at lane `i`.
+    #[inline(always)]
+    pub fn body(&self, k: usize, i: usize) -> BodyMotion {
+        let b = &self.bodies[k];
+        let p = &b.cg;
+        BodyMotion {
+            cg: PointMotion {
+                position: C::new(p.x[i], p.y[i]),
+                velocity: C::new(p.vx[i], p.vy[i]),
+                acceleration: C::new(p.ax[i], p.ay[i]),
+            },
+            orientation: C::new(b.orientation_x[i], b.orientation_y[i]),
+            angular_velocity: b.angular_velocity[i],
+            angular_acceleration: b.angular_acceleration[i],
+        }
+    }
+
+    /// Sets body `k`'s motion at lane `i`.
+    #[inline(always)]
+    pub fn set_body(&mut self, k: usize, i: usize, m: &BodyMotion) {
+        let b = &mut self.bodies[k];
+        let p = &mut b.cg;
+        p.x[i] = m.cg.position.re;
+        p.y[i] = m.cg.position.im;
+        p.vx[i] = m.cg.velocity.re;
+        p.vy[i] = m.cg.velocity.im;
+        p.ax[i] = m.cg.acceleration.re;
+        p.ay[i] = m.cg.acceleration.im;
+        b.orientation_x[i] = m.orientation.re;
+        b.orientation_y[i] = m.orientation.im;
+        b.angular_velocity[i] = m.angular_velocity;
+        b.angular_acceleration[i] = m.angular_acceleration;
+    }
+
+    /// Joint `k`'s motion at lane `i`.
+    #[inline(always)]
+    pub fn joint(&self, k: usize, i: usize) -> JointMotion {
+        let j = &self.joints[k];
+        JointMotion {
+            position: C::new(j.x[i], j.y[i]),
+            direction: C::new(j.direction_x[i], j.direction_y[i]),
+            relative_speed: j.relative_speed[i],
+        }
+    }
+
+    /// Sets joint `k`'s motion at lane `i`.
+    #[inline(always)]
+    pub fn set_joint(&mut self, k: usize, i: usize, m: &JointMotion) {
+        let j = &mut self.joints[k];
+        j.x[i] = m.position.re;
+        j.y[i] = m.position.im;
+        j.direction_x[i] = m.direction.re;
+        j.direction_y[i] = m.direction.im;
+        j.relative_speed[i] = m.relative_speed;
+    }
+
+    /// Piston `k`'s motion at lane `i`.
+    #[inline(always)]
+    pub fn piston(&self, k: usize, i: usize) -> PistonMotion {
+        let p = &self.pistons[k];
+        PistonMotion {
+            position: p.position[i],
+            velocity: p.velocity[i],
+            acceleration: p.acceleration[i],
+            dx_dtheta: p.dx_dtheta[i],
+            d2x_dtheta2: p.d2x_dtheta2[i],
+        }
+    }
+
+    /// Sets piston `k`'s motion at lane `i`.
+    #[inline(always)]
+    pub fn set_piston(&mut self, k: usize, i: usize, m: &PistonMotion) {
+        let p = &mut self.pistons[k];
+        p.position[i] = m.position;
+        p.velocity[i] = m.velocity;
+        p.acceleration[i] = m.acceleration;
+        p.dx_dtheta[i] = m.dx_dtheta;
+        p.d2x_dtheta2[i] = m.d2x_dtheta2;
+    }
+
+    /// Lane `i` as a state (a [`State::for_topology`] of the same topology), all but its extras.
+    pub fn gather(&self, i: usize, st: &mut State) {
+        st.crank = self.crank(i);
+        for (k, b) in st.bodies.iter_mut().enumerate() {
+            *b = self.body(k, i);
+        }
+        for (k, j) in st.joints.iter_mut().enumerate() {
+            *j = self.joint(k, i);
+        }
+        for (k, p) in st.pistons.iter_mut().enumerate() {
+            *p = self.piston(k, i);
+        }
+    }
+
+    /// Sets lane `i` to the state `st`.
+    pub fn scatter(&mut self, i: usize, st: &State) {
+        self.set_crank(i, &st.crank);
+        for (k, b) in st.bodies.iter().enumerate() {
+            self.set_body(k, i, b);
+        }
+        for (k, j) in st.joints.iter().enumerate() {
+            self.set_joint(k, i, j);
+        }
+        for (k, p) in st.pistons.iter().enumerate() {
+            self.set_piston(k, i, p);
+        }
+    }
+
+    /// Fills lanes `0..cranks.len()` a state at a time with `fill` (a mechanism whose
+    /// kinematics are not written for columns).
+    pub fn fill_each(
+        &mut self,
+        topology: &Topology,
+        cranks: &[CrankState],
+        fill: impl Fn(&CrankState, &mut State),
+    ) {
+        let mut st = State::for_topology(topology);
+        for (i, c) in cranks.iter().enumerate() {
+            fill(c, &mut st);
+            self.scatter(i, &st);
+        }
+    }
+}
+
+/// A joint's load over a block (the fields of [`JointLoad`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointLoadColumns {
+    /// Force on the joint's `body` from its `other`, N.
+    pub fx: Column,
+    pub fy: Column,
+    /// Couple, N·m.
+    pub moment: Column,
+}
+
+/// The loads of one family over a block, keyed by joint (the fields of [`Loads`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadsBlock {
+    pub joints: Vec<JointLoadColumns>,
+    /// Drive torque, N·m.
+    pub crank_torque: Column,
+}
+
+impl LoadsBlock {
+    pub fn for_topology(topology: &Topology) -> Self {
+        let joint = JointLoadColumns {
+            fx: ZERO,
+            fy: ZERO,
+            moment: ZERO,
+        };
+        Self {
+            joints: vec![joint; topology.joints.len()],
+            crank_torque: ZERO,
+        }
+    }
+
+    /// Joint `k`'s load at lane `i`.
+    #[inline(always)]
+    pub fn joint(&self, k: usize, i: usize) -> JointLoad {
+        let j = &self.joints[k];
+        JointLoad {
+            force: C::new(j.fx[i], j.fy[i]),
+            moment: j.moment[i],
+        }
+    }
+
+    /// Sets joint `k`'s load at lane `i`.
+    #[inline(always)]
+    pub fn set(&mut self, k: usize, i: usize, load: &JointLoad) {
+        let j = &mut self.joints[k];
+        j.fx[i] = load.force.re;
+        j.fy[i] = load.force.im;
+        j.moment[i] = load.moment;
+    }
+
+    /// Lane `i` as loads (a [`Loads::for_topology`] of the same topology).
+    pub fn gather(&self, i: usize, out: &mut Loads) {
+        for (k, j) in out.joints.iter_mut().enumerate() {
+            *j = self.joint(k, i);
+        }
+        out.crank_torque = self.crank_torque[i];
+    }
+
+    /// Sets lane `i` to `loads`.
+    pub fn scatter(&mut self, i: usize, loads: &Loads) {
+        for (k, j) in loads.joints.iter().enumerate() {
+            self.set(k, i, j);
+        }
+        self.crank_torque[i] = loads.crank_torque;
+    }
+
+    /// Sets the first `n` lanes to zero.
+    pub fn clear(&mut self, n: usize) {
+        for j in &mut self.joints {
+            j.fx[..n].fill(0.0);
+            j.fy[..n].fill(0.0);
+            j.moment[..n].fill(0.0);
+        }
+        self.crank_torque[..n].fill(0.0);
+    }
+
+    /// Adds `other`'s first `n` lanes (superposition of load families, Karhula A7.1).
+    pub fn add(&mut self, other: &LoadsBlock, n: usize) {
+        let sum = |a: &mut Column, b: &Column| {
+            for (a, b) in a[..n].iter_mut().zip(&b[..n]) {
+                *a += b;
+            }
+        };
+        for (a, b) in self.joints.iter_mut().zip(&other.joints) {
+            sum(&mut a.fx, &b.fx);
+            sum(&mut a.fy, &b.fy);
+            sum(&mut a.moment, &b.moment);
+        }
+        sum(&mut self.crank_torque, &other.crank_torque);
+    }
+}
