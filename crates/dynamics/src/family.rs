@@ -4,7 +4,7 @@
 //! total load and relative speed and needs no mechanism code.
 
 use crate::planar;
-use cardan_mechanism::{Loads, Mechanism, State};
+use cardan_mechanism::{Column, Loads, LoadsBlock, Mechanism, State, StateBlock};
 
 /// Which path computes the loads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -17,21 +17,33 @@ pub enum Solver {
 }
 
 impl Solver {
-    /// The loads of the bodies' inertia (if `inertia`) and of `piston_forces` at `state`.
+    /// The loads of the bodies' inertia (if `inertia`) and of the force `piston_force` on every
+    /// piston (none without one) at the steps of `block`.
     pub fn loads(
         self,
         mechanism: &dyn Mechanism,
-        state: &State,
+        block: &StateBlock,
         inertia: bool,
-        piston_forces: &[f64],
-        out: &mut Loads,
+        piston_force: Option<&Column>,
+        out: &mut LoadsBlock,
     ) {
         if self == Solver::ClosedForm
-            && mechanism.closed_form_loads(state, inertia, piston_forces, out)
+            && mechanism.closed_form_block(block, inertia, piston_force, out)
         {
             return;
         }
-        planar::loads(mechanism.topology(), state, inertia, piston_forces, out);
+        // The general solve works a state at a time.
+        let t = mechanism.topology();
+        let (mut state, mut loads) = (State::for_topology(t), Loads::for_topology(t));
+        let mut forces = vec![0.0; piston_force.map_or(0, |_| t.pistons.len())];
+        for i in 0..block.len {
+            block.gather(i, &mut state);
+            if let Some(f) = piston_force {
+                forces.fill(f[i]);
+            }
+            planar::loads(t, &state, inertia, &forces, &mut loads);
+            out.scatter(i, &loads);
+        }
     }
 }
 
@@ -46,16 +58,17 @@ pub trait LoadFamily: Sync {
     /// Whether it carries the piston forces.
     fn piston_forces(&self) -> bool;
 
-    /// Its loads at `state`, written to `out`. `piston_forces` is the gas force on each piston
-    /// (N, towards the crankshaft); `before` the sum of the loads of the families before it in
-    /// the run (what a tooth-load or friction family acts on; zero for the first family).
+    /// Its loads at the steps of `block`, written to `out`. `piston_force` is the gas force on
+    /// every piston at each step (N, towards the crankshaft; none without gas); `before` the sum
+    /// of the loads of the families before it in the run (what a tooth-load or friction family
+    /// acts on; zero for the first family).
     fn loads(
         &self,
         mechanism: &dyn Mechanism,
-        state: &State,
-        piston_forces: &[f64],
-        before: &Loads,
-        out: &mut Loads,
+        block: &StateBlock,
+        piston_force: Option<&Column>,
+        before: &LoadsBlock,
+        out: &mut LoadsBlock,
     );
 }
 
@@ -79,12 +92,12 @@ impl LoadFamily for Inertial {
     fn loads(
         &self,
         mechanism: &dyn Mechanism,
-        state: &State,
-        _: &[f64],
-        _: &Loads,
-        out: &mut Loads,
+        block: &StateBlock,
+        _: Option<&Column>,
+        _: &LoadsBlock,
+        out: &mut LoadsBlock,
     ) {
-        self.0.loads(mechanism, state, true, &[], out);
+        self.0.loads(mechanism, block, true, None, out);
     }
 }
 
@@ -108,11 +121,11 @@ impl LoadFamily for Gas {
     fn loads(
         &self,
         mechanism: &dyn Mechanism,
-        state: &State,
-        forces: &[f64],
-        _: &Loads,
-        out: &mut Loads,
+        block: &StateBlock,
+        force: Option<&Column>,
+        _: &LoadsBlock,
+        out: &mut LoadsBlock,
     ) {
-        self.0.loads(mechanism, state, false, forces, out);
+        self.0.loads(mechanism, block, false, force, out);
     }
 }

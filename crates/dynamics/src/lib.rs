@@ -38,5 +38,7 @@ pub use losses::{
 };
 pub use metrics::{Aggregation, MetricDef, METRICS};
 pub use parallel::{run_parallel, Joinable};
-pub use stepper::{run, run_summary, GasAt, RunError, Sink, Stages, Step, StepRecord, Steps};
+pub use stepper::{
+    run, run_summary, GasAt, RunError, Sink, Stages, Step, StepBlock, StepRecord, Steps,
+};
 pub use summary::{radial, summary_chunk, tangential, Metric, Summary, SummarySink, MAX_CHUNK};

@@ -7,7 +7,7 @@
 
 use crate::family::LoadFamily;
 use crate::losses::LossBudget;
-use crate::stepper::{run, GasAt, RunError, Sink, Stages, Step};
+use crate::stepper::{run, GasAt, RunError, Sink, Stages, StepBlock};
 use crate::summary::{summary_chunk, SummarySink, MAX_CHUNK};
 use cardan_mechanism::{Mechanism, MotionSource};
 use rayon::prelude::*;
@@ -32,14 +32,13 @@ impl Joinable for SummarySink {
 }
 
 impl<A: Sink, B: Sink> Sink for (A, B) {
-    fn push(&mut self, step: &Step) -> Result<(), String> {
-        self.0.push(step)?;
-        self.1.push(step)
+    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
+        self.0.push_block(block)?;
+        self.1.push_block(block)
     }
 
-    fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
-        self.0.push_block(steps)?;
-        self.1.push_block(steps)
+    fn wants_steps(&self) -> bool {
+        self.0.wants_steps() || self.1.wants_steps()
     }
 
     fn wants_details(&self) -> bool {
@@ -48,12 +47,12 @@ impl<A: Sink, B: Sink> Sink for (A, B) {
 }
 
 impl<S: Sink> Sink for Option<S> {
-    fn push(&mut self, step: &Step) -> Result<(), String> {
-        self.as_mut().map_or(Ok(()), |s| s.push(step))
+    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
+        self.as_mut().map_or(Ok(()), |s| s.push_block(block))
     }
 
-    fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
-        self.as_mut().map_or(Ok(()), |s| s.push_block(steps))
+    fn wants_steps(&self) -> bool {
+        self.as_ref().is_some_and(Sink::wants_steps)
     }
 
     fn wants_details(&self) -> bool {

@@ -7,9 +7,12 @@ use crate::energy::torque_shares;
 use crate::family::LoadFamily;
 use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
-use cardan_mechanism::{CrankState, Loads, Mechanism, MotionError, MotionSource, State};
+use cardan_mechanism::{
+    Column, CrankState, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
+    LANES,
+};
 
-/// One step, as the sinks see it.
+/// One step, as the sinks that take steps one at a time see it.
 #[derive(Debug, Clone, Copy)]
 pub struct Step<'a> {
     /// Index of the step in the run, from 0.
@@ -35,18 +38,60 @@ pub struct Step<'a> {
     pub shares: &'a [Vec<f64>],
 }
 
+/// Consecutive steps (at most [`LANES`]), as columns, and one by one where wanted.
+#[derive(Debug, Clone, Copy)]
+pub struct StepBlock<'a> {
+    /// Index of the block's first step in the run.
+    pub first: usize,
+    /// The mechanism's states: lane `i` is step `first + i`.
+    pub state: &'a StateBlock,
+    /// Absolute cylinder pressure at each step, Pa, if a gas model loads the pistons.
+    pub pressure: Option<&'a Column>,
+    /// Gas force on every piston at each step, along its axis towards the crankshaft, N, if a
+    /// gas model loads the pistons.
+    pub piston_force: Option<&'a Column>,
+    /// The loads of each family, in the order of the run's families.
+    pub families: &'a [LoadsBlock],
+    /// Their sum.
+    pub total: &'a LoadsBlock,
+    /// The same steps one at a time, with the losses and gear ratings of the run's stages:
+    /// made only when a sink [wants](Sink::wants_steps) them or the run has stages (empty
+    /// otherwise).
+    pub steps: &'a [Step<'a>],
+}
+
+impl StepBlock<'_> {
+    /// Steps in the block.
+    pub fn len(&self) -> usize {
+        self.state.len
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.state.len == 0
+    }
+}
+
 /// Where steps go.
 pub trait Sink {
-    /// Takes one step; an error stops the run (a file that cannot be written).
-    fn push(&mut self, step: &Step) -> Result<(), String>;
+    /// Takes one step (a sink that [wants](Sink::wants_steps) steps); an error stops the run (a
+    /// file that cannot be written).
+    fn push(&mut self, _step: &Step) -> Result<(), String> {
+        Ok(())
+    }
 
-    /// Takes consecutive steps, in order (a block of a prescribed motion); an error names the
-    /// index of the step it stopped at.
-    fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
-        for s in steps {
+    /// Takes a block of consecutive steps, in order; an error names the index of the step it
+    /// stopped at. By default each of [`StepBlock::steps`] in turn.
+    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
+        for s in block.steps {
             self.push(s).map_err(|message| (s.index, message))?;
         }
         Ok(())
+    }
+
+    /// Whether it reads the steps one at a time ([`StepBlock::steps`]); a sink that reads only
+    /// the columns spares the run a copy of every step.
+    fn wants_steps(&self) -> bool {
+        true
     }
 
     /// Whether it reads [`Step::shares`] and the state's extras (they cost divisions and square
@@ -98,13 +143,20 @@ pub fn run(
 ) -> Result<(), RunError> {
     let Stages { mut losses, gears } = stages;
     let topology = mechanism.topology();
-    // A prescribed motion's states come a block at a time, so that the mechanism can fill
-    // them together (`Mechanism::fill_block`) and the sinks take them together
+    // A prescribed motion's states come a block at a time, filled and loaded column by column
+    // (`Mechanism::fill_block`, `LoadFamily::loads`) and taken so by the sinks
     // (`Sink::push_block`); a solved motion's one at a time, each after the torque of the one
     // before.
-    let block = if motion.prescribed() { STEP_BLOCK } else { 1 };
+    let block = if motion.prescribed() { LANES } else { 1 };
     let mut cranks: Vec<CrankState> = Vec::with_capacity(block);
-    let mut states = vec![State::for_topology(topology); block];
+    let mut states = StateBlock::for_topology(topology);
+    let (mut pressure, mut force) = ([0.0; LANES], [0.0; LANES]);
+    let mut loads = vec![LoadsBlock::for_topology(topology); families.len()];
+    let mut total = LoadsBlock::for_topology(topology);
+    let details = sinks.iter().any(|s| s.wants_details());
+    // The steps one at a time, for the sinks that take them and for the stages.
+    let one_by_one =
+        details || losses.is_some() || gears.is_some() || sinks.iter().any(|s| s.wants_steps());
     let pistons = if gas.is_some() {
         topology.pistons.len()
     } else {
@@ -112,7 +164,7 @@ pub fn run(
     };
     let mut out = vec![
         StepOut {
-            pressure: None,
+            state: State::for_topology(topology),
             forces: vec![0.0; pistons],
             loads: vec![Loads::for_topology(topology); families.len()],
             total: Loads::for_topology(topology),
@@ -121,17 +173,16 @@ pub fn run(
             friction_torque: 0.0,
             ratings: vec![MeshRating::default(); gears.map_or(0, |g| g.names().len())],
         };
-        block
+        if one_by_one { block } else { 0 }
     ];
     // The rated meshes' losses by joint, which the loss budget takes instead of computing them
     // again.
-    let mut mesh_losses: Vec<(usize, f64)> = Vec::with_capacity(out[0].ratings.len());
+    let mut mesh_losses: Vec<(usize, f64)> = Vec::with_capacity(out.first().map_or(0, |o| o.ratings.len()));
     // The allocation of the block's steps, kept from block to block.
     let mut spare: Vec<Step<'static>> = Vec::with_capacity(block);
     let mut previous_torque = None;
     // A part of a run numbers its steps as the whole run does.
     let mut index = motion.first_index();
-    let details = sinks.iter().any(|s| s.wants_details());
     let inertial = families.iter().position(|f| f.inertia());
     // Each family sees the sum of those before it; one family is its own total.
     let several = families.len() > 1;
@@ -160,45 +211,65 @@ pub fn run(
             }
         }
         let n = cranks.len();
-        mechanism.fill_block(&cranks, &mut states[..n]);
-        for (j, ((crank, state), o)) in cranks.iter().zip(&mut states).zip(&mut out).enumerate() {
-            let step = index + j;
-            if details {
-                mechanism.fill_extras(state);
+        states.fill(mechanism, &cranks);
+        if let Some(g) = gas {
+            for i in 0..n {
+                (pressure[i], force[i]) = g(states.crank.angle[i]);
             }
-            let state: &State = state;
+        }
+        let applied = gas.map(|_| &force);
+        if several {
+            total.clear(n);
+        }
+        for (family, out) in families.iter().zip(loads.iter_mut()) {
+            let f = if family.piston_forces() { applied } else { None };
+            family.loads(mechanism, &states, f, &total, out);
+            if several {
+                total.add(out, n);
+            }
+        }
+        let total: &LoadsBlock = if several { &total } else { &loads[0] };
+        let gas_pressure = gas.map(|_| &pressure);
+        let sums = finite_sums(&states, gas_pressure, &loads);
+        for i in 0..n {
+            let step = index + i;
+            if !sums[i].is_finite() {
+                let gas = gas.map(|_| (pressure[i], force[i]));
+                check_lane(step, &states, i, gas, families, &loads, mechanism)?;
+            }
+            previous_torque = Some(total.crank_torque[i]);
+            let Some(o) = out.get_mut(i) else { continue };
             let StepOut {
-                pressure,
+                state,
                 forces,
-                loads,
-                total,
+                loads: step_loads,
+                total: step_total,
                 shares,
                 losses: power_losses,
                 friction_torque,
                 ratings,
             } = o;
-            *pressure = gas.map(|g| {
-                let (p, f) = g(crank.angle);
-                forces.fill(f);
-                p
-            });
-            if several {
-                total.clear();
+            states.gather(i, state);
+            if details {
+                mechanism.fill_extras(state);
             }
-            for ((family, out), share) in families.iter().zip(loads.iter_mut()).zip(shares) {
-                let applied: &[f64] = if family.piston_forces() { forces } else { &[] };
-                family.loads(mechanism, state, applied, total, out);
+            let state: &State = state;
+            forces.fill(force[i]);
+            for (((family, out), columns), share) in
+                families.iter().zip(step_loads.iter_mut()).zip(&loads).zip(shares)
+            {
+                columns.gather(i, out);
                 if details {
+                    let applied: &[f64] = if family.piston_forces() { forces } else { &[] };
                     torque_shares(topology, state, family.inertia(), applied, share);
                 }
-                if several {
-                    total.add(out);
-                }
             }
-            let total: &Loads = if several { total } else { &loads[0] };
-            check_finite(step, state, *pressure, forces, families, loads, mechanism)?;
+            if several {
+                total.gather(i, step_total);
+            }
+            let total: &Loads = if several { step_total } else { &step_loads[0] };
             if let Some(g) = gears {
-                g.evaluate(state, total, inertial.map(|k| &loads[k]), ratings)
+                g.evaluate(state, total, inertial.map(|k| &step_loads[k]), ratings)
                     .map_err(|message| RunError::Sink { step, message })?;
                 mesh_losses.clear();
                 mesh_losses.extend(g.joints().zip(ratings.iter().map(|r| r.loss)));
@@ -206,7 +277,7 @@ pub fn run(
             *friction_torque = 0.0;
             if let Some(budget) = losses.as_deref_mut() {
                 budget
-                    .evaluate(state, total, *pressure, &mesh_losses, power_losses)
+                    .evaluate(state, total, gas.map(|_| pressure[i]), &mesh_losses, power_losses)
                     .map_err(|message| RunError::Sink { step, message })?;
                 let sum: f64 = power_losses.iter().sum();
                 if !sum.is_finite() {
@@ -225,32 +296,33 @@ pub fn run(
                     *friction_torque = sum / state.crank.speed.abs();
                 }
             }
-            previous_torque = Some(total.crank_torque);
         }
         // The block's steps, in an allocation kept from block to block (emptied, it takes
         // steps borrowing this block's results).
         let mut steps: Vec<Step> = spare.into_iter().map(|_| unreachable!()).collect();
-        steps.extend(
-            states
-                .iter()
-                .zip(&out)
-                .take(n)
-                .enumerate()
-                .map(|(j, (state, o))| Step {
-                    index: index + j,
-                    state,
-                    pressure: o.pressure,
-                    piston_forces: &o.forces,
-                    families: &o.loads,
-                    total: if several { &o.total } else { &o.loads[0] },
-                    losses: &o.losses,
-                    friction_torque: o.friction_torque,
-                    gears: &o.ratings,
-                    shares: &o.shares,
-                }),
-        );
+        steps.extend(out.iter().take(n).enumerate().map(|(j, o)| Step {
+            index: index + j,
+            state: &o.state,
+            pressure: gas.map(|_| pressure[j]),
+            piston_forces: &o.forces,
+            families: &o.loads,
+            total: if several { &o.total } else { &o.loads[0] },
+            losses: &o.losses,
+            friction_torque: o.friction_torque,
+            gears: &o.ratings,
+            shares: &o.shares,
+        }));
+        let taken = StepBlock {
+            first: index,
+            state: &states,
+            pressure: gas_pressure,
+            piston_force: applied,
+            families: &loads,
+            total,
+            steps: &steps,
+        };
         for sink in sinks.iter_mut() {
-            sink.push_block(&steps)
+            sink.push_block(&taken)
                 .map_err(|(step, message)| RunError::Sink { step, message })?;
         }
         steps.clear();
@@ -263,11 +335,11 @@ pub fn run(
     Ok(())
 }
 
-/// What a step computes besides its state, kept for each step of a block until the sinks have
-/// taken the block.
+/// A step's state and what it computes besides, one at a time, kept for each step of a block
+/// until the sinks have taken the block.
 #[derive(Clone)]
 struct StepOut {
-    pressure: Option<f64>,
+    state: State,
     forces: Vec<f64>,
     loads: Vec<Loads>,
     total: Loads,
@@ -277,8 +349,67 @@ struct StepOut {
     ratings: Vec<MeshRating>,
 }
 
-/// Crank states a run takes at once from a prescribed motion.
-const STEP_BLOCK: usize = 8;
+/// For each step of `block`, the sum of the quantities [`check_finite`] checks: an infinity or
+/// a NaN among them makes it an infinity or a NaN (one addition per quantity, across the steps).
+fn finite_sums(block: &StateBlock, pressure: Option<&Column>, loads: &[LoadsBlock]) -> Column {
+    let n = block.len.min(LANES);
+    let c = &block.crank;
+    let mut sum = [0.0; LANES];
+    for i in 0..n {
+        sum[i] = c.speed[i] + c.time[i] + pressure.map_or(0.0, |p| p[i]);
+    }
+    for p in &block.pistons {
+        for i in 0..n {
+            sum[i] += p.position[i] + p.velocity[i] + p.acceleration[i];
+        }
+    }
+    for l in loads {
+        let mut s = l.crank_torque;
+        for j in &l.joints {
+            for i in 0..n {
+                s[i] += (j.fx[i] + j.fy[i]) + j.moment[i];
+            }
+        }
+        for i in 0..n {
+            sum[i] += s[i];
+        }
+    }
+    sum
+}
+
+/// [`check_finite`] at lane `i` of a block (whose sum was not finite), with the gas's
+/// (pressure, piston force) there.
+fn check_lane(
+    step: usize,
+    block: &StateBlock,
+    i: usize,
+    gas: Option<(f64, f64)>,
+    families: &[&dyn LoadFamily],
+    loads: &[LoadsBlock],
+    mechanism: &dyn Mechanism,
+) -> Result<(), RunError> {
+    let t = mechanism.topology();
+    let mut state = State::for_topology(t);
+    block.gather(i, &mut state);
+    let lane: Vec<Loads> = loads
+        .iter()
+        .map(|l| {
+            let mut out = Loads::for_topology(t);
+            l.gather(i, &mut out);
+            out
+        })
+        .collect();
+    let forces = gas.map_or(vec![], |(_, f)| vec![f; t.pistons.len()]);
+    check_finite(
+        step,
+        &state,
+        gas.map(|(p, _)| p),
+        &forces,
+        families,
+        &lane,
+        mechanism,
+    )
+}
 
 /// Fails the step if any computed quantity is not finite, naming the first such quantity. The
 /// check per step is one sum of the quantities: an infinity or a NaN among them makes the sum

@@ -3,8 +3,9 @@
 
 use crate::energy::kinetic_energy;
 use crate::metrics;
-use crate::stepper::{Sink, Step};
-use cardan_mechanism::{JointKind, JointMotion, Loads, Mechanism, Topology, C};
+use crate::stepper::{Sink, StepBlock};
+use cardan_mechanism::{JointKind, JointMotion, LoadsBlock, Mechanism, State, Topology, C};
+use std::ops::Range;
 
 /// One named scalar result, in SI units.
 #[derive(Debug, Clone, PartialEq)]
@@ -115,6 +116,28 @@ fn raise(peak: &mut f64, value: f64) {
     *peak = if value > *peak { value } else { *peak };
 }
 
+/// Raises `peak` to the largest of `value(i)` over the lanes `lanes`: eight running maxima
+/// side by side (independent, so that the compiler keeps them in vector registers), then the
+/// largest of them (the same result as raising one at a time: a maximum does not depend on
+/// the order).
+#[inline(always)]
+fn raise_over(peak: &mut f64, lanes: std::ops::Range<usize>, value: impl Fn(usize) -> f64) {
+    let mut m = [*peak; 8];
+    let mut i = lanes.start;
+    while i + 8 <= lanes.end {
+        for (k, m) in m.iter_mut().enumerate() {
+            raise(m, value(i + k));
+        }
+        i += 8;
+    }
+    for i in i..lanes.end {
+        raise(&mut m[0], value(i));
+    }
+    for v in m {
+        raise(peak, v);
+    }
+}
+
 /// The component of a mesh force along the pitch-circle tangent t = i·d (d: from the pitch
 /// point towards the centre of the mesh's first gear): the tooth load that transmits torque
 /// (Karhula A8.1.10).
@@ -180,54 +203,42 @@ impl FamilyTotals {
         self.energy_flow.merge(&later.energy_flow);
     }
 
-    /// Takes the steps `steps` (`loads` gives this family's loads at a step; `previous` the
+    /// Takes the lanes `lanes` of `block` (`loads`: this family's loads there; `previous` the
     /// angle and speed of the step before them, `torque` its torque, then the last step's).
-    fn take<'s>(
+    fn take(
         &mut self,
-        steps: &[Step<'s>],
-        loads: impl Fn(&Step<'s>) -> &'s Loads,
+        block: &StepBlock,
+        loads: &LoadsBlock,
+        lanes: Range<usize>,
         joints: &Joints,
         previous: Option<(f64, f64)>,
         torque: &mut f64,
     ) {
-        for (j, f) in self.force.iter_mut().enumerate() {
-            let mut peak = *f;
-            for s in steps {
-                raise(&mut peak, loads(s).joints[j].force.norm_sqr());
-            }
-            *f = peak;
+        for (f, l) in self.force.iter_mut().zip(&loads.joints) {
+            raise_over(f, lanes.clone(), |i| l.fx[i] * l.fx[i] + l.fy[i] * l.fy[i]);
         }
         for &j in &joints.slides {
-            let mut peak = self.moment[j];
-            for s in steps {
-                raise(&mut peak, loads(s).joints[j].moment.abs());
-            }
-            self.moment[j] = peak;
+            let l = &loads.joints[j];
+            raise_over(&mut self.moment[j], lanes.clone(), |i| l.moment[i].abs());
         }
         for &j in &joints.meshes {
-            let mut t = self.tangential[j];
-            for s in steps {
-                raise(
-                    &mut t,
-                    tangential(loads(s).joints[j].force, &s.state.joints[j]).abs(),
-                );
-            }
-            self.tangential[j] = t;
+            let (l, m) = (&loads.joints[j], &block.state.joints[j]);
+            raise_over(&mut self.tangential[j], lanes.clone(), |i| {
+                let mesh = JointMotion {
+                    direction: C::new(m.direction_x[i], m.direction_y[i]),
+                    ..JointMotion::default()
+                };
+                tangential(C::new(l.fx[i], l.fy[i]), &mesh).abs()
+            });
         }
-        let mut peak = self.torque;
-        for s in steps {
-            raise(&mut peak, loads(s).crank_torque.abs());
-        }
-        self.torque = peak;
+        let t = &loads.crank_torque;
+        raise_over(&mut self.torque, lanes.clone(), |i| t[i].abs());
         // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
         // trapezoidal rule on the crank-angle grid.
+        let c = &block.state.crank;
         let mut previous = previous;
-        for s in steps {
-            let (t, angle, speed) = (
-                loads(s).crank_torque,
-                s.state.crank.angle,
-                s.state.crank.speed,
-            );
+        for i in lanes {
+            let (t, angle, speed) = (t[i], c.angle[i], c.speed[i]);
             if let Some((a0, w0)) = previous {
                 let (h, t0) = (angle - a0, *torque);
                 self.work.add(0.5 * h * (t + t0));
@@ -304,6 +315,8 @@ pub struct SummarySink {
     previous_lever: f64,
     /// Time of the previous step, s.
     previous_time: f64,
+    /// A lane of a block as a state (where the kinetic energy is taken).
+    scratch: State,
     losses: Option<LossTotals>,
     gears: Option<GearTotals>,
 }
@@ -352,6 +365,7 @@ impl SummarySink {
             lever_integral: Integral::default(),
             previous_lever: 0.0,
             previous_time: 0.0,
+            scratch: State::for_topology(mechanism.topology()),
             losses: None,
             gears: None,
         }
@@ -645,36 +659,28 @@ impl SummarySink {
     }
 }
 
-/// The loads of family `k` at a step (the total after the families).
-fn family_loads<'s>(s: &Step<'s>, k: usize) -> &'s Loads {
-    s.families.get(k).unwrap_or(s.total)
-}
-
 impl SummarySink {
-    /// Takes the steps `steps` (in order, none of them but the last closing a chunk): each
-    /// peak raised over all of them in a register before it is stored back (a store per peak
-    /// and step was most of a step's summary), each integral's terms added in the steps' order.
-    fn take(&mut self, steps: &[Step<'_>]) {
-        let Some(last) = steps.last() else { return };
-        for (k, peaks) in self.pistons.iter_mut().enumerate() {
-            let [mut v, mut a] = *peaks;
-            for s in steps {
-                let p = &s.state.pistons[k];
-                raise(&mut v, p.velocity * p.velocity);
-                raise(&mut a, p.acceleration * p.acceleration);
-            }
-            *peaks = [v, a];
+    /// Takes the lanes `lanes` of `block` (in order, none of them but the last closing a
+    /// chunk): each peak raised over all of them before it is stored back, each integral's
+    /// terms added in the steps' order.
+    fn take(&mut self, block: &StepBlock, lanes: Range<usize>) {
+        let Some(last) = lanes.end.checked_sub(1) else {
+            return;
+        };
+        let st = block.state;
+        for (peaks, p) in self.pistons.iter_mut().zip(&st.pistons) {
+            let [v, a] = peaks;
+            raise_over(v, lanes.clone(), |i| p.velocity[i] * p.velocity[i]);
+            raise_over(a, lanes.clone(), |i| p.acceleration[i] * p.acceleration[i]);
         }
-        for (k, peaks) in self.bodies.iter_mut().enumerate() {
-            let [mut v, mut a, mut w, mut e] = *peaks;
-            for s in steps {
-                let b = &s.state.bodies[k];
-                raise(&mut v, b.cg.velocity.norm_sqr());
-                raise(&mut a, b.cg.acceleration.norm_sqr());
-                raise(&mut w, b.angular_velocity * b.angular_velocity);
-                raise(&mut e, b.angular_acceleration * b.angular_acceleration);
-            }
-            *peaks = [v, a, w, e];
+        for (peaks, b) in self.bodies.iter_mut().zip(&st.bodies) {
+            let [v, a, w, e] = peaks;
+            let p = &b.cg;
+            raise_over(v, lanes.clone(), |i| p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+            raise_over(a, lanes.clone(), |i| p.ax[i] * p.ax[i] + p.ay[i] * p.ay[i]);
+            let (w0, e0) = (&b.angular_velocity, &b.angular_acceleration);
+            raise_over(w, lanes.clone(), |i| w0[i] * w0[i]);
+            raise_over(e, lanes.clone(), |i| e0[i] * e0[i]);
         }
         for (k, (f, t0)) in self
             .families
@@ -682,20 +688,16 @@ impl SummarySink {
             .zip(&mut self.previous_torques)
             .enumerate()
         {
-            f.take(
-                steps,
-                |s| family_loads(s, k),
-                &self.joints,
-                self.previous,
-                t0,
-            );
+            // The loads of family k (the total after the families).
+            let loads = block.families.get(k).unwrap_or(block.total);
+            f.take(block, loads, lanes.clone(), &self.joints, self.previous, t0);
         }
-        if !self.topology.pistons.is_empty() {
+        let c = &st.crank;
+        if let Some(p) = st.pistons.first() {
+            raise_over(&mut self.lever, lanes.clone(), |i| p.dx_dtheta[i].abs());
             let mut previous = self.previous.map(|(angle, _)| angle);
-            for s in steps {
-                let angle = s.state.crank.angle;
-                let lever = s.state.pistons[0].dx_dtheta.abs();
-                raise(&mut self.lever, lever);
+            for i in lanes.clone() {
+                let (angle, lever) = (c.angle[i], p.dx_dtheta[i].abs());
                 if let Some(a0) = previous {
                     self.lever_integral
                         .add(0.5 * (angle - a0) * (lever + self.previous_lever));
@@ -704,6 +706,7 @@ impl SummarySink {
                 previous = Some(angle);
             }
         }
+        let steps = block.steps.get(lanes.clone()).unwrap_or_default();
         if let Some(l) = &mut self.losses {
             let (mut started, mut t0) = (self.previous.is_some(), self.previous_time);
             for s in steps {
@@ -740,50 +743,52 @@ impl SummarySink {
                 (started, t0) = (true, s.state.crank.time);
             }
         }
-        for s in steps {
-            // The kinetic energy is wanted at the first and last steps only.
-            if self.first.is_none() || s.index == self.last_step {
-                let st = s.state;
+        // The kinetic energy is wanted at the first and last steps only.
+        for i in [lanes.start, last] {
+            if self.first.is_none() || block.first + i == self.last_step {
+                block.state.gather(i, &mut self.scratch);
                 let now = (
-                    st.crank.angle,
-                    st.crank.time,
-                    kinetic_energy(&self.topology, st),
+                    c.angle[i],
+                    c.time[i],
+                    kinetic_energy(&self.topology, &self.scratch),
                 );
                 self.first.get_or_insert(now);
                 self.last = now;
             }
-            if let Some(p) = s.pressure {
-                self.pressure = Some(self.pressure.map_or(p, |q| q.max(p)));
-                for f in s.piston_forces {
-                    raise(&mut self.gas_force, f.abs());
-                }
+        }
+        if let (Some(p), Some(f)) = (block.pressure, block.piston_force) {
+            for i in lanes.clone() {
+                self.pressure = Some(self.pressure.map_or(p[i], |q| q.max(p[i])));
+            }
+            if !st.pistons.is_empty() {
+                raise_over(&mut self.gas_force, lanes, |i| f[i].abs());
             }
         }
-        self.previous_time = last.state.crank.time;
-        self.previous = Some((last.state.crank.angle, last.state.crank.speed));
+        self.previous_time = c.time[last];
+        self.previous = Some((c.angle[last], c.speed[last]));
     }
 }
 
 impl Sink for SummarySink {
-    fn push(&mut self, s: &Step) -> Result<(), String> {
-        self.push_block(std::slice::from_ref(s))
-            .map_err(|(_, message)| message)
-    }
-
-    /// The steps up to each one that closes a chunk (its index a multiple of
-    /// its chunk) taken together, then the chunk closed.
-    fn push_block(&mut self, steps: &[Step]) -> Result<(), (usize, String)> {
-        let mut rest = steps;
-        while !rest.is_empty() {
-            let closing = rest.iter().position(|s| s.index % self.chunk == 0);
-            let (part, after) = rest.split_at(closing.map_or(rest.len(), |k| k + 1));
-            self.take(part);
-            if closing.is_some() {
+    /// The lanes up to each one that closes a chunk (its step's index a multiple of its chunk)
+    /// taken together, then the chunk closed.
+    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
+        let (n, mut lo) = (block.len(), 0);
+        while lo < n {
+            // The lane of the next step whose index is a multiple of the chunk.
+            let closing = (block.first + lo).next_multiple_of(self.chunk) - block.first;
+            let hi = (closing + 1).min(n);
+            self.take(block, lo..hi);
+            if closing < n {
                 self.close_chunk();
             }
-            rest = after;
+            lo = hi;
         }
         Ok(())
+    }
+
+    fn wants_steps(&self) -> bool {
+        false
     }
 }
 
