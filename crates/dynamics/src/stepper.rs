@@ -177,7 +177,8 @@ pub fn run(
     ];
     // The rated meshes' losses by joint, which the loss budget takes instead of computing them
     // again.
-    let mut mesh_losses: Vec<(usize, f64)> = Vec::with_capacity(out.first().map_or(0, |o| o.ratings.len()));
+    let mut mesh_losses: Vec<(usize, f64)> =
+        Vec::with_capacity(out.first().map_or(0, |o| o.ratings.len()));
     // The allocation of the block's steps, kept from block to block.
     let mut spare: Vec<Step<'static>> = Vec::with_capacity(block);
     let mut previous_torque = None;
@@ -222,7 +223,11 @@ pub fn run(
             total.clear(n);
         }
         for (family, out) in families.iter().zip(loads.iter_mut()) {
-            let f = if family.piston_forces() { applied } else { None };
+            let f = if family.piston_forces() {
+                applied
+            } else {
+                None
+            };
             family.loads(mechanism, &states, f, &total, out);
             if several {
                 total.add(out, n);
@@ -255,8 +260,11 @@ pub fn run(
             }
             let state: &State = state;
             forces.fill(force[i]);
-            for (((family, out), columns), share) in
-                families.iter().zip(step_loads.iter_mut()).zip(&loads).zip(shares)
+            for (((family, out), columns), share) in families
+                .iter()
+                .zip(step_loads.iter_mut())
+                .zip(&loads)
+                .zip(shares)
             {
                 columns.gather(i, out);
                 if details {
@@ -277,7 +285,13 @@ pub fn run(
             *friction_torque = 0.0;
             if let Some(budget) = losses.as_deref_mut() {
                 budget
-                    .evaluate(state, total, gas.map(|_| pressure[i]), &mesh_losses, power_losses)
+                    .evaluate(
+                        state,
+                        total,
+                        gas.map(|_| pressure[i]),
+                        &mesh_losses,
+                        power_losses,
+                    )
                     .map_err(|message| RunError::Sink { step, message })?;
                 let sum: f64 = power_losses.iter().sum();
                 if !sum.is_finite() {

@@ -4,7 +4,7 @@
 use crate::energy::kinetic_energy;
 use crate::metrics;
 use crate::stepper::{Sink, StepBlock};
-use cardan_mechanism::{JointKind, JointMotion, LoadsBlock, Mechanism, State, Topology, C};
+use cardan_mechanism::{JointKind, JointMotion, LoadsBlock, Mechanism, State, Topology, C, LANES};
 use std::ops::Range;
 
 /// One named scalar result, in SI units.
@@ -121,16 +121,18 @@ fn raise(peak: &mut f64, value: f64) {
 /// largest of them (the same result as raising one at a time: a maximum does not depend on
 /// the order).
 #[inline(always)]
-fn raise_over(peak: &mut f64, lanes: std::ops::Range<usize>, value: impl Fn(usize) -> f64) {
+fn raise_over(peak: &mut f64, lanes: Range<usize>, value: impl Fn(usize) -> f64) {
+    // Lanes of a block: bounded so, the compiler drops the columns' bounds checks.
+    let end = lanes.end.min(LANES);
     let mut m = [*peak; 8];
     let mut i = lanes.start;
-    while i + 8 <= lanes.end {
+    while i + 8 <= end {
         for (k, m) in m.iter_mut().enumerate() {
             raise(m, value(i + k));
         }
         i += 8;
     }
-    for i in i..lanes.end {
+    for i in i..end {
         raise(&mut m[0], value(i));
     }
     for v in m {
@@ -235,19 +237,22 @@ impl FamilyTotals {
         raise_over(&mut self.torque, lanes.clone(), |i| t[i].abs());
         // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
         // trapezoidal rule on the crank-angle grid.
+        // Summed in locals, kept in registers through the loop.
         let c = &block.state.crank;
-        let mut previous = previous;
-        for i in lanes {
+        let (mut work, mut abs_work, mut flow) = (self.work, self.abs_work, self.energy_flow);
+        let (mut previous, mut t0) = (previous, *torque);
+        for i in lanes.start..lanes.end.min(LANES) {
             let (t, angle, speed) = (t[i], c.angle[i], c.speed[i]);
             if let Some((a0, w0)) = previous {
-                let (h, t0) = (angle - a0, *torque);
-                self.work.add(0.5 * h * (t + t0));
-                self.abs_work.add(0.5 * h * (t.abs() + t0.abs()));
-                self.energy_flow.add(0.5 * h * (t * speed + t0 * w0));
+                let h = angle - a0;
+                work.add(0.5 * h * (t + t0));
+                abs_work.add(0.5 * h * (t.abs() + t0.abs()));
+                flow.add(0.5 * h * (t * speed + t0 * w0));
             }
-            *torque = t;
+            t0 = t;
             previous = Some((angle, speed));
         }
+        (self.work, self.abs_work, self.energy_flow, *torque) = (work, abs_work, flow, t0);
     }
 }
 
@@ -696,15 +701,16 @@ impl SummarySink {
         if let Some(p) = st.pistons.first() {
             raise_over(&mut self.lever, lanes.clone(), |i| p.dx_dtheta[i].abs());
             let mut previous = self.previous.map(|(angle, _)| angle);
-            for i in lanes.clone() {
+            let (mut integral, mut l0) = (self.lever_integral, self.previous_lever);
+            for i in lanes.start..lanes.end.min(LANES) {
                 let (angle, lever) = (c.angle[i], p.dx_dtheta[i].abs());
                 if let Some(a0) = previous {
-                    self.lever_integral
-                        .add(0.5 * (angle - a0) * (lever + self.previous_lever));
+                    integral.add(0.5 * (angle - a0) * (lever + l0));
                 }
-                self.previous_lever = lever;
+                l0 = lever;
                 previous = Some(angle);
             }
+            (self.lever_integral, self.previous_lever) = (integral, l0);
         }
         let steps = block.steps.get(lanes.clone()).unwrap_or_default();
         if let Some(l) = &mut self.losses {

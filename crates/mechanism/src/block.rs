@@ -101,6 +101,94 @@ pub struct StateBlock {
     pub pistons: Vec<PistonColumns>,
 }
 
+impl CrankColumns {
+    /// Sets lane `i`.
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, s: &CrankState) {
+        self.angle[i] = s.angle;
+        self.cos[i] = s.direction.re;
+        self.sin[i] = s.direction.im;
+        self.speed[i] = s.speed;
+        self.acceleration[i] = s.acceleration;
+        self.time[i] = s.time;
+    }
+}
+
+impl PointColumns {
+    /// Sets lane `i`.
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, m: &PointMotion) {
+        self.x[i] = m.position.re;
+        self.y[i] = m.position.im;
+        self.vx[i] = m.velocity.re;
+        self.vy[i] = m.velocity.im;
+        self.ax[i] = m.acceleration.re;
+        self.ay[i] = m.acceleration.im;
+    }
+}
+
+impl BodyColumns {
+    /// Lane `i`.
+    #[inline(always)]
+    pub fn at(&self, i: usize) -> BodyMotion {
+        let p = &self.cg;
+        BodyMotion {
+            cg: PointMotion {
+                position: C::new(p.x[i], p.y[i]),
+                velocity: C::new(p.vx[i], p.vy[i]),
+                acceleration: C::new(p.ax[i], p.ay[i]),
+            },
+            orientation: C::new(self.orientation_x[i], self.orientation_y[i]),
+            angular_velocity: self.angular_velocity[i],
+            angular_acceleration: self.angular_acceleration[i],
+        }
+    }
+
+    /// Sets lane `i`.
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, m: &BodyMotion) {
+        self.cg.set(i, &m.cg);
+        self.orientation_x[i] = m.orientation.re;
+        self.orientation_y[i] = m.orientation.im;
+        self.angular_velocity[i] = m.angular_velocity;
+        self.angular_acceleration[i] = m.angular_acceleration;
+    }
+}
+
+impl JointColumns {
+    /// Lane `i`.
+    #[inline(always)]
+    pub fn at(&self, i: usize) -> JointMotion {
+        JointMotion {
+            position: C::new(self.x[i], self.y[i]),
+            direction: C::new(self.direction_x[i], self.direction_y[i]),
+            relative_speed: self.relative_speed[i],
+        }
+    }
+
+    /// Sets lane `i`.
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, m: &JointMotion) {
+        self.x[i] = m.position.re;
+        self.y[i] = m.position.im;
+        self.direction_x[i] = m.direction.re;
+        self.direction_y[i] = m.direction.im;
+        self.relative_speed[i] = m.relative_speed;
+    }
+}
+
+impl PistonColumns {
+    /// Sets lane `i`.
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, m: &PistonMotion) {
+        self.position[i] = m.position;
+        self.velocity[i] = m.velocity;
+        self.acceleration[i] = m.acceleration;
+        self.dx_dtheta[i] = m.dx_dtheta;
+        self.d2x_dtheta2[i] = m.d2x_dtheta2;
+    }
+}
+
 fn point() -> PointColumns {
     PointColumns {
         x: ZERO,
@@ -175,69 +263,31 @@ impl StateBlock {
     /// Sets lane `i`'s crank state.
     #[inline(always)]
     pub fn set_crank(&mut self, i: usize, s: &CrankState) {
-        let c = &mut self.crank;
-        c.angle[i] = s.angle;
-        c.cos[i] = s.direction.re;
-        c.sin[i] = s.direction.im;
-        c.speed[i] = s.speed;
-        c.acceleration[i] = s.acceleration;
-        c.time[i] = s.time;
+        self.crank.set(i, s);
     }
 
     /// Body `k`'s motion at lane `i`.
     #[inline(always)]
     pub fn body(&self, k: usize, i: usize) -> BodyMotion {
-        let b = &self.bodies[k];
-        let p = &b.cg;
-        BodyMotion {
-            cg: PointMotion {
-                position: C::new(p.x[i], p.y[i]),
-                velocity: C::new(p.vx[i], p.vy[i]),
-                acceleration: C::new(p.ax[i], p.ay[i]),
-            },
-            orientation: C::new(b.orientation_x[i], b.orientation_y[i]),
-            angular_velocity: b.angular_velocity[i],
-            angular_acceleration: b.angular_acceleration[i],
-        }
+        self.bodies[k].at(i)
     }
 
     /// Sets body `k`'s motion at lane `i`.
     #[inline(always)]
     pub fn set_body(&mut self, k: usize, i: usize, m: &BodyMotion) {
-        let b = &mut self.bodies[k];
-        let p = &mut b.cg;
-        p.x[i] = m.cg.position.re;
-        p.y[i] = m.cg.position.im;
-        p.vx[i] = m.cg.velocity.re;
-        p.vy[i] = m.cg.velocity.im;
-        p.ax[i] = m.cg.acceleration.re;
-        p.ay[i] = m.cg.acceleration.im;
-        b.orientation_x[i] = m.orientation.re;
-        b.orientation_y[i] = m.orientation.im;
-        b.angular_velocity[i] = m.angular_velocity;
-        b.angular_acceleration[i] = m.angular_acceleration;
+        self.bodies[k].set(i, m);
     }
 
     /// Joint `k`'s motion at lane `i`.
     #[inline(always)]
     pub fn joint(&self, k: usize, i: usize) -> JointMotion {
-        let j = &self.joints[k];
-        JointMotion {
-            position: C::new(j.x[i], j.y[i]),
-            direction: C::new(j.direction_x[i], j.direction_y[i]),
-            relative_speed: j.relative_speed[i],
-        }
+        self.joints[k].at(i)
     }
 
     /// Sets joint `k`'s motion at lane `i`.
     #[inline(always)]
     pub fn set_joint(&mut self, k: usize, i: usize, m: &JointMotion) {
-        let j = &mut self.joints[k];
-        j.x[i] = m.position.re;
-        j.y[i] = m.position.im;
-        j.direction_x[i] = m.direction.re;
-        j.direction_y[i] = m.direction.im;
-        j.relative_speed[i] = m.relative_speed;
+        self.joints[k].set(i, m);
     }
 
     /// Piston `k`'s motion at lane `i`.
@@ -256,12 +306,7 @@ impl StateBlock {
     /// Sets piston `k`'s motion at lane `i`.
     #[inline(always)]
     pub fn set_piston(&mut self, k: usize, i: usize, m: &PistonMotion) {
-        let p = &mut self.pistons[k];
-        p.position[i] = m.position;
-        p.velocity[i] = m.velocity;
-        p.acceleration[i] = m.acceleration;
-        p.dx_dtheta[i] = m.dx_dtheta;
-        p.d2x_dtheta2[i] = m.d2x_dtheta2;
+        self.pistons[k].set(i, m);
     }
 
     /// Lane `i` as a state (a [`State::for_topology`] of the same topology), all but its extras.
@@ -318,6 +363,16 @@ pub struct JointLoadColumns {
     pub moment: Column,
 }
 
+impl JointLoadColumns {
+    /// Sets lane `i`.
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, load: &JointLoad) {
+        self.fx[i] = load.force.re;
+        self.fy[i] = load.force.im;
+        self.moment[i] = load.moment;
+    }
+}
+
 /// The loads of one family over a block, keyed by joint (the fields of [`Loads`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LoadsBlock {
@@ -352,10 +407,7 @@ impl LoadsBlock {
     /// Sets joint `k`'s load at lane `i`.
     #[inline(always)]
     pub fn set(&mut self, k: usize, i: usize, load: &JointLoad) {
-        let j = &mut self.joints[k];
-        j.fx[i] = load.force.re;
-        j.fy[i] = load.force.im;
-        j.moment[i] = load.moment;
+        self.joints[k].set(i, load);
     }
 
     /// Lane `i` as loads (a [`Loads::for_topology`] of the same topology).

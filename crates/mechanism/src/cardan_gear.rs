@@ -38,8 +38,8 @@ use crate::model::{
 use crate::{
     check_length, check_rod_cg, number, word, CrankState, Entry, MachineGeometry, Mechanism,
 };
-use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 use crate::{Column, LoadsBlock, StateBlock, LANES};
+use crate::{MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 
 /// The registry line.
 pub const ENTRY: Entry = Entry {
@@ -208,82 +208,6 @@ impl CardanGear {
     }
 }
 
-impl CardanGear {
-    /// Lane `i` of `st` at the crank state `crank`.
-    #[inline(always)]
-    fn fill_lane(&self, crank: &CrankState, st: &mut StateBlock, i: usize) {
-        let (w, a) = (crank.speed, crank.acceleration);
-        let r = self.crank;
-        let e_a = crank.direction;
-        let (s, c) = (e_a.im, e_a.re);
-        let crank_pin = PointMotion::on_crank(r, crank);
-        // T on the cylinder axis: (A4.2.2.60), (A4.2.2.68), (A4.2.2.73).
-        let y = 2.0 * r * s;
-        let v = 2.0 * r * w * c;
-        let acc = 2.0 * r * (a * c - w * w * s);
-        let up = C::new(0.0, 1.0);
-        st.set_crank(i, crank);
-        st.set_body(
-            CRANKSHAFT,
-            i,
-            &BodyMotion {
-                cg: PointMotion::default(),
-                orientation: e_a,
-                angular_velocity: w,
-                angular_acceleration: a,
-            },
-        );
-        // The wheel turns at −ω (A4.2.2.66, A4.2.2.71); the line S→T is at π − θ.
-        st.set_body(
-            WHEEL,
-            i,
-            &BodyMotion {
-                cg: crank_pin,
-                orientation: C::new(-c, s),
-                angular_velocity: -w,
-                angular_acceleration: -a,
-            },
-        );
-        st.set_body(
-            ROD,
-            i,
-            &BodyMotion {
-                cg: PointMotion {
-                    position: C::new(0.0, y + self.masses.rod_cg),
-                    velocity: v * up,
-                    acceleration: acc * up,
-                },
-                orientation: up,
-                angular_velocity: 0.0,
-                angular_acceleration: 0.0,
-            },
-        );
-        // Body relative to other: crankshaft to wheel 2ω; rod to wheel +ω (A9.1.15, A9.1.17).
-        let joint = |position, direction, relative_speed| JointMotion {
-            position,
-            direction,
-            relative_speed,
-        };
-        let zero = C::new(0.0, 0.0);
-        st.set_joint(0, i, &joint(zero, zero, w));
-        st.set_joint(1, i, &joint(crank_pin.position, zero, 2.0 * w));
-        st.set_joint(2, i, &joint(C::new(0.0, y), zero, w));
-        // (A8.1.7): the pitch-line velocity, twice the crank-pin speed.
-        st.set_joint(3, i, &joint(2.0 * r * e_a, -e_a, 2.0 * r * w));
-        st.set_piston(
-            0,
-            i,
-            &PistonMotion {
-                position: y + self.rod,
-                velocity: v,
-                acceleration: acc,
-                dx_dtheta: 2.0 * r * c,
-                d2x_dtheta2: -2.0 * r * s,
-            },
-        );
-    }
-}
-
 impl Mechanism for CardanGear {
     fn name(&self) -> &'static str {
         ENTRY.name
@@ -297,9 +221,77 @@ impl Mechanism for CardanGear {
         &self.masses
     }
 
+    /// Writes only the columns that are not zero at every step (a block starts zeroed): the
+    /// fill is bound by its stores.
     fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+        let StateBlock {
+            crank: cc,
+            bodies,
+            joints,
+            pistons,
+            ..
+        } = block;
+        let ([shaft, wheel, rod], [main, pin, rod_pin, mesh], [piston]) =
+            (&mut bodies[..], &mut joints[..], &mut pistons[..])
+        else {
+            unreachable!("the cardan gear's topology")
+        };
+        let r = self.crank;
         for (i, crank) in cranks.iter().take(LANES).enumerate() {
-            self.fill_lane(crank, block, i);
+            let (w, a) = (crank.speed, crank.acceleration);
+            let e_a = crank.direction;
+            let (s, c) = (e_a.im, e_a.re);
+            // T on the cylinder axis: (A4.2.2.60), (A4.2.2.68), (A4.2.2.73).
+            let y = 2.0 * r * s;
+            let v = 2.0 * r * w * c;
+            let acc = 2.0 * r * (a * c - w * w * s);
+            cc.set(i, crank);
+            // The crankshaft turns about its centre of gravity, on the main axis.
+            shaft.orientation_x[i] = c;
+            shaft.orientation_y[i] = s;
+            shaft.angular_velocity[i] = w;
+            shaft.angular_acceleration[i] = a;
+            // The wheel's centre is the crank pin; it turns at −ω (A4.2.2.66, A4.2.2.71); the
+            // line S→T is at π − θ.
+            let crank_pin = PointMotion::on_crank(r, crank);
+            wheel.cg.set(i, &crank_pin);
+            wheel.orientation_x[i] = -c;
+            wheel.orientation_y[i] = s;
+            wheel.angular_velocity[i] = -w;
+            wheel.angular_acceleration[i] = -a;
+            // The rod slides along the cylinder axis (+y) without turning.
+            rod.cg.y[i] = y + self.masses.rod_cg;
+            rod.cg.vy[i] = v;
+            rod.cg.ay[i] = acc;
+            rod.orientation_y[i] = 1.0;
+            // Body relative to other: crankshaft to wheel 2ω; rod to wheel +ω (A9.1.15,
+            // A9.1.17).
+            main.relative_speed[i] = w;
+            pin.x[i] = crank_pin.position.re;
+            pin.y[i] = crank_pin.position.im;
+            pin.relative_speed[i] = 2.0 * w;
+            rod_pin.y[i] = y;
+            rod_pin.relative_speed[i] = w;
+            // The pitch point, towards the wheel's centre, and (A8.1.7) the pitch-line
+            // velocity, twice the crank-pin speed.
+            mesh.set(
+                i,
+                &JointMotion {
+                    position: 2.0 * r * e_a,
+                    direction: -e_a,
+                    relative_speed: 2.0 * r * w,
+                },
+            );
+            piston.set(
+                i,
+                &PistonMotion {
+                    position: y + self.rod,
+                    velocity: v,
+                    acceleration: acc,
+                    dx_dtheta: 2.0 * r * c,
+                    d2x_dtheta2: -2.0 * r * s,
+                },
+            );
         }
     }
 
@@ -348,27 +340,35 @@ impl Mechanism for CardanGear {
             MeshModel::Involute => crank_inertia,
         };
         let force = |force: C| JointLoad { force, moment: 0.0 };
+        let (c, rod, rod_pin, pin) = (&st.crank, &st.bodies[ROD], &st.joints[2], &st.joints[1]);
+        let LoadsBlock {
+            joints,
+            crank_torque,
+        } = out;
+        let [main, crank_pin_load, rod_pin_load, mesh_load] = &mut joints[..] else {
+            unreachable!("the cardan gear's topology")
+        };
         for i in 0..st.len.min(LANES) {
             let gas = piston_force.map_or(0.0, |f| f[i]);
-            let p = -mass * st.body(ROD, i).cg.acceleration - C::new(0.0, gas);
-            let alpha = st.crank.acceleration[i];
-            let s = st.joint(1, i).position;
+            let p = -mass * C::new(rod.cg.ax[i], rod.cg.ay[i]) - C::new(0.0, gas);
+            let alpha = c.acceleration[i];
+            let s = C::new(pin.x[i], pin.y[i]);
             let mesh = match self.mesh {
                 MeshModel::Karhula => p, // (A5.2.1.48-51)
                 MeshModel::Involute => {
                     // Moments about S: (T − S)×P + r·F_t = J_w·α_w, with α_w = −α.
-                    let t = st.joint(2, i).position;
+                    let t = C::new(rod_pin.x[i], rod_pin.y[i]);
                     let f_t = (-wheel_inertia * alpha - cross(t - s, p)) / self.crank;
-                    let e = C::new(st.crank.cos[i], st.crank.sin[i]);
+                    let e = C::new(c.cos[i], c.sin[i]);
                     f_t * C::i() * e - f_t.abs() * self.pressure_angle.tan() * e
                 }
             };
             let crank_pin = p + mesh; // 2·P in the thesis reading (A5.2.1.51)
-            out.set(0, i, &force(-crank_pin)); // (A5.2.1.54)
-            out.set(1, i, &force(crank_pin));
-            out.set(2, i, &force(-p)); // (A5.2.1.49)
-            out.set(3, i, &force(mesh));
-            out.crank_torque[i] = lumped * alpha - cross(s, crank_pin); // −T_Σi10c (A5.2.1.69)
+            main.set(i, &force(-crank_pin)); // (A5.2.1.54)
+            crank_pin_load.set(i, &force(crank_pin));
+            rod_pin_load.set(i, &force(-p)); // (A5.2.1.49)
+            mesh_load.set(i, &force(mesh));
+            crank_torque[i] = lumped * alpha - cross(s, crank_pin); // −T_Σi10c (A5.2.1.69)
         }
         true
     }

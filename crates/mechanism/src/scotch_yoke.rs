@@ -15,10 +15,10 @@
 //! couple and no side force.
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Bearings, Body, Joint, JointLoad, JointMotion, Piston, PistonMotion, Topology};
-use crate::{Column, LoadsBlock, StateBlock, LANES};
+use crate::model::{cross, Bearings, Body, Joint, JointLoad, Piston, PistonMotion, Topology};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
-use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
+use crate::{Column, LoadsBlock, StateBlock, LANES};
+use crate::{MechanismError, Options, PointMotion, C};
 
 /// The registry line.
 pub const ENTRY: Entry = Entry {
@@ -116,78 +116,6 @@ impl ScotchYoke {
     }
 }
 
-impl ScotchYoke {
-    /// Lane `i` of `st` at the crank state `crank`.
-    #[inline(always)]
-    fn fill_lane(&self, crank: &CrankState, st: &mut StateBlock, i: usize) {
-        let (w, a) = (crank.speed, crank.acceleration);
-        let r = self.crank;
-        let e_a = crank.direction;
-        let (s, c) = (e_a.im, e_a.re);
-        let pin = PointMotion::on_crank(r, crank);
-        // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
-        let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
-        let up = C::new(0.0, 1.0);
-        st.set_crank(i, crank);
-        st.set_body(
-            CRANKSHAFT,
-            i,
-            &BodyMotion {
-                cg: PointMotion::default(),
-                orientation: e_a,
-                angular_velocity: w,
-                angular_acceleration: a,
-            },
-        );
-        st.set_body(
-            BLOCK,
-            i,
-            &BodyMotion {
-                cg: pin,
-                orientation: C::new(1.0, 0.0),
-                angular_velocity: 0.0,
-                angular_acceleration: 0.0,
-            },
-        );
-        st.set_body(
-            YOKE,
-            i,
-            &BodyMotion {
-                cg: PointMotion {
-                    position: C::new(0.0, y + self.masses.rod_cg),
-                    velocity: v * up,
-                    acceleration: acc * up,
-                },
-                orientation: up,
-                angular_velocity: 0.0,
-                angular_acceleration: 0.0,
-            },
-        );
-        let joint = |position, direction, relative_speed| JointMotion {
-            position,
-            direction,
-            relative_speed,
-        };
-        let zero = C::new(0.0, 0.0);
-        st.set_joint(0, i, &joint(zero, zero, w));
-        st.set_joint(1, i, &joint(pin.position, zero, w)); // the block does not turn
-        // The yoke relative to the block, along +x.
-        st.set_joint(2, i, &joint(pin.position, C::new(1.0, 0.0), -pin.velocity.re));
-        st.set_joint(3, i, &joint(C::new(0.0, y + self.rod), up, v));
-        st.set_piston(
-            0,
-            i,
-            &PistonMotion {
-                position: y + self.rod,
-                velocity: v,
-                acceleration: acc,
-                dx_dtheta: r * c,
-                d2x_dtheta2: -r * s,
-            },
-        );
-    }
-}
-
 impl Mechanism for ScotchYoke {
     fn name(&self) -> &'static str {
         ENTRY.name
@@ -201,9 +129,66 @@ impl Mechanism for ScotchYoke {
         &self.masses
     }
 
+    /// Writes only the columns that are not zero at every step (a block starts zeroed): the
+    /// fill is bound by its stores.
     fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+        let StateBlock {
+            crank: cc,
+            bodies,
+            joints,
+            pistons,
+            ..
+        } = block;
+        let ([shaft, slider, yoke], [main, pin, slot, guide], [piston]) =
+            (&mut bodies[..], &mut joints[..], &mut pistons[..])
+        else {
+            unreachable!("the Scotch yoke's topology")
+        };
+        let r = self.crank;
         for (i, crank) in cranks.iter().take(LANES).enumerate() {
-            self.fill_lane(crank, block, i);
+            let (w, a) = (crank.speed, crank.acceleration);
+            let e_a = crank.direction;
+            let (s, c) = (e_a.im, e_a.re);
+            let crank_pin = PointMotion::on_crank(r, crank);
+            // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
+            let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
+            cc.set(i, crank);
+            // The crankshaft turns about its centre of gravity, on the main axis.
+            shaft.orientation_x[i] = c;
+            shaft.orientation_y[i] = s;
+            shaft.angular_velocity[i] = w;
+            shaft.angular_acceleration[i] = a;
+            // The block rides on the crank pin without turning.
+            slider.cg.set(i, &crank_pin);
+            slider.orientation_x[i] = 1.0;
+            // The yoke slides along the cylinder axis (+y) without turning.
+            yoke.cg.y[i] = y + self.masses.rod_cg;
+            yoke.cg.vy[i] = v;
+            yoke.cg.ay[i] = acc;
+            yoke.orientation_y[i] = 1.0;
+            main.relative_speed[i] = w;
+            pin.x[i] = crank_pin.position.re;
+            pin.y[i] = crank_pin.position.im;
+            pin.relative_speed[i] = w; // the block does not turn
+                                       // The yoke relative to the block, along +x.
+            slot.x[i] = crank_pin.position.re;
+            slot.y[i] = crank_pin.position.im;
+            slot.direction_x[i] = 1.0;
+            slot.relative_speed[i] = -crank_pin.velocity.re;
+            // The guides, along the axis.
+            guide.y[i] = y + self.rod;
+            guide.direction_y[i] = 1.0;
+            guide.relative_speed[i] = v;
+            piston.set(
+                i,
+                &PistonMotion {
+                    position: y + self.rod,
+                    velocity: v,
+                    acceleration: acc,
+                    dx_dtheta: r * c,
+                    d2x_dtheta2: -r * s,
+                },
+            );
         }
     }
 
@@ -241,23 +226,30 @@ impl Mechanism for ScotchYoke {
             (0.0, 0.0)
         };
         let force = |force: C| JointLoad { force, moment: 0.0 };
+        let (yoke, pin) = (&st.bodies[YOKE], &st.joints[1]);
+        let LoadsBlock {
+            joints,
+            crank_torque,
+        } = out;
+        let [main, pin_load, slot_load, guide_load] = &mut joints[..] else {
+            unreachable!("the Scotch yoke's topology")
+        };
         for i in 0..st.len.min(LANES) {
             let gas = piston_force.map_or(0.0, |f| f[i]);
-            let yoke = st.body(YOKE, i).cg;
+            let yoke = yoke.at(i).cg;
             let slot = mass * yoke.acceleration + C::new(0.0, gas);
-            let a_pin = st.joint(1, i).position;
-            out.set(0, i, &force(slot));
-            out.set(1, i, &force(-slot));
-            out.set(2, i, &force(slot));
-            out.set(
-                3,
+            let a_pin = pin.at(i).position;
+            main.set(i, &force(slot));
+            pin_load.set(i, &force(-slot));
+            slot_load.set(i, &force(slot));
+            guide_load.set(
                 i,
                 &JointLoad {
                     force: C::new(0.0, 0.0),
                     moment: -cross(a_pin - yoke.position, slot),
                 },
             );
-            out.crank_torque[i] = crank_inertia * st.crank.acceleration[i] + cross(a_pin, slot);
+            crank_torque[i] = crank_inertia * st.crank.acceleration[i] + cross(a_pin, slot);
         }
         true
     }

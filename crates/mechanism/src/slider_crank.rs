@@ -13,11 +13,12 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
-    cross, Bearings, Body, Extra, Joint, JointLoad, JointMotion, Piston, PistonMotion, State,
-    Topology,
+    cross, Bearings, Body, Extra, Joint, JointLoad, Piston, PistonMotion, State, Topology,
 };
-use crate::{Column, LoadsBlock, StateBlock, LANES};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::{
+    BodyColumns, Column, CrankColumns, JointColumns, LoadsBlock, PistonColumns, StateBlock, LANES,
+};
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
 /// The registry line.
@@ -36,6 +37,16 @@ const PISTON: usize = 2;
 
 /// Crank states whose rod angles [`SliderCrank`]'s `fill_block` computes together.
 const BLOCK: usize = 8;
+
+/// The columns of a block that the slider-crank's fill writes (the rest stay zero).
+struct Parts<'a> {
+    crank: &'a mut CrankColumns,
+    shaft: &'a mut BodyColumns,
+    rod: &'a mut BodyColumns,
+    piston: &'a mut BodyColumns,
+    joints: &'a mut [JointColumns; 4],
+    cylinder: &'a mut PistonColumns,
+}
 
 /// Slider-crank geometry and masses.
 #[derive(Debug, Clone, PartialEq)]
@@ -154,7 +165,7 @@ impl SliderCrank {
         (cos_ba, sin_ba, d1, d2)
     }
 
-    /// Lane `i` of `st` at the crank state `crank`, with the rod angles (cos θ_BA, sin θ_BA,
+    /// Lane `lane` of a block's `parts` at the crank state `crank`, with the rod angles (cos θ_BA, sin θ_BA,
     /// dθ_BA/dθ, d²θ_BA/dθ²) of [`Self::rod_angles`] given.
     // Inlined into `fill_block`'s loop: a call per step cost 7 % of a run.
     #[inline(always)]
@@ -162,7 +173,7 @@ impl SliderCrank {
         &self,
         crank: &CrankState,
         (cos_ba, sin_ba, d1, d2): (f64, f64, f64, f64),
-        st: &mut StateBlock,
+        parts: &mut Parts,
         lane: usize,
     ) {
         let (w, a) = (crank.speed, crank.acceleration);
@@ -187,19 +198,14 @@ impl SliderCrank {
             acceleration: C::new(0.0, pin.acceleration.im),
         };
         let rod_cg = along(self.masses.rod_cg);
-        st.set_crank(lane, crank);
-        st.set_body(
-            CRANKSHAFT,
-            lane,
-            &BodyMotion {
-                cg: PointMotion::default(),
-                orientation: e_a,
-                angular_velocity: w,
-                angular_acceleration: a,
-            },
-        );
-        st.set_body(
-            ROD,
+        parts.crank.set(lane, crank);
+        // The crankshaft turns about its centre of gravity, on the main axis.
+        let shaft = &mut *parts.shaft;
+        shaft.orientation_x[lane] = e_a.re;
+        shaft.orientation_y[lane] = e_a.im;
+        shaft.angular_velocity[lane] = w;
+        shaft.angular_acceleration[lane] = a;
+        parts.rod.set(
             lane,
             &BodyMotion {
                 cg: rod_cg,
@@ -208,30 +214,28 @@ impl SliderCrank {
                 angular_acceleration: a_ba,
             },
         );
-        st.set_body(
-            PISTON,
-            lane,
-            &BodyMotion {
-                cg: piston_pin,
-                orientation: C::new(1.0, 0.0),
-                ..BodyMotion::default()
-            },
-        );
-        let axis = C::new(0.0, 1.0);
-        let joint = |position, direction, relative_speed| JointMotion {
-            position,
-            direction,
-            relative_speed,
-        };
-        let zero = C::new(0.0, 0.0);
+        // The piston slides along the cylinder without turning.
+        let piston = &mut *parts.piston;
+        piston.cg.x[lane] = piston_pin.position.re;
+        piston.cg.y[lane] = piston_pin.position.im;
+        piston.cg.vy[lane] = piston_pin.velocity.im;
+        piston.cg.ay[lane] = piston_pin.acceleration.im;
+        piston.orientation_x[lane] = 1.0;
         // Relative speeds of the joints (A9.1.14-18), body relative to other.
-        st.set_joint(0, lane, &joint(zero, zero, w));
-        st.set_joint(1, lane, &joint(crank_pin.position, zero, w - w_ba));
-        st.set_joint(2, lane, &joint(piston_pin.position, zero, -w_ba));
-        st.set_joint(3, lane, &joint(piston_pin.position, axis, pin.velocity.im));
+        let [main, crank_pin_joint, piston_pin_joint, slide] = &mut *parts.joints;
+        main.relative_speed[lane] = w;
+        crank_pin_joint.x[lane] = crank_pin.position.re;
+        crank_pin_joint.y[lane] = crank_pin.position.im;
+        crank_pin_joint.relative_speed[lane] = w - w_ba;
+        piston_pin_joint.x[lane] = piston_pin.position.re;
+        piston_pin_joint.y[lane] = piston_pin.position.im;
+        piston_pin_joint.relative_speed[lane] = -w_ba;
+        slide.x[lane] = piston_pin.position.re;
+        slide.y[lane] = piston_pin.position.im;
+        slide.direction_y[lane] = 1.0; // the cylinder axis
+        slide.relative_speed[lane] = pin.velocity.im;
         // dx/dθ and d²x/dθ²: the piston velocity and acceleration at ω = 1 rad/s, α = 0.
-        st.set_piston(
-            0,
+        parts.cylinder.set(
             lane,
             &PistonMotion {
                 position: pin.position.im,
@@ -260,6 +264,28 @@ impl Mechanism for SliderCrank {
     /// The rod angles of the whole block first: their square roots and divisions are
     /// independent across steps, so the processor overlaps them instead of waiting on each.
     fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+        let StateBlock {
+            crank,
+            bodies,
+            joints,
+            pistons,
+            ..
+        } = block;
+        let ([shaft, rod, piston], Ok(joints), [cylinder]) = (
+            &mut bodies[..],
+            <&mut [JointColumns; 4]>::try_from(&mut joints[..]),
+            &mut pistons[..],
+        ) else {
+            unreachable!("the slider-crank's topology")
+        };
+        let mut parts = Parts {
+            crank,
+            shaft,
+            rod,
+            piston,
+            joints,
+            cylinder,
+        };
         let mut angles = [(0.0, 0.0, 0.0, 0.0); BLOCK];
         let cranks = &cranks[..cranks.len().min(LANES)];
         for (k, cranks) in cranks.chunks(BLOCK).enumerate() {
@@ -267,7 +293,7 @@ impl Mechanism for SliderCrank {
                 *a = self.rod_angles(c.direction.re, c.direction.im);
             }
             for (j, (c, a)) in cranks.iter().zip(angles).enumerate() {
-                self.fill_lane(c, a, block, k * BLOCK + j);
+                self.fill_lane(c, a, &mut parts, k * BLOCK + j);
             }
         }
     }
@@ -334,9 +360,17 @@ impl Mechanism for SliderCrank {
             (0.0, 0.0, 0.0, 0.0)
         };
         let force = |force: C| JointLoad { force, moment: 0.0 };
+        let (rod, piston, crank_pin) = (&st.bodies[ROD], &st.bodies[PISTON], &st.joints[1]);
+        let LoadsBlock {
+            joints,
+            crank_torque,
+        } = out;
+        let [main, crank_pin_load, piston_pin_load, slide_load] = &mut joints[..] else {
+            unreachable!("the slider-crank's topology")
+        };
         for i in 0..st.len.min(LANES) {
-            let rod = st.body(ROD, i);
-            let a_pin = st.joint(1, i).position;
+            let rod = rod.at(i);
+            let a_pin = crank_pin.at(i).position;
             let e_rod = rod.orientation;
             // One reciprocal of the rod's sine serves both divisions below.
             let inverse_sin = 1.0 / e_rod.im;
@@ -348,11 +382,12 @@ impl Mechanism for SliderCrank {
             let f_ine2 = -rod_mass * rod.cg.acceleration;
             let couple = -rod_inertia * rod.angular_acceleration;
             let moment_about_crank_pin = cross(m.rod_cg * e_rod, f_ine2) + couple;
-            let f_piston_on_rod = C::new(moment_about_crank_pin * self.inverse_rod * inverse_sin, 0.0);
+            let f_piston_on_rod =
+                C::new(moment_about_crank_pin * self.inverse_rod * inverse_sin, 0.0);
             let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
 
             // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
-            let load = -piston_mass * st.body(PISTON, i).cg.acceleration
+            let load = -piston_mass * piston.at(i).cg.acceleration
                 - C::new(0.0, piston_force.map_or(0.0, |f| f[i]));
             let f_rod_on_piston_3 = -load.im * inverse_sin * e_rod;
             let side_3 = -(load.re + f_rod_on_piston_3.re); // (A5.2.1.20)
@@ -361,12 +396,12 @@ impl Mechanism for SliderCrank {
             let crankshaft = crank_inertia * st.crank.acceleration[i]; // −T_ine1 (A5.2.1.1)
             let rod_share = -cross(a_pin, -f_crank_on_rod_2); // −T_2i10 (A5.2.1.15)
             let piston_share = -cross(a_pin, -f_rod_on_piston_3); // −T_3i10 (A5.2.1.23)
-            // (A5.2.1.25): the crankshaft's centre of gravity is on its axis.
-            out.set(0, i, &force(f_crank_on_rod));
-            out.set(1, i, &force(-f_crank_on_rod)); // (A5.2.1.28)
-            out.set(2, i, &force(f_rod_on_piston_3 - f_piston_on_rod));
-            out.set(3, i, &force(C::new(f_piston_on_rod.re + side_3, 0.0)));
-            out.crank_torque[i] = crankshaft + rod_share + piston_share; // −T_Σi10 (A5.2.1.36)
+                                                                  // (A5.2.1.25): the crankshaft's centre of gravity is on its axis.
+            main.set(i, &force(f_crank_on_rod));
+            crank_pin_load.set(i, &force(-f_crank_on_rod)); // (A5.2.1.28)
+            piston_pin_load.set(i, &force(f_rod_on_piston_3 - f_piston_on_rod));
+            slide_load.set(i, &force(C::new(f_piston_on_rod.re + side_3, 0.0)));
+            crank_torque[i] = crankshaft + rod_share + piston_share; // −T_Σi10 (A5.2.1.36)
         }
         true
     }
