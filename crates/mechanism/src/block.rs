@@ -16,7 +16,8 @@ pub const LANES: usize = 64;
 /// One quantity over the steps of a block, in the unit of the quantity it holds.
 pub type Column = [f64; LANES];
 
-const ZERO: Column = [0.0; LANES];
+/// A column of zeros.
+pub const ZERO: Column = [0.0; LANES];
 
 /// The crank state of every step of a block (the fields of [`CrankState`]).
 #[derive(Debug, Clone, PartialEq)]
@@ -364,6 +365,13 @@ pub struct JointLoadColumns {
 }
 
 impl JointLoadColumns {
+    /// Sets lane `i`'s force (its couple left as it is).
+    #[inline(always)]
+    pub fn set_force(&mut self, i: usize, force: C) {
+        self.fx[i] = force.re;
+        self.fy[i] = force.im;
+    }
+
     /// Sets lane `i`.
     #[inline(always)]
     pub fn set(&mut self, i: usize, load: &JointLoad) {

@@ -32,13 +32,12 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
-    cross, Bearings, Body, Joint, JointKind, JointLoad, JointMotion, MeshForce, Piston,
-    PistonMotion, Topology,
+    cross, Bearings, Body, Joint, JointKind, JointMotion, MeshForce, Piston, PistonMotion, Topology,
 };
 use crate::{
     check_length, check_rod_cg, number, word, CrankState, Entry, MachineGeometry, Mechanism,
 };
-use crate::{Column, LoadsBlock, StateBlock, LANES};
+use crate::{Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 
 /// The registry line.
@@ -339,8 +338,9 @@ impl Mechanism for CardanGear {
             MeshModel::Karhula => crank_inertia + wheel_inertia,
             MeshModel::Involute => crank_inertia,
         };
-        let force = |force: C| JointLoad { force, moment: 0.0 };
         let (c, rod, rod_pin, pin) = (&st.crank, &st.bodies[ROD], &st.joints[2], &st.joints[1]);
+        let gas = piston_force.unwrap_or(&ZERO);
+        let tan = self.pressure_angle.tan();
         let LoadsBlock {
             joints,
             crank_torque,
@@ -348,9 +348,9 @@ impl Mechanism for CardanGear {
         let [main, crank_pin_load, rod_pin_load, mesh_load] = &mut joints[..] else {
             unreachable!("the cardan gear's topology")
         };
+        // Pins and a mesh: no couple (their columns stay zero).
         for i in 0..st.len.min(LANES) {
-            let gas = piston_force.map_or(0.0, |f| f[i]);
-            let p = -mass * C::new(rod.cg.ax[i], rod.cg.ay[i]) - C::new(0.0, gas);
+            let p = -mass * C::new(rod.cg.ax[i], rod.cg.ay[i]) - C::new(0.0, gas[i]);
             let alpha = c.acceleration[i];
             let s = C::new(pin.x[i], pin.y[i]);
             let mesh = match self.mesh {
@@ -360,14 +360,14 @@ impl Mechanism for CardanGear {
                     let t = C::new(rod_pin.x[i], rod_pin.y[i]);
                     let f_t = (-wheel_inertia * alpha - cross(t - s, p)) / self.crank;
                     let e = C::new(c.cos[i], c.sin[i]);
-                    f_t * C::i() * e - f_t.abs() * self.pressure_angle.tan() * e
+                    f_t * C::i() * e - f_t.abs() * tan * e
                 }
             };
             let crank_pin = p + mesh; // 2·P in the thesis reading (A5.2.1.51)
-            main.set(i, &force(-crank_pin)); // (A5.2.1.54)
-            crank_pin_load.set(i, &force(crank_pin));
-            rod_pin_load.set(i, &force(-p)); // (A5.2.1.49)
-            mesh_load.set(i, &force(mesh));
+            main.set_force(i, -crank_pin); // (A5.2.1.54)
+            crank_pin_load.set_force(i, crank_pin);
+            rod_pin_load.set_force(i, -p); // (A5.2.1.49)
+            mesh_load.set_force(i, mesh);
             crank_torque[i] = lumped * alpha - cross(s, crank_pin); // −T_Σi10c (A5.2.1.69)
         }
         true

@@ -22,7 +22,7 @@ pub mod slider_crank;
 
 pub use block::{
     BodyColumns, Column, CrankColumns, JointColumns, JointLoadColumns, LoadsBlock, PistonColumns,
-    PointColumns, StateBlock, LANES,
+    PointColumns, StateBlock, LANES, ZERO,
 };
 pub use cardan_gear::{CardanGear, MeshModel};
 pub use hypotrochoid::Hypotrochoid;
@@ -117,8 +117,10 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
     /// The closed-form kinetostatics over a block, if the mechanism has them: the joint loads
     /// and drive torque caused by the bodies' inertia (if `inertia`) and by the force
     /// `piston_force` on every piston (N along the cylinder axis towards the crankshaft; none
-    /// without one), at the block's steps, written to `out`. Returns false (and leaves `out`
-    /// alone) where the general planar solve must serve.
+    /// without one), at the block's steps, written to `out` (made by
+    /// [`LoadsBlock::for_topology`] and only ever written by this method: the columns that
+    /// are zero at every step, a pin's couple say, may be left as they are). Returns false
+    /// (and leaves `out` alone) where the general planar solve must serve.
     fn closed_form_block(
         &self,
         _block: &StateBlock,

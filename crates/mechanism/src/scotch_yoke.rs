@@ -15,9 +15,9 @@
 //! couple and no side force.
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Bearings, Body, Joint, JointLoad, Piston, PistonMotion, Topology};
+use crate::model::{cross, Bearings, Body, Joint, Piston, PistonMotion, Topology};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
-use crate::{Column, LoadsBlock, StateBlock, LANES};
+use crate::{Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, Options, PointMotion, C};
 
 /// The registry line.
@@ -225,8 +225,8 @@ impl Mechanism for ScotchYoke {
         } else {
             (0.0, 0.0)
         };
-        let force = |force: C| JointLoad { force, moment: 0.0 };
         let (yoke, pin) = (&st.bodies[YOKE], &st.joints[1]);
+        let gas = piston_force.unwrap_or(&ZERO);
         let LoadsBlock {
             joints,
             crank_torque,
@@ -235,20 +235,15 @@ impl Mechanism for ScotchYoke {
             unreachable!("the Scotch yoke's topology")
         };
         for i in 0..st.len.min(LANES) {
-            let gas = piston_force.map_or(0.0, |f| f[i]);
             let yoke = yoke.at(i).cg;
-            let slot = mass * yoke.acceleration + C::new(0.0, gas);
+            let slot = mass * yoke.acceleration + C::new(0.0, gas[i]);
             let a_pin = pin.at(i).position;
-            main.set(i, &force(slot));
-            pin_load.set(i, &force(-slot));
-            slot_load.set(i, &force(slot));
-            guide_load.set(
-                i,
-                &JointLoad {
-                    force: C::new(0.0, 0.0),
-                    moment: -cross(a_pin - yoke.position, slot),
-                },
-            );
+            // Forces at the pins and the slot, a couple alone at the guides (the other
+            // columns stay zero).
+            main.set_force(i, slot);
+            pin_load.set_force(i, -slot);
+            slot_load.set_force(i, slot);
+            guide_load.moment[i] = -cross(a_pin - yoke.position, slot);
             crank_torque[i] = crank_inertia * st.crank.acceleration[i] + cross(a_pin, slot);
         }
         true

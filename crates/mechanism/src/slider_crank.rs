@@ -12,12 +12,11 @@
 //! `piston_pin` (piston–rod), `piston_side` (piston–cylinder wall, a slide along the axis).
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{
-    cross, Bearings, Body, Extra, Joint, JointLoad, Piston, PistonMotion, State, Topology,
-};
+use crate::model::{cross, Bearings, Body, Extra, Joint, Piston, PistonMotion, State, Topology};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{
     BodyColumns, Column, CrankColumns, JointColumns, LoadsBlock, PistonColumns, StateBlock, LANES,
+    ZERO,
 };
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
@@ -359,8 +358,8 @@ impl Mechanism for SliderCrank {
         } else {
             (0.0, 0.0, 0.0, 0.0)
         };
-        let force = |force: C| JointLoad { force, moment: 0.0 };
         let (rod, piston, crank_pin) = (&st.bodies[ROD], &st.bodies[PISTON], &st.joints[1]);
+        let gas = piston_force.unwrap_or(&ZERO);
         let LoadsBlock {
             joints,
             crank_torque,
@@ -387,8 +386,7 @@ impl Mechanism for SliderCrank {
             let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
 
             // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
-            let load = -piston_mass * piston.at(i).cg.acceleration
-                - C::new(0.0, piston_force.map_or(0.0, |f| f[i]));
+            let load = -piston_mass * piston.at(i).cg.acceleration - C::new(0.0, gas[i]);
             let f_rod_on_piston_3 = -load.im * inverse_sin * e_rod;
             let side_3 = -(load.re + f_rod_on_piston_3.re); // (A5.2.1.20)
 
@@ -396,11 +394,13 @@ impl Mechanism for SliderCrank {
             let crankshaft = crank_inertia * st.crank.acceleration[i]; // −T_ine1 (A5.2.1.1)
             let rod_share = -cross(a_pin, -f_crank_on_rod_2); // −T_2i10 (A5.2.1.15)
             let piston_share = -cross(a_pin, -f_rod_on_piston_3); // −T_3i10 (A5.2.1.23)
-                                                                  // (A5.2.1.25): the crankshaft's centre of gravity is on its axis.
-            main.set(i, &force(f_crank_on_rod));
-            crank_pin_load.set(i, &force(-f_crank_on_rod)); // (A5.2.1.28)
-            piston_pin_load.set(i, &force(f_rod_on_piston_3 - f_piston_on_rod));
-            slide_load.set(i, &force(C::new(f_piston_on_rod.re + side_3, 0.0)));
+                                                                  // (A5.2.1.25): the crankshaft's centre of gravity is on its axis. No couple at the
+                                                                  // pins nor, with the pin at the piston's centre of gravity, at the slide; and the
+                                                                  // slide carries no force along it (those columns stay zero).
+            main.set_force(i, f_crank_on_rod);
+            crank_pin_load.set_force(i, -f_crank_on_rod); // (A5.2.1.28)
+            piston_pin_load.set_force(i, f_rod_on_piston_3 - f_piston_on_rod);
+            slide_load.fx[i] = f_piston_on_rod.re + side_3;
             crank_torque[i] = crankshaft + rod_share + piston_share; // −T_Σi10 (A5.2.1.36)
         }
         true
