@@ -9,7 +9,7 @@ use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
 use cardan_mechanism::{
     Column, CrankState, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
-    LANES,
+    LANES, ZERO,
 };
 
 /// One step, as the sinks that take steps one at a time see it.
@@ -365,12 +365,14 @@ struct StepOut {
 
 /// For each step of `block`, the sum of the quantities [`check_finite`] checks: an infinity or
 /// a NaN among them makes it an infinity or a NaN (one addition per quantity, across the steps).
+// Lane by lane over several columns at once: an index reads them all.
+#[allow(clippy::needless_range_loop)]
 fn finite_sums(block: &StateBlock, pressure: Option<&Column>, loads: &[LoadsBlock]) -> Column {
     let n = block.len.min(LANES);
-    let c = &block.crank;
+    let (c, pressure) = (&block.crank, pressure.unwrap_or(&ZERO));
     let mut sum = [0.0; LANES];
     for i in 0..n {
-        sum[i] = c.speed[i] + c.time[i] + pressure.map_or(0.0, |p| p[i]);
+        sum[i] = c.speed[i] + c.time[i] + pressure[i];
     }
     for p in &block.pistons {
         for i in 0..n {
