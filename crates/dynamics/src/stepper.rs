@@ -236,14 +236,22 @@ pub fn run(
         let total: &LoadsBlock = if several { &total } else { &loads[0] };
         let gas_pressure = gas.map(|_| &pressure);
         let sums = finite_sums(&states, gas_pressure, &loads);
+        let clean = all_finite(&sums);
+        if let Some(t) = total.crank_torque[..n].last() {
+            previous_torque = Some(*t);
+        }
         for i in 0..n {
             let step = index + i;
-            if !sums[i].is_finite() {
+            if !clean && !sums[i].is_finite() {
                 let gas = gas.map(|_| (pressure[i], force[i]));
                 check_lane(step, &states, i, gas, families, &loads, mechanism)?;
             }
-            previous_torque = Some(total.crank_torque[i]);
-            let Some(o) = out.get_mut(i) else { continue };
+            let Some(o) = out.get_mut(i) else {
+                if clean {
+                    break;
+                }
+                continue;
+            };
             let StepOut {
                 state,
                 forces,
@@ -391,6 +399,19 @@ fn finite_sums(block: &StateBlock, pressure: Option<&Column>, loads: &[LoadsBloc
         }
     }
     sum
+}
+
+/// Whether every sum of [`finite_sums`] is finite (its lanes past the block's are zeros): s·0 is
+/// 0 for a finite s and NaN otherwise, added up in eight independent sums (a vector's lanes)
+/// rather than one long chain of additions.
+fn all_finite(sums: &Column) -> bool {
+    let mut acc = [0.0; 8];
+    for chunk in sums.chunks_exact(8) {
+        for (a, s) in acc.iter_mut().zip(chunk) {
+            *a += s * 0.0;
+        }
+    }
+    acc.iter().sum::<f64>() == 0.0
 }
 
 /// [`check_finite`] at lane `i` of a block (whose sum was not finite), with the gas's
