@@ -7,8 +7,8 @@
 
 use cardan_dynamics::{run_summary, Solver};
 use cardan_mechanism::{
-    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, Mechanism, MotionError,
-    MotionSource, Options, MECHANISMS,
+    CrankColumns, CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, Mechanism,
+    MotionError, MotionSource, Options, MECHANISMS,
 };
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
@@ -47,8 +47,8 @@ impl MotionSource for OneThread {
         true
     }
 
-    fn next_states(&mut self, out: &mut Vec<CrankState>, n: usize) -> Result<(), MotionError> {
-        self.0.next_states(out, n)
+    fn next_block(&mut self, out: &mut CrankColumns) -> (usize, Option<MotionError>) {
+        self.0.next_block(out)
     }
 }
 

@@ -8,8 +8,7 @@ use crate::family::LoadFamily;
 use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
 use cardan_mechanism::{
-    Column, CrankState, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
-    LANES, ZERO,
+    Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock, LANES, ZERO,
 };
 
 /// One step, as the sinks that take steps one at a time see it.
@@ -148,7 +147,6 @@ pub fn run(
     // (`Sink::push_block`); a solved motion's one at a time, each after the torque of the one
     // before.
     let block = if motion.prescribed() { LANES } else { 1 };
-    let mut cranks: Vec<CrankState> = Vec::with_capacity(block);
     let mut states = StateBlock::for_topology(topology);
     let (mut pressure, mut force) = ([0.0; LANES], [0.0; LANES]);
     let mut loads = vec![LoadsBlock::for_topology(topology); families.len()];
@@ -189,30 +187,31 @@ pub fn run(
     let several = families.len() > 1;
     let mut ended = false;
     while !ended {
-        cranks.clear();
         let mut stopped = None;
         if block > 1 {
-            if let Err(source) = motion.next_states(&mut cranks, block) {
+            if let Some(source) = states.fill_next(mechanism, motion) {
                 stopped = Some(RunError::Motion {
-                    step: index + cranks.len(),
+                    step: index + states.len,
                     source,
                 });
             }
-            ended = cranks.len() < block;
+            ended = states.len < block;
         } else {
-            match motion.next(previous_torque) {
-                None => ended = true,
-                Some(Ok(crank)) => cranks.push(crank),
+            let crank = match motion.next(previous_torque) {
+                None => None,
+                Some(Ok(crank)) => Some(crank),
                 Some(Err(source)) => {
                     stopped = Some(RunError::Motion {
                         step: index,
                         source,
-                    })
+                    });
+                    None
                 }
-            }
+            };
+            ended = crank.is_none();
+            states.fill(mechanism, crank.as_slice());
         }
-        let n = cranks.len();
-        states.fill(mechanism, &cranks);
+        let n = states.len;
         if let Some(g) = gas {
             for i in 0..n {
                 (pressure[i], force[i]) = g(states.crank.angle[i]);
@@ -605,7 +604,7 @@ pub fn run_summary(
 mod tests {
     use super::*;
     use crate::Inertial;
-    use cardan_mechanism::{MachineGeometry, MassInputs, Options, C, MECHANISMS};
+    use cardan_mechanism::{CrankState, MachineGeometry, MassInputs, Options, C, MECHANISMS};
 
     /// A non-finite value fails its step and is named, whichever quantity of the sum it is;
     /// finite values too large to be summed (the sum overflows) pass.

@@ -7,7 +7,7 @@
 //! gear ratings, the general solve).
 
 use crate::model::{BodyMotion, JointLoad, JointMotion, Loads, PistonMotion, PointMotion, State};
-use crate::motion::CrankState;
+use crate::motion::{CrankState, MotionError, MotionSource};
 use crate::{Mechanism, Topology, C};
 
 /// Steps in a block: the length of every column.
@@ -103,6 +103,18 @@ pub struct StateBlock {
 }
 
 impl CrankColumns {
+    /// Lane `i`.
+    #[inline(always)]
+    pub fn at(&self, i: usize) -> CrankState {
+        CrankState {
+            angle: self.angle[i],
+            direction: C::new(self.cos[i], self.sin[i]),
+            speed: self.speed[i],
+            acceleration: self.acceleration[i],
+            time: self.time[i],
+        }
+    }
+
     /// Sets lane `i`.
     #[inline(always)]
     pub fn set(&mut self, i: usize, s: &CrankState) {
@@ -244,21 +256,31 @@ impl StateBlock {
     /// Fills the block with `mechanism` at `cranks` (at most [`LANES`] of them).
     pub fn fill<M: Mechanism + ?Sized>(&mut self, mechanism: &M, cranks: &[CrankState]) {
         assert!(cranks.len() <= LANES, "a block holds at most {LANES} steps");
+        for (i, c) in cranks.iter().enumerate() {
+            self.crank.set(i, c);
+        }
         self.len = cranks.len();
-        mechanism.fill_block(cranks, self);
+        mechanism.fill_block(self);
+    }
+
+    /// Fills the block with the next states of the prescribed `motion`
+    /// ([`MotionSource::next_block`]) and `mechanism` at them; the motion's error if it stopped
+    /// short of a block.
+    pub fn fill_next(
+        &mut self,
+        mechanism: &dyn Mechanism,
+        motion: &mut dyn MotionSource,
+    ) -> Option<MotionError> {
+        let (n, error) = motion.next_block(&mut self.crank);
+        self.len = n;
+        mechanism.fill_block(self);
+        error
     }
 
     /// The crank state of lane `i`.
     #[inline(always)]
     pub fn crank(&self, i: usize) -> CrankState {
-        let c = &self.crank;
-        CrankState {
-            angle: c.angle[i],
-            direction: C::new(c.cos[i], c.sin[i]),
-            speed: c.speed[i],
-            acceleration: c.acceleration[i],
-            time: c.time[i],
-        }
+        self.crank.at(i)
     }
 
     /// Sets lane `i`'s crank state.
@@ -338,17 +360,12 @@ impl StateBlock {
         }
     }
 
-    /// Fills lanes `0..cranks.len()` a state at a time with `fill` (a mechanism whose
-    /// kinematics are not written for columns).
-    pub fn fill_each(
-        &mut self,
-        topology: &Topology,
-        cranks: &[CrankState],
-        fill: impl Fn(&CrankState, &mut State),
-    ) {
+    /// Fills the block's lanes a state at a time with `fill`, at their crank states (a
+    /// mechanism whose kinematics are not written for columns).
+    pub fn fill_each(&mut self, topology: &Topology, fill: impl Fn(&CrankState, &mut State)) {
         let mut st = State::for_topology(topology);
-        for (i, c) in cranks.iter().enumerate() {
-            fill(c, &mut st);
+        for i in 0..self.len {
+            fill(&self.crank.at(i), &mut st);
             self.scatter(i, &st);
         }
     }

@@ -34,9 +34,7 @@ use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
     cross, Bearings, Body, Joint, JointKind, JointMotion, MeshForce, Piston, PistonMotion, Topology,
 };
-use crate::{
-    check_length, check_rod_cg, number, word, CrankState, Entry, MachineGeometry, Mechanism,
-};
+use crate::{check_length, check_rod_cg, number, word, Entry, MachineGeometry, Mechanism};
 use crate::{Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 
@@ -222,13 +220,13 @@ impl Mechanism for CardanGear {
 
     /// Writes only the columns that are not zero at every step (a block starts zeroed): the
     /// fill is bound by its stores.
-    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+    fn fill_block(&self, block: &mut StateBlock) {
         let StateBlock {
+            len,
             crank: cc,
             bodies,
             joints,
             pistons,
-            ..
         } = block;
         let ([shaft, wheel, rod], [main, pin, rod_pin, mesh], [piston]) =
             (&mut bodies[..], &mut joints[..], &mut pistons[..])
@@ -236,7 +234,8 @@ impl Mechanism for CardanGear {
             unreachable!("the cardan gear's topology")
         };
         let r = self.crank;
-        for (i, crank) in cranks.iter().take(LANES).enumerate() {
+        for i in 0..(*len).min(LANES) {
+            let crank = &cc.at(i);
             let (w, a) = (crank.speed, crank.acceleration);
             let e_a = crank.direction;
             let (s, c) = (e_a.im, e_a.re);
@@ -244,7 +243,6 @@ impl Mechanism for CardanGear {
             let y = 2.0 * r * s;
             let v = 2.0 * r * w * c;
             let acc = 2.0 * r * (a * c - w * w * s);
-            cc.set(i, crank);
             // The crankshaft turns about its centre of gravity, on the main axis.
             shaft.orientation_x[i] = c;
             shaft.orientation_y[i] = s;
@@ -378,6 +376,7 @@ impl Mechanism for CardanGear {
 mod tests {
     use super::*;
     use crate::mass::Material;
+    use crate::CrankState;
     use approx::assert_relative_eq;
 
     fn gear() -> CardanGear {

@@ -585,8 +585,8 @@ impl Mechanism for Hypotrochoid {
         &self.masses
     }
 
-    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
-        block.fill_each(&self.topology, cranks, |c, st| self.fill_state(c, st));
+    fn fill_block(&self, block: &mut StateBlock) {
+        block.fill_each(&self.topology, |c, st| self.fill_state(c, st));
     }
 
     fn fill_extras(&self, st: &mut State) {

@@ -70,10 +70,11 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
     /// The resolved mass fields (for the summary).
     fn masses(&self) -> &MassProperties;
 
-    /// Fills lanes `0..cranks.len()` of `block` (made by [`StateBlock::for_topology`]; at most
-    /// [`LANES`] crank states) at the crank states `cranks`, all but the extras. Callers go
-    /// through [`StateBlock::fill`], which sets the block's length.
-    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock);
+    /// Fills the lanes `0..block.len` of `block` (made by [`StateBlock::for_topology`]) at the
+    /// crank states its crank columns hold, all but the extras. Callers go through
+    /// [`StateBlock::fill`] or [`StateBlock::fill_next`]. A mechanism may leave alone the columns
+    /// that are zero at every step (a block starts zeroed and is filled by one mechanism).
+    fn fill_block(&self, block: &mut StateBlock);
 
     /// Fills the [`Topology::extras`] of a `state` that [`Mechanism::fill_block`] filled (only
     /// done when an output wants them).

@@ -1,6 +1,6 @@
 //! Crank motion: the prescribed law, the crank-angle grid, and the source a run steps through.
 
-use crate::C;
+use crate::{CrankColumns, C, LANES};
 
 /// Grid points between exact evaluations of e^{iθ}: in between, e^{iθ} advances by one complex
 /// multiplication by e^{ih}. Each multiplication adds at most about 4 ulp of error, so the
@@ -149,17 +149,11 @@ pub trait MotionSource {
         false
     }
 
-    /// Appends the next `n` states of a prescribed motion to `out`: fewer after the last, and
-    /// an error at the first state that cannot be reached (the states before it appended).
-    fn next_states(&mut self, out: &mut Vec<CrankState>, n: usize) -> Result<(), MotionError> {
-        for _ in 0..n {
-            match self.next(None) {
-                None => break,
-                Some(Ok(c)) => out.push(c),
-                Some(Err(e)) => return Err(e),
-            }
-        }
-        Ok(())
+    /// Fills the lanes of `out` from the first with the next states of a prescribed motion, at
+    /// most [`LANES`]: how many (fewer after the last), and the error at the first state that
+    /// cannot be reached (the states before it filled).
+    fn next_block(&mut self, out: &mut CrankColumns) -> (usize, Option<MotionError>) {
+        next_one_by_one(self, out)
     }
 
     /// The index in the whole run of the first state this source gives (not 0 for a
@@ -179,71 +173,51 @@ pub trait MotionSource {
 
 /// The prescribed motion on a grid uniform in crank angle, from `start` to exactly `end`.
 ///
-/// The states are made a block of [`REANCHOR`] at a time: the angles and directions first, then
-/// every speed and time of the block in one loop of independent square roots and divisions,
-/// which the processor overlaps (made one per step, each waited for its own: about 11 ns per
-/// step of an accelerating crank). Each state is computed by the same expressions as
-/// [`CrankMotion::at_angle`], so bit for bit the same (tested).
+/// The states are made a block of [`REANCHOR`] at a time, as columns: the angles and directions
+/// first, then every speed and time of the block in one loop of independent square roots and
+/// divisions, which the processor overlaps (made one per step, each waited for its own: about
+/// 11 ns per step of an accelerating crank). Each state is computed by the same expressions as
+/// [`CrankMotion::at_angle`], so bit for bit the same (tested). A run takes the blocks straight
+/// into its own columns ([`MotionSource::next_block`]).
 #[derive(Debug, Clone)]
 pub struct Grid {
-    motion: CrankMotion,
-    start: f64,
-    end: f64,
-    steps: usize,
-    h: f64,
-    rotation: C,
+    spacing: Spacing,
     /// The next state's index.
     k: usize,
     /// The indices of the first and the last state this grid gives (0 and `steps`, unless it
     /// is a part).
     first: usize,
     last: usize,
-    /// The block being handed out, from index `block_start`; a motion error at its end.
-    block: Vec<CrankState>,
+    /// The block being handed out one state at a time ([`MotionSource::next`]): its states
+    /// from index `block_start`, how many, and a motion error at its end.
+    block: Box<CrankColumns>,
+    block_len: usize,
     block_start: usize,
     error: Option<MotionError>,
 }
 
-impl Grid {
-    /// `steps` intervals (`steps + 1` states) from `start` to `end`, rad.
-    pub fn new(motion: CrankMotion, start: f64, end: f64, steps: usize) -> Self {
-        let h = (end - start) / steps as f64;
-        Self {
-            motion,
-            start,
-            end,
-            steps,
-            h,
-            rotation: C::from_polar(1.0, h),
-            k: 0,
-            first: 0,
-            last: steps,
-            block: Vec::with_capacity(REANCHOR),
-            block_start: 0,
-            error: None,
-        }
-    }
+/// What places a grid's points.
+#[derive(Debug, Clone, Copy)]
+struct Spacing {
+    motion: CrankMotion,
+    start: f64,
+    end: f64,
+    steps: usize,
+    h: f64,
+    rotation: C,
+}
 
-    /// The states of the block from index `k` on (the block made when `k` starts one; `k` at
-    /// most `last`), or the motion's error if it cannot reach the angle of `k`.
-    fn ahead(&mut self) -> Result<&[CrankState], MotionError> {
-        if self.k % REANCHOR == 0 {
-            self.fill_block(self.k);
-        }
-        match self.block.get(self.k - self.block_start..) {
-            Some(states) if !states.is_empty() => Ok(states),
-            // Past the block's valid states: the motion cannot reach this angle.
-            _ => Err(self.error.clone().unwrap_or(MotionError::Still)),
-        }
-    }
+// A grid block fills a run's block.
+const _: () = assert!(REANCHOR == LANES);
 
-    /// Makes the block of states from index `k` (a multiple of [`REANCHOR`]).
-    fn fill_block(&mut self, k: usize) {
-        self.block.clear();
-        self.block_start = k;
-        self.error = None;
-        let n = (self.last + 1 - k).min(REANCHOR);
+impl Spacing {
+    /// Makes the states of the block from index `k` (a multiple of [`REANCHOR`]) to at most
+    /// `last` into `out`: how many it could make, and the motion's error at the next one if it
+    /// stopped short.
+    fn block(&self, k: usize, last: usize, out: &mut CrankColumns) -> (usize, Option<MotionError>) {
+        let n = (last + 1 - k).min(REANCHOR);
         let mut direction = C::new(1.0, 0.0);
+        let m = self.motion;
         for j in 0..n {
             let i = k + j;
             // The last point is `end` itself, not start + h·steps, which can land a rounding
@@ -259,44 +233,88 @@ impl Grid {
             } else {
                 direction * self.rotation
             };
-            self.block.push(CrankState {
-                angle,
-                direction,
-                speed: 0.0,
-                acceleration: self.motion.angular_acceleration,
-                time: 0.0,
-            });
+            out.angle[j] = angle;
+            out.cos[j] = direction.re;
+            out.sin[j] = direction.im;
+            out.acceleration[j] = m.angular_acceleration;
         }
-        let m = self.motion;
         let (w0, a) = (m.initial_speed, m.angular_acceleration);
         if a == 0.0 && w0 > 0.0 {
             // Constant speed: ω = ω0 and t = Δθ/ω0, what at_angle gives without its square root.
-            for s in &mut self.block {
-                s.speed = w0;
-                s.time = (s.angle - m.start_angle) / w0;
+            for j in 0..n {
+                out.speed[j] = w0;
+                out.time[j] = (out.angle[j] - m.start_angle) / w0;
             }
-            return;
+            return (n, None);
         }
         // The checks of `speed_and_time`, then its arithmetic on the whole block.
-        let valid = self.block.iter().position(|s| {
-            m.speed_and_time_checked(s.angle)
-                .map_err(|e| self.error = Some(e))
-                .is_err()
-        });
-        if let Some(bad) = valid {
-            self.block.truncate(bad);
-        }
-        for s in &mut self.block {
-            let dtheta = s.angle - m.start_angle;
+        let mut error = None;
+        let valid = (0..n)
+            .position(|j| {
+                m.speed_and_time_checked(out.angle[j])
+                    .map_err(|e| error = Some(e))
+                    .is_err()
+            })
+            .unwrap_or(n);
+        for j in 0..valid {
+            let dtheta = out.angle[j] - m.start_angle;
             let w = (w0 * w0 + 2.0 * a * dtheta).sqrt();
-            s.speed = w;
-            s.time = if dtheta == 0.0 {
+            out.speed[j] = w;
+            out.time[j] = if dtheta == 0.0 {
                 0.0
             } else {
                 2.0 * dtheta / (w0 + w)
             };
         }
+        (valid, error)
     }
+}
+
+impl Grid {
+    /// `steps` intervals (`steps + 1` states) from `start` to `end`, rad.
+    pub fn new(motion: CrankMotion, start: f64, end: f64, steps: usize) -> Self {
+        let h = (end - start) / steps as f64;
+        let zero = [0.0; LANES];
+        Self {
+            spacing: Spacing {
+                motion,
+                start,
+                end,
+                steps,
+                h,
+                rotation: C::from_polar(1.0, h),
+            },
+            k: 0,
+            first: 0,
+            last: steps,
+            block: Box::new(CrankColumns {
+                angle: zero,
+                cos: zero,
+                sin: zero,
+                speed: zero,
+                acceleration: zero,
+                time: zero,
+            }),
+            block_len: 0,
+            block_start: 0,
+            error: None,
+        }
+    }
+}
+
+/// [`MotionSource::next_block`] a state at a time.
+fn next_one_by_one<M: MotionSource + ?Sized>(
+    motion: &mut M,
+    out: &mut CrankColumns,
+) -> (usize, Option<MotionError>) {
+    for i in 0..LANES {
+        match motion.next(None) {
+            None => return (i, None),
+            Some(Ok(c)) => out.set(i, &c),
+            Some(Err(e)) => return (i, Some(e)),
+        }
+    }
+    (LANES, None)
 }
 
 impl MotionSource for Grid {
@@ -315,45 +333,54 @@ impl MotionSource for Grid {
     /// Bit for bit the states of the whole grid: a part starts on a block's start, where the
     /// direction is anchored (tested).
     fn part(&self, first: usize, last: usize) -> Option<Box<dyn MotionSource + Send>> {
-        if first % REANCHOR != 0 || first > last || last > self.steps {
+        if first % REANCHOR != 0 || first > last || last > self.spacing.steps {
             return None;
         }
+        let s = self.spacing;
         Some(Box::new(Grid {
             k: first,
             first,
             last,
             block_start: first,
-            ..Grid::new(self.motion, self.start, self.end, self.steps)
+            ..Grid::new(s.motion, s.start, s.end, s.steps)
         }))
     }
 
-    /// Copies from the blocks (the states of [`MotionSource::next`], bit for bit).
-    fn next_states(&mut self, out: &mut Vec<CrankState>, n: usize) -> Result<(), MotionError> {
-        let wanted = out.len() + n;
-        while out.len() < wanted && self.k <= self.last {
-            let take = match self.ahead() {
-                Ok(states) => {
-                    let take = states.len().min(wanted - out.len());
-                    out.extend_from_slice(&states[..take]);
-                    take
-                }
-                Err(e) => {
-                    self.k += 1;
-                    return Err(e);
-                }
-            };
-            self.k += take;
+    /// From a block's start (where a run's blocks start), the grid's block made straight into
+    /// `out`; elsewhere a state at a time. The states of [`MotionSource::next`], bit for bit.
+    fn next_block(&mut self, out: &mut CrankColumns) -> (usize, Option<MotionError>) {
+        if self.k > self.last {
+            return (0, None);
         }
-        Ok(())
+        if self.k % REANCHOR != 0 {
+            return next_one_by_one(self, out);
+        }
+        let (n, error) = self.spacing.block(self.k, self.last, out);
+        if error.is_some() {
+            // Past the state the motion cannot reach, where `next` goes on failing.
+            (self.block_start, self.block_len, self.error) = (self.k, 0, error.clone());
+            self.k += 1;
+        }
+        self.k += n;
+        (n, error)
     }
 
     fn next(&mut self, _previous_torque: Option<f64>) -> Option<Result<CrankState, MotionError>> {
         if self.k > self.last {
             return None;
         }
-        let state = self.ahead().map(|states| states[0]);
+        if self.k % REANCHOR == 0 {
+            (self.block_len, self.error) = self.spacing.block(self.k, self.last, &mut self.block);
+            self.block_start = self.k;
+        }
+        let lane = self.k - self.block_start;
         self.k += 1;
-        Some(state)
+        Some(if lane < self.block_len {
+            Ok(self.block.at(lane))
+        } else {
+            // Past the block's valid states: the motion cannot reach this angle.
+            Err(self.error.clone().unwrap_or(MotionError::Still))
+        })
     }
 }
 
@@ -471,20 +498,30 @@ mod tests {
                     None => break Ok(()),
                 }
             };
-            for n in [1, 5, 8, 64, 100] {
+            // Blocks from the start (made straight into the columns), or after a few states
+            // taken one at a time (off the grid's blocks).
+            for lead in [0, 1, 5] {
                 let mut g = Grid::new(m, 0.0, 0.99, steps);
-                let mut blocks = Vec::new();
+                let mut states: Vec<CrankState> = (0..lead)
+                    .map_while(|_| g.next(None).and_then(Result::ok))
+                    .collect();
+                let mut columns = Grid::new(m, 0.0, 0.99, 1).block.clone();
                 let end_in_blocks = loop {
-                    let before = blocks.len();
-                    if let Err(e) = g.next_states(&mut blocks, n) {
+                    let (n, error) = g.next_block(&mut columns);
+                    states.extend((0..n).map(|i| columns.at(i)));
+                    if let Some(e) = error {
                         break Err(e);
                     }
-                    if blocks.len() < before + n {
+                    if n < LANES {
                         break Ok(());
                     }
                 };
-                assert_eq!(blocks, singly, "{steps} steps, {n} at a time");
-                assert_eq!(end_in_blocks, end, "{steps} steps, {n} at a time");
+                assert_eq!(states, singly, "{steps} steps, {lead} first");
+                assert_eq!(end_in_blocks, end, "{steps} steps, {lead} first");
+                // Past the unreachable state, the motion goes on failing.
+                if end.is_err() {
+                    assert!(matches!(g.next(None), Some(Err(_))), "{steps} steps");
+                }
             }
         }
     }

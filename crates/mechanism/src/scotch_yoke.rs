@@ -16,7 +16,7 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{cross, Bearings, Body, Joint, Piston, PistonMotion, Topology};
-use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::{check_length, check_rod_cg, Entry, MachineGeometry, Mechanism};
 use crate::{Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, Options, PointMotion, C};
 
@@ -131,13 +131,13 @@ impl Mechanism for ScotchYoke {
 
     /// Writes only the columns that are not zero at every step (a block starts zeroed): the
     /// fill is bound by its stores.
-    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+    fn fill_block(&self, block: &mut StateBlock) {
         let StateBlock {
+            len,
             crank: cc,
             bodies,
             joints,
             pistons,
-            ..
         } = block;
         let ([shaft, slider, yoke], [main, pin, slot, guide], [piston]) =
             (&mut bodies[..], &mut joints[..], &mut pistons[..])
@@ -145,14 +145,14 @@ impl Mechanism for ScotchYoke {
             unreachable!("the Scotch yoke's topology")
         };
         let r = self.crank;
-        for (i, crank) in cranks.iter().take(LANES).enumerate() {
+        for i in 0..(*len).min(LANES) {
+            let crank = &cc.at(i);
             let (w, a) = (crank.speed, crank.acceleration);
             let e_a = crank.direction;
             let (s, c) = (e_a.im, e_a.re);
             let crank_pin = PointMotion::on_crank(r, crank);
             // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
             let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
-            cc.set(i, crank);
             // The crankshaft turns about its centre of gravity, on the main axis.
             shaft.orientation_x[i] = c;
             shaft.orientation_y[i] = s;
@@ -253,6 +253,7 @@ impl Mechanism for ScotchYoke {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::CrankState;
     use crate::Loads;
     use approx::assert_relative_eq;
 

@@ -37,9 +37,10 @@ const PISTON: usize = 2;
 /// Crank states whose rod angles [`SliderCrank`]'s `fill_block` computes together.
 const BLOCK: usize = 8;
 
-/// The columns of a block that the slider-crank's fill writes (the rest stay zero).
+/// The columns of a block that the slider-crank's fill reads (the crank's) and writes (the
+/// rest stay zero).
 struct Parts<'a> {
-    crank: &'a mut CrankColumns,
+    crank: &'a CrankColumns,
     shaft: &'a mut BodyColumns,
     rod: &'a mut BodyColumns,
     piston: &'a mut BodyColumns,
@@ -197,7 +198,6 @@ impl SliderCrank {
             acceleration: C::new(0.0, pin.acceleration.im),
         };
         let rod_cg = along(self.masses.rod_cg);
-        parts.crank.set(lane, crank);
         // The crankshaft turns about its centre of gravity, on the main axis.
         let shaft = &mut *parts.shaft;
         shaft.orientation_x[lane] = e_a.re;
@@ -262,13 +262,13 @@ impl Mechanism for SliderCrank {
 
     /// The rod angles of the whole block first: their square roots and divisions are
     /// independent across steps, so the processor overlaps them instead of waiting on each.
-    fn fill_block(&self, cranks: &[CrankState], block: &mut StateBlock) {
+    fn fill_block(&self, block: &mut StateBlock) {
         let StateBlock {
+            len,
             crank,
             bodies,
             joints,
             pistons,
-            ..
         } = block;
         let ([shaft, rod, piston], Ok(joints), [cylinder]) = (
             &mut bodies[..],
@@ -286,13 +286,15 @@ impl Mechanism for SliderCrank {
             cylinder,
         };
         let mut angles = [(0.0, 0.0, 0.0, 0.0); BLOCK];
-        let cranks = &cranks[..cranks.len().min(LANES)];
-        for (k, cranks) in cranks.chunks(BLOCK).enumerate() {
-            for (a, c) in angles.iter_mut().zip(cranks) {
-                *a = self.rod_angles(c.direction.re, c.direction.im);
+        let n = (*len).min(LANES);
+        for start in (0..n).step_by(BLOCK) {
+            let lanes = start..(start + BLOCK).min(n);
+            for (a, i) in angles.iter_mut().zip(lanes.clone()) {
+                *a = self.rod_angles(parts.crank.cos[i], parts.crank.sin[i]);
             }
-            for (j, (c, a)) in cranks.iter().zip(angles).enumerate() {
-                self.fill_lane(c, a, &mut parts, k * BLOCK + j);
+            for (a, i) in angles.into_iter().zip(lanes) {
+                let c = parts.crank.at(i);
+                self.fill_lane(&c, a, &mut parts, i);
             }
         }
     }
