@@ -31,7 +31,7 @@ pub use model::{
     cross, Bearings, Body, BodyMotion, Extra, Joint, JointKind, JointLoad, JointMotion, Loads,
     MeshForce, Piston, PistonMotion, PointMotion, State, Topology,
 };
-pub use motion::{CrankMotion, CrankState, Grid, MotionError, MotionSource, REANCHOR};
+pub use motion::{CrankMotion, CrankState, Grid, MotionError, MotionSource, CHAINS, REANCHOR};
 pub use num_complex::Complex64 as C;
 pub use polar::PolarComponents;
 pub use scotch_yoke::ScotchYoke;
