@@ -266,15 +266,27 @@ impl Spacing {
             }
             return (n, None);
         }
-        // The checks of `speed_and_time`, then its arithmetic on the whole block.
+        // The checks of `speed_and_time` (one test for the block where the crank turns
+        // forwards and ω² stays above 0 throughout: the smallest ω², from four running minima),
+        // then its arithmetic on the whole block.
+        let mut lowest = [f64::INFINITY; 4];
+        for j in 0..n {
+            let w2 = w0 * w0 + 2.0 * a * (out.angle[j] - m.start_angle);
+            let l = &mut lowest[j % 4];
+            *l = if w2 < *l { w2 } else { *l };
+        }
         let mut error = None;
-        let valid = (0..n)
-            .position(|j| {
-                m.speed_and_time_checked(out.angle[j])
-                    .map_err(|e| error = Some(e))
-                    .is_err()
-            })
-            .unwrap_or(n);
+        let valid = if w0 > 0.0 && lowest.iter().all(|l| *l > 0.0) {
+            n
+        } else {
+            (0..n)
+                .position(|j| {
+                    m.speed_and_time_checked(out.angle[j])
+                        .map_err(|e| error = Some(e))
+                        .is_err()
+                })
+                .unwrap_or(n)
+        };
         for j in 0..valid {
             let dtheta = out.angle[j] - m.start_angle;
             let w = (w0 * w0 + 2.0 * a * dtheta).sqrt();

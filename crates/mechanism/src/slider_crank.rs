@@ -162,8 +162,8 @@ impl SliderCrank {
         (cos_ba, sin_ba, d1, d2)
     }
 
-    /// Lane `lane` of a block's `parts` at the crank state `crank`, with the rod angles (cos θ_BA, sin θ_BA,
-    /// dθ_BA/dθ, d²θ_BA/dθ²) of [`Self::rod_angles`] given.
+    /// Lane `lane` of a block's `parts` at the crank state `crank`, with the rod angles
+    /// (cos θ_BA, sin θ_BA, dθ_BA/dθ, d²θ_BA/dθ²) of [`Self::rod_angles`] given.
     // Inlined into `fill_block`'s loop, which the compiler then vectorises across lanes.
     #[inline(always)]
     fn fill_lane(
