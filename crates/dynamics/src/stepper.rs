@@ -8,7 +8,8 @@ use crate::family::LoadFamily;
 use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
 use cardan_mechanism::{
-    Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock, LANES, ZERO,
+    vectorised, Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
+    LANES, ZERO,
 };
 
 /// One step, as the sinks that take steps one at a time see it.
@@ -370,34 +371,36 @@ struct StepOut {
     ratings: Vec<MeshRating>,
 }
 
-/// For each step of `block`, the sum of the quantities [`check_finite`] checks: an infinity or
-/// a NaN among them makes it an infinity or a NaN (one addition per quantity, across the steps).
-// Lane by lane over several columns at once: an index reads them all.
-#[allow(clippy::needless_range_loop)]
-fn finite_sums(block: &StateBlock, pressure: Option<&Column>, loads: &[LoadsBlock]) -> Column {
-    let n = block.len.min(LANES);
-    let (c, pressure) = (&block.crank, pressure.unwrap_or(&ZERO));
-    let mut sum = [0.0; LANES];
-    for i in 0..n {
-        sum[i] = c.speed[i] + c.time[i] + pressure[i];
-    }
-    for p in &block.pistons {
+vectorised! {
+    /// For each step of `block`, the sum of the quantities [`check_finite`] checks: an infinity or
+    /// a NaN among them makes it an infinity or a NaN (one addition per quantity, across the steps).
+    // Lane by lane over several columns at once: an index reads them all.
+    #[allow(clippy::needless_range_loop)]
+    fn finite_sums(block: &StateBlock, pressure: Option<&Column>, loads: &[LoadsBlock]) -> Column {
+        let n = block.len.min(LANES);
+        let (c, pressure) = (&block.crank, pressure.unwrap_or(&ZERO));
+        let mut sum = [0.0; LANES];
         for i in 0..n {
-            sum[i] += p.position[i] + p.velocity[i] + p.acceleration[i];
+            sum[i] = c.speed[i] + c.time[i] + pressure[i];
         }
-    }
-    for l in loads {
-        let mut s = l.crank_torque;
-        for j in &l.joints {
+        for p in &block.pistons {
             for i in 0..n {
-                s[i] += (j.fx[i] + j.fy[i]) + j.moment[i];
+                sum[i] += p.position[i] + p.velocity[i] + p.acceleration[i];
             }
         }
-        for i in 0..n {
-            sum[i] += s[i];
+        for l in loads {
+            let mut s = l.crank_torque;
+            for j in &l.joints {
+                for i in 0..n {
+                    s[i] += (j.fx[i] + j.fy[i]) + j.moment[i];
+                }
+            }
+            for i in 0..n {
+                sum[i] += s[i];
+            }
         }
+        sum
     }
-    sum
 }
 
 /// Whether every sum of [`finite_sums`] is finite (its lanes past the block's are zeros): s·0 is

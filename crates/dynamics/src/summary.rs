@@ -4,6 +4,7 @@
 use crate::energy::kinetic_energy;
 use crate::metrics;
 use crate::stepper::{Sink, StepBlock};
+use cardan_mechanism::vectorised;
 use cardan_mechanism::{JointKind, JointMotion, LoadsBlock, Mechanism, State, Topology, C, LANES};
 use std::ops::Range;
 
@@ -207,6 +208,7 @@ impl FamilyTotals {
 
     /// Takes the lanes `lanes` of `block` (`loads`: this family's loads there; `previous` the
     /// angle and speed of the step before them, `torque` its torque, then the last step's).
+    #[inline(always)]
     fn take(
         &mut self,
         block: &StepBlock,
@@ -664,21 +666,44 @@ impl SummarySink {
     }
 }
 
-impl SummarySink {
+impl Sink for SummarySink {
+    /// The lanes up to each one that closes a chunk (its step's index a multiple of its chunk)
+    /// taken together, then the chunk closed.
+    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
+        let (n, mut lo) = (block.len(), 0);
+        while lo < n {
+            // The lane of the next step whose index is a multiple of the chunk.
+            let closing = (block.first + lo).next_multiple_of(self.chunk) - block.first;
+            let hi = (closing + 1).min(n);
+            take_lanes(self, block, lo..hi);
+            if closing < n {
+                self.close_chunk();
+            }
+            lo = hi;
+        }
+        Ok(())
+    }
+
+    fn wants_steps(&self) -> bool {
+        false
+    }
+}
+
+vectorised! {
     /// Takes the lanes `lanes` of `block` (in order, none of them but the last closing a
     /// chunk): each peak raised over all of them before it is stored back, each integral's
     /// terms added in the steps' order.
-    fn take(&mut self, block: &StepBlock, lanes: Range<usize>) {
+    fn take_lanes(summary: &mut SummarySink, block: &StepBlock, lanes: Range<usize>) {
         let Some(last) = lanes.end.checked_sub(1) else {
             return;
         };
         let st = block.state;
-        for (peaks, p) in self.pistons.iter_mut().zip(&st.pistons) {
+        for (peaks, p) in summary.pistons.iter_mut().zip(&st.pistons) {
             let [v, a] = peaks;
             raise_over(v, lanes.clone(), |i| p.velocity[i] * p.velocity[i]);
             raise_over(a, lanes.clone(), |i| p.acceleration[i] * p.acceleration[i]);
         }
-        for (peaks, b) in self.bodies.iter_mut().zip(&st.bodies) {
+        for (peaks, b) in summary.bodies.iter_mut().zip(&st.bodies) {
             let [v, a, w, e] = peaks;
             let p = &b.cg;
             raise_over(v, lanes.clone(), |i| p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
@@ -687,21 +712,21 @@ impl SummarySink {
             raise_over(w, lanes.clone(), |i| w0[i] * w0[i]);
             raise_over(e, lanes.clone(), |i| e0[i] * e0[i]);
         }
-        for (k, (f, t0)) in self
+        for (k, (f, t0)) in summary
             .families
             .iter_mut()
-            .zip(&mut self.previous_torques)
+            .zip(&mut summary.previous_torques)
             .enumerate()
         {
             // The loads of family k (the total after the families).
             let loads = block.families.get(k).unwrap_or(block.total);
-            f.take(block, loads, lanes.clone(), &self.joints, self.previous, t0);
+            f.take(block, loads, lanes.clone(), &summary.joints, summary.previous, t0);
         }
         let c = &st.crank;
         if let Some(p) = st.pistons.first() {
-            raise_over(&mut self.lever, lanes.clone(), |i| p.dx_dtheta[i].abs());
-            let mut previous = self.previous.map(|(angle, _)| angle);
-            let (mut integral, mut l0) = (self.lever_integral, self.previous_lever);
+            raise_over(&mut summary.lever, lanes.clone(), |i| p.dx_dtheta[i].abs());
+            let mut previous = summary.previous.map(|(angle, _)| angle);
+            let (mut integral, mut l0) = (summary.lever_integral, summary.previous_lever);
             for i in lanes.start..lanes.end.min(LANES) {
                 let (angle, lever) = (c.angle[i], p.dx_dtheta[i].abs());
                 if let Some(a0) = previous {
@@ -710,11 +735,11 @@ impl SummarySink {
                 l0 = lever;
                 previous = Some(angle);
             }
-            (self.lever_integral, self.previous_lever) = (integral, l0);
+            (summary.lever_integral, summary.previous_lever) = (integral, l0);
         }
         let steps = block.steps.get(lanes.clone()).unwrap_or_default();
-        if let Some(l) = &mut self.losses {
-            let (mut started, mut t0) = (self.previous.is_some(), self.previous_time);
+        if let Some(l) = &mut summary.losses {
+            let (mut started, mut t0) = (summary.previous.is_some(), summary.previous_time);
             for s in steps {
                 let dt = s.state.crank.time - t0;
                 for ((w, p0), &p) in l.work.iter_mut().zip(&mut l.previous).zip(s.losses) {
@@ -727,8 +752,8 @@ impl SummarySink {
                 (started, t0) = (true, s.state.crank.time);
             }
         }
-        if let Some(g) = &mut self.gears {
-            let (mut started, mut t0) = (self.previous.is_some(), self.previous_time);
+        if let Some(g) = &mut summary.gears {
+            let (mut started, mut t0) = (summary.previous.is_some(), summary.previous_time);
             for s in steps {
                 let loss: f64 = s.gears.iter().map(|r| r.loss).sum();
                 if started {
@@ -751,50 +776,27 @@ impl SummarySink {
         }
         // The kinetic energy is wanted at the first and last steps only.
         for i in [lanes.start, last] {
-            if self.first.is_none() || block.first + i == self.last_step {
-                block.state.gather(i, &mut self.scratch);
+            if summary.first.is_none() || block.first + i == summary.last_step {
+                block.state.gather(i, &mut summary.scratch);
                 let now = (
                     c.angle[i],
                     c.time[i],
-                    kinetic_energy(&self.topology, &self.scratch),
+                    kinetic_energy(&summary.topology, &summary.scratch),
                 );
-                self.first.get_or_insert(now);
-                self.last = now;
+                summary.first.get_or_insert(now);
+                summary.last = now;
             }
         }
         if let (Some(p), Some(f)) = (block.pressure, block.piston_force) {
             for i in lanes.clone() {
-                self.pressure = Some(self.pressure.map_or(p[i], |q| q.max(p[i])));
+                summary.pressure = Some(summary.pressure.map_or(p[i], |q| q.max(p[i])));
             }
             if !st.pistons.is_empty() {
-                raise_over(&mut self.gas_force, lanes, |i| f[i].abs());
+                raise_over(&mut summary.gas_force, lanes, |i| f[i].abs());
             }
         }
-        self.previous_time = c.time[last];
-        self.previous = Some((c.angle[last], c.speed[last]));
-    }
-}
-
-impl Sink for SummarySink {
-    /// The lanes up to each one that closes a chunk (its step's index a multiple of its chunk)
-    /// taken together, then the chunk closed.
-    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
-        let (n, mut lo) = (block.len(), 0);
-        while lo < n {
-            // The lane of the next step whose index is a multiple of the chunk.
-            let closing = (block.first + lo).next_multiple_of(self.chunk) - block.first;
-            let hi = (closing + 1).min(n);
-            self.take(block, lo..hi);
-            if closing < n {
-                self.close_chunk();
-            }
-            lo = hi;
-        }
-        Ok(())
-    }
-
-    fn wants_steps(&self) -> bool {
-        false
+        summary.previous_time = c.time[last];
+        summary.previous = Some((c.angle[last], c.speed[last]));
     }
 }
 

@@ -476,3 +476,33 @@ impl LoadsBlock {
         sum(&mut self.crank_torque, &other.crank_torque);
     }
 }
+
+/// Defines a block kernel (a function over a block's lanes) compiled twice: for AVX2, called
+/// where the processor has it, and for the baseline x86-64 (SSE2) elsewhere. The loops over the
+/// lanes then work on four numbers at once instead of two (measured: a run a third faster).
+/// The arithmetic is IEEE's either way (fused multiply-adds are not enabled), so the results are
+/// the same bit for bit. A kernel is a plain function (not a method: a block kernel is reached
+/// through a `dyn` trait, so each wraps its own body); what it calls must be inlined into it
+/// (`#[inline(always)]`) to be compiled for AVX2 too.
+#[macro_export]
+macro_rules! vectorised {
+    ($(#[$meta:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? $body:block) => {
+        $(#[$meta])*
+        $vis fn $name($($arg: $ty),*) $(-> $ret)? {
+            #[inline(always)]
+            fn kernel($($arg: $ty),*) $(-> $ret)? $body
+            #[cfg(target_arch = "x86_64")]
+            {
+                #[target_feature(enable = "avx2")]
+                fn avx2($($arg: $ty),*) $(-> $ret)? {
+                    kernel($($arg),*)
+                }
+                if std::is_x86_feature_detected!("avx2") {
+                    // SAFETY: the processor has AVX2 (detected just now).
+                    return unsafe { avx2($($arg),*) };
+                }
+            }
+            kernel($($arg),*)
+        }
+    };
+}

@@ -35,7 +35,7 @@ use crate::model::{
     cross, Bearings, Body, Joint, JointKind, JointMotion, MeshForce, Piston, PistonMotion, Topology,
 };
 use crate::{check_length, check_rod_cg, number, word, Entry, MachineGeometry, Mechanism};
-use crate::{Column, LoadsBlock, StateBlock, LANES, ZERO};
+use crate::{vectorised, Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 
 /// The registry line.
@@ -218,78 +218,8 @@ impl Mechanism for CardanGear {
         &self.masses
     }
 
-    /// Writes only the columns that are not zero at every step (a block starts zeroed): the
-    /// fill is bound by its stores.
     fn fill_block(&self, block: &mut StateBlock) {
-        let StateBlock {
-            len,
-            crank: cc,
-            bodies,
-            joints,
-            pistons,
-        } = block;
-        let ([shaft, wheel, rod], [main, pin, rod_pin, mesh], [piston]) =
-            (&mut bodies[..], &mut joints[..], &mut pistons[..])
-        else {
-            unreachable!("the cardan gear's topology")
-        };
-        let r = self.crank;
-        for i in 0..(*len).min(LANES) {
-            let crank = &cc.at(i);
-            let (w, a) = (crank.speed, crank.acceleration);
-            let e_a = crank.direction;
-            let (s, c) = (e_a.im, e_a.re);
-            // T on the cylinder axis: (A4.2.2.60), (A4.2.2.68), (A4.2.2.73).
-            let y = 2.0 * r * s;
-            let v = 2.0 * r * w * c;
-            let acc = 2.0 * r * (a * c - w * w * s);
-            // The crankshaft turns about its centre of gravity, on the main axis.
-            shaft.orientation_x[i] = c;
-            shaft.orientation_y[i] = s;
-            shaft.angular_velocity[i] = w;
-            shaft.angular_acceleration[i] = a;
-            // The wheel's centre is the crank pin; it turns at −ω (A4.2.2.66, A4.2.2.71); the
-            // line S→T is at π − θ.
-            let crank_pin = PointMotion::on_crank(r, crank);
-            wheel.cg.set(i, &crank_pin);
-            wheel.orientation_x[i] = -c;
-            wheel.orientation_y[i] = s;
-            wheel.angular_velocity[i] = -w;
-            wheel.angular_acceleration[i] = -a;
-            // The rod slides along the cylinder axis (+y) without turning.
-            rod.cg.y[i] = y + self.masses.rod_cg;
-            rod.cg.vy[i] = v;
-            rod.cg.ay[i] = acc;
-            rod.orientation_y[i] = 1.0;
-            // Body relative to other: crankshaft to wheel 2ω; rod to wheel +ω (A9.1.15,
-            // A9.1.17).
-            main.relative_speed[i] = w;
-            pin.x[i] = crank_pin.position.re;
-            pin.y[i] = crank_pin.position.im;
-            pin.relative_speed[i] = 2.0 * w;
-            rod_pin.y[i] = y;
-            rod_pin.relative_speed[i] = w;
-            // The pitch point, towards the wheel's centre, and (A8.1.7) the pitch-line
-            // velocity, twice the crank-pin speed.
-            mesh.set(
-                i,
-                &JointMotion {
-                    position: 2.0 * r * e_a,
-                    direction: -e_a,
-                    relative_speed: 2.0 * r * w,
-                },
-            );
-            piston.set(
-                i,
-                &PistonMotion {
-                    position: y + self.rod,
-                    velocity: v,
-                    acceleration: acc,
-                    dx_dtheta: 2.0 * r * c,
-                    d2x_dtheta2: -2.0 * r * s,
-                },
-            );
-        }
+        fill(self, block);
     }
 
     fn piston_position(&self, angle: f64) -> (f64, f64) {
@@ -320,7 +250,95 @@ impl Mechanism for CardanGear {
         piston_force: Option<&Column>,
         out: &mut LoadsBlock,
     ) -> bool {
-        let m = &self.masses;
+        closed_form(self, st, inertia, piston_force, out)
+    }
+}
+
+vectorised! {
+    /// Writes only the columns that are not zero at every step (a block starts zeroed): the
+    /// fill is bound by its stores.
+    fn fill(gear: &CardanGear, block: &mut StateBlock) {
+        let StateBlock {
+            len,
+            crank: cc,
+            bodies,
+            joints,
+            pistons,
+        } = block;
+        let ([shaft, wheel, rod], [main, pin, rod_pin, mesh], [piston]) =
+            (&mut bodies[..], &mut joints[..], &mut pistons[..])
+        else {
+            unreachable!("the cardan gear's topology")
+        };
+        let r = gear.crank;
+        for i in 0..(*len).min(LANES) {
+            let crank = &cc.at(i);
+            let (w, a) = (crank.speed, crank.acceleration);
+            let e_a = crank.direction;
+            let (s, c) = (e_a.im, e_a.re);
+            // T on the cylinder axis: (A4.2.2.60), (A4.2.2.68), (A4.2.2.73).
+            let y = 2.0 * r * s;
+            let v = 2.0 * r * w * c;
+            let acc = 2.0 * r * (a * c - w * w * s);
+            // The crankshaft turns about its centre of gravity, on the main axis.
+            shaft.orientation_x[i] = c;
+            shaft.orientation_y[i] = s;
+            shaft.angular_velocity[i] = w;
+            shaft.angular_acceleration[i] = a;
+            // The wheel's centre is the crank pin; it turns at −ω (A4.2.2.66, A4.2.2.71); the
+            // line S→T is at π − θ.
+            let crank_pin = PointMotion::on_crank(r, crank);
+            wheel.cg.set(i, &crank_pin);
+            wheel.orientation_x[i] = -c;
+            wheel.orientation_y[i] = s;
+            wheel.angular_velocity[i] = -w;
+            wheel.angular_acceleration[i] = -a;
+            // The rod slides along the cylinder axis (+y) without turning.
+            rod.cg.y[i] = y + gear.masses.rod_cg;
+            rod.cg.vy[i] = v;
+            rod.cg.ay[i] = acc;
+            rod.orientation_y[i] = 1.0;
+            // Body relative to other: crankshaft to wheel 2ω; rod to wheel +ω (A9.1.15,
+            // A9.1.17).
+            main.relative_speed[i] = w;
+            pin.x[i] = crank_pin.position.re;
+            pin.y[i] = crank_pin.position.im;
+            pin.relative_speed[i] = 2.0 * w;
+            rod_pin.y[i] = y;
+            rod_pin.relative_speed[i] = w;
+            // The pitch point, towards the wheel's centre, and (A8.1.7) the pitch-line
+            // velocity, twice the crank-pin speed.
+            mesh.set(
+                i,
+                &JointMotion {
+                    position: 2.0 * r * e_a,
+                    direction: -e_a,
+                    relative_speed: 2.0 * r * w,
+                },
+            );
+            piston.set(
+                i,
+                &PistonMotion {
+                    position: y + gear.rod,
+                    velocity: v,
+                    acceleration: acc,
+                    dx_dtheta: 2.0 * r * c,
+                    d2x_dtheta2: -2.0 * r * s,
+                },
+            );
+        }
+    }
+}
+
+vectorised! {
+    fn closed_form(
+        gear: &CardanGear,
+        st: &StateBlock,
+        inertia: bool,
+        piston_force: Option<&Column>,
+        out: &mut LoadsBlock,
+    ) -> bool {
+        let m = &gear.masses;
         let (mass, crank_inertia, wheel_inertia) = if inertia {
             (
                 m.rod_mass + m.piston_mass,
@@ -332,13 +350,13 @@ impl Mechanism for CardanGear {
         };
         // −T_1i10c − T_2i10c (A5.2.1.40-46, module note) and −T_3i10c (A5.2.1.52): in the
         // involute reading the wheel's inertia enters through F_t instead.
-        let lumped = match self.mesh {
+        let lumped = match gear.mesh {
             MeshModel::Karhula => crank_inertia + wheel_inertia,
             MeshModel::Involute => crank_inertia,
         };
         let (c, rod, rod_pin, pin) = (&st.crank, &st.bodies[ROD], &st.joints[2], &st.joints[1]);
         let gas = piston_force.unwrap_or(&ZERO);
-        let tan = self.pressure_angle.tan();
+        let tan = gear.pressure_angle.tan();
         let LoadsBlock {
             joints,
             crank_torque,
@@ -351,12 +369,12 @@ impl Mechanism for CardanGear {
             let p = -mass * C::new(rod.cg.ax[i], rod.cg.ay[i]) - C::new(0.0, gas[i]);
             let alpha = c.acceleration[i];
             let s = C::new(pin.x[i], pin.y[i]);
-            let mesh = match self.mesh {
+            let mesh = match gear.mesh {
                 MeshModel::Karhula => p, // (A5.2.1.48-51)
                 MeshModel::Involute => {
                     // Moments about S: (T − S)×P + r·F_t = J_w·α_w, with α_w = −α.
                     let t = C::new(rod_pin.x[i], rod_pin.y[i]);
-                    let f_t = (-wheel_inertia * alpha - cross(t - s, p)) / self.crank;
+                    let f_t = (-wheel_inertia * alpha - cross(t - s, p)) / gear.crank;
                     let e = C::new(c.cos[i], c.sin[i]);
                     f_t * C::i() * e - f_t.abs() * tan * e
                 }

@@ -1,6 +1,6 @@
 //! Crank motion: the prescribed law, the crank-angle grid, and the source a run steps through.
 
-use crate::{CrankColumns, C, LANES};
+use crate::{vectorised, CrankColumns, C, LANES};
 
 /// Grid points between exact evaluations of e^{iθ}: in between, e^{iθ} advances by complex
 /// multiplications by e^{i·CHAINS·h}, along [`CHAINS`] interleaved chains that start from the
@@ -219,88 +219,6 @@ struct Spacing {
 // A grid block fills a run's block.
 const _: () = assert!(REANCHOR == LANES);
 
-impl Spacing {
-    /// Makes the states of the block from index `k` (a multiple of [`REANCHOR`]) to at most
-    /// `last` into `out`: how many it could make, and the motion's error at the next one if it
-    /// stopped short.
-    fn block(&self, k: usize, last: usize, out: &mut CrankColumns) -> (usize, Option<MotionError>) {
-        let n = (last + 1 - k).min(REANCHOR);
-        let m = self.motion;
-        let mut anchor = C::new(1.0, 0.0);
-        let mut chains = [anchor; CHAINS];
-        for j in 0..n {
-            let i = k + j;
-            // The last point is `end` itself, not start + h·steps, which can land a rounding
-            // step past it (and past the angle where a decelerating crank stops).
-            let angle = if i == self.steps {
-                self.end
-            } else {
-                self.start + self.h * i as f64
-            };
-            // Exact at the block's start (every REANCHOR points) and at the end.
-            let chain = &mut chains[j % CHAINS];
-            *chain = if j == 0 {
-                anchor = C::from_polar(1.0, angle);
-                anchor
-            } else if j < CHAINS {
-                anchor * self.starts[j]
-            } else {
-                *chain * self.rotation
-            };
-            let direction = if i == self.steps {
-                C::from_polar(1.0, angle)
-            } else {
-                *chain
-            };
-            out.angle[j] = angle;
-            out.cos[j] = direction.re;
-            out.sin[j] = direction.im;
-            out.acceleration[j] = m.angular_acceleration;
-        }
-        let (w0, a) = (m.initial_speed, m.angular_acceleration);
-        if a == 0.0 && w0 > 0.0 {
-            // Constant speed: ω = ω0 and t = Δθ/ω0, what at_angle gives without its square root.
-            for j in 0..n {
-                out.speed[j] = w0;
-                out.time[j] = (out.angle[j] - m.start_angle) / w0;
-            }
-            return (n, None);
-        }
-        // The checks of `speed_and_time` (one test for the block where the crank turns
-        // forwards and ω² stays above 0 throughout: the smallest ω², from four running minima),
-        // then its arithmetic on the whole block.
-        let mut lowest = [f64::INFINITY; 4];
-        for j in 0..n {
-            let w2 = w0 * w0 + 2.0 * a * (out.angle[j] - m.start_angle);
-            let l = &mut lowest[j % 4];
-            *l = if w2 < *l { w2 } else { *l };
-        }
-        let mut error = None;
-        let valid = if w0 > 0.0 && lowest.iter().all(|l| *l > 0.0) {
-            n
-        } else {
-            (0..n)
-                .position(|j| {
-                    m.speed_and_time_checked(out.angle[j])
-                        .map_err(|e| error = Some(e))
-                        .is_err()
-                })
-                .unwrap_or(n)
-        };
-        for j in 0..valid {
-            let dtheta = out.angle[j] - m.start_angle;
-            let w = (w0 * w0 + 2.0 * a * dtheta).sqrt();
-            out.speed[j] = w;
-            out.time[j] = if dtheta == 0.0 {
-                0.0
-            } else {
-                2.0 * dtheta / (w0 + w)
-            };
-        }
-        (valid, error)
-    }
-}
-
 impl Grid {
     /// `steps` intervals (`steps + 1` states) from `start` to `end`, rad.
     pub fn new(motion: CrankMotion, start: f64, end: f64, steps: usize) -> Self {
@@ -387,7 +305,7 @@ impl MotionSource for Grid {
         if self.k % REANCHOR != 0 {
             return next_one_by_one(self, out);
         }
-        let (n, error) = self.spacing.block(self.k, self.last, out);
+        let (n, error) = grid_block(&self.spacing, self.k, self.last, out);
         if error.is_some() {
             // Past the state the motion cannot reach, where `next` goes on failing.
             (self.block_start, self.block_len, self.error) = (self.k, 0, error.clone());
@@ -402,7 +320,8 @@ impl MotionSource for Grid {
             return None;
         }
         if self.k % REANCHOR == 0 {
-            (self.block_len, self.error) = self.spacing.block(self.k, self.last, &mut self.block);
+            (self.block_len, self.error) =
+                grid_block(&self.spacing, self.k, self.last, &mut self.block);
             self.block_start = self.k;
         }
         let lane = self.k - self.block_start;
@@ -413,6 +332,93 @@ impl MotionSource for Grid {
             // Past the block's valid states: the motion cannot reach this angle.
             Err(self.error.clone().unwrap_or(MotionError::Still))
         })
+    }
+}
+
+vectorised! {
+    /// Makes the states of the block from index `k` (a multiple of [`REANCHOR`]) to at most
+    /// `last` into `out`: how many it could make, and the motion's error at the next one if it
+    /// stopped short.
+    fn grid_block(
+        spacing: &Spacing,
+        k: usize,
+        last: usize,
+        out: &mut CrankColumns,
+    ) -> (usize, Option<MotionError>) {
+        let n = (last + 1 - k).min(REANCHOR);
+        let m = spacing.motion;
+        let mut anchor = C::new(1.0, 0.0);
+        let mut chains = [anchor; CHAINS];
+        for j in 0..n {
+            let i = k + j;
+            // The last point is `end` itself, not start + h·steps, which can land a rounding
+            // step past it (and past the angle where a decelerating crank stops).
+            let angle = if i == spacing.steps {
+                spacing.end
+            } else {
+                spacing.start + spacing.h * i as f64
+            };
+            // Exact at the block's start (every REANCHOR points) and at the end.
+            let chain = &mut chains[j % CHAINS];
+            *chain = if j == 0 {
+                anchor = C::from_polar(1.0, angle);
+                anchor
+            } else if j < CHAINS {
+                anchor * spacing.starts[j]
+            } else {
+                *chain * spacing.rotation
+            };
+            let direction = if i == spacing.steps {
+                C::from_polar(1.0, angle)
+            } else {
+                *chain
+            };
+            out.angle[j] = angle;
+            out.cos[j] = direction.re;
+            out.sin[j] = direction.im;
+            out.acceleration[j] = m.angular_acceleration;
+        }
+        let (w0, a) = (m.initial_speed, m.angular_acceleration);
+        if a == 0.0 && w0 > 0.0 {
+            // Constant speed: ω = ω0 and t = Δθ/ω0, what at_angle gives without its square root.
+            for j in 0..n {
+                out.speed[j] = w0;
+                out.time[j] = (out.angle[j] - m.start_angle) / w0;
+            }
+            return (n, None);
+        }
+        // The checks of `speed_and_time` (one test for the block where the crank turns
+        // forwards and ω² stays above 0 throughout: the smallest ω², from four running minima),
+        // then its arithmetic on the whole block.
+        let mut lowest = [f64::INFINITY; 4];
+        for j in 0..n {
+            let w2 = w0 * w0 + 2.0 * a * (out.angle[j] - m.start_angle);
+            let l = &mut lowest[j % 4];
+            *l = if w2 < *l { w2 } else { *l };
+        }
+        let mut error = None;
+        let valid = if w0 > 0.0 && lowest.iter().all(|l| *l > 0.0) {
+            n
+        } else {
+            (0..n)
+                .position(|j| {
+                    m.speed_and_time_checked(out.angle[j])
+                        .map_err(|e| error = Some(e))
+                        .is_err()
+                })
+                .unwrap_or(n)
+        };
+        for j in 0..valid {
+            let dtheta = out.angle[j] - m.start_angle;
+            let w = (w0 * w0 + 2.0 * a * dtheta).sqrt();
+            out.speed[j] = w;
+            out.time[j] = if dtheta == 0.0 {
+                0.0
+            } else {
+                2.0 * dtheta / (w0 + w)
+            };
+        }
+        (valid, error)
     }
 }
 

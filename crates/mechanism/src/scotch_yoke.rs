@@ -17,7 +17,7 @@
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{cross, Bearings, Body, Joint, Piston, PistonMotion, Topology};
 use crate::{check_length, check_rod_cg, Entry, MachineGeometry, Mechanism};
-use crate::{Column, LoadsBlock, StateBlock, LANES, ZERO};
+use crate::{vectorised, Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, Options, PointMotion, C};
 
 /// The registry line.
@@ -129,67 +129,8 @@ impl Mechanism for ScotchYoke {
         &self.masses
     }
 
-    /// Writes only the columns that are not zero at every step (a block starts zeroed): the
-    /// fill is bound by its stores.
     fn fill_block(&self, block: &mut StateBlock) {
-        let StateBlock {
-            len,
-            crank: cc,
-            bodies,
-            joints,
-            pistons,
-        } = block;
-        let ([shaft, slider, yoke], [main, pin, slot, guide], [piston]) =
-            (&mut bodies[..], &mut joints[..], &mut pistons[..])
-        else {
-            unreachable!("the Scotch yoke's topology")
-        };
-        let r = self.crank;
-        for i in 0..(*len).min(LANES) {
-            let crank = &cc.at(i);
-            let (w, a) = (crank.speed, crank.acceleration);
-            let e_a = crank.direction;
-            let (s, c) = (e_a.im, e_a.re);
-            let crank_pin = PointMotion::on_crank(r, crank);
-            // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
-            let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
-            // The crankshaft turns about its centre of gravity, on the main axis.
-            shaft.orientation_x[i] = c;
-            shaft.orientation_y[i] = s;
-            shaft.angular_velocity[i] = w;
-            shaft.angular_acceleration[i] = a;
-            // The block rides on the crank pin without turning.
-            slider.cg.set(i, &crank_pin);
-            slider.orientation_x[i] = 1.0;
-            // The yoke slides along the cylinder axis (+y) without turning.
-            yoke.cg.y[i] = y + self.masses.rod_cg;
-            yoke.cg.vy[i] = v;
-            yoke.cg.ay[i] = acc;
-            yoke.orientation_y[i] = 1.0;
-            main.relative_speed[i] = w;
-            pin.x[i] = crank_pin.position.re;
-            pin.y[i] = crank_pin.position.im;
-            pin.relative_speed[i] = w; // the block does not turn
-                                       // The yoke relative to the block, along +x.
-            slot.x[i] = crank_pin.position.re;
-            slot.y[i] = crank_pin.position.im;
-            slot.direction_x[i] = 1.0;
-            slot.relative_speed[i] = -crank_pin.velocity.re;
-            // The guides, along the axis.
-            guide.y[i] = y + self.rod;
-            guide.direction_y[i] = 1.0;
-            guide.relative_speed[i] = v;
-            piston.set(
-                i,
-                &PistonMotion {
-                    position: y + self.rod,
-                    velocity: v,
-                    acceleration: acc,
-                    dx_dtheta: r * c,
-                    d2x_dtheta2: -r * s,
-                },
-            );
-        }
+        fill(self, block);
     }
 
     fn piston_position(&self, angle: f64) -> (f64, f64) {
@@ -217,10 +158,92 @@ impl Mechanism for ScotchYoke {
         piston_force: Option<&Column>,
         out: &mut LoadsBlock,
     ) -> bool {
+        closed_form(self, st, inertia, piston_force, out)
+    }
+}
+
+vectorised! {
+    /// Writes only the columns that are not zero at every step (a block starts zeroed): the
+    /// fill is bound by its stores.
+    fn fill(machine: &ScotchYoke, block: &mut StateBlock) {
+        let StateBlock {
+            len,
+            crank: cc,
+            bodies,
+            joints,
+            pistons,
+        } = block;
+        let ([shaft, slider, yoke], [main, pin, slot, guide], [piston]) =
+            (&mut bodies[..], &mut joints[..], &mut pistons[..])
+        else {
+            unreachable!("the Scotch yoke's topology")
+        };
+        let r = machine.crank;
+        for i in 0..(*len).min(LANES) {
+            let crank = &cc.at(i);
+            let (w, a) = (crank.speed, crank.acceleration);
+            let e_a = crank.direction;
+            let (s, c) = (e_a.im, e_a.re);
+            let crank_pin = PointMotion::on_crank(r, crank);
+            // The slot centre line follows the pin's height: y = r·sin θ and its derivatives.
+            let (y, v, acc) = (r * s, r * w * c, r * (a * c - w * w * s));
+            // The crankshaft turns about its centre of gravity, on the main axis.
+            shaft.orientation_x[i] = c;
+            shaft.orientation_y[i] = s;
+            shaft.angular_velocity[i] = w;
+            shaft.angular_acceleration[i] = a;
+            // The block rides on the crank pin without turning.
+            slider.cg.set(i, &crank_pin);
+            slider.orientation_x[i] = 1.0;
+            // The yoke slides along the cylinder axis (+y) without turning.
+            yoke.cg.y[i] = y + machine.masses.rod_cg;
+            yoke.cg.vy[i] = v;
+            yoke.cg.ay[i] = acc;
+            yoke.orientation_y[i] = 1.0;
+            main.relative_speed[i] = w;
+            pin.x[i] = crank_pin.position.re;
+            pin.y[i] = crank_pin.position.im;
+            pin.relative_speed[i] = w; // the block does not turn
+                                       // The yoke relative to the block, along +x.
+            slot.x[i] = crank_pin.position.re;
+            slot.y[i] = crank_pin.position.im;
+            slot.direction_x[i] = 1.0;
+            slot.relative_speed[i] = -crank_pin.velocity.re;
+            // The guides, along the axis.
+            guide.y[i] = y + machine.rod;
+            guide.direction_y[i] = 1.0;
+            guide.relative_speed[i] = v;
+            piston.set(
+                i,
+                &PistonMotion {
+                    position: y + machine.rod,
+                    velocity: v,
+                    acceleration: acc,
+                    dx_dtheta: r * c,
+                    d2x_dtheta2: -r * s,
+                },
+            );
+        }
+    }
+}
+
+vectorised! {
+    /// Newton-Euler by hand. The yoke assembly (mass M, on the axis) takes from the block, along
+    /// the axis, F_s = M·a + F_gas (all its other forces are along the axis too, so the guides
+    /// carry no side force); F_s acts at the block, r·cos θ off the axis, so the guides answer
+    /// with the couple −r·cos θ·F_s. The massless block passes F_s on to the crank pin; the
+    /// drive supplies J·α + r·cos θ·F_s (= (M·a + F_gas)·v/ω: the power balance).
+    fn closed_form(
+        machine: &ScotchYoke,
+        st: &StateBlock,
+        inertia: bool,
+        piston_force: Option<&Column>,
+        out: &mut LoadsBlock,
+    ) -> bool {
         let (mass, crank_inertia) = if inertia {
             (
-                self.masses.rod_mass + self.masses.piston_mass,
-                self.masses.crankshaft_inertia,
+                machine.masses.rod_mass + machine.masses.piston_mass,
+                machine.masses.crankshaft_inertia,
             )
         } else {
             (0.0, 0.0)

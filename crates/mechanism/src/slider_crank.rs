@@ -15,8 +15,8 @@ use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{cross, Bearings, Body, Extra, Joint, Piston, PistonMotion, State, Topology};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{
-    BodyColumns, Column, CrankColumns, JointColumns, LoadsBlock, PistonColumns, StateBlock, LANES,
-    ZERO,
+    vectorised, BodyColumns, Column, CrankColumns, JointColumns, LoadsBlock, PistonColumns,
+    StateBlock, LANES, ZERO,
 };
 use crate::{BodyMotion, MechanismError, Options, PointMotion, C};
 
@@ -151,6 +151,7 @@ impl SliderCrank {
 
     /// cos θ_BA, sin θ_BA, and dθ_BA/dθ and d²θ_BA/dθ² (the rod's angular velocity and
     /// acceleration per unit crank speed at zero crank acceleration), from cos θ and sin θ.
+    #[inline(always)]
     fn rod_angles(&self, c: f64, s: f64) -> (f64, f64, f64, f64) {
         let (r, l) = (self.crank, self.rod);
         // One division per step: 1/l is the topology's constant.
@@ -257,36 +258,8 @@ impl Mechanism for SliderCrank {
         &self.masses
     }
 
-    /// The rod angles of the whole block first: their square roots and divisions are
-    /// independent across steps, so the processor overlaps them instead of waiting on each.
     fn fill_block(&self, block: &mut StateBlock) {
-        let StateBlock {
-            len,
-            crank,
-            bodies,
-            joints,
-            pistons,
-        } = block;
-        let ([shaft, rod, piston], Ok(joints), [cylinder]) = (
-            &mut bodies[..],
-            <&mut [JointColumns; 4]>::try_from(&mut joints[..]),
-            &mut pistons[..],
-        ) else {
-            unreachable!("the slider-crank's topology")
-        };
-        let mut parts = Parts {
-            crank,
-            shaft,
-            rod,
-            piston,
-            joints,
-            cylinder,
-        };
-        for i in 0..(*len).min(LANES) {
-            let c = parts.crank.at(i);
-            let angles = self.rod_angles(c.direction.re, c.direction.im);
-            self.fill_lane(&c, angles, &mut parts, i);
-        }
+        fill(self, block);
     }
 
     fn fill_extras(&self, st: &mut State) {
@@ -339,7 +312,56 @@ impl Mechanism for SliderCrank {
         piston_force: Option<&Column>,
         out: &mut LoadsBlock,
     ) -> bool {
-        let m = &self.masses;
+        closed_form(self, st, inertia, piston_force, out)
+    }
+}
+
+vectorised! {
+    /// One loop over the lanes, square roots and divisions included, which the compiler
+    /// vectorises: columns written straight, the columns that are zero at every step left alone.
+    fn fill(slider: &SliderCrank, block: &mut StateBlock) {
+        let StateBlock {
+            len,
+            crank,
+            bodies,
+            joints,
+            pistons,
+        } = block;
+        let ([shaft, rod, piston], Ok(joints), [cylinder]) = (
+            &mut bodies[..],
+            <&mut [JointColumns; 4]>::try_from(&mut joints[..]),
+            &mut pistons[..],
+        ) else {
+            unreachable!("the slider-crank's topology")
+        };
+        let mut parts = Parts {
+            crank,
+            shaft,
+            rod,
+            piston,
+            joints,
+            cylinder,
+        };
+        for i in 0..(*len).min(LANES) {
+            let c = parts.crank.at(i);
+            let angles = slider.rod_angles(c.direction.re, c.direction.im);
+            slider.fill_lane(&c, angles, &mut parts, i);
+        }
+    }
+}
+
+vectorised! {
+    /// Karhula (2008) A5.2.1.1-39. As in the thesis the loads are superposed: the rod's inertia
+    /// with a massless piston, then the piston's inertia (and the applied force) with a
+    /// massless rod. All joints are frictionless.
+    fn closed_form(
+        slider: &SliderCrank,
+        st: &StateBlock,
+        inertia: bool,
+        piston_force: Option<&Column>,
+        out: &mut LoadsBlock,
+    ) -> bool {
+        let m = &slider.masses;
         let (rod_mass, rod_inertia, piston_mass, crank_inertia) = if inertia {
             (
                 m.rod_mass,
@@ -374,7 +396,7 @@ impl Mechanism for SliderCrank {
             let couple = -rod_inertia * rod.angular_acceleration;
             let moment_about_crank_pin = cross(m.rod_cg * e_rod, f_ine2) + couple;
             let f_piston_on_rod =
-                C::new(moment_about_crank_pin * self.inverse_rod * inverse_sin, 0.0);
+                C::new(moment_about_crank_pin * slider.inverse_rod * inverse_sin, 0.0);
             let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
 
             // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
