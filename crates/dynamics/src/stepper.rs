@@ -666,6 +666,40 @@ mod tests {
                 quantity,
                 format!("{}_velocity", m.topology().pistons[0].name)
             );
+            // The same over a block's columns: lane 5's NaN found and named, lane 2's
+            // overflowing sum of finite loads looked into and passed; a block of finite sums
+            // passes at once.
+            let t = m.topology();
+            let mut states = StateBlock::for_topology(t);
+            let mut columns = LoadsBlock::for_topology(t);
+            let fine = Loads::for_topology(t);
+            let mut nan = fine.clone();
+            nan.joints[last].force.im = f64::NAN;
+            states.len = 9;
+            for i in 0..9 {
+                states.scatter(i, &state);
+                let lane_loads = match i {
+                    2 => &loads,
+                    5 => &nan,
+                    _ => &fine,
+                };
+                columns.scatter(i, lane_loads);
+            }
+            let sums = finite_sums(&states, None, std::slice::from_ref(&columns));
+            assert!(!all_finite(&sums), "{}", entry.name);
+            let bad: Vec<usize> = (0..9).filter(|&i| !sums[i].is_finite()).collect();
+            assert_eq!(bad, [2, 5], "{}", entry.name);
+            let columns = std::slice::from_ref(&columns);
+            let lane = |i| check_lane(7, &states, i, None, &families, columns, m.as_ref());
+            assert_eq!(lane(2), Ok(()), "{}", entry.name);
+            let Err(RunError::NonFinite { quantity, .. }) = lane(5) else {
+                panic!("{}: lane 5's NaN passed", entry.name)
+            };
+            assert_eq!(quantity, format!("inertial_{joint}_force"));
+            let mut columns = LoadsBlock::for_topology(t);
+            columns.scatter(4, &fine);
+            let sums = finite_sums(&states, None, std::slice::from_ref(&columns));
+            assert!(all_finite(&sums), "{}", entry.name);
         }
     }
 }

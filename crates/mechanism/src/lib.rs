@@ -21,8 +21,8 @@ pub mod scotch_yoke;
 pub mod slider_crank;
 
 pub use block::{
-    BodyColumns, Column, CrankColumns, JointColumns, JointLoadColumns, LoadsBlock, PistonColumns,
-    PointColumns, StateBlock, LANES, ZERO,
+    use_avx2, BodyColumns, Column, CrankColumns, JointColumns, JointLoadColumns, LoadsBlock,
+    PistonColumns, PointColumns, StateBlock, LANES, ZERO,
 };
 pub use cardan_gear::{CardanGear, MeshModel};
 pub use hypotrochoid::Hypotrochoid;
