@@ -191,6 +191,18 @@ impl JointColumns {
 }
 
 impl PistonColumns {
+    /// Lane `i`.
+    #[inline(always)]
+    pub fn at(&self, i: usize) -> PistonMotion {
+        PistonMotion {
+            position: self.position[i],
+            velocity: self.velocity[i],
+            acceleration: self.acceleration[i],
+            dx_dtheta: self.dx_dtheta[i],
+            d2x_dtheta2: self.d2x_dtheta2[i],
+        }
+    }
+
     /// Sets lane `i`.
     #[inline(always)]
     pub fn set(&mut self, i: usize, m: &PistonMotion) {
@@ -277,86 +289,31 @@ impl StateBlock {
         error
     }
 
-    /// The crank state of lane `i`.
-    #[inline(always)]
-    pub fn crank(&self, i: usize) -> CrankState {
-        self.crank.at(i)
-    }
-
-    /// Sets lane `i`'s crank state.
-    #[inline(always)]
-    pub fn set_crank(&mut self, i: usize, s: &CrankState) {
-        self.crank.set(i, s);
-    }
-
-    /// Body `k`'s motion at lane `i`.
-    #[inline(always)]
-    pub fn body(&self, k: usize, i: usize) -> BodyMotion {
-        self.bodies[k].at(i)
-    }
-
-    /// Sets body `k`'s motion at lane `i`.
-    #[inline(always)]
-    pub fn set_body(&mut self, k: usize, i: usize, m: &BodyMotion) {
-        self.bodies[k].set(i, m);
-    }
-
-    /// Joint `k`'s motion at lane `i`.
-    #[inline(always)]
-    pub fn joint(&self, k: usize, i: usize) -> JointMotion {
-        self.joints[k].at(i)
-    }
-
-    /// Sets joint `k`'s motion at lane `i`.
-    #[inline(always)]
-    pub fn set_joint(&mut self, k: usize, i: usize, m: &JointMotion) {
-        self.joints[k].set(i, m);
-    }
-
-    /// Piston `k`'s motion at lane `i`.
-    #[inline(always)]
-    pub fn piston(&self, k: usize, i: usize) -> PistonMotion {
-        let p = &self.pistons[k];
-        PistonMotion {
-            position: p.position[i],
-            velocity: p.velocity[i],
-            acceleration: p.acceleration[i],
-            dx_dtheta: p.dx_dtheta[i],
-            d2x_dtheta2: p.d2x_dtheta2[i],
-        }
-    }
-
-    /// Sets piston `k`'s motion at lane `i`.
-    #[inline(always)]
-    pub fn set_piston(&mut self, k: usize, i: usize, m: &PistonMotion) {
-        self.pistons[k].set(i, m);
-    }
-
     /// Lane `i` as a state (a [`State::for_topology`] of the same topology), all but its extras.
     pub fn gather(&self, i: usize, st: &mut State) {
-        st.crank = self.crank(i);
-        for (k, b) in st.bodies.iter_mut().enumerate() {
-            *b = self.body(k, i);
+        st.crank = self.crank.at(i);
+        for (b, c) in st.bodies.iter_mut().zip(&self.bodies) {
+            *b = c.at(i);
         }
-        for (k, j) in st.joints.iter_mut().enumerate() {
-            *j = self.joint(k, i);
+        for (j, c) in st.joints.iter_mut().zip(&self.joints) {
+            *j = c.at(i);
         }
-        for (k, p) in st.pistons.iter_mut().enumerate() {
-            *p = self.piston(k, i);
+        for (p, c) in st.pistons.iter_mut().zip(&self.pistons) {
+            *p = c.at(i);
         }
     }
 
     /// Sets lane `i` to the state `st`.
     pub fn scatter(&mut self, i: usize, st: &State) {
-        self.set_crank(i, &st.crank);
-        for (k, b) in st.bodies.iter().enumerate() {
-            self.set_body(k, i, b);
+        self.crank.set(i, &st.crank);
+        for (b, c) in st.bodies.iter().zip(&mut self.bodies) {
+            c.set(i, b);
         }
-        for (k, j) in st.joints.iter().enumerate() {
-            self.set_joint(k, i, j);
+        for (j, c) in st.joints.iter().zip(&mut self.joints) {
+            c.set(i, j);
         }
-        for (k, p) in st.pistons.iter().enumerate() {
-            self.set_piston(k, i, p);
+        for (p, c) in st.pistons.iter().zip(&mut self.pistons) {
+            c.set(i, p);
         }
     }
 
@@ -382,6 +339,15 @@ pub struct JointLoadColumns {
 }
 
 impl JointLoadColumns {
+    /// Lane `i`.
+    #[inline(always)]
+    pub fn at(&self, i: usize) -> JointLoad {
+        JointLoad {
+            force: C::new(self.fx[i], self.fy[i]),
+            moment: self.moment[i],
+        }
+    }
+
     /// Sets lane `i`'s force (its couple left as it is).
     #[inline(always)]
     pub fn set_force(&mut self, i: usize, force: C) {
@@ -419,34 +385,18 @@ impl LoadsBlock {
         }
     }
 
-    /// Joint `k`'s load at lane `i`.
-    #[inline(always)]
-    pub fn joint(&self, k: usize, i: usize) -> JointLoad {
-        let j = &self.joints[k];
-        JointLoad {
-            force: C::new(j.fx[i], j.fy[i]),
-            moment: j.moment[i],
-        }
-    }
-
-    /// Sets joint `k`'s load at lane `i`.
-    #[inline(always)]
-    pub fn set(&mut self, k: usize, i: usize, load: &JointLoad) {
-        self.joints[k].set(i, load);
-    }
-
     /// Lane `i` as loads (a [`Loads::for_topology`] of the same topology).
     pub fn gather(&self, i: usize, out: &mut Loads) {
-        for (k, j) in out.joints.iter_mut().enumerate() {
-            *j = self.joint(k, i);
+        for (j, c) in out.joints.iter_mut().zip(&self.joints) {
+            *j = c.at(i);
         }
         out.crank_torque = self.crank_torque[i];
     }
 
     /// Sets lane `i` to `loads`.
     pub fn scatter(&mut self, i: usize, loads: &Loads) {
-        for (k, j) in loads.joints.iter().enumerate() {
-            self.set(k, i, j);
+        for (j, c) in loads.joints.iter().zip(&mut self.joints) {
+            c.set(i, j);
         }
         self.crank_torque[i] = loads.crank_torque;
     }
