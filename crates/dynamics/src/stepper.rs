@@ -1,6 +1,9 @@
-//! The step loop: a motion source gives crank states (a prescribed one a block at a time), the
-//! mechanism fills its state, each load family its loads, and every step is handed to the sinks
-//! (summaries, per-step files) and then forgotten. Nothing here grows with the number of steps.
+//! The step loop: a motion source gives crank states (a prescribed one a block of
+//! [`LANES`] at a time, straight into the block's columns), the mechanism fills its columns,
+//! each load family its loads' columns, the finiteness of every step is checked, and the block
+//! is handed to the sinks (the summary reads the columns; per-step files and the stages, losses
+//! and gear ratings, take the steps one at a time, gathered from the columns only where they
+//! are wanted) and then forgotten. Nothing here grows with the number of steps.
 //! [`crate::run_parallel`] shares one run among threads, each piece through this loop.
 
 use crate::energy::torque_shares;

@@ -97,7 +97,7 @@ fn blocks_and_single_steps_give_the_same_run() {
         initial_speed: 100.0,
         angular_acceleration: 500.0,
     };
-    // 101 states: twelve blocks of eight and a part.
+    // 101 states: a block of 64 and a part.
     let (blocks, a) = steps(&mut Grid::new(motion, 1.0, 8.0, 100));
     let (single, b) = steps(&mut OneByOne(Grid::new(motion, 1.0, 8.0, 100)));
     assert!(a.is_ok() && b.is_ok());

@@ -427,7 +427,7 @@ impl LoadsBlock {
     }
 }
 
-/// Whether the block kernels ([`vectorised!`]) run their AVX2 versions: where the processor has
+/// Whether the block kernels (`vectorised!`) run their AVX2 versions: where the processor has
 /// AVX2, unless the environment sets `CARDAN_SIMD=baseline` (to compare the two: the tests run
 /// the shipped cases both ways and find the same bytes). Read once per process, like the
 /// processor's features themselves.

@@ -6,9 +6,11 @@
 //! the direction of rotation, so θ = 90° is top dead centre. Every quantity is SI: m, m/s, m/s²,
 //! rad, rad/s, rad/s², s, kg, N.
 //!
-//! A mechanism declares its [`Topology`] and fills one [`State`] per crank state; code outside
-//! a mechanism's own module reads bodies, joints and pistons from those lists and never asks
-//! which mechanism it has. The mechanisms a case file may name are listed in [`MECHANISMS`].
+//! A mechanism declares its [`Topology`] and fills the motion of its bodies, joints and pistons
+//! at a block of crank states, as columns ([`StateBlock`]; a lane of it is one [`State`]); code
+//! outside a mechanism's own module reads bodies, joints and pistons from those lists and never
+//! asks which mechanism it has. The mechanisms a case file may name are listed in
+//! [`MECHANISMS`].
 
 pub mod block;
 pub mod cardan_gear;
