@@ -14,7 +14,7 @@
 use crate::case::OutputOptions;
 use crate::report::{ChartData, ChartRecorder, ChartRows, MAX_POINTS};
 use anyhow::{bail, Context};
-use cardan_dynamics::{radial, tangential, GearRatings, Sink, Step};
+use cardan_dynamics::{radial, tangential, GearRatings, Sink, Step, StepBlock, StepScratch};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use std::fs::File;
 use std::io::{BufWriter, Seek, SeekFrom, Write};
@@ -432,6 +432,8 @@ pub struct ChartSink<'a> {
     rows: Vec<f64>,
     first_taken: Option<usize>,
     last_taken: Option<usize>,
+    /// Where a step the charts take is gathered from a block's columns.
+    step: StepScratch,
 }
 
 impl<'a> ChartSink<'a> {
@@ -462,6 +464,7 @@ impl<'a> ChartSink<'a> {
             rows: Vec::new(),
             first_taken: None,
             last_taken: None,
+            step: StepScratch::for_topology(mechanism.topology()),
         }
     }
 
@@ -500,17 +503,9 @@ impl<'a> ChartSink<'a> {
     }
 }
 
-impl Sink for ChartSink<'_> {
-    fn push(&mut self, s: &Step) -> Result<(), String> {
-        let next = match self.next {
-            Some(n) => n,
-            None => self.taken_from(s.index),
-        };
-        if s.index != next {
-            self.next = Some(next);
-            return Ok(());
-        }
-        self.next = Some(self.taken_from(s.index + 1));
+impl ChartSink<'_> {
+    /// Takes the row of `s`, a step the charts take.
+    fn take(&mut self, s: &Step) {
         self.scratch.clear();
         self.row.fill(s, &mut self.scratch);
         self.rows.extend(self.read.iter().map(|&k| self.scratch[k]));
@@ -518,7 +513,31 @@ impl Sink for ChartSink<'_> {
         self.last_taken = Some(s.index);
         // One row at a time, unless this is a piece of a shared run.
         self.record();
+    }
+}
+
+impl Sink for ChartSink<'_> {
+    /// Only the steps the charts take, each gathered from the block's columns (a long run's
+    /// charts take one step in many).
+    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
+        let end = block.first + block.len();
+        let mut next = match self.next {
+            Some(n) => n,
+            None => self.taken_from(block.first),
+        };
+        let mut scratch = std::mem::take(&mut self.step);
+        while next < end {
+            let s = block.step(next - block.first, &mut scratch);
+            self.take(&s);
+            next = self.taken_from(next + 1);
+        }
+        self.step = scratch;
+        self.next = Some(next);
         Ok(())
+    }
+
+    fn wants_steps(&self) -> bool {
+        false
     }
 }
 

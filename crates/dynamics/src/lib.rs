@@ -39,6 +39,7 @@ pub use losses::{
 pub use metrics::{Aggregation, MetricDef, METRICS};
 pub use parallel::{run_parallel, Joinable};
 pub use stepper::{
-    run, run_summary, GasAt, RunError, Sink, Stages, Step, StepBlock, StepRecord, Steps,
+    run, run_summary, GasAt, RunError, Sink, Stages, Step, StepBlock, StepRecord, StepScratch,
+    Steps,
 };
 pub use summary::{radial, summary_chunk, tangential, Metric, Summary, SummarySink, MAX_CHUNK};

@@ -12,7 +12,7 @@ use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
 use cardan_mechanism::{
     vectorised, Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
-    LANES, ZERO,
+    Topology, LANES, ZERO,
 };
 
 /// One step, as the sinks that take steps one at a time see it.
@@ -71,6 +71,69 @@ impl StepBlock<'_> {
 
     pub fn is_empty(&self) -> bool {
         self.state.len == 0
+    }
+
+    /// Lane `i` as a step: the run's own, if it made the steps one at a time, else gathered
+    /// from the columns into `scratch` (a sink that takes few of a block's steps, without
+    /// [wanting](Sink::wants_steps) them all; no losses, gear ratings or details then, as a
+    /// run without stages or details has none).
+    pub fn step<'s>(&'s self, i: usize, scratch: &'s mut StepScratch) -> Step<'s> {
+        if let Some(s) = self.steps.get(i) {
+            return *s;
+        }
+        let StepScratch {
+            state,
+            forces,
+            families,
+            total,
+            shares,
+        } = scratch;
+        self.state.gather(i, state);
+        forces.clear();
+        if let Some(f) = self.piston_force {
+            forces.resize(state.pistons.len(), f[i]);
+        }
+        families.resize(self.families.len(), total.clone());
+        for (out, columns) in families.iter_mut().zip(self.families) {
+            columns.gather(i, out);
+        }
+        self.total.gather(i, total);
+        shares.resize(self.families.len(), vec![0.0; state.bodies.len()]);
+        Step {
+            index: self.first + i,
+            state,
+            pressure: self.pressure.map(|p| p[i]),
+            piston_forces: forces,
+            families,
+            total,
+            losses: &[],
+            friction_torque: 0.0,
+            gears: &[],
+            shares,
+        }
+    }
+}
+
+/// Where [`StepBlock::step`] gathers a step.
+#[derive(Debug, Clone, Default)]
+pub struct StepScratch {
+    state: State,
+    forces: Vec<f64>,
+    families: Vec<Loads>,
+    total: Loads,
+    shares: Vec<Vec<f64>>,
+}
+
+impl StepScratch {
+    /// Room for a step of a mechanism of `topology` (its extras left at 0: no details).
+    pub fn for_topology(topology: &Topology) -> Self {
+        Self {
+            state: State::for_topology(topology),
+            forces: Vec::new(),
+            families: Vec::new(),
+            total: Loads::for_topology(topology),
+            shares: Vec::new(),
+        }
     }
 }
 
