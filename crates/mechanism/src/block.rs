@@ -265,6 +265,28 @@ impl StateBlock {
         }
     }
 
+    /// The steps the block holds (at most [`LANES`]), its crank columns, and its bodies',
+    /// joints' and pistons' columns as arrays of the sizes of a mechanism's topology (`None`
+    /// for a block of another topology): what a mechanism's fill writes.
+    #[allow(clippy::type_complexity)]
+    pub fn split<const B: usize, const J: usize, const P: usize>(
+        &mut self,
+    ) -> Option<(
+        usize,
+        &CrankColumns,
+        &mut [BodyColumns; B],
+        &mut [JointColumns; J],
+        &mut [PistonColumns; P],
+    )> {
+        Some((
+            self.len.min(LANES),
+            &self.crank,
+            (&mut self.bodies[..]).try_into().ok()?,
+            (&mut self.joints[..]).try_into().ok()?,
+            (&mut self.pistons[..]).try_into().ok()?,
+        ))
+    }
+
     /// Fills the block with `mechanism` at `cranks` (at most [`LANES`] of them).
     pub fn fill<M: Mechanism + ?Sized>(&mut self, mechanism: &M, cranks: &[CrankState]) {
         assert!(cranks.len() <= LANES, "a block holds at most {LANES} steps");
@@ -453,7 +475,8 @@ pub fn use_avx2() -> bool {
 /// what it calls must be inlined into it (`#[inline(always)]`) to be compiled for AVX2 too.
 #[macro_export]
 macro_rules! vectorised {
-    ($(#[$meta:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)? $body:block) => {
+    ($(#[$meta:meta])* $vis:vis fn $name:ident($($arg:ident: $ty:ty),* $(,)?)
+        $(-> $ret:ty)? $body:block) => {
         $(#[$meta])*
         $vis fn $name($($arg: $ty),*) $(-> $ret)? {
             #[inline(always)]

@@ -258,20 +258,12 @@ vectorised! {
     /// Writes only the columns that are not zero at every step (a block starts zeroed): the
     /// fill is bound by its stores.
     fn fill(gear: &CardanGear, block: &mut StateBlock) {
-        let StateBlock {
-            len,
-            crank: cc,
-            bodies,
-            joints,
-            pistons,
-        } = block;
-        let ([shaft, wheel, rod], [main, pin, rod_pin, mesh], [piston]) =
-            (&mut bodies[..], &mut joints[..], &mut pistons[..])
+        let Some((n, cc, [shaft, wheel, rod], [main, pin, rod_pin, mesh], [piston])) = block.split()
         else {
             unreachable!("the cardan gear's topology")
         };
         let r = gear.crank;
-        for i in 0..(*len).min(LANES) {
+        for i in 0..n {
             let crank = &cc.at(i);
             let (w, a) = (crank.speed, crank.acceleration);
             let e_a = crank.direction;

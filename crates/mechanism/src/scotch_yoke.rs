@@ -166,20 +166,12 @@ vectorised! {
     /// Writes only the columns that are not zero at every step (a block starts zeroed): the
     /// fill is bound by its stores.
     fn fill(machine: &ScotchYoke, block: &mut StateBlock) {
-        let StateBlock {
-            len,
-            crank: cc,
-            bodies,
-            joints,
-            pistons,
-        } = block;
-        let ([shaft, slider, yoke], [main, pin, slot, guide], [piston]) =
-            (&mut bodies[..], &mut joints[..], &mut pistons[..])
+        let Some((n, cc, [shaft, slider, yoke], [main, pin, slot, guide], [piston])) = block.split()
         else {
             unreachable!("the Scotch yoke's topology")
         };
         let r = machine.crank;
-        for i in 0..(*len).min(LANES) {
+        for i in 0..n {
             let crank = &cc.at(i);
             let (w, a) = (crank.speed, crank.acceleration);
             let e_a = crank.direction;

@@ -320,18 +320,7 @@ vectorised! {
     /// One loop over the lanes, square roots and divisions included, which the compiler
     /// vectorises: columns written straight, the columns that are zero at every step left alone.
     fn fill(slider: &SliderCrank, block: &mut StateBlock) {
-        let StateBlock {
-            len,
-            crank,
-            bodies,
-            joints,
-            pistons,
-        } = block;
-        let ([shaft, rod, piston], Ok(joints), [cylinder]) = (
-            &mut bodies[..],
-            <&mut [JointColumns; 4]>::try_from(&mut joints[..]),
-            &mut pistons[..],
-        ) else {
+        let Some((n, crank, [shaft, rod, piston], joints, [cylinder])) = block.split() else {
             unreachable!("the slider-crank's topology")
         };
         let mut parts = Parts {
@@ -342,7 +331,7 @@ vectorised! {
             joints,
             cylinder,
         };
-        for i in 0..(*len).min(LANES) {
+        for i in 0..n {
             let c = parts.crank.at(i);
             let angles = slider.rod_angles(c.direction.re, c.direction.im);
             slider.fill_lane(&c, angles, &mut parts, i);
