@@ -439,7 +439,8 @@ struct StepOut {
 
 vectorised! {
     /// For each step of `block`, the sum of the quantities [`check_finite`] checks: an infinity or
-    /// a NaN among them makes it an infinity or a NaN (one addition per quantity, across the steps).
+    /// a NaN among them makes it an infinity or a NaN (one addition per quantity, across the
+    /// steps).
     // Lane by lane over several columns at once: an index reads them all.
     #[allow(clippy::needless_range_loop)]
     fn finite_sums(block: &StateBlock, pressure: Option<&Column>, loads: &[LoadsBlock]) -> Column {

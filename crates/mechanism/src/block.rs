@@ -103,6 +103,16 @@ pub struct StateBlock {
 }
 
 impl CrankColumns {
+    /// Zeros in every column.
+    pub const ZEROED: Self = Self {
+        angle: ZERO,
+        cos: ZERO,
+        sin: ZERO,
+        speed: ZERO,
+        acceleration: ZERO,
+        time: ZERO,
+    };
+
     /// Lane `i`.
     #[inline(always)]
     pub fn at(&self, i: usize) -> CrankState {
@@ -251,14 +261,7 @@ impl StateBlock {
         };
         Self {
             len: 0,
-            crank: CrankColumns {
-                angle: ZERO,
-                cos: ZERO,
-                sin: ZERO,
-                speed: ZERO,
-                acceleration: ZERO,
-                time: ZERO,
-            },
+            crank: CrankColumns::ZEROED,
             bodies: vec![body; topology.bodies.len()],
             joints: vec![joint; topology.joints.len()],
             pistons: vec![piston; topology.pistons.len()],
@@ -405,6 +408,16 @@ impl LoadsBlock {
             joints: vec![joint; topology.joints.len()],
             crank_torque: ZERO,
         }
+    }
+
+    /// The joints' columns as an array of the size of a mechanism's topology (`None` for a
+    /// block of another topology), and the drive torque's column: what a mechanism's closed
+    /// forms write.
+    pub fn split<const J: usize>(&mut self) -> Option<(&mut [JointLoadColumns; J], &mut Column)> {
+        Some((
+            (&mut self.joints[..]).try_into().ok()?,
+            &mut self.crank_torque,
+        ))
     }
 
     /// Lane `i` as loads (a [`Loads::for_topology`] of the same topology).

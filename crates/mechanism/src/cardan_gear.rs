@@ -349,11 +349,8 @@ vectorised! {
         let (c, rod, rod_pin, pin) = (&st.crank, &st.bodies[ROD], &st.joints[2], &st.joints[1]);
         let gas = piston_force.unwrap_or(&ZERO);
         let tan = gear.pressure_angle.tan();
-        let LoadsBlock {
-            joints,
-            crank_torque,
-        } = out;
-        let [main, crank_pin_load, rod_pin_load, mesh_load] = &mut joints[..] else {
+        let Some(([main, crank_pin_load, rod_pin_load, mesh_load], crank_torque)) = out.split()
+        else {
             unreachable!("the cardan gear's topology")
         };
         // Pins and a mesh: no couple (their columns stay zero).

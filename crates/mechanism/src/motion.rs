@@ -223,7 +223,6 @@ impl Grid {
     /// `steps` intervals (`steps + 1` states) from `start` to `end`, rad.
     pub fn new(motion: CrankMotion, start: f64, end: f64, steps: usize) -> Self {
         let h = (end - start) / steps as f64;
-        let zero = [0.0; LANES];
         Self {
             spacing: Spacing {
                 motion,
@@ -237,14 +236,7 @@ impl Grid {
             k: 0,
             first: 0,
             last: steps,
-            block: Box::new(CrankColumns {
-                angle: zero,
-                cos: zero,
-                sin: zero,
-                speed: zero,
-                acceleration: zero,
-                time: zero,
-            }),
+            block: Box::new(CrankColumns::ZEROED),
             block_len: 0,
             block_start: 0,
             error: None,
@@ -543,7 +535,7 @@ mod tests {
                 let mut states: Vec<CrankState> = (0..lead)
                     .map_while(|_| g.next(None).and_then(Result::ok))
                     .collect();
-                let mut columns = Grid::new(m, 0.0, 0.99, 1).block.clone();
+                let mut columns = CrankColumns::ZEROED;
                 let end_in_blocks = loop {
                     let (n, error) = g.next_block(&mut columns);
                     states.extend((0..n).map(|i| columns.at(i)));

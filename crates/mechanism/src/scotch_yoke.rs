@@ -242,11 +242,7 @@ vectorised! {
         };
         let (yoke, pin) = (&st.bodies[YOKE], &st.joints[1]);
         let gas = piston_force.unwrap_or(&ZERO);
-        let LoadsBlock {
-            joints,
-            crank_torque,
-        } = out;
-        let [main, pin_load, slot_load, guide_load] = &mut joints[..] else {
+        let Some(([main, pin_load, slot_load, guide_load], crank_torque)) = out.split() else {
             unreachable!("the Scotch yoke's topology")
         };
         for i in 0..st.len.min(LANES) {

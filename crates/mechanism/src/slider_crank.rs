@@ -363,11 +363,8 @@ vectorised! {
         };
         let (rod, piston, crank_pin) = (&st.bodies[ROD], &st.bodies[PISTON], &st.joints[1]);
         let gas = piston_force.unwrap_or(&ZERO);
-        let LoadsBlock {
-            joints,
-            crank_torque,
-        } = out;
-        let [main, crank_pin_load, piston_pin_load, slide_load] = &mut joints[..] else {
+        let Some(([main, crank_pin_load, piston_pin_load, slide_load], crank_torque)) = out.split()
+        else {
             unreachable!("the slider-crank's topology")
         };
         for i in 0..st.len.min(LANES) {
@@ -380,7 +377,8 @@ vectorised! {
             // Rod with a massless piston. Its inertial force −m2·a_g2 (A5.2.1.4) and inertial
             // couple −J2·α_BA (5.1.2) have the moment M_i about the crank pin (A5.2.1.6-8). The
             // massless piston can only pass on a force across the cylinder, so the piston pin
-            // force on the rod is horizontal, and moments about the crank pin give it (A5.2.1.9-10).
+            // force on the rod is horizontal, and moments about the crank pin give it
+            // (A5.2.1.9-10).
             let f_ine2 = -rod_mass * rod.cg.acceleration;
             let couple = -rod_inertia * rod.angular_acceleration;
             let moment_about_crank_pin = cross(m.rod_cg * e_rod, f_ine2) + couple;
@@ -388,7 +386,8 @@ vectorised! {
                 C::new(moment_about_crank_pin * slider.inverse_rod * inverse_sin, 0.0);
             let f_crank_on_rod_2 = -f_ine2 - f_piston_on_rod; // (A5.2.1.11)
 
-            // Piston with a massless rod: the rod is a two-force member along its line (A5.2.1.17-22).
+            // Piston with a massless rod: the rod is a two-force member along its line
+            // (A5.2.1.17-22).
             let load = -piston_mass * piston.at(i).cg.acceleration - C::new(0.0, gas[i]);
             let f_rod_on_piston_3 = -load.im * inverse_sin * e_rod;
             let side_3 = -(load.re + f_rod_on_piston_3.re); // (A5.2.1.20)
@@ -397,9 +396,10 @@ vectorised! {
             let crankshaft = crank_inertia * st.crank.acceleration[i]; // −T_ine1 (A5.2.1.1)
             let rod_share = -cross(a_pin, -f_crank_on_rod_2); // −T_2i10 (A5.2.1.15)
             let piston_share = -cross(a_pin, -f_rod_on_piston_3); // −T_3i10 (A5.2.1.23)
-                                                                  // (A5.2.1.25): the crankshaft's centre of gravity is on its axis. No couple at the
-                                                                  // pins nor, with the pin at the piston's centre of gravity, at the slide; and the
-                                                                  // slide carries no force along it (those columns stay zero).
+
+            // (A5.2.1.25): the crankshaft's centre of gravity is on its axis. No couple at the
+            // pins nor, with the pin at the piston's centre of gravity, at the slide; and the
+            // slide carries no force along it (those columns stay zero).
             main.set_force(i, f_crank_on_rod);
             crank_pin_load.set_force(i, -f_crank_on_rod); // (A5.2.1.28)
             piston_pin_load.set_force(i, f_rod_on_piston_3 - f_piston_on_rod);
