@@ -65,8 +65,8 @@ pub const MAX_CHUNK: usize = 4096;
 /// Steps whose integral terms a summary adds up apart before adding their sum to the run's,
 /// in a run of `points` states: the pieces a run is shared in among threads
 /// ([`crate::run_parallel`]), each piece whole chunks, whose sums are added in the chunks'
-/// order. A summary made step by step adds the same sums in the same order, so it is the same
-/// bit for bit however the run is shared (tested). A function of the run's length alone, not
+/// order. Within a chunk the order of the terms is a function of their steps' indices alone
+/// ([`Integral`]), so a summary is the same bit for bit however the run is shared (tested). A function of the run's length alone, not
 /// of the threads, so that a run on one thread and a shared one agree: an even number of
 /// near-equal chunks, so that two cores share a run evenly, of whole grid blocks
 /// ([`cardan_mechanism::REANCHOR`], where a grid can be split), none longer than
@@ -78,26 +78,42 @@ pub fn summary_chunk(points: usize) -> usize {
     blocks.div_ceil(chunks) * BLOCK
 }
 
-/// A trapezoidal integral summed chunk by chunk ([`summary_chunk`]).
+/// Running sums an integral's terms are shared among, by their step's index modulo `SLOTS`.
+const SLOTS: usize = 4;
+
+/// A trapezoidal integral summed chunk by chunk ([`summary_chunk`]). Within a chunk, the term
+/// of the interval ending at step k goes to running sum k mod [`SLOTS`], each sum taking its
+/// terms in the steps' order; a chunk's value is the sums added pairwise. The order is a
+/// function of the steps' indices alone, so a run gives the same bits however it is cut into
+/// blocks and pieces; the sums are independent, so four terms are added at once (one add's
+/// latency per four steps, not per step; the error bound is that of sequential summation of
+/// a quarter as many terms).
 #[derive(Debug, Clone, Copy, Default)]
 struct Integral {
-    /// The sum of the chunks closed so far, and of the chunk under way.
+    /// The sum of the chunks closed so far, and the running sums of the chunk under way.
     closed: f64,
-    open: f64,
+    open: [f64; SLOTS],
 }
 
 impl Integral {
-    fn add(&mut self, term: f64) {
-        self.open += term;
+    /// Adds `term`, the trapezoid of the interval ending at step `step`.
+    fn add(&mut self, step: usize, term: f64) {
+        self.open[step % SLOTS] += term;
+    }
+
+    /// The running sums added pairwise.
+    fn chunk(&self) -> f64 {
+        let [a, b, c, d] = self.open;
+        (a + b) + (c + d)
     }
 
     fn close_chunk(&mut self) {
-        self.closed += self.open;
-        self.open = 0.0;
+        self.closed += self.chunk();
+        self.open = [0.0; SLOTS];
     }
 
     fn value(&self) -> f64 {
-        self.closed + self.open
+        self.closed + self.chunk()
     }
 
     /// Continues with the chunks of `later`, a summary of the steps after these (its first
@@ -106,6 +122,53 @@ impl Integral {
         self.closed += later.closed;
         self.open = later.open;
     }
+}
+
+/// Adds to `integral` the trapezoids of the intervals ending at the lanes `lanes` of a block
+/// whose lane 0 is step `first`:
+/// `term(i)` that of lane i ≥ 1 (from lane i − 1), `first_term` that of lane 0 (from the step
+/// before the block; `None` at the first step a summary takes, which ends no interval of its
+/// own). Up to a step whose index is a multiple of [`SLOTS`] a term at a time, then [`SLOTS`]
+/// at once, each to its own sum, kept in one vector register; a whole block starting on such a
+/// step (a run's blocks do) takes lane 0's term with lanes 1 to 3 (the term a summary's first
+/// step lacks counted as +0, which leaves the fresh sums' bits as they are).
+#[inline(always)]
+fn add_trapezoids(
+    integral: &mut Integral,
+    first: usize,
+    lanes: Range<usize>,
+    first_term: impl FnOnce() -> Option<f64>,
+    term: impl Fn(usize) -> f64,
+) {
+    let end = lanes.end.min(LANES);
+    let mut open = integral.open;
+    let mut i = lanes.start;
+    if i == 0 && first % SLOTS == 0 && end >= SLOTS {
+        let head = [first_term().unwrap_or(0.0), term(1), term(2), term(3)];
+        for (o, t) in open.iter_mut().zip(head) {
+            *o += t;
+        }
+        i = SLOTS;
+    } else if i == 0 && i < end {
+        if let Some(t) = first_term() {
+            open[first % SLOTS] += t;
+        }
+        i = 1;
+    }
+    while i < end && (first + i) % SLOTS != 0 {
+        open[(first + i) % SLOTS] += term(i);
+        i += 1;
+    }
+    while i + SLOTS <= end {
+        for (k, o) in open.iter_mut().enumerate() {
+            *o += term(i + k);
+        }
+        i += SLOTS;
+    }
+    for i in i..end {
+        open[(first + i) % SLOTS] += term(i);
+    }
+    integral.open = open;
 }
 
 /// Raises `peak` to `value`. The stepper has checked every value is finite, so a plain
@@ -239,22 +302,35 @@ impl FamilyTotals {
         raise_over(&mut self.torque, lanes.clone(), |i| t[i].abs());
         // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
         // trapezoidal rule on the crank-angle grid.
-        // Summed in locals, kept in registers through the loop.
-        let c = &block.state.crank;
-        let (mut work, mut abs_work, mut flow) = (self.work, self.abs_work, self.energy_flow);
-        let (mut previous, mut t0) = (previous, *torque);
-        for i in lanes.start..lanes.end.min(LANES) {
-            let (t, angle, speed) = (t[i], c.angle[i], c.speed[i]);
-            if let Some((a0, w0)) = previous {
-                let h = angle - a0;
-                work.add(0.5 * h * (t + t0));
-                abs_work.add(0.5 * h * (t.abs() + t0.abs()));
-                flow.add(0.5 * h * (t * speed + t0 * w0));
-            }
-            t0 = t;
-            previous = Some((angle, speed));
+        let (c, t0) = (&block.state.crank, *torque);
+        let (a, w) = (&c.angle, &c.speed);
+        let before = |f: fn(f64, f64, f64, f64) -> f64| {
+            move || previous.map(|(a0, w0)| 0.5 * (a[0] - a0) * f(t[0], t0, w[0], w0))
+        };
+        add_trapezoids(
+            &mut self.work,
+            block.first,
+            lanes.clone(),
+            before(|t, t0, _, _| t + t0),
+            |i| 0.5 * (a[i] - a[i - 1]) * (t[i] + t[i - 1]),
+        );
+        add_trapezoids(
+            &mut self.abs_work,
+            block.first,
+            lanes.clone(),
+            before(|t, t0, _, _| t.abs() + t0.abs()),
+            |i| 0.5 * (a[i] - a[i - 1]) * (t[i].abs() + t[i - 1].abs()),
+        );
+        add_trapezoids(
+            &mut self.energy_flow,
+            block.first,
+            lanes.clone(),
+            before(|t, t0, w, w0| t * w + t0 * w0),
+            |i| 0.5 * (a[i] - a[i - 1]) * (t[i] * w[i] + t[i - 1] * w[i - 1]),
+        );
+        if let Some(last) = lanes.end.checked_sub(1) {
+            *torque = t[last.min(LANES - 1)];
         }
-        (self.work, self.abs_work, self.energy_flow, *torque) = (work, abs_work, flow, t0);
     }
 }
 
@@ -724,27 +800,27 @@ vectorised! {
         }
         let c = &st.crank;
         if let Some(p) = st.pistons.first() {
-            raise_over(&mut summary.lever, lanes.clone(), |i| p.dx_dtheta[i].abs());
-            let mut previous = summary.previous.map(|(angle, _)| angle);
-            let (mut integral, mut l0) = (summary.lever_integral, summary.previous_lever);
-            for i in lanes.start..lanes.end.min(LANES) {
-                let (angle, lever) = (c.angle[i], p.dx_dtheta[i].abs());
-                if let Some(a0) = previous {
-                    integral.add(0.5 * (angle - a0) * (lever + l0));
-                }
-                l0 = lever;
-                previous = Some(angle);
-            }
-            (summary.lever_integral, summary.previous_lever) = (integral, l0);
+            let (a, x) = (&c.angle, &p.dx_dtheta);
+            raise_over(&mut summary.lever, lanes.clone(), |i| x[i].abs());
+            let l0 = summary.previous_lever;
+            add_trapezoids(
+                &mut summary.lever_integral,
+                block.first,
+                lanes.clone(),
+                || summary.previous.map(|(a0, _)| 0.5 * (a[0] - a0) * (x[0].abs() + l0)),
+                |i| 0.5 * (a[i] - a[i - 1]) * (x[i].abs() + x[i - 1].abs()),
+            );
+            summary.previous_lever = x[last].abs();
         }
         let steps = block.steps.get(lanes.clone()).unwrap_or_default();
+        let indices = block.first + lanes.start..;
         if let Some(l) = &mut summary.losses {
             let (mut started, mut t0) = (summary.previous.is_some(), summary.previous_time);
-            for s in steps {
+            for (k, s) in indices.clone().zip(steps) {
                 let dt = s.state.crank.time - t0;
                 for ((w, p0), &p) in l.work.iter_mut().zip(&mut l.previous).zip(s.losses) {
                     if started {
-                        w.add(0.5 * dt * (p + *p0));
+                        w.add(k, 0.5 * dt * (p + *p0));
                     }
                     *p0 = p;
                 }
@@ -754,11 +830,11 @@ vectorised! {
         }
         if let Some(g) = &mut summary.gears {
             let (mut started, mut t0) = (summary.previous.is_some(), summary.previous_time);
-            for s in steps {
+            for (k, s) in indices.zip(steps) {
                 let loss: f64 = s.gears.iter().map(|r| r.loss).sum();
                 if started {
-                    g.loss_work
-                        .add(0.5 * (s.state.crank.time - t0) * (loss + g.previous_loss));
+                    let dt = s.state.crank.time - t0;
+                    g.loss_work.add(k, 0.5 * dt * (loss + g.previous_loss));
                 }
                 g.previous_loss = loss;
                 for r in s.gears {
@@ -804,6 +880,51 @@ vectorised! {
 mod tests {
     use super::*;
     use cardan_mechanism::REANCHOR;
+
+    /// An integral's sums depend on the steps' indices alone: a block taken whole (the fast
+    /// path), in the pieces a chunk's close cuts it into, or a lane at a time, and blocks that
+    /// start off the slots, give the same bits; the value is the sum of the terms to within
+    /// the round-off of summing 64 terms (64·ε of Σ|term|), and exact for terms summed
+    /// exactly (small integers).
+    #[test]
+    fn an_integral_is_the_same_however_its_lanes_are_taken() {
+        // Terms of varied sign and size, each from its lane and the one before.
+        let column: Vec<f64> = (0..LANES + 1)
+            .map(|k| ((k as f64) * 0.7).sin() * 10f64.powi(k as i32 % 5 - 2))
+            .collect();
+        let term = |i: usize| 0.5 * (column[i] + column[i - 1]);
+        for first in [0, 64, 128 + 3, 7] {
+            let lane0 = || Some(0.25 * column[LANES]);
+            let whole = {
+                let mut g = Integral::default();
+                add_trapezoids(&mut g, first, 0..LANES, lane0, term);
+                g
+            };
+            let cuts = [
+                vec![0, 1, LANES],
+                vec![0, 5, 6, 33, LANES],
+                (0..=LANES).collect(),
+            ];
+            for cut in cuts {
+                let mut g = Integral::default();
+                for w in cut.windows(2) {
+                    add_trapezoids(&mut g, first, w[0]..w[1], lane0, term);
+                }
+                assert_eq!(g.open.map(f64::to_bits), whole.open.map(f64::to_bits));
+            }
+            let terms: Vec<f64> = std::iter::once(0.25 * column[LANES])
+                .chain((1..LANES).map(term))
+                .collect();
+            let exact: f64 = terms.iter().sum();
+            let scale: f64 = terms.iter().map(|t| t.abs()).sum();
+            assert!((whole.value() - exact).abs() <= 64.0 * f64::EPSILON * scale);
+        }
+        // A summary's first step ends no interval: counted as +0, the sums stay fresh.
+        let mut g = Integral::default();
+        add_trapezoids(&mut g, 0, 0..LANES, || None, |i| i as f64);
+        assert_eq!(g.value(), (1..LANES).sum::<usize>() as f64);
+        assert!(g.open.iter().all(|o| o.is_sign_positive()));
+    }
 
     /// Chunks are whole grid blocks, at most MAX_CHUNK steps, an even number of them for a
     /// run, differing by less than a block but the last (which takes what is left).

@@ -339,36 +339,30 @@ vectorised! {
     ) -> (usize, Option<MotionError>) {
         let n = (last + 1 - k).min(REANCHOR);
         let m = spacing.motion;
-        let mut anchor = C::new(1.0, 0.0);
-        let mut chains = [anchor; CHAINS];
-        for j in 0..n {
-            let i = k + j;
-            // The last point is `end` itself, not start + h·steps, which can land a rounding
-            // step past it (and past the angle where a decelerating crank stops).
-            let angle = if i == spacing.steps {
-                spacing.end
-            } else {
-                spacing.start + spacing.h * i as f64
-            };
-            // Exact at the block's start (every REANCHOR points) and at the end.
-            let chain = &mut chains[j % CHAINS];
-            *chain = if j == 0 {
-                anchor = C::from_polar(1.0, angle);
-                anchor
-            } else if j < CHAINS {
-                anchor * spacing.starts[j]
-            } else {
-                *chain * spacing.rotation
-            };
-            let direction = if i == spacing.steps {
-                C::from_polar(1.0, angle)
-            } else {
-                *chain
-            };
-            out.angle[j] = angle;
-            out.cos[j] = direction.re;
-            out.sin[j] = direction.im;
+        for j in 0..LANES {
+            out.angle[j] = spacing.start + spacing.h * (k + j) as f64;
             out.acceleration[j] = m.angular_acceleration;
+        }
+        // Exact at the block's start (every REANCHOR points); then CHAINS chains, each
+        // turned by e^{i·CHAINS·h} from the point CHAINS before (written out as C's product,
+        // the same arithmetic, so that the compiler turns the chains side by side).
+        let anchor = C::from_polar(1.0, out.angle[0]);
+        (out.cos[0], out.sin[0]) = (anchor.re, anchor.im);
+        for (j, start) in spacing.starts.iter().enumerate().skip(1) {
+            let z = anchor * start;
+            (out.cos[j], out.sin[j]) = (z.re, z.im);
+        }
+        let r = spacing.rotation;
+        for j in CHAINS..LANES {
+            let (c, s) = (out.cos[j - CHAINS], out.sin[j - CHAINS]);
+            out.cos[j] = c * r.re - s * r.im;
+            out.sin[j] = c * r.im + s * r.re;
+        }
+        // The last point is `end` itself, not start + h·steps, which can land a rounding step
+        // past it (and past the angle where a decelerating crank stops), and exact.
+        if let Some(j) = spacing.steps.checked_sub(k).filter(|j| *j < n) {
+            out.angle[j] = spacing.end;
+            (out.sin[j], out.cos[j]) = spacing.end.sin_cos();
         }
         let (w0, a) = (m.initial_speed, m.angular_acceleration);
         if a == 0.0 && w0 > 0.0 {
@@ -383,10 +377,16 @@ vectorised! {
         // forwards and ω² stays above 0 throughout: the smallest ω², from four running minima),
         // then its arithmetic on the whole block.
         let mut lowest = [f64::INFINITY; 4];
-        for j in 0..n {
-            let w2 = w0 * w0 + 2.0 * a * (out.angle[j] - m.start_angle);
-            let l = &mut lowest[j % 4];
-            *l = if w2 < *l { w2 } else { *l };
+        let w2 = |j: usize| w0 * w0 + 2.0 * a * (out.angle[j] - m.start_angle);
+        let mut j = 0;
+        while j + 4 <= n {
+            for (k, l) in lowest.iter_mut().enumerate() {
+                *l = if w2(j + k) < *l { w2(j + k) } else { *l };
+            }
+            j += 4;
+        }
+        for j in j..n {
+            lowest[0] = if w2(j) < lowest[0] { w2(j) } else { lowest[0] };
         }
         let mut error = None;
         let valid = if w0 > 0.0 && lowest.iter().all(|l| *l > 0.0) {
