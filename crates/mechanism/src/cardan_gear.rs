@@ -80,9 +80,12 @@ pub struct CardanGear {
     pub rod: f64,
     pub mesh: MeshModel,
     /// Pressure angle of the pair, rad.
-    pub pressure_angle: f64,
+    pressure_angle: f64,
     pub masses: MassProperties,
     topology: Topology,
+    /// tan of the pressure angle (the involute mesh's radial force per unit tangential force),
+    /// computed once: a libm call per block of steps is measurable.
+    tan_pressure_angle: f64,
 }
 
 impl CardanGear {
@@ -201,6 +204,7 @@ impl CardanGear {
             pressure_angle,
             masses,
             topology,
+            tan_pressure_angle: pressure_angle.tan(),
         })
     }
 }
@@ -348,7 +352,7 @@ vectorised! {
         };
         let (c, rod, rod_pin, pin) = (&st.crank, &st.bodies[ROD], &st.joints[2], &st.joints[1]);
         let gas = piston_force.unwrap_or(&ZERO);
-        let tan = gear.pressure_angle.tan();
+        let tan = gear.tan_pressure_angle;
         let Some(([main, crank_pin_load, rod_pin_load, mesh_load], crank_torque)) = out.split()
         else {
             unreachable!("the cardan gear's topology")
