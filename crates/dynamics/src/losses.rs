@@ -19,9 +19,9 @@
 
 use crate::gear_rating::{mesh_pair, mesh_speeds, GearSpec};
 use cardan_friction::{
-    coulomb_sliding, petroff, rolling_bearing_loss, short_bearing, viscous_skirt, AsperityContact,
-    JournalBearing, KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing,
-    RollingReading, ViscousSkirt, KARHULA_LOAD_CONSTANT,
+    coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
+    KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel, RollingReading,
+    ViscousSkirt, KARHULA_LOAD_CONSTANT,
 };
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, Reading};
 use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
@@ -85,7 +85,7 @@ pub enum Skirt {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Bearing {
     /// The joint's rolling bearings ([`Bearings`]: pitch diameter, C0, how many share the load)
-    /// in one of the readings of [`rolling_bearing_loss`].
+    /// in one of the readings of [`cardan_friction::rolling_bearing_loss`].
     Rolling(RollingReading),
     /// A plain journal bearing of the joint's journal radius.
     Journal {
@@ -213,9 +213,9 @@ enum Part {
     },
     Rolling {
         joint: usize,
-        bearing: RollingBearing,
+        /// The bearing in its reading.
+        model: RollingModel,
         count: f64,
-        reading: RollingReading,
         /// Kinematic viscosity, m²/s (the rolling readings' input).
         viscosity: f64,
     },
@@ -508,22 +508,14 @@ impl LossBudget {
                 } => viscous_skirt(skirt, *viscosity, state.joints[*joint].relative_speed).power,
                 Part::Rolling {
                     joint,
-                    bearing,
+                    model,
                     count,
-                    reading,
                     viscosity,
                 } => {
                     // Each of `count` bearings carries an equal share (A9.1.23-25).
                     let share = total.joints[*joint].force.norm() / *count;
-                    *count
-                        * rolling_bearing_loss(
-                            bearing,
-                            *reading,
-                            share,
-                            state.joints[*joint].relative_speed,
-                            *viscosity,
-                        )
-                        .power
+                    let w = state.joints[*joint].relative_speed;
+                    *count * model.loss(share, w, *viscosity).power
                 }
                 Part::Journal {
                     joint,
@@ -588,14 +580,16 @@ fn bearing_part(joint: usize, b: Bearings, model: Bearing, oil: &Oil) -> Result<
     Ok(match model {
         Bearing::Rolling(reading) => Part::Rolling {
             joint,
-            bearing: RollingBearing::new(2.0 * b.radius, b.static_load_rating).map_err(|e| {
-                LossError {
-                    field: "friction.bearings".into(),
-                    rule: e.to_string(),
-                }
-            })?,
+            model: RollingModel::new(
+                RollingBearing::new(2.0 * b.radius, b.static_load_rating).map_err(|e| {
+                    LossError {
+                        field: "friction.bearings".into(),
+                        rule: e.to_string(),
+                    }
+                })?,
+                reading,
+            ),
             count,
-            reading,
             viscosity: oil.kinematic_viscosity,
         },
         Bearing::Journal {

@@ -57,7 +57,8 @@ pub use rings::{
 };
 pub use rolling_bearing::{
     rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing, RollingLoss,
-    RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT, KARHULA_LOAD_CONSTANT_PRINTED,
+    RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
+    KARHULA_LOAD_CONSTANT_PRINTED,
 };
 pub use skirt::{
     coulomb_sliding, karhula_skirt, thai_skirt_mean_power, viscous_skirt, ViscousSkirt,
