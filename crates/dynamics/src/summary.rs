@@ -66,11 +66,11 @@ pub const MAX_CHUNK: usize = 4096;
 /// in a run of `points` states: the pieces a run is shared in among threads
 /// ([`crate::run_parallel`]), each piece whole chunks, whose sums are added in the chunks'
 /// order. Within a chunk the order of the terms is a function of their steps' indices alone
-/// ([`Integral`]), so a summary is the same bit for bit however the run is shared (tested). A function of the run's length alone, not
-/// of the threads, so that a run on one thread and a shared one agree: an even number of
-/// near-equal chunks, so that two cores share a run evenly, of whole grid blocks
-/// ([`cardan_mechanism::REANCHOR`], where a grid can be split), none longer than
-/// [`MAX_CHUNK`] (bounding what a piece holds).
+/// (four running sums by index mod 4), so a summary is the same bit for bit however the run
+/// is shared (tested). A function of the run's length alone, not of the threads, so that a
+/// run on one thread and a shared one agree: an even number of near-equal chunks, so that two
+/// cores share a run evenly, of whole grid blocks ([`cardan_mechanism::REANCHOR`], where a
+/// grid can be split), none longer than [`MAX_CHUNK`] (bounding what a piece holds).
 pub fn summary_chunk(points: usize) -> usize {
     const BLOCK: usize = cardan_mechanism::REANCHOR;
     let blocks = points.saturating_sub(1).div_ceil(BLOCK).max(1);
