@@ -75,24 +75,27 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
                 (j.name.to_string(), v)
             })
             .collect();
-        mechanisms.insert(
-            r.label.clone(),
-            json!({
-                "metrics": metrics,
-                "units": units,
-                "mass_properties": mass_properties,
-                "bodies": bodies,
-                "joints": joints,
-            }),
-        );
+        // The maps moved in: `json!` would serialise each into a copy.
+        let mechanism: Map<String, Value> = [
+            ("metrics", metrics),
+            ("units", units),
+            ("mass_properties", mass_properties),
+            ("bodies", bodies),
+            ("joints", joints),
+        ]
+        .into_iter()
+        .map(|(k, v)| (k.to_string(), Value::Object(v)))
+        .collect();
+        mechanisms.insert(r.label.clone(), Value::Object(mechanism));
     }
-    json!({
+    let mut summary = json!({
         "schema_version": SCHEMA_VERSION,
         "case": case.name,
         "machine": case.machine.name(),
         "gas_model": case.gas.as_ref().map(|g| g.name()),
-        "mechanisms": mechanisms,
-    })
+    });
+    summary["mechanisms"] = Value::Object(mechanisms);
+    summary
 }
 
 /// Writes `contents` to `path`. No fsync: a case folder appears whole by a rename, and waiting
