@@ -864,9 +864,10 @@ vectorised! {
             }
         }
         if let (Some(p), Some(f)) = (block.pressure, block.piston_force) {
-            for i in lanes.clone() {
-                summary.pressure = Some(summary.pressure.map_or(p[i], |q| q.max(p[i])));
-            }
+            // The block's largest pressure first, then the run's (the same maximum).
+            let mut highest = p[lanes.start.min(LANES - 1)];
+            raise_over(&mut highest, lanes.clone(), |i| p[i]);
+            summary.pressure = Some(summary.pressure.map_or(highest, |q| q.max(highest)));
             if !st.pistons.is_empty() {
                 raise_over(&mut summary.gas_force, lanes, |i| f[i].abs());
             }

@@ -1,8 +1,17 @@
 //! Each gas model over one 720° cycle of 7200 crank angles on the slider-crank's volume curve
-//! (the runner's unit of gas work per mechanism), Karhula's thesis cylinder.
+//! (the runner's unit of gas work per mechanism), Karhula's thesis cylinder; and one
+//! mechanism's whole run with the pump's gas (`*_7200_steps_with_pump_gas`: kinematics,
+//! inertial and gas loads, the summary; one thread), the work of issue 8's per-mechanism target
+//! with the gas the `cardan-dynamics` cycle bench leaves out.
 
-use cardan_gas::{ClosedCycle, Compressor, Cylinder, GasModel, KarhulaEngine, Polytropic};
-use cardan_mechanism::{MachineGeometry, MassInputs, Mechanism, Options, SliderCrank};
+use cardan_dynamics::{run_summary, Solver};
+use cardan_gas::{
+    ClosedCycle, Compressor, Cylinder, GasModel, KarhulaEngine, KarhulaPump, Polytropic,
+};
+use cardan_mechanism::{
+    CardanGear, CrankMotion, Grid, MachineGeometry, MassInputs, Mechanism, MotionSource, Options,
+    SliderCrank,
+};
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
 use std::hint::black_box;
@@ -59,5 +68,71 @@ fn gas(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, gas);
+/// One mechanism over the Karhula cycle (7200 steps from 90°, ω0 = 200π rad/s, α = 100π
+/// rad/s²) with the pump's gas (valves closed on the compression strokes), on one thread: the
+/// grid is run as one piece, as a run with the ring-film losses is.
+fn with_gas(c: &mut Criterion) {
+    let geometry = MachineGeometry {
+        crank_length: 0.06,
+        rod_length: 0.14,
+        bore: 0.12,
+        pin_offset: 0.0,
+    };
+    let motion = CrankMotion {
+        start_angle: PI / 2.0,
+        initial_speed: 200.0 * PI,
+        angular_acceleration: 100.0 * PI,
+    };
+    let pump = KarhulaPump {
+        gas: Polytropic::new(1.4, 1.07, 101_325.0).unwrap(),
+    };
+    let slider = SliderCrank::build(&geometry, &MassInputs::default(), &Options::new()).unwrap();
+    let gear = CardanGear::build(&geometry, &MassInputs::default(), &Options::new()).unwrap();
+    let mechanisms: [(&str, &dyn Mechanism); 2] =
+        [("slider_crank", &slider), ("cardan_gear", &gear)];
+    for (name, mech) in mechanisms {
+        let swept = PI / 4.0 * 0.12 * 0.12 * mech.stroke();
+        let cylinder = Cylinder::with_compression_ratio(0.12, swept, 12.0).unwrap();
+        cylinder.with_chamber(mech, |chamber| {
+            let prepared = pump.prepare(*chamber, motion.initial_speed).unwrap();
+            let gas = |theta: f64| prepared.at(theta);
+            c.bench_function(&format!("{name}_7200_steps_with_pump_gas"), |b| {
+                b.iter(|| {
+                    let mut grid = OneThread(Grid::new(motion, PI / 2.0, 4.5 * PI, 7200));
+                    let run = run_summary(mech, &mut grid, Some(&gas), Solver::ClosedForm, false);
+                    black_box(run.unwrap())
+                })
+            });
+        });
+    }
+}
+
+/// A grid that cannot be split: its run takes one thread.
+struct OneThread(Grid);
+
+impl MotionSource for OneThread {
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn next(
+        &mut self,
+        t: Option<f64>,
+    ) -> Option<Result<cardan_mechanism::CrankState, cardan_mechanism::MotionError>> {
+        self.0.next(t)
+    }
+
+    fn prescribed(&self) -> bool {
+        true
+    }
+
+    fn next_block(
+        &mut self,
+        out: &mut cardan_mechanism::CrankColumns,
+    ) -> (usize, Option<cardan_mechanism::MotionError>) {
+        self.0.next_block(out)
+    }
+}
+
+criterion_group!(benches, gas, with_gas);
 criterion_main!(benches);

@@ -448,17 +448,28 @@ impl LoadsBlock {
 
     /// Adds `other`'s first `n` lanes (superposition of load families, Karhula A7.1).
     pub fn add(&mut self, other: &LoadsBlock, n: usize) {
-        let sum = |a: &mut Column, b: &Column| {
-            for (a, b) in a[..n].iter_mut().zip(&b[..n]) {
-                *a += b;
-            }
-        };
-        for (a, b) in self.joints.iter_mut().zip(&other.joints) {
-            sum(&mut a.fx, &b.fx);
-            sum(&mut a.fy, &b.fy);
-            sum(&mut a.moment, &b.moment);
+        add_loads(self, other, n);
+    }
+}
+
+crate::vectorised! {
+    /// [`LoadsBlock::add`].
+    fn add_loads(total: &mut LoadsBlock, other: &LoadsBlock, n: usize) {
+        for (a, b) in total.joints.iter_mut().zip(&other.joints) {
+            add_column(&mut a.fx, &b.fx, n);
+            add_column(&mut a.fy, &b.fy, n);
+            add_column(&mut a.moment, &b.moment, n);
         }
-        sum(&mut self.crank_torque, &other.crank_torque);
+        add_column(&mut total.crank_torque, &other.crank_torque, n);
+    }
+}
+
+/// Adds `b`'s first `n` lanes to `a`'s. Inlined into the kernel (a closure would not take its
+/// target features).
+#[inline(always)]
+fn add_column(a: &mut Column, b: &Column, n: usize) {
+    for (a, b) in a[..n].iter_mut().zip(&b[..n]) {
+        *a += b;
     }
 }
 
