@@ -16,13 +16,18 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
 use std::hint::black_box;
 
-fn gas(c: &mut Criterion) {
-    let geometry = MachineGeometry {
+/// Karhula's thesis machine: crank 60 mm, rod 140 mm, bore 120 mm.
+fn thesis_geometry() -> MachineGeometry {
+    MachineGeometry {
         crank_length: 0.06,
         rod_length: 0.14,
         bore: 0.12,
         pin_offset: 0.0,
-    };
+    }
+}
+
+fn gas(c: &mut Criterion) {
+    let geometry = thesis_geometry();
     let masses = MassInputs {
         rod_cg: Some(0.07),
         ..MassInputs::default()
@@ -72,12 +77,7 @@ fn gas(c: &mut Criterion) {
 /// rad/s²) with the pump's gas (valves closed on the compression strokes), on one thread: the
 /// grid is run as one piece, as a run with the ring-film losses is.
 fn with_gas(c: &mut Criterion) {
-    let geometry = MachineGeometry {
-        crank_length: 0.06,
-        rod_length: 0.14,
-        bore: 0.12,
-        pin_offset: 0.0,
-    };
+    let geometry = thesis_geometry();
     let motion = CrankMotion {
         start_angle: PI / 2.0,
         initial_speed: 200.0 * PI,
