@@ -14,6 +14,7 @@
 
 use crate::case::CaseError;
 use crate::units::split_number;
+use rayon::prelude::*;
 use std::path::Path;
 
 /// One point of a sweep: its name, the value of each swept field, and its case table.
@@ -265,38 +266,46 @@ pub fn expand(
             &format!("at most {MAX_POINTS} points"),
         ));
     }
-    let mut points = Vec::with_capacity(count);
-    for k in 0..count {
-        let mut t = table.clone();
-        let mut values = Vec::new();
-        let mut point_name = name.clone();
-        let mut rest = k;
-        for (path, list) in &fields {
-            let v = if zip {
-                list[k].clone()
-            } else {
-                let v = list[rest % list.len()].clone();
-                rest /= list.len();
-                v
-            };
-            let short = path.rsplit('.').next().unwrap_or(path);
-            point_name.push_str(&format!("-{short}-{}", name_piece(&v)));
-            set(&mut t, path, v.clone())
-                .map_err(|rule| invalid(file, &name, &format!("sweep.\"{path}\""), &v, &rule))?;
-            values.push((
-                path.clone(),
-                match &v {
-                    toml::Value::String(s) => s.clone(),
-                    o => o.to_string(),
-                },
-            ));
-        }
-        t.insert("name".into(), toml::Value::String(point_name.clone()));
-        points.push(Point {
-            name: point_name,
-            values,
-            table: t,
-        });
-    }
+    // The points made on every thread (each a copy of the whole table), the first failure in
+    // the points' order reported.
+    let points: Vec<Result<Point, CaseError>> = (0..count)
+        .into_par_iter()
+        .map(|k| {
+            let mut t = table.clone();
+            let mut values = Vec::new();
+            let mut point_name = name.clone();
+            let mut rest = k;
+            for (path, list) in &fields {
+                let v = if zip {
+                    list[k].clone()
+                } else {
+                    let v = list[rest % list.len()].clone();
+                    rest /= list.len();
+                    v
+                };
+                let short = path.rsplit('.').next().unwrap_or(path);
+                point_name.push_str(&format!("-{short}-{}", name_piece(&v)));
+                set(&mut t, path, v.clone()).map_err(|rule| {
+                    invalid(file, &name, &format!("sweep.\"{path}\""), &v, &rule)
+                })?;
+                values.push((
+                    path.clone(),
+                    match &v {
+                        toml::Value::String(s) => s.clone(),
+                        o => o.to_string(),
+                    },
+                ));
+            }
+            t.insert("name".into(), toml::Value::String(point_name.clone()));
+            Ok(Point {
+                name: point_name,
+                values,
+                table: t,
+            })
+        })
+        .collect();
+    let points = points
+        .into_iter()
+        .collect::<Result<Vec<Point>, CaseError>>()?;
     Ok(Some((name, points)))
 }
