@@ -201,7 +201,7 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
                 .map(|p| {
                     let raw: RawCase = toml::Value::Table(p.table)
                         .try_into()
-                        .map_err(|e| syntax(&e))?;
+                        .map_err(|e| syntax(&format!("sweep point \"{}\": {e}", p.name)))?;
                     let mut case = validate(file, raw)?;
                     case.sweep = Some((sweep.clone(), p.values));
                     Ok(case)
