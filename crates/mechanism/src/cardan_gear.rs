@@ -79,12 +79,11 @@ pub struct CardanGear {
     /// Rod length Z_bBC from the wheel pin T to the piston pin b, m.
     pub rod: f64,
     pub mesh: MeshModel,
-    /// Pressure angle of the pair, rad.
-    pressure_angle: f64,
     pub masses: MassProperties,
     topology: Topology,
-    /// tan of the pressure angle (the involute mesh's radial force per unit tangential force),
-    /// computed once: a libm call per block of steps is measurable.
+    /// tan of the pair's pressure angle (the involute mesh's radial force per unit tangential
+    /// force), computed once: a libm call per block of steps is measurable. The angle itself
+    /// is the mesh joint's (`JointKind::GearMesh`).
     tan_pressure_angle: f64,
 }
 
@@ -201,7 +200,6 @@ impl CardanGear {
             crank,
             rod,
             mesh,
-            pressure_angle,
             masses,
             topology,
             tan_pressure_angle: pressure_angle.tan(),
