@@ -7,9 +7,10 @@
 
 use cardan_dynamics::{run_summary, Solver};
 use cardan_mechanism::{
-    CrankColumns, CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, Mechanism,
-    MotionError, MotionSource, Options, MECHANISMS,
+    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, Mechanism, MotionError,
+    MotionSource, Options, MECHANISMS,
 };
+use cardan_testing::OneThread;
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
 use std::hint::black_box;
@@ -28,27 +29,6 @@ impl MotionSource for Prebuilt<'_> {
 
     fn prescribed(&self) -> bool {
         true
-    }
-}
-
-/// A grid that cannot be split: its run takes one thread.
-struct OneThread(Grid);
-
-impl MotionSource for OneThread {
-    fn len(&self) -> usize {
-        self.0.len()
-    }
-
-    fn next(&mut self, t: Option<f64>) -> Option<Result<CrankState, MotionError>> {
-        self.0.next(t)
-    }
-
-    fn prescribed(&self) -> bool {
-        true
-    }
-
-    fn next_block(&mut self, out: &mut CrankColumns) -> (usize, Option<MotionError>) {
-        self.0.next_block(out)
     }
 }
 

@@ -9,9 +9,9 @@ use cardan_gas::{
     ClosedCycle, Compressor, Cylinder, GasModel, KarhulaEngine, KarhulaPump, Polytropic,
 };
 use cardan_mechanism::{
-    CardanGear, CrankMotion, Grid, MachineGeometry, MassInputs, Mechanism, MotionSource, Options,
-    SliderCrank,
+    CardanGear, CrankMotion, Grid, MachineGeometry, MassInputs, Mechanism, Options, SliderCrank,
 };
+use cardan_testing::OneThread;
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::f64::consts::PI;
 use std::hint::black_box;
@@ -104,33 +104,6 @@ fn with_gas(c: &mut Criterion) {
                 })
             });
         });
-    }
-}
-
-/// A grid that cannot be split: its run takes one thread.
-struct OneThread(Grid);
-
-impl MotionSource for OneThread {
-    fn len(&self) -> usize {
-        self.0.len()
-    }
-
-    fn next(
-        &mut self,
-        t: Option<f64>,
-    ) -> Option<Result<cardan_mechanism::CrankState, cardan_mechanism::MotionError>> {
-        self.0.next(t)
-    }
-
-    fn prescribed(&self) -> bool {
-        true
-    }
-
-    fn next_block(
-        &mut self,
-        out: &mut cardan_mechanism::CrankColumns,
-    ) -> (usize, Option<cardan_mechanism::MotionError>) {
-        self.0.next_block(out)
     }
 }
 

@@ -1,6 +1,30 @@
 //! Checks for tests: each failure message names the quantity, both values and the tolerance, so
 //! a failing validation test reads like a line of a validation report; and that a message names
-//! what it must.
+//! what it must. And [`OneThread`], a crank grid the benchmarks run on one thread.
+
+use cardan_mechanism::{CrankColumns, CrankState, Grid, MotionError, MotionSource};
+
+/// A grid that cannot be split (it offers no [`MotionSource::part`]): its run takes one thread,
+/// for the benchmarks that time a run per core.
+pub struct OneThread(pub Grid);
+
+impl MotionSource for OneThread {
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn next(&mut self, t: Option<f64>) -> Option<Result<CrankState, MotionError>> {
+        self.0.next(t)
+    }
+
+    fn prescribed(&self) -> bool {
+        true
+    }
+
+    fn next_block(&mut self, out: &mut CrankColumns) -> (usize, Option<MotionError>) {
+        self.0.next_block(out)
+    }
+}
 
 /// Asserts |got/want − 1| ≤ `rel`.
 #[track_caller]
