@@ -1,7 +1,12 @@
 //! Load families: each puts a force (and couple) on every joint and a torque on the drive at
-//! every step. Generic code sums them into the totals (Karhula A7.1: the summed lossless
-//! dynamics are the sum of the inertial and gas loads); a loss model later reads each joint's
-//! total load and relative speed and needs no mechanism code.
+//! every step, as if it acted alone. Generic code sums them into the totals (Karhula A7.1: the
+//! summed lossless dynamics are the sum of the inertial and gas loads) where every joint's
+//! reaction is linear in the loads; where one is not (an involute mesh's loaded flank,
+//! [`cardan_mechanism::Topology::superposable`]) the totals are solved from the families'
+//! loads together, and a family's force on such a joint is its own, alone, which does not add
+//! up to the total. The drive torque is linear in every mechanism: its families always add up.
+//! A loss model later reads each joint's total load and relative speed and needs no mechanism
+//! code.
 
 use crate::planar;
 use cardan_mechanism::{Column, Loads, LoadsBlock, Mechanism, State, StateBlock};
@@ -58,6 +63,11 @@ pub trait LoadFamily: Sync {
     /// Whether it carries the piston forces.
     fn piston_forces(&self) -> bool;
 
+    /// The path its loads are computed by; a mechanism whose joints do not superpose
+    /// ([`cardan_mechanism::Topology::superposable`]) has its total loads solved by the first
+    /// family's, from the families' inertia and piston forces together.
+    fn solver(&self) -> Solver;
+
     /// Its loads at the steps of `block`, written to `out`. `piston_force` is the gas force on
     /// every piston at each step (N, towards the crankshaft; none without gas); `before` the sum
     /// of the loads of the families before it in the run (what a tooth-load or friction family
@@ -89,6 +99,10 @@ impl LoadFamily for Inertial {
         false
     }
 
+    fn solver(&self) -> Solver {
+        self.0
+    }
+
     fn loads(
         &self,
         mechanism: &dyn Mechanism,
@@ -116,6 +130,10 @@ impl LoadFamily for Gas {
 
     fn piston_forces(&self) -> bool {
         true
+    }
+
+    fn solver(&self) -> Solver {
+        self.0
     }
 
     fn loads(

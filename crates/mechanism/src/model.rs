@@ -169,6 +169,25 @@ pub struct Topology {
     pub extras: Vec<Extra>,
 }
 
+impl Topology {
+    /// Whether every joint's reaction is linear in the loads, so that the loads of several
+    /// load families add up to those of their sum. An involute mesh's is not: its teeth push on
+    /// the flank that the *total* tangential force loads, with a radial part |F_t|·tan α, and
+    /// |F_t,1| + |F_t,2| ≠ |F_t,1 + F_t,2| wherever the families' tangential forces have
+    /// opposite signs. Such a mechanism's total loads are solved from the summed loads.
+    pub fn superposable(&self) -> bool {
+        !self.joints.iter().any(|j| {
+            matches!(
+                j.kind,
+                JointKind::GearMesh {
+                    force: MeshForce::Involute,
+                    ..
+                }
+            )
+        })
+    }
+}
+
 /// Position, velocity and acceleration of a point in the frame of the main bearing axis.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct PointMotion {
