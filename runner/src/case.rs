@@ -7,7 +7,8 @@ use crate::gas::GasCase;
 use crate::units::{is_folder_name, to_si, Dimension};
 use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget};
 use cardan_mechanism::{
-    CrankMotion, MachineGeometry, MassInputs, MassRules, Material, Mechanism, OptionKind, OptionValue, Options,
+    CrankMotion, MachineGeometry, MassInputs, MassRules, Material, Mechanism, OptionKind,
+    OptionValue, Options,
 };
 use rayon::prelude::*;
 use serde::Deserialize;

@@ -142,7 +142,11 @@ fn each_rule_names_file_case_field_rule_and_value() {
         (
             "steps = 720",
             "steps = 720\n[masses]\nrules = \"rod\"",
-            &["masses.rules", "rod", "\"rod_length\" (the default) or \"overall_length\""],
+            &[
+                "masses.rules",
+                "rod",
+                "\"rod_length\" (the default) or \"overall_length\"",
+            ],
         ),
         (
             "steps = 720",

@@ -339,7 +339,13 @@ impl MassRules {
     /// - piston with pin: [`MassRules::piston_mass`].
     ///
     /// The cardan wheel's rule is [`cardan_wheel_inertia`]; `wheel_inertia` here is 0.
-    pub fn estimate(self, crank: f64, rod: f64, bore: f64, rod_material: Material) -> MassProperties {
+    pub fn estimate(
+        self,
+        crank: f64,
+        rod: f64,
+        bore: f64,
+        rod_material: Material,
+    ) -> MassProperties {
         MassProperties {
             crankshaft_inertia: crankshaft_inertia(crank),
             wheel_inertia: 0.0,
@@ -417,7 +423,10 @@ mod tests {
     #[test]
     fn thesis_geometry_by_hand() {
         let m = estimate(0.06, 0.14, 0.12, Material::Steel);
-        assert_eq!(m, MassRules::RodLength.estimate(0.06, 0.14, 0.12, Material::Steel));
+        assert_eq!(
+            m,
+            MassRules::RodLength.estimate(0.06, 0.14, 0.12, Material::Steel)
+        );
         // π·0.06²·0.12·7850 = 10.65377 kg; ½·10.65377·0.09² = 0.0431478
         assert_relative_eq!(
             m.crankshaft_inertia,
