@@ -1,10 +1,30 @@
 //! Masses and mass moments of inertia of the moving links: the defaults every mechanism takes
 //! where its case file gives none. Karhula (2008) prints its estimation rules (chapter 10,
-//! "Calculations") but not its masses. The rules here follow chapter 10 where it gives one and
-//! complete it so that, with no override, the thesis machine (crank r = 0.06 m, rod
-//! l = 0.14 m, bore 0.12 m) reproduces the published inertial values (appendices 11.2.1 and
-//! 11.2.2) and other rods and bores the reductions the thesis states (ch. 11.2, 11.7, 13). The
-//! derivation, with the table of reductions per rod and bore, is in `docs/mass-rules.md`.
+//! "Calculations") but not its masses. The rules here follow chapter 10 where it gives one
+//! (the crankshaft's volume and flywheel, the length the rod's section scales with, the
+//! materials) and fix each constant the text leaves open by one published inertial value of
+//! the thesis machine (crank r = 0.06 m, rod l = 0.14 m, bore 0.12 m; appendices 11.2.1 and
+//! 11.2.2), so that with no override that machine reproduces them. The derivation, the table
+//! per link and the numbers where the readings part are in `docs/mass-rules.md`.
+//!
+//! # Two readings of the rod rule ([`MassRules`])
+//!
+//! Chapter 10: "the cross section of the connecting rod can be approximated as length/10 ·
+//! length/5 ... length/8 · length/4". Which length?
+//!
+//! - [`MassRules::RodLength`], the default: the connecting rod length as chapter 10 itself
+//!   defines it ("1.35...2·stroke (= 2.7...4·crank length)"), the centre distance l. The rod is
+//!   geometrically similar in l (m ∝ l³, J ∝ m·l²); a longer rod on a smaller crank is heavier.
+//! - [`MassRules::OverallLength`], the previous default: the overall length ℓ = l + r. Rods of
+//!   the same l + r are the same rod (the 0.04/0.16 m machine has the 0.06/0.14 m one's).
+//!
+//! Both meet every published value of the 0.06/0.14 m machine at the same tolerances. They part
+//! elsewhere: rod_length gives the thesis's smaller machines with longer rods the larger
+//! reduction and heavier reciprocating masses their own tables show (0.04/0.16 m: 29 % against
+//! 18 % in mean inertial torque), but passes the thesis's stated bounds on long rods of big
+//! cranks (0.06/0.24 m: 35.7 % against "10...30 %"; the 5·crank machine of ch. 11.7: 46.8 %
+//! against "≤ 28 %"), which overall_length meets (23.5 %, 29.0 %). The default follows the
+//! text's own definition of the rod length and the thesis's tables of its other machines.
 //!
 //! # What each published value fixes
 //!
@@ -22,55 +42,45 @@
 //!   term (energy balance), so its cardan gear has 13.62 N·m (+0.8 %) and its reductions are
 //!   0.6-0.9 percentage point smaller than the thesis's for the same masses;
 //! - slider-crank: J(TDC) = J_crankshaft + (J_rod + m_rod·(l − c)²)·(r/l)², the rod turning
-//!   about its small end at ω·r/l: the published 15.03 N·m fixes the rod's moment of inertia,
-//!   0.01940 kg·m² ([`rod_inertia`], [`ROD_INERTIA_COEFFICIENT`]).
+//!   about its small end at ω·r/l: the published 15.03 N·m fixes the rod's moment of inertia
+//!   (0.01945 kg·m² in rod_length, 0.01940 in overall_length: κ of either reading).
 //!
 //! The cardan gear's crank-pin force at α = 0 is 2·m·r·ω² (A5.2.1.47-51, r the slider-crank
-//! crank) with m = rod + piston: the published 60740 N (steel rod, ω = 200π rad/s) gives
-//! m = 1.2821 kg, and less the chapter-10 rod ([`rod_mass`], 1.256 kg) 26.1 g for the piston
-//! with its pin ([`piston_mass`], [`PISTON_MASS_PER_DISPLACEMENT`]). The titanium rod's
-//! 37960 N checks the rod rule (−0.5 %).
+//! crank) with m = rod + piston. The steel rod's 60740 N and the titanium rod's 37960 N
+//! (ω = 200π rad/s) differ by the rod alone: 2·r·ω²·V·(7850 − 4820), V = 1.587·10⁻⁴ m³, which
+//! fixes the rod_length reading's volume ([`ROD_VOLUME_COEFFICIENT`]) and checks the
+//! overall_length one (ℓ³/50 = 1.600·10⁻⁴ m³, +0.8 %). The steel force less the rod gives the
+//! piston with its pin (36.4 g, or 26.1 g with the overall_length rod).
 //!
-//! Not fitted, and reproduced: the mean inertial powers (the crank-angle mean of T·ω is
-//! (α/8π)·∫(3·J(TDC) − J(θ))·ω dθ, so they depend on J over the whole cycle): slider-crank
-//! within 0.7 %, cardan gear within 0.2 % in the thesis's sign; the slider-crank's crank-pin
-//! force maxima within 4 %; the reductions of the thesis's 5·crank rod machine (ch. 11.7,
-//! crank 0.046 m, bore 1.5·crank: "≤ 28 %" in mean inertial torque, "≲ 37 %" in power; these
-//! rules 29.0 % and 36.7 %).
+//! Not fitted, and reproduced in both readings: the mean inertial powers (the crank-angle mean
+//! of T·ω is (α/8π)·∫(3·J(TDC) − J(θ))·ω dθ, so they depend on J over the whole cycle):
+//! slider-crank within 0.7 %, cardan gear within 0.2 % in the thesis's sign; the
+//! slider-crank's crank-pin force maxima within 4 %.
 //!
 //! # How the rules carry across geometries
 //!
-//! - Rods are geometrically similar (the chapter-10 section is proportional to the length
-//!   squared): m ∝ ℓ³ and J_rod ∝ m·ℓ², so the rod's share of the slider-crank's J(TDC) grows
-//!   as ℓ⁵·(r/l)² while the cardan gear's J(TDC) has no rod: the longer the rod, the better the
-//!   cardan gear (ch. 11.2).
-//! - The crankshaft grows as r³·(r + 30 mm)², slower than the rod's r⁵: the bigger the machine
-//!   (the thesis's displacement, bore = 2·crank in its tables), the better the cardan gear
-//!   (ch. 11.2).
-//! - The piston goes with the displacement ("the displacement (= piston mass)", ch. 11.2). At a
-//!   given crank a bigger bore only adds piston mass, which cannot change the mean inertial
-//!   torques (the piston is at rest at top dead centre) and lowers both mean inertial powers,
-//!   the slider-crank's slightly more: the cardan gear's advantage in power grows, by
-//!   hundredths of a percentage point with the thesis's light pistons.
+//! - Rod: m ∝ L³ and J_rod ∝ m·L² (L = l or l + r), so the rod's share of the slider-crank's
+//!   J(TDC) is (κ + ¼)·ρ·c·l³·r² in rod_length (κ·L² + l²/4)·m·(r/l)² in general, while the
+//!   cardan gear's J(TDC) has no rod: the longer the rod, the better the cardan gear (ch. 11.2).
+//! - Crankshaft: r³·(r + 30 mm)² (both readings), slower than the rod's share at a given
+//!   rod-to-crank ratio (r⁵): the bigger the machine, the better the cardan gear (ch. 11.2).
+//! - Piston: with the displacement ("the displacement (= piston mass)", ch. 11.2), bore²·r. At
+//!   a given crank a bigger bore only adds piston mass, which cannot change the mean inertial
+//!   torques and lowers both mean inertial powers, the slider-crank's slightly more.
 //!
 //! # This project's assumptions
 //!
-//! - The rod's overall length is ℓ = l + r (centre distance plus the two eyes) and its centre
-//!   of gravity is at mid centre distance (this reproduces the thesis's rod kinematics); the
-//!   crankshaft is balanced (its centre of gravity on its axis) and the same in every
-//!   mechanism ("treated equal", ch. 11.2).
+//! - The rod's centre of gravity is at mid centre distance (this reproduces the thesis's rod
+//!   kinematics); the crankshaft is balanced and the same in every mechanism ("treated
+//!   equal", ch. 11.2).
 //! - The rod's moment of inertia is an effective value: the thesis's results need more than
-//!   any body of the rod's length with its centre of gravity in the middle can have (radius of
-//!   gyration 0.124 m on a 0.2 m rod). It matters only where the rod turns (the slider-crank's
-//!   rod, the hypotrochoid's links); the cardan gear's and the Scotch yoke's rods translate.
-//! - The piston is the thesis's, 26 g for its 120 mm bore, a twentieth to a fortieth of a real
-//!   one. For a real machine, override `piston_mass` and the rod fields.
-//! - Beyond the thesis's rod lengths (0.08…0.24 m, ch. 11) the rules extrapolate: a 0.30 m rod
-//!   on the 0.06 m crank gains 33 % in mean inertial torque and 42 % in power (in the thesis's
-//!   sign), above the 30 % and 40 % the thesis states, which it reached with its 5·crank rod
-//!   on a 0.046 m crank (ch. 11.7, ch. 13 "almost 30 %", "almost 40 %").
+//!   any body of the rod's length with its centre of gravity in the middle can have. It matters
+//!   only where the rod turns (the slider-crank's rod, the hypotrochoid's links).
+//! - The piston is the thesis's, 26-36 g for its 120 mm bore, a twentieth of a real one. For a
+//!   real machine, override `piston_mass` and the rod fields.
 //!
-//! Every value can be overridden from the case file ([`MassInputs`]).
+//! Every value can be overridden from the case file ([`MassInputs`]); the reading is chosen
+//! with `[masses] rules = "rod_length"` (default) or `"overall_length"`.
 
 use std::f64::consts::PI;
 
@@ -83,7 +93,7 @@ pub enum Material {
     /// Titanium alloy, 4820 kg/m³: the light rod the cardan gear allows.
     Titanium,
     /// 2700 kg/m³: the thesis's piston material (ch. 11.2). The piston rule goes by the
-    /// displacement ([`piston_mass`]), not by a volume of it.
+    /// displacement ([`MassRules::piston_mass`]), not by a volume of it.
     Aluminium,
 }
 
@@ -148,7 +158,7 @@ pub struct MassProperties {
     /// Connecting rod (or yoke) mass, kg.
     pub rod_mass: f64,
     /// Connecting rod moment of inertia about its centre of gravity, kg·m². The default
-    /// ([`rod_inertia`]) is an effective value fitted to the thesis's results, above a uniform
+    /// ([`MassRules::rod_inertia`]) is an effective value fitted to the thesis's results, above a uniform
     /// bar's.
     pub rod_inertia: f64,
     /// Distance of the rod's centre of gravity from its lower pin along the rod, m.
