@@ -7,7 +7,8 @@ use crate::gas::GasCase;
 use crate::units::{is_folder_name, to_si, Dimension};
 use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget};
 use cardan_mechanism::{
-    CrankMotion, MachineGeometry, MassInputs, Material, Mechanism, OptionKind, OptionValue, Options,
+    CrankMotion, MachineGeometry, MassInputs, MassRules, Material, Mechanism, OptionKind,
+    OptionValue, Options,
 };
 use rayon::prelude::*;
 use serde::Deserialize;
@@ -340,13 +341,14 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
     for key in masses.keys() {
         let known = MASS_FIELDS.iter().any(|(f, _)| f == key)
             || key == "rod_material"
+            || key == "rules"
             || cardan_mechanism::entry(key).is_some();
         if !known {
             return Err(invalid(
                 &format!("masses.{key}"),
                 &masses[key],
                 &format!(
-                    "unknown field: the mass fields are {}, rod_material, and a table per mechanism",
+                    "unknown field: the mass fields are {}, rod_material, rules, and a table per mechanism",
                     MASS_FIELDS.map(|(f, _)| f).join(", ")
                 ),
             ));
@@ -588,6 +590,19 @@ fn mass_inputs(
             _ => &mut inputs.piston_mass,
         };
         *slot = Some(x);
+    }
+    // The reading of the estimation rules is the machine's, in the common table only.
+    if let Some(v) = common.get("rules") {
+        inputs.rules = match v.as_str().and_then(MassRules::from_name) {
+            Some(r) => Some(r),
+            None => {
+                return Err(invalid(
+                    "masses.rules",
+                    v,
+                    "must be \"rod_length\" (the default) or \"overall_length\"",
+                ))
+            }
+        };
     }
     if let Some((v, path)) = pick("rod_material") {
         inputs.rod_material = match v.as_str().and_then(Material::from_name) {

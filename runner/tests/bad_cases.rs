@@ -141,6 +141,20 @@ fn each_rule_names_file_case_field_rule_and_value() {
         ),
         (
             "steps = 720",
+            "steps = 720\n[masses]\nrules = \"rod\"",
+            &[
+                "masses.rules",
+                "rod",
+                "\"rod_length\" (the default) or \"overall_length\"",
+            ],
+        ),
+        (
+            "steps = 720",
+            "steps = 720\n[masses.slider_crank]\nrules = \"overall_length\"",
+            &["masses.slider_crank.rules", "unknown field"],
+        ),
+        (
+            "steps = 720",
             "steps = 720\n[masses]\nwheel_inertia = 0.001",
             &["masses.wheel_inertia", "does not apply to the slider_crank"],
         ),

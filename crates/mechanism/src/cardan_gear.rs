@@ -97,12 +97,7 @@ impl CardanGear {
     ) -> Result<Self, MechanismError> {
         let (crank, rod) = (geometry.crank_length, geometry.rod_length);
         check_length("geometry.crank_length", crank)?;
-        let mut estimate = mass::estimate(
-            crank,
-            rod,
-            geometry.bore,
-            inputs.rod_material.unwrap_or_default(),
-        );
+        let mut estimate = mass::estimate_for(inputs, crank, rod, geometry.bore);
         estimate.wheel_inertia = mass::cardan_wheel_inertia(crank);
         let mesh = match word(options, "gear_mesh_model", "karhula") {
             "involute" => MeshModel::Involute,

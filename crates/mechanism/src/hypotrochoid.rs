@@ -222,8 +222,7 @@ impl Hypotrochoid {
         check_length("hypotrochoid.planet_radius", u)?;
         let r = number(options, "piston_link_length", 1.7 * m * u);
         check_length("hypotrochoid.piston_link_length", r)?;
-        let mut estimate =
-            mass::estimate(p, r, geometry.bore, inputs.rod_material.unwrap_or_default());
+        let mut estimate = mass::estimate_for(inputs, p, r, geometry.bore);
         estimate.wheel_inertia = mass::cardan_wheel_inertia(2.0 * u);
         estimate.piston_mass = 0.0;
         let mut masses = MassProperties::resolve(estimate, inputs);

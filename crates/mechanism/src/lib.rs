@@ -28,7 +28,7 @@ pub use block::{
 };
 pub use cardan_gear::{CardanGear, MeshModel};
 pub use hypotrochoid::Hypotrochoid;
-pub use mass::{MassInputs, MassProperties, Material};
+pub use mass::{MassInputs, MassProperties, MassRules, Material};
 pub use model::{
     cross, Bearings, Body, BodyMotion, Extra, Joint, JointKind, JointLoad, JointMotion, Loads,
     MeshForce, Piston, PistonMotion, PointMotion, State, Topology,

@@ -68,12 +68,7 @@ impl SliderCrank {
         _options: &Options,
     ) -> Result<Self, MechanismError> {
         let (crank, rod) = (geometry.crank_length, geometry.rod_length);
-        let estimate = mass::estimate(
-            crank,
-            rod,
-            geometry.bore,
-            inputs.rod_material.unwrap_or_default(),
-        );
+        let estimate = mass::estimate_for(inputs, crank, rod, geometry.bore);
         Self::new(
             crank,
             rod,
