@@ -13,10 +13,14 @@ use std::f64::consts::PI;
 #[test]
 fn tangential_tooth_load_by_hand() {
     let w = 200.0 * PI;
-    let m = 1.256 + 0.026; // the rod rule's 1.256 kg and the piston with pin (common.rs)
     let r_c = GEOMETRY.crank_length / 2.0;
+    // The reciprocating mass: the rod of the default rule and the piston with pin (common.rs).
+    let reciprocating = |mech: &dyn cardan_mechanism::Mechanism| {
+        mech.masses().rod_mass + mech.masses().piston_mass
+    };
     for options in [&[][..], &[("gear_mesh_model", "involute")][..]] {
         let mech = machine_with("cardan_gear", &GEOMETRY, Material::Steel, options);
+        let m = reciprocating(mech.as_ref());
         let (_, s) = cycle(mech.as_ref(), w, 0.0, 7200);
         // The 0.1° grid includes 45° + k·90°: the peak is sampled exactly.
         within(
@@ -26,12 +30,9 @@ fn tangential_tooth_load_by_hand() {
             1e-9,
         );
     }
-    let (_, s) = cycle(
-        thesis("cardan_gear", Material::Steel).as_ref(),
-        w,
-        0.0,
-        7200,
-    );
+    let mech = thesis("cardan_gear", Material::Steel);
+    let m = reciprocating(mech.as_ref());
+    let (_, s) = cycle(mech.as_ref(), w, 0.0, 7200);
     within(
         "ring force",
         s.get("inertial_gear_mesh_force_max").unwrap(),

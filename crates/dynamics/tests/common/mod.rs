@@ -16,14 +16,13 @@ pub const GEOMETRY: MachineGeometry = MachineGeometry {
     pin_offset: 0.0,
 };
 
-/// The masses the thesis's published inertial results imply (it does not print them): its
-/// cardan crank-pin forces give a reciprocating mass (piston + pin + rod) of 1.282 kg with the
-/// steel rod, of which the chapter-10 rod rule gives 1.256 kg, leaving 0.026 kg for the piston
-/// and pin; its mean inertial torques give the slider-crank rod a moment of inertia of about
-/// m·ℓ²/3 = 0.0167 kg·m² (ℓ = 0.2 m). The same values are in configs/karhula-*.toml.
+/// The masses of the shipped `configs/karhula-*.toml` cases: the default rules
+/// (docs/mass-rules.md; they give the piston with pin the thesis's published cardan crank-pin
+/// forces imply) but for the slider-crank rod's moment of inertia, 0.0167 kg·m² (about
+/// m·ℓ²/3, ℓ = 0.2 m), which puts its crank-pin force and peak torque nearer the thesis's
+/// than the rule's mean-torque value.
 pub fn thesis_masses(mechanism: &str, rod: Material) -> MassInputs {
     MassInputs {
-        piston_mass: Some(0.026),
         rod_inertia: (mechanism == "slider_crank").then_some(0.0167),
         rod_material: Some(rod),
         ..MassInputs::default()
