@@ -396,6 +396,12 @@ impl Sink for PerStepSink<'_> {
         let files = &mut self.files;
         let start = files.block.len();
         self.row.fill(s, &mut files.block);
+        finite_row(
+            self.row.header(),
+            &files.block[start..],
+            0..self.row.header().len(),
+            s,
+        )?;
         if let Some(c) = &mut self.charts {
             c.record(&files.block[start..]);
         }
@@ -505,14 +511,41 @@ impl<'a> ChartSink<'a> {
 
 impl ChartSink<'_> {
     /// Takes the row of `s`, a step the charts take.
-    fn take(&mut self, s: &Step) {
+    fn take(&mut self, s: &Step) -> Result<(), String> {
         self.scratch.clear();
         self.row.fill(s, &mut self.scratch);
+        finite_row(
+            self.row.header(),
+            &self.scratch,
+            self.read.iter().copied(),
+            s,
+        )?;
         self.rows.extend(self.read.iter().map(|&k| self.scratch[k]));
         self.first_taken.get_or_insert(s.index);
         self.last_taken = Some(s.index);
         // One row at a time, unless this is a piece of a shared run.
         self.record();
+        Ok(())
+    }
+}
+
+/// Fails the step `s` if a number of its row `row` among `columns` is not finite, naming the
+/// column (the CSV's name) and the crank angle: the stepper checks what the loads are made of,
+/// but a derived column (a magnitude, a torque share, a power) can still overflow.
+fn finite_row(
+    header: &[String],
+    row: &[f64],
+    columns: impl IntoIterator<Item = usize>,
+    s: &Step,
+) -> Result<(), String> {
+    match columns.into_iter().find(|&k| !row[k].is_finite()) {
+        None => Ok(()),
+        Some(k) => Err(format!(
+            "crank angle {:.4}°: {} is not finite ({})",
+            s.state.crank.angle.to_degrees(),
+            header[k],
+            row[k]
+        )),
     }
 }
 
@@ -528,7 +561,7 @@ impl Sink for ChartSink<'_> {
         let mut scratch = std::mem::take(&mut self.step);
         while next < end {
             let s = block.step(next - block.first, &mut scratch);
-            self.take(&s);
+            self.take(&s).map_err(|message| (next, message))?;
             next = self.taken_from(next + 1);
         }
         self.step = scratch;

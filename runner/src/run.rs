@@ -189,6 +189,14 @@ fn run_mechanism(
             summary.push(name, value);
         }
     }
+    // Every metric written is finite: a peak or an integral of finite steps can still
+    // overflow (a crank speed of 1e150 rad/s), and summary.json would hold a null.
+    if let Some(m) = summary.metrics.iter().find(|m| !m.value.is_finite()) {
+        return Err(format!(
+            "the summary's {} is not finite ({}): the run's numbers overflow or are undefined",
+            m.name, m.value
+        ));
+    }
     let charts = match per_step {
         Some(p) => p
             .finish()

@@ -213,3 +213,45 @@ fn output_options_shape_the_files() {
         assert!(cell.len() <= 24, "{cell}");
     }
 }
+
+/// Numbers that overflow on the way (issue 22's r01-r03: a crank speed of 1e150 rad/s, an
+/// acceleration of 1e250 rad/s², an ambient pressure of 1e300 Pa) used to pass with `null`
+/// metrics in summary.json and `inf` in the CSV's torque shares. Now the case is refused or
+/// fails, naming the quantity; nothing is written. With and without the per-step files (the
+/// charts then check their own rows).
+#[test]
+fn numbers_that_overflow_fail_the_case_naming_the_quantity() {
+    let cases = [
+        GOOD.replace(
+            "initial_speed = 628.3185307",
+            "initial_speed = \"1e150 rad/s\"",
+        ),
+        GOOD.replace(
+            "angular_acceleration = 0.0",
+            "angular_acceleration = \"1e250 rad/s^2\"",
+        ),
+        format!("{GOOD}{PUMP_GAS}ambient_pressure = \"1e300 Pa\"\n"),
+    ];
+    for text in &cases {
+        for csv in [true, false] {
+            let dir = tempfile::tempdir().unwrap();
+            let file = dir.path().join("case.toml");
+            std::fs::write(&file, text).unwrap();
+            let options = RunOptions {
+                csv: Some(csv),
+                ..RunOptions::default()
+            };
+            let report = run_paths(&[file], &dir.path().join("out"), options);
+            assert!(report.written.is_empty(), "{text}: written");
+            let failure = report.failures.join("\n");
+            assert!(
+                failure.contains("not finite")
+                    || failure.contains("initial_speed")
+                    || failure.contains("angular_acceleration")
+                    || failure.contains("ambient_pressure"),
+                "{text}: {failure}"
+            );
+            assert!(!dir.path().join("out/good/summary.json").exists());
+        }
+    }
+}

@@ -15,9 +15,8 @@ fn tangential_tooth_load_by_hand() {
     let w = 200.0 * PI;
     let r_c = GEOMETRY.crank_length / 2.0;
     // The reciprocating mass: the rod of the default rule and the piston with pin (common.rs).
-    let reciprocating = |mech: &dyn cardan_mechanism::Mechanism| {
-        mech.masses().rod_mass + mech.masses().piston_mass
-    };
+    let reciprocating =
+        |mech: &dyn cardan_mechanism::Mechanism| mech.masses().rod_mass + mech.masses().piston_mass;
     for options in [&[][..], &[("gear_mesh_model", "involute")][..]] {
         let mech = machine_with("cardan_gear", &GEOMETRY, Material::Steel, options);
         let m = reciprocating(mech.as_ref());
