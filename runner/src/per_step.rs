@@ -529,16 +529,18 @@ impl ChartSink<'_> {
     }
 }
 
-/// Fails the step `s` if a number of its row `row` among `columns` is not finite, naming the
-/// column (the CSV's name) and the crank angle: the stepper checks what the loads are made of,
-/// but a derived column (a magnitude, a torque share, a power) can still overflow.
+/// Fails the step `s` if a number of its row `row` among `columns` is infinite, naming the
+/// column (the CSV's name) and the crank angle: the stepper checks what the loads are made of
+/// (NaN included), but a derived column (a magnitude, a torque share, a power) can still
+/// overflow. A NaN here is a documented empty cell (a torque share while the crank stands
+/// still, an extra where it is undefined).
 fn finite_row(
     header: &[String],
     row: &[f64],
     columns: impl IntoIterator<Item = usize>,
     s: &Step,
 ) -> Result<(), String> {
-    match columns.into_iter().find(|&k| !row[k].is_finite()) {
+    match columns.into_iter().find(|&k| row[k].is_infinite()) {
         None => Ok(()),
         Some(k) => Err(format!(
             "crank angle {:.4}°: {} is not finite ({})",
