@@ -232,7 +232,7 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
         file: file.into(),
         case: case_name.clone(),
         field: field.to_string(),
-        value: value.to_string(),
+        value: crate::units::show(&value.to_string()),
         rule: rule.to_string(),
     };
     if !is_folder_name(&raw.name) {

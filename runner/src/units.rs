@@ -46,19 +46,25 @@ impl Dimension {
                 ("cm", 1e-2),
                 ("um", 1e-6),
                 ("µm", 1e-6),
+                ("in", 0.0254),
+                ("ft", 0.3048),
             ],
             Dimension::Angle => &[("deg", PI / 180.0), ("°", PI / 180.0), ("rad", 1.0)],
             Dimension::AngularSpeed => &[
                 ("rad/s", 1.0),
                 ("rpm", 2.0 * PI / 60.0),
+                ("RPM", 2.0 * PI / 60.0),
                 ("r/min", 2.0 * PI / 60.0),
+                ("rev/min", 2.0 * PI / 60.0),
+                ("rev/s", 2.0 * PI),
+                ("Hz", 2.0 * PI),
             ],
             Dimension::AngularAcceleration => &[
                 ("rad/s^2", 1.0),
                 ("rad/s²", 1.0),
                 ("rpm/s", 2.0 * PI / 60.0),
             ],
-            Dimension::Mass => &[("kg", 1.0), ("g", 1e-3)],
+            Dimension::Mass => &[("kg", 1.0), ("g", 1e-3), ("lb", 0.453_592_37)],
             Dimension::Inertia => &[
                 ("kg*m^2", 1.0),
                 ("kg·m²", 1.0),
@@ -72,6 +78,7 @@ impl Dimension {
                 ("GPa", 1e9),
                 ("bar", 1e5),
                 ("atm", 101_325.0),
+                ("psi", 6_894.757_293_168),
             ],
             Dimension::Temperature => &[("K", 1.0), ("°C", 1.0), ("degC", 1.0)],
             Dimension::SpecificEnergy => &[("J/kg", 1.0), ("kJ/kg", 1e3), ("MJ/kg", 1e6)],
@@ -85,7 +92,12 @@ impl Dimension {
                 ("cSt", 1e-6),
             ],
             Dimension::Density => &[("kg/m^3", 1.0), ("kg/m³", 1.0), ("g/cm^3", 1e3)],
-            Dimension::Force => &[("N", 1.0), ("kN", 1e3), ("MN", 1e6)],
+            Dimension::Force => &[
+                ("N", 1.0),
+                ("kN", 1e3),
+                ("MN", 1e6),
+                ("lbf", 4.448_221_615_260_5),
+            ],
             Dimension::Number => &[("", 1.0)],
         }
     }
@@ -102,10 +114,47 @@ impl Dimension {
     pub fn default_unit(self) -> &'static str {
         self.units()[0].0
     }
+
+    /// The range of a bare number that is plausible in this dimension's default unit, and the
+    /// unit a number outside it was likely meant in: a bare 60 for a crank is 60 m, most
+    /// likely meant as "60 mm". A value written with a unit is taken as written. `None`: any
+    /// bare number is plausible. The bounds are far outside any machine this project models
+    /// (the thesis's crank speeds reach 400π rad/s, its lengths 0.3 m).
+    fn plausible(self) -> Option<(f64, f64, &'static str, &'static str)> {
+        Some(match self {
+            Dimension::Length => (0.0, 10.0, "mm", "millimetres"),
+            Dimension::AngularSpeed => (0.0, 2000.0, "rpm", "revolutions per minute"),
+            Dimension::AngularAcceleration => (0.0, 1e5, "rpm/s", "rpm per second"),
+            Dimension::Mass => (0.0, 100.0, "g", "grams"),
+            Dimension::Inertia => (0.0, 100.0, "g*cm^2", "g·cm²"),
+            Dimension::Pressure => (1000.0, 1e12, "kPa", "kilopascals"),
+            Dimension::Temperature => (100.0, 5000.0, "°C", "degrees Celsius"),
+            Dimension::KinematicViscosity => (0.0, 1e-2, "cSt", "centistokes (mm²/s)"),
+            Dimension::Density => (100.0, 30_000.0, "g/cm^3", "grams per cubic centimetre"),
+            Dimension::Force => (0.0, 1e9, "kN", "kilonewtons"),
+            _ => return None,
+        })
+    }
 }
 
 /// Converts a TOML value to SI. Errors say what was expected.
 pub fn to_si(value: &toml::Value, dim: Dimension) -> Result<f64, String> {
+    let bare = match value {
+        toml::Value::Float(x) => Some(*x),
+        toml::Value::Integer(i) => Some(*i as f64),
+        _ => None,
+    };
+    if let (Some(x), Some((low, high, unit, meant))) = (bare, dim.plausible()) {
+        // A pressure of 0 (no load) and any zero are plausible.
+        if x.is_finite() && x != 0.0 && !(low..=high).contains(&x.abs()) {
+            let (default, x) = (dim.default_unit(), short(x));
+            return Err(format!(
+                "a bare number is in {default}: {x} {default} is implausible here (a bare number \
+                 must lie within {low}...{high} {default}); write \"{x} {unit}\" if you meant \
+                 {meant}, or give the unit explicitly (\"{x} {default}\") to keep it"
+            ));
+        }
+    }
     let number = match value {
         toml::Value::Float(x) => Some((*x, dim.units()[0].1, 0.0)),
         toml::Value::Integer(i) => Some((*i as f64, dim.units()[0].1, 0.0)),
@@ -120,6 +169,24 @@ pub fn to_si(value: &toml::Value, dim: Dimension) -> Result<f64, String> {
         return Err(format!("must be a finite number, got {value}"));
     }
     Ok(x * factor + offset)
+}
+
+/// A number as a person writes it: `60`, `0.06`, and `1e300` rather than its 301 digits.
+pub fn short(x: f64) -> String {
+    let plain = x.to_string();
+    if plain.len() > 16 {
+        format!("{x:?}")
+    } else {
+        plain
+    }
+}
+
+/// A value as the message about it shows it: a number through [`short`], the rest as written.
+pub fn show(text: &str) -> String {
+    match text.parse::<f64>() {
+        Ok(x) if text.len() > 16 => short(x),
+        _ => text.to_string(),
+    }
 }
 
 /// "12.5 MPa" → (12.5, "MPa"); "0.5" → (0.5, "").
@@ -207,5 +274,57 @@ mod tests {
             -0.0004 / 6.0
         );
         assert!(to_si(&toml::Value::Boolean(true), Dimension::Length).is_err());
+        assert_relative_eq!(to_si(&v("1.5 in"), Dimension::Length).unwrap(), 0.0381);
+        assert_relative_eq!(
+            to_si(&v("3000 RPM"), Dimension::AngularSpeed).unwrap(),
+            100.0 * PI
+        );
+        assert_relative_eq!(
+            to_si(&v("50 Hz"), Dimension::AngularSpeed).unwrap(),
+            100.0 * PI
+        );
+        assert_relative_eq!(
+            to_si(&v("100 psi"), Dimension::Pressure).unwrap(),
+            689_475.729_316_8
+        );
+    }
+
+    /// Issue 22's r15: numbers meant in other units (a crank of 60 meant in mm, 3000 meant in
+    /// rpm, an ambient pressure of 101.325 meant in kPa, a viscosity of 5 meant in cSt, a
+    /// piston of 380 meant in g) are refused with the likely unit; with an explicit unit the
+    /// value is taken as written; plausible bare numbers pass.
+    #[test]
+    fn implausible_bare_numbers_are_refused_with_the_likely_unit() {
+        let bare = |x: f64| toml::Value::Float(x);
+        for (x, dim, suggestion) in [
+            (60.0, Dimension::Length, "\"60 mm\""),
+            (3000.0, Dimension::AngularSpeed, "\"3000 rpm\""),
+            (101.325, Dimension::Pressure, "\"101.325 kPa\""),
+            (5.0, Dimension::KinematicViscosity, "\"5 cSt\""),
+            (380.0, Dimension::Mass, "\"380 g\""),
+            (20.0, Dimension::Temperature, "\"20 °C\""),
+            (1e250, Dimension::AngularAcceleration, "rpm/s"),
+        ] {
+            let e = to_si(&bare(x), dim).unwrap_err();
+            assert!(e.contains(suggestion), "{x}: {e}");
+        }
+        let v = |s: &str| toml::Value::String(s.into());
+        assert_relative_eq!(to_si(&v("60 m"), Dimension::Length).unwrap(), 60.0);
+        assert_relative_eq!(
+            to_si(&v("3000 rad/s"), Dimension::AngularSpeed).unwrap(),
+            3000.0
+        );
+        for (x, dim) in [
+            (0.06, Dimension::Length),
+            (628.3, Dimension::AngularSpeed),
+            (101_325.0, Dimension::Pressure),
+            (0.0, Dimension::Pressure),
+            (5e-6, Dimension::KinematicViscosity),
+            (0.45, Dimension::Mass),
+            (293.15, Dimension::Temperature),
+            (7850.0, Dimension::Density),
+        ] {
+            assert_relative_eq!(to_si(&bare(x), dim).unwrap(), x);
+        }
     }
 }

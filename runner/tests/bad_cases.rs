@@ -563,3 +563,38 @@ fn gas_needs_pistons_in_cylinders() {
         &["gas", "hypotrochoid", "cylinder", "without [gas]"],
     );
 }
+
+/// Issue 22's r15: a case written in millimetres and rpm without units (crank 60, rod 140,
+/// bore 120, speed 3000) used to run a 60 m crank at 3000 rad/s. Each implausible bare number
+/// is refused, naming the field and the unit it was likely meant in; the same numbers with
+/// their units run.
+#[test]
+fn numbers_meant_in_other_units_are_refused_with_the_likely_unit() {
+    for (from, to, expected) in [
+        ("crank_length = 0.06", "crank_length = 60", "\"60 mm\""),
+        ("rod_length = 0.14", "rod_length = 140", "\"140 mm\""),
+        ("bore = 0.12", "bore = 120", "\"120 mm\""),
+        (
+            "initial_speed = 628.3185307",
+            "initial_speed = 3000",
+            "\"3000 rpm\"",
+        ),
+    ] {
+        assert!(GOOD.contains(from), "{from}");
+        let e = error_of(&GOOD.replace(from, to));
+        let field = to.split(' ').next().unwrap();
+        assert!(e.contains(field) && e.contains(expected), "{to}: {e}");
+    }
+    let with_units = GOOD
+        .replace("crank_length = 0.06", "crank_length = \"60 mm\"")
+        .replace("rod_length = 0.14", "rod_length = \"140 mm\"")
+        .replace("bore = 0.12", "bore = \"120 mm\"")
+        .replace(
+            "initial_speed = 628.3185307",
+            "initial_speed = \"6000 RPM\"",
+        );
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("case.toml");
+    std::fs::write(&file, with_units).unwrap();
+    assert!(cardan_runner::case::load(&file).is_ok());
+}
