@@ -416,6 +416,10 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
             };
             invalid(&field, &e.value, &e.rule)
         })?;
+        let step = (end_angle - start_angle) / m.steps as f64;
+        mechanism
+            .check_angles(start_angle, step, m.steps as usize)
+            .map_err(|e| invalid(&e.field, &e.value, &e.rule))?;
         mechanisms.push(Arc::from(mechanism));
     }
     let gas = raw

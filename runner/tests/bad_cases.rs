@@ -598,3 +598,22 @@ fn numbers_meant_in_other_units_are_refused_with_the_likely_unit() {
     std::fs::write(&file, with_units).unwrap();
     assert!(cardan_runner::case::load(&file).is_ok());
 }
+
+/// Issue 22's r10: the default hypotrochoid at 720 steps was "valid" for `cardan check` and
+/// failed its run at a fold of its parallelogram chain (a step on sin((m+1)θ) = 0). The case is
+/// refused on reading, naming the step and the remedy; with 721 steps it runs.
+#[test]
+fn a_grid_on_the_hypotrochoid_fold_is_refused_before_the_run() {
+    let text = GOOD.replace(
+        "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
+        "mechanisms = [\"hypotrochoid\"]",
+    );
+    let e = error_of(&text);
+    assert!(
+        e.contains("motion.steps") && e.contains("fold") && e.contains("steps = 721"),
+        "{e}"
+    );
+    let text = text.replace("steps = 720", "steps = 721");
+    let case = parse(Path::new("configs/good.toml"), &text).unwrap();
+    cardan_runner::run_case(&case, None).unwrap();
+}

@@ -588,6 +588,36 @@ impl Mechanism for Hypotrochoid {
         block.fill_each(&self.topology, |c, st| self.fill_state(c, st));
     }
 
+    /// Refuses a grid with a step on a fold of the parallelogram chain (module note), where
+    /// the planar solve is singular: |sin((m+1)θ)| below 1e-6 (the loads grow as its inverse).
+    /// Only the grid points nearest each fold in the run's carrier range are looked at.
+    fn check_angles(&self, first: f64, step: f64, steps: usize) -> Result<(), MechanismError> {
+        let k = self.mf() + 1.0;
+        let (a, d) = (self.carrier_angle(first), step / self.mf());
+        let b = a + d * steps as f64;
+        let (lo, hi) = ((a.min(b) * k / PI).floor(), (a.max(b) * k / PI).ceil());
+        let mut fold = lo;
+        while fold <= hi {
+            let i = ((fold * PI / k - a) / d).round();
+            if (0.0..=steps as f64).contains(&i) {
+                let angle = first + i * step;
+                if self.fold_sine(self.carrier_angle(angle)).abs() < 1e-6 {
+                    return Err(MechanismError::new(
+                        "motion.steps",
+                        steps,
+                        format!(
+                            "step {i} (crank angle {:.4}°) lands on a fold of the hypotrochoid's parallelogram chain, sin((m+1)θ) = 0, where its loads are singular; choose a number of steps or a start angle that avoids it (e.g. steps = {})",
+                            angle.to_degrees(),
+                            steps + 1
+                        ),
+                    ));
+                }
+            }
+            fold += 1.0;
+        }
+        Ok(())
+    }
+
     fn fill_extras(&self, st: &mut State) {
         let theta = self.carrier_angle(st.crank.angle);
         st.extras[0] = theta.to_degrees().rem_euclid(360.0);

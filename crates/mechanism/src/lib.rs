@@ -110,6 +110,14 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
         true
     }
 
+    /// Checks the crank angles of a run, `first + i·step` for i = 0..=`steps` (rad), before it
+    /// runs: an error names the first angle where the mechanism's loads are singular (a chain
+    /// that folds), so that `cardan check` refuses what the run would fail on. None by
+    /// default.
+    fn check_angles(&self, _first: f64, _step: f64, _steps: usize) -> Result<(), MechanismError> {
+        Ok(())
+    }
+
     /// Radius at which the crank delivers its force, m: the crank-pin radius, the radius of
     /// Vidinsky's (2021) output force F_out in his mechanical advantage MA = F_out/F_in (L225).
     /// By default half the stroke (the slider-crank's and the Scotch yoke's crank).
