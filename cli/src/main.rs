@@ -60,7 +60,8 @@ enum Command {
         paths: Vec<PathBuf>,
     },
     /// Rate one spur gear pair (external or internal) from a gear file and write
-    /// OUT/NAME/gear.json and report.md; exit 1 if the file is bad or the pair cannot work.
+    /// OUT/NAME/gear.json and report.md; exit 1 if the file is bad or the pair cannot work
+    /// (a blocking check fails or a safety factor is below required_safety_factor, default 1).
     Gear {
         /// The gear file (TOML; see README.md, "Gear pair calculator").
         file: PathBuf,
@@ -71,7 +72,9 @@ enum Command {
 }
 
 /// `cardan gear`: 0 the pair works and was written; 1 the file is bad (nothing written) or the
-/// pair cannot work (written, with the reasons on stderr).
+/// pair cannot work (written, with the reasons and remedies on stderr: a blocking check, a
+/// safety factor below `required_safety_factor`, a figure that is not finite). Warnings (rules
+/// of thumb such as undercut) go to stderr whatever the verdict.
 fn gear(file: &std::path::Path, out: &std::path::Path) -> ExitCode {
     match cardan_runner::gear_file::run(file, out) {
         Err(e) => {
@@ -80,6 +83,13 @@ fn gear(file: &std::path::Path, out: &std::path::Path) -> ExitCode {
         }
         Ok(run) => {
             let failures = run.report.failures();
+            for w in run.report.warnings() {
+                eprintln!(
+                    "warning: {}: gear pair \"{}\": {w}",
+                    file.display(),
+                    run.report.input.name
+                );
+            }
             println!(
                 "{}  {} -> {}",
                 if failures.is_empty() {

@@ -99,3 +99,87 @@ fn gear_usage() {
     assert_eq!(help.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&help.stdout).contains("--out"));
 }
+
+const OVERLOADED: &str = r#"
+name = "overloaded"
+module = "3 mm"
+pressure_angle = "20 deg"
+teeth = [20, 40]
+face_width = "30 mm"
+
+[rating]
+power = "200 kW"
+pinion_speed = "1800 rpm"
+quality = 6
+elastic_coefficient = "2300 sqrt(psi)"
+
+[rating.pinion]
+j = 0.3
+hardness = 240
+
+[rating.gear]
+j = 0.4
+hardness = 200
+"#;
+
+/// Issue 22, reproducer r07: 200 kW through a 3 mm, 20/40, 30 mm pair (SF ≈ 0.1 by hand, see
+/// runner/tests/gear_file.rs) exits 1 with the failed safety factors and the remedy.
+#[test]
+fn overloaded_pair_exits_1_naming_the_safety_factors() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("overloaded.toml");
+    std::fs::write(&file, OVERLOADED).unwrap();
+    let out = cardan(&[&"gear", &file, &"--out", &dir.path().join("out")]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "stderr: {stderr}");
+    for part in [
+        "overloaded.toml",
+        "cannot work",
+        "bending safety factor SF of the pinion",
+        "required_safety_factor 1",
+        "remedy",
+    ] {
+        assert!(stderr.contains(part), "{part}: {stderr}");
+    }
+    assert!(dir.path().join("out/overloaded/report.md").is_file());
+}
+
+/// Issue 22, reproducer r12: a pinion speed of 1e-300 rad/s gives infinite stresses: exit 1
+/// naming the quantity.
+#[test]
+fn tiny_pinion_speed_exits_1_naming_the_quantity() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("tiny.toml");
+    std::fs::write(
+        &file,
+        OVERLOADED
+            .replace("\"200 kW\"", "\"4 hp\"")
+            .replace("\"1800 rpm\"", "1e-300"),
+    )
+    .unwrap();
+    let out = cardan(&[&"gear", &file, &"--out", &dir.path().join("out")]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "stderr: {stderr}");
+    assert!(
+        stderr.contains("pinion torque") && stderr.contains("not a finite number"),
+        "stderr: {stderr}"
+    );
+}
+
+/// Warnings (Shigley's pinion just below the undercut limit) go to stderr; the pair still works.
+#[test]
+fn warnings_print_on_stderr() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = cardan(&[
+        &"gear",
+        &shipped("shigley-14-4.toml"),
+        &"--out",
+        &dir.path(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "stderr: {stderr}");
+    assert!(
+        stderr.contains("warning") && stderr.contains("pinion_undercut"),
+        "stderr: {stderr}"
+    );
+}

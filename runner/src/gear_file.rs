@@ -11,8 +11,10 @@
 //!
 //! Bad input is a [`GearFileError`] naming the file, the pair, the field, its value and the
 //! rule, never a panic. A pair that cannot work (interference, contact ratio below 1, jammed
-//! teeth) is not an input error: it is written, with the failed checks and their remedies, and
-//! [`GearReport::failures`] lists it so the command can exit 1.
+//! teeth, a safety factor below `required_safety_factor`, a figure that is not finite) is not
+//! an input error: it is written, with the failures and their remedies, and
+//! [`GearReport::failures`] lists it so the command can exit 1; [`GearReport::warnings`] lists
+//! the rules of thumb it breaks.
 
 use crate::output::{replace_dir, temporary_dir, write_file};
 use crate::units::{is_folder_name, split_number, to_si, Dimension};
@@ -216,6 +218,7 @@ struct RawRating {
     crowned: Option<bool>,
     offset_ratio: Option<toml::Value>,
     adjusted_at_assembly: Option<bool>,
+    required_safety_factor: Option<toml::Value>,
     pinion: RawMember,
     gear: RawMember,
 }
@@ -295,6 +298,9 @@ pub struct RatingInputs {
     pub hardness_ratio_factor: Option<f64>,
     pub load_distribution: LoadDistribution,
     pub members: [MemberInputs; 2],
+    /// The smallest bending (SF) and pitting (SH) safety factor the pair must reach,
+    /// `required_safety_factor` (default 1): see [`GearReport::failures`].
+    pub required_safety_factor: f64,
 }
 
 /// A validated gear file.
@@ -594,13 +600,17 @@ fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFi
         Load::Power(p) => ("rating.power", p),
         Load::Torque(t) => ("rating.torque", t),
     };
-    if load_value < 0.0 {
+    if load_value <= 0.0 {
         let v = r
             .power
             .as_ref()
             .or(r.torque.as_ref())
             .unwrap_or(&r.pinion_speed);
-        return Err(invalid(load_field, v, "must not be negative"));
+        return Err(invalid(
+            load_field,
+            v,
+            "must be positive (a pair without load has no rating: leave out [rating] for the geometry only)",
+        ));
     }
     let pinion_speed = to_si(&r.pinion_speed, Dimension::AngularSpeed)
         .map_err(|rule| invalid("rating.pinion_speed", &r.pinion_speed, &rule))?;
@@ -854,6 +864,27 @@ fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFi
             })?
         }
     };
+    let required_safety_factor = match &r.required_safety_factor {
+        None => 1.0,
+        Some(v) => {
+            let n = number("rating.required_safety_factor", v)?;
+            if !n.is_finite() {
+                return Err(invalid(
+                    "rating.required_safety_factor",
+                    v,
+                    "must be a finite number",
+                ));
+            }
+            if n < 1.0 {
+                return Err(invalid(
+                    "rating.required_safety_factor",
+                    v,
+                    "must be >= 1 (below 1 the pair is expected to break)",
+                ));
+            }
+            n
+        }
+    };
     let hardness_ratio_factor = r
         .hardness_ratio_factor
         .as_ref()
@@ -885,6 +916,7 @@ fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFi
             adjusted_at_assembly: r.adjusted_at_assembly.unwrap_or(false),
         },
         members,
+        required_safety_factor,
     })
 }
 
@@ -986,6 +1018,9 @@ pub struct RatingResult {
     pub contact_stress: [f64; 2],
     pub bending_safety: [f64; 2],
     pub contact_safety: [f64; 2],
+    /// The face width at which every safety factor reaches the required one, m, when one falls
+    /// short and a face width up to 40 in is enough ([`GearSetRating::required_face_width`]).
+    pub face_width_for_required: Option<f64>,
     pub warnings: Vec<String>,
 }
 
@@ -1000,8 +1035,19 @@ pub struct GearReport {
 }
 
 impl GearReport {
-    /// Why the pair cannot work: every failed check of severity `Error` with its remedies,
-    /// and a rating that could not be computed. Empty when the pair is usable.
+    /// Why the pair cannot work, each with its remedy; empty when the pair works. The verdict
+    /// (README.md, "Gear pair calculator"):
+    ///
+    /// * every blocking check passes: involute and trochoid interference, ring tip outside its
+    ///   base circle, contact ratio >= 1, backlash >= 0 ([`check_info`]; the rules of thumb,
+    ///   teeth difference and undercut, are [`warnings`](Self::warnings));
+    /// * every geometry figure written is a finite number;
+    /// * with `[rating]`: the rating is computed with every figure finite, and each member's
+    ///   bending safety factor `SF` and pitting safety factor `SH` is at least
+    ///   `required_safety_factor` (default 1). Both are compared directly, as the design
+    ///   factors of the allowable-stress equations `σ_all = St YN / (SF KT KR)` and
+    ///   `σc_all = Sc ZN CH / (SH KT KR)` (Shigley, Budynas & Nisbett, eqs. 14-17 and 14-18;
+    ///   AGMA 2001-D04 clause 4), with `SF`, `SH` from Shigley eqs. 14-41 and 14-42.
     pub fn failures(&self) -> Vec<String> {
         let mut out: Vec<String> = self
             .checks
@@ -1009,11 +1055,158 @@ impl GearReport {
             .filter(|c| !c.passed && check_info(c.kind).1 == Severity::Error)
             .map(|c| format!("{}: {}", check_info(c.kind).0, remedy_text(c)))
             .collect();
-        if let Some(Err(e)) = &self.rating {
-            out.push(format!("rating: {e}"));
+        for (quantity, value) in self.geometry_figures() {
+            if !value.is_finite() {
+                out.push(format!(
+                    "geometry: {quantity} = {value} is not a finite number; check module, teeth, profile_shift and center_distance"
+                ));
+            }
+        }
+        match &self.rating {
+            None => {}
+            Some(Err(e)) => out.push(format!("rating: {e}")),
+            Some(Ok(r)) => out.extend(self.safety_failures(r)),
         }
         out
     }
+
+    /// The safety factors below `required_safety_factor`, each with the pair's remedy.
+    fn safety_failures(&self, r: &RatingResult) -> Vec<String> {
+        let Some(inputs) = &self.input.rating else {
+            return Vec::new();
+        };
+        let n = inputs.required_safety_factor;
+        let members = ["pinion", "gear"];
+        let mut short = Vec::new();
+        for (k, member) in members.iter().enumerate() {
+            if r.bending_safety[k] < n {
+                short.push(format!(
+                    "bending safety factor SF of the {member} = {:.4} < required_safety_factor {n} (Shigley eq. 14-41)",
+                    r.bending_safety[k]
+                ));
+            }
+        }
+        for (k, member) in members.iter().enumerate() {
+            if r.contact_safety[k] < n {
+                short.push(format!(
+                    "pitting safety factor SH of the {member} = {:.4} < required_safety_factor {n} (Shigley eq. 14-42)",
+                    r.contact_safety[k]
+                ));
+            }
+        }
+        if short.is_empty() {
+            return short;
+        }
+        let remedy = self.safety_remedy(r, n);
+        short
+            .into_iter()
+            .map(|s| format!("{s}; remedy: {remedy}"))
+            .collect()
+    }
+
+    /// The remedy of a pair whose safety factors fall short of `n`: the largest load, from the
+    /// stresses' dependence on the tangential load at a fixed speed (bending `σ ∝ Wt`, AGMA
+    /// 2001-D04 eq. 15; contact `σc ∝ √Wt`, eq. 1; `Kv` depends on the speed, `Km`, `Ks` on the
+    /// face width), so the load may be scaled by `min(SF/n, (SH/n)²)`; the face width at which
+    /// every factor reaches `n`; a larger module, a stronger material.
+    fn safety_remedy(&self, r: &RatingResult, n: f64) -> String {
+        let f = (0..2)
+            .map(|k| (r.bending_safety[k] / n).min((r.contact_safety[k] / n).powi(2)))
+            .fold(f64::INFINITY, f64::min);
+        let load = match self.input.rating.as_ref().map(|i| i.load) {
+            Some(Load::Torque(t)) => format!("rating.torque at most {} N*m", sig4(t * f, false)),
+            _ => format!("rating.power at most {} kW", sig4(r.power * f / 1e3, false)),
+        };
+        let width = match r.face_width_for_required {
+            Some(b) => format!("face_width at least {} mm", sig4(b * 1e3, true)),
+            None => "no face width up to 40 in is enough".to_string(),
+        };
+        format!(
+            "{load}, or {width}, or a larger module, or a stronger material (larger allowable stresses St, Sc)"
+        )
+    }
+
+    /// Rules of thumb the pair breaks (failed `Warning` checks: teeth difference, undercut),
+    /// with their remedies, and the rating's warnings.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut out: Vec<String> = self
+            .checks
+            .iter()
+            .filter(|c| !c.passed && check_info(c.kind).1 == Severity::Warning)
+            .map(|c| format!("{}: {}", check_info(c.kind).0, remedy_text(c)))
+            .collect();
+        if let Some(Ok(r)) = &self.rating {
+            out.extend(r.warnings.iter().map(|w| format!("rating: {w}")));
+        }
+        out
+    }
+
+    /// Every geometry figure written to `gear.json` and `report.md`, with its name.
+    fn geometry_figures(&self) -> Vec<(String, f64)> {
+        let p = &self.pair;
+        let s = &p.spec;
+        let mut v: Vec<(String, f64)> = vec![
+            ("module".into(), s.module),
+            ("pressure angle".into(), s.pressure_angle),
+            ("profile shift x1".into(), s.pinion.shift),
+            ("profile shift x2".into(), s.gear.shift),
+            ("ratio".into(), p.ratio),
+            ("working pressure angle".into(), p.working_pressure_angle),
+            (
+                "operating pressure angle".into(),
+                p.operating_pressure_angle,
+            ),
+            ("working centre distance".into(), p.working_centre_distance),
+            ("centre distance".into(), p.centre_distance),
+            ("base pitch".into(), p.base_pitch),
+            ("path of contact".into(), p.path_of_contact),
+            ("contact ratio".into(), p.contact_ratio),
+            (
+                "circumferential backlash".into(),
+                p.backlash_circumferential,
+            ),
+            ("normal backlash".into(), p.backlash_normal),
+            ("gear addendum".into(), p.gear_addendum()),
+            (
+                "largest gear addendum without interference".into(),
+                p.max_gear_addendum_without_interference(),
+            ),
+        ];
+        if p.internal {
+            v.push(("trochoid ratio".into(), p.trochoid_ratio()));
+        }
+        for (member, d) in [("pinion", &p.pinion), ("gear", &p.gear)] {
+            for (name, x) in [
+                ("reference diameter", d.reference),
+                ("base diameter", d.base),
+                ("tip diameter", d.tip),
+                ("root diameter", d.root),
+                ("working diameter", d.working),
+            ] {
+                v.push((format!("{member} {name}"), x));
+            }
+        }
+        for c in &self.checks {
+            v.push((format!("margin of {}", check_info(c.kind).0), c.margin));
+        }
+        v
+    }
+}
+
+/// `x` to 4 significant digits, rounded up (`up`) or down, so that a remedy's bound is safe.
+fn sig4(x: f64, up: bool) -> String {
+    if !(x.is_finite() && x > 0.0) {
+        return format!("{x}");
+    }
+    let e = x.log10().floor() as i32;
+    let scale = 10f64.powi(e - 3);
+    let y = if up {
+        (x / scale * (1.0 - 1e-12)).ceil() * scale
+    } else {
+        (x / scale * (1.0 + 1e-12)).floor() * scale
+    };
+    let decimals = (3 - e).max(0) as usize;
+    format!("{y:.decimals$}")
 }
 
 fn remedy_text(c: &CheckReport) -> String {
@@ -1047,7 +1240,7 @@ pub fn evaluate(input: &GearFile) -> Result<GearReport, GearFileError> {
     })?;
     let checks = pair.checks();
     let rating = match (&input.rating, input.face_width) {
-        (Some(r), Some(b)) => Some(rate(&pair, r, b).map_err(|e| e.to_string())),
+        (Some(r), Some(b)) => Some(rate(&pair, r, b)),
         _ => None,
     };
     Ok(GearReport {
@@ -1058,7 +1251,118 @@ pub fn evaluate(input: &GearFile) -> Result<GearReport, GearFileError> {
     })
 }
 
-fn rate(pair: &GearPair, r: &RatingInputs, face_width: f64) -> Result<RatingResult, GearError> {
+/// Rates the pair; an error names the quantity that could not be computed or is not finite.
+fn rate(pair: &GearPair, r: &RatingInputs, face_width: f64) -> Result<RatingResult, String> {
+    let mut result = rate_figures(pair, r, face_width).map_err(|e| e.to_string())?;
+    let figures = rating_figures(&result);
+    if let Some((quantity, value, unit)) = figures.iter().find(|(_, v, _)| !v.is_finite()) {
+        return Err(format!(
+            "{quantity} = {value} {unit} is not a finite number (pinion torque {:e} N·m at pinion speed {:e} rad/s): check rating.power or rating.torque, rating.pinion_speed and the factors",
+            result.pinion_torque, r.pinion_speed
+        ));
+    }
+    let n = r.required_safety_factor;
+    if result
+        .bending_safety
+        .iter()
+        .chain(&result.contact_safety)
+        .any(|&x| x < n)
+    {
+        result.face_width_for_required = rating_set(pair, r, &result)
+            .required_face_width(result.tangential_load, result.kv, n, n, 1)
+            .ok()
+            .map(|w| w.governing);
+    }
+    Ok(result)
+}
+
+/// Every figure of a rating written to `gear.json` and `report.md`, in the order they are
+/// computed: (quantity, value, unit).
+fn rating_figures(r: &RatingResult) -> Vec<(String, f64, &'static str)> {
+    let mut v: Vec<(String, f64, &'static str)> = vec![
+        ("pitch-line velocity".into(), r.pitch_line_velocity, "m/s"),
+        ("power".into(), r.power, "W"),
+        ("pinion torque".into(), r.pinion_torque, "N·m"),
+        ("tangential load Wt".into(), r.tangential_load, "N"),
+        ("dynamic factor Kv".into(), r.kv, ""),
+        ("load distribution factor Km".into(), r.km, ""),
+        ("pitting geometry factor I".into(), r.i, ""),
+    ];
+    if let Some(x) = r.kv_velocity_limit {
+        v.push(("velocity limit of Kv".into(), x, "m/s"));
+    }
+    let per_member: [(&str, &[f64; 2], &'static str); 9] = [
+        ("load cycles", &r.cycles, ""),
+        ("size factor Ks", &r.ks, ""),
+        ("stress-cycle factor YN", &r.yn, ""),
+        ("stress-cycle factor ZN", &r.zn, ""),
+        ("hardness-ratio factor CH", &r.ch, ""),
+        ("bending stress", &r.bending_stress, "Pa"),
+        ("contact stress", &r.contact_stress, "Pa"),
+        ("bending safety factor SF", &r.bending_safety, ""),
+        ("pitting safety factor SH", &r.contact_safety, ""),
+    ];
+    for (name, a, unit) in per_member {
+        for (k, member) in ["pinion", "gear"].iter().enumerate() {
+            v.push((format!("{name} of the {member}"), a[k], unit));
+        }
+    }
+    v
+}
+
+/// The AGMA 2001-D04 rating set of the pair (the inputs of [`GearSetRating::rate`]).
+fn gear_set(
+    pair: &GearPair,
+    r: &RatingInputs,
+    i: f64,
+    yn: [f64; 2],
+    zn: [f64; 2],
+    ch: [f64; 2],
+) -> GearSetRating {
+    let d1 = pair.pinion.working;
+    let m = pair.spec.module;
+    let member = |k: usize| MemberData {
+        j: r.members[k].j,
+        rim: r.members[k].rim_factor,
+        bending_allowable: r.members[k].bending_allowable,
+        contact_allowable: r.members[k].contact_allowable,
+        yn: yn[k],
+        zn: zn[k],
+        ch: ch[k],
+    };
+    let size = match (r.members[0].lewis_y, r.members[1].lewis_y) {
+        (Some(y1), Some(y2)) => SizeFactor::Shigley { lewis_y: [y1, y2] },
+        _ => SizeFactor::Given([
+            r.members[0].size_factor.unwrap_or(1.0),
+            r.members[1].size_factor.unwrap_or(1.0),
+        ]),
+    };
+    GearSetRating {
+        module: m,
+        pinion_diameter: d1,
+        overload: r.overload,
+        load_distribution: r.load_distribution,
+        size,
+        surface_condition: r.surface_condition,
+        geometry_i: i,
+        elastic_coefficient: r.elastic_coefficient,
+        temperature: r.temperature_factor,
+        reliability: r.reliability_factor,
+        pinion: member(0),
+        gear: member(1),
+    }
+}
+
+/// [`gear_set`] of a computed rating.
+fn rating_set(pair: &GearPair, r: &RatingInputs, result: &RatingResult) -> GearSetRating {
+    gear_set(pair, r, result.i, result.yn, result.zn, result.ch)
+}
+
+fn rate_figures(
+    pair: &GearPair,
+    r: &RatingInputs,
+    face_width: f64,
+) -> Result<RatingResult, GearError> {
     let mut warnings = Vec::new();
     let u = pair.ratio;
     if u < 1.0 {
@@ -1115,37 +1419,7 @@ fn rate(pair: &GearPair, r: &RatingInputs, face_width: f64) -> Result<RatingResu
         _ => 1.0,
     };
     let ch = [1.0, ch_gear];
-    let m = pair.spec.module;
-    let member = |k: usize| MemberData {
-        j: r.members[k].j,
-        rim: r.members[k].rim_factor,
-        bending_allowable: r.members[k].bending_allowable,
-        contact_allowable: r.members[k].contact_allowable,
-        yn: yn[k],
-        zn: zn[k],
-        ch: ch[k],
-    };
-    let size = match (r.members[0].lewis_y, r.members[1].lewis_y) {
-        (Some(y1), Some(y2)) => SizeFactor::Shigley { lewis_y: [y1, y2] },
-        _ => SizeFactor::Given([
-            r.members[0].size_factor.unwrap_or(1.0),
-            r.members[1].size_factor.unwrap_or(1.0),
-        ]),
-    };
-    let set = GearSetRating {
-        module: m,
-        pinion_diameter: d1,
-        overload: r.overload,
-        load_distribution: r.load_distribution,
-        size,
-        surface_condition: r.surface_condition,
-        geometry_i: i,
-        elastic_coefficient: r.elastic_coefficient,
-        temperature: r.temperature_factor,
-        reliability: r.reliability_factor,
-        pinion: member(0),
-        gear: member(1),
-    };
+    let set = gear_set(pair, r, i, yn, zn, ch);
     let km = r.load_distribution.factor(face_width, d1)?;
     if !km.within_validity {
         warnings.push(format!(
@@ -1172,6 +1446,7 @@ fn rate(pair: &GearPair, r: &RatingInputs, face_width: f64) -> Result<RatingResu
         contact_stress: out.contact_stress,
         bending_safety: out.bending_safety,
         contact_safety: out.contact_safety,
+        face_width_for_required: None,
         warnings,
     })
 }
@@ -1212,12 +1487,7 @@ impl GearReport {
                 })
             })
             .collect();
-        let warnings: Vec<String> = self
-            .checks
-            .iter()
-            .filter(|c| !c.passed && check_info(c.kind).1 == Severity::Warning)
-            .map(|c| format!("{}: {}", check_info(c.kind).0, remedy_text(c)))
-            .collect();
+        let warnings = self.warnings();
         let rating = match &self.rating {
             None => Value::Null,
             Some(Err(e)) => json!({ "error": e }),
@@ -1257,6 +1527,7 @@ impl GearReport {
                     "kt": inputs.temperature_factor,
                     "kr": inputs.reliability_factor,
                     "cf": inputs.surface_condition,
+                    "required_safety_factor": inputs.required_safety_factor,
                     "pinion": member(0),
                     "gear": member(1),
                     "warnings": r.warnings,
@@ -1319,14 +1590,32 @@ impl GearReport {
         );
         let failures = self.failures();
         if failures.is_empty() {
+            let rated = match &self.input.rating {
+                Some(r) => format!(
+                    ", every safety factor at least required_safety_factor {}",
+                    r.required_safety_factor
+                ),
+                None => ", geometry only".to_string(),
+            };
             let _ = writeln!(
                 o,
-                "**Verdict: the pair works** (every blocking check passed).\n"
+                "**Verdict: the pair works** (every blocking check passed{rated}).\n"
             );
         } else {
             let _ = writeln!(o, "**Verdict: the pair cannot work as given.**\n");
             for f in &failures {
                 let _ = writeln!(o, "- {f}");
+            }
+            o.push('\n');
+        }
+        let warnings = self.warnings();
+        if !warnings.is_empty() {
+            let _ = writeln!(
+                o,
+                "Warnings (rules of thumb and the rating's caveats; they do not fail the pair):\n"
+            );
+            for w in &warnings {
+                let _ = writeln!(o, "- {w}");
             }
             o.push('\n');
         }
@@ -1537,9 +1826,11 @@ impl GearReport {
                     &f3,
                     "-",
                 );
-                for w in &r.warnings {
-                    let _ = writeln!(o, "\nWarning: {w}");
-                }
+                let _ = writeln!(
+                    o,
+                    "\nRequired safety factor (`required_safety_factor`, both SF and SH): {}",
+                    inputs.required_safety_factor
+                );
             }
         }
         o

@@ -408,3 +408,178 @@ fn output_folder_is_replaced_as_a_whole() {
         vec![std::ffi::OsString::from("karhula-cardan-20-40")]
     );
 }
+
+/// Issue 22, reproducer r07: 200 kW through a 3 mm, 20/40, 30 mm-wide pair. By hand (AGMA
+/// 2001-D04 eq. 15; Shigley eqs. 14-15, 14-41): Wt = 200 kW / (1800 rpm · 30 mm) = 35.4 kN,
+/// σ ≈ Wt Kv Km / (b m J) ≈ 35.4 kN · 1.45 · 1.17 / (30 mm · 3 mm · 0.3) ≈ 2.2 GPa against
+/// St YN ≈ 216 MPa · 1.02: SF ≈ 0.1, far below the default minimum 1.
+const OVERLOADED: &str = r#"
+name = "overloaded"
+module = "3 mm"
+pressure_angle = "20 deg"
+teeth = [20, 40]
+face_width = "30 mm"
+
+[rating]
+power = "200 kW"
+pinion_speed = "1800 rpm"
+quality = 6
+elastic_coefficient = "2300 sqrt(psi)"
+
+[rating.pinion]
+j = 0.3
+hardness = 240
+
+[rating.gear]
+j = 0.4
+hardness = 200
+"#;
+
+#[test]
+fn overloaded_pair_fails_its_verdict_naming_the_safety_factors_and_the_remedy() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("overloaded.toml");
+    std::fs::write(&file, OVERLOADED).unwrap();
+    let written = run(&file, &dir.path().join("out")).unwrap();
+    let f = written.report.failures();
+    let all = f.join("\n");
+    mentions(
+        &all,
+        &[
+            "bending safety factor SF of the pinion",
+            "pitting safety factor SH of the pinion",
+            "required_safety_factor 1",
+            "rating.power at most",
+            "face width",
+        ],
+    );
+    let j: Value =
+        serde_json::from_str(&std::fs::read_to_string(written.dir.join("gear.json")).unwrap())
+            .unwrap();
+    assert_eq!(j["passed"], false);
+    assert_eq!(j["rating"]["required_safety_factor"], 1.0);
+    let md = std::fs::read_to_string(written.dir.join("report.md")).unwrap();
+    mentions(
+        &md,
+        &["cannot work", "bending safety factor SF of the pinion"],
+    );
+    assert!(!md.contains("the pair works"), "{md}");
+}
+
+/// The power the remedy names (the stresses are linear in Wt for bending and go with √Wt for
+/// pitting at a fixed speed: AGMA 2001-D04 eqs. 1 and 15) is enough: at it the pair passes.
+#[test]
+fn the_load_remedy_of_an_overloaded_pair_makes_it_pass() {
+    let f = report_of(OVERLOADED).failures();
+    let line = f
+        .iter()
+        .find(|m| m.contains("rating.power at most"))
+        .unwrap_or_else(|| panic!("{f:?}"));
+    let after = line.split("rating.power at most ").nth(1).unwrap();
+    let kw: f64 = after.split(" kW").next().unwrap().parse().unwrap();
+    assert!(kw > 0.0 && kw < 200.0, "{line}");
+    let at = report_of(&OVERLOADED.replace("\"200 kW\"", &format!("\"{kw} kW\"")));
+    assert!(at.failures().is_empty(), "{:?}", at.failures());
+    let above = report_of(&OVERLOADED.replace("\"200 kW\"", &format!("\"{} kW\"", kw * 1.01)));
+    assert!(!above.failures().is_empty());
+}
+
+/// The face width the remedy names is enough; 200 kW would need more than 40 in (SH ≈ 0.19
+/// asks for about 28 times the face, `σc ∝ 1/√b`), 30 kW does not.
+#[test]
+fn the_face_width_remedy_makes_the_pair_pass() {
+    let text = OVERLOADED.replace("\"200 kW\"", "\"30 kW\"");
+    let f = report_of(&text).failures();
+    let line = f
+        .iter()
+        .find(|m| m.contains("face_width at least"))
+        .unwrap_or_else(|| panic!("{f:?}"));
+    let after = line.split("face_width at least ").nth(1).unwrap();
+    let mm: f64 = after.split(" mm").next().unwrap().parse().unwrap();
+    assert!(mm > 30.0, "{line}");
+    let wide = text.replace("\"30 mm\"", &format!("\"{mm} mm\""));
+    assert!(
+        report_of(&wide).failures().is_empty(),
+        "{:?}",
+        report_of(&wide).failures()
+    );
+    let narrower = text.replace("\"30 mm\"", &format!("\"{} mm\"", mm * 0.99));
+    assert!(!report_of(&narrower).failures().is_empty());
+}
+
+#[test]
+fn required_safety_factor_sets_the_minimum() {
+    // Shigley Example 14-4 prints SF 5.62 / 6.82 and SH 1.69 / 1.52: a required 1.5 passes,
+    // 1.6 fails on the gear's pitting factor only.
+    let text = std::fs::read_to_string(shipped("shigley-14-4.toml")).unwrap();
+    let with = |n: &str| {
+        text.replace(
+            "[rating]\n",
+            &format!("[rating]\nrequired_safety_factor = {n}\n"),
+        )
+    };
+    assert!(report_of(&with("1.5")).failures().is_empty());
+    let f = report_of(&with("1.6")).failures();
+    assert_eq!(f.len(), 1, "{f:?}");
+    mentions(
+        &f[0],
+        &[
+            "pitting safety factor SH of the gear",
+            "required_safety_factor 1.6",
+        ],
+    );
+    for (bad, rule) in [
+        ("0.5", ">= 1"),
+        ("-2", ">= 1"),
+        ("\"x\"", "required_safety_factor"),
+        ("inf", "finite"),
+        ("nan", "finite"),
+    ] {
+        let e = error_of(&with(bad));
+        mentions(
+            &e,
+            &["gears/bad.toml", "rating.required_safety_factor", rule],
+        );
+    }
+}
+
+/// Issue 22, reproducer r12: a pinion speed of 1e-300 rad/s makes the torque, and every stress,
+/// infinite; the pair must fail naming the quantity, not "work".
+#[test]
+fn a_tiny_pinion_speed_fails_naming_the_infinite_quantity() {
+    let tiny = OVERLOADED
+        .replace("\"200 kW\"", "\"4 hp\"")
+        .replace("\"1800 rpm\"", "1e-300");
+    let r = report_of(&tiny);
+    let f = r.failures();
+    assert!(!f.is_empty());
+    mentions(
+        &f.join("\n"),
+        &[
+            "pinion torque",
+            "not a finite number",
+            "rating.pinion_speed",
+        ],
+    );
+    assert_eq!(r.to_json()["passed"], false);
+    assert!(!r.to_markdown().contains("the pair works"));
+}
+
+#[test]
+fn zero_load_is_an_input_error() {
+    let e = error_of(&OVERLOADED.replace("\"200 kW\"", "0"));
+    mentions(&e, &["rating.power", "positive"]);
+}
+
+#[test]
+fn warnings_appear_in_the_report() {
+    // Shigley's 17-tooth unshifted pinion is just below the undercut limit: a warning listed
+    // under the verdict, the pair still works.
+    let r = report_of(&std::fs::read_to_string(shipped("shigley-14-4.toml")).unwrap());
+    assert!(r.failures().is_empty());
+    let w = r.warnings();
+    assert!(w.iter().any(|m| m.contains("pinion_undercut")), "{w:?}");
+    let md = r.to_markdown();
+    let verdict = md.split("## Inputs").next().unwrap();
+    mentions(verdict, &["the pair works", "Warnings", "pinion_undercut"]);
+}

@@ -943,3 +943,62 @@ fn a_long_run_is_charted_in_bounded_points_with_its_peaks() {
         );
     }
 }
+
+/// Issue 22, reproducer r09: `[friction]` added a "friction" load family to the charts (from
+/// the `friction_torque_nm` column), so the joint-force charts drew the missing
+/// `friction_<joint>_force_magnitude_n` columns and vanished, and a second "Drive torque,
+/// friction loads" chart appeared. With `[friction]` a case has the charts it has without,
+/// plus the friction-torque and power-loss charts, with and without CSV files.
+#[test]
+fn friction_keeps_the_force_charts_and_adds_one_friction_torque_chart() {
+    let name = "karhula-pump-r60-l140-a0-w3pi";
+    for csv in [true, false] {
+        let dir = tempfile::tempdir().unwrap();
+        let mut plots = Vec::new();
+        for friction in [false, true] {
+            let cases = dir.path().join(format!("cases-{friction}"));
+            std::fs::create_dir(&cases).unwrap();
+            let mut text = shipped_case_text(name, 1440, &format!("csv = {csv}"));
+            if friction {
+                text = text.replace("\n[output]\n", "\n[friction]\n\n[output]\n");
+            }
+            std::fs::write(cases.join("case.toml"), text).unwrap();
+            let out = dir.path().join(format!("out-{friction}"));
+            let report = run_paths(&[cases], &out, with_reports());
+            assert!(report.failures.is_empty(), "{:#?}", report.failures);
+            plots.push(plots_of(&out.join(name)));
+        }
+        let (without, with) = (&plots[0], &plots[1]);
+        let forces: Vec<&String> = without.keys().filter(|f| f.starts_with("force_")).collect();
+        assert!(forces.len() >= 3, "csv {csv}: {:?}", without.keys());
+        for (file, svg) in without {
+            assert!(
+                with.contains_key(file),
+                "csv {csv}: {file} lost with [friction]"
+            );
+            if file.starts_with("force_") {
+                assert!(
+                    svg.contains("total loads") && with[file].contains("total loads"),
+                    "csv {csv}: {file}"
+                );
+            }
+        }
+        let added: Vec<&String> = with.keys().filter(|f| !without.contains_key(*f)).collect();
+        assert_eq!(
+            added.iter().filter(|f| f.contains("friction")).count(),
+            1,
+            "csv {csv}: {added:?}"
+        );
+        assert!(
+            added.contains(&&"friction_torque.svg".to_string()),
+            "{added:?}"
+        );
+        assert!(
+            added
+                .iter()
+                .all(|f| *f == "friction_torque.svg" || f.starts_with("power_loss")),
+            "csv {csv}: {added:?}"
+        );
+        assert!(!with.values().any(|svg| svg.contains("friction loads")));
+    }
+}

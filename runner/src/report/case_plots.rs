@@ -115,8 +115,7 @@ pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Ve
             .iter()
             .flatten()
             .flat_map(|h| h.iter())
-            .filter_map(|c| c.strip_suffix("_torque_nm"))
-            .filter(|f| !f.is_empty() && !f.contains("_torque_"))
+            .filter_map(|c| load_family(c))
             .map(String::from)
             .collect();
         f.sort_by_key(|x| family_rank(x));
@@ -274,6 +273,15 @@ pub(super) fn charts(
     out
 }
 
+/// The load family `f` of a drive-torque column `f_torque_nm` (`per_step::COLUMNS`), `None`
+/// for any other column, the friction torque `friction_torque_nm` (a `[friction]` case's, not a
+/// load family: it has no joint forces, and its own chart) among them.
+fn load_family(column: &str) -> Option<&str> {
+    column
+        .strip_suffix("_torque_nm")
+        .filter(|f| !f.is_empty() && !f.contains("_torque_") && *f != "friction")
+}
+
 /// The power-loss columns of a header (`power_loss_<component>_w`): each one's chart, and
 /// their sum's (the total loss).
 pub(super) fn loss_columns(h: &[String]) -> Vec<String> {
@@ -315,11 +323,7 @@ pub(super) fn wanted_columns(h: &[String], joints: &[String]) -> Vec<String> {
         .iter()
         .filter_map(|x| x.strip_suffix("_dx_dtheta_m_rad"))
         .collect();
-    let mut families: Vec<&str> = h
-        .iter()
-        .filter_map(|x| x.strip_suffix("_torque_nm"))
-        .filter(|f| !f.is_empty() && !f.contains("_torque_"))
-        .collect();
+    let mut families: Vec<&str> = h.iter().filter_map(|x| load_family(x)).collect();
     families.sort_by_key(|x| family_rank(x));
     let forces: Vec<String> = families
         .last()
@@ -339,8 +343,7 @@ pub(super) fn wanted_columns(h: &[String], joints: &[String]) -> Vec<String> {
                 || ["_position_m", "_velocity_m_s", "_acceleration_m_s2"]
                     .iter()
                     .any(|s| c.strip_suffix(s).is_some_and(|p| pistons.contains(&p)))
-                || c.strip_suffix("_torque_nm")
-                    .is_some_and(|f| families.contains(&f))
+                || load_family(c).is_some_and(|f| families.contains(&f))
                 || forces.contains(c)
         })
         .cloned()
