@@ -236,7 +236,7 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
         rule: rule.to_string(),
     };
     if !is_folder_name(&raw.name) {
-        return Err(invalid("name", &format!("\"{}\"", raw.name), "must be a non-empty folder name of letters, digits, '-', '_' and '.', not starting with '.'"));
+        return Err(invalid("name", &format!("\"{}\"", raw.name), "must be a non-empty folder name of at most 200 letters, digits, '-', '_' and '.', not starting with '.'"));
     }
     let machine = match raw.machine.as_str() {
         "pump" => Machine::Pump,

@@ -347,7 +347,7 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
         return Err(invalid(
             "name",
             &format!("\"{}\"", raw.name),
-            "must be a non-empty folder name of letters, digits, '-', '_' and '.', not starting with '.'",
+            "must be a non-empty folder name of at most 200 letters, digits, '-', '_' and '.', not starting with '.'",
         ));
     }
     let given = given_fields(text);

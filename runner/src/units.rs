@@ -202,10 +202,15 @@ pub fn split_number(s: &str) -> Result<(f64, &str), String> {
     Ok((x, unit.trim()))
 }
 
-/// Whether `name` can be an output folder: letters, digits, '-', '_' and '.', not empty and
-/// not starting with '.' (no hidden or parent folders).
+/// Longest case (and sweep point) name: a folder name, with room for the temporary folder's
+/// prefix and suffix within the 255 bytes file systems allow.
+pub const MAX_NAME: usize = 200;
+
+/// Whether `name` can be an output folder: letters, digits, '-', '_' and '.', not empty, at
+/// most [`MAX_NAME`] characters and not starting with '.' (no hidden or parent folders).
 pub fn is_folder_name(name: &str) -> bool {
     !name.is_empty()
+        && name.len() <= MAX_NAME
         && !name.starts_with('.')
         && name
             .chars()

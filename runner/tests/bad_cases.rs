@@ -617,3 +617,20 @@ fn a_grid_on_the_hypotrochoid_fold_is_refused_before_the_run() {
     let case = parse(Path::new("configs/good.toml"), &text).unwrap();
     cardan_runner::run_case(&case, None).unwrap();
 }
+
+/// Issue 22 item 9: what `cardan check` passed and the run then failed on. A gear face over
+/// 40 in (the range of AGMA's empirical Cpf) failed at the first step's rating, and a
+/// 250-character name when its folder was written: both are refused on reading.
+#[test]
+fn what_the_run_would_refuse_is_refused_on_reading() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+    let pump = std::fs::read_to_string(dir.join("karhula-pump-r60-l140-a0-w30pi.toml")).unwrap();
+    let e = error_of(&format!("{pump}\n[gear]\nface_width = \"1.2 m\"\n"));
+    assert!(e.contains("gear.face_width") && e.contains("40 in"), "{e}");
+    let long = GOOD.replace(
+        "name = \"good\"",
+        &format!("name = \"{}\"", "a".repeat(250)),
+    );
+    let e = error_of(&long);
+    assert!(e.contains("name") && e.contains("at most 200"), "{e}");
+}

@@ -274,6 +274,10 @@ impl GearRatings {
             };
             let (pair, face_width) =
                 mesh_pair(spec, ratio, pitch_radius, internal, pressure_angle)?;
+            // The load distribution's empirical Cpf holds up to 40 in (AGMA 2001-D04 eq. 28-30):
+            // a wider face is refused here, before any step, not at the first step's rating.
+            cardan_gears::agma::factors::pinion_proportion_factor(face_width, pair.pinion.working)
+                .map_err(|e| failed("gear.face_width", &e))?;
             let table_j = (internal && (pressure_angle.to_degrees() - 25.0).abs() < 1e-9)
                 .then(|| {
                     cardan_gears::agma::geometry_factors::internal_j_conservative(
