@@ -95,6 +95,13 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
         "gas_model": case.gas.as_ref().map(|g| g.name()),
     });
     summary["mechanisms"] = Value::Object(mechanisms);
+    let warnings: Vec<String> = results
+        .iter()
+        .flat_map(|r| r.warnings.iter().map(move |w| format!("{}: {w}", r.label)))
+        .collect();
+    if !warnings.is_empty() {
+        summary["warnings"] = json!(warnings);
+    }
     summary
 }
 

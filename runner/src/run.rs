@@ -26,6 +26,60 @@ pub struct MechanismResult {
     /// name, with `_crank2` for the second crank train of a phased opposed-piston case.
     pub label: String,
     pub summary: Summary,
+    /// What the case should know about these results (a grid too coarse for its peaks), said
+    /// on stderr and in summary.json and the report.
+    pub warnings: Vec<String>,
+}
+
+/// Steps per crank revolution below which a run estimates its peaks' sampling error: on a
+/// 0.25° grid the error of a peak of a smooth load, about (Δθ·k)²/8 for its k-th harmonic, is
+/// far below [`SAMPLING_TOLERANCE`] for the orders a crank mechanism has.
+const SAMPLING_CHECK_STEPS_PER_REV: f64 = 1440.0;
+
+/// Largest relative sampling error of a peak metric that passes without a warning.
+const SAMPLING_TOLERANCE: f64 = 1e-3;
+
+/// The warning for the peak metrics (`*_max`) of `fine` (a run of `steps` intervals, `per_rev`
+/// of them per revolution) that its samples may put more than [`SAMPLING_TOLERANCE`] below
+/// the true peak, from `shifted`: the same run's peaks on the grids shifted by a third and two
+/// thirds of a step. Together the three sample the run every third of a step, so their
+/// largest value less the run's own is what the run's grid missed; it is a lower bound of the
+/// true error (no sample exceeds the peak) and, for a smooth peak (a parabola near its
+/// maximum), short of it by at most a ninth of the worst error a grid of this step can have.
+fn sampling_warning(
+    fine: &Summary,
+    shifted: &[Summary],
+    steps: usize,
+    per_rev: f64,
+) -> Option<String> {
+    let mut worst: Option<(f64, &str)> = None;
+    let mut count = 0;
+    for m in fine.metrics.iter().filter(|m| m.name.ends_with("_max")) {
+        if m.value.abs() <= f64::MIN_POSITIVE {
+            continue;
+        }
+        let best = shifted
+            .iter()
+            .filter_map(|s| s.get(&m.name))
+            .fold(m.value, f64::max);
+        let error = (best - m.value) / best.abs();
+        if error > SAMPLING_TOLERANCE {
+            count += 1;
+            if worst.is_none_or(|(w, _)| error > w) {
+                worst = Some((error, &m.name));
+            }
+        }
+    }
+    let (error, name) = worst?;
+    // The error goes as the step squared.
+    let needed = (steps as f64 * (error / SAMPLING_TOLERANCE).sqrt()).ceil();
+    Some(format!(
+        "{count} peak metric(s) are low from sampling at {per_rev:.0} steps per revolution, by \
+         at least {:.2} % ({name}: the grid shifted by a third of a step finds more); raise \
+         motion.steps to at least {needed} for {} %",
+        100.0 * error,
+        100.0 * SAMPLING_TOLERANCE
+    ))
 }
 
 /// The mean crank speed over the run, rad/s: the speed of a steady run, which the
@@ -50,7 +104,7 @@ fn run_mechanism(
     label: &str,
     dir: Option<&Path>,
     charts: bool,
-) -> Result<(Summary, Option<ChartData>), String> {
+) -> Result<(Summary, Option<ChartData>, Vec<String>), String> {
     let inertial = Inertial(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
@@ -113,6 +167,12 @@ fn run_mechanism(
             )
         }),
     );
+    // A coarse grid's peaks are checked by the same run on the grid shifted by a third and by
+    // two thirds of a step (summaries only).
+    let revolutions = (case.end_angle - case.motion.start_angle) / std::f64::consts::TAU;
+    let per_rev = case.steps as f64 / revolutions;
+    let check_sampling = per_rev < SAMPLING_CHECK_STEPS_PER_REV;
+    let mut shifted = Vec::new();
     let mut steps = |gas: Option<GasAt>| {
         let motion = CrankMotion {
             start_angle: case.motion.start_angle + shift,
@@ -141,7 +201,21 @@ fn run_mechanism(
             ),
             None => run_parallel(mechanism, &mut grid, &families, gas, stages, &mut sinks),
         }
-        .map_err(|e| e.to_string())
+        .map_err(|e| e.to_string())?;
+        if check_sampling {
+            let h = (case.end_angle - case.motion.start_angle) / case.steps as f64;
+            let n = case.steps - 1;
+            for third in [1.0, 2.0] {
+                let a = motion.start_angle + third * h / 3.0;
+                let mut grid = Grid::new(motion, a, a + n as f64 * h, n);
+                let mut sink = SummarySink::new(mechanism, &names, n + 1).for_peaks();
+                let stages = Stages::default();
+                run_parallel(mechanism, &mut grid, &families, gas, stages, &mut sink)
+                    .map_err(|e| format!("the run on the shifted grid (sampling check): {e}"))?;
+                shifted.push(sink.finish(mechanism)?);
+            }
+        }
+        Ok::<(), String>(())
     };
     let gas_metrics = match &case.gas {
         None => {
@@ -203,7 +277,10 @@ fn run_mechanism(
             .map_err(|e| format!("cannot write the per-step files: {e:#}"))?,
         None => chart_rows.and_then(ChartSink::finish),
     };
-    Ok((summary, charts))
+    let warnings = sampling_warning(&summary, &shifted, case.steps, per_rev)
+        .into_iter()
+        .collect();
+    Ok((summary, charts, warnings))
 }
 
 /// Runs every mechanism of a case (in parallel), writing their per-step files into `dir` if
@@ -232,18 +309,26 @@ fn run_trains(
     let results: Vec<Result<(MechanismResult, Option<ChartData>), String>> = trains
         .par_iter()
         .map(|(m, shift, label)| {
-            let (summary, series) = run_mechanism(case, m.as_ref(), *shift, label, dir, charts)
-                .map_err(|e| {
+            let (summary, series, warnings) =
+                run_mechanism(case, m.as_ref(), *shift, label, dir, charts).map_err(|e| {
                     format!(
                         "{}: case \"{}\": {label}: {e}",
                         case.file.display(),
                         case.name
                     )
                 })?;
+            for w in &warnings {
+                tracing::warn!(
+                    "{}: case \"{}\": {label}: {w}",
+                    case.file.display(),
+                    case.name
+                );
+            }
             let result = MechanismResult {
                 mechanism: Arc::clone(m),
                 label: label.clone(),
                 summary,
+                warnings,
             };
             Ok((result, series))
         })

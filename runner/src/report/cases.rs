@@ -444,6 +444,9 @@ pub(super) fn case_report(
         s.gas_model.as_deref().unwrap_or("none"),
         names.join(", ")
     )));
+    for w in &s.warnings {
+        doc.push(Block::Paragraph(format!("**Warning:** {w}.")));
+    }
     doc.push(Block::Paragraph(format!(
         "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
          for loads, torques, power need and losses; higher is better for efficiency and output. \

@@ -36,6 +36,8 @@ pub struct CaseSummary {
     pub machine: String,
     pub gas_model: Option<String>,
     pub mechanisms: Vec<MechanismSummary>,
+    /// The run's warnings (`summary.json`'s `warnings`), e.g. a grid too coarse for its peaks.
+    pub warnings: Vec<String>,
 }
 
 /// The order of mechanisms in a report: the reference first, then registry order (the order
@@ -130,6 +132,16 @@ pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(Cas
             machine: string("machine").unwrap_or_default(),
             gas_model: string("gas_model"),
             mechanisms,
+            warnings: json
+                .get("warnings")
+                .and_then(Value::as_array)
+                .map(|a| {
+                    a.iter()
+                        .filter_map(Value::as_str)
+                        .map(String::from)
+                        .collect()
+                })
+                .unwrap_or_default(),
         },
         reference,
     ))
