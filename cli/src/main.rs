@@ -196,7 +196,10 @@ fn main() -> ExitCode {
                 }
             }
             for (name, dir, points) in &report.sweeps {
-                println!("ok      {name} ({points} point(s)) -> {}", dir.display());
+                println!(
+                    "ok      {name} ({points} point(s) written) -> {}",
+                    dir.display()
+                );
             }
             println!(
                 "{} case(s) written to {}, {} failed, in {:.2} s",

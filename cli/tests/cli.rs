@@ -279,7 +279,10 @@ fn a_sweep_prints_one_line_and_only_keeps_its_other_points() {
     let run = cardan(&[&"run", &sweep, &"--out", &out, &"--quiet"]);
     assert_eq!(run.status.code(), Some(0));
     let stdout = String::from_utf8_lossy(&run.stdout);
-    assert!(stdout.contains("ok      s (2 point(s))"), "{stdout}");
+    assert!(
+        stdout.contains("ok      s (2 point(s) written)"),
+        "{stdout}"
+    );
     assert!(!stdout.contains("ok      s-initial_speed"), "{stdout}");
     let run = cardan(&[
         &"run", &sweep, &"--out", &out, &"--quiet", &"--only", &"*900rpm",

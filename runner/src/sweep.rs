@@ -331,18 +331,29 @@ pub fn expand(
     let mut seen: std::collections::HashMap<&str, &Point> = std::collections::HashMap::new();
     for p in &points {
         if let Some(first) = seen.insert(&p.name, p) {
-            let show = |q: &Point| {
-                q.values
-                    .iter()
-                    .map(|(path, v)| format!("{path} = {v:?}"))
-                    .collect::<Vec<_>>()
-                    .join(", ")
+            let show = |q: &Point, k: usize| format!("{:?}", q.values[k].1);
+            let (field, value) = if p.values.len() == 1 {
+                (
+                    format!("sweep.\"{}\"", p.values[0].0),
+                    format!("{} and {}", show(first, 0), show(p, 0)),
+                )
+            } else {
+                let each = |q: &Point| {
+                    (0..q.values.len())
+                        .map(|k| format!("{} = {}", q.values[k].0, show(q, k)))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                };
+                (
+                    "sweep".to_string(),
+                    format!("({}) and ({})", each(first), each(p)),
+                )
             };
             return Err(invalid(
                 file,
                 &name,
-                "sweep",
-                &format!("{} and {}", show(first), show(p)),
+                &field,
+                &value,
                 &format!(
                     "two points would have the one name (and folder) \"{}\": every swept value must be distinct",
                     p.name
