@@ -425,7 +425,7 @@ fn an_output_path_that_is_a_file_is_not_replaced() {
     std::fs::write(&file, GOOD).unwrap();
     let out = dir.path().join("out");
     std::fs::write(&out, "mine").unwrap();
-    let r = run_paths(&[file.clone()], &out, RunOptions::default());
+    let r = run_paths(std::slice::from_ref(&file), &out, RunOptions::default());
     assert!(r.written.is_empty());
     assert!(
         r.failures.join("\n").contains("is a file, not a folder"),
