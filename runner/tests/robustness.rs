@@ -296,6 +296,43 @@ fn only_on_a_sweep_updates_the_selected_points_in_place() {
     assert!(html.contains("s-initial_speed-3000rpm") && html.contains("s-initial_speed-900rpm"));
     assert!(dead_links(&sweep.join("report.html")).is_empty());
     assert!(dead_links(&dir.path().join("out/index.html")).is_empty());
+    // Without reports, the sweep's report already there is rewritten, not left stale.
+    let report_before = std::fs::read_to_string(sweep.join("report.md")).unwrap();
+    let r = with_options(
+        dir.path(),
+        "s.toml",
+        &text,
+        RunOptions {
+            only: Some("*900rpm".into()),
+            ..RunOptions::default()
+        },
+    );
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    assert_ne!(
+        std::fs::read_to_string(sweep.join("report.md")).unwrap(),
+        report_before
+    );
+    // A sweep over another field cannot be merged into it: refused, nothing touched.
+    let other = text
+        .replace("motion.initial_speed", "geometry.bore")
+        .replace("[\"900 rpm\", \"3000 rpm\"]", "[\"100 mm\", \"120 mm\"]");
+    let r = with_options(
+        dir.path(),
+        "s.toml",
+        &other,
+        RunOptions {
+            only: Some("*100mm".into()),
+            ..RunOptions::default()
+        },
+    );
+    let all = r.failures.join("\n");
+    assert!(r.written.is_empty());
+    assert!(
+        all.contains("geometry.bore") && all.contains("run the whole sweep"),
+        "{all}"
+    );
+    assert_eq!(csv_rows(&sweep.join("sweep.csv")).len(), 3);
+    assert!(!sweep.join("s-bore-100mm").exists());
 }
 
 /// r08: a re-run with `--no-report` left the old `index.html`, linking a report that no longer
