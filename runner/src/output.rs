@@ -159,8 +159,9 @@ pub fn replace_dir(tmp: &Path, dir: &Path) -> anyhow::Result<()> {
                 }
                 return Ok(());
             }
-            // Another run put its folder in place between the two renames: again.
-            Err(_) if dir.symlink_metadata().is_ok() && tmp.is_dir() => continue,
+            // Another run put its folder in place between the two renames (and may since
+            // have moved it aside again): again, while ours is still there to move.
+            Err(_) if tmp.is_dir() => continue,
             Err(e) => return Err(e).with_context(|| format!("rename to {}", dir.display())),
         }
     }
