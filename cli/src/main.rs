@@ -31,7 +31,7 @@ enum Command {
         /// Output folder; each case's folder in it is replaced as a whole.
         #[arg(long, default_value = "out")]
         out: PathBuf,
-        /// Worker threads (default: one per core).
+        /// Worker threads (default: one per core; at most 4 per core).
         #[arg(long)]
         jobs: Option<usize>,
         /// Write no per-step CSV, whatever the cases' output tables say.
@@ -52,6 +52,10 @@ enum Command {
         /// OUT/index.html).
         #[arg(long)]
         no_report: bool,
+        /// Run cases whose per-step files would exceed 10 GB (estimated from steps, columns
+        /// and bytes per value as the case's [output] asks); without it they are refused.
+        #[arg(long)]
+        allow_large: bool,
     },
     /// Read and validate every case under PATHS without running them.
     Check {
@@ -147,6 +151,13 @@ fn main() -> ExitCode {
         )
         .with_writer(std::io::stderr)
         .init();
+    // A write past the file-size limit returns an error (EFBIG) that fails its case with a
+    // message, instead of a signal that kills the whole run.
+    #[cfg(unix)]
+    // SAFETY: setting a signal's disposition to "ignore" before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+    }
     let cli = Cli::parse();
     let (ok, failures) = match cli.command {
         Command::Run {
@@ -158,6 +169,7 @@ fn main() -> ExitCode {
             only,
             quiet,
             no_report,
+            allow_large,
         } => {
             if jobs == Some(0) {
                 eprintln!("error: --jobs must be at least 1");
@@ -172,6 +184,8 @@ fn main() -> ExitCode {
                 npy: npy.then_some(true),
                 only,
                 reports: !no_report,
+                allow_large,
+                max_bytes: None,
                 progress: Some(std::sync::Arc::new(move |done, total| {
                     progress.set_length(total as u64);
                     progress.set_position(done as u64);
@@ -179,8 +193,23 @@ fn main() -> ExitCode {
             };
             let report = cardan_runner::run_paths(&paths, &out, options);
             bar.finish_and_clear();
+            // A sweep's points are told by one line for the sweep, not one each.
+            let in_sweep = |dir: &std::path::Path| {
+                report
+                    .sweeps
+                    .iter()
+                    .any(|(_, s, _)| dir.parent() == Some(s.as_path()))
+            };
             for (name, dir) in &report.written {
-                println!("ok      {name} -> {}", dir.display());
+                if !in_sweep(dir) {
+                    println!("ok      {name} -> {}", dir.display());
+                }
+            }
+            for (name, dir, points) in &report.sweeps {
+                println!(
+                    "ok      {name} ({points} point(s) written) -> {}",
+                    dir.display()
+                );
             }
             println!(
                 "{} case(s) written to {}, {} failed, in {:.2} s",

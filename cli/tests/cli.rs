@@ -175,3 +175,163 @@ fn outputs_do_not_depend_on_the_thread_count_nor_the_kernels() {
     }
     assert!(compared >= 9, "{compared} files compared");
 }
+
+// ---- Issue 22: complete results or an error, everywhere (the reproducers' shell scripts). ----
+
+fn reproducer(name: &str) -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/reproducers")
+        .join(name)
+}
+
+/// r13: `--jobs 100000` did not finish in a minute. Now it is capped (said once) and the run
+/// takes as long as with a few threads.
+#[test]
+fn huge_jobs_are_capped_and_said_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_cardan"))
+        .arg("run")
+        .arg(reproducer("r08-case.toml"))
+        .arg("--out")
+        .arg(dir.path().join("o"))
+        .args(["--quiet", "--jobs", "100000"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let started = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if started.elapsed().as_secs() > 30 {
+            child.kill().unwrap();
+            panic!("--jobs 100000 still running after 30 s");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    let run = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(0), "{stderr}");
+    assert_eq!(stderr.matches("--jobs 100000").count(), 1, "{stderr}");
+}
+
+/// `--out /dev/zero` (or any file) is refused as not a folder, not "no such file".
+#[cfg(unix)]
+#[test]
+fn an_output_path_that_is_not_a_folder_is_named_as_such() {
+    let run = cardan(&[&"run", &reproducer("r08-case.toml"), &"--out", &"/dev/zero"]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("/dev/zero") && stderr.contains("not a folder"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("No such file"), "{stderr}");
+}
+
+/// A case of 10^8 steps would write some hundreds of GB: refused at once with the estimate,
+/// naming `--allow-large` (which `--help` lists).
+#[test]
+fn a_huge_case_is_refused_unless_allowed() {
+    let dir = tempfile::tempdir().unwrap();
+    let case = dir.path().join("huge.toml");
+    let text = std::fs::read_to_string(reproducer("r08-case.toml"))
+        .unwrap()
+        .replace("steps = 720", "steps = 100000000");
+    std::fs::write(&case, text).unwrap();
+    let run = cardan(&[&"run", &case, &"--out", &dir.path().join("o"), &"--quiet"]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("huge.toml") && stderr.contains("GB") && stderr.contains("--allow-large"),
+        "{stderr}"
+    );
+    let help = cardan(&[&"run", &"--help"]);
+    assert!(String::from_utf8_lossy(&help.stdout).contains("--allow-large"));
+}
+
+/// A write past the file-size limit (`ulimit -f`) fails the case with a message and exit 1,
+/// not a SIGXFSZ that kills the run.
+#[cfg(unix)]
+#[test]
+fn a_write_error_fails_the_case_with_a_message_not_a_signal() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -f 64; exec \"$0\" run \"$1\" --out \"$2\" --quiet")
+        .arg(env!("CARGO_BIN_EXE_cardan"))
+        .arg(reproducer("r08-case.toml"))
+        .arg(dir.path().join("o"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{:?} {stderr}", run.status);
+    assert!(
+        stderr.contains("\"k\"") && stderr.to_lowercase().contains("file too large"),
+        "{stderr}"
+    );
+}
+
+/// r17 (a), and the output of a sweep: one line for the sweep, not one per point.
+#[test]
+fn a_sweep_prints_one_line_and_only_keeps_its_other_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o");
+    let sweep = reproducer("r06-only-sweep-point-deletes-others.toml");
+    let run = cardan(&[&"run", &sweep, &"--out", &out, &"--quiet"]);
+    assert_eq!(run.status.code(), Some(0));
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        stdout.contains("ok      s (2 point(s) written)"),
+        "{stdout}"
+    );
+    assert!(!stdout.contains("ok      s-initial_speed"), "{stdout}");
+    let run = cardan(&[
+        &"run", &sweep, &"--out", &out, &"--quiet", &"--only", &"*900rpm",
+    ]);
+    assert_eq!(run.status.code(), Some(0));
+    assert!(out.join("s/s-initial_speed-3000rpm/summary.json").is_file());
+    assert!(out.join("s/s-initial_speed-900rpm/summary.json").is_file());
+    let csv = std::fs::read_to_string(out.join("s/sweep.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 3, "{csv}");
+}
+
+/// Runs on one output folder at the same time used to fail with "move … aside: No such file
+/// or directory". Now each replaces the folders whole, the last one to finish winning.
+#[test]
+fn concurrent_runs_on_one_folder_all_succeed() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o");
+    // Six at once, ten times, writing little (the replacement is most of each run): the
+    // earlier runner failed about one run in eight; the index, one run in 160.
+    for round in 0..10 {
+        let children: Vec<_> = (0..6)
+            .map(|_| {
+                Command::new(env!("CARGO_BIN_EXE_cardan"))
+                    .arg("run")
+                    .arg(reproducer("r08-case.toml"))
+                    .arg("--out")
+                    .arg(&out)
+                    .args(["--quiet", "--jobs", "1", "--no-csv"])
+                    // Every other round with the index, which reads the folders being replaced.
+                    .args(if round % 2 == 0 {
+                        &["--no-report"][..]
+                    } else {
+                        &[]
+                    })
+                    .stdout(std::process::Stdio::null())
+                    .stderr(std::process::Stdio::piped())
+                    .spawn()
+                    .unwrap()
+            })
+            .collect();
+        for c in children {
+            let o = c.wait_with_output().unwrap();
+            assert_eq!(
+                o.status.code(),
+                Some(0),
+                "round {round}: {}",
+                String::from_utf8_lossy(&o.stderr)
+            );
+        }
+        assert!(out.join("k/summary.json").is_file());
+    }
+}

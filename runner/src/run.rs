@@ -91,6 +91,101 @@ fn mean_speed(case: &Case) -> f64 {
     }
 }
 
+/// The loss budget and the gear ratings of `mechanism` in `case`, as its run takes them.
+fn stages_of(
+    case: &Case,
+    mechanism: &dyn Mechanism,
+) -> Result<(Option<LossBudget>, Option<GearRatings>), String> {
+    let losses = match &case.friction {
+        Some(f) => Some(
+            LossBudget::new(f, mechanism, case.geometry.bore)
+                .map_err(|e| format!("{}: {}", e.field, e.rule))?,
+        ),
+        None => None,
+    };
+    let gears = match &case.gear {
+        Some(spec) => {
+            let ratings = GearRatings::new(spec, mechanism, case.friction.as_ref())
+                .map_err(|e| format!("{}: {}", e.field, e.rule))?;
+            (!ratings.names().is_empty()).then_some(ratings)
+        }
+        None => None,
+    };
+    Ok((losses, gears))
+}
+
+/// The largest size of a case's per-step files, in bytes, unless a run is allowed more
+/// ([`RunOptions::max_bytes`], `--allow-large`): 10 GB.
+pub const DEFAULT_MAX_BYTES: u64 = 10_000_000_000;
+
+/// Bytes a CSV value takes, comma included, when written as the shortest text that reads
+/// back (`-1.2345678901234567e-100`: at most 24).
+const CSV_BYTES_SHORTEST: u64 = 24;
+
+/// More per-step columns than any crank train has (a pump case with gas and friction has about
+/// 100 per mechanism): a bound that spares counting them for a case far below the limit.
+const PLENTY_OF_COLUMNS: u64 = 4096;
+
+/// An estimate of the bytes of the per-step files `case` writes (as its `[output]` asks):
+/// rows × columns × bytes per value (8 in NPY, the digits asked plus sign, point, exponent and
+/// comma in CSV), over every crank train; and that as a sentence.
+pub fn estimated_bytes(case: &Case) -> Result<(u64, String), String> {
+    let o = case.output;
+    if !(o.csv || o.npy) {
+        return Ok((0, "no per-step file".into()));
+    }
+    let rows = crate::per_step::row_count(case.steps, o.decimation) as u64;
+    let mut names = vec![Inertial(Solver::ClosedForm).name()];
+    if case.gas.is_some() {
+        names.push(Gas(Solver::ClosedForm).name());
+    }
+    let csv_bytes = o
+        .significant_digits
+        .map_or(CSV_BYTES_SHORTEST, |d| d as u64 + 7);
+    let per_value = u64::from(o.npy) * 8 + u64::from(o.csv) * csv_bytes;
+    let trains = if case.crank_phase != 0.0 { 2 } else { 1 };
+    let mut columns = 0u64;
+    for m in &case.mechanisms {
+        let (losses, gears) = stages_of(case, m.as_ref())?;
+        let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
+        let layout = RunLayout {
+            families: &names,
+            gas: case.gas.is_some(),
+            losses: &loss_names,
+            gears: gears.as_ref(),
+        };
+        columns += trains
+            * crate::per_step::Row::new(m.as_ref(), &layout)
+                .header()
+                .len() as u64;
+    }
+    let bytes = rows.saturating_mul(columns).saturating_mul(per_value);
+    let what = [(o.csv, "CSV"), (o.npy, "NPY")]
+        .iter()
+        .filter(|(on, _)| *on)
+        .map(|(_, n)| *n)
+        .collect::<Vec<_>>()
+        .join(" + ");
+    Ok((
+        bytes,
+        format!(
+            "about {} ({rows} rows x {columns} columns in all x {per_value} bytes per value, {what})",
+            human_bytes(bytes)
+        ),
+    ))
+}
+
+/// `bytes` as "12.3 GB" (powers of 1000).
+pub fn human_bytes(bytes: u64) -> String {
+    let b = bytes as f64;
+    for (unit, scale) in [("TB", 1e12), ("GB", 1e9), ("MB", 1e6), ("kB", 1e3)] {
+        if b >= scale {
+            return format!("{:.1} {unit}", b / scale);
+        }
+    }
+    format!("{bytes} B")
+}
+
 /// Runs one crank train of `case`: `mechanism` with its crank `shift` (rad) ahead of the
 /// case's (the second train of a phased opposed-piston case; 0 otherwise), writing its
 /// per-step files (named `label`, as `case.output` asks) into `dir` if given. Both trains'
@@ -112,22 +207,8 @@ fn run_mechanism(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let mut losses = match &case.friction {
-        Some(f) => Some(
-            LossBudget::new(f, mechanism, case.geometry.bore)
-                .map_err(|e| format!("{}: {}", e.field, e.rule))?,
-        ),
-        None => None,
-    };
+    let (mut losses, gears) = stages_of(case, mechanism)?;
     let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
-    let gears = match &case.gear {
-        Some(spec) => {
-            let ratings = GearRatings::new(spec, mechanism, case.friction.as_ref())
-                .map_err(|e| format!("{}: {}", e.field, e.rule))?;
-            (!ratings.names().is_empty()).then_some(ratings)
-        }
-        None => None,
-    };
     let mut summary = SummarySink::new(mechanism, &names, case.steps + 1);
     if let Some(l) = &losses {
         summary = summary.with_losses(l.names());
@@ -362,6 +443,11 @@ pub struct RunOptions {
     pub only: Option<String>,
     /// Told of every finished case.
     pub progress: Option<Progress>,
+    /// The largest estimated size of a case's per-step files, in bytes (None:
+    /// [`DEFAULT_MAX_BYTES`]); a larger case is refused.
+    pub max_bytes: Option<u64>,
+    /// Runs cases of any size (`--allow-large`).
+    pub allow_large: bool,
     /// Writes the comparison reports ([`crate::report`]): one per case (not per sweep point),
     /// one per sweep, and `index.html` at the top of the output folder.
     pub reports: bool,
@@ -375,6 +461,8 @@ impl std::fmt::Debug for RunOptions {
             .field("npy", &self.npy)
             .field("only", &self.only)
             .field("reports", &self.reports)
+            .field("max_bytes", &self.max_bytes)
+            .field("allow_large", &self.allow_large)
             .finish_non_exhaustive()
     }
 }
@@ -408,6 +496,9 @@ pub struct Report {
     /// Each failure: a path that does not exist, a case file that could not be read or
     /// validated, a case that failed to run or could not be written.
     pub failures: Vec<String>,
+    /// Each sweep written: its name, its folder and how many of its points this run wrote
+    /// (each point is also in `written`).
+    pub sweeps: Vec<(String, PathBuf, usize)>,
 }
 
 /// Every `*.toml` file under `paths` (files, or folders searched recursively), sorted, and a
@@ -448,6 +539,9 @@ pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
     (files, failures)
 }
 
+/// Names an output folder uses itself, which no case or sweep may take.
+pub const RESERVED: &[&str] = &["index.html"];
+
 /// Reads and validates every case under `paths`; failures are listed, not fatal. Two cases
 /// with one name would write one folder: the second is a failure.
 pub fn load_cases(paths: &[PathBuf]) -> (Vec<Case>, Vec<String>) {
@@ -470,6 +564,15 @@ pub fn load_cases(paths: &[PathBuf]) -> (Vec<Case>, Vec<String>) {
             .sweep
             .as_ref()
             .map_or(first.name.clone(), |(s, _)| s.clone());
+        if RESERVED.contains(&folder.as_str()) {
+            failures.push(format!(
+                "{}: case \"{}\": name = \"{folder}\": is reserved: the output folder's own file of that name ({}); give the case another name",
+                first.file.display(),
+                folder,
+                RESERVED.join(", ")
+            ));
+            continue;
+        }
         if let Some(other) = folders.get(&folder) {
             failures.push(format!(
                 "{}: case \"{}\": name = \"{folder}\": is already the name of the case in {}; each case needs its own output folder",
@@ -500,6 +603,42 @@ fn run_and_write(
             dir.display()
         )
     };
+    if let Ok(meta) = dir.symlink_metadata() {
+        if !meta.is_dir() {
+            return Err(format!(
+                "{}: case \"{}\": {} is a file, not a case folder: it is not replaced; move it away or rename the case",
+                case.file.display(),
+                case.name,
+                dir.display()
+            ));
+        }
+    }
+    if !options.allow_large {
+        let limit = options.max_bytes.unwrap_or(DEFAULT_MAX_BYTES);
+        // Most cases are far below the limit whatever their columns: no need to count them.
+        let rows = crate::per_step::row_count(case.steps, case.output.decimation) as u64;
+        let csv_bytes = case
+            .output
+            .significant_digits
+            .map_or(CSV_BYTES_SHORTEST, |d| CSV_BYTES_SHORTEST.max(d as u64 + 7));
+        let bound = rows
+            .saturating_mul(case.mechanisms.len() as u64 * 2 * PLENTY_OF_COLUMNS)
+            .saturating_mul(8 + csv_bytes);
+        let (bytes, estimate) = if bound <= limit {
+            (0, String::new())
+        } else {
+            estimated_bytes(case)
+                .map_err(|e| format!("{}: case \"{}\": {e}", case.file.display(), case.name))?
+        };
+        if bytes > limit {
+            return Err(format!(
+                "{}: case \"{}\": output: would write {estimate} of per-step files, more than the limit of {}: refused (thin it with [output] decimation, write fewer files, or pass --allow-large)",
+                case.file.display(),
+                case.name,
+                human_bytes(limit)
+            ));
+        }
+    }
     let tmp = output::temporary_dir(&dir).map_err(cannot_write)?;
     // A sweep's points are reported by the sweep's report: no charts of their own.
     let report = options.reports && case.sweep.is_none();
@@ -589,11 +728,113 @@ fn sweep_csv(points: &[(&Case, &[MechanismResult])]) -> String {
     String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
 }
 
+/// Where a sweep's selected points are written.
+enum SweepTarget {
+    /// Into this temporary folder, which then replaces `out/<sweep>` as a whole.
+    Whole(PathBuf),
+    /// Into the existing `out/<sweep>` itself, each point's folder replaced on its own, its
+    /// `sweep.csv` (and report) then rewritten to hold every point the folder holds: an
+    /// `--only` run of some points of a sweep written before.
+    Update,
+}
+
+/// The swept fields' columns of an existing `sweep.csv` (after `case`), for `want` of them.
+fn swept_columns(csv_path: &Path, want: usize) -> anyhow::Result<Vec<String>> {
+    let mut r =
+        csv::Reader::from_path(csv_path).with_context(|| format!("read {}", csv_path.display()))?;
+    let header = r.headers()?.clone();
+    Ok(header.iter().skip(1).take(want).map(String::from).collect())
+}
+
+/// The `sweep.csv` of the sweep folder `dir` after an `--only` run wrote `fresh` (the rows of
+/// its points, as [`sweep_csv`] makes them): the earlier rows of the points not re-run, the
+/// fresh rows of those re-run, each row only if its point's folder holds a `summary.json`, in
+/// the sweep's point order (`order`), then any other point the folder holds.
+fn merged_sweep_csv(dir: &Path, fresh: &str, order: &[String]) -> anyhow::Result<String> {
+    let mut columns: Vec<String> = Vec::new();
+    let mut rows: Vec<(String, HashMap<String, String>)> = Vec::new();
+    let mut read = |r: &mut csv::Reader<&[u8]>| -> anyhow::Result<()> {
+        let header: Vec<String> = r.headers()?.iter().map(String::from).collect();
+        for h in &header {
+            if !columns.contains(h) {
+                columns.push(h.clone());
+            }
+        }
+        for record in r.records() {
+            let record = record?;
+            let name = record.get(0).unwrap_or_default().to_string();
+            let values = header
+                .iter()
+                .cloned()
+                .zip(record.iter().map(String::from))
+                .collect();
+            match rows.iter_mut().find(|(n, _)| *n == name) {
+                Some(row) => row.1 = values,
+                None => rows.push((name, values)),
+            }
+        }
+        Ok(())
+    };
+    let earlier = std::fs::read(dir.join("sweep.csv"))
+        .with_context(|| format!("read {}", dir.join("sweep.csv").display()))?;
+    read(&mut csv::Reader::from_reader(&earlier[..]))?;
+    read(&mut csv::Reader::from_reader(fresh.as_bytes()))?;
+    rows.retain(|(name, _)| dir.join(name).join("summary.json").is_file());
+    let position: HashMap<&str, usize> = order
+        .iter()
+        .enumerate()
+        .map(|(k, n)| (n.as_str(), k))
+        .collect();
+    rows.sort_by_key(|(name, _)| position.get(name.as_str()).copied().unwrap_or(usize::MAX));
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(&columns)?;
+    for (_, values) in &rows {
+        w.write_record(
+            columns
+                .iter()
+                .map(|c| values.get(c).map_or("", String::as_str)),
+        )?;
+    }
+    Ok(String::from_utf8(w.into_inner()?)?)
+}
+
+/// The most worker threads a run starts per core: `--jobs` beyond it only costs memory and
+/// start-up time (100 000 threads did not finish a 10 ms case in a minute).
+pub const JOBS_PER_CORE: usize = 4;
+
 /// Loads, validates, runs and writes every case under `paths` (or those `options.only`
 /// selects) into `out/<case name>/`. A panic inside a case is caught and reported as that
-/// case's failure.
+/// case's failure. An `out` that is not a folder is refused before anything runs; leftovers
+/// of killed runs in it are removed; `index.html` (and an `--only` run's sweep report) is
+/// rewritten whenever the folder's contents change, so that it never describes old results.
 pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
+    let mut report = Report::default();
+    if let Ok(meta) = std::fs::metadata(out) {
+        if !meta.is_dir() {
+            let kind = if meta.is_file() {
+                "a file"
+            } else {
+                "a device or other special file"
+            };
+            report.failures.push(format!(
+                "--out {}: is {kind}, not a folder: nothing was run",
+                out.display()
+            ));
+            return report;
+        }
+    }
     let (mut cases, failures) = load_cases(paths);
+    report.failures = failures;
+    // Every sweep's points in their order, before `--only` selects some.
+    let mut all_points: HashMap<String, Vec<String>> = HashMap::new();
+    for c in &cases {
+        if let Some((sweep, _)) = &c.sweep {
+            all_points
+                .entry(sweep.clone())
+                .or_default()
+                .push(c.name.clone());
+        }
+    }
     if let Some(pattern) = &options.only {
         cases.retain(|c| matches_pattern(pattern, &c.name));
     }
@@ -601,27 +842,47 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         case.output.csv = options.csv.unwrap_or(case.output.csv);
         case.output.npy = options.npy.unwrap_or(case.output.npy);
     }
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let mut report = Report {
-        failures,
-        ..Report::default()
-    };
-    // A sweep's points run into a temporary folder that replaces `out/<sweep>` as a whole.
-    let mut sweeps: std::collections::BTreeMap<String, Option<PathBuf>> = Default::default();
-    for case in &cases {
-        if let Some((sweep, _)) = &case.sweep {
-            if !sweeps.contains_key(sweep) {
-                let tmp = output::temporary_dir(&out.join(sweep));
-                if let Err(e) = &tmp {
-                    report.failures.push(format!(
-                        "{}: sweep \"{sweep}\": cannot write results to {}: {e:#}",
-                        case.file.display(),
-                        out.join(sweep).display()
-                    ));
-                }
-                sweeps.insert(sweep.clone(), tmp.ok());
-            }
+    output::remove_stale_temporaries(out);
+    let mut selected: HashMap<&str, usize> = HashMap::new();
+    for c in &cases {
+        if let Some((sweep, _)) = &c.sweep {
+            *selected.entry(sweep.as_str()).or_default() += 1;
         }
+    }
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    // A sweep's points run into a temporary folder that replaces `out/<sweep>` as a whole, or,
+    // when `--only` selects some of the points of a sweep written before, into its folder.
+    let mut sweeps: std::collections::BTreeMap<String, Option<SweepTarget>> = Default::default();
+    for case in &cases {
+        let Some((sweep, values)) = &case.sweep else {
+            continue;
+        };
+        if sweeps.contains_key(sweep) {
+            continue;
+        }
+        let dir = out.join(sweep);
+        let some = selected[sweep.as_str()] < all_points[sweep].len();
+        let target = if some && dir.join("sweep.csv").is_file() {
+            output::remove_stale_temporaries(&dir);
+            let swept: Vec<String> = values.iter().map(|(p, _)| p.clone()).collect();
+            match swept_columns(&dir.join("sweep.csv"), swept.len()) {
+                Ok(columns) if columns == swept => Ok(SweepTarget::Update),
+                Ok(columns) => Err(anyhow::anyhow!(
+                    "its folder holds a sweep over {columns:?}, this one is over {swept:?}: --only cannot update some of its points; run the whole sweep"
+                )),
+                Err(e) => Err(e),
+            }
+        } else {
+            output::temporary_dir(&dir).map(SweepTarget::Whole)
+        };
+        if let Err(e) = &target {
+            report.failures.push(format!(
+                "{}: sweep \"{sweep}\": cannot write results to {}: {e:#}",
+                case.file.display(),
+                dir.display()
+            ));
+        }
+        sweeps.insert(sweep.clone(), target.ok());
     }
     cases.retain(|c| match &c.sweep {
         Some((sweep, _)) => sweeps.get(sweep).is_some_and(Option::is_some),
@@ -630,7 +891,11 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let total = cases.len();
     let base = |case: &Case| -> PathBuf {
         match &case.sweep {
-            Some((sweep, _)) => sweeps[sweep].clone().expect("kept only with a folder"),
+            Some((sweep, _)) => match &sweeps[sweep] {
+                Some(SweepTarget::Whole(tmp)) => tmp.clone(),
+                Some(SweepTarget::Update) => out.join(sweep),
+                None => unreachable!("kept only with a folder"),
+            },
             None => out.to_path_buf(),
         }
     };
@@ -665,7 +930,18 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
             })
             .collect()
     };
-    let outcomes = match options.jobs {
+    let cap = std::thread::available_parallelism().map_or(1, |n| n.get()) * JOBS_PER_CORE;
+    let jobs = options.jobs.map(|n| {
+        if n > cap {
+            tracing::warn!(
+                "--jobs {n}: more worker threads than {JOBS_PER_CORE} per core only cost memory; running {cap}"
+            );
+            cap
+        } else {
+            n
+        }
+    });
+    let outcomes = match jobs {
         Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
             Ok(pool) => pool.install(work),
             Err(e) => {
@@ -679,6 +955,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     };
     let mut points: std::collections::BTreeMap<&str, Vec<(&Case, &[MechanismResult])>> =
         Default::default();
+    let mut failed: HashMap<&str, usize> = HashMap::new();
     for (case, o) in cases.iter().zip(&outcomes) {
         match o {
             Ok((name, dir, results)) => {
@@ -692,33 +969,70 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
                 tracing::info!(case = %name, folder = %dir.display(), "written");
                 report.written.push((name.clone(), dir));
             }
-            Err(e) => report.failures.push(e.clone()),
-        }
-    }
-    for (sweep, tmp) in &sweeps {
-        let Some(tmp) = tmp else { continue };
-        let rows = points.get(sweep.as_str()).map_or(&[][..], Vec::as_slice);
-        let written = output::write_file(&tmp.join("sweep.csv"), sweep_csv(rows).as_bytes())
-            .and_then(|()| {
-                if options.reports && !rows.is_empty() {
-                    crate::report::sweep_report(tmp, sweep, None).context("the sweep report")?;
+            Err(e) => {
+                if let Some((sweep, _)) = &case.sweep {
+                    *failed.entry(sweep.as_str()).or_default() += 1;
                 }
-                output::replace_dir(tmp, &out.join(sweep))
-            });
-        if let Err(e) = written {
-            let _ = std::fs::remove_dir_all(tmp);
-            report.failures.push(format!(
-                "sweep \"{sweep}\": cannot write results to {}: {e:#}",
-                out.join(sweep).display()
-            ));
+                report.failures.push(e.clone())
+            }
         }
     }
-    if options.reports && !report.written.is_empty() {
+    for (sweep, target) in &sweeps {
+        let Some(target) = target else { continue };
+        let dir = out.join(sweep);
+        let rows = points.get(sweep.as_str()).map_or(&[][..], Vec::as_slice);
+        let written = match target {
+            // Every point failed: the earlier sweep folder, if any, stays.
+            SweepTarget::Whole(tmp) if rows.is_empty() && failed.contains_key(sweep.as_str()) => {
+                let _ = std::fs::remove_dir_all(tmp);
+                continue;
+            }
+            SweepTarget::Whole(tmp) => {
+                output::write_file(&tmp.join("sweep.csv"), sweep_csv(rows).as_bytes())
+                    .and_then(|()| {
+                        if options.reports && !rows.is_empty() {
+                            crate::report::sweep_report(tmp, sweep, None)
+                                .context("the sweep report")?;
+                        }
+                        output::replace_dir(tmp, &dir)
+                    })
+                    .inspect_err(|_| {
+                        let _ = std::fs::remove_dir_all(tmp);
+                    })
+            }
+            SweepTarget::Update if rows.is_empty() => continue,
+            SweepTarget::Update => {
+                merged_sweep_csv(&dir, &sweep_csv(rows), &all_points[sweep])
+                    .and_then(|csv| {
+                        output::write_file_replacing(&dir.join("sweep.csv"), csv.as_bytes())
+                    })
+                    .and_then(|()| {
+                        // The sweep's report, if asked or already there: never one of old points.
+                        if options.reports || dir.join("report.html").is_file() {
+                            crate::report::sweep_report(&dir, sweep, None)
+                                .context("the sweep report")?;
+                        }
+                        Ok(())
+                    })
+            }
+        };
+        match written {
+            Ok(()) => report.sweeps.push((sweep.clone(), dir, rows.len())),
+            Err(e) => report.failures.push(format!(
+                "sweep \"{sweep}\": cannot write results to {}: {e:#}",
+                dir.display()
+            )),
+        }
+    }
+    // The index describes what the folder holds: rewritten whenever that changes, also by a
+    // run that writes no reports (else it links reports that are gone, with old numbers).
+    let changed = !report.written.is_empty() || !report.sweeps.is_empty();
+    let index = out.join("index.html");
+    if changed && (options.reports || index.symlink_metadata().is_ok()) {
         if let Err(e) = crate::report::index(out) {
-            report.failures.push(format!(
-                "cannot write {}: {e:#}",
-                out.join("index.html").display()
-            ));
+            report
+                .failures
+                .push(format!("cannot write {}: {e:#}", index.display()));
         }
     }
     report

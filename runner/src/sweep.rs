@@ -85,6 +85,17 @@ fn values_of(
                     "`from` and `to` must have the same unit",
                 ));
             }
+            for (key, x) in [("from", from), ("to", to)] {
+                if !x.is_finite() {
+                    return Err(invalid(
+                        file,
+                        case,
+                        &format!("{field}.{key}"),
+                        &t[key],
+                        &format!("must be a finite number (it reads as {x})"),
+                    ));
+                }
+            }
             let points = match t.get("points") {
                 Some(toml::Value::Integer(n)) if (2..=MAX_POINTS as i64).contains(n) => *n as usize,
                 other => {
@@ -92,11 +103,20 @@ fn values_of(
                         file,
                         case,
                         &format!("{field}.points"),
-                        &format!("{other:?}"),
-                        "must be a whole number from 2",
+                        &other.map_or("(missing)".to_string(), |v| v.to_string()),
+                        &format!("must be a whole number from 2 to {MAX_POINTS}"),
                     ))
                 }
             };
+            if from == to {
+                return Err(invalid(
+                    file,
+                    case,
+                    &field,
+                    spec,
+                    "`from` and `to` are equal: every point would be the same (and share one folder); give a single value as a list, e.g. [\"3000 rpm\"]",
+                ));
+            }
             let log = match t.get("scale").and_then(|s| s.as_str()) {
                 None | Some("linear") => false,
                 Some("log") => true,
@@ -307,5 +327,39 @@ pub fn expand(
     let points = points
         .into_iter()
         .collect::<Result<Vec<Point>, CaseError>>()?;
+    // Two points of one name would share one folder (and delete each other's files).
+    let mut seen: std::collections::HashMap<&str, &Point> = std::collections::HashMap::new();
+    for p in &points {
+        if let Some(first) = seen.insert(&p.name, p) {
+            let show = |q: &Point, k: usize| format!("{:?}", q.values[k].1);
+            let (field, value) = if p.values.len() == 1 {
+                (
+                    format!("sweep.\"{}\"", p.values[0].0),
+                    format!("{} and {}", show(first, 0), show(p, 0)),
+                )
+            } else {
+                let each = |q: &Point| {
+                    (0..q.values.len())
+                        .map(|k| format!("{} = {}", q.values[k].0, show(q, k)))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                };
+                (
+                    "sweep".to_string(),
+                    format!("({}) and ({})", each(first), each(p)),
+                )
+            };
+            return Err(invalid(
+                file,
+                &name,
+                &field,
+                &value,
+                &format!(
+                    "two points would have the one name (and folder) \"{}\": every swept value must be distinct",
+                    p.name
+                ),
+            ));
+        }
+    }
     Ok(Some((name, points)))
 }

@@ -321,3 +321,292 @@ fn a_coarse_grid_warns_with_its_peaks_sampling_error() {
     }
     assert!(warned >= 3, "{warned} warnings");
 }
+
+// ---- Issue 22: complete results or an error, everywhere. ----
+
+fn with_options(dir: &Path, name: &str, text: &str, options: RunOptions) -> cardan_runner::Report {
+    let file = dir.join(name);
+    std::fs::write(&file, text).unwrap();
+    run_paths(&[file], &dir.join("out"), options)
+}
+
+fn reports() -> RunOptions {
+    RunOptions {
+        reports: true,
+        ..RunOptions::default()
+    }
+}
+
+/// Every `href` of an HTML file that points into the output folder names a file that exists.
+fn dead_links(html: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(html).unwrap();
+    let base = html.parent().unwrap();
+    text.split("href=\"")
+        .skip(1)
+        .filter_map(|s| s.split('"').next())
+        .filter(|h| !h.starts_with('#') && !h.contains("://"))
+        .filter(|h| !base.join(h).exists())
+        .map(String::from)
+        .collect()
+}
+
+const SWEEP: &str = "\n[sweep]\n\"motion.initial_speed\" = [\"900 rpm\", \"3000 rpm\"]\n";
+
+/// r06, r17 (a): `--only` on one point of a sweep replaced the whole sweep folder with that
+/// point. Now it updates that point inside the sweep folder; `sweep.csv` and the report hold
+/// every point the folder holds, each row that point's own numbers.
+#[test]
+fn only_on_a_sweep_updates_the_selected_points_in_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = format!("{}{SWEEP}", GOOD.replace("name = \"good\"", "name = \"s\""));
+    let r = with_options(dir.path(), "s.toml", &text, reports());
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    let sweep = dir.path().join("out/s");
+    let slow = sweep.join("s-initial_speed-900rpm");
+    let fast = sweep.join("s-initial_speed-3000rpm");
+    let fast_before = std::fs::read(fast.join("summary.json")).unwrap();
+    // A heavier piston changes every number of the point re-run.
+    let changed = text.replace("[motion]", "[masses]\npiston_mass = 2.0\n[motion]");
+    let r = with_options(
+        dir.path(),
+        "s.toml",
+        &changed,
+        RunOptions {
+            only: Some("*900rpm".into()),
+            ..reports()
+        },
+    );
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    assert_eq!(r.written.len(), 1);
+    assert!(slow.join("summary.json").is_file());
+    assert_eq!(
+        std::fs::read(fast.join("summary.json")).unwrap(),
+        fast_before
+    );
+    let t = csv_rows(&sweep.join("sweep.csv"));
+    assert_eq!(t.len(), 3, "{t:?}");
+    let col = t[0]
+        .iter()
+        .position(|c| c == "cardan_gear.inertial_torque_max")
+        .unwrap();
+    for row in &t[1..] {
+        let summary: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(sweep.join(&row[0]).join("summary.json")).unwrap(),
+        )
+        .unwrap();
+        let want = summary["mechanisms"]["cardan_gear"]["metrics"]["inertial_torque_max"]
+            .as_f64()
+            .unwrap();
+        assert_eq!(row[col].parse::<f64>().unwrap(), want, "{}", row[0]);
+    }
+    assert_eq!(t[1][0], "s-initial_speed-900rpm", "the sweep's order");
+    let html = std::fs::read_to_string(sweep.join("report.html")).unwrap();
+    assert!(html.contains("s-initial_speed-3000rpm") && html.contains("s-initial_speed-900rpm"));
+    assert!(dead_links(&sweep.join("report.html")).is_empty());
+    assert!(dead_links(&dir.path().join("out/index.html")).is_empty());
+    // Without reports, the sweep's report already there is rewritten, not left stale.
+    let report_before = std::fs::read_to_string(sweep.join("report.md")).unwrap();
+    let r = with_options(
+        dir.path(),
+        "s.toml",
+        &text,
+        RunOptions {
+            only: Some("*900rpm".into()),
+            ..RunOptions::default()
+        },
+    );
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    assert_ne!(
+        std::fs::read_to_string(sweep.join("report.md")).unwrap(),
+        report_before
+    );
+    // A sweep over another field cannot be merged into it: refused, nothing touched.
+    let other = text
+        .replace("motion.initial_speed", "geometry.bore")
+        .replace("[\"900 rpm\", \"3000 rpm\"]", "[\"100 mm\", \"120 mm\"]");
+    let r = with_options(
+        dir.path(),
+        "s.toml",
+        &other,
+        RunOptions {
+            only: Some("*100mm".into()),
+            ..RunOptions::default()
+        },
+    );
+    let all = r.failures.join("\n");
+    assert!(r.written.is_empty());
+    assert!(
+        all.contains("geometry.bore") && all.contains("run the whole sweep"),
+        "{all}"
+    );
+    assert_eq!(csv_rows(&sweep.join("sweep.csv")).len(), 3);
+    assert!(!sweep.join("s-bore-100mm").exists());
+}
+
+/// r08: a re-run with `--no-report` left the old `index.html`, linking a report that no longer
+/// exists and showing the old numbers. Now the index is rewritten to what the folder holds.
+#[test]
+fn a_run_without_reports_leaves_no_stale_index() {
+    let dir = tempfile::tempdir().unwrap();
+    assert!(with_options(dir.path(), "k.toml", GOOD, reports())
+        .failures
+        .is_empty());
+    let index = dir.path().join("out/index.html");
+    let before = std::fs::read_to_string(&index).unwrap();
+    assert!(before.contains("good/report.html"));
+    let slower = GOOD.replace("initial_speed = 628.3185307", "initial_speed = 100.0");
+    let r = with_options(dir.path(), "k.toml", &slower, RunOptions::default());
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    assert!(!dir.path().join("out/good/report.html").exists());
+    let links = dead_links(&index);
+    assert!(links.is_empty(), "dead links: {links:?}");
+    assert_ne!(std::fs::read_to_string(&index).unwrap(), before);
+}
+
+/// r14: a killed run left `.NAME.tmp-PID` folders forever. Now the next run of the output
+/// folder removes those of processes no longer alive, and leaves a live process's alone.
+#[test]
+fn leftovers_of_killed_runs_are_removed_by_the_next_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let mut child = std::process::Command::new("true").spawn().unwrap();
+    let dead = child.id();
+    child.wait().unwrap();
+    let live = 1; // init: alive while the test runs
+    for name in [
+        format!(".good.tmp-{dead}"),
+        format!(".good.old-{dead}"),
+        format!(".good.tmp-{live}"),
+    ] {
+        std::fs::create_dir_all(out.join(&name)).unwrap();
+        std::fs::write(out.join(name).join("a.csv"), "1").unwrap();
+    }
+    std::fs::write(out.join(format!(".index.html.tmp-{dead}")), "x").unwrap();
+    assert!(run(dir.path(), GOOD).failures.is_empty());
+    let mut left: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    assert_eq!(left, [format!(".good.tmp-{live}"), "good".to_string()]);
+}
+
+/// A case whose per-step files would exceed the limit is refused, with the estimate, unless
+/// allowed; the others run.
+#[test]
+fn a_case_too_large_to_write_is_refused_with_its_estimate() {
+    let dir = tempfile::tempdir().unwrap();
+    let small = RunOptions {
+        max_bytes: Some(10_000),
+        ..RunOptions::default()
+    };
+    let r = with_options(dir.path(), "c.toml", GOOD, small.clone());
+    let all = r.failures.join("\n");
+    assert!(r.written.is_empty());
+    for part in [
+        "c.toml",
+        "\"good\"",
+        "721 rows",
+        "columns",
+        "bytes per value",
+        "CSV",
+        "--allow-large",
+        "10.0 kB",
+    ] {
+        assert!(all.contains(part), "{all} lacks {part}");
+    }
+    assert!(!dir.path().join("out/good").exists());
+    // Allowed, or thinned under the limit, it runs.
+    let r = with_options(
+        dir.path(),
+        "c.toml",
+        GOOD,
+        RunOptions {
+            allow_large: true,
+            ..small.clone()
+        },
+    );
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    let r = with_options(
+        dir.path(),
+        "c.toml",
+        &format!("{GOOD}\n[output]\ncsv = false\n"),
+        small,
+    );
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+}
+
+/// r16: a case named `index.html` took the index's name; the index then failed. Now the name
+/// is refused; the other cases run.
+#[test]
+fn a_case_may_not_take_the_index_name() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("a.toml"), GOOD).unwrap();
+    std::fs::write(
+        dir.path().join("b.toml"),
+        GOOD.replace("name = \"good\"", "name = \"index.html\""),
+    )
+    .unwrap();
+    let r = run_paths(
+        &[dir.path().to_path_buf()],
+        &dir.path().join("out"),
+        reports(),
+    );
+    assert_eq!(r.written.len(), 1);
+    let all = r.failures.join("\n");
+    assert!(
+        all.contains("b.toml") && all.contains("index.html") && all.contains("reserved"),
+        "{all}"
+    );
+    assert!(dir.path().join("out/index.html").is_file());
+}
+
+/// An output path that is a file is refused before anything runs or is replaced; so is a case
+/// folder that is a file.
+#[test]
+fn an_output_path_that_is_a_file_is_not_replaced() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("case.toml");
+    std::fs::write(&file, GOOD).unwrap();
+    let out = dir.path().join("out");
+    std::fs::write(&out, "mine").unwrap();
+    let r = run_paths(std::slice::from_ref(&file), &out, RunOptions::default());
+    assert!(r.written.is_empty());
+    assert!(
+        r.failures.join("\n").contains("is a file, not a folder"),
+        "{:?}",
+        r.failures
+    );
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "mine");
+    std::fs::remove_file(&out).unwrap();
+    std::fs::create_dir(&out).unwrap();
+    std::fs::write(out.join("good"), "mine").unwrap();
+    let r = run_paths(&[file], &out, RunOptions::default());
+    assert!(r.written.is_empty());
+    assert!(
+        r.failures
+            .join("\n")
+            .contains("is a file, not a case folder"),
+        "{:?}",
+        r.failures
+    );
+    assert_eq!(std::fs::read_to_string(out.join("good")).unwrap(), "mine");
+}
+
+/// `index.html` is not written through a symbolic link: the link is replaced.
+#[cfg(unix)]
+#[test]
+fn the_index_replaces_a_link_instead_of_following_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let elsewhere = dir.path().join("precious.html");
+    std::fs::write(&elsewhere, "keep me").unwrap();
+    std::fs::create_dir(dir.path().join("out")).unwrap();
+    std::os::unix::fs::symlink(&elsewhere, dir.path().join("out/index.html")).unwrap();
+    assert!(with_options(dir.path(), "k.toml", GOOD, reports())
+        .failures
+        .is_empty());
+    assert_eq!(std::fs::read_to_string(&elsewhere).unwrap(), "keep me");
+    let index = dir.path().join("out/index.html");
+    assert!(!index.symlink_metadata().unwrap().file_type().is_symlink());
+    assert!(std::fs::read_to_string(index).unwrap().contains("good"));
+}

@@ -163,3 +163,70 @@ fn bad_sweeps_name_their_field() {
         }
     }
 }
+
+/// Issue 22 (r04, r05): two points of one name shared one temporary folder and deleted each
+/// other's files, and a broken sweep folder was published. Now they are refused before
+/// anything runs, naming the values; nothing is written.
+#[test]
+fn duplicate_point_names_are_refused_before_anything_runs() {
+    for (sweep, parts) in [
+        (
+            "[sweep]\n\"motion.initial_speed\" = [\"900 rpm\", \"900 rpm\", \"3000 rpm\"]\n",
+            &["\"900 rpm\"", "pump-sweep-initial_speed-900rpm", "distinct"][..],
+        ),
+        (
+            "[sweep]\n\"motion.initial_speed\" = { from = \"3000 rpm\", to = \"3000 rpm\", points = 4 }\n",
+            &["sweep.\"motion.initial_speed\"", "3000 rpm", "equal"][..],
+        ),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let report = run(dir.path(), &format!("\n{sweep}"));
+        let all = report.failures.join("\n");
+        assert!(report.written.is_empty(), "{sweep:?}: {:?}", report.written);
+        assert_eq!(report.failures.len(), 1, "{all}");
+        for p in parts {
+            assert!(all.contains(p), "{sweep:?}: {all:?} lacks {p:?}");
+        }
+        assert!(
+            !dir.path().join("out/pump-sweep").exists(),
+            "no sweep folder is published"
+        );
+    }
+}
+
+/// Issue 22: `points = 0` read `points = Some(Integer(0))`; an infinite end read as nan.
+#[test]
+fn bad_ranges_read_like_a_person_wrote_them() {
+    for (sweep, parts, not) in [
+        (
+            "[sweep]\n\"motion.initial_speed\" = { from = 1, to = 2, points = 0 }\n",
+            &[
+                "sweep.\"motion.initial_speed\".points",
+                "= 0",
+                "whole number from 2",
+            ][..],
+            "Some(",
+        ),
+        (
+            "[sweep]\n\"motion.initial_speed\" = { from = 1, to = 2 }\n",
+            &["points", "missing"][..],
+            "None",
+        ),
+        (
+            "[sweep]\n\"motion.initial_speed\" = { from = 1, to = inf, points = 3 }\n",
+            &["sweep.\"motion.initial_speed\".to", "inf", "finite"][..],
+            "nan",
+        ),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        let report = run(dir.path(), &format!("\n{sweep}"));
+        let all = report.failures.join("\n");
+        for p in parts {
+            assert!(all.contains(p), "{sweep:?}: {all:?} lacks {p:?}");
+        }
+        assert!(
+            !all.to_lowercase().contains(&not.to_lowercase()),
+            "{sweep:?}: {all:?}"
+        );
+    }
+}

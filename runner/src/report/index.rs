@@ -65,13 +65,23 @@ fn target(dir: &Path, name: &str, results: &str) -> String {
 
 pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
     let mut cases = Vec::new();
+    let mut summaries = Vec::new();
     let mut sweeps = Vec::new();
     for name in folders(out_dir)? {
         let dir = out_dir.join(&name);
         if dir.join("sweep.csv").is_file() {
             sweeps.push(name);
         } else if dir.join("summary.json").is_file() {
-            cases.push(name);
+            match data::read_summary(&dir.join("summary.json"), None) {
+                Ok((s, _)) => {
+                    cases.push(name);
+                    summaries.push(s);
+                }
+                // Gone since it was listed: another run is replacing this folder (and writes
+                // the index again when it has).
+                Err(_) if !dir.join("summary.json").exists() => {}
+                Err(e) => return Err(e),
+            }
         }
     }
     let mut doc = Doc {
@@ -103,8 +113,7 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
             align.push(Align::Right);
         }
         let mut rows = Vec::new();
-        for c in &cases {
-            let (s, _) = data::read_summary(&out_dir.join(c).join("summary.json"), None)?;
+        for (c, s) in cases.iter().zip(&summaries) {
             for m in &s.mechanisms {
                 let mut row = vec![c.clone(), s.machine.clone(), format!("`{}`", m.name)];
                 for (_, alternatives) in HEADLINES {
@@ -151,7 +160,7 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
                 .collect(),
         ));
     }
-    crate::output::write_file(&out_dir.join("index.html"), doc.html().as_bytes())
+    crate::output::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
 }
 
 #[cfg(test)]
