@@ -425,7 +425,7 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
     let gas = raw
         .gas
         .as_ref()
-        .map(|table| crate::gas::parse(table, machine, &invalid))
+        .map(|table| crate::gas::parse(table, file, machine, &invalid))
         .transpose()?;
     if gas.is_some() {
         if let Some(m) = mechanisms.iter().find(|m| !m.has_cylinder()) {

@@ -9,15 +9,8 @@ use cardan_gas::{
     Cylinder, EngineReading, GasError, GasModel, KarhulaEngine, KarhulaPump, Polytropic,
 };
 use std::cell::RefCell;
-
-/// A validated gas model of a case.
-#[derive(Debug, Clone, PartialEq)]
-pub enum GasModelCase {
-    KarhulaPump(KarhulaPump),
-    KarhulaEngine(KarhulaEngine),
-    ClosedCycle(ClosedCycle),
-    Compressor(Compressor),
-}
+use std::path::Path;
+use std::sync::Arc;
 
 /// How the clearance volume is given.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -29,30 +22,31 @@ pub enum Clearance {
 }
 
 /// The gas of a case.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone)]
 pub struct GasCase {
-    pub model: GasModelCase,
+    /// The registry's name of the model (`gas.model`).
+    name: &'static str,
+    model: Arc<dyn GasModel + Send>,
     pub clearance: Clearance,
+}
+
+impl std::fmt::Debug for GasCase {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("GasCase")
+            .field("model", &self.name)
+            .field("clearance", &self.clearance)
+            .finish()
+    }
 }
 
 impl GasCase {
     /// The model's name as written in case files.
     pub fn name(&self) -> &'static str {
-        match self.model {
-            GasModelCase::KarhulaPump(_) => "karhula_pump",
-            GasModelCase::KarhulaEngine(_) => "karhula_engine",
-            GasModelCase::ClosedCycle(_) => "closed_cycle",
-            GasModelCase::Compressor(_) => "compressor",
-        }
+        self.name
     }
 
     pub fn model(&self) -> &dyn GasModel {
-        match &self.model {
-            GasModelCase::KarhulaPump(m) => m,
-            GasModelCase::KarhulaEngine(m) => m,
-            GasModelCase::ClosedCycle(m) => m,
-            GasModelCase::Compressor(m) => m,
-        }
+        self.model.as_ref()
     }
 
     /// The cylinder of `bore` (m) shared by `pistons` pistons of `stroke` (m) each, with this
@@ -76,24 +70,70 @@ impl GasCase {
     }
 }
 
-/// The models a `[gas]` table may name, with the machine each belongs to.
-const MODELS: [(&str, Machine); 4] = [
-    ("karhula_pump", Machine::Pump),
-    ("karhula_engine", Machine::Engine),
-    ("closed_cycle", Machine::Engine),
-    ("compressor", Machine::Pump),
+/// A gas model a `[gas]` table may name: adding one is a module with its reader and one line
+/// in [`MODELS`].
+pub struct GasEntry {
+    /// `gas.model` in case files.
+    pub name: &'static str,
+    /// The machine it belongs to (`None`: either).
+    pub machine: Option<Machine>,
+    /// Reads the model's fields of the table (each read field is then known to the table's
+    /// check of unknown keys), validated and in SI.
+    read: fn(&Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError>,
+}
+
+/// The registry of gas models.
+pub const MODELS: &[GasEntry] = &[
+    GasEntry {
+        name: "karhula_pump",
+        machine: Some(Machine::Pump),
+        read: karhula_pump,
+    },
+    GasEntry {
+        name: "karhula_engine",
+        machine: Some(Machine::Engine),
+        read: karhula_engine,
+    },
+    GasEntry {
+        name: "closed_cycle",
+        machine: Some(Machine::Engine),
+        read: closed_cycle,
+    },
+    GasEntry {
+        name: "compressor",
+        machine: Some(Machine::Pump),
+        read: compressor,
+    },
 ];
 
 type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> CaseError + 'a;
 
 /// The keys of a `[gas]` table, read one by one; keys nobody read are reported.
-struct Fields<'a> {
+pub struct Fields<'a> {
     table: &'a toml::Table,
     read: RefCell<Vec<&'static str>>,
     invalid: &'a Invalid<'a>,
+    /// The case file, which relative paths are taken from.
+    file: &'a Path,
+    machine: Machine,
 }
 
 impl Fields<'_> {
+    /// A string field, if given (an error if it is not a string).
+    fn text(&self, key: &'static str) -> Result<Option<&str>, CaseError> {
+        self.read.borrow_mut().push(key);
+        match self.table.get(key) {
+            None => Ok(None),
+            Some(toml::Value::String(s)) => Ok(Some(s)),
+            Some(v) => Err((self.invalid)(&format!("gas.{key}"), v, "must be a string")),
+        }
+    }
+
+    /// A rule of the model's broken by the value of `key`.
+    fn refuse(&self, key: &str, value: &dyn std::fmt::Display, rule: &str) -> CaseError {
+        (self.invalid)(&format!("gas.{key}"), value, rule)
+    }
+
     fn optional(&self, key: &'static str, dim: Dimension) -> Result<Option<f64>, CaseError> {
         self.read.borrow_mut().push(key);
         self.table
@@ -151,7 +191,7 @@ impl Fields<'_> {
 }
 
 /// The closed-cycle model: every input optional, defaulting to Nunes (2017)'s (Table 3.2).
-fn closed_cycle(f: &Fields) -> Result<ClosedCycle, CaseError> {
+fn closed_cycle_inputs(f: &Fields) -> Result<ClosedCycle, CaseError> {
     use Dimension::*;
     let mut c = ClosedCycle::nunes_2017();
     let inputs: [(&'static str, Dimension, &mut f64); 21] = [
@@ -218,16 +258,95 @@ fn closed_cycle(f: &Fields) -> Result<ClosedCycle, CaseError> {
     Ok(c)
 }
 
-/// Validates a `[gas]` table for a case of `machine`.
+fn polytropic(f: &Fields) -> Result<Polytropic, CaseError> {
+    Polytropic::new(
+        f.required("polytropic_exponent", Dimension::Number)?,
+        f.optional("filling", Dimension::Number)?.unwrap_or(1.0),
+        f.optional("ambient_pressure", Dimension::Pressure)?
+            .unwrap_or(101_325.0),
+    )
+    .map_err(|e| f.broken(e))
+}
+
+fn compression_ratio(f: &Fields) -> Result<Clearance, CaseError> {
+    Ok(Clearance::CompressionRatio(
+        f.required("compression_ratio", Dimension::Number)?,
+    ))
+}
+
+/// Karhula's air pump (ch. 6.2).
+fn karhula_pump(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+    let gas = polytropic(f)?;
+    Ok((Arc::new(KarhulaPump { gas }), compression_ratio(f)?))
+}
+
+/// Karhula's four-stroke engine (ch. 6.3), in its reading.
+fn karhula_engine(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+    let mut engine = KarhulaEngine::new(
+        polytropic(f)?,
+        f.required("peak_pressure", Dimension::Pressure)?,
+        f.required("combustion_delay", Dimension::Angle)?,
+    )
+    .map_err(|e| f.broken(e))?;
+    engine.reading = match f.text("reading")? {
+        None | Some("direct") => EngineReading::Direct,
+        Some("thesis") => EngineReading::Thesis,
+        Some(other) => {
+            return Err(f.refuse(
+                "reading",
+                &format!("\"{other}\""),
+                "must be \"direct\" (polytropic compression stroke) or \"thesis\" (the combustion pressure on the compression stroke too, as Karhula's work columns imply)",
+            ))
+        }
+    };
+    Ok((Arc::new(engine), compression_ratio(f)?))
+}
+
+/// The closed cycle of Nunes (2017).
+fn closed_cycle(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+    let c = closed_cycle_inputs(f)?;
+    Ok((Arc::new(c), compression_ratio(f)?))
+}
+
+/// A reciprocating compressor with its valves, in its periodic steady state.
+fn compressor(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+    let n_c = f.required("compression_exponent", Dimension::Number)?;
+    let compressor = Compressor::new(
+        f.required("suction_pressure", Dimension::Pressure)?,
+        f.required("suction_temperature", Dimension::Temperature)?,
+        f.required("delivery_pressure", Dimension::Pressure)?,
+        n_c,
+        f.optional("expansion_exponent", Dimension::Number)?
+            .unwrap_or(n_c),
+        f.optional("gas_constant", Dimension::GasConstant)?
+            .unwrap_or(AIR_GAS_CONSTANT),
+    )
+    .map_err(|e| f.broken(e))?;
+    let clearance = Clearance::ClearanceRatio(f.required("clearance_ratio", Dimension::Number)?);
+    // A compressor must deliver, whatever its size.
+    let gas = GasCase {
+        name: "compressor",
+        model: Arc::new(compressor.clone()),
+        clearance,
+    };
+    let cylinder = gas.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
+    compressor
+        .steady_state(&cylinder)
+        .map_err(|e| f.broken(e))?;
+    Ok((Arc::new(compressor), clearance))
+}
+
+/// Validates a `[gas]` table of the case file `file`, a case of `machine`.
 pub(crate) fn parse(
     table: &toml::Table,
+    file: &Path,
     machine: Machine,
     invalid: &Invalid,
 ) -> Result<GasCase, CaseError> {
     let names = || {
         MODELS
             .iter()
-            .map(|(n, _)| format!("\"{n}\""))
+            .map(|m| format!("\"{}\"", m.name))
             .collect::<Vec<_>>()
             .join(", ")
     };
@@ -248,21 +367,21 @@ pub(crate) fn parse(
             ))
         }
     };
-    let Some(&(name, model_machine)) = MODELS.iter().find(|(n, _)| *n == name) else {
+    let Some(entry) = MODELS.iter().find(|m| m.name == name) else {
         return Err(invalid(
             "gas.model",
             &format!("\"{name}\""),
             &format!("unknown gas model: use one of {}", names()),
         ));
     };
-    if model_machine != machine {
+    if let Some(own) = entry.machine.filter(|&m| m != machine) {
         return Err(invalid(
             "gas.model",
             &format!("\"{name}\""),
             &format!(
                 "is a model of a {}: set machine = \"{}\"",
-                model_machine.name(),
-                model_machine.name()
+                own.name(),
+                own.name()
             ),
         ));
     }
@@ -270,81 +389,17 @@ pub(crate) fn parse(
         table,
         read: RefCell::new(Vec::new()),
         invalid,
+        file,
+        machine,
     };
-    let polytropic = || -> Result<Polytropic, CaseError> {
-        Polytropic::new(
-            f.required("polytropic_exponent", Dimension::Number)?,
-            f.optional("filling", Dimension::Number)?.unwrap_or(1.0),
-            f.optional("ambient_pressure", Dimension::Pressure)?
-                .unwrap_or(101_325.0),
-        )
-        .map_err(|e| f.broken(e))
-    };
-    let compression_ratio = || {
-        Ok(Clearance::CompressionRatio(
-            f.required("compression_ratio", Dimension::Number)?,
-        ))
-    };
-    let (model, clearance) = match name {
-        "karhula_pump" => (
-            GasModelCase::KarhulaPump(KarhulaPump { gas: polytropic()? }),
-            compression_ratio()?,
-        ),
-        "karhula_engine" => {
-            let mut engine = KarhulaEngine::new(
-                polytropic()?,
-                f.required("peak_pressure", Dimension::Pressure)?,
-                f.required("combustion_delay", Dimension::Angle)?,
-            )
-            .map_err(|e| f.broken(e))?;
-            f.read.borrow_mut().push("reading");
-            engine.reading = match table.get("reading") {
-                None => EngineReading::Direct,
-                Some(v) => match v.as_str() {
-                    Some("direct") => EngineReading::Direct,
-                    Some("thesis") => EngineReading::Thesis,
-                    _ => {
-                        return Err(invalid(
-                            "gas.reading",
-                            v,
-                            "must be \"direct\" (polytropic compression stroke) or \"thesis\" (the combustion pressure on the compression stroke too, as Karhula's work columns imply)",
-                        ))
-                    }
-                },
-            };
-            (GasModelCase::KarhulaEngine(engine), compression_ratio()?)
-        }
-        "closed_cycle" => (
-            GasModelCase::ClosedCycle(closed_cycle(&f)?),
-            compression_ratio()?,
-        ),
-        "compressor" => {
-            let n_c = f.required("compression_exponent", Dimension::Number)?;
-            let compressor = Compressor::new(
-                f.required("suction_pressure", Dimension::Pressure)?,
-                f.required("suction_temperature", Dimension::Temperature)?,
-                f.required("delivery_pressure", Dimension::Pressure)?,
-                n_c,
-                f.optional("expansion_exponent", Dimension::Number)?
-                    .unwrap_or(n_c),
-                f.optional("gas_constant", Dimension::GasConstant)?
-                    .unwrap_or(AIR_GAS_CONSTANT),
-            )
-            .map_err(|e| f.broken(e))?;
-            (
-                GasModelCase::Compressor(compressor),
-                Clearance::ClearanceRatio(f.required("clearance_ratio", Dimension::Number)?),
-            )
-        }
-        _ => unreachable!("MODELS lists the models matched here"),
-    };
+    let (model, clearance) = (entry.read)(&f)?;
     f.no_other_keys()?;
-    let gas = GasCase { model, clearance };
-    // The cylinder rules (compression ratio above 1, a compressor that delivers) do not
-    // depend on its size.
-    let cylinder = gas.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
-    if let GasModelCase::Compressor(c) = &gas.model {
-        c.steady_state(&cylinder).map_err(|e| f.broken(e))?;
-    }
+    let gas = GasCase {
+        name: entry.name,
+        model,
+        clearance,
+    };
+    // The cylinder rules (a compression ratio above 1) do not depend on its size.
+    gas.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
     Ok(gas)
 }
