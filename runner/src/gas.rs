@@ -12,6 +12,8 @@ use std::cell::RefCell;
 use std::path::Path;
 use std::sync::Arc;
 
+mod pressure_trace;
+
 /// How the clearance volume is given.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Clearance {
@@ -104,6 +106,7 @@ pub const MODELS: &[GasEntry] = &[
         machine: Some(Machine::Pump),
         read: compressor,
     },
+    pressure_trace::ENTRY,
 ];
 
 type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> CaseError + 'a;

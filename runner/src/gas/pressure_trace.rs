@@ -1,0 +1,284 @@
+//! `model = "pressure_trace"`: a measured (or computed) indicator diagram, the cylinder's
+//! absolute pressure over crank angle read from a CSV file, loads the pistons.
+//!
+//! The file (`file`, relative to the case file) has the header line
+//! `crank_angle_deg,pressure_pa`, then one row per sample: the crank angle in the case's
+//! convention (degrees from the +x axis, 90° top dead centre of an in-line machine, as the
+//! per-step CSV's `crank_angle_deg`) and the absolute pressure in Pa. The angles must
+//! increase and span one cycle of the machine (360° for a pump, 720° for an engine): the
+//! first row is the cycle's start, the gap from the last row back to the first, a cycle on,
+//! no wider than the widest gap between rows (so the trace covers the cycle as evenly as it
+//! samples it). Between rows the pressure is interpolated linearly, across the wrap too, and
+//! it repeats every cycle. The force on each piston is p·A_pis towards the crankshaft, as in
+//! Karhula's models (A6.2.1.1): a trace of gauge pressure gives the net force on a piston
+//! whose crankcase is at ambient.
+
+use super::{Clearance, Fields, GasEntry};
+use crate::case::{CaseError, Machine};
+use cardan_gas::{Chamber, GasError, GasMetric, GasModel, PreparedGas};
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+/// The registry line.
+pub const ENTRY: GasEntry = GasEntry {
+    name: "pressure_trace",
+    machine: None,
+    read,
+};
+
+/// The trace, in SI: crank angles (rad, increasing) and absolute pressures (Pa), and the
+/// cycle it repeats over (rad).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PressureTrace {
+    angles: Vec<f64>,
+    pressures: Vec<f64>,
+    period: f64,
+}
+
+impl PressureTrace {
+    /// The pressure at crank angle `theta` (rad): the trace's linear interpolation, periodic.
+    pub fn pressure(&self, theta: f64) -> f64 {
+        let (a, p) = (&self.angles, &self.pressures);
+        let x = a[0] + (theta - a[0]).rem_euclid(self.period);
+        // The row at or before x (x ≥ a[0]); past the last row, the wrap back to the first.
+        let k = a.partition_point(|&t| t <= x) - 1;
+        let (t0, p0) = (a[k], p[k]);
+        let (t1, p1) = match a.get(k + 1) {
+            Some(&t) => (t, p[k + 1]),
+            None => (a[0] + self.period, p[0]),
+        };
+        p0 + (p1 - p0) * (x - t0) / (t1 - t0)
+    }
+}
+
+fn read(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+    let Some(name) = f.text("file")? else {
+        return Err(f.refuse(
+            "file",
+            &"(missing)",
+            "is required by gas.model = \"pressure_trace\": a CSV of crank_angle_deg,pressure_pa",
+        ));
+    };
+    let path = f
+        .file
+        .parent()
+        .unwrap_or(std::path::Path::new("."))
+        .join(name);
+    let shown = format!("\"{name}\"");
+    let text = std::fs::read_to_string(&path).map_err(|e| {
+        f.refuse(
+            "file",
+            &shown,
+            &format!("cannot read {}: {e}", path.display()),
+        )
+    })?;
+    let period = match f.machine {
+        Machine::Engine => 4.0 * PI,
+        _ => 2.0 * PI,
+    };
+    let trace = parse(&text, period).map_err(|rule| f.refuse("file", &shown, &rule))?;
+    // The cylinder's clearance does not enter the pressure; a compression ratio is only asked
+    // of a model whose pressure depends on the volume.
+    let ratio = f
+        .optional("compression_ratio", crate::units::Dimension::Number)?
+        .unwrap_or(10.0);
+    Ok((Arc::new(trace), Clearance::CompressionRatio(ratio)))
+}
+
+/// The trace of the CSV `text` over a cycle of `period` (rad), or the rule it breaks (with the
+/// line).
+fn parse(text: &str, period: f64) -> Result<PressureTrace, String> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty());
+    match lines.next() {
+        Some((_, h)) if h.trim() == "crank_angle_deg,pressure_pa" => {}
+        _ => return Err("must start with the header line crank_angle_deg,pressure_pa".into()),
+    }
+    let (mut angles, mut pressures) = (Vec::new(), Vec::new());
+    for (n, line) in lines {
+        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+        let number = |s: &str| s.parse::<f64>().ok().filter(|x| x.is_finite());
+        let (Some(a), Some(p), 2) = (
+            cells.first().and_then(|c| number(c)),
+            cells.get(1).and_then(|c| number(c)),
+            cells.len(),
+        ) else {
+            return Err(format!(
+                "line {}: \"{line}\" is not two finite numbers",
+                n + 1
+            ));
+        };
+        if p < 0.0 {
+            return Err(format!(
+                "line {}: an absolute pressure cannot be negative ({p} Pa)",
+                n + 1
+            ));
+        }
+        if angles.last().is_some_and(|&last| a.to_radians() <= last) {
+            return Err(format!(
+                "line {}: crank angle {a}° does not increase (the rows must be sorted by angle)",
+                n + 1
+            ));
+        }
+        angles.push(a.to_radians());
+        pressures.push(p);
+    }
+    if angles.len() < 2 {
+        return Err("needs at least two rows".into());
+    }
+    let span = angles[angles.len() - 1] - angles[0];
+    let widest = angles.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
+    let wrap = angles[0] + period - angles[angles.len() - 1];
+    let cycle = period.to_degrees();
+    if wrap <= 0.0 {
+        return Err(format!(
+            "spans {:.6}°, more than the machine's cycle of {cycle}°: give one cycle",
+            span.to_degrees()
+        ));
+    }
+    if wrap > widest * (1.0 + 1e-9) {
+        return Err(format!(
+            "covers {:.6}° of the machine's cycle of {cycle}°: the gap of {:.6}° back to the first row is wider than any between rows ({:.6}°)",
+            span.to_degrees(),
+            wrap.to_degrees(),
+            widest.to_degrees()
+        ));
+    }
+    Ok(PressureTrace {
+        angles,
+        pressures,
+        period,
+    })
+}
+
+impl GasModel for PressureTrace {
+    fn prepare<'a>(
+        &'a self,
+        chamber: Chamber<'a>,
+        _speed: f64,
+    ) -> Result<Box<dyn PreparedGas + 'a>, GasError> {
+        Ok(Box::new(Prepared {
+            trace: self,
+            area: chamber.cylinder.area,
+        }))
+    }
+}
+
+struct Prepared<'a> {
+    trace: &'a PressureTrace,
+    area: f64,
+}
+
+impl PreparedGas for Prepared<'_> {
+    fn at(&self, theta: f64) -> (f64, f64) {
+        let p = self.trace.pressure(theta);
+        (p, p * self.area)
+    }
+
+    fn metrics(&self) -> Vec<GasMetric> {
+        Vec::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TRACE: &str = "crank_angle_deg,pressure_pa\n0,1e5\n90,5e5\n180,1e5\n270,2e5\n";
+
+    /// Linear between rows, across the wrap (270° → 360°), and periodic.
+    #[test]
+    fn the_trace_is_interpolated_linearly_and_repeats() {
+        let t = parse(TRACE, 2.0 * PI).unwrap();
+        let at = |deg: f64| t.pressure(deg.to_radians());
+        for (deg, p) in [
+            (0.0, 1e5),
+            (45.0, 3e5),
+            (90.0, 5e5),
+            (135.0, 3e5),
+            (315.0, 1.5e5),
+            (360.0, 1e5),
+            (405.0, 3e5),
+            (-45.0, 1.5e5),
+        ] {
+            assert!(
+                (at(deg) - p).abs() < 1e-6,
+                "{deg}°: {} Pa, not {p}",
+                at(deg)
+            );
+        }
+    }
+
+    /// The shipped example's trace is the Karhula engine's pressure at 0.5° steps, so the
+    /// example reproduces that engine's slider-crank gas loads: its gas work within 1e-4 and its
+    /// peak gas torque within 1e-5 (a linear interpolation's error between 0.5° samples), its
+    /// peak pressure exactly (a sample).
+    #[test]
+    fn the_example_reproduces_the_engine_its_trace_came_from() {
+        let configs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+        let run = |name: &str| {
+            let case = crate::case::load(&configs.join(name)).unwrap();
+            let results = crate::run_case(&case, None).unwrap();
+            results
+                .into_iter()
+                .find(|r| r.label == "slider_crank")
+                .unwrap()
+                .summary
+        };
+        let trace = run("example-pressure-trace.toml");
+        let engine = run("karhula-engine-r60-l140-a0-w200pi-titanium.toml");
+        for (metric, tolerance) in [
+            ("gas_work", 1e-4),
+            ("gas_torque_max", 1e-5),
+            ("cylinder_pressure_max", 1e-12),
+        ] {
+            let (a, b) = (trace.get(metric).unwrap(), engine.get(metric).unwrap());
+            assert!(
+                (a / b - 1.0).abs() <= tolerance,
+                "{metric}: {a} against {b}"
+            );
+        }
+    }
+
+    /// A case names its trace file: one that cannot be read, or none, is refused naming
+    /// `gas.file`.
+    #[test]
+    fn a_missing_trace_file_names_the_field() {
+        let configs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+        let file = configs.join("example-pressure-trace.toml");
+        let text = std::fs::read_to_string(&file).unwrap();
+        for (from, to, rule) in [
+            ("traces/karhula", "traces/nothing-", "cannot read"),
+            ("file = ", "# file = ", "is required"),
+        ] {
+            let e = crate::case::parse(&file, &text.replace(from, to)).unwrap_err();
+            let e = e.to_string();
+            assert!(e.contains("gas.file") && e.contains(rule), "{e}");
+        }
+    }
+
+    /// Refused: no header, unsorted, negative, more or less than a cycle, a bad number.
+    #[test]
+    fn bad_traces_are_refused_with_the_rule() {
+        for (text, rule) in [
+            ("0,1e5\n90,2e5\n", "header"),
+            (
+                "crank_angle_deg,pressure_pa\n0,1e5\n90,2e5\n45,1e5\n",
+                "does not increase",
+            ),
+            ("crank_angle_deg,pressure_pa\n0,1e5\n90,-2\n", "negative"),
+            ("crank_angle_deg,pressure_pa\n0,1e5\n90,2e5\n", "gap"),
+            (
+                "crank_angle_deg,pressure_pa\n0,1e5\n200,2e5\n400,1e5\n",
+                "more than",
+            ),
+            ("crank_angle_deg,pressure_pa\n0,1e5\n90,x\n", "line 3"),
+            ("crank_angle_deg,pressure_pa\n0,1e5\n", "two rows"),
+        ] {
+            let e = parse(text, 2.0 * PI).unwrap_err();
+            assert!(e.contains(rule), "{text:?}: {e}");
+        }
+    }
+}
