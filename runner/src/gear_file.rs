@@ -4,10 +4,9 @@
 //! `DIR/<name>/report.md`. The physics is `cardan-gears`'; this module reads, validates and
 //! writes (see README.md, "Gear pair calculator").
 //!
-//! Values take units as case files do ([`crate::units`]): a bare number is in the field's SI
-//! unit (lengths m, angles deg, speeds rad/s), a string is "NUMBER UNIT". Power, torque and
-//! stress, which case files do not have, use the small table of this module ([`Quantity`]);
-//! lengths also accept inches ("1.5 in") for the US-unit textbook examples.
+//! Values take units as case files do, from the one table of [`crate::units`]: a bare number
+//! is in the field's SI unit (lengths m, angles deg, speeds rad/s, power W, torque N·m, stress
+//! Pa), a string is "NUMBER UNIT" (inches, hp, lbf·in, psi for the US-unit textbook examples).
 //!
 //! Bad input is a [`GearFileError`] naming the file, the pair, the field, its value and the
 //! rule, never a panic. A pair that cannot work (interference, contact ratio below 1, jammed
@@ -17,11 +16,10 @@
 //! the rules of thumb it breaks.
 
 use crate::output::{replace_dir, temporary_dir, write_file};
-use crate::units::{is_folder_name, split_number, to_si, Dimension};
+use crate::units::{is_folder_name, to_si, Dimension};
 use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, contact_allowable_through_hardened, Grade,
 };
-use cardan_gears::units::{FOOT, HORSEPOWER, INCH, LBF, PSI};
 use cardan_gears::{
     bending_cycle_factor, cardan_module, dynamic_factor, elastic_coefficient,
     hardness_ratio_factor, pitting_cycle_factor, pitting_geometry_factor, reliability_factor_fit,
@@ -65,113 +63,6 @@ pub enum GearFileError {
         dir: PathBuf,
         message: String,
     },
-}
-
-/// Units a case file has no dimension for: a local table, first entry = unit of a bare number.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Quantity {
-    /// Power, W.
-    Power,
-    /// Torque, N·m.
-    Torque,
-    /// Stress and elastic moduli, Pa.
-    Stress,
-    /// Square root of a stress (the elastic coefficient `Cp`), √Pa.
-    RootStress,
-}
-
-impl Quantity {
-    fn units(self) -> &'static [(&'static str, f64)] {
-        match self {
-            Quantity::Power => &[("W", 1.0), ("kW", 1e3), ("MW", 1e6), ("hp", HORSEPOWER)],
-            Quantity::Torque => &[
-                ("N*m", 1.0),
-                ("N·m", 1.0),
-                ("Nm", 1.0),
-                ("N m", 1.0),
-                ("kN*m", 1e3),
-                ("lbf*in", LBF * INCH),
-                ("lbf*ft", LBF * FOOT),
-            ],
-            Quantity::Stress => &[
-                ("Pa", 1.0),
-                ("kPa", 1e3),
-                ("MPa", 1e6),
-                ("GPa", 1e9),
-                ("psi", PSI),
-                ("kpsi", 1e3 * PSI),
-                ("Mpsi", 1e6 * PSI),
-            ],
-            Quantity::RootStress => &[
-                ("sqrt(Pa)", 1.0),
-                ("√Pa", 1.0),
-                ("sqrt(MPa)", 1e3),
-                ("√MPa", 1e3),
-                ("sqrt(psi)", 0.0), // PSI.sqrt(), filled in by `factor`
-                ("√psi", 0.0),
-            ],
-        }
-    }
-
-    fn factor(self, unit: &str, table_factor: f64) -> f64 {
-        match (self, unit) {
-            (Quantity::RootStress, "sqrt(psi)" | "√psi") => PSI.sqrt(),
-            _ => table_factor,
-        }
-    }
-
-    /// Converts a TOML value (bare number in the first unit, or "NUMBER UNIT") to SI.
-    pub fn to_si(self, value: &toml::Value) -> Result<f64, String> {
-        let units = self.units();
-        let (x, f) = match value {
-            toml::Value::Float(x) => (*x, units[0].1),
-            toml::Value::Integer(i) => (*i as f64, units[0].1),
-            toml::Value::String(s) => {
-                let (x, unit) = split_number(s)?;
-                let unit = if unit.is_empty() { units[0].0 } else { unit };
-                match units.iter().find(|(u, _)| *u == unit) {
-                    Some((u, f)) => (x, self.factor(u, *f)),
-                    None => {
-                        return Err(format!(
-                            "unknown unit \"{unit}\" in \"{}\"; accepted: {}",
-                            s.trim(),
-                            units.iter().map(|(u, _)| *u).collect::<Vec<_>>().join(", ")
-                        ))
-                    }
-                }
-            }
-            _ => {
-                return Err(format!(
-                    "expected a number in {} or a string with a unit, got {value}",
-                    units[0].0
-                ))
-            }
-        };
-        if !x.is_finite() {
-            return Err(format!("must be a finite number, got {value}"));
-        }
-        Ok(x * f)
-    }
-}
-
-/// A length: case-file units (m, mm, cm; bare number in m) or inches ("1.5 in").
-fn length_to_si(value: &toml::Value) -> Result<f64, String> {
-    if let toml::Value::String(s) = value {
-        if let Ok((x, "in")) = split_number(s) {
-            return if x.is_finite() {
-                Ok(x * INCH)
-            } else {
-                Err(format!("must be a finite number, got {value}"))
-            };
-        }
-    }
-    to_si(value, Dimension::Length).map_err(|e| {
-        if e.contains("accepted:") {
-            format!("{e}, in")
-        } else {
-            e
-        }
-    })
 }
 
 #[derive(Deserialize)]
@@ -351,7 +242,9 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
         ));
     }
     let given = given_fields(text);
-    let length = |field: &str, v: &toml::Value| length_to_si(v).map_err(|r| invalid(field, v, &r));
+    let length = |field: &str, v: &toml::Value| {
+        to_si(v, Dimension::Length).map_err(|r| invalid(field, v, &r))
+    };
     let positive_length = |field: &str, v: &toml::Value| {
         let x = length(field, v)?;
         if x > 0.0 {
@@ -382,7 +275,19 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
 
     // Module, or the cardan crank length it follows from.
     let (module, crank) = match (&raw.module, &raw.cardan_crank_length) {
-        (Some(m), None) => (positive_length("module", m)?, None),
+        (Some(m), None) => {
+            // A module is millimetres (ISO 54: 0.05…100 mm): a bare number above 0.1 m was
+            // meant in mm, as a bare crank of 60 is refused in case files.
+            let module = positive_length("module", m)?;
+            if module > 0.1 && !m.is_str() {
+                return Err(invalid(
+                    "module",
+                    m,
+                    &format!("a bare number is in m: a module of {} m is implausible (ISO 54 modules run to 100 mm); write \"{} mm\" if you meant millimetres, or give the unit explicitly", crate::units::short(module), crate::units::short(module)),
+                ));
+            }
+            (module, None)
+        }
         (None, Some(e)) => {
             let e_si = positive_length("cardan_crank_length", e)?;
             let m = cardan_module(e_si, z[0].max(0) as u32).map_err(|err| {
@@ -557,8 +462,8 @@ fn geometry_error(e: GearError, raw: &RawGearFile, invalid: &Invalid) -> GearFil
 }
 
 fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFileError> {
-    let quantity = |field: &str, v: &toml::Value, q: Quantity| {
-        q.to_si(v).map_err(|rule| invalid(field, v, &rule))
+    let quantity = |field: &str, v: &toml::Value, q: Dimension| {
+        to_si(v, q).map_err(|rule| invalid(field, v, &rule))
     };
     let number = |field: &str, v: &toml::Value| {
         to_si(v, Dimension::Number).map_err(|rule| invalid(field, v, &rule))
@@ -579,8 +484,8 @@ fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFi
         |field: &str, v: &dyn std::fmt::Display, e: GearError| invalid(field, v, &e.to_string());
 
     let load = match (&r.power, &r.torque) {
-        (Some(p), None) => Load::Power(quantity("rating.power", p, Quantity::Power)?),
-        (None, Some(t)) => Load::Torque(quantity("rating.torque", t, Quantity::Torque)?),
+        (Some(p), None) => Load::Power(quantity("rating.power", p, Dimension::Power)?),
+        (None, Some(t)) => Load::Torque(quantity("rating.torque", t, Dimension::Torque)?),
         (Some(p), Some(_)) => {
             return Err(invalid(
                 "rating.power",
@@ -778,7 +683,7 @@ fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFi
          -> Result<f64, GearFileError> {
             match (given, hardness) {
                 (Some(v), _) => {
-                    let s = quantity(&f(key), v, Quantity::Stress)?;
+                    let s = quantity(&f(key), v, Dimension::Pressure)?;
                     if s > 0.0 {
                         Ok(s)
                     } else {
@@ -827,7 +732,7 @@ fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFi
 
     let elastic = match &r.elastic_coefficient {
         Some(v) => {
-            let cp = quantity("rating.elastic_coefficient", v, Quantity::RootStress)?;
+            let cp = quantity("rating.elastic_coefficient", v, Dimension::RootStress)?;
             if cp <= 0.0 {
                 return Err(invalid("rating.elastic_coefficient", v, "must be positive"));
             }
@@ -850,7 +755,7 @@ fn parse_rating(r: &RawRating, invalid: &Invalid) -> Result<RatingInputs, GearFi
                     quantity(
                         &format!("rating.{which}.youngs_modulus"),
                         e,
-                        Quantity::Stress,
+                        Dimension::Pressure,
                     )?,
                     number(&format!("rating.{which}.poisson_ratio"), nu)?,
                 );

@@ -1,7 +1,11 @@
 //! Quantities with units, converted to SI once, at the edge. A case-file value is either a
 //! bare number in the field's documented unit or a string "NUMBER UNIT" (`"60 mm"`).
 
+use cardan_gears::units::{FOOT, HORSEPOWER, INCH, LBF, PSI};
 use std::f64::consts::PI;
+
+/// √psi in √Pa (AGMA's elastic coefficient in US units).
+const SQRT_PSI: f64 = 83.034_675_245_757_19;
 
 /// The physical dimension of a case-file field, which fixes the units it accepts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -30,6 +34,12 @@ pub enum Dimension {
     Density,
     /// Force: a bare number is in N.
     Force,
+    /// Power: a bare number is in W.
+    Power,
+    /// Torque: a bare number is in N·m.
+    Torque,
+    /// Square root of a stress (AGMA's elastic coefficient `Cp`), √Pa.
+    RootStress,
     /// A pure number (ratios, exponents, factors), or a coefficient in the SI unit its field
     /// names.
     Number,
@@ -46,8 +56,8 @@ impl Dimension {
                 ("cm", 1e-2),
                 ("um", 1e-6),
                 ("µm", 1e-6),
-                ("in", 0.0254),
-                ("ft", 0.3048),
+                ("in", INCH),
+                ("ft", FOOT),
             ],
             Dimension::Angle => &[("deg", PI / 180.0), ("°", PI / 180.0), ("rad", 1.0)],
             Dimension::AngularSpeed => &[
@@ -78,7 +88,9 @@ impl Dimension {
                 ("GPa", 1e9),
                 ("bar", 1e5),
                 ("atm", 101_325.0),
-                ("psi", 6_894.757_293_168),
+                ("psi", PSI),
+                ("kpsi", 1e3 * PSI),
+                ("Mpsi", 1e6 * PSI),
             ],
             Dimension::Temperature => &[("K", 1.0), ("°C", 1.0), ("degC", 1.0)],
             Dimension::SpecificEnergy => &[("J/kg", 1.0), ("kJ/kg", 1e3), ("MJ/kg", 1e6)],
@@ -92,11 +104,24 @@ impl Dimension {
                 ("cSt", 1e-6),
             ],
             Dimension::Density => &[("kg/m^3", 1.0), ("kg/m³", 1.0), ("g/cm^3", 1e3)],
-            Dimension::Force => &[
-                ("N", 1.0),
-                ("kN", 1e3),
-                ("MN", 1e6),
-                ("lbf", 4.448_221_615_260_5),
+            Dimension::Force => &[("N", 1.0), ("kN", 1e3), ("MN", 1e6), ("lbf", LBF)],
+            Dimension::Power => &[("W", 1.0), ("kW", 1e3), ("MW", 1e6), ("hp", HORSEPOWER)],
+            Dimension::Torque => &[
+                ("N*m", 1.0),
+                ("N·m", 1.0),
+                ("Nm", 1.0),
+                ("N m", 1.0),
+                ("kN*m", 1e3),
+                ("lbf*in", LBF * INCH),
+                ("lbf*ft", LBF * FOOT),
+            ],
+            Dimension::RootStress => &[
+                ("sqrt(Pa)", 1.0),
+                ("√Pa", 1.0),
+                ("sqrt(MPa)", 1e3),
+                ("√MPa", 1e3),
+                ("sqrt(psi)", SQRT_PSI),
+                ("√psi", SQRT_PSI),
             ],
             Dimension::Number => &[("", 1.0)],
         }
@@ -290,7 +315,29 @@ mod tests {
         );
         assert_relative_eq!(
             to_si(&v("100 psi"), Dimension::Pressure).unwrap(),
-            689_475.729_316_8
+            689_475.729_316_8,
+            max_relative = 1e-12
+        );
+    }
+
+    /// The gear calculator's quantities take the same table: hp, lbf·in, kpsi, √psi.
+    #[test]
+    fn gear_units_convert_to_si() {
+        let v = |s: &str| toml::Value::String(s.into());
+        assert_relative_eq!(SQRT_PSI, PSI.sqrt(), max_relative = 1e-15);
+        assert_relative_eq!(
+            to_si(&v("4 hp"), Dimension::Power).unwrap(),
+            4.0 * HORSEPOWER
+        );
+        assert_relative_eq!(
+            to_si(&v("1 lbf*in"), Dimension::Torque).unwrap(),
+            LBF * INCH
+        );
+        assert_relative_eq!(to_si(&v("2 kpsi"), Dimension::Pressure).unwrap(), 2e3 * PSI);
+        assert_relative_eq!(
+            to_si(&v("2300 sqrt(psi)"), Dimension::RootStress).unwrap(),
+            2300.0 * PSI.sqrt(),
+            max_relative = 1e-15
         );
     }
 

@@ -3,7 +3,8 @@
 //! `configs-gears/`, bad files and the output folder.
 
 use cardan_gears::units::{INCH, LBF, PSI};
-use cardan_runner::gear_file::{evaluate, load, parse, run, GearReport, Quantity};
+use cardan_runner::gear_file::{evaluate, load, parse, run, GearReport};
+use cardan_runner::units::{to_si, Dimension};
 use cardan_testing::mentions;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -365,27 +366,26 @@ fn material_constants_give_the_elastic_coefficient() {
 fn local_units() {
     let s = |x: &str| toml::Value::String(x.into());
     let hp = cardan_gears::units::HORSEPOWER;
-    assert!((Quantity::Power.to_si(&s("4 hp")).unwrap() - 4.0 * hp).abs() < 1e-9);
-    assert_eq!(Quantity::Power.to_si(&s("3 kW")).unwrap(), 3000.0);
+    assert!((to_si(&s("4 hp"), Dimension::Power).unwrap() - 4.0 * hp).abs() < 1e-9);
+    assert_eq!(to_si(&s("3 kW"), Dimension::Power).unwrap(), 3000.0);
     assert_eq!(
-        Quantity::Power.to_si(&toml::Value::Float(5.0)).unwrap(),
+        to_si(&toml::Value::Float(5.0), Dimension::Power).unwrap(),
         5.0
     );
-    assert_eq!(Quantity::Torque.to_si(&s("20 N*m")).unwrap(), 20.0);
-    assert!((Quantity::Torque.to_si(&s("1 lbf*in")).unwrap() - LBF * INCH).abs() < 1e-15);
-    assert_eq!(Quantity::Stress.to_si(&s("12 MPa")).unwrap(), 12e6);
-    assert!((Quantity::Stress.to_si(&s("1 psi")).unwrap() - PSI).abs() < 1e-12);
+    assert_eq!(to_si(&s("20 N*m"), Dimension::Torque).unwrap(), 20.0);
+    assert!((to_si(&s("1 lbf*in"), Dimension::Torque).unwrap() - LBF * INCH).abs() < 1e-15);
+    assert_eq!(to_si(&s("12 MPa"), Dimension::Pressure).unwrap(), 12e6);
+    assert!((to_si(&s("1 psi"), Dimension::Pressure).unwrap() - PSI).abs() < 1e-12);
     assert!(
-        (Quantity::RootStress.to_si(&s("2300 sqrt(psi)")).unwrap() - 2300.0 * PSI.sqrt()).abs()
+        (to_si(&s("2300 sqrt(psi)"), Dimension::RootStress).unwrap() - 2300.0 * PSI.sqrt()).abs()
             < 1e-9
     );
-    assert_eq!(Quantity::RootStress.to_si(&s("190 √MPa")).unwrap(), 190e3);
-    assert!(Quantity::Power
-        .to_si(&s("4 N*m"))
+    assert_eq!(to_si(&s("190 √MPa"), Dimension::RootStress).unwrap(), 190e3);
+    assert!(to_si(&s("4 N*m"), Dimension::Power)
         .unwrap_err()
         .contains("accepted: W, kW, MW, hp"));
-    assert!(Quantity::Stress.to_si(&toml::Value::Boolean(true)).is_err());
-    assert!(Quantity::Stress.to_si(&s("nan MPa")).is_err());
+    assert!(to_si(&toml::Value::Boolean(true), Dimension::Pressure).is_err());
+    assert!(to_si(&s("nan MPa"), Dimension::Pressure).is_err());
 }
 
 #[test]
@@ -582,4 +582,23 @@ fn warnings_appear_in_the_report() {
     let md = r.to_markdown();
     let verdict = md.split("## Inputs").next().unwrap();
     mentions(verdict, &["the pair works", "Warnings", "pinion_undercut"]);
+}
+
+/// Issue 22 item 11: `module = 3` (meant in mm) was a 3 m module; it is refused with the
+/// likely unit, and "3 mm" is taken as written.
+#[test]
+fn a_bare_module_meant_in_millimetres_is_refused() {
+    let text = std::fs::read_to_string(shipped("karhula-cardan-20-40.toml")).unwrap();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("module") || l.starts_with("cardan_crank_length"))
+        .unwrap()
+        .to_string();
+    let bare = text.replace(&line, "module = 3");
+    let e = parse(std::path::Path::new("g.toml"), &bare)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("module") && e.contains("\"3 mm\""), "{e}");
+    let with_unit = text.replace(&line, "module = \"3 mm\"");
+    assert!(parse(std::path::Path::new("g.toml"), &with_unit).is_ok());
 }
