@@ -80,7 +80,7 @@ enum Command {
 /// safety factor below `required_safety_factor`, a figure that is not finite). Warnings (rules
 /// of thumb such as undercut) go to stderr whatever the verdict.
 fn gear(file: &std::path::Path, out: &std::path::Path) -> ExitCode {
-    match cardan_runner::gear_file::run(file, out) {
+    match cardan::gear_file::run(file, out) {
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE

@@ -7,7 +7,6 @@ pub mod case;
 pub mod friction;
 pub mod gas;
 pub mod gear;
-pub mod gear_file;
 pub mod output;
 pub mod per_step;
 pub mod report;

@@ -2,8 +2,8 @@
 //! the validation note §1.2), the interfering 20/40 internal pair, the shipped examples in
 //! `configs-gears/`, bad files and the output folder.
 
+use cardan::gear_file::{evaluate, load, parse, run, GearReport};
 use cardan_gears::units::{INCH, LBF, PSI};
-use cardan_runner::gear_file::{evaluate, load, parse, run, GearReport};
 use cardan_runner::units::{to_si, Dimension};
 use cardan_testing::mentions;
 use serde_json::Value;
