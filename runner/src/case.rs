@@ -200,6 +200,7 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
             let cases: Vec<Result<Case, CaseError>> = points
                 .into_par_iter()
                 .map(|p| {
+                    check_form(file, &p.table)?;
                     let raw: RawCase = toml::Value::Table(p.table)
                         .try_into()
                         .map_err(|e| syntax(&format!("sweep point \"{}\": {e}", p.name)))?;
@@ -218,11 +219,155 @@ pub(crate) type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> Case
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
-    let raw: RawCase = toml::from_str(text).map_err(|e| CaseError::Syntax {
-        file: file.into(),
-        message: e.to_string().trim_end().to_string(),
-    })?;
+    let raw: RawCase = match toml::from_str(text) {
+        Ok(raw) => raw,
+        Err(e) => {
+            // Say a mistake of form as a person would (the reader names its Rust types); any
+            // other, and TOML syntax, as the reader does, with the line and column.
+            if let Ok(table) = toml::from_str::<toml::Table>(text) {
+                check_form(file, &table)?;
+            }
+            return Err(CaseError::Syntax {
+                file: file.into(),
+                message: e.to_string().trim_end().to_string(),
+            });
+        }
+    };
     validate(file, raw)
+}
+
+/// What a field of a case must be, for [`check_form`].
+#[derive(Clone, Copy)]
+enum Form {
+    /// A string in quotes; what it says.
+    Text(&'static str),
+    /// A list of strings in quotes; an example.
+    Texts(&'static str),
+    Table,
+    /// A whole number; what it counts.
+    Whole(&'static str),
+    Flag,
+    /// A number or a string with a unit (read by [`to_si`], which names a wrong type itself);
+    /// the unit.
+    Quantity(&'static str),
+}
+
+/// The fields of a case the TOML reader checks the form of: (dotted path, form, required).
+const FORMS: &[(&str, Form, bool)] = &[
+    ("name", Form::Text("the case's name"), true),
+    ("machine", Form::Text("\"pump\" or \"engine\""), true),
+    ("mechanisms", Form::Texts("[\"slider_crank\"]"), true),
+    ("geometry", Form::Table, true),
+    ("geometry.crank_length", Form::Quantity("m"), true),
+    ("geometry.rod_length", Form::Quantity("m"), true),
+    ("geometry.bore", Form::Quantity("m"), true),
+    ("geometry.opposed_pistons", Form::Flag, false),
+    ("motion", Form::Table, true),
+    ("motion.start_angle", Form::Quantity("degrees"), true),
+    ("motion.end_angle", Form::Quantity("degrees"), true),
+    ("motion.initial_speed", Form::Quantity("rad/s"), true),
+    (
+        "motion.angular_acceleration",
+        Form::Quantity("rad/s²"),
+        true,
+    ),
+    (
+        "motion.steps",
+        Form::Whole("the number of crank-angle intervals, from 8 to 100000000"),
+        true,
+    ),
+    ("masses", Form::Table, false),
+    ("gas", Form::Table, false),
+    ("friction", Form::Table, false),
+    ("gear", Form::Table, false),
+    ("output", Form::Table, false),
+    ("output.csv", Form::Flag, false),
+    ("output.npy", Form::Flag, false),
+    (
+        "output.decimation",
+        Form::Whole("write every n-th step"),
+        false,
+    ),
+    (
+        "output.significant_digits",
+        Form::Whole("significant digits of the CSV numbers"),
+        false,
+    ),
+];
+
+/// The first field of `table` (a case) of the wrong form or missing, as a [`CaseError::Invalid`]
+/// that names it, says what it must be and shows what was written.
+fn check_form(file: &Path, table: &toml::Table) -> Result<(), CaseError> {
+    let case = match table.get("name") {
+        Some(toml::Value::String(name)) => name.clone(),
+        _ => "(unnamed)".to_string(),
+    };
+    let invalid = |field: &str, value: &dyn std::fmt::Display, rule: String| CaseError::Invalid {
+        file: file.into(),
+        case: case.clone(),
+        field: field.to_string(),
+        value: value.to_string(),
+        rule,
+    };
+    for &(path, form, required) in FORMS {
+        let (parent, key) = match path.split_once('.') {
+            Some((t, k)) => match table.get(t) {
+                Some(toml::Value::Table(t)) => (t, k),
+                // Its table is missing or of the wrong form: reported as such.
+                _ => continue,
+            },
+            None => (table, path),
+        };
+        let Some(value) = parent.get(key) else {
+            if !required {
+                continue;
+            }
+            let what = match form {
+                Form::Text(what) => format!("a string: {what}"),
+                Form::Texts(example) => format!("a list of mechanism names, e.g. {example}"),
+                Form::Table => format!("a table [{path}]"),
+                Form::Whole(what) => format!("a whole number: {what}"),
+                Form::Flag => "true or false".to_string(),
+                Form::Quantity(unit) => {
+                    format!("a number in {unit} or a string with a unit")
+                }
+            };
+            return Err(invalid(path, &"(missing)", format!("required: {what}")));
+        };
+        let rule = match (form, value) {
+            (Form::Text(_), toml::Value::String(_)) => continue,
+            (Form::Text(what), _) => format!("must be a string in quotes: {what}"),
+            (Form::Texts(_), toml::Value::Array(a)) if a.iter().all(|v| v.is_str()) => continue,
+            (Form::Texts(example), toml::Value::Array(_)) => {
+                format!("must be a list of names in quotes, e.g. {example}")
+            }
+            (Form::Texts(example), _) => {
+                format!("must be a list of names in brackets, e.g. {example}, even of one")
+            }
+            (Form::Table, toml::Value::Table(_)) => continue,
+            (Form::Table, toml::Value::Array(a)) if a.iter().all(|v| v.is_table()) => format!(
+                "must be a table ([{path}]), not an array of tables ([[{path}]]): write [{path}] once"
+            ),
+            (Form::Table, _) => format!("must be a table ([{path}])"),
+            (Form::Whole(_), toml::Value::Integer(_)) => continue,
+            (Form::Whole(what), toml::Value::Float(x)) if x.fract() == 0.0 && x.abs() < 1e15 => {
+                format!("must be a whole number ({x:.0}, not {value}): {what}")
+            }
+            (Form::Whole(what), toml::Value::String(s)) if s.trim().parse::<i64>().is_ok() => {
+                format!(
+                    "must be a whole number, written without quotes ({}, not {value}): {what}",
+                    s.trim()
+                )
+            }
+            (Form::Whole(what), _) => format!("must be a whole number: {what}"),
+            (Form::Flag, toml::Value::Boolean(_)) => continue,
+            (Form::Flag, _) => "must be true or false (without quotes)".to_string(),
+            // A wrong type is named by the reading of the quantity, with its unit.
+            (Form::Quantity(_), _) => continue,
+        };
+        return Err(invalid(path, value, rule));
+    }
+    Ok(())
 }
 
 /// Validates a case read from `file` (only for the messages).

@@ -172,7 +172,7 @@ fn each_rule_names_file_case_field_rule_and_value() {
 fn syntax_missing_fields_and_unknown_keys_are_located() {
     mentions(
         &error_of(&GOOD.replace("bore = 0.12\n", "")),
-        &["configs/bad.toml", "missing field", "bore"],
+        &["configs/bad.toml", "geometry.bore", "(missing)", "required"],
     );
     mentions(
         &error_of(&GOOD.replace("bore = 0.12", "bore = 0.12\nstroke = 0.1")),
@@ -554,7 +554,7 @@ combustion_start_per_speed = "-0.0004 deg/rpm"
 /// links) cannot take a `[gas]` table.
 #[test]
 fn gas_needs_pistons_in_cylinders() {
-    // 721 steps keep clear of the hypotrochoid's folds (a_grid_on_the_hypotrochoid_fold...).
+    // 721 steps: at 720 a step lands on a fold of the hypotrochoid's chain, refused first.
     let text = format!("{GOOD}{PUMP_GAS}")
         .replace(
             "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
@@ -636,4 +636,237 @@ fn what_the_run_would_refuse_is_refused_on_reading() {
     );
     let e = error_of(&long);
     assert!(e.contains("name") && e.contains("at most 200"), "{e}");
+}
+
+/// Common mistakes of form (a table written as an array of tables, a whole number written with
+/// a decimal point, a string for a number or a number for a string, a field left out) read as
+/// a person would say them: the field's path, what it must be and the value written, not the
+/// TOML reader's Rust types ("expected i64", "struct RawGeometry with 6 elements").
+#[test]
+fn mistakes_of_form_name_the_field_and_what_it_must_be() {
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "[geometry]",
+            "[[geometry]]",
+            &[
+                "configs/bad.toml",
+                "\"good\"",
+                "geometry",
+                "must be a table ([geometry]), not an array of tables ([[geometry]])",
+            ],
+        ),
+        (
+            "[motion]",
+            "[[motion]]",
+            &[
+                "motion",
+                "must be a table ([motion]), not an array of tables ([[motion]])",
+            ],
+        ),
+        (
+            "steps = 720",
+            "steps = 720.0",
+            &[
+                "\"good\"",
+                "motion.steps",
+                "720.0",
+                "must be a whole number (720, not 720.0)",
+            ],
+        ),
+        (
+            "steps = 720",
+            "steps = 72.5",
+            &["motion.steps", "72.5", "must be a whole number"],
+        ),
+        (
+            "steps = 720",
+            "steps = \"720\"",
+            &["motion.steps", "\"720\"", "whole number", "without quotes"],
+        ),
+        (
+            "machine = \"pump\"",
+            "machine = 1",
+            &[
+                "machine",
+                "= 1",
+                "must be a string in quotes",
+                "\"pump\" or \"engine\"",
+            ],
+        ),
+        (
+            "name = \"good\"",
+            "name = 3",
+            &["name", "= 3", "must be a string in quotes"],
+        ),
+        (
+            "[\"slider_crank\", \"cardan_gear\"]",
+            "\"slider_crank\"",
+            &[
+                "mechanisms",
+                "\"slider_crank\"",
+                "must be a list",
+                "[\"slider_crank\"]",
+            ],
+        ),
+        (
+            "[\"slider_crank\", \"cardan_gear\"]",
+            "[1, 2]",
+            &["mechanisms", "[1, 2]", "must be a list of names in quotes"],
+        ),
+        (
+            "bore = 0.12",
+            "bore = 0.12\nopposed_pistons = \"yes\"",
+            &[
+                "geometry.opposed_pistons",
+                "\"yes\"",
+                "must be true or false",
+            ],
+        ),
+        (
+            "steps = 720",
+            "steps = 720\n[output]\ncsv = \"yes\"",
+            &["output.csv", "\"yes\"", "must be true or false"],
+        ),
+        (
+            "steps = 720",
+            "steps = 720\n[output]\ndecimation = 2.0",
+            &[
+                "output.decimation",
+                "2.0",
+                "must be a whole number (2, not 2.0)",
+            ],
+        ),
+        (
+            "steps = 720",
+            "steps = 720\n[[output]]\ncsv = true",
+            &[
+                "output",
+                "must be a table ([output]), not an array of tables ([[output]])",
+            ],
+        ),
+        (
+            "steps = 720",
+            "steps = 720\n[masses]\nrod_mass = true",
+            &["masses.rod_mass", "true", "expected a number in kg"],
+        ),
+        (
+            "bore = 0.12",
+            "bore = [0.12]",
+            &["geometry.bore", "[0.12]", "expected a number in m"],
+        ),
+        (
+            "steps = 720\n",
+            "",
+            &[
+                "\"good\"",
+                "motion.steps",
+                "(missing)",
+                "required",
+                "whole number",
+            ],
+        ),
+        (
+            "bore = 0.12\n",
+            "",
+            &[
+                "geometry.bore",
+                "(missing)",
+                "required",
+                "m or a string with a unit",
+            ],
+        ),
+        (
+            "machine = \"pump\"\n",
+            "",
+            &["machine", "(missing)", "required", "\"pump\" or \"engine\""],
+        ),
+        (
+            "name = \"good\"\n",
+            "",
+            &["configs/bad.toml", "name", "(missing)", "required"],
+        ),
+        (
+            "[motion]",
+            "[motions]",
+            &["motion", "(missing)", "required", "[motion]"],
+        ),
+    ];
+    for (from, to, parts) in cases {
+        assert!(
+            GOOD.contains(from),
+            "test set-up: {from:?} not in the good case"
+        );
+        let message = error_of(&GOOD.replacen(from, to, 1));
+        mentions(&message, parts);
+        for rust in [
+            "i64",
+            "RawGeometry",
+            "RawMotion",
+            "struct",
+            "invalid type",
+            "invalid length",
+        ] {
+            assert!(
+                !message.contains(rust),
+                "{to:?}: the message speaks the reader's types ({rust}): {message}"
+            );
+        }
+    }
+}
+
+/// The good case on radians, with the crank's deceleration `a` (rad/s²) from 2 rad/s over
+/// 0 to `end` rad.
+fn decelerating(a: f64, end: f64) -> String {
+    GOOD.replace("start_angle = 90.0", "start_angle = \"0 rad\"")
+        .replace("end_angle = 810.0", &format!("end_angle = \"{end:?} rad\""))
+        .replace("initial_speed = 628.3185307", "initial_speed = \"2 rad/s\"")
+        .replace(
+            "angular_acceleration = 0.0",
+            &format!("angular_acceleration = \"{a:?} rad/s^2\""),
+        )
+}
+
+/// A crank that really stops before the end angle is refused, saying where it stops (2 rad/s
+/// at −1 rad/s² stops after ω0²/(2|α|) = 2 rad = 114.592°) and that ω² is below 0 by more
+/// than round-off.
+#[test]
+fn a_crank_that_stops_before_the_end_is_refused_saying_where() {
+    let message = error_of(&decelerating(-1.0, 3.0));
+    mentions(
+        &message,
+        &[
+            "motion.initial_speed",
+            "stops at 114.592°",
+            "before the end angle 171.887°",
+            "more than round-off",
+        ],
+    );
+}
+
+/// A crank decelerated to rest exactly at the end angle: ω0² + 2·α·Δθ there is 0 up to
+/// round-off, and may come out a few ulp below 0 (or exactly 0). That is a crank that just
+/// reaches the end, not one that stops before it: the case is read and runs, at rest at the
+/// end.
+#[test]
+fn a_crank_that_just_reaches_the_end_angle_at_rest_runs() {
+    let (w0, end) = (2.0_f64, 3.0_f64);
+    let exact = -(w0 * w0) / (2.0 * end);
+    // The accelerations around the exact one whose ω² at the end rounds to below 0 or to 0.
+    let mut found = Vec::new();
+    for ulps in -4_i64..=4 {
+        let a = f64::from_bits((exact.to_bits() as i64 + ulps) as u64);
+        let w2 = w0 * w0 + 2.0 * a * end;
+        if w2 <= 0.0 && w2 > -1e-12 {
+            found.push((a, w2));
+        }
+    }
+    assert!(
+        found.iter().any(|(_, w2)| *w2 < 0.0),
+        "test set-up: no acceleration with ω² a round-off below 0: {found:?}"
+    );
+    for (a, _) in found {
+        let case = parse(Path::new("configs/rest.toml"), &decelerating(a, end))
+            .unwrap_or_else(|e| panic!("α = {a:?}: {e}"));
+        cardan_runner::run_case(&case, None).unwrap_or_else(|e| panic!("α = {a:?}: {e}"));
+    }
 }

@@ -492,6 +492,14 @@ fn index_links_every_report() {
         assert!(out.join(&link).is_file());
     }
     assert_eq!(links.len(), folders.len());
+    // The engines' negative mean drive power is explained (issue 22).
+    for part in [
+        "Mean drive power",
+        "positive when the drive delivers",
+        "negative when",
+    ] {
+        assert!(html.contains(part), "the index explains the sign: {part:?}");
+    }
     // A headline row per case and mechanism: the peak torque of the table's first column.
     let summary: serde_json::Value = serde_json::from_str(
         &std::fs::read_to_string(out.join("karhula-pump-r60-l140-a0-w30pi/summary.json")).unwrap(),
@@ -1000,5 +1008,71 @@ fn friction_keeps_the_force_charts_and_adds_one_friction_torque_chart() {
             "csv {csv}: {added:?}"
         );
         assert!(!with.values().any(|svg| svg.contains("friction loads")));
+    }
+}
+
+/// Issue 22: a Δ in % of quadrature round-off ("+144 %" on −4.8e-15 J, the inertial work of a
+/// constant-speed run over whole turns) is no result. Below its metric's round-off floor
+/// (1e-9 of the work, torque or power the drive's peak torque could make over the run) a
+/// value gets no Δ: "≈ 0" where both are below it, "—" where one is; the legend says so, and a
+/// sign convention follows the table of signed quantities.
+#[test]
+fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
+    let dir = tempfile::tempdir().unwrap();
+    let case = dir.path().join("steady");
+    std::fs::create_dir(&case).unwrap();
+    // Scales: 0.2 N·m × 9.42 rad/s × 1.33 s = 2.5 J, 1.9 W; the floors 2.5e-9 J, 1.9e-9 W,
+    // 2e-10 N·m.
+    let mechanism = |work: f64, mean: f64, power: f64, total: f64| {
+        serde_json::json!({
+            "bodies": {}, "joints": {}, "mass_properties": {},
+            "metrics": {
+                "inertial_torque_max": 0.2, "crankshaft_angular_velocity_max": 9.42,
+                "cycle_time": 1.33, "inertial_work": work, "inertial_torque_mean": mean,
+                "inertial_power_mean": power, "total_torque_max": 0.4, "total_work": total
+            },
+            "units": {
+                "inertial_torque_max": "N*m", "crankshaft_angular_velocity_max": "rad/s",
+                "cycle_time": "s", "inertial_work": "J", "inertial_torque_mean": "N*m",
+                "inertial_power_mean": "W", "total_torque_max": "N*m", "total_work": "J"
+            }
+        })
+    };
+    let summary = serde_json::json!({
+        "schema_version": 2, "case": "steady", "machine": "pump", "gas_model": null,
+        "mechanisms": {
+            "slider_crank": mechanism(2e-15, 3e-16, 1e-3, 1.0),
+            "cardan_gear": mechanism(-4.8e-15, -1e-16, 1e-10, 1.25),
+        }
+    });
+    std::fs::write(case.join("summary.json"), summary.to_string()).unwrap();
+    case_report(&case, None).unwrap();
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    // Both within round-off: no Δ.
+    assert!(
+        md.contains("| `inertial_work` | J | 2e-15 | -4.8e-15 | ≈ 0 |"),
+        "{md}"
+    );
+    assert!(md.contains("| `inertial_torque_mean` | N·m | 3e-16 | -1e-16 | ≈ 0 |"));
+    // One within round-off (1e-10 W of a 1.9 W scale), the other not: no Δ either.
+    assert!(md.contains("| `inertial_power_mean` | W | 0.001 | 1e-10 | — |"));
+    // Above the floor: the Δ as ever, (1.25 − 1) / 1.
+    assert!(md.contains("| `total_work` | J | 1 | 1.25 | +25.0 % |"));
+    assert!(
+        md.contains("round-off"),
+        "the legend explains the floor: {md}"
+    );
+    let torque_table = md.split("### Drive torque, power and work").nth(1).unwrap();
+    let after = torque_table.split("\n\n").nth(2).unwrap_or("");
+    for part in [
+        "positive in the direction of rotation",
+        "pump",
+        "engine",
+        "negative",
+    ] {
+        assert!(
+            after.contains(part),
+            "the sign line under the torque table names {part:?}: {after}"
+        );
     }
 }

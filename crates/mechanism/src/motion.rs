@@ -61,11 +61,17 @@ pub enum MotionError {
     #[error("the crank never turns: initial_speed and angular_acceleration are both 0")]
     Still,
     #[error(
-        "the crank stops before {angle_deg:.3}°: ω² = ω0² + 2·α·Δθ becomes negative \
+        "the crank stops at {stop_deg:.3}° before the end angle {angle_deg:.3}°: \
+         ω² = ω0² + 2·α·Δθ would be {omega2:.3e} rad²/s² there, below 0 by more than round-off \
          (initial_speed {speed} rad/s, angular_acceleration {acceleration} rad/s²)"
     )]
     Stops {
+        /// The angle asked for, degrees.
         angle_deg: f64,
+        /// Where the crank comes to rest, θ0 + ω0²/(2·|α|), degrees.
+        stop_deg: f64,
+        /// ω0² + 2·α·Δθ at the angle asked for, rad²/s².
+        omega2: f64,
         speed: f64,
         acceleration: f64,
     },
@@ -101,9 +107,14 @@ impl CrankMotion {
         }
         let dtheta = theta - self.start_angle;
         let w2 = w0 * w0 + 2.0 * a * dtheta;
-        if w2 < 0.0 || (w2 == 0.0 && dtheta > 0.0) {
+        // A crank decelerated to rest exactly at `theta` has ω² = 0 there, which the sum
+        // gives to within its round-off, a few ulp either side: that crank reaches `theta` (at
+        // rest), and ω is taken as 0. Only ω² below 0 by more than that stops it before.
+        if w2 < -Self::round_off(w0, a, theta, self.start_angle) {
             return Err(MotionError::Stops {
                 angle_deg: theta.to_degrees(),
+                stop_deg: (self.start_angle + w0 * w0 / (2.0 * a.abs())).to_degrees(),
+                omega2: w2,
                 speed: w0,
                 acceleration: a,
             });
@@ -111,12 +122,20 @@ impl CrankMotion {
         Ok(())
     }
 
+    /// A bound of the round-off of ω0² + 2·α·(θ − θ0) in f64: each of the products, the
+    /// difference θ − θ0 and the sum rounds by at most ε/2 of its size, so 4·ε of the terms'
+    /// magnitudes (with |θ| + |θ0| for |θ − θ0|) bounds the sum's error with a margin.
+    fn round_off(w0: f64, a: f64, theta: f64, start: f64) -> f64 {
+        4.0 * f64::EPSILON * (w0 * w0 + 2.0 * a.abs() * (theta.abs() + start.abs()))
+    }
+
     /// ω and t at angle `theta`.
     fn speed_and_time(&self, theta: f64) -> Result<(f64, f64), MotionError> {
         self.speed_and_time_checked(theta)?;
         let (w0, a) = (self.initial_speed, self.angular_acceleration);
         let dtheta = theta - self.start_angle;
-        let w = (w0 * w0 + 2.0 * a * dtheta).sqrt();
+        // ω² within round-off below 0 is a crank at rest (see `speed_and_time_checked`).
+        let w = (w0 * w0 + 2.0 * a * dtheta).max(0.0).sqrt();
         // t = 2Δθ/(ω0 + ω) is the root of ½αt² + ω0t − Δθ = 0 without the cancellation of
         // (−ω0 + ω)/α, and it also holds for α = 0.
         let time = if dtheta == 0.0 {
@@ -402,7 +421,7 @@ vectorised! {
         };
         for j in 0..valid {
             let dtheta = out.angle[j] - m.start_angle;
-            let w = (w0 * w0 + 2.0 * a * dtheta).sqrt();
+            let w = (w0 * w0 + 2.0 * a * dtheta).max(0.0).sqrt();
             out.speed[j] = w;
             out.time[j] = if dtheta == 0.0 {
                 0.0
@@ -624,6 +643,42 @@ mod tests {
         };
         let g = stops.grid(0.1, 0.1 + span, 3077).unwrap();
         assert_eq!(g.len(), 3078);
+    }
+
+    /// Decelerated to rest exactly at the end: ω² there is 0 up to round-off, some ulp below 0
+    /// for some accelerations. That crank reaches the end, at rest; one that stops a round-off
+    /// short of it by more than round-off (−1e-9 of ω0² at the end) does not.
+    #[test]
+    fn a_crank_at_rest_at_the_end_within_round_off_reaches_it() {
+        let (w0, end) = (2.0_f64, 3.0_f64);
+        let exact = -(w0 * w0) / (2.0 * end);
+        let mut below = 0;
+        for ulps in -4_i64..=4 {
+            let a = f64::from_bits((exact.to_bits() as i64 + ulps) as u64);
+            let m = CrankMotion {
+                start_angle: 0.0,
+                initial_speed: w0,
+                angular_acceleration: a,
+            };
+            if w0 * w0 + 2.0 * a * end < 0.0 {
+                below += 1;
+            }
+            let last = m.at_angle(end).unwrap();
+            assert!(last.speed < 1e-7, "ω at the end {} (α = {a:?})", last.speed);
+            let g = m.grid(0.0, end, 1001).unwrap();
+            assert_eq!(g.last().unwrap().speed, last.speed);
+        }
+        assert!(below > 0, "test set-up: no ω² a round-off below 0");
+        let short = CrankMotion {
+            start_angle: 0.0,
+            initial_speed: w0,
+            angular_acceleration: exact * (1.0 + 1e-9),
+        };
+        assert!(matches!(
+            short.at_angle(end),
+            Err(MotionError::Stops { .. })
+        ));
+        assert!(short.grid(0.0, end, 1001).is_err());
     }
 
     #[test]

@@ -7,7 +7,10 @@ use super::data::{self, CaseSummary, MechanismSummary};
 use super::doc::{Align, Block, Doc};
 use super::envelope::{ChartData, ChartRecorder};
 use super::svg::{self, MAX_POINTS};
-use super::{fmt_num, fmt_pct, pct_diff, write_report, Better};
+use super::{
+    delta, fmt_delta, fmt_num, round_off_floor, signed, write_report, Better, Delta,
+    ROUND_OFF_LEGEND, SIGN_LEGEND,
+};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -197,10 +200,17 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
         let mut parts = Vec::new();
         if let Some(r) = reference.get(metric).filter(|v| v.is_finite()) {
             for (m, v) in present.iter().filter(|(m, _)| m.name != reference.name) {
-                let d = pct_diff(*v, r);
+                let d = delta(
+                    *v,
+                    round_off_floor(metric, |k| m.get(k)),
+                    r,
+                    round_off_floor(metric, |k| reference.get(k)),
+                );
                 let verdict = match d {
-                    Some(d) if d.abs() < 0.05 => "equal".to_string(),
-                    Some(d) => {
+                    Delta::BothRoundOff => "equal: both 0 up to round-off".to_string(),
+                    Delta::OneRoundOff => "not comparable: one is 0 up to round-off".to_string(),
+                    Delta::Percent(Some(d)) if d.abs() < 0.05 => "equal".to_string(),
+                    Delta::Percent(Some(d)) => {
                         let is_better = match direction {
                             Better::Lower => d < 0.0,
                             Better::Higher => d > 0.0,
@@ -212,7 +222,7 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
                             if is_better { "better" } else { "worse" }
                         )
                     }
-                    None => "not comparable".to_string(),
+                    Delta::Percent(None) => "not comparable".to_string(),
                 };
                 parts.push(format!(
                     "`{}` {} vs `{}` {} ({verdict})",
@@ -351,12 +361,15 @@ fn metric_tables(s: &CaseSummary) -> Vec<Block> {
                         .map(|m| fmt_num(m.get(n).unwrap_or(f64::NAN))),
                 );
                 let r = reference.get(n);
+                let r_floor = round_off_floor(n, |k| reference.get(k));
                 for m in &s.mechanisms[1..] {
                     let d = match (m.get(n), r) {
-                        (Some(v), Some(r)) => pct_diff(v, r),
-                        _ => None,
+                        (Some(v), Some(r)) => {
+                            delta(v, round_off_floor(n, |k| m.get(k)), r, r_floor)
+                        }
+                        _ => Delta::Percent(None),
                     };
-                    row.push(fmt_pct(d));
+                    row.push(fmt_delta(d));
                 }
                 row
             })
@@ -366,6 +379,9 @@ fn metric_tables(s: &CaseSummary) -> Vec<Block> {
             align: align.clone(),
             rows,
         });
+        if metrics.iter().any(|(_, n)| signed(n)) {
+            blocks.push(Block::Paragraph(SIGN_LEGEND.into()));
+        }
     }
     blocks
 }
@@ -450,7 +466,8 @@ pub(super) fn case_report(
     doc.push(Block::Paragraph(format!(
         "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
          for loads, torques, power need and losses; higher is better for efficiency and output. \
-         Values in SI units as in `summary.json`; — where a mechanism has no such metric."
+         Values in SI units as in `summary.json`; — where a mechanism has no such metric. \
+         {ROUND_OFF_LEGEND}"
     )));
     if s.mechanisms.len() > 1 {
         doc.push(Block::Heading(2, "Which is better".into()));

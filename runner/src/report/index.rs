@@ -139,6 +139,13 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
             align,
             rows,
         });
+        doc.push(Block::Paragraph(
+            "Mean drive power: of the torque the drive applies to the crankshaft, positive in \
+             the direction of rotation: positive when the drive delivers power to the machine \
+             (a pump's need), negative when the machine delivers it (an engine whose gas drives \
+             the crank). Peaks are magnitudes."
+                .into(),
+        ));
     }
     if !sweeps.is_empty() {
         doc.push(Block::Heading(2, "Sweeps".into()));

@@ -6,7 +6,10 @@ use super::data::{self, parse_quantity, SweepTable};
 use super::doc::{Align, Block, Doc};
 use super::heatmap::{self, HeatMap};
 use super::svg::{self, LineChart, Series};
-use super::{better, fmt_num, fmt_pct, pct_diff, write_report, Better, KEY_METRICS};
+use super::{
+    better, delta, fmt_num, fmt_pct, round_off_floor, signed, write_report, Better, Delta,
+    KEY_METRICS, ROUND_OFF_LEGEND, SIGN_LEGEND,
+};
 use std::path::Path;
 
 /// One swept field's values as an axis.
@@ -137,13 +140,22 @@ fn layout(t: &SweepTable) -> Layout {
     })
 }
 
-/// The difference of `mechanism` to the reference per point, in %.
+/// The difference of `mechanism` to the reference per point, in %: NaN where undefined or
+/// where a value is within its round-off floor ([`round_off_floor`], from the same point's
+/// metrics), so that neither a chart nor a range shows a % of round-off.
 fn differences(t: &SweepTable, metric: &str, mechanism: &str, reference: &str) -> Vec<f64> {
     match (t.column(mechanism, metric), t.column(reference, metric)) {
         (Some(v), Some(r)) => v
             .iter()
             .zip(r)
-            .map(|(v, r)| pct_diff(*v, *r).unwrap_or(f64::NAN))
+            .enumerate()
+            .map(|(k, (v, r))| {
+                let floor = |m: &str| round_off_floor(metric, |x| Some(t.column(m, x)?[k]));
+                match delta(*v, floor(mechanism), *r, floor(reference)) {
+                    Delta::Percent(Some(d)) => d,
+                    _ => f64::NAN,
+                }
+            })
             .collect(),
         _ => vec![f64::NAN; t.cases.len()],
     }
@@ -475,7 +487,8 @@ pub(super) fn sweep_report(
          metrics (the first present of each entry of the list mechanical_efficiency; \
          power_loss_mean; power_need_mean or output_power_mean; total_torque_max or \
          inertial_torque_max; inertial_torque_max; total_crank_pin_force_max or \
-         inertial_crank_pin_force_max; total_power_mean or inertial_power_mean): {}.",
+         inertial_crank_pin_force_max; total_power_mean or inertial_power_mean): {}. \
+         {ROUND_OFF_LEGEND}",
         keys.iter()
             .map(|k| format!("`{k}`"))
             .collect::<Vec<_>>()
@@ -506,6 +519,9 @@ pub(super) fn sweep_report(
             },
         ));
         doc.push(metric_table(&t, metric, &reference));
+        if signed(metric) {
+            doc.push(Block::Paragraph(SIGN_LEGEND.into()));
+        }
     }
     let plots = match &layout {
         Layout::Line(axis) => line_charts(&t, &keys, &reference, axis),
