@@ -2,7 +2,7 @@
 //! against the published correlation evaluated by hand (mep·V_d·n/2 for a four-stroke engine;
 //! the cam's follower load and contact friction of the Thai thesis §2.5.d), switched off, and
 //! over a run (their powers integrate to what the summary reports); the PNH/Sandoval-Heywood
-//! fmep breakdown against the validation note's round engine (§7.2).
+//! fmep breakdown against the round engine of `docs/validation/engine-friction.md`.
 
 mod common;
 
@@ -324,7 +324,7 @@ fn switched_off_components_leave_the_budget_as_it_was() {
     assert_eq!(e.field, "friction.intake_pressure");
 }
 
-/// The validation note's round engine (§7.2) through the cross-check's own scaling:
+/// The round engine of `docs/validation/engine-friction.md` through the cross-check's own scaling:
 /// B = S = 100 mm gives mains 2 × (50, 20 mm), rod 1 × (40, 20 mm), 2 cam bearings, 2 valves of
 /// 10 mm lift; r_c = 8, OHV flat follower, 1000 rpm, p_i = p_a.
 fn round_engine(model: FmepModel) -> EngineLosses {
@@ -349,7 +349,7 @@ fn pnh_breakdown_of_the_round_engine() {
         0.1,
         rpm(1000.0),
     );
-    // Note §7.2, kPa: exact decimals to 1e-9; gas loading printed to 4 decimals, groups and
+    // docs/validation/engine-friction.md, kPa: exact decimals to 1e-9; gas loading printed to 4 decimals, groups and
     // total to 3.
     let kpa = |x: f64| x / 1e3;
     close("seals", kpa(f.crank_seals), 6.1, 1e-9);
