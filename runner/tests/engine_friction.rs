@@ -81,12 +81,13 @@ fmep_model = "pnh""#,
             let p = s.get(&format!("power_loss_mean_{c}")).unwrap();
             assert!(p > 0.0, "{name}: {c} = {p}");
         }
-        // Constant speed: Bishop's accessories, 2.69 kPa·3^1.5 × V_d × 25 /s (Thai 2.5.e.3.2).
-        let acc = 2.69e3 * 3f64.powf(1.5) * vd * 25.0;
-        let got = s.get("power_loss_mean_accessories").unwrap();
+        // Constant speed: Bishop's accessories mep (2.69 kPa at 1000 rpm, growing as N^1.5;
+        // docs/validation/thai-thesis.md) at 3000 rpm is 2.69·3^1.5 = 13.977 kPa (±0.005·5.2
+        // from the printed 2.69); the mep is the mean power over V_d·N/120.
+        let got = s.get("power_loss_mean_accessories").unwrap() / (vd * 25.0);
         assert!(
-            (got / acc - 1.0).abs() < 1e-12,
-            "{name}: {got} against {acc}"
+            (got - 13.977e3).abs() <= 0.005e3 * 3f64.powf(1.5),
+            "{name}: {got} against 13.977 kPa"
         );
         // The fmep metrics the runner adds after the run.
         let m = engine_metrics(

@@ -5,7 +5,7 @@
 //! output torque) within 15 %. Why not closer: the thesis's masses and centres of gravity are
 //! estimates it does not print in full (we use the masses its inertial tables imply, which
 //! reproduce its crank-pin forces to 0.1 %), its ring heights are missing from the seed (2 and
-//! 4 mm, validation note §7.3), and the losses grow with the inertial loads at speed.
+//! 4 mm, docs/validation/engine-friction.md), and the losses grow with the inertial loads at speed.
 
 use cardan_runner::case::load_file;
 use cardan_runner::run_case;

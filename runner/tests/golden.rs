@@ -26,31 +26,88 @@ fn round(v: &mut Value) {
     }
 }
 
+/// Runs the shipped case `configs/<stem>.toml` and compares its rounded summary with
+/// `golden/<stem>.snap`.
+fn check(stem: &str) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let file = root.join("configs").join(format!("{stem}.toml"));
+    let cases = case::load_file(&file).unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        cases[0].sweep.is_none(),
+        "{stem} is a sweep: its points are checked by running it (runner/tests/sweep.rs)"
+    );
+    let case = &cases[0];
+    let mut summary = output::summary_json(
+        case,
+        &run_case(case, None).unwrap_or_else(|e| panic!("{e}")),
+    );
+    round(&mut summary);
+    insta::with_settings!({ snapshot_path => root.join("golden"), prepend_module_to_snapshot => false, omit_expression => true }, {
+        insta::assert_json_snapshot!(stem, summary);
+    });
+}
+
+/// One test per shipped case, so that every mismatch is reported, not only the first; the
+/// list is checked against `configs/` by `every_shipped_case_has_its_golden_test`.
+macro_rules! golden {
+    ($($test:ident => $stem:literal,)*) => {
+        $(
+            #[test]
+            fn $test() {
+                check($stem);
+            }
+        )*
+        const STEMS: &[&str] = &[$($stem),*];
+    };
+}
+
+golden! {
+    example_compressor => "example-compressor",
+    example_offset_engine => "example-offset-engine",
+    example_scotch_yoke_compressor => "example-scotch-yoke-compressor",
+    karhula_engine_r60_l140_a0_w200pi_titanium => "karhula-engine-r60-l140-a0-w200pi-titanium",
+    karhula_pump_r60_l140_a0_w30pi => "karhula-pump-r60-l140-a0-w30pi",
+    karhula_pump_r60_l140_a0_w3pi => "karhula-pump-r60-l140-a0-w3pi",
+    karhula_r60_l140_a0_w200pi_titanium => "karhula-r60-l140-a0-w200pi-titanium",
+    karhula_r60_l140_a0_w200pi => "karhula-r60-l140-a0-w200pi",
+    karhula_r60_l140_a0_w3pi => "karhula-r60-l140-a0-w3pi",
+    karhula_r60_l140_a100pi_w200pi => "karhula-r60-l140-a100pi-w200pi",
+    karhula_r60_l140_a100pi_w30pi => "karhula-r60-l140-a100pi-w30pi",
+    karhula_r60_l140_a100pi_w3pi => "karhula-r60-l140-a100pi-w3pi",
+    karhula_r60_l140_a200pi_w200pi => "karhula-r60-l140-a200pi-w200pi",
+    nunes_op_r26_l90_2000rpm_lead10 => "nunes-op-r26-l90-2000rpm-lead10",
+    nunes_op_r26_l90_2000rpm => "nunes-op-r26-l90-2000rpm",
+    vidinsky_hm2_p75_r340 => "vidinsky-hm2-p75-r340",
+    vidinsky_hm3_p75_r510 => "vidinsky-hm3-p75-r510",
+}
+
 #[test]
-fn shipped_cases_match_golden_summaries() {
+fn every_shipped_case_has_its_golden_test() {
+    // Every non-sweep case under configs/ is in the list above, and every listed case and
+    // snapshot exists: a case added without its test, or a test left after its case, fails.
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let (files, failures) = cardan_runner::run::case_files(&[root.join("configs")]);
     assert!(failures.is_empty(), "{failures:?}");
-    assert!(files.len() >= 8, "the shipped cases are missing: {files:?}");
-    for file in files {
-        // A sweep's points are checked by running it (runner/tests/sweep.rs, and CI's main job).
-        let cases = case::load_file(&file).unwrap_or_else(|e| panic!("{e}"));
-        if cases[0].sweep.is_some() {
-            continue;
-        }
-        let case = &cases[0];
-        let mut summary = output::summary_json(
-            case,
-            &run_case(case, None).unwrap_or_else(|e| panic!("{e}")),
-        );
-        round(&mut summary);
-        let name = PathBuf::from(&file)
-            .file_stem()
-            .unwrap()
-            .to_string_lossy()
-            .to_string();
-        insta::with_settings!({ snapshot_path => root.join("golden"), prepend_module_to_snapshot => false, omit_expression => true }, {
-            insta::assert_json_snapshot!(name, summary);
-        });
+    let mut shipped: Vec<String> = files
+        .iter()
+        .filter(|file| {
+            let cases = case::load_file(file).unwrap_or_else(|e| panic!("{e}"));
+            cases[0].sweep.is_none()
+        })
+        .map(|file| {
+            PathBuf::from(file)
+                .file_stem()
+                .unwrap()
+                .to_string_lossy()
+                .to_string()
+        })
+        .collect();
+    shipped.sort();
+    let mut listed: Vec<String> = STEMS.iter().map(|s| s.to_string()).collect();
+    listed.sort();
+    assert_eq!(listed, shipped, "golden! {{ ... }} against configs/");
+    for stem in STEMS {
+        let snap = root.join("golden").join(format!("{stem}.snap"));
+        assert!(snap.is_file(), "{} is missing", snap.display());
     }
 }

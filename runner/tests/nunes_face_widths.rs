@@ -1,6 +1,6 @@
 //! Nunes (2017) Table 4.11 end to end (issue "Gears"): the 24 required face widths of the
 //! single cardan gear set, derived from the project's own closed-cycle OPGHE runs with no
-//! calibration. Procedure of the thesis (§4.4.3, shared/notes/nunes-2017-extraction.md 2.12):
+//! calibration. Procedure of the thesis (§4.4.3, docs/validation/nunes-2017.md):
 //! at every speed of the 0–8000 rpm sweep the peak gear-tooth load F_gt(N) (eq 2.75) times each
 //! member's dynamic factor Kv(N) (eqs 4.25–4.29, own pitch diameter, crank rpm) sizes
 //! FW_bend = F_gt Kv Km / (m σFP J) and FW_cont = F_gt Kv Km Z_E² / (d I σHP²) with d the

@@ -56,7 +56,7 @@ fn karhula_pump_totals_match_the_thesis() {
     }
 }
 
-/// Nunes (2017) §3.4.2-3.4.3 at 2000 rpm (shared/notes/nunes-2017-extraction.md, 4.2-4.3): the
+/// Nunes (2017) §3.4.2-3.4.3 at 2000 rpm (docs/validation/nunes-2017.md): the
 /// opposed-piston slider-crank (OPSCE) and geared hypocycloid (OPGHE) rows. The thesis's
 /// F_t = p·A + m_p·a is our cardan total piston-pin force (the rod moves with the piston); the
 /// slider-crank's rod force is F_t/cos φ, so its F_t is checked in crates/gas/tests. Tolerances

@@ -6,7 +6,7 @@
 //!
 //! - `valve_train`: one intake and one exhaust valve, each opened by a circular-arc cam acting
 //!   on a flat-faced or a roller follower (Thai thesis §2.5.d; note
-//!   `shared/notes/thai-thesis-extraction.md` §5.4), the camshaft at half the crank speed. This
+//!   `docs/validation/thai-thesis.md` §5.4), the camshaft at half the crank speed. This
 //!   is a **per-step cam model**, not a cycle mean: the cam is tied to the crank, so the lift,
 //!   the follower load (spring + preload + inertia, eq. 2.5.d.15) and the contact friction
 //!   (eq. 2.5.d.18) are known at every step and the friction torque shows the cam events. The
@@ -16,7 +16,7 @@
 //! - `pumping`: Bishop's throttling loss at the intake-manifold pressure p_i (eqs 2.5.f.1-2,
 //!   [`bishop_throttling_mep`]), P = mep·V_d·ω/(4π) (eq. 2.5.f.6); p_i = p_a (wide-open
 //!   throttle) by default. Bishop's valve-flow and blow-by terms (eqs 2.5.f.3-4) are left out:
-//!   their exponents are unreadable in the thesis's scan (note §5.6). The gas models hold the
+//!   their exponents are unreadable in the thesis's scan (`docs/validation/thai-thesis.md`). The gas models hold the
 //!   open strokes at ambient pressure (no pumping work), so nothing is counted twice.
 //!
 //! V_d is the swept volume of the crank train, π/4·B²·stroke (of an opposed-piston cylinder,
@@ -28,7 +28,7 @@
 //! pressure with the Sandoval & Heywood (2003) update ([`pnh_fmep`]) on an engine of this bore
 //! and stroke whose bearings and valves are scaled from the bore ([`pnh_engine`]); its constants
 //! are those of Sandoval (2002, MIT BSc thesis, eqs 7.a-11 and Table 4.2) as transcribed in
-//! `shared/notes/validation-cases.md` §7.1. [`engine_metrics`] compares it with the run's own
+//! `docs/validation/engine-friction.md`. [`engine_metrics`] compares it with the run's own
 //! fmep after a run.
 
 use crate::losses::{Friction, Oil};
@@ -495,7 +495,7 @@ pub fn pumping_power(engine: &EngineLosses, displacement: f64, crank_speed: f64)
 }
 
 /// The one-cylinder engine of bore B and stroke S the PNH cross-check runs on. Bearings and
-/// valves scaled from the bore with the proportions of the validation note's round engine
+/// valves scaled from the bore with the proportions of the round engine of `docs/validation/engine-friction.md`
 /// (§7.2: B = S = 100 mm) \[M\]: two main bearings of diameter 0.5·B and length 0.2·B, one rod
 /// bearing of 0.4·B by 0.2·B, two cam bearings, two valves of lift 0.1·B (the cam's lift if the
 /// case gives a valve-train geometry); the follower of the case's valve train (flat without

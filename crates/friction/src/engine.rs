@@ -111,7 +111,7 @@ pub fn bishop_pumps_misc_mep(crank_speed: f64) -> f64 {
 /// (Bishop: 10 inHg = 33.86 kPa). Inputs in Pa and rad/s.
 ///
 /// Confidence: structure high, the constants 12.87 and 3904 medium (OCR; see
-/// `shared/notes/thai-thesis-extraction.md` §5.6).
+/// `docs/validation/thai-thesis.md` §5.6).
 pub fn bishop_throttling_mep(
     ambient_pressure: f64,
     intake_pressure: f64,
@@ -163,7 +163,7 @@ pub enum Valvetrain {
 
 impl Valvetrain {
     /// (C_ff kPa·mm, C_rf kPa·mm·min, C_oh, C_om kPa) of Sandoval (2002) Table 4.2, as quoted in
-    /// `shared/notes/validation-cases.md` §7.1. C_rf of OHV is NaN.
+    /// `docs/validation/engine-friction.md`. C_rf of OHV is NaN.
     pub fn constants(self) -> (f64, f64, f64, f64) {
         match self {
             Valvetrain::SohcFinger => (600.0, 0.0227, 0.2, 42.8),
@@ -222,8 +222,7 @@ pub enum PnhVariant {
     /// bearings, skirt, the 0.088 r_c gas-loading term, cam bearings, oscillating hydrodynamic)
     /// × √(ν/ν₀) with ν₀ = 10.6 cSt (10W-30 at 90 °C), boundary factor 1 + 500/N (rings, flat
     /// follower, oscillating mixed). Sandoval's ring-tension/roughness factors and doubled K in
-    /// the gas-loading exponent are not applied (engine-specific calibrations; validation note
-    /// §7.1).
+    /// the gas-loading exponent are not applied (engine-specific calibrations; `docs/validation/engine-friction.md`).
     SandovalHeywood2003 {
         /// Kinematic viscosity of the oil at operating temperature over ν₀ = 10.6 cSt.
         viscosity_ratio: f64,
@@ -281,7 +280,7 @@ impl FmepBreakdown {
 /// Patton–Nitschke–Heywood (1989) friction mean effective pressure by component, Pa.
 ///
 /// Equations and constants as reproduced by Sandoval (2002, MIT BSc thesis, eqs 7.a–11, Table
-/// 4.2), quoted in `shared/notes/validation-cases.md` §7.1. Inside, as published: fmep in kPa,
+/// 4.2), quoted in `docs/validation/engine-friction.md`. Inside, as published: fmep in kPa,
 /// B, S, D, L, L_v in mm, N in rev/min, S̄p = 2 S N/60 in m/s. `crank_speed` in rad/s (> 0),
 /// `intake_pressure` p_i and `ambient_pressure` p_a in Pa (any consistent unit: only the ratio
 /// enters). Roller followers of the OHV layout have no constant and give NaN.

@@ -1,6 +1,6 @@
 //! Hydrodynamic journal bearings: Petroff, the short (Ocvirk) bearing with the eccentricity
-//! solved from the instantaneous load, the Thai thesis's eccentric form, and Raimondi–Boyd table
-//! values as a check.
+//! solved from the instantaneous load, and the Thai thesis's eccentric form. The formulas and
+//! the worked cases the tests use are summarised in `docs/validation/journal-bearings.md`.
 //!
 //! All models are quasi-static: the film force balances the instantaneous load at the
 //! instantaneous relative speed (no squeeze term, no whirl). For a dynamically loaded joint
@@ -101,7 +101,7 @@ pub fn sommerfeld_number(
 
 /// Power loss of an eccentric journal with the pressure term dropped, as the Thai thesis uses
 /// for the con-rod and main bearings: P = 2π μ R³ L Δω² / (c √(1 − ε²)) (Thai thesis eq.
-/// 2.5.a.13; `shared/notes/thai-thesis-extraction.md` §5.1). The eccentricity ratio ε is an
+/// 2.5.a.13; `docs/validation/thai-thesis.md`). The eccentricity ratio ε is an
 /// input here (the thesis does not solve it from the load); ε = 0 gives Petroff.
 pub fn thai_eccentric_loss(
     bearing: &JournalBearing,
@@ -124,7 +124,7 @@ pub fn thai_eccentric_loss(
 ///
 /// Source: Ocvirk (1952), NACA TN 2808; the load function
 /// W̄ = ε √(16ε² + π²(1 − ε²)) / (4(1 − ε²)²) in dimensionless form; written in Sommerfeld form in
-/// `shared/notes/validation-cases.md` §6.3.
+/// `docs/validation/journal-bearings.md`.
 pub fn ocvirk_sommerfeld(eccentricity_ratio: f64, l_over_d: f64) -> f64 {
     let e = eccentricity_ratio;
     let e2 = e * e;
@@ -132,8 +132,8 @@ pub fn ocvirk_sommerfeld(eccentricity_ratio: f64, l_over_d: f64) -> f64 {
         / (PI * e * (PI * PI * (1.0 - e2) + 16.0 * e2).sqrt())
 }
 
-/// Attitude angle of the short bearing, rad: tan φ = π √(1 − ε²) / (4ε) (Ocvirk 1952; note
-/// §6.3).
+/// Attitude angle of the short bearing, rad: tan φ = π √(1 − ε²) / (4ε) (Ocvirk 1952;
+/// `docs/validation/journal-bearings.md`).
 pub fn ocvirk_attitude_angle(eccentricity_ratio: f64) -> f64 {
     let e = eccentricity_ratio;
     (PI * (1.0 - e * e).sqrt()).atan2(4.0 * e)
@@ -191,13 +191,12 @@ pub struct ShortBearingState {
 /// full-film (2π) Couette term plus the load term,
 /// T = 2π μ R³ L |ω| / (c √(1 − ε²)) + c ε W sin φ / 2
 /// (Hamrock, *Fundamentals of Fluid Film Lubrication*, journal-bearing friction; the same split
-/// as the Thai thesis eq. 2.5.a.11 with F⊥ = W sin φ, which the thesis drops; with R–B values of
-/// Shigley Ex. 12-2, ε = 0.58, φ = 53°, S = 0.135, it gives rf/c = 3.50 as the chart), and the
-/// power is P = T |ω| with ω = `relative_speed`.
+/// as the Thai thesis eq. 2.5.a.11 with F⊥ = W sin φ, which the thesis drops), and the power is
+/// P = T |ω| with ω = `relative_speed`.
 ///
 /// Limits: W → 0 gives ε → 0 and Petroff; ω → 0 gives ε → 1 and P → 0 (the torque also tends
 /// to 0 because (1 − ε²) ~ √S). The short-bearing theory is accurate for L/D ≲ ½ and
-/// under-predicts ε (over-predicts S) for longer bearings (see [`RAIMONDI_BOYD_LD1`]).
+/// under-predicts ε (over-predicts S) for longer bearings, whose end leakage it overstates.
 pub fn short_bearing(
     bearing: &JournalBearing,
     viscosity: f64,
@@ -235,82 +234,6 @@ pub fn short_bearing(
         },
         friction_coefficient: torque / (w_load * bearing.radius),
     }
-}
-
-/// One row of a Raimondi–Boyd (1958) design table for a full journal bearing.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct RaimondiBoydRow {
-    /// Eccentricity ratio ε.
-    pub eccentricity_ratio: f64,
-    /// Sommerfeld number S.
-    pub sommerfeld: f64,
-    /// Attitude angle φ, degrees.
-    pub attitude_angle_deg: f64,
-    /// Friction variable (r/c) f (NaN where the note does not give it).
-    pub friction_variable: f64,
-    /// Flow variable Q/(r c N l) (NaN where not given).
-    pub flow_variable: f64,
-    /// Side-flow ratio Qs/Q (NaN where not given).
-    pub side_flow_ratio: f64,
-    /// Pressure ratio P/p_max (NaN where not given).
-    pub pressure_ratio: f64,
-}
-
-const fn rb(e: f64, s: f64, phi: f64, f: f64, q: f64, qs: f64, p: f64) -> RaimondiBoydRow {
-    RaimondiBoydRow {
-        eccentricity_ratio: e,
-        sommerfeld: s,
-        attitude_angle_deg: phi,
-        friction_variable: f,
-        flow_variable: q,
-        side_flow_ratio: qs,
-        pressure_ratio: p,
-    }
-}
-
-/// Raimondi–Boyd table, L/D = 1 (Raimondi & Boyd 1958, as tabulated in Shigley ch. 12),
-/// rows quoted from memory in `shared/notes/validation-cases.md` §6.1 (tag \[M\]: verify against
-/// the book before treating as golden), ordered by increasing ε.
-pub const RAIMONDI_BOYD_LD1: [RaimondiBoydRow; 4] = [
-    rb(0.4, 0.264, 63.10, 5.79, 3.99, 0.497, 0.484),
-    rb(0.6, 0.121, 50.58, 3.22, 4.33, 0.680, 0.415),
-    rb(0.8, 0.0446, 36.24, 1.70, 4.62, 0.842, 0.313),
-    rb(0.9, 0.0188, 26.45, 1.05, 4.74, 0.919, 0.247),
-];
-
-/// Raimondi–Boyd table, L/D = ¼: S and φ only, from `shared/notes/validation-cases.md` §6.3
-/// (tag \[M\]), ordered by increasing ε.
-pub const RAIMONDI_BOYD_LD_QUARTER: [RaimondiBoydRow; 6] = [
-    rb(0.1, 16.2, 82.31, f64::NAN, f64::NAN, f64::NAN, f64::NAN),
-    rb(0.2, 7.57, 74.99, f64::NAN, f64::NAN, f64::NAN, f64::NAN),
-    rb(0.4, 2.83, 61.45, f64::NAN, f64::NAN, f64::NAN, f64::NAN),
-    rb(0.6, 1.07, 48.14, f64::NAN, f64::NAN, f64::NAN, f64::NAN),
-    rb(0.8, 0.261, 33.31, f64::NAN, f64::NAN, f64::NAN, f64::NAN),
-    rb(0.9, 0.0736, 23.66, f64::NAN, f64::NAN, f64::NAN, f64::NAN),
-];
-
-/// Interpolates a Raimondi–Boyd table (rows ordered by increasing ε, hence decreasing S) at
-/// Sommerfeld number `sommerfeld`, linearly in ln S between the bracketing rows (the usual way
-/// of reading the log-scaled charts). Returns `None` outside the table's S range.
-pub fn raimondi_boyd_at(table: &[RaimondiBoydRow], sommerfeld: f64) -> Option<RaimondiBoydRow> {
-    table.windows(2).find_map(|pair| {
-        let (a, b) = (pair[0], pair[1]);
-        if sommerfeld <= a.sommerfeld && sommerfeld >= b.sommerfeld {
-            let t = (sommerfeld.ln() - a.sommerfeld.ln()) / (b.sommerfeld.ln() - a.sommerfeld.ln());
-            let lerp = |x: f64, y: f64| x + t * (y - x);
-            Some(RaimondiBoydRow {
-                eccentricity_ratio: lerp(a.eccentricity_ratio, b.eccentricity_ratio),
-                sommerfeld,
-                attitude_angle_deg: lerp(a.attitude_angle_deg, b.attitude_angle_deg),
-                friction_variable: lerp(a.friction_variable, b.friction_variable),
-                flow_variable: lerp(a.flow_variable, b.flow_variable),
-                side_flow_ratio: lerp(a.side_flow_ratio, b.side_flow_ratio),
-                pressure_ratio: lerp(a.pressure_ratio, b.pressure_ratio),
-            })
-        } else {
-            None
-        }
-    })
 }
 
 #[cfg(test)]

@@ -22,13 +22,13 @@
 //! * [`rolling_bearing`]: rolling bearings in Karhula's reading (A9.1.10–A9.1.35), Palmgren's
 //!   M = M0 + M1 and the SKF rolling + sliding model.
 //! * [`journal_bearing`]: Petroff, the short (Ocvirk) bearing with the eccentricity solved from the
-//!   instantaneous load, the Thai thesis's eccentric form (2.5.a.13) and Raimondi–Boyd table
-//!   values as a check.
+//!   instantaneous load and the Thai thesis's eccentric form (2.5.a.13).
 //! * [`engine`]: valve train (cam with flat or roller follower), Bishop (1964) accessory and
 //!   pumping correlations and the Patton–Nitschke–Heywood (1989) whole-engine fmep with the
 //!   Sandoval–Heywood (2003) update.
-//! * [`totals`]: Karhula's totals and efficiency definitions (A9.1.56–A9.1.75, eqs 9.1–9.16) and
-//!   an O(1)-memory cycle accumulator.
+//!
+//! Karhula's totals and efficiencies (A9.1.56–75) are the cycle summary's
+//! (`cardan_dynamics::summary`), which reads the losses these models give.
 //!
 //! Where a source's formula is doubtful (units, a constant) the source's reading is implemented
 //! so that its numbers reproduce, with the physically correct reading beside it, selectable by
@@ -39,7 +39,6 @@ pub mod journal_bearing;
 pub mod rings;
 pub mod rolling_bearing;
 pub mod skirt;
-pub mod totals;
 
 pub use engine::{
     bishop_pumps_misc_mep, bishop_throttling_mep, cam_drive_torque, flat_follower_friction,
@@ -47,9 +46,8 @@ pub use engine::{
     PnhEngine, PnhVariant, ShaftBearings, Valvetrain,
 };
 pub use journal_bearing::{
-    ocvirk_attitude_angle, ocvirk_eccentricity, ocvirk_sommerfeld, petroff, raimondi_boyd_at,
-    short_bearing, sommerfeld_number, thai_eccentric_loss, JournalBearing, RaimondiBoydRow,
-    ShortBearingState,
+    ocvirk_attitude_angle, ocvirk_eccentricity, ocvirk_sommerfeld, petroff, short_bearing,
+    sommerfeld_number, thai_eccentric_loss, JournalBearing, ShortBearingState,
 };
 pub use rings::{
     thai_ring_friction_per_length, thai_ring_power, AsperityContact, KarhulaRingPack, RingFilm,
@@ -60,13 +58,7 @@ pub use rolling_bearing::{
     RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
     KARHULA_LOAD_CONSTANT_PRINTED,
 };
-pub use skirt::{
-    coulomb_sliding, karhula_skirt, thai_skirt_mean_power, viscous_skirt, ViscousSkirt,
-};
-pub use totals::{
-    engine_mechanical_efficiency, engine_output_power, power_to_torque, pump_mechanical_efficiency,
-    pump_power_need, MachineLosses, WorkAccumulator,
-};
+pub use skirt::{coulomb_sliding, karhula_skirt, viscous_skirt, ViscousSkirt};
 
 /// Errors of the constructors and solvers of this crate.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -60,7 +60,7 @@ impl KarhulaRingPack {
     /// Karhula's pack for a piston of diameter `piston_diameter` (m): 2 compression rings of
     /// 2 mm at 0.19 MPa, 1 oil ring of 4 mm at 1 MPa, μ = 0.07. The ring heights of A9.1.2 are
     /// missing from the seed's text; 2 mm / 4 mm are as quoted in
-    /// `shared/notes/validation-cases.md` §7.3.
+    /// `docs/validation/engine-friction.md`.
     pub fn karhula(piston_diameter: f64) -> Result<Self, FrictionError> {
         Ok(Self {
             piston_diameter: positive("piston_diameter", piston_diameter)?,

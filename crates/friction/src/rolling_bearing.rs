@@ -1,12 +1,12 @@
 //! Rolling-bearing friction: Karhula's (2008) reading of the Palmgren model as printed, the
 //! Palmgren/Harris form M = M0 + M1, and the SKF rolling + sliding model.
 //!
-//! Why two Palmgren readings (validation note, finding 3): Karhula's load term
+//! Why two Palmgren readings (`docs/validation/rolling-bearings.md`): Karhula's load term
 //! T_L = 0.009 F^1.55 C0^−0.55 d_m (A9.1.26) is about 18× the Harris/Palmgren deep-groove value
 //! f1 = 0.0005 (P0/C0)^0.55 for a 6208 at 2 kN (0.313 vs 0.0174 N·m), and his low-speed viscous
 //! constant 24.1 f0 d_m³ (A9.1.30) is 55 % above his own high-speed form at νn = 2000
 //! (9.79e-2 · 2000^(2/3) = 15.5), while Palmgren's 160e-7 (N·mm units, = 16 in SI) is continuous
-//! to within 1 %. The 6208 example (note §5.2) totals 0.378 N·m in Karhula's reading against
+//! to within 1 %. The 6208 example (`docs/validation/rolling-bearings.md`) totals 0.378 N·m in Karhula's reading against
 //! 0.0836 N·m in the Harris reading: a factor 4.5. [`RollingReading::Karhula`] reproduces the
 //! thesis; [`RollingReading::Palmgren`] is the physically correct reading.
 //!
@@ -85,14 +85,14 @@ pub struct PalmgrenCoefficients {
 
 impl PalmgrenCoefficients {
     /// Deep-groove ball bearing, Harris/Palmgren: z = 0.0005 (range 0.0004–0.0006), y = 0.55,
-    /// f0 = 2 (validation note §5.1, tag \[M\]).
+    /// f0 = 2 (recalled, not read: `docs/validation/rolling-bearings.md`).
     pub const DEEP_GROOVE_BALL: Self = Self {
         f0: 2.0,
         z: 0.0005,
         y: 0.55,
     };
     /// Deep-groove ball bearing, older SKF catalogue form f1 = 0.0007 (P0/C0)^0.5, f0 = 2
-    /// (validation note §5.2, tag \[M\]).
+    /// (recalled, not read: `docs/validation/rolling-bearings.md`).
     pub const DEEP_GROOVE_BALL_OLD_SKF: Self = Self {
         f0: 2.0,
         z: 0.0007,
@@ -100,7 +100,7 @@ impl PalmgrenCoefficients {
     };
     /// Cylindrical roller bearing with cage under radial load, Harris: f1 = 0.0002–0.0004
     /// (mid value, constant), f0 = 2–3 (oil bath; 2.5 taken). Memory values \[M\], not in the
-    /// validation note: check against Harris & Kotzalas before relying on them.
+    /// `docs/validation/rolling-bearings.md`: check against Harris & Kotzalas before relying on them.
     pub const CYLINDRICAL_ROLLER: Self = Self {
         f0: 2.5,
         z: 0.0003,
@@ -110,7 +110,7 @@ impl PalmgrenCoefficients {
 
 /// SKF rolling + sliding model constants of a deep-groove ball bearing series (SKF catalogue
 /// "Rolling bearings", friction chapter, table of geometry constants; values from the
-/// validation note §5.1, tag \[Q, low\]: verify against the catalogue).
+/// `docs/validation/rolling-bearings.md`, low confidence: verify against the catalogue).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SkfDeepGrooveBall {
     /// Rolling-frictional-moment constant R1.

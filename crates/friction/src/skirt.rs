@@ -3,8 +3,8 @@
 //! * [`coulomb_sliding`]: Coulomb friction on a normal force; serves a piston skirt on its side
 //!   force, a crosshead, or a Scotch-yoke slot on the slot's normal force.
 //! * [`karhula_skirt`]: Karhula (2008) A9.1.5 with μ_skirt = 0.09.
-//! * [`viscous_skirt`], [`thai_skirt_mean_power`]: the Thai thesis's Couette (Petroff-type)
-//!   skirt, eqs 2.5.c.1–3, which does not depend on the side force.
+//! * [`viscous_skirt`]: the Thai thesis's Couette (Petroff-type) skirt, eqs 2.5.c.1–2, which
+//!   does not depend on the side force.
 
 use crate::{positive, FrictionError, SlidingLoss};
 use std::f64::consts::PI;
@@ -65,9 +65,9 @@ impl ViscousSkirt {
 /// F = 2π μ R L |U| / C_p with R = B/2 (Thai thesis eqs 2.5.c.1–2), P = F |U|.
 ///
 /// `viscosity` μ in Pa·s, `piston_speed` U in m/s. The thesis evaluates it at the mean piston
-/// speed instead ([`thai_skirt_mean_power`]); the cycle mean of this instantaneous form is
-/// larger by ⟨U²⟩/S̄p², which is π²/8 = 1.234 for a harmonic stroke (cardan gear) and about the
-/// same for a slider crank.
+/// speed S̄p instead (eq. 2.5.c.3, P = π μ B L S̄p² / C_p: this function at U = S̄p); the cycle
+/// mean of this instantaneous form is larger by ⟨U²⟩/S̄p², which is π²/8 = 1.234 for a harmonic
+/// stroke (cardan gear) and about the same for a slider crank.
 pub fn viscous_skirt(skirt: &ViscousSkirt, viscosity: f64, piston_speed: f64) -> SlidingLoss {
     let u = piston_speed.abs();
     let force = 2.0 * PI * viscosity * 0.5 * skirt.diameter * skirt.length * u / skirt.clearance;
@@ -75,10 +75,4 @@ pub fn viscous_skirt(skirt: &ViscousSkirt, viscosity: f64, piston_speed: f64) ->
         friction_force: force,
         power: force * u,
     }
-}
-
-/// The Thai thesis's skirt power at the mean piston speed, as printed (eq. 2.5.c.3):
-/// P = (π μ B L / C_p) S̄p², W, with `mean_piston_speed` S̄p = 2 · stroke · N/60 in m/s.
-pub fn thai_skirt_mean_power(skirt: &ViscousSkirt, viscosity: f64, mean_piston_speed: f64) -> f64 {
-    PI * viscosity * skirt.diameter * skirt.length / skirt.clearance * mean_piston_speed.powi(2)
 }

@@ -1,4 +1,4 @@
-//! Engine-level correlations against `shared/notes/validation-cases.md` §7.1–7.2 and the
+//! Engine-level correlations against `docs/validation/engine-friction.md` and the
 //! Thai thesis (Bishop).
 
 use cardan_friction::engine::BISHOP_EXHAUST_FULL_LOAD;
@@ -9,7 +9,7 @@ use cardan_friction::{
 use std::f64::consts::PI;
 
 fn round_engine() -> PnhEngine {
-    // Note §7.2: B = S = 100 mm, 1 cylinder, r_c = 8, mains 2 × (50, 20 mm), rod 1 × (40,
+    // docs/validation/engine-friction.md, the round engine: B = S = 100 mm, 1 cylinder, r_c = 8, mains 2 × (50, 20 mm), rod 1 × (40,
     // 20 mm), 2 cam bearings, 2 valves, L_v = 10 mm, OHV flat follower.
     PnhEngine {
         bore: 0.1,
@@ -45,7 +45,7 @@ fn rel(got: f64, want: f64, tol: f64) {
 
 #[test]
 fn pnh_round_engine_breakdown() {
-    // Note §7.2 [D]; each term is an exact decimal of the hand formula (e.g. seals
+    // The round engine (derived); each term is an exact decimal of the hand formula (e.g. seals
     // 1.22e5·50/(100²·100) = 6.1 kPa), so 1e-9 relative (floating-point rounding of the unit
     // conversions only). Gas loading is printed 21.7454 (4 decimals): ±5e-5 kPa; the group sums
     // and the total are printed with 3 decimals: ±5e-4 kPa.
@@ -71,7 +71,7 @@ fn pnh_round_engine_breakdown() {
 
 #[test]
 fn sandoval_heywood_update() {
-    // Derived by hand from note §7.1: with ν = ν0 only the boundary factor changes,
+    // Derived by hand from docs/validation/engine-friction.md: with ν = ν0 only the boundary factor changes,
     // 1 + 1000/N = 2 → 1 + 500/N = 1.5 at 1000 rpm: rings 4.06e4·1.5/100² = 6.09 kPa,
     // follower 400·1.5·2/100 = 12 kPa, oscillating mixed 32.1·1.5·10·2/100 = 9.63 kPa.
     // With ν/ν0 = 4 the hydrodynamic terms double: mains 3.03, skirt 19.6, rod 0.77568,

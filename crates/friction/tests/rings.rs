@@ -1,4 +1,4 @@
-//! Ring models: Karhula's pack (note §7.3), the Thai thesis's fixed-film friction, and the
+//! Ring models: Karhula's pack (`docs/validation/engine-friction.md`), the Thai thesis's fixed-film friction, and the
 //! Reynolds/Greenwood–Tripp film against closed forms and energy.
 
 use cardan_friction::{
@@ -8,7 +8,7 @@ use cardan_friction::{
 
 #[test]
 fn karhula_ring_pack_120mm() {
-    // Note §7.3 [D] from Karhula A9.1.3–4: d_pis = 120 mm → F_cont = 2·0.19·π·120·2 +
+    // docs/validation/engine-friction.md (derived) from Karhula A9.1.3–4: d_pis = 120 mm → F_cont = 2·0.19·π·120·2 +
     // 1·π·120·4 = 286.5 + 1508.0 = 1794.5 N; F_ring = 0.07·1794.5 = 125.6 N. Tolerance: half a
     // unit of the printed decimal (0.05 N).
     let pack = KarhulaRingPack::karhula(0.120).unwrap();
@@ -34,7 +34,7 @@ fn thai_pressure_ring() -> RingProfile {
 
 #[test]
 fn thai_ring_friction_illustration() {
-    // Thai-thesis note §5.3, "my illustration" [D]: μ = 0.01 Pa·s, U = 10 m/s; pressure ring
+    // docs/validation/thai-thesis.md, the ring illustration (derived): μ = 0.01 Pa·s, U = 10 m/s; pressure ring
     // b′ = 3 mm, r_p = 0.5, a1 = 0.0015 mm⁻¹, h_s = 5 µm: h(0) = 9.5 µm, R′ ≈ 85 N/m (pure
     // Couette at h_s would be 90 N/m); oil ring b′ = 0.8 mm, r_p = 1, a1 = 0.0025 mm⁻¹:
     // R′ ≈ 31 N/m. Printed to two digits: ±0.5 N/m.

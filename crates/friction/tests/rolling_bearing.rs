@@ -1,5 +1,5 @@
 //! Rolling-bearing friction against the derived 6208 case of
-//! `shared/notes/validation-cases.md` §5.2–5.3 (finding 3).
+//! `docs/validation/rolling-bearings.md`.
 
 use cardan_friction::{
     rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing,
@@ -25,7 +25,7 @@ fn case() -> (RollingBearing, f64, f64, f64) {
 
 #[test]
 fn bearing_6208_palmgren_harris() {
-    // Note §5.2 [D]: M0 = 66.21 N·mm, f1 = 0.0005 (P0/C0)^0.55 → M1 = 17.39 N·mm,
+    // docs/validation/rolling-bearings.md (derived): M0 = 66.21 N·mm, f1 = 0.0005 (P0/C0)^0.55 → M1 = 17.39 N·mm,
     // M = 83.60 N·mm. Tolerance: half a unit of the printed 2nd decimal (N·mm).
     let (b, f, w, nu) = case();
     let l = rolling_bearing_loss(
@@ -42,7 +42,7 @@ fn bearing_6208_palmgren_harris() {
 
 #[test]
 fn bearing_6208_palmgren_old_skf() {
-    // Note §5.2 [D]: f1 = 0.0007 (P0/C0)^0.5 → M1 = 27.25 N·mm, M = 93.46 N·mm, P = 29.4 W.
+    // docs/validation/rolling-bearings.md (derived): f1 = 0.0007 (P0/C0)^0.5 → M1 = 27.25 N·mm, M = 93.46 N·mm, P = 29.4 W.
     let (b, f, w, nu) = case();
     let l = rolling_bearing_loss(
         &b,
@@ -58,7 +58,7 @@ fn bearing_6208_palmgren_old_skf() {
 
 #[test]
 fn bearing_6208_karhula_reading_and_ratio() {
-    // Note §5.2–5.3 [D]: Karhula T_L = 0.3131 N·m, T_V = 0.0648 N·m; his load term is ~18×
+    // docs/validation/rolling-bearings.md (derived): Karhula T_L = 0.3131 N·m, T_V = 0.0648 N·m; his load term is ~18×
     // Harris's (0.313 vs 0.0174 N·m). Tolerances: half a unit of the printed last decimal; the
     // ratio 18.0 to one decimal.
     let (b, f, w, nu) = case();
@@ -92,7 +92,7 @@ fn bearing_6208_karhula_reading_and_ratio() {
 
 #[test]
 fn bearing_6208_skf() {
-    // Note §5.2 [D]: G_rr = 0.0722, φ_ish = 0.9375, M_rr = 49.85 N·mm; G_sl = 353.67,
+    // docs/validation/rolling-bearings.md (derived): G_rr = 0.0722, φ_ish = 0.9375, M_rr = 49.85 N·mm; G_sl = 353.67,
     // μ_sl = 0.050, M_sl = 17.70 N·mm; sum 67.55 N·mm.
     let (b, f, w, nu) = case();
     let l = rolling_bearing_loss(

@@ -5,8 +5,9 @@
 //! (eqs 2.41-2.42), the combustion efficiency of Blair (eq 2.56) and speed-dependent
 //! combustion timing (eqs 3.1-3.2).
 //!
-//! References: "eq" are the thesis's equations; "note §" the sections of
-//! shared/notes/nunes-2017-extraction.md; "L" lines of the thesis's OCR text.
+//! References: "eq" are the thesis's equations (summarised in docs/validation/nunes-2017.md);
+//! "L" lines of the thesis's OCR text; "note §" the sections of the extraction notes that
+//! docs/validation/nunes-2017.md summarises.
 //!
 //! Crank angles are measured from the opening top dead centre (IVO = 0, IVC = π, firing TDC
 //! = 2π, EVO = 3π: Table 3.2, L1178-1181), which is [`Chamber::cycle_angle`].

@@ -1,7 +1,7 @@
 //! The single-zone closed-cycle model against Nunes (2017), on its opposed-piston slider-crank
 //! engine (OPSCE): bore 0.06 m, each piston's stroke 0.052 m (crank r = 0.026 m, rod
 //! l = 0.090 m), compression ratio 10, piston mass 0.25 kg, chamber V = V_c + 2·A·x(θ).
-//! Reference values: shared/notes/nunes-2017-extraction.md §4.2 (thesis §3.4.2, L1287-1305)
+//! Reference values: docs/validation/nunes-2017.md (thesis §3.4.2, L1287-1305)
 //! and §4.6 (thesis §5.1.1, L2043-2083).
 //!
 //! Sweep: 10 to 8000 rpm in 10 rpm steps, as the thesis; each cycle on its 1° grid

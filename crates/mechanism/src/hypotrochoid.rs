@@ -1,5 +1,5 @@
 //! The hypotrochoid mechanism (HM) of Vidinsky (2021), "Mechanical Advantage of a Hypotrochoid
-//! Mechanism" (extraction: shared/notes/vidinsky-2021-extraction.md). A rotary machine: m piston
+//! Mechanism" (extraction: docs/validation/vidinsky-2021.md). A rotary machine: m piston
 //! links pivoted on the main axis turn with a multi-rod rotor, and the angle δ between adjacent
 //! links (the working chamber between them) swings harmonically.
 //!

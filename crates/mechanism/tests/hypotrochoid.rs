@@ -1,5 +1,5 @@
 //! The hypotrochoid mechanism against Vidinsky (2021) (values verified in
-//! shared/notes/vidinsky-2021-extraction.md §4), its own kinematic identities, finite
+//! docs/validation/vidinsky-2021.md), its own kinematic identities, finite
 //! differences of its state, and its option checks.
 
 use cardan_mechanism::hypotrochoid::{slider_crank_mechanical_advantage, Hypotrochoid};

@@ -83,8 +83,8 @@ pub struct TableEntry {
 const N: f64 = f64::NAN;
 const TEETH: [u32; 8] = [12, 14, 17, 21, 26, 35, 55, 135];
 
-// (pinion teeth, gear teeth, I, JP, JG) as transcribed in validation notes / Nunes extraction
-// §3.6 (Nunes 2017 Annex A.2–A.4, AGMA 908-B89 tables, φ 25°).
+// (pinion teeth, gear teeth, I, JP, JG) as transcribed in docs/validation/nunes-2017.md
+// (Nunes 2017 Annex A.2–A.4, AGMA 908-B89 tables, φ 25°).
 #[rustfmt::skip]
 const X0: &[(u32, u32, f64, f64, f64)] = &[
     (14, 14, 0.086, 0.33, 0.33),
