@@ -64,6 +64,7 @@ macro_rules! golden {
 golden! {
     example_compressor => "example-compressor",
     example_offset_engine => "example-offset-engine",
+    example_pressure_trace => "example-pressure-trace",
     example_scotch_yoke_compressor => "example-scotch-yoke-compressor",
     karhula_engine_r60_l140_a0_w200pi_titanium => "karhula-engine-r60-l140-a0-w200pi-titanium",
     karhula_pump_r60_l140_a0_w30pi => "karhula-pump-r60-l140-a0-w30pi",

@@ -153,7 +153,7 @@ fn bad_sweeps_name_their_field() {
         // A swept value is checked like any case value, naming the point.
         ("[sweep]\n\"geometry.rod_length\" = [0.14, 0.01]\n", &["geometry.rod_length", "pump-sweep-rod_length-0.01"][..]),
         // A swept value of the wrong type: the point, the field's path and the value.
-        ("[sweep]\n\"motion.steps\" = [\"many\"]\n", &["sweep point \"pump-sweep-steps-many\"", "motion.steps", "\"many\""][..]),
+        ("[sweep]\n\"motion.steps\" = [\"many\"]\n", &["\"pump-sweep-steps-many\"", "motion.steps", "\"many\"", "whole number"][..]),
     ] {
         let dir = tempfile::tempdir().unwrap();
         let report = run(dir.path(), &format!("\n{sweep}"));

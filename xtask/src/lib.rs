@@ -1,6 +1,6 @@
-//! The parts of README.md that are made from the code's registries: the metric table, the CSV
-//! column table and the mechanism list. `cargo xtask readme` writes them; a test fails when
-//! README.md and the registries disagree.
+//! The parts of the documentation that are made from the code's registries: the metric table,
+//! the CSV column table and the mechanism list (in README.md or docs/, [`DOCUMENTS`]).
+//! `cargo xtask readme` writes them; a test fails when a document and the registries disagree.
 
 use cardan_mechanism::{JointKind, MachineGeometry, MassInputs, OptionKind, Options, MECHANISMS};
 
@@ -78,24 +78,55 @@ fn mechanisms_table() -> String {
     t
 }
 
-/// `readme` with every generated section replaced by the registries' current text; an error
-/// names a missing marker.
-pub fn regenerate(readme: &str) -> Result<String, String> {
-    let mut text = readme.to_string();
+/// The documents that hold generated sections, relative to the repository's root.
+pub const DOCUMENTS: &[&str] = &["README.md", "docs/case-file.md", "docs/results.md"];
+
+/// `text` with every generated section it holds replaced by the registries' current text, and
+/// the names of the sections it held.
+pub fn regenerate(text: &str) -> Result<(String, Vec<&'static str>), String> {
+    let mut text = text.to_string();
+    let mut held = Vec::new();
     for (name, body) in sections() {
         let (begin, end) = (
             format!("<!-- generated:{name} -->\n"),
             format!("<!-- end:{name} -->"),
         );
-        let start = text
-            .find(&begin)
-            .ok_or_else(|| format!("README.md has no {begin:?} marker"))?
-            + begin.len();
+        let Some(start) = text.find(&begin).map(|i| i + begin.len()) else {
+            continue;
+        };
         let stop = text[start..]
             .find(&end)
-            .ok_or_else(|| format!("README.md has no {end:?} marker"))?
+            .ok_or_else(|| format!("{begin:?} has no {end:?} after it"))?
             + start;
         text.replace_range(start..stop, &body);
+        held.push(name);
     }
-    Ok(text)
+    Ok((text, held))
+}
+
+/// Every document of [`DOCUMENTS`] under `root` regenerated: (path, current text, fresh text);
+/// an error where a section is in no document or in two.
+pub fn regenerate_all(
+    root: &std::path::Path,
+) -> Result<Vec<(std::path::PathBuf, String, String)>, String> {
+    let mut out = Vec::new();
+    let mut seen: Vec<&str> = Vec::new();
+    for doc in DOCUMENTS {
+        let path = root.join(doc);
+        let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let (fresh, held) = regenerate(&text).map_err(|e| format!("{doc}: {e}"))?;
+        for h in held {
+            if seen.contains(&h) {
+                return Err(format!("the generated section {h} is in two documents"));
+            }
+            seen.push(h);
+        }
+        out.push((path, text, fresh));
+    }
+    for (name, _) in sections() {
+        if !seen.contains(&name) {
+            return Err(format!("no document has the generated section {name}"));
+        }
+    }
+    Ok(out)
 }

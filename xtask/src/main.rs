@@ -3,8 +3,8 @@
 //! - `cargo xtask run <case files or folders>... [--out DIR] [cardan run options]`: builds the
 //!   `cardan` command in release (cargo's progress shown) and runs `cardan run` with the same
 //!   arguments; its exit code is returned (0 all written, 1 some failed, 2 usage).
-//! - `cargo xtask readme [--check]`: writes README.md's generated tables from the registries,
-//!   or with `--check` exits 1 if they are stale.
+//! - `cargo xtask readme [--check]`: writes the generated tables of README.md and docs/ from
+//!   the registries, or with `--check` exits 1 if they are stale.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -45,32 +45,28 @@ fn run(args: &[String]) -> ExitCode {
 }
 
 fn readme(check: bool) -> ExitCode {
-    let path = root().join("README.md");
-    let text = match std::fs::read_to_string(&path) {
-        Ok(t) => t,
-        Err(e) => {
-            eprintln!("error: {}: {e}", path.display());
-            return ExitCode::FAILURE;
-        }
-    };
-    let fresh = match xtask::regenerate(&text) {
-        Ok(t) => t,
+    let documents = match xtask::regenerate_all(&root()) {
+        Ok(d) => d,
         Err(e) => {
             eprintln!("error: {e}");
             return ExitCode::FAILURE;
         }
     };
-    if check {
+    let mut status = ExitCode::SUCCESS;
+    for (path, text, fresh) in documents {
         if fresh == text {
-            ExitCode::SUCCESS
-        } else {
-            eprintln!("README.md's generated tables are stale: run `cargo xtask readme`");
-            ExitCode::FAILURE
+            continue;
         }
-    } else if let Err(e) = std::fs::write(&path, fresh) {
-        eprintln!("error: {}: {e}", path.display());
-        ExitCode::FAILURE
-    } else {
-        ExitCode::SUCCESS
+        if check {
+            eprintln!(
+                "{}'s generated tables are stale: run `cargo xtask readme`",
+                path.display()
+            );
+            status = ExitCode::FAILURE;
+        } else if let Err(e) = std::fs::write(&path, fresh) {
+            eprintln!("error: {}: {e}", path.display());
+            status = ExitCode::FAILURE;
+        }
     }
+    status
 }
