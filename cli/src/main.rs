@@ -67,7 +67,7 @@ enum Command {
     /// OUT/NAME/gear.json and report.md; exit 1 if the file is bad or the pair cannot work
     /// (a blocking check fails or a safety factor is below required_safety_factor, default 1).
     Gear {
-        /// The gear file (TOML; see README.md, "Gear pair calculator").
+        /// The gear file (TOML; see docs/gear-calculator.md).
         file: PathBuf,
         /// Output folder; the pair's folder in it is replaced as a whole.
         #[arg(long, default_value = "out")]

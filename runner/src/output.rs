@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 /// Version of the layout of `summary.json`; raised when a name or the shape changes.
 pub const SCHEMA_VERSION: u32 = 2;
 
-/// The summary of a case as JSON (see README.md, "Results").
+/// The summary of a case as JSON (see docs/results.md).
 pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
     let mut mechanisms = Map::new();
     for r in results {

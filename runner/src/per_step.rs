@@ -26,7 +26,7 @@ use std::thread::JoinHandle;
 
 /// The per-step CSV columns: a name template (units in the name; `{piston}`, `{body}`,
 /// `{joint}`, `{extra}`, `{family}` stand for names of the mechanism's topology and the run's
-/// load families), and its meaning. The README's column table is made from this list.
+/// load families), and its meaning. The column table of docs/results.md is made from this list.
 pub const COLUMNS: &[(&str, &str)] = &[
     ("crank_angle_deg", "crank angle θ from the +x axis (90° is top dead centre of an in-line machine)"),
     ("time_s", "time since the start of the run"),

@@ -177,7 +177,7 @@ pub(crate) const ROUND_OFF_LEGEND: &str =
      are within it (both 0 up to round-off, e.g. an inertial work over whole turns at constant \
      speed), `—` where one is.";
 
-/// The sign convention of the signed quantities (`cardan_dynamics::METRICS`, README "Torque
+/// The sign convention of the signed quantities (`cardan_dynamics::METRICS`, docs/results.md "Torque
 /// sign"), under every table that holds one.
 pub(crate) const SIGN_LEGEND: &str = "Signs: a drive torque, its mean, work and power are those \
      of the torque the drive applies to the crankshaft, positive in the direction of rotation: \

@@ -113,7 +113,8 @@ pub fn regenerate_all(
     let mut seen: Vec<&str> = Vec::new();
     for doc in DOCUMENTS {
         let path = root.join(doc);
-        let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let text =
+            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
         let (fresh, held) = regenerate(&text).map_err(|e| format!("{doc}: {e}"))?;
         for h in held {
             if seen.contains(&h) {

@@ -2,7 +2,7 @@
 //! geometry, the interference checks with their margins and remedies and, when a `[rating]`
 //! table is given, the AGMA 2001-D04 stresses and safety factors → `DIR/<name>/gear.json` and
 //! `DIR/<name>/report.md`. The physics is `cardan-gears`'; this module reads, validates and
-//! writes (see README.md, "Gear pair calculator").
+//! writes (see docs/gear-calculator.md).
 //!
 //! Values take units as case files do, from the one table of [`crate::units`]: a bare number
 //! is in the field's SI unit (lengths m, angles deg, speeds rad/s, power W, torque N·m, stress

@@ -100,7 +100,7 @@ pub struct GearReport {
 
 impl GearReport {
     /// Why the pair cannot work, each with its remedy; empty when the pair works. The verdict
-    /// (README.md, "Gear pair calculator"):
+    /// (docs/gear-calculator.md):
     ///
     /// * every blocking check passes: involute and trochoid interference, ring tip outside its
     ///   base circle, contact ratio >= 1, backlash >= 0 ([`check_info`]; the rules of thumb,

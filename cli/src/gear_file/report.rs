@@ -20,7 +20,7 @@ fn diameters_json(d: &cardan_gears::Diameters) -> Value {
 }
 
 impl GearReport {
-    /// `gear.json` (see README.md, "Gear pair calculator"): SI numbers (m, N, Pa, W, rad/s),
+    /// `gear.json` (see docs/gear-calculator.md): SI numbers (m, N, Pa, W, rad/s),
     /// angles in degrees in fields named `*_deg`.
     pub fn to_json(&self) -> Value {
         let p = &self.pair;

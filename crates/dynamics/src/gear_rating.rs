@@ -33,7 +33,7 @@ pub enum ToothLoad {
     /// The magnitude of the mesh force (the thesis's ring force |F_Σ02c|).
     RingForce,
     /// Karhula's reading, which reproduces his published dynamic tooth loads of the cardan gear
-    /// (App. 11.6.1: air pump within 1.2 %, engine within 0.4 %; README "Gear rating in runs")
+    /// (App. 11.6.1: air pump within 1.2 %, engine within 0.4 %; docs/case-file.md "Gear rating in runs")
     /// with the `karhula` mesh-force reading:
     /// - the mesh force of A8.1.10 with the thesis's sign slip: A6.2.1.36 and A6.2.1.51 give
     ///   the ring force the gas force's sign (F_comp02c = +F_comp23c) where A5.2.1.49 gives

@@ -1,5 +1,5 @@
 //! The metric registry: one definition per summary metric (name, unit, meaning, what it
-//! aggregates), from which `summary.json`'s units and the README's metric table are produced.
+//! aggregates), from which `summary.json`'s units and the metric table of docs/results.md are produced.
 //! A name may hold `{piston}`, `{body}`, `{joint}` (a name from the mechanism's topology) and
 //! `{family}` (`inertial`; with a gas model also `gas` and `total`).
 
@@ -156,7 +156,7 @@ fn matches_template(template: &str, name: &str) -> bool {
     false
 }
 
-/// The registry as a Markdown table (the README's metric table).
+/// The registry as a Markdown table (the metric table of docs/results.md).
 pub fn markdown_table() -> String {
     let mut t = String::from("| metric | unit | of | meaning |\n|---|---|---|---|\n");
     for d in METRICS {
