@@ -72,6 +72,9 @@ impl GasCase {
     }
 }
 
+/// A model read from its `[gas]` table, with the cylinder's clearance it takes.
+pub type ReadModel = (Arc<dyn GasModel + Send>, Clearance);
+
 /// A gas model a `[gas]` table may name: adding one is a module with its reader and one line
 /// in [`MODELS`].
 pub struct GasEntry {
@@ -81,7 +84,7 @@ pub struct GasEntry {
     pub machine: Option<Machine>,
     /// Reads the model's fields of the table (each read field is then known to the table's
     /// check of unknown keys), validated and in SI.
-    read: fn(&Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError>,
+    read: fn(&Fields) -> Result<ReadModel, CaseError>,
 }
 
 /// The registry of gas models.
@@ -278,13 +281,13 @@ fn compression_ratio(f: &Fields) -> Result<Clearance, CaseError> {
 }
 
 /// Karhula's air pump (ch. 6.2).
-fn karhula_pump(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+fn karhula_pump(f: &Fields) -> Result<ReadModel, CaseError> {
     let gas = polytropic(f)?;
     Ok((Arc::new(KarhulaPump { gas }), compression_ratio(f)?))
 }
 
 /// Karhula's four-stroke engine (ch. 6.3), in its reading.
-fn karhula_engine(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+fn karhula_engine(f: &Fields) -> Result<ReadModel, CaseError> {
     let mut engine = KarhulaEngine::new(
         polytropic(f)?,
         f.required("peak_pressure", Dimension::Pressure)?,
@@ -306,13 +309,13 @@ fn karhula_engine(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), C
 }
 
 /// The closed cycle of Nunes (2017).
-fn closed_cycle(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+fn closed_cycle(f: &Fields) -> Result<ReadModel, CaseError> {
     let c = closed_cycle_inputs(f)?;
     Ok((Arc::new(c), compression_ratio(f)?))
 }
 
 /// A reciprocating compressor with its valves, in its periodic steady state.
-fn compressor(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+fn compressor(f: &Fields) -> Result<ReadModel, CaseError> {
     let n_c = f.required("compression_exponent", Dimension::Number)?;
     let compressor = Compressor::new(
         f.required("suction_pressure", Dimension::Pressure)?,
@@ -329,7 +332,7 @@ fn compressor(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseE
     // A compressor must deliver, whatever its size.
     let gas = GasCase {
         name: "compressor",
-        model: Arc::new(compressor.clone()),
+        model: Arc::new(compressor),
         clearance,
     };
     let cylinder = gas.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;

@@ -13,7 +13,7 @@
 //! Karhula's models (A6.2.1.1): a trace of gauge pressure gives the net force on a piston
 //! whose crankcase is at ambient.
 
-use super::{Clearance, Fields, GasEntry};
+use super::{Clearance, Fields, GasEntry, ReadModel};
 use crate::case::{CaseError, Machine};
 use cardan_gas::{Chamber, GasError, GasMetric, GasModel, PreparedGas};
 use std::f64::consts::PI;
@@ -51,7 +51,7 @@ impl PressureTrace {
     }
 }
 
-fn read(f: &Fields) -> Result<(Arc<dyn GasModel + Send>, Clearance), CaseError> {
+fn read(f: &Fields) -> Result<ReadModel, CaseError> {
     let Some(name) = f.text("file")? else {
         return Err(f.refuse(
             "file",
