@@ -1,5 +1,5 @@
 //! Friction and mechanical efficiency against Karhula (2008), appendix 11.6.1
-//! (shared/reference/karhula-r60-l140.md, "With friction"), through the shipped sweeps.
+//! (docs/validation/karhula-2008.md, "With friction"), through the shipped sweeps.
 //!
 //! Tolerances are the issue's: mechanical efficiency within 0.03, power loss and power need (or
 //! output torque) within 15 %. Why not closer: the thesis's masses and centres of gravity are

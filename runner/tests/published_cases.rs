@@ -14,7 +14,7 @@ fn run_shipped(name: &str) -> Vec<MechanismResult> {
 }
 
 /// The summed lossless dynamics of the Karhula air pump (A7.1.1-60), inertial plus compression
-/// loads, against shared/reference/karhula-r60-l140.md, "Lossless totals, air pump, α = 0".
+/// loads, against docs/validation/karhula-2008.md, "Lossless totals, air pump, α = 0".
 /// Tolerances: 0.5 % on the total crank-pin forces (their peak is the gas force at TDC less
 /// the small inertial force, geometry-only at 3π and nearly so at 30π; we get 0.1 %) and 1 %
 /// on the peak total torques (the compression torque alone is 0.6 % above the thesis, see

@@ -1,4 +1,4 @@
-//! Karhula (2008) thesis geometry ZBA = 2.33·ZAA0 against shared/reference/karhula-r60-l140.md
+//! Karhula (2008) thesis geometry ZBA = 2.33·ZAA0 against docs/validation/karhula-2008.md
 //! (appendices 11.1.1, 11.2.1, 11.2.2 of the thesis).
 //!
 //! Tolerances:

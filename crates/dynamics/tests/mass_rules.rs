@@ -1,6 +1,6 @@
 //! The default mass rules of `cardan_mechanism::mass` (no override: `MassInputs::default()`
 //! plus the rod material) against Karhula (2008): the published inertial values of the
-//! shortest-rod machine (shared/reference/karhula-r60-l140.md, appendices 11.2.1-11.2.2), and
+//! shortest-rod machine (docs/validation/karhula-2008.md, appendices 11.2.1-11.2.2), and
 //! for other rods and bores the reductions the thesis states (ch. 11.2: mean inertial torque
 //! "10...30 %" smaller in the cardan gear, mean inertial power "12...40 %", "the longer is the
 //! rod and the bigger is the displacement, the better is the cardan gear machine", "the mass of

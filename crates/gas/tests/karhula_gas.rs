@@ -1,5 +1,5 @@
 //! Karhula (2008) gas loads for the thesis geometry ZBA = 2.33·ZAA0 against
-//! shared/reference/karhula-r60-l140.md (appendices 11.3.1, 11.3.2).
+//! docs/validation/karhula-2008.md (appendices 11.3.1, 11.3.2).
 //!
 //! Tolerances (the issue allows at most 2 %): pressures depend on geometry only and the thesis
 //! gives 4 digits: 0.1 %; pressure differences and peak torques: 1 % for the pump, 2 % for the
