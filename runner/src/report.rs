@@ -60,40 +60,25 @@ pub const KEY_METRICS: &[&[&str]] = &[
     &["total_power_mean", "inertial_power_mean"],
 ];
 
-/// Whether a larger or a smaller value of a metric is better.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Better {
-    Lower,
-    Higher,
-}
+/// Whether a larger or a smaller value of a metric is better (the registry's).
+pub(crate) use cardan_dynamics::metrics::Better;
 
-impl Better {
-    fn phrase(self) -> &'static str {
-        match self {
-            Better::Lower => "lower is better",
-            Better::Higher => "higher is better",
-        }
+/// The phrase of a direction in a report's sentences.
+pub(crate) fn phrase(direction: Better) -> &'static str {
+    match direction {
+        Better::Lower => "lower is better",
+        Better::Higher => "higher is better",
+        Better::Neither => "neither is better",
     }
 }
 
-/// The direction of a metric, where one is obvious: efficiencies and outputs higher; losses,
-/// peak loads and torques, power and torque need lower. None for the rest (kinematics, mean
-/// drive power, energy checks).
+/// The direction of a metric, from its definition in the registry
+/// (`cardan_dynamics::metrics`): none for an unknown metric or one whose direction is neither
+/// (kinematics, mean drive power, energy checks).
 pub(crate) fn better(metric: &str) -> Option<Better> {
-    if metric.ends_with("efficiency") || metric.starts_with("output_") {
-        Some(Better::Higher)
-    } else if metric.starts_with("power_loss")
-        || metric.starts_with("friction_")
-        || metric.ends_with("_need_mean")
-        || metric.ends_with("_force_max")
-        || metric.ends_with("_moment_max")
-        || metric.ends_with("_tangential_max")
-        || metric.ends_with("_torque_max")
-    {
-        Some(Better::Lower)
-    } else {
-        None
-    }
+    cardan_dynamics::metrics::find(metric)
+        .map(|d| d.better)
+        .filter(|b| *b != Better::Neither)
 }
 
 /// `(value − reference) / |reference|` in %, if defined.

@@ -24,6 +24,69 @@ impl Aggregation {
     }
 }
 
+/// The subject a metric belongs to: the sections of a case report's metric tables, in report
+/// order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Group {
+    /// Motion of the pistons and bodies, the mechanism's leverage, the run's duration.
+    Kinematics,
+    /// Forces and couples at one joint (a report makes one section per joint).
+    JointLoads,
+    /// Drive torque, power and work, the energy check, a pump's need and an engine's output.
+    DriveTorque,
+    /// The cylinder's pressure, the gas force and the closed cycle's or compressor's results.
+    Gas,
+    /// The rating of the gear meshes (AGMA, Buckingham, mesh losses).
+    GearRating,
+    /// Friction losses, friction mean effective pressures and the mechanical efficiency.
+    Losses,
+}
+
+impl Group {
+    /// Every group, in report order.
+    pub const ALL: [Group; 6] = [
+        Group::Kinematics,
+        Group::JointLoads,
+        Group::DriveTorque,
+        Group::Gas,
+        Group::GearRating,
+        Group::Losses,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Group::Kinematics => "kinematics",
+            Group::JointLoads => "joint loads",
+            Group::DriveTorque => "drive torque, power and work",
+            Group::Gas => "cylinder and gas",
+            Group::GearRating => "gear rating",
+            Group::Losses => "losses and efficiency",
+        }
+    }
+}
+
+/// Which way a metric is better, comparing two mechanisms on the same duty.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Better {
+    /// Loads, stresses, peak torques, needs, losses, errors.
+    Lower,
+    /// Efficiencies, outputs, safety factors, contact ratio, mechanical advantage.
+    Higher,
+    /// Neither (a state or a signed sum: stroke, speeds, mean drive power, kinetic energy
+    /// change, cycle time, pressures).
+    Neither,
+}
+
+impl Better {
+    pub fn name(self) -> &'static str {
+        match self {
+            Better::Lower => "lower",
+            Better::Higher => "higher",
+            Better::Neither => "—",
+        }
+    }
+}
+
 /// One metric's definition.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct MetricDef {
@@ -32,12 +95,18 @@ pub struct MetricDef {
     pub unit: &'static str,
     pub meaning: &'static str,
     pub aggregation: Aggregation,
+    /// The report section it belongs to.
+    pub group: Group,
+    /// Which way is better.
+    pub better: Better,
 }
 
 const fn def(
     name: &'static str,
     unit: &'static str,
     aggregation: Aggregation,
+    group: Group,
+    better: Better,
     meaning: &'static str,
 ) -> MetricDef {
     MetricDef {
@@ -45,75 +114,81 @@ const fn def(
         unit,
         meaning,
         aggregation,
+        group,
+        better,
     }
 }
 
 use Aggregation::{CrankTrain as T, Cylinder as Y, Run as R};
+use Better::{Higher as Hi, Lower as Lo, Neither as Ne};
+use Group::{
+    DriveTorque as D, Gas as G, GearRating as GR, JointLoads as J, Kinematics as K, Losses as L,
+};
 
 /// Every metric a summary may hold, in summary order.
 pub const METRICS: &[MetricDef] = &[
-    def("piston_stroke", "m", T, "top minus bottom dead-centre position of the piston pin"),
-    def("{piston}_velocity_max", "m/s", T, "largest piston speed along the cylinder"),
-    def("{piston}_acceleration_max", "m/s^2", T, "largest piston acceleration along the cylinder"),
-    def("{body}_cg_velocity_max", "m/s", T, "largest speed of the body's centre of gravity"),
-    def("{body}_cg_acceleration_max", "m/s^2", T, "largest acceleration of the body's centre of gravity"),
-    def("{body}_angular_velocity_max", "rad/s", T, "largest angular speed of the body"),
-    def("{body}_angular_acceleration_max", "rad/s^2", T, "largest angular acceleration of the body"),
-    def("{family}_{joint}_force_max", "N", T, "largest force magnitude at the joint (frictionless)"),
-    def("{family}_{joint}_moment_max", "N*m", T, "largest couple a slide carries (slides only)"),
-    def("{family}_{joint}_tangential_max", "N", T, "gear meshes: largest tangential (torque-transmitting) tooth load, along the pitch-circle tangent (Karhula A8.1.10)"),
-    def("{family}_torque_max", "N*m", T, "largest drive torque magnitude on the crankshaft"),
-    def("{family}_work", "J", T, "drive work ∫ T dθ over the run (Karhula A5.2.1.37); an engine's gas work is negative"),
-    def("{family}_torque_mean", "N*m", T, "work / crank-angle span (A5.2.1.38)"),
-    def("{family}_power_mean", "W", T, "T·ω averaged over crank angle, as the thesis tabulates (A5.2.1.39); the time average at constant speed"),
-    def("mechanical_advantage_max", "1", T, "largest drive torque per unit piston force, over the crank radius: |dx/dθ|/p, Vidinsky's (2021) F_out/F_in (eq 21)"),
-    def("mechanical_advantage_mean", "1", T, "the same averaged over the crank angle"),
-    def("torque_per_force_stroke_max", "1", T, "largest drive torque per unit piston force per unit stroke, |dx/dθ|/stroke: the fair comparison at equal displacement"),
-    def("kinetic_energy_change", "J", T, "kinetic energy of all bodies, end minus start: equals inertial_work (energy check)"),
-    def("energy_balance_error", "1", T, "|inertial_work − kinetic_energy_change| / ∫|T_inertial| dθ: a case fails above 1e-3"),
-    def("cycle_time", "s", R, "duration of the run"),
-    def("contact_ratio", "1", T, "gear rating: transverse contact ratio of the mesh's pair (the smallest over the meshes)"),
-    def("mesh_tangential_load_max", "N", T, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\", or Karhula's reading with \"thesis\""),
-    def("dynamic_tooth_load_max", "N", T, "gear rating: largest Buckingham dynamic tooth load (Karhula A8.1.1-14)"),
-    def("contact_stress_max", "Pa", T, "gear rating: largest AGMA 2001-D04 contact stress"),
-    def("contact_safety_factor", "1", T, "gear rating: smallest AGMA pitting safety factor S_H over the run (stress ratio)"),
-    def("bending_stress_max", "Pa", T, "gear rating: largest AGMA bending stress (with the bending geometry factors J known)"),
-    def("bending_safety_factor", "1", T, "gear rating: smallest AGMA bending safety factor S_F over the run"),
-    def("gear_mesh_power_loss_mean", "W", T, "gear rating: mean Anderson & Loewenthal mesh loss (A9.1.40-55), all gear sets"),
-    def("loss_work", "J", T, "friction: energy lost over the run, Σ ∫ P dt of every loss component (Karhula A9.1.68-71)"),
-    def("power_loss_mean", "W", T, "friction: loss_work / cycle_time (A9.1.56-59)"),
-    def("power_loss_mean_{component}", "W", T, "friction: one component's mean power loss: rings, skirt, a slide, a revolute joint's bearings, a gear mesh (by joint name); of an engine also valve_train, accessories, pumping"),
-    def("friction_torque_max", "N*m", T, "friction: largest drive torque that covers the losses, Σ P / ω"),
-    def("torque_need_mean", "N*m", T, "pump (net work into the crank): (total_work + loss_work) / crank-angle span (A9.1.64-65)"),
-    def("power_need_mean", "W", T, "pump: (total_work + loss_work) / cycle_time (A9.1.60-61)"),
-    def("output_torque_mean", "N*m", T, "engine (net work out of the crank): (−total_work − loss_work) / crank-angle span (A9.1.66-67)"),
-    def("output_power_mean", "W", T, "engine: (−total_work − loss_work) / cycle_time (A9.1.62-63)"),
-    def("mechanical_efficiency", "1", T, "pump: gas_work / (total_work + loss_work) (A9.1.72-73); engine: (−total_work − loss_work) / −total_work (A9.1.74-75)"),
-    def("fmep", "Pa", T, "engine with friction: the run's friction mean effective pressure, loss_work per swept volume π/4·B²·stroke per four-stroke cycle (4π of crank angle)"),
-    def("fmep_mechanical", "Pa", T, "engine with friction: fmep without the pumping component (the scope of fmep_pnh)"),
-    def("fmep_pnh", "Pa", T, "engine with friction: whole-engine mechanical fmep of Patton, Nitschke & Heywood (1989), or with Sandoval & Heywood's (2003) update, on a one-cylinder engine of this bore and stroke, crank-angle mean over the run: a cross-check of fmep_mechanical"),
-    def("fmep_pnh_crankshaft", "Pa", T, "engine with friction: fmep_pnh's main-bearing seals, main bearings and turbulent dissipation"),
-    def("fmep_pnh_reciprocating", "Pa", T, "engine with friction: fmep_pnh's piston skirt, rings, rod bearing and gas-pressure loading of the rings"),
-    def("fmep_pnh_valve_train", "Pa", T, "engine with friction: fmep_pnh's cam bearings, followers and oscillating valve-train terms"),
-    def("fmep_pnh_auxiliaries", "Pa", T, "engine with friction: fmep_pnh's oil and water pumps and non-charging alternator"),
-    def("cylinder_pressure_max", "Pa", Y, "largest absolute cylinder pressure"),
-    def("gas_force_max", "N", T, "largest gas force on the piston"),
-    def("imep", "Pa", Y, "closed cycle: indicated mean effective pressure W/V_d (Nunes eq 2.50)"),
-    def("indicated_work", "J", Y, "closed cycle: ∮p dV of the chamber (eq 2.48)"),
-    def("indicated_torque_mean", "N*m", Y, "closed cycle: W/(4π), the chamber's mean torque"),
-    def("indicated_power", "W", Y, "closed cycle: W·ω/(4π) (eqs 2.46, 2.49); compressor: W·ω/(2π)"),
-    def("peak_pressure", "Pa", Y, "closed cycle: largest pressure on its own integration step"),
-    def("peak_pressure_angle_deg", "deg", Y, "closed cycle: crank angle of the peak from the cycle's first top dead centre"),
-    def("combustion_efficiency", "1", Y, "closed cycle: η_c from λ (eq 2.56)"),
-    def("isfc", "kg/J", Y, "closed cycle: gross indicated specific fuel consumption (eq 2.52)"),
-    def("indicated_efficiency", "1", Y, "closed cycle: W over the fuel energy (eq 2.53)"),
-    def("heat_loss_fraction", "1", Y, "closed cycle: heat lost to the walls and to vaporisation, share of the fuel energy"),
-    def("exhaust_fraction", "1", Y, "closed cycle: energy left in the gas at exhaust opening, share of the fuel energy"),
-    def("unreleased_fraction", "1", Y, "closed cycle: fuel energy never released, share"),
-    def("delivered_mass_flow", "kg/s", Y, "compressor: mass delivered per second at the periodic steady state"),
-    def("volumetric_efficiency", "1", Y, "compressor: inducted volume at suction state over the swept volume"),
-    def("specific_energy", "J/kg", Y, "compressor: indicated work per kilogram delivered"),
-    def("discharge_temperature", "K", Y, "compressor: gas temperature at the end of compression"),
+    def("piston_stroke", "m", T, K, Ne, "top minus bottom dead-centre position of the piston pin"),
+    def("{piston}_velocity_max", "m/s", T, K, Ne, "largest piston speed along the cylinder"),
+    def("{piston}_acceleration_max", "m/s^2", T, K, Ne, "largest piston acceleration along the cylinder"),
+    def("{body}_cg_velocity_max", "m/s", T, K, Ne, "largest speed of the body's centre of gravity"),
+    def("{body}_cg_acceleration_max", "m/s^2", T, K, Ne, "largest acceleration of the body's centre of gravity"),
+    def("{body}_angular_velocity_max", "rad/s", T, K, Ne, "largest angular speed of the body"),
+    def("{body}_angular_acceleration_max", "rad/s^2", T, K, Ne, "largest angular acceleration of the body"),
+    def("{family}_{joint}_force_max", "N", T, J, Lo, "largest force magnitude at the joint (frictionless)"),
+    def("{family}_{joint}_moment_max", "N*m", T, J, Lo, "largest couple a slide carries (slides only)"),
+    def("{family}_{joint}_tangential_max", "N", T, J, Lo, "gear meshes: largest tangential (torque-transmitting) tooth load, along the pitch-circle tangent (Karhula A8.1.10)"),
+    def("{family}_torque_max", "N*m", T, D, Lo, "largest drive torque magnitude on the crankshaft"),
+    def("{family}_work", "J", T, D, Ne, "drive work ∫ T dθ over the run (Karhula A5.2.1.37); an engine's gas work is negative"),
+    def("{family}_torque_mean", "N*m", T, D, Ne, "work / crank-angle span (A5.2.1.38)"),
+    def("{family}_power_mean", "W", T, D, Ne, "T·ω averaged over crank angle, as the thesis tabulates (A5.2.1.39); the time average at constant speed"),
+    def("mechanical_advantage_max", "1", T, K, Hi, "largest drive torque per unit piston force, over the crank radius: |dx/dθ|/p, Vidinsky's (2021) F_out/F_in (eq 21)"),
+    def("mechanical_advantage_mean", "1", T, K, Hi, "the same averaged over the crank angle"),
+    def("torque_per_force_stroke_max", "1", T, K, Hi, "largest drive torque per unit piston force per unit stroke, |dx/dθ|/stroke: the fair comparison at equal displacement"),
+    def("kinetic_energy_change", "J", T, D, Ne, "kinetic energy of all bodies, end minus start: equals inertial_work (energy check)"),
+    def("energy_balance_error", "1", T, D, Lo, "|inertial_work − kinetic_energy_change| / ∫|T_inertial| dθ: a case fails above 1e-3"),
+    def("cycle_time", "s", R, K, Ne, "duration of the run"),
+    def("contact_ratio", "1", T, GR, Hi, "gear rating: transverse contact ratio of the mesh's pair (the smallest over the meshes)"),
+    def("mesh_tangential_load_max", "N", T, GR, Lo, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\", or Karhula's reading with \"thesis\""),
+    def("dynamic_tooth_load_max", "N", T, GR, Lo, "gear rating: largest Buckingham dynamic tooth load (Karhula A8.1.1-14)"),
+    def("contact_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA 2001-D04 contact stress"),
+    def("contact_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA pitting safety factor S_H over the run (stress ratio)"),
+    def("bending_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA bending stress (with the bending geometry factors J known)"),
+    def("bending_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA bending safety factor S_F over the run"),
+    def("gear_mesh_power_loss_mean", "W", T, GR, Lo, "gear rating: mean Anderson & Loewenthal mesh loss (A9.1.40-55), all gear sets"),
+    def("loss_work", "J", T, L, Lo, "friction: energy lost over the run, Σ ∫ P dt of every loss component (Karhula A9.1.68-71)"),
+    def("power_loss_mean", "W", T, L, Lo, "friction: loss_work / cycle_time (A9.1.56-59)"),
+    def("power_loss_mean_{component}", "W", T, L, Lo, "friction: one component's mean power loss: rings, skirt, a slide, a revolute joint's bearings, a gear mesh (by joint name); of an engine also valve_train, accessories, pumping"),
+    def("friction_torque_max", "N*m", T, L, Lo, "friction: largest drive torque that covers the losses, Σ P / ω"),
+    def("torque_need_mean", "N*m", T, D, Lo, "pump (net work into the crank): (total_work + loss_work) / crank-angle span (A9.1.64-65)"),
+    def("power_need_mean", "W", T, D, Lo, "pump: (total_work + loss_work) / cycle_time (A9.1.60-61)"),
+    def("output_torque_mean", "N*m", T, D, Hi, "engine (net work out of the crank): (−total_work − loss_work) / crank-angle span (A9.1.66-67)"),
+    def("output_power_mean", "W", T, D, Hi, "engine: (−total_work − loss_work) / cycle_time (A9.1.62-63)"),
+    def("mechanical_efficiency", "1", T, L, Hi, "pump: gas_work / (total_work + loss_work) (A9.1.72-73); engine: (−total_work − loss_work) / −total_work (A9.1.74-75)"),
+    def("fmep", "Pa", T, L, Lo, "engine with friction: the run's friction mean effective pressure, loss_work per swept volume π/4·B²·stroke per four-stroke cycle (4π of crank angle)"),
+    def("fmep_mechanical", "Pa", T, L, Lo, "engine with friction: fmep without the pumping component (the scope of fmep_pnh)"),
+    def("fmep_pnh", "Pa", T, L, Lo, "engine with friction: whole-engine mechanical fmep of Patton, Nitschke & Heywood (1989), or with Sandoval & Heywood's (2003) update, on a one-cylinder engine of this bore and stroke, crank-angle mean over the run: a cross-check of fmep_mechanical"),
+    def("fmep_pnh_crankshaft", "Pa", T, L, Lo, "engine with friction: fmep_pnh's main-bearing seals, main bearings and turbulent dissipation"),
+    def("fmep_pnh_reciprocating", "Pa", T, L, Lo, "engine with friction: fmep_pnh's piston skirt, rings, rod bearing and gas-pressure loading of the rings"),
+    def("fmep_pnh_valve_train", "Pa", T, L, Lo, "engine with friction: fmep_pnh's cam bearings, followers and oscillating valve-train terms"),
+    def("fmep_pnh_auxiliaries", "Pa", T, L, Lo, "engine with friction: fmep_pnh's oil and water pumps and non-charging alternator"),
+    def("cylinder_pressure_max", "Pa", Y, G, Ne, "largest absolute cylinder pressure"),
+    def("gas_force_max", "N", T, G, Lo, "largest gas force on the piston"),
+    def("imep", "Pa", Y, G, Ne, "closed cycle: indicated mean effective pressure W/V_d (Nunes eq 2.50)"),
+    def("indicated_work", "J", Y, G, Ne, "closed cycle: ∮p dV of the chamber (eq 2.48)"),
+    def("indicated_torque_mean", "N*m", Y, G, Ne, "closed cycle: W/(4π), the chamber's mean torque"),
+    def("indicated_power", "W", Y, G, Ne, "closed cycle: W·ω/(4π) (eqs 2.46, 2.49); compressor: W·ω/(2π)"),
+    def("peak_pressure", "Pa", Y, G, Ne, "closed cycle: largest pressure on its own integration step"),
+    def("peak_pressure_angle_deg", "deg", Y, G, Ne, "closed cycle: crank angle of the peak from the cycle's first top dead centre"),
+    def("combustion_efficiency", "1", Y, G, Hi, "closed cycle: η_c from λ (eq 2.56)"),
+    def("isfc", "kg/J", Y, G, Lo, "closed cycle: gross indicated specific fuel consumption (eq 2.52)"),
+    def("indicated_efficiency", "1", Y, G, Hi, "closed cycle: W over the fuel energy (eq 2.53)"),
+    def("heat_loss_fraction", "1", Y, G, Lo, "closed cycle: heat lost to the walls and to vaporisation, share of the fuel energy"),
+    def("exhaust_fraction", "1", Y, G, Lo, "closed cycle: energy left in the gas at exhaust opening, share of the fuel energy"),
+    def("unreleased_fraction", "1", Y, G, Lo, "closed cycle: fuel energy never released, share"),
+    def("delivered_mass_flow", "kg/s", Y, G, Hi, "compressor: mass delivered per second at the periodic steady state"),
+    def("volumetric_efficiency", "1", Y, G, Hi, "compressor: inducted volume at suction state over the swept volume"),
+    def("specific_energy", "J/kg", Y, G, Lo, "compressor: indicated work per kilogram delivered"),
+    def("discharge_temperature", "K", Y, G, Ne, "compressor: gas temperature at the end of compression"),
 ];
 
 /// The definition a metric name falls under: the matching template with the most fixed
@@ -158,13 +233,17 @@ fn matches_template(template: &str, name: &str) -> bool {
 
 /// The registry as a Markdown table (the metric table of docs/results.md).
 pub fn markdown_table() -> String {
-    let mut t = String::from("| metric | unit | of | meaning |\n|---|---|---|---|\n");
+    let mut t = String::from(
+        "| metric | unit | of | group | better | meaning |\n|---|---|---|---|---|---|\n",
+    );
     for d in METRICS {
         t.push_str(&format!(
-            "| `{}` | {} | {} | {} |\n",
+            "| `{}` | {} | {} | {} | {} | {} |\n",
             d.name,
             d.unit,
             d.aggregation.name(),
+            d.group.name(),
+            d.better.name(),
             d.meaning
         ));
     }
@@ -195,6 +274,77 @@ mod tests {
         // Names are unique.
         for (k, d) in METRICS.iter().enumerate() {
             assert!(METRICS[..k].iter().all(|e| e.name != d.name), "{}", d.name);
+        }
+    }
+
+    #[test]
+    fn groups_and_directions_follow_the_meaning() {
+        // Every group is used, and every metric's group and direction follow from its kind.
+        for g in Group::ALL {
+            assert!(METRICS.iter().any(|d| d.group == g), "{g:?} unused");
+        }
+        for d in METRICS {
+            let n = d.name;
+            let gear = d.meaning.starts_with("gear rating");
+            assert_eq!(gear, d.group == Group::GearRating, "{n}");
+            if d.aggregation == Aggregation::Cylinder {
+                assert_eq!(d.group, Group::Gas, "{n}");
+            }
+            if n.starts_with("{family}_{joint}_") {
+                assert_eq!(
+                    (d.group, d.better),
+                    (Group::JointLoads, Better::Lower),
+                    "{n}"
+                );
+            }
+            if n.starts_with("{piston}_") || n.starts_with("{body}_") {
+                assert_eq!(
+                    (d.group, d.better),
+                    (Group::Kinematics, Better::Neither),
+                    "{n}"
+                );
+            }
+            if n.ends_with("efficiency")
+                || n.starts_with("output_")
+                || n.ends_with("_safety_factor")
+                || n.starts_with("mechanical_advantage")
+                || n == "contact_ratio"
+            {
+                assert_eq!(d.better, Better::Higher, "{n}");
+            }
+            if n.starts_with("power_loss")
+                || n.contains("power_loss")
+                || n.starts_with("fmep")
+                || n.starts_with("friction_")
+                || n.ends_with("_need_mean")
+                || n.ends_with("_stress_max")
+                || n.ends_with("_load_max")
+                || n.ends_with("_torque_max")
+                || n.ends_with("_error")
+                || n == "loss_work"
+            {
+                assert_eq!(d.better, Better::Lower, "{n}");
+            }
+            if !gear
+                && (n.starts_with("power_loss")
+                    || n.starts_with("fmep")
+                    || n.starts_with("friction_")
+                    || n.ends_with("_efficiency") && d.aggregation != Aggregation::Cylinder)
+            {
+                assert_eq!(d.group, Group::Losses, "{n}");
+            }
+            // Signed sums and means of the drive are no verdict: their sign is the direction
+            // of the energy flow.
+            if ["_work", "_torque_mean", "_power_mean"]
+                .iter()
+                .any(|s| n.starts_with("{family}") && n.ends_with(s))
+            {
+                assert_eq!(
+                    (d.group, d.better),
+                    (Group::DriveTorque, Better::Neither),
+                    "{n}"
+                );
+            }
         }
     }
 }

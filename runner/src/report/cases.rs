@@ -8,9 +8,10 @@ use super::doc::{Align, Block, Doc};
 use super::envelope::{ChartData, ChartRecorder};
 use super::svg::{self, MAX_POINTS};
 use super::{
-    delta, fmt_delta, fmt_num, round_off_floor, signed, write_report, Better, Delta,
-    ROUND_OFF_LEGEND, SIGN_LEGEND,
+    better, delta, fmt_delta, fmt_num, phrase, round_off_floor, signed, write_report, Better,
+    Delta, ROUND_OFF_LEGEND, SIGN_LEGEND,
 };
+use cardan_dynamics::metrics::Group as MetricGroup;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -70,44 +71,26 @@ fn classify(metric: &str, families: &[String]) -> (Group, (usize, (usize, String
         family_rank(family.as_deref().unwrap_or("")),
         metric.to_string(),
     );
-    let template = def.map_or("", |d| d.name);
-    let group = if metric.starts_with("power_loss")
-        || metric.starts_with("friction_")
-        || metric.starts_with("fmep")
-        || metric == "loss_work"
-        || metric == "mechanical_efficiency"
-    {
-        Group::Losses
-    } else if def.is_some_and(|d| d.meaning.starts_with("gear rating")) {
-        Group::Gears
-    } else if metric.ends_with("_need_mean") || metric.starts_with("output_") {
-        Group::Torque
-    } else if let (Some(f), true) = (
-        &family,
-        template.starts_with("{family}_{joint}_")
-            || ["_force_max", "_moment_max", "_tangential_max"]
-                .iter()
-                .any(|s| metric.ends_with(s) && metric != "gas_force_max"),
-    ) {
-        let rest = &metric[f.len() + 1..];
-        let joint = ["_force_max", "_moment_max", "_tangential_max"]
-            .iter()
-            .find_map(|s| rest.strip_suffix(s))
-            .unwrap_or(rest);
-        Group::Joint(joint.to_string())
-    } else if template.starts_with("{family}_")
-        || metric == "kinetic_energy_change"
-        || metric == "energy_balance_error"
-    {
-        Group::Torque
-    } else if def.is_some_and(|d| d.aggregation == cardan_dynamics::Aggregation::Cylinder)
-        || metric == "gas_force_max"
-    {
-        Group::Gas
-    } else if def.is_some() {
-        Group::Kinematics
-    } else {
-        Group::Other
+    // The registry's group; a joint's loads get a section per joint (the name after the
+    // family), and a joint metric whose family the case does not list stays with the torque.
+    let group = match def.map(|d| d.group) {
+        None => Group::Other,
+        Some(MetricGroup::Kinematics) => Group::Kinematics,
+        Some(MetricGroup::JointLoads) => match &family {
+            Some(f) => {
+                let rest = &metric[f.len() + 1..];
+                let joint = ["_force_max", "_moment_max", "_tangential_max"]
+                    .iter()
+                    .find_map(|s| rest.strip_suffix(s))
+                    .unwrap_or(rest);
+                Group::Joint(joint.to_string())
+            }
+            None => Group::Torque,
+        },
+        Some(MetricGroup::DriveTorque) => Group::Torque,
+        Some(MetricGroup::Gas) => Group::Gas,
+        Some(MetricGroup::GearRating) => Group::Gears,
+        Some(MetricGroup::Losses) => Group::Losses,
     };
     (group, key)
 }
@@ -127,17 +110,16 @@ fn families(s: &CaseSummary) -> Vec<String> {
     f
 }
 
-/// The headline comparisons of the summary: (what, alternatives, direction).
-const COMPARISONS: &[(&str, &[&str], Better)] = &[
+/// The headline comparisons of the summary: (what, alternatives); which way is better is the
+/// registry's.
+const COMPARISONS: &[(&str, &[&str])] = &[
     (
         "Peak drive torque",
         &["total_torque_max", "inertial_torque_max"],
-        Better::Lower,
     ),
     (
         "Peak crank-pin force",
         &["total_crank_pin_force_max", "inertial_crank_pin_force_max"],
-        Better::Lower,
     ),
     (
         "Peak main-bearing force",
@@ -145,32 +127,26 @@ const COMPARISONS: &[(&str, &[&str], Better)] = &[
             "total_main_bearing_force_max",
             "inertial_main_bearing_force_max",
         ],
-        Better::Lower,
     ),
-    ("Mean power loss", &["power_loss_mean"], Better::Lower),
-    (
-        "Mechanical efficiency",
-        &["mechanical_efficiency"],
-        Better::Higher,
-    ),
-    ("Mean power need", &["power_need_mean"], Better::Lower),
-    ("Mean output power", &["output_power_mean"], Better::Higher),
-    (
-        "Peak friction torque",
-        &["friction_torque_max"],
-        Better::Lower,
-    ),
+    ("Mean power loss", &["power_loss_mean"]),
+    ("Mechanical efficiency", &["mechanical_efficiency"]),
+    ("Mean power need", &["power_need_mean"]),
+    ("Mean output power", &["output_power_mean"]),
+    ("Peak friction torque", &["friction_torque_max"]),
 ];
 
 /// One sentence per headline comparison present.
 fn summary_items(s: &CaseSummary) -> Vec<String> {
     let reference = &s.mechanisms[0];
     let mut items = Vec::new();
-    for (what, alternatives, direction) in COMPARISONS {
+    for (what, alternatives) in COMPARISONS {
         let Some(metric) = alternatives
             .iter()
             .find(|m| s.mechanisms.iter().filter(|x| x.get(m).is_some()).count() >= 2)
         else {
+            continue;
+        };
+        let Some(direction) = better(metric) else {
             continue;
         };
         let unit = svg::pretty_unit(reference.unit(metric));
@@ -189,7 +165,7 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
         let best = present.iter().fold(None::<(&str, f64)>, |best, (m, v)| {
             let wins = best.is_none_or(|(_, b)| match direction {
                 Better::Lower => *v < b,
-                Better::Higher => *v > b,
+                Better::Higher | Better::Neither => *v > b,
             });
             if wins {
                 Some((m.name.as_str(), *v))
@@ -213,7 +189,7 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
                     Delta::Percent(Some(d)) => {
                         let is_better = match direction {
                             Better::Lower => d < 0.0,
-                            Better::Higher => d > 0.0,
+                            Better::Higher | Better::Neither => d > 0.0,
                         };
                         format!(
                             "{} by {:.1} %: {}",
@@ -236,7 +212,7 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
         if let Some((name, _)) = best {
             items.push(format!(
                 "**{what}** (`{metric}`, {}): best `{name}`; {}.",
-                direction.phrase(),
+                phrase(direction),
                 parts.join("; ")
             ));
         }

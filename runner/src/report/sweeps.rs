@@ -7,7 +7,7 @@ use super::doc::{Align, Block, Doc};
 use super::heatmap::{self, HeatMap};
 use super::svg::{self, LineChart, Series};
 use super::{
-    better, delta, fmt_num, fmt_pct, round_off_floor, signed, write_report, Better, Delta,
+    better, delta, fmt_num, fmt_pct, phrase, round_off_floor, signed, write_report, Better, Delta,
     KEY_METRICS, ROUND_OFF_LEGEND, SIGN_LEGEND,
 };
 use std::path::Path;
@@ -182,11 +182,12 @@ fn verdicts(t: &SweepTable, keys: &[String], reference: &str, line: Option<&Axis
                         .filter(|v| match direction {
                             Better::Lower => **v < 0.0,
                             Better::Higher => **v > 0.0,
+                            Better::Neither => false,
                         })
                         .count();
                     format!(
                         "`{metric}` ({}): `{mech}` is better than `{reference}` at {wins} of {} points; Δ from {} to {}",
-                        direction.phrase(),
+                        phrase(direction),
                         finite.len(),
                         fmt_pct(Some(lo)),
                         fmt_pct(Some(hi))
@@ -426,7 +427,7 @@ fn heat_maps(
             let sense = match better(metric) {
                 Some(Better::Lower) => format!("; blue (Δ < 0) is where `{m}` is better"),
                 Some(Better::Higher) => format!("; red (Δ > 0) is where `{m}` is better"),
-                None => String::new(),
+                Some(Better::Neither) | None => String::new(),
             };
             out.push((
                 format!("{metric}_difference_{m}.svg"),
