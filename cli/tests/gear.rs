@@ -100,30 +100,10 @@ fn gear_usage() {
     assert!(String::from_utf8_lossy(&help.stdout).contains("--out"));
 }
 
-const OVERLOADED: &str = r#"
-name = "overloaded"
-module = "3 mm"
-pressure_angle = "20 deg"
-teeth = [20, 40]
-face_width = "30 mm"
+const OVERLOADED: &str = include_str!("reproducers/r07-gear-overloaded.toml");
 
-[rating]
-power = "200 kW"
-pinion_speed = "1800 rpm"
-quality = 6
-elastic_coefficient = "2300 sqrt(psi)"
-
-[rating.pinion]
-j = 0.3
-hardness = 240
-
-[rating.gear]
-j = 0.4
-hardness = 200
-"#;
-
-/// Issue 22, reproducer r07: 200 kW through a 3 mm, 20/40, 30 mm pair (SF ≈ 0.1 by hand, see
-/// runner/tests/gear_file.rs) exits 1 with the failed safety factors and the remedy.
+/// Issue 22, reproducer r07: 200 kW through a 3 mm, 20/40, 30 mm pair (SF ≈ 0.1 by hand, in the
+/// file) exits 1 with the failed safety factors and the remedy.
 #[test]
 fn overloaded_pair_exits_1_naming_the_safety_factors() {
     let dir = tempfile::tempdir().unwrap();
