@@ -54,8 +54,16 @@ impl GasCase {
     /// The cylinder of `bore` (m) shared by `pistons` pistons of `stroke` (m) each, with this
     /// case's clearance.
     pub fn cylinder(&self, bore: f64, stroke: f64, pistons: u32) -> Result<Cylinder, GasError> {
+        self.clearance.cylinder(bore, stroke, pistons)
+    }
+}
+
+impl Clearance {
+    /// The cylinder of `bore` (m) shared by `pistons` pistons of `stroke` (m) each, with this
+    /// clearance.
+    pub fn cylinder(self, bore: f64, stroke: f64, pistons: u32) -> Result<Cylinder, GasError> {
         let swept = f64::from(pistons) * std::f64::consts::PI / 4.0 * bore * bore * stroke;
-        match self.clearance {
+        match self {
             Clearance::CompressionRatio(e) => Cylinder::with_compression_ratio(bore, swept, e),
             // The case file gives the ratio, not the volume.
             Clearance::ClearanceRatio(c) => Cylinder::with_clearance(bore, swept, c * swept)
@@ -330,12 +338,7 @@ fn compressor(f: &Fields) -> Result<ReadModel, CaseError> {
     .map_err(|e| f.broken(e))?;
     let clearance = Clearance::ClearanceRatio(f.required("clearance_ratio", Dimension::Number)?);
     // A compressor must deliver, whatever its size.
-    let gas = GasCase {
-        name: "compressor",
-        model: Arc::new(compressor),
-        clearance,
-    };
-    let cylinder = gas.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
+    let cylinder = clearance.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
     compressor
         .steady_state(&cylinder)
         .map_err(|e| f.broken(e))?;
@@ -400,12 +403,11 @@ pub(crate) fn parse(
     };
     let (model, clearance) = (entry.read)(&f)?;
     f.no_other_keys()?;
-    let gas = GasCase {
+    // The cylinder rules (a compression ratio above 1) do not depend on its size.
+    clearance.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
+    Ok(GasCase {
         name: entry.name,
         model,
         clearance,
-    };
-    // The cylinder rules (a compression ratio above 1) do not depend on its size.
-    gas.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
-    Ok(gas)
+    })
 }
