@@ -78,8 +78,13 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
                     summaries.push(s);
                 }
                 // Gone since it was listed: another run is replacing this folder (and writes
-                // the index again when it has).
-                Err(_) if !dir.join("summary.json").exists() => {}
+                // the index again when it has). The file may be back by the time this looks,
+                // so the read's own error says so, not a second look at the folder.
+                Err(e)
+                    if e.chain().any(|c| {
+                        c.downcast_ref::<std::io::Error>()
+                            .is_some_and(|io| io.kind() == std::io::ErrorKind::NotFound)
+                    }) => {}
                 Err(e) => return Err(e),
             }
         }
