@@ -3,8 +3,8 @@
 //! `configs-gears/`, bad files and the output folder.
 
 use cardan::gear_file::{evaluate, load, parse, run, GearReport};
+use cardan_case::units::{to_si, Dimension};
 use cardan_gears::units::{INCH, LBF, PSI};
-use cardan_runner::units::{to_si, Dimension};
 use cardan_testing::mentions;
 use serde_json::Value;
 use std::path::{Path, PathBuf};

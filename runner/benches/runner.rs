@@ -4,7 +4,8 @@
 //! with the thesis's loss models (the issue-8
 //! target through `cardan run` is 20 s; this is the computation without the files).
 
-use cardan_runner::{case, run_case};
+use cardan_case::case;
+use cardan_runner::run_case;
 use criterion::{criterion_group, criterion_main, Criterion};
 use rayon::prelude::*;
 use std::hint::black_box;

@@ -2,9 +2,9 @@
 //! files are written into a fresh temporary folder that then replaces the case's folder as a
 //! whole, so no file of an earlier run survives beside the new ones.
 
-use crate::case::Case;
 use crate::run::MechanismResult;
 use anyhow::Context;
+use cardan_case::case::Case;
 use cardan_mechanism::JointKind;
 use serde_json::{json, Map, Value};
 use std::fs::File;

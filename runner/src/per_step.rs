@@ -11,9 +11,9 @@
 //! steps: the NPY file's size is known in advance (rows × columns), so every block's column
 //! pieces are written in place.
 
-use crate::case::OutputOptions;
 use crate::report::{ChartData, ChartRecorder, ChartRows, MAX_POINTS};
 use anyhow::{bail, Context};
+use cardan_case::case::OutputOptions;
 use cardan_dynamics::{radial, tangential, GearRatings, Sink, Step, StepBlock, StepScratch};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use std::fs::File;

@@ -1,11 +1,11 @@
 //! Running cases: every mechanism of every case in parallel, each step streamed to its sinks;
 //! one failure (an error or a panic) never stops the rest.
 
-use crate::case::{self, Case, CaseError};
 use crate::output;
 use crate::per_step::{ChartSink, PerStepSink, RunLayout};
 use crate::report::ChartData;
 use anyhow::Context;
+use cardan_case::case::{self, Case, CaseError};
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
     run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stages, Summary,

@@ -1,7 +1,7 @@
 //! Bad case files give one clear error each — file, case, field, rule, value — and never stop
 //! the other cases of a batch.
 
-use cardan_runner::case::parse;
+use cardan_case::case::parse;
 use cardan_testing::mentions;
 use std::path::Path;
 
@@ -599,7 +599,7 @@ fn numbers_meant_in_other_units_are_refused_with_the_likely_unit() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("case.toml");
     std::fs::write(&file, with_units).unwrap();
-    assert!(cardan_runner::case::load(&file).is_ok());
+    assert!(cardan_case::case::load(&file).is_ok());
 }
 
 /// Issue 22's r10: the default hypotrochoid at 720 steps was "valid" for `cardan check` and

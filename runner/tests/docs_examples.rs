@@ -3,7 +3,7 @@
 //! block that starts with a table (`[sweep]`, `[friction]`, `[gear]`) is added to the README's
 //! first example case (as an engine where it sets engine losses).
 
-use cardan_runner::case;
+use cardan_case::case;
 use std::path::{Path, PathBuf};
 
 /// The ```toml blocks of `file`, with the line each starts on.

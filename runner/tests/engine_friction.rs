@@ -2,9 +2,9 @@
 //! pumping) and the fmep cross-check: a small case runs with them, bad values and engine fields
 //! on a pump are clear errors.
 
+use cardan_case::case::parse;
 use cardan_dynamics::engine_losses::displacement;
 use cardan_dynamics::{engine_metrics, fmep_breakdown, FmepModel, FollowerContact};
-use cardan_runner::case::parse;
 use cardan_runner::run_case;
 use cardan_testing::mentions;
 use std::f64::consts::PI;

@@ -7,7 +7,7 @@
 //! reproduce its crank-pin forces to 0.1 %), its ring heights are missing from the seed (2 and
 //! 4 mm, docs/validation/engine-friction.md), and the losses grow with the inertial loads at speed.
 
-use cardan_runner::case::load_file;
+use cardan_case::case::load_file;
 use cardan_runner::run_case;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
@@ -222,7 +222,7 @@ fn every_non_thesis_reading_runs_the_shipped_pump() {
         let text = format!(
             "{base}\n[friction]\nrings = \"film\"\nskirt = \"viscous\"\ngear_mesh = \"corrected\"\nbearings = \"{bearings}\"\n"
         );
-        let case = cardan_runner::case::parse(&path, &text).unwrap();
+        let case = cardan_case::case::parse(&path, &text).unwrap();
         for r in run_case(&case, None).unwrap() {
             let get = |name: &str| r.summary.get(name).unwrap();
             let efficiency = get("mechanical_efficiency");
@@ -250,7 +250,7 @@ fn joint_tables_take_catalogue_values_and_name_bad_ones() {
     )
     .unwrap();
     let with = |joints: &str| format!("{base}\n[friction]\n[friction.joints]\n{joints}\n");
-    let case = cardan_runner::case::parse(
+    let case = cardan_case::case::parse(
         path,
         &with("crank_pin = { model = \"palmgren\", pitch_diameter = \"50 mm\", static_load_rating = \"80 kN\", count = 1 }"),
     )
@@ -287,7 +287,7 @@ fn joint_tables_take_catalogue_values_and_name_bad_ones() {
             "no mechanism of the case has a revolute joint",
         ),
     ] {
-        let e = cardan_runner::case::parse(path, &with(joints))
+        let e = cardan_case::case::parse(path, &with(joints))
             .unwrap_err()
             .to_string();
         assert!(e.contains(field) && e.contains(rule), "{joints}: {e}");

@@ -1,7 +1,7 @@
 //! `[gear]` in a case: every gear mesh rated at every step (summary metrics, CSV columns), and
 //! bad gear fields named with their rule.
 
-use cardan_runner::case::parse;
+use cardan_case::case::parse;
 use cardan_runner::run_case;
 use std::path::Path;
 

@@ -5,7 +5,8 @@
 //! the quadrature round-off of quantities that vanish, such as the inertial work at constant
 //! speed (about 1e-12 J), and would differ between machines.
 
-use cardan_runner::{case, output, run_case};
+use cardan_case::case;
+use cardan_runner::{output, run_case};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 

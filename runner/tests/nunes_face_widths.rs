@@ -8,9 +8,10 @@
 //! the product F_gt·Kv (not F_gt,max·Kv,max, which is 4 % higher). Pitch diameters 26/52 mm for
 //! every row, so the 26/52-teeth rows have m = 1 mm and the 52/104-teeth rows m = 0.5 mm.
 
+use cardan_case::case;
 use cardan_gears::agma::nunes;
 use cardan_gears::*;
-use cardan_runner::{case, run_case};
+use cardan_runner::run_case;
 use std::path::Path;
 
 /// The peak tangential gear-tooth load of the OPGHE (the shipped Nunes case, cardan gear only)

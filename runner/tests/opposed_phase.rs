@@ -3,12 +3,12 @@
 //! volume of both pistons); with none, or a lead of exactly 0, the case is the mirrored one-train
 //! run; and as the lead vanishes the phased path tends to that mirrored run.
 
-use cardan_runner::case::parse;
+use cardan_case::case::parse;
 use cardan_runner::run_case;
 use std::collections::BTreeMap;
 use std::path::Path;
 
-fn nunes(phase: Option<&str>) -> cardan_runner::Case {
+fn nunes(phase: Option<&str>) -> cardan_case::Case {
     let path =
         Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/nunes-op-r26-l90-2000rpm.toml");
     let text = std::fs::read_to_string(&path).unwrap();
@@ -22,7 +22,7 @@ fn nunes(phase: Option<&str>) -> cardan_runner::Case {
     parse(&path, &text).unwrap()
 }
 
-fn results(case: &cardan_runner::Case) -> BTreeMap<String, BTreeMap<String, f64>> {
+fn results(case: &cardan_case::Case) -> BTreeMap<String, BTreeMap<String, f64>> {
     run_case(case, None)
         .unwrap()
         .into_iter()

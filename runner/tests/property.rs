@@ -94,7 +94,7 @@ proptest! {
         let file = dir.path().join("random.toml");
         std::fs::write(&file, &text).unwrap();
         // A grid on the hypotrochoid's fold is refused on reading, as it should be.
-        if let Err(e) = cardan_runner::case::load(&file) {
+        if let Err(e) = cardan_case::case::load(&file) {
             prop_assume!(!e.to_string().contains("fold"));
             panic!("a valid case is refused: {e}\n{text}");
         }

@@ -1,8 +1,9 @@
 //! Shipped cases against published results, through the whole chain: case file, gas model on
 //! each mechanism's volume curve, dynamics, summary.
 
+use cardan_case::case;
 use cardan_runner::run::MechanismResult;
-use cardan_runner::{case, run_case};
+use cardan_runner::run_case;
 use cardan_testing::within;
 use std::path::Path;
 

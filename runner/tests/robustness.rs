@@ -271,7 +271,7 @@ fn a_coarse_grid_warns_with_its_peaks_sampling_error() {
         let file = dir.path().join("case.toml");
         let text = GOOD.replace("steps = 720", &format!("steps = {steps}"));
         std::fs::write(&file, text).unwrap();
-        cardan_runner::run_case(&cardan_runner::case::load(&file).unwrap(), None).unwrap()
+        cardan_runner::run_case(&cardan_case::case::load(&file).unwrap(), None).unwrap()
     };
     let fine = case(7200);
     let mut warned = 0;

@@ -2,9 +2,9 @@
 //! every step equal the general planar solve of the summed inertial and gas loads (the
 //! involute mesh's loaded flank is chosen by the total, not per family).
 
+use cardan_case::case;
 use cardan_dynamics::{planar, run_summary, GasAt, Solver};
 use cardan_mechanism::{Grid, Loads};
-use cardan_runner::case;
 use std::path::Path;
 
 #[test]

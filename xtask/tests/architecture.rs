@@ -32,6 +32,16 @@ fn physics_crates_do_not_depend_on_the_runner() {
     }
 }
 
+/// The case schema is read before anything runs: its crate never depends on the runner, the
+/// reports or the command line.
+#[test]
+fn the_case_crate_does_not_depend_on_the_runner() {
+    let manifest = std::fs::read_to_string(root().join("case/Cargo.toml")).unwrap();
+    for forbidden in ["cardan-runner", "cardan-report", "cardan =", "\ncardan."] {
+        assert!(!manifest.contains(forbidden), "case depends on {forbidden}");
+    }
+}
+
 /// No code outside the mechanisms' own modules names a mechanism: the rest of the code reads
 /// bodies, joints and pistons from the topology.
 #[test]
@@ -40,6 +50,7 @@ fn no_code_outside_a_mechanism_module_names_a_mechanism() {
     for dir in [
         "crates/dynamics/src",
         "crates/gas/src",
+        "case/src",
         "runner/src",
         "cli/src",
     ] {

@@ -1,6 +1,7 @@
 //! Reading a gear file: the TOML tables, each value in SI and validated once.
 
 use super::*;
+use cardan_case::units::{is_folder_name, to_si, Dimension};
 use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, contact_allowable_through_hardened, Grade,
 };
@@ -9,7 +10,6 @@ use cardan_gears::{
     reliability_factor_fit, reliability_factor_table, BendingHighCycle, BendingLowCycle, Enclosure,
     GearError, GearPair, GearSpec, IForm, LoadDistribution, PairSpec, Quality, Tip,
 };
-use cardan_runner::units::{is_folder_name, to_si, Dimension};
 use serde::Deserialize;
 use std::path::Path;
 
@@ -142,7 +142,7 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
                 return Err(invalid(
                     "module",
                     m,
-                    &format!("a bare number is in m: a module of {} m is implausible (ISO 54 modules run to 100 mm); write \"{} mm\" if you meant millimetres, or give the unit explicitly", cardan_runner::units::short(module), cardan_runner::units::short(module)),
+                    &format!("a bare number is in m: a module of {} m is implausible (ISO 54 modules run to 100 mm); write \"{} mm\" if you meant millimetres, or give the unit explicitly", cardan_case::units::short(module), cardan_case::units::short(module)),
                 ));
             }
             (module, None)

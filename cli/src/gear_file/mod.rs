@@ -4,7 +4,7 @@
 //! `DIR/<name>/report.md`. The physics is `cardan-gears`'; this module reads, validates and
 //! writes (see docs/gear-calculator.md).
 //!
-//! Values take units as case files do, from the one table of [`cardan_runner::units`]: a bare number
+//! Values take units as case files do, from the one table of [`cardan_case::units`]: a bare number
 //! is in the field's SI unit (lengths m, angles deg, speeds rad/s, power W, torque N·m, stress
 //! Pa), a string is "NUMBER UNIT" (inches, hp, lbf·in, psi for the US-unit textbook examples).
 //!

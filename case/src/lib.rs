@@ -1,0 +1,13 @@
+//! Case files: TOML in, validated [`Case`]s out. Units are converted once, here
+//! ([`units`]); `[gas]`, `[friction]` and `[gear]` are read by their own modules; a `[sweep]`
+//! is expanded into one case per point ([`sweep`]). The runner schedules the cases and writes
+//! their results; nothing here steps a machine.
+
+pub mod case;
+pub mod friction;
+pub mod gas;
+pub mod gear;
+pub mod sweep;
+pub mod units;
+
+pub use case::{Case, CaseError};
