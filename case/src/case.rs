@@ -27,6 +27,13 @@ pub enum CaseError {
     /// is the TOML reader's, with the line and column.
     #[error("{file}: {message}")]
     Syntax { file: PathBuf, message: String },
+    /// A field of the typed schema that did not read: its path and what is wrong with it.
+    #[error("{file}: case \"{case}\": {error}")]
+    Field {
+        file: PathBuf,
+        case: String,
+        error: crate::schema::FieldError,
+    },
     #[error("{file}: case \"{case}\": {field} = {value}: {rule}")]
     Invalid {
         file: PathBuf,

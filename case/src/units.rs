@@ -135,6 +135,11 @@ impl Dimension {
         }
     }
 
+    /// Every unit this dimension accepts, the unit of a bare number first.
+    pub fn unit_names(self) -> impl Iterator<Item = &'static str> {
+        self.units().iter().map(|(unit, _)| *unit)
+    }
+
     /// The unit of a bare number.
     pub fn default_unit(self) -> &'static str {
         self.units()[0].0

@@ -1,0 +1,225 @@
+//! The typed schema's quantities: a field of a dimension that reads a bare number in the
+//! dimension's documented unit or a string "NUMBER UNIT" (`"60 mm"`), converted to SI once,
+//! here (by [`to_si`], which also refuses an implausible bare number with the likely unit).
+//! A quantity may carry a sign rule ([`Positive`], [`NonNegative`]); the rule is checked on
+//! reading and written into the JSON Schema.
+//!
+//! A rule a value breaks is a serde error whose message starts with `"= "`: the value as
+//! written, then the rule; [`crate::schema::read`] puts the field's path in front of it.
+
+use crate::units::{show, to_si, Dimension};
+use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
+use serde::{de::Error as _, Deserialize, Deserializer};
+use std::borrow::Cow;
+use std::marker::PhantomData;
+
+/// A physical dimension as a type, so that a field's type names what it measures.
+pub trait Dim {
+    const DIMENSION: Dimension;
+    /// The name used in the JSON Schema's definitions (`Length`).
+    const NAME: &'static str;
+}
+
+macro_rules! dimensions {
+    ($($(#[$doc:meta])* $name:ident),* $(,)?) => {$(
+        $(#[$doc])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        pub struct $name;
+        impl Dim for $name {
+            const DIMENSION: Dimension = Dimension::$name;
+            const NAME: &'static str = stringify!($name);
+        }
+    )*};
+}
+
+dimensions!(
+    /// m; mm, cm, µm, in, ft.
+    Length,
+    /// A bare number in degrees; deg, °, rad.
+    Angle,
+    /// rad/s; rpm, rev/s, Hz.
+    AngularSpeed,
+    /// rad/s²; rpm/s.
+    AngularAcceleration,
+    /// kg; g, lb.
+    Mass,
+    /// kg·m²; g·cm².
+    Inertia,
+    /// Pa (absolute); kPa, MPa, bar, atm, psi.
+    Pressure,
+    /// K; °C.
+    Temperature,
+    /// J/kg.
+    SpecificEnergy,
+    /// J/(kg·K).
+    GasConstant,
+    /// s (rad per rad/s); deg/rpm.
+    AnglePerSpeed,
+    /// m²/s; mm²/s, cSt.
+    KinematicViscosity,
+    /// kg/m³; g/cm³.
+    Density,
+    /// N; kN, lbf.
+    Force,
+    /// W; kW, hp.
+    Power,
+    /// N·m; kN·m, lbf·in, lbf·ft.
+    Torque,
+    /// √Pa; √MPa, √psi.
+    RootStress,
+    /// A pure number, or a coefficient in the SI unit its field names.
+    Number,
+);
+
+/// No sign rule.
+pub const ANY: u8 = 0;
+/// Must be greater than zero.
+pub const POSITIVE: u8 = 1;
+/// Must not be negative.
+pub const NON_NEGATIVE: u8 = 2;
+
+/// A value of dimension `D` in SI, read from a case or gear file; `RULE` is its sign rule.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Quantity<D, const RULE: u8 = ANY> {
+    /// The value in SI units.
+    pub si: f64,
+    /// The value as the file wrote it, for messages (`"60 mm"`, `0.06`).
+    pub written: String,
+    dimension: PhantomData<D>,
+}
+
+/// A quantity that must be greater than zero.
+pub type Positive<D> = Quantity<D, POSITIVE>;
+/// A quantity that must not be negative.
+pub type NonNegative<D> = Quantity<D, NON_NEGATIVE>;
+
+impl<D: Dim, const RULE: u8> Quantity<D, RULE> {
+    /// Reads a TOML value: the unit, the plausibility of a bare number, the sign rule.
+    /// `Err` is the rule broken.
+    pub fn from_value(value: &toml::Value) -> Result<Self, String> {
+        let si = to_si(value, D::DIMENSION)?;
+        match RULE {
+            POSITIVE if si <= 0.0 => return Err("must be positive".into()),
+            NON_NEGATIVE if si < 0.0 => return Err("must not be negative".into()),
+            _ => {}
+        }
+        Ok(Self {
+            si,
+            written: show(&value.to_string()),
+            dimension: PhantomData,
+        })
+    }
+}
+
+/// The message of a rule broken by `written`, in the form [`crate::schema::read`] expects.
+pub fn broken(written: &dyn std::fmt::Display, rule: &str) -> String {
+    format!("= {}: {rule}", show(&written.to_string()))
+}
+
+impl<'de, D: Dim, const RULE: u8> Deserialize<'de> for Quantity<D, RULE> {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let value = toml::Value::deserialize(deserializer)?;
+        Self::from_value(&value).map_err(|rule| De::Error::custom(broken(&value, &rule)))
+    }
+}
+
+impl<D: Dim, const RULE: u8> JsonSchema for Quantity<D, RULE> {
+    fn schema_name() -> Cow<'static, str> {
+        match RULE {
+            POSITIVE => format!("Positive{}", D::NAME).into(),
+            NON_NEGATIVE => format!("NonNegative{}", D::NAME).into(),
+            _ => D::NAME.into(),
+        }
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        let dim = D::DIMENSION;
+        let units: Vec<&str> = dim.unit_names().collect();
+        let mut number = json_schema!({ "type": "number" });
+        match RULE {
+            POSITIVE => {
+                number.insert("exclusiveMinimum".into(), 0.into());
+            }
+            NON_NEGATIVE => {
+                number.insert("minimum".into(), 0.into());
+            }
+            _ => {}
+        }
+        if dim.default_unit().is_empty() {
+            return number;
+        }
+        let description = format!(
+            "A bare number in {} or a string \"NUMBER UNIT\"; units: {}",
+            dim.default_unit(),
+            units.join(", ")
+        );
+        json_schema!({
+            "description": description,
+            "anyOf": [
+                number,
+                { "type": "string", "pattern": unit_pattern(&units) }
+            ]
+        })
+    }
+}
+
+/// A regular expression for "NUMBER UNIT" with one of `units`.
+fn unit_pattern(units: &[&str]) -> String {
+    let escaped: Vec<String> = units
+        .iter()
+        .map(|u| {
+            u.chars()
+                .map(|c| match c {
+                    '*' | '^' | '(' | ')' | '/' | '.' | '+' => format!("\\{c}"),
+                    c => c.to_string(),
+                })
+                .collect()
+        })
+        .collect();
+    format!(
+        "^\\s*[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?\\s*({})\\s*$",
+        escaped.join("|")
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read<T: for<'de> Deserialize<'de>>(text: &str) -> Result<T, String> {
+        #[derive(Deserialize)]
+        struct One<T> {
+            x: T,
+        }
+        toml::from_str::<One<T>>(&format!("x = {text}"))
+            .map(|o| o.x)
+            .map_err(|e| e.message().to_string())
+    }
+
+    #[test]
+    fn a_quantity_reads_a_bare_number_or_a_unit_and_keeps_what_was_written() {
+        let q: Quantity<Length> = read("\"60 mm\"").unwrap();
+        assert_eq!((q.si, q.written.as_str()), (0.06, "\"60 mm\""));
+        let q: Quantity<Length> = read("0.06").unwrap();
+        assert_eq!(q.si, 0.06);
+    }
+
+    #[test]
+    fn a_broken_rule_is_the_value_then_the_rule() {
+        let e = read::<Positive<Length>>("0").unwrap_err();
+        assert_eq!(e, "= 0: must be positive");
+        let e = read::<NonNegative<Mass>>("\"-2 g\"").unwrap_err();
+        assert_eq!(e, "= \"-2 g\": must not be negative");
+        let e = read::<Quantity<Length>>("60").unwrap_err();
+        assert!(e.starts_with("= 60: a bare number is in m"), "{e}");
+    }
+
+    #[test]
+    fn the_schema_pattern_takes_every_unit_of_the_table() {
+        let units: Vec<&str> = Dimension::Torque.unit_names().collect();
+        let pattern = unit_pattern(&units);
+        for u in &units {
+            assert!(pattern.contains(&u.replace('*', "\\*")), "{u}: {pattern}");
+        }
+    }
+}
