@@ -155,11 +155,63 @@ impl<D: Dim, const RULE: u8> JsonSchema for Quantity<D, RULE> {
         );
         json_schema!({
             "description": description,
+            "x-unit": dim.default_unit(),
             "anyOf": [
                 number,
                 { "type": "string", "pattern": unit_pattern(&units) }
             ]
         })
+    }
+}
+
+/// A whole number from `LOW` to `HIGH` (a count of steps, digits, points).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Whole<const LOW: i64, const HIGH: i64>(pub i64);
+
+impl<const LOW: i64, const HIGH: i64> Whole<LOW, HIGH> {
+    /// The rule in words, for messages.
+    pub fn rule() -> String {
+        if HIGH == i64::MAX {
+            format!("must be a whole number of at least {LOW}")
+        } else {
+            format!("must be a whole number from {LOW} to {HIGH}")
+        }
+    }
+}
+
+impl<'de, const LOW: i64, const HIGH: i64> Deserialize<'de> for Whole<LOW, HIGH> {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let value = toml::Value::deserialize(deserializer)?;
+        let whole = match &value {
+            toml::Value::Integer(n) => Ok(*n),
+            toml::Value::Float(x) if x.fract() == 0.0 && x.abs() < 1e15 => Err(format!(
+                "must be a whole number ({x:.0}, not {value}), written without a decimal point"
+            )),
+            toml::Value::String(s) if s.trim().parse::<i64>().is_ok() => Err(format!(
+                "must be a whole number, written without quotes ({}, not {value})",
+                s.trim()
+            )),
+            _ => Err(Self::rule()),
+        };
+        match whole {
+            Ok(n) if (LOW..=HIGH).contains(&n) => Ok(Whole(n)),
+            Ok(_) => Err(De::Error::custom(broken(&value, &Self::rule()))),
+            Err(rule) => Err(De::Error::custom(broken(&value, &rule))),
+        }
+    }
+}
+
+impl<const LOW: i64, const HIGH: i64> JsonSchema for Whole<LOW, HIGH> {
+    fn schema_name() -> Cow<'static, str> {
+        format!("Whole{LOW}to{HIGH}").into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        let mut schema = json_schema!({ "type": "integer", "minimum": LOW });
+        if HIGH != i64::MAX {
+            schema.insert("maximum".into(), HIGH.into());
+        }
+        schema
     }
 }
 
@@ -212,6 +264,17 @@ mod tests {
         assert_eq!(e, "= \"-2 g\": must not be negative");
         let e = read::<Quantity<Length>>("60").unwrap_err();
         assert!(e.starts_with("= 60: a bare number is in m"), "{e}");
+    }
+
+    #[test]
+    fn a_whole_number_says_how_it_was_miswritten() {
+        assert_eq!(read::<Whole<8, 100>>("20").unwrap(), Whole(20));
+        let e = read::<Whole<8, 100>>("4").unwrap_err();
+        assert_eq!(e, "= 4: must be a whole number from 8 to 100");
+        let e = read::<Whole<8, 100>>("20.0").unwrap_err();
+        assert!(e.contains("(20, not 20.0)"), "{e}");
+        let e = read::<Whole<8, 100>>("\"20\"").unwrap_err();
+        assert!(e.contains("without quotes"), "{e}");
     }
 
     #[test]

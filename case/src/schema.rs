@@ -8,7 +8,9 @@
 //! - a value of the wrong form: `path: must be a whole number, not 360.5` rather than serde's
 //!   Rust type names.
 
+use schemars::JsonSchema;
 use serde::de::DeserializeOwned;
+use serde_json::Value;
 
 /// Where a field went wrong and what is wrong with it (the file and case are the caller's).
 #[derive(Debug, Clone, PartialEq)]
@@ -17,6 +19,22 @@ pub struct FieldError {
     pub field: String,
     /// What is wrong: `= value: rule`, or a sentence.
     pub message: String,
+    /// For an unknown field: the valid names of its table (a caller that also takes other
+    /// names there, e.g. the mechanisms' tables, says so with [`FieldError::unknown_among`]).
+    pub expected: Vec<String>,
+}
+
+impl FieldError {
+    /// An unknown field's error again, with `more` names also valid in its table.
+    pub fn unknown_among(mut self, more: &[&str]) -> Self {
+        if self.message.starts_with("unknown field") {
+            let name = self.field.rsplit('.').next().unwrap_or_default().to_string();
+            self.expected.extend(more.iter().map(|m| m.to_string()));
+            let expected: Vec<&str> = self.expected.iter().map(String::as_str).collect();
+            self.message = suggest("field", &name, &expected);
+        }
+        self
+    }
 }
 
 impl std::fmt::Display for FieldError {
@@ -29,35 +47,67 @@ impl std::fmt::Display for FieldError {
     }
 }
 
-/// Reads `value` (the table at `prefix`, "" for the whole file) as a `T`.
-pub fn read<T: DeserializeOwned>(value: toml::Value, prefix: &str) -> Result<T, FieldError> {
+/// Reads `value` (the table at `prefix`, "" for the whole file) as a `T`. A field missing or of
+/// the wrong form is said with what its schema says it must be.
+pub fn read<T: DeserializeOwned + JsonSchema>(
+    value: toml::Value,
+    prefix: &str,
+) -> Result<T, FieldError> {
     serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
-        let mut field = match (prefix, path.as_str()) {
-            (p, ".") => p.to_string(),
-            ("", p) => p.to_string(),
-            (p, q) => format!("{p}.{q}"),
-        };
+        let inner = if path == "." { String::new() } else { path };
         let message = e.into_inner().message().trim_end().to_string();
-        let message = if let Some((name, expected)) = unknown(&message, "field") {
-            suggest("field", name, &expected)
-        } else if let Some((name, expected)) = unknown(&message, "variant") {
-            suggest("word", name, &expected)
-        } else if let Some(name) = between(&message, "missing field `", "`") {
-            field = join(&field, name);
-            "required, and missing".to_string()
-        } else {
-            plain(&message)
-        };
-        FieldError { field, message }
+        let root = || serde_json::to_value(schemars::schema_for!(T)).unwrap_or_default();
+        explain(prefix, &inner, &message, root)
     })
 }
 
-fn join(table: &str, key: &str) -> String {
-    if table.is_empty() || table == "." {
-        key.to_string()
+/// serde's `message` for the field at `inner` (relative to `T`, whose schema `root` gives) in
+/// the project's words.
+fn explain(
+    prefix: &str,
+    inner: &str,
+    message: &str,
+    root: impl Fn() -> Value,
+) -> FieldError {
+    let mut field = join(prefix, inner);
+    let mut expected = Vec::new();
+    let message = if let Some((name, valid)) = unknown(message, "field") {
+        expected = valid.iter().map(|v| v.to_string()).collect();
+        suggest("field", name, &valid)
+    } else if let Some((name, valid)) = unknown(message, "variant") {
+        suggest("word", name, &valid)
+    } else if let Some(name) = between(message, "missing field `", "`") {
+        let path = join(inner, name);
+        field = join(prefix, &path);
+        match what(&root(), &path, &field) {
+            Some(what) => format!("= (missing): required: {what}"),
+            None => "= (missing): required".to_string(),
+        }
+    } else if let Some((found, _)) = wrong_type(message) {
+        let what = what(&root(), inner, &field);
+        match (found, what) {
+            ("sequence", Some(w)) if w.starts_with("a table") => format!(
+                "= [[{field}]]: must be a table ([{field}]), not an array of tables ([[{field}]]): write [{field}] once"
+            ),
+            (found, Some(w)) => format!("= {found}: must be {w}"),
+            (_, None) => message.to_string(),
+        }
     } else {
-        format!("{table}.{key}")
+        message.to_string()
+    };
+    FieldError {
+        field,
+        message,
+        expected,
+    }
+}
+
+fn join(table: &str, key: &str) -> String {
+    match (table, key) {
+        ("", k) => k.to_string(),
+        (t, "") => t.to_string(),
+        (t, k) => format!("{t}.{k}"),
     }
 }
 
@@ -73,6 +123,18 @@ fn unknown<'a>(message: &'a str, what: &str) -> Option<(&'a str, Vec<&'a str>)> 
     let rest = &message[message.find(", ")? + 2..];
     let expected = rest.split('`').skip(1).step_by(2).collect();
     Some((name, expected))
+}
+
+/// serde's "invalid type: floating point `360.5`, expected u64": the value as written
+/// ("360.5", "\"yes\"", or "sequence" for an array) and what serde expected.
+fn wrong_type(message: &str) -> Option<(&str, &str)> {
+    let rest = message.strip_prefix("invalid type: ")?;
+    let (found, expected) = rest.split_once(", expected ")?;
+    let found = match found.find(['`', '"']) {
+        Some(i) => found[i..].trim_matches('`'),
+        None => found,
+    };
+    Some((found, expected))
 }
 
 /// "unknown field "x": did you mean "y"? (the fields here: ...)".
@@ -99,30 +161,89 @@ pub fn nearest<'a>(name: &str, expected: &[&'a str]) -> Option<&'a str> {
     (close || part).then_some(best)
 }
 
-/// serde's wrong-type message in words: "invalid type: floating point `360.5`, expected u64"
-/// → "must be a whole number, not 360.5".
-fn plain(message: &str) -> String {
-    let Some(rest) = message.strip_prefix("invalid type: ") else {
-        return message.to_string();
+/// What the field at `path` (dotted, relative to the schema `root`) must be, in words, from its
+/// schema: "a number in m or a string with a unit", "a whole number from 8 to 100000000: the
+/// number of crank-angle intervals", "a table [motion]". `shown` is the field's full path.
+fn what(root: &Value, path: &str, shown: &str) -> Option<String> {
+    let mut node = root;
+    let mut doc = None;
+    for key in path.split('.').filter(|k| !k.is_empty()) {
+        let property = resolve(root, node).get("properties")?.get(key)?;
+        doc = property.get("description").and_then(Value::as_str);
+        node = property;
+    }
+    let node = resolve(root, node);
+    // An optional of a plain type is `"type": ["string", "null"]`.
+    let kind = match node.get("type") {
+        Some(Value::String(t)) => Some(t.as_str()),
+        Some(Value::Array(types)) => types.iter().filter_map(Value::as_str).find(|t| *t != "null"),
+        _ => None,
     };
-    let Some((found, expected)) = rest.split_once(", expected ") else {
-        return message.to_string();
+    let words: Vec<String> = match node.get("enum").and_then(Value::as_array) {
+        Some(e) => e.iter().filter_map(|w| w.as_str().map(|w| format!("\"{w}\""))).collect(),
+        None => node
+            .get("oneOf")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+            .filter_map(|b| b.get("const").and_then(Value::as_str))
+            .map(|w| format!("\"{w}\""))
+            .collect(),
     };
-    // "floating point `8.5`", "string \"60\"": the value as written.
-    let found = match found.find(['`', '"']) {
-        Some(i) => found[i..].trim_matches('`'),
-        None => found,
+    let what = if let Some(unit) = node.get("x-unit").and_then(Value::as_str) {
+        format!("a number in {unit} or a string with a unit")
+    } else if !words.is_empty() {
+        let (last, rest) = words.split_last()?;
+        match rest {
+            [] => format!("a string in quotes: {last}"),
+            _ => format!("a string in quotes: {} or {last}", rest.join(", ")),
+        }
+    } else {
+        match kind? {
+            "integer" => match (node.get("minimum"), node.get("maximum")) {
+                (Some(lo), Some(hi)) => format!("a whole number from {lo} to {hi}"),
+                (Some(lo), None) if lo != 0 => format!("a whole number of at least {lo}"),
+                _ => "a whole number".to_string(),
+            },
+            "number" => "a number".to_string(),
+            "boolean" => "true or false (without quotes)".to_string(),
+            "string" => "a string in quotes".to_string(),
+            "array" => "a list in brackets, even of one: [...]".to_string(),
+            "object" => format!("a table [{shown}]"),
+            _ => return None,
+        }
     };
-    let expected = match expected {
-        "i64" | "u64" | "usize" | "u32" | "i32" | "u8" => "a whole number (without quotes)",
-        "f64" => "a number",
-        "a boolean" => "true or false (without quotes)",
-        "a string" => "a string in quotes",
-        "a sequence" => "a list in brackets, even of one: [...]",
-        e if e.starts_with("struct ") || e == "a map" => "a table",
-        e => e,
-    };
-    format!("must be {expected}, not {found}")
+    // The field's own doc, its first sentence, says what it is for.
+    let first = doc.and_then(|d| d.split(". ").next()).map(|d| d.trim_end_matches('.'));
+    Some(match first {
+        Some(d) if !d.is_empty() => format!("{what}: {d}"),
+        _ => what,
+    })
+}
+
+/// A schema with its `$ref` followed and an optional's `null` branch dropped.
+fn resolve<'a>(root: &'a Value, mut node: &'a Value) -> &'a Value {
+    for _ in 0..8 {
+        if let Some(r) = node.get("$ref").and_then(Value::as_str) {
+            let name = r.rsplit('/').next().unwrap_or_default();
+            match root.get("$defs").and_then(|d| d.get(name)) {
+                Some(def) => node = def,
+                None => return node,
+            }
+        } else if let Some(branches) = node.get("anyOf").and_then(Value::as_array) {
+            let not_null: Vec<&Value> = branches
+                .iter()
+                .filter(|b| b.get("type").and_then(Value::as_str) != Some("null"))
+                .collect();
+            match not_null[..] {
+                [one] if branches.len() == 2 => node = one,
+                _ => return node,
+            }
+        } else {
+            return node;
+        }
+    }
+    node
 }
 
 #[cfg(test)]
@@ -130,23 +251,24 @@ mod tests {
     use super::*;
     use serde::Deserialize;
 
-    #[derive(Debug, Deserialize)]
+    #[derive(Debug, Deserialize, JsonSchema)]
     #[serde(deny_unknown_fields)]
     #[allow(dead_code)]
     struct Inner {
+        /// The crank. More words.
         crank_length: f64,
         steps: u64,
         machine: Option<Word>,
     }
 
-    #[derive(Debug, Deserialize)]
+    #[derive(Debug, Deserialize, JsonSchema)]
     #[serde(rename_all = "snake_case")]
     enum Word {
         Pump,
         Engine,
     }
 
-    #[derive(Debug, Deserialize)]
+    #[derive(Debug, Deserialize, JsonSchema)]
     #[serde(deny_unknown_fields)]
     #[allow(dead_code)]
     struct Outer {
@@ -179,12 +301,19 @@ mod tests {
     #[test]
     fn a_missing_field_and_a_wrong_type_are_said_in_words() {
         let e = error("[geometry]\nsteps = 8");
-        assert_eq!(e, "geometry.crank_length: required, and missing");
-        let e = error("[geometry]\ncrank_length = 1.0\nsteps = 8.5");
         assert_eq!(
             e,
-            "geometry.steps: must be a whole number (without quotes), not 8.5"
+            "geometry.crank_length = (missing): required: a number: The crank"
         );
+        let e = error("[geometry]\ncrank_length = 1.0\nsteps = 8.5");
+        assert_eq!(e, "geometry.steps = 8.5: must be a whole number");
+        let e = error("[geometry]\ncrank_length = 1.0\nsteps = 8\nmachine = 1");
+        assert_eq!(
+            e,
+            "geometry.machine = 1: must be a string in quotes: \"pump\" or \"engine\""
+        );
+        let e = error("[[geometry]]\ncrank_length = 1.0\nsteps = 8");
+        assert!(e.contains("not an array of tables ([[geometry]])"), "{e}");
     }
 
     #[test]
