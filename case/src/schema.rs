@@ -28,7 +28,12 @@ impl FieldError {
     /// An unknown field's error again, with `more` names also valid in its table.
     pub fn unknown_among(mut self, more: &[&str]) -> Self {
         if self.message.starts_with("unknown field") {
-            let name = self.field.rsplit('.').next().unwrap_or_default().to_string();
+            let name = self
+                .field
+                .rsplit('.')
+                .next()
+                .unwrap_or_default()
+                .to_string();
             self.expected.extend(more.iter().map(|m| m.to_string()));
             let expected: Vec<&str> = self.expected.iter().map(String::as_str).collect();
             self.message = suggest("field", &name, &expected);
@@ -53,12 +58,15 @@ pub fn read<T: DeserializeOwned + JsonSchema>(
     value: toml::Value,
     prefix: &str,
 ) -> Result<T, FieldError> {
+    // The value is kept to show a wrong one as written (serde names only its type).
+    let written = value.clone();
     serde_path_to_error::deserialize(value).map_err(|e| {
         let path = e.path().to_string();
         let inner = if path == "." { String::new() } else { path };
         let message = e.into_inner().message().trim_end().to_string();
         let root = || serde_json::to_value(schemars::schema_for!(T)).unwrap_or_default();
-        explain(prefix, &inner, &message, root)
+        let shown = at(&written, &inner).map(|v| crate::units::show(&v.to_string()));
+        explain(prefix, &inner, &message, shown, root)
     })
 }
 
@@ -68,10 +76,26 @@ fn explain(
     prefix: &str,
     inner: &str,
     message: &str,
+    shown: Option<String>,
     root: impl Fn() -> Value,
 ) -> FieldError {
     let mut field = join(prefix, inner);
     let mut expected = Vec::new();
+    // A table written as an array of tables (`[[geometry]]`) reads, as serde may read a
+    // struct from a list, as `geometry[0]` of the wrong form.
+    if let Some(i) = inner.find('[') {
+        let table = &inner[..i];
+        if what(&root(), table, table).is_some_and(|w| w.starts_with("a table")) {
+            let field = join(prefix, table);
+            return FieldError {
+                message: format!(
+                    "= [[{field}]]: must be a table ([{field}]), not an array of tables ([[{field}]]): write [{field}] once"
+                ),
+                field,
+                expected,
+            };
+        }
+    }
     let message = if let Some((name, valid)) = unknown(message, "field") {
         expected = valid.iter().map(|v| v.to_string()).collect();
         suggest("field", name, &valid)
@@ -87,10 +111,7 @@ fn explain(
     } else if let Some((found, _)) = wrong_type(message) {
         let what = what(&root(), inner, &field);
         match (found, what) {
-            ("sequence", Some(w)) if w.starts_with("a table") => format!(
-                "= [[{field}]]: must be a table ([{field}]), not an array of tables ([[{field}]]): write [{field}] once"
-            ),
-            (found, Some(w)) => format!("= {found}: must be {w}"),
+            (found, Some(w)) => format!("= {}: must be {w}", shown.as_deref().unwrap_or(found)),
             (_, None) => message.to_string(),
         }
     } else {
@@ -101,6 +122,22 @@ fn explain(
         message,
         expected,
     }
+}
+
+/// The value at a dotted path (`a.b`, `list[0]`) of a TOML value.
+fn at<'a>(value: &'a toml::Value, path: &str) -> Option<&'a toml::Value> {
+    let mut node = value;
+    for key in path.split('.').filter(|k| !k.is_empty()) {
+        let (name, index) = match key.split_once('[') {
+            Some((n, i)) => (n, i.trim_end_matches(']').parse::<usize>().ok()),
+            None => (key, None),
+        };
+        node = node.get(name)?;
+        if let Some(i) = index {
+            node = node.get(i)?;
+        }
+    }
+    Some(node)
 }
 
 fn join(table: &str, key: &str) -> String {
@@ -176,11 +213,17 @@ fn what(root: &Value, path: &str, shown: &str) -> Option<String> {
     // An optional of a plain type is `"type": ["string", "null"]`.
     let kind = match node.get("type") {
         Some(Value::String(t)) => Some(t.as_str()),
-        Some(Value::Array(types)) => types.iter().filter_map(Value::as_str).find(|t| *t != "null"),
+        Some(Value::Array(types)) => types
+            .iter()
+            .filter_map(Value::as_str)
+            .find(|t| *t != "null"),
         _ => None,
     };
     let words: Vec<String> = match node.get("enum").and_then(Value::as_array) {
-        Some(e) => e.iter().filter_map(|w| w.as_str().map(|w| format!("\"{w}\""))).collect(),
+        Some(e) => e
+            .iter()
+            .filter_map(|w| w.as_str().map(|w| format!("\"{w}\"")))
+            .collect(),
         None => node
             .get("oneOf")
             .and_then(Value::as_array)
@@ -214,7 +257,9 @@ fn what(root: &Value, path: &str, shown: &str) -> Option<String> {
         }
     };
     // The field's own doc, its first sentence, says what it is for.
-    let first = doc.and_then(|d| d.split(". ").next()).map(|d| d.trim_end_matches('.'));
+    let first = doc
+        .and_then(|d| d.split(". ").next())
+        .map(|d| d.trim_end_matches('.'));
     Some(match first {
         Some(d) if !d.is_empty() => format!("{what}: {d}"),
         _ => what,
