@@ -4,13 +4,15 @@
 //! and its own table (`[cardan_gear]`, ...).
 
 use crate::gas::GasCase;
-use crate::units::{is_folder_name, to_si, Dimension};
-use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget};
-use cardan_mechanism::{
-    CrankMotion, MachineGeometry, MassInputs, MassRules, Material, Mechanism, OptionKind,
-    OptionValue, Options,
+use crate::masses::MassTable;
+use crate::quantity::{
+    Angle, AngularAcceleration, AngularSpeed, Length, Positive, Quantity, Whole,
 };
+use crate::units::is_folder_name;
+use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget};
+use cardan_mechanism::{CrankMotion, MachineGeometry, Mechanism};
 use rayon::prelude::*;
+use schemars::JsonSchema;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -45,7 +47,8 @@ pub enum CaseError {
 }
 
 /// Pump or engine: what the gas does (used by the gas models).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
 pub enum Machine {
     Pump,
     Engine,
@@ -118,65 +121,137 @@ pub struct Case {
     pub sweep: Option<(String, Vec<(String, String)>)>,
 }
 
-#[derive(Deserialize)]
-struct RawCase {
-    name: String,
-    machine: String,
-    mechanisms: Vec<String>,
-    geometry: RawGeometry,
-    motion: RawMotion,
-    masses: Option<toml::Table>,
-    gas: Option<toml::Table>,
-    friction: Option<toml::Table>,
-    gear: Option<toml::Table>,
-    output: Option<RawOutput>,
-    /// The mechanisms' own tables, checked against the registry.
-    #[serde(flatten)]
-    rest: toml::Table,
+/// A case file as written: the typed schema of its top level. The mechanisms' own tables
+/// (`[cardan_gear]`, ...) and their mass tables (`[masses.cardan_gear]`) are named by the
+/// registry of `cardan-mechanism` and read apart ([`mechanism_tables`]).
+#[derive(Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CaseFile {
+    /// The case's name, and its results folder: at most 200 letters, digits, '-', '_' and '.',
+    /// not starting with '.'.
+    pub name: FolderName,
+    /// What the gas does: "pump" or "engine".
+    pub machine: Machine,
+    /// The mechanisms compared, by their registry names, e.g. ["slider_crank"].
+    pub mechanisms: Vec<String>,
+    pub geometry: GeometryTable,
+    pub motion: MotionTable,
+    /// The masses; fields left out are estimated by the mass rules.
+    #[serde(default)]
+    pub masses: MassTable,
+    /// The gas loading the pistons (its model and their inputs); without it, inertial loads only.
+    #[schemars(with = "Option<serde_json::Map<String, serde_json::Value>>")]
+    pub gas: Option<toml::Table>,
+    /// The loss models; without it the run has no losses.
+    #[schemars(with = "Option<serde_json::Map<String, serde_json::Value>>")]
+    pub friction: Option<toml::Table>,
+    /// The gear pair and its rating data; without it no gear mesh is rated.
+    #[schemars(with = "Option<serde_json::Map<String, serde_json::Value>>")]
+    pub gear: Option<toml::Table>,
+    #[serde(default)]
+    pub output: OutputTable,
 }
 
-#[derive(Deserialize)]
+/// `[geometry]`: the machine's shared dimensions.
+#[derive(Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
-struct RawGeometry {
-    crank_length: toml::Value,
-    rod_length: toml::Value,
-    bore: toml::Value,
-    pin_offset: Option<toml::Value>,
-    opposed_pistons: Option<bool>,
-    crank_phase: Option<toml::Value>,
+pub struct GeometryTable {
+    /// Crank radius r, m.
+    pub crank_length: Positive<Length>,
+    /// Connecting-rod centre distance l, m.
+    pub rod_length: Positive<Length>,
+    /// Cylinder bore, m.
+    pub bore: Positive<Length>,
+    /// Piston-pin offset from the cylinder axis, m; default 0.
+    pub pin_offset: Option<Quantity<Length>>,
+    /// Two pistons in one cylinder, no cylinder head (Nunes 2017); default false.
+    #[serde(default)]
+    pub opposed_pistons: bool,
+    /// Lead of the second crank train's crank over the first's, from -90° to 90° (opposed
+    /// pistons only); default 0.
+    pub crank_phase: Option<Quantity<Angle>>,
 }
 
-#[derive(Deserialize)]
+/// `[motion]`: the crank's prescribed motion.
+#[derive(Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
-struct RawMotion {
-    start_angle: toml::Value,
-    end_angle: toml::Value,
-    initial_speed: toml::Value,
-    angular_acceleration: toml::Value,
-    steps: i64,
+pub struct MotionTable {
+    /// Crank angle at the start of the run; a bare number is in degrees.
+    pub start_angle: Quantity<Angle>,
+    /// Crank angle at the end of the run, greater than the start.
+    pub end_angle: Quantity<Angle>,
+    /// Crank speed at the start angle, rad/s.
+    pub initial_speed: Quantity<AngularSpeed>,
+    /// Constant crank angular acceleration, rad/s².
+    pub angular_acceleration: Quantity<AngularAcceleration>,
+    /// The number of crank-angle intervals (the run has steps + 1 points).
+    pub steps: Whole<8, MAX_STEPS>,
 }
 
-#[derive(Deserialize)]
+/// `[output]`: what a case writes besides `summary.json`.
+#[derive(Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
-struct RawOutput {
-    csv: Option<bool>,
-    npy: Option<bool>,
-    decimation: Option<i64>,
-    significant_digits: Option<i64>,
+pub struct OutputTable {
+    /// Write `<mechanism>.csv`, one row per step; default true.
+    #[serde(default = "yes")]
+    pub csv: bool,
+    /// Write `<mechanism>.npy` and `<mechanism>.columns.json`; default false.
+    #[serde(default)]
+    pub npy: bool,
+    /// Write every n-th step (and the last); default 1, every step.
+    pub decimation: Option<Whole<1, { i64::MAX }>>,
+    /// Significant digits of the CSV numbers, from 1 to 17; default: the shortest text that
+    /// reads back to the same number.
+    pub significant_digits: Option<Whole<1, 17>>,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Default for OutputTable {
+    fn default() -> Self {
+        Self {
+            csv: true,
+            npy: false,
+            decimation: None,
+            significant_digits: None,
+        }
+    }
+}
+
+impl From<&OutputTable> for OutputOptions {
+    fn from(o: &OutputTable) -> Self {
+        Self {
+            csv: o.csv,
+            npy: o.npy,
+            decimation: o.decimation.map_or(1, |d| d.0 as usize),
+            significant_digits: o.significant_digits.map(|d| d.0 as usize),
+        }
+    }
+}
+
+/// A case's name: a folder name ([`is_folder_name`]).
+#[derive(Debug, Clone, JsonSchema)]
+#[schemars(transparent)]
+pub struct FolderName(pub String);
+
+impl<'de> Deserialize<'de> for FolderName {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        if is_folder_name(&name) {
+            Ok(FolderName(name))
+        } else {
+            Err(serde::de::Error::custom(crate::quantity::broken(
+                &format!("\"{name}\""),
+                "must be a non-empty folder name of at most 200 letters, digits, '-', '_' and '.', not starting with '.'",
+            )))
+        }
+    }
 }
 
 /// Largest accepted number of steps.
 pub const MAX_STEPS: i64 = 100_000_000;
-
-/// The mass fields of `[masses]` and `[masses.<mechanism>]`, with their dimensions.
-const MASS_FIELDS: [(&str, Dimension); 6] = [
-    ("crankshaft_inertia", Dimension::Inertia),
-    ("wheel_inertia", Dimension::Inertia),
-    ("rod_mass", Dimension::Mass),
-    ("rod_inertia", Dimension::Inertia),
-    ("rod_cg", Dimension::Length),
-    ("piston_mass", Dimension::Mass),
-];
 
 /// Reads and validates one case file.
 pub fn load(file: &Path) -> Result<Case, CaseError> {
@@ -193,13 +268,9 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
         file: file.into(),
         source,
     })?;
-    let syntax = |e: &dyn std::fmt::Display| CaseError::Syntax {
-        file: file.into(),
-        message: e.to_string().trim_end().to_string(),
-    };
-    let table: toml::Table = toml::from_str(&text).map_err(|e| syntax(&e))?;
-    match crate::sweep::expand(file, table)? {
-        None => Ok(vec![parse(file, &text)?]),
+    let table = toml_table(file, &text)?;
+    match crate::sweep::expand(file, table.clone())? {
+        None => Ok(vec![from_table(file, table)?]),
         Some((sweep, points)) => {
             // Each point's table read as it is (written out as TOML text and parsed again, it
             // took most of the time of reading a sweep of 10 000 points), the points on every
@@ -207,11 +278,7 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
             let cases: Vec<Result<Case, CaseError>> = points
                 .into_par_iter()
                 .map(|p| {
-                    check_form(file, &p.table)?;
-                    let raw: RawCase = toml::Value::Table(p.table)
-                        .try_into()
-                        .map_err(|e| syntax(&format!("sweep point \"{}\": {e}", p.name)))?;
-                    let mut case = validate(file, raw)?;
+                    let mut case = from_table(file, p.table)?;
                     case.sweep = Some((sweep.clone(), p.values));
                     Ok(case)
                 })
@@ -226,160 +293,81 @@ pub(crate) type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> Case
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
-    let raw: RawCase = match toml::from_str(text) {
-        Ok(raw) => raw,
-        Err(e) => {
-            // Say a mistake of form as a person would (the reader names its Rust types); any
-            // other, and TOML syntax, as the reader does, with the line and column.
-            if let Ok(table) = toml::from_str::<toml::Table>(text) {
-                check_form(file, &table)?;
+    from_table(file, toml_table(file, text)?)
+}
+
+/// The TOML of a case file; a syntax error as the TOML reader says it, with line and column.
+fn toml_table(file: &Path, text: &str) -> Result<toml::Table, CaseError> {
+    toml::from_str(text).map_err(|e: toml::de::Error| CaseError::Syntax {
+        file: file.into(),
+        message: e.to_string().trim_end().to_string(),
+    })
+}
+
+/// The mechanisms' own tables of a case (`[cardan_gear]`) and their mass tables
+/// (`[masses.cardan_gear]`), taken out of `table` (named by the registry, they are not part of
+/// the typed schema).
+#[derive(Default)]
+pub(crate) struct MechanismTables {
+    pub options: toml::Table,
+    pub masses: toml::Table,
+}
+
+fn mechanism_tables(table: &mut toml::Table) -> MechanismTables {
+    let mut own = MechanismTables::default();
+    let registered = |k: &String| cardan_mechanism::entry(k).is_some();
+    let take = |from: &mut toml::Table, into: &mut toml::Table| {
+        for key in from
+            .keys()
+            .filter(|k| registered(k))
+            .cloned()
+            .collect::<Vec<_>>()
+        {
+            if let Some(value) = from.remove(&key) {
+                into.insert(key, value);
             }
-            return Err(CaseError::Syntax {
-                file: file.into(),
-                message: e.to_string().trim_end().to_string(),
-            });
         }
     };
-    validate(file, raw)
+    take(table, &mut own.options);
+    if let Some(toml::Value::Table(masses)) = table.get_mut("masses") {
+        take(masses, &mut own.masses);
+    }
+    own
 }
 
-/// What a field of a case must be, for [`check_form`].
-#[derive(Clone, Copy)]
-enum Form {
-    /// A string in quotes; what it says.
-    Text(&'static str),
-    /// A list of strings in quotes; an example.
-    Texts(&'static str),
-    Table,
-    /// A whole number; what it counts.
-    Whole(&'static str),
-    Flag,
-    /// A number or a string with a unit (read by [`to_si`], which names a wrong type itself);
-    /// the unit.
-    Quantity(&'static str),
-}
-
-/// The fields of a case the TOML reader checks the form of: (dotted path, form, required).
-const FORMS: &[(&str, Form, bool)] = &[
-    ("name", Form::Text("the case's name"), true),
-    ("machine", Form::Text("\"pump\" or \"engine\""), true),
-    ("mechanisms", Form::Texts("[\"slider_crank\"]"), true),
-    ("geometry", Form::Table, true),
-    ("geometry.crank_length", Form::Quantity("m"), true),
-    ("geometry.rod_length", Form::Quantity("m"), true),
-    ("geometry.bore", Form::Quantity("m"), true),
-    ("geometry.opposed_pistons", Form::Flag, false),
-    ("motion", Form::Table, true),
-    ("motion.start_angle", Form::Quantity("degrees"), true),
-    ("motion.end_angle", Form::Quantity("degrees"), true),
-    ("motion.initial_speed", Form::Quantity("rad/s"), true),
-    (
-        "motion.angular_acceleration",
-        Form::Quantity("rad/s²"),
-        true,
-    ),
-    (
-        "motion.steps",
-        Form::Whole("the number of crank-angle intervals, from 8 to 100000000"),
-        true,
-    ),
-    ("masses", Form::Table, false),
-    ("gas", Form::Table, false),
-    ("friction", Form::Table, false),
-    ("gear", Form::Table, false),
-    ("output", Form::Table, false),
-    ("output.csv", Form::Flag, false),
-    ("output.npy", Form::Flag, false),
-    (
-        "output.decimation",
-        Form::Whole("write every n-th step"),
-        false,
-    ),
-    (
-        "output.significant_digits",
-        Form::Whole("significant digits of the CSV numbers"),
-        false,
-    ),
-];
-
-/// The first field of `table` (a case) of the wrong form or missing, as a [`CaseError::Invalid`]
-/// that names it, says what it must be and shows what was written.
-fn check_form(file: &Path, table: &toml::Table) -> Result<(), CaseError> {
-    let case = match table.get("name") {
+/// Reads a case's table (a file's, or a sweep point's) into the schema, then validates it.
+fn from_table(file: &Path, mut table: toml::Table) -> Result<Case, CaseError> {
+    let name = match table.get("name") {
         Some(toml::Value::String(name)) => name.clone(),
         _ => "(unnamed)".to_string(),
     };
-    let invalid = |field: &str, value: &dyn std::fmt::Display, rule: String| CaseError::Invalid {
-        file: file.into(),
-        case: case.clone(),
-        field: field.to_string(),
-        value: value.to_string(),
-        rule,
-    };
-    for &(path, form, required) in FORMS {
-        let (parent, key) = match path.split_once('.') {
-            Some((t, k)) => match table.get(t) {
-                Some(toml::Value::Table(t)) => (t, k),
-                // Its table is missing or of the wrong form: reported as such.
-                _ => continue,
-            },
-            None => (table, path),
+    let own = mechanism_tables(&mut table);
+    let raw: CaseFile = crate::schema::read(toml::Value::Table(table), "").map_err(|error| {
+        // The mechanisms' tables are valid names at the top level and in [masses].
+        let error = match error.field.rsplit_once('.') {
+            None | Some(("masses", _)) => error.unknown_among(&mechanism_names()),
+            _ => error,
         };
-        let Some(value) = parent.get(key) else {
-            if !required {
-                continue;
-            }
-            let what = match form {
-                Form::Text(what) => format!("a string: {what}"),
-                Form::Texts(example) => format!("a list of mechanism names, e.g. {example}"),
-                Form::Table => format!("a table [{path}]"),
-                Form::Whole(what) => format!("a whole number: {what}"),
-                Form::Flag => "true or false".to_string(),
-                Form::Quantity(unit) => {
-                    format!("a number in {unit} or a string with a unit")
-                }
-            };
-            return Err(invalid(path, &"(missing)", format!("required: {what}")));
-        };
-        let rule = match (form, value) {
-            (Form::Text(_), toml::Value::String(_)) => continue,
-            (Form::Text(what), _) => format!("must be a string in quotes: {what}"),
-            (Form::Texts(_), toml::Value::Array(a)) if a.iter().all(|v| v.is_str()) => continue,
-            (Form::Texts(example), toml::Value::Array(_)) => {
-                format!("must be a list of names in quotes, e.g. {example}")
-            }
-            (Form::Texts(example), _) => {
-                format!("must be a list of names in brackets, e.g. {example}, even of one")
-            }
-            (Form::Table, toml::Value::Table(_)) => continue,
-            (Form::Table, toml::Value::Array(a)) if a.iter().all(|v| v.is_table()) => format!(
-                "must be a table ([{path}]), not an array of tables ([[{path}]]): write [{path}] once"
-            ),
-            (Form::Table, _) => format!("must be a table ([{path}])"),
-            (Form::Whole(_), toml::Value::Integer(_)) => continue,
-            (Form::Whole(what), toml::Value::Float(x)) if x.fract() == 0.0 && x.abs() < 1e15 => {
-                format!("must be a whole number ({x:.0}, not {value}): {what}")
-            }
-            (Form::Whole(what), toml::Value::String(s)) if s.trim().parse::<i64>().is_ok() => {
-                format!(
-                    "must be a whole number, written without quotes ({}, not {value}): {what}",
-                    s.trim()
-                )
-            }
-            (Form::Whole(what), _) => format!("must be a whole number: {what}"),
-            (Form::Flag, toml::Value::Boolean(_)) => continue,
-            (Form::Flag, _) => "must be true or false (without quotes)".to_string(),
-            // A wrong type is named by the reading of the quantity, with its unit.
-            (Form::Quantity(_), _) => continue,
-        };
-        return Err(invalid(path, value, rule));
-    }
-    Ok(())
+        CaseError::Field {
+            file: file.into(),
+            case: name.clone(),
+            error,
+        }
+    })?;
+    validate(file, raw, own)
 }
 
-/// Validates a case read from `file` (only for the messages).
-fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
-    let case_name = raw.name.clone();
+fn mechanism_names() -> Vec<&'static str> {
+    cardan_mechanism::MECHANISMS
+        .iter()
+        .map(|e| e.name)
+        .collect()
+}
+
+/// Validates a case read from `file` (only for the messages): the rules between fields, and
+/// the mechanisms built from the registry.
+fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, CaseError> {
+    let case_name = raw.name.0.clone();
     let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
         file: file.into(),
         case: case_name.clone(),
@@ -387,137 +375,61 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
         value: crate::units::show(&value.to_string()),
         rule: rule.to_string(),
     };
-    if !is_folder_name(&raw.name) {
-        return Err(invalid("name", &format!("\"{}\"", raw.name), "must be a non-empty folder name of at most 200 letters, digits, '-', '_' and '.', not starting with '.'"));
-    }
-    let machine = match raw.machine.as_str() {
-        "pump" => Machine::Pump,
-        "engine" => Machine::Engine,
-        other => {
-            return Err(invalid(
-                "machine",
-                &format!("\"{other}\""),
-                "must be \"pump\" or \"engine\"",
-            ))
-        }
+    let field_error = |error| CaseError::Field {
+        file: file.into(),
+        case: case_name.clone(),
+        error,
     };
-    let quantity = |field: &str, value: &toml::Value, dim: Dimension| {
-        to_si(value, dim).map_err(|rule| invalid(field, value, &rule))
-    };
-    let positive = |field: &str, value: &toml::Value, dim: Dimension| {
-        let x = quantity(field, value, dim)?;
-        if x > 0.0 {
-            Ok(x)
-        } else {
-            Err(invalid(field, value, "must be positive"))
-        }
-    };
-
+    let machine = raw.machine;
     let g = &raw.geometry;
     let geometry = MachineGeometry {
-        crank_length: positive("geometry.crank_length", &g.crank_length, Dimension::Length)?,
-        rod_length: positive("geometry.rod_length", &g.rod_length, Dimension::Length)?,
-        bore: positive("geometry.bore", &g.bore, Dimension::Length)?,
-        pin_offset: match &g.pin_offset {
-            Some(v) => quantity("geometry.pin_offset", v, Dimension::Length)?,
-            None => 0.0,
-        },
+        crank_length: g.crank_length.si,
+        rod_length: g.rod_length.si,
+        bore: g.bore.si,
+        pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
     };
-    let pistons = if g.opposed_pistons == Some(true) {
-        2
-    } else {
-        1
-    };
+    let pistons = if g.opposed_pistons { 2 } else { 1 };
     let crank_phase = match &g.crank_phase {
         None => 0.0,
-        Some(v) => {
-            let phase = quantity("geometry.crank_phase", v, Dimension::Angle)?;
-            if pistons != 2 {
-                return Err(invalid(
-                    "geometry.crank_phase",
-                    v,
-                    "a phase between two crank trains needs opposed_pistons = true",
-                ));
-            }
-            if phase.abs() > std::f64::consts::FRAC_PI_2 {
-                return Err(invalid(
-                    "geometry.crank_phase",
-                    v,
-                    "must be from -90° to 90° (the second crank's lead over the first)",
-                ));
-            }
-            phase
+        Some(phase) if pistons != 2 => {
+            return Err(invalid(
+                "geometry.crank_phase",
+                &phase.written,
+                "a phase between two crank trains needs opposed_pistons = true",
+            ))
         }
+        Some(phase) if phase.si.abs() > std::f64::consts::FRAC_PI_2 => {
+            return Err(invalid(
+                "geometry.crank_phase",
+                &phase.written,
+                "must be from -90° to 90° (the second crank's lead over the first)",
+            ))
+        }
+        Some(phase) => phase.si,
     };
 
     let m = &raw.motion;
-    let start_angle = quantity("motion.start_angle", &m.start_angle, Dimension::Angle)?;
-    let end_angle = quantity("motion.end_angle", &m.end_angle, Dimension::Angle)?;
+    let (start_angle, end_angle) = (m.start_angle.si, m.end_angle.si);
     if end_angle <= start_angle {
         return Err(invalid(
             "motion.end_angle",
-            &m.end_angle,
+            &m.end_angle.written,
             "must be greater than motion.start_angle",
         ));
     }
     let motion = CrankMotion {
         start_angle,
-        initial_speed: quantity(
-            "motion.initial_speed",
-            &m.initial_speed,
-            Dimension::AngularSpeed,
-        )?,
-        angular_acceleration: quantity(
-            "motion.angular_acceleration",
-            &m.angular_acceleration,
-            Dimension::AngularAcceleration,
-        )?,
+        initial_speed: m.initial_speed.si,
+        angular_acceleration: m.angular_acceleration.si,
     };
     if let Err(e) = motion.at_angle(end_angle) {
         return Err(invalid(
             "motion.initial_speed",
-            &m.initial_speed,
+            &m.initial_speed.written,
             &e.to_string(),
         ));
     }
-    if !(8..=MAX_STEPS).contains(&m.steps) {
-        return Err(invalid(
-            "motion.steps",
-            &m.steps,
-            &format!("must be an integer from 8 to {MAX_STEPS}"),
-        ));
-    }
-
-    let output = output_options(raw.output.as_ref(), &invalid)?;
-    let masses = raw.masses.clone().unwrap_or_default();
-    for key in masses.keys() {
-        let known = MASS_FIELDS.iter().any(|(f, _)| f == key)
-            || key == "rod_material"
-            || key == "rules"
-            || cardan_mechanism::entry(key).is_some();
-        if !known {
-            return Err(invalid(
-                &format!("masses.{key}"),
-                &masses[key],
-                &format!(
-                    "unknown field: the mass fields are {}, rod_material, rules, and a table per mechanism",
-                    MASS_FIELDS.map(|(f, _)| f).join(", ")
-                ),
-            ));
-        }
-    }
-    for key in raw.rest.keys() {
-        if cardan_mechanism::entry(key).is_none() {
-            return Err(invalid(
-                key,
-                &raw.rest[key],
-                &format!(
-                    "unknown field or table: a case has name, machine, mechanisms, [geometry], [motion], [masses], [gas], [friction], [gear], [output], and a table per mechanism ({})",
-                    cardan_mechanism::names()
-                ),
-            ));
-        }
-    }
+    let steps = m.steps.0 as usize;
 
     if raw.mechanisms.is_empty() {
         return Err(invalid(
@@ -529,14 +441,8 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
     let mut mechanisms: Vec<Arc<dyn Mechanism>> = Vec::new();
     for name in &raw.mechanisms {
         let Some(entry) = cardan_mechanism::entry(name) else {
-            return Err(invalid(
-                "mechanisms",
-                &format!("\"{name}\""),
-                &format!(
-                    "unknown mechanism: use one of {}",
-                    cardan_mechanism::names()
-                ),
-            ));
+            let rule = crate::schema::suggest("mechanism", name, &mechanism_names());
+            return Err(invalid("mechanisms", &format!("\"{name}\""), &rule));
         };
         if mechanisms.iter().any(|c| c.name() == entry.name) {
             return Err(invalid(
@@ -545,32 +451,26 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
                 "is listed twice",
             ));
         }
-        let own = match masses.get(entry.name) {
-            Some(toml::Value::Table(t)) => Some(t),
-            Some(other) => {
-                return Err(invalid(
-                    &format!("masses.{}", entry.name),
-                    other,
-                    "must be a table of mass fields",
-                ))
-            }
+        let own_masses = match own.masses.get(entry.name) {
+            Some(v) => Some(crate::masses::own_table(v.clone(), entry.name).map_err(field_error)?),
             None => None,
         };
-        let inputs = mass_inputs(&masses, own, entry, &quantity, &invalid)?;
-        let options = mechanism_options(raw.rest.get(entry.name), entry, &invalid)?;
+        let inputs = crate::masses::inputs(&raw.masses, own_masses.as_ref(), entry, &invalid)?;
+        let options = crate::mechanism_table::options(own.options.get(entry.name), entry)
+            .map_err(field_error)?;
         let mechanism = (entry.build)(&geometry, &inputs, &options).map_err(|e| {
             let field = match e.field.as_str() {
                 // The rod's centre of gravity may come from either mass table.
-                "masses.rod_cg" if own.is_some_and(|t| t.contains_key("rod_cg")) => {
+                "masses.rod_cg" if own_masses.as_ref().is_some_and(|t| t.rod_cg.is_some()) => {
                     format!("masses.{}.rod_cg", entry.name)
                 }
                 f => f.to_string(),
             };
             invalid(&field, &e.value, &e.rule)
         })?;
-        let step = (end_angle - start_angle) / m.steps as f64;
+        let step = (end_angle - start_angle) / steps as f64;
         mechanism
-            .check_angles(start_angle, step, m.steps as usize)
+            .check_angles(start_angle, step, steps)
             .map_err(|e| invalid(&e.field, &e.value, &e.rule))?;
         mechanisms.push(Arc::from(mechanism));
     }
@@ -647,195 +547,19 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
     };
     Ok(Case {
         file: file.into(),
-        name: raw.name,
+        name: raw.name.0,
         machine,
         geometry,
         pistons,
         crank_phase,
         motion,
         end_angle,
-        steps: m.steps as usize,
+        steps,
         mechanisms,
         gas,
         friction,
         gear,
-        output,
+        output: (&raw.output).into(),
         sweep: None,
     })
-}
-
-fn output_options(raw: Option<&RawOutput>, invalid: &Invalid) -> Result<OutputOptions, CaseError> {
-    let mut o = OutputOptions::default();
-    let Some(raw) = raw else { return Ok(o) };
-    o.csv = raw.csv.unwrap_or(true);
-    o.npy = raw.npy.unwrap_or(false);
-    if let Some(d) = raw.decimation {
-        if d < 1 {
-            return Err(invalid(
-                "output.decimation",
-                &d,
-                "must be a whole number of at least 1 (1 writes every step)",
-            ));
-        }
-        o.decimation = d as usize;
-    }
-    if let Some(d) = raw.significant_digits {
-        if !(1..=17).contains(&d) {
-            return Err(invalid(
-                "output.significant_digits",
-                &d,
-                "must be from 1 to 17 (leave it out for the shortest exact text)",
-            ));
-        }
-        o.significant_digits = Some(d as usize);
-    }
-    Ok(o)
-}
-
-/// The mass fields for one mechanism: its own table wins over the common one.
-fn mass_inputs(
-    common: &toml::Table,
-    own: Option<&toml::Table>,
-    entry: &cardan_mechanism::Entry,
-    quantity: &dyn Fn(&str, &toml::Value, Dimension) -> Result<f64, CaseError>,
-    invalid: &Invalid,
-) -> Result<MassInputs, CaseError> {
-    let pick = |field: &str| match own.and_then(|t| t.get(field)) {
-        Some(v) => Some((v, format!("masses.{}.{field}", entry.name))),
-        None => common.get(field).map(|v| (v, format!("masses.{field}"))),
-    };
-    if let Some(t) = own {
-        for key in t.keys() {
-            if key != "rod_material" && !MASS_FIELDS.iter().any(|(f, _)| f == key) {
-                return Err(invalid(
-                    &format!("masses.{}.{key}", entry.name),
-                    &t[key],
-                    &format!(
-                        "unknown field: the mass fields are {}, rod_material (mechanism tables cannot nest)",
-                        MASS_FIELDS.map(|(f, _)| f).join(", ")
-                    ),
-                ));
-            }
-        }
-    }
-    let mut inputs = MassInputs::default();
-    for (field, dim) in MASS_FIELDS {
-        let Some((v, path)) = pick(field) else {
-            continue;
-        };
-        if entry.unused_masses.contains(&field) {
-            return Err(invalid(
-                &path,
-                v,
-                &format!(
-                    "does not apply to the {}: set it in the table of the mechanism it applies to, e.g. [masses.cardan_gear]",
-                    entry.name
-                ),
-            ));
-        }
-        let x = quantity(&path, v, dim)?;
-        if x < 0.0 {
-            return Err(invalid(&path, v, "must not be negative"));
-        }
-        let slot = match field {
-            "crankshaft_inertia" => &mut inputs.crankshaft_inertia,
-            "wheel_inertia" => &mut inputs.wheel_inertia,
-            "rod_mass" => &mut inputs.rod_mass,
-            "rod_inertia" => &mut inputs.rod_inertia,
-            "rod_cg" => &mut inputs.rod_cg,
-            _ => &mut inputs.piston_mass,
-        };
-        *slot = Some(x);
-    }
-    // The reading of the estimation rules is the machine's, in the common table only.
-    if let Some(v) = common.get("rules") {
-        inputs.rules = match v.as_str().and_then(MassRules::from_name) {
-            Some(r) => Some(r),
-            None => {
-                return Err(invalid(
-                    "masses.rules",
-                    v,
-                    "must be \"rod_length\" (the default) or \"overall_length\"",
-                ))
-            }
-        };
-    }
-    if let Some((v, path)) = pick("rod_material") {
-        inputs.rod_material = match v.as_str().and_then(Material::from_name) {
-            Some(m @ (Material::Steel | Material::Titanium)) => Some(m),
-            _ => return Err(invalid(&path, v, "must be \"steel\" or \"titanium\"")),
-        };
-    }
-    Ok(inputs)
-}
-
-/// A mechanism's own table (`[cardan_gear]`), read against the options it declares.
-fn mechanism_options(
-    table: Option<&toml::Value>,
-    entry: &cardan_mechanism::Entry,
-    invalid: &Invalid,
-) -> Result<Options, CaseError> {
-    let mut options = Options::new();
-    let Some(table) = table else {
-        return Ok(options);
-    };
-    let Some(table) = table.as_table() else {
-        return Err(invalid(
-            entry.name,
-            table,
-            "must be a table of the mechanism's options",
-        ));
-    };
-    let declared = || {
-        if entry.options.is_empty() {
-            "it has none".to_string()
-        } else {
-            entry
-                .options
-                .iter()
-                .map(|o| o.name)
-                .collect::<Vec<_>>()
-                .join(", ")
-        }
-    };
-    for (key, value) in table {
-        let field = format!("{}.{key}", entry.name);
-        let Some(spec) = entry.options.iter().find(|o| o.name == key) else {
-            return Err(invalid(
-                &field,
-                value,
-                &format!("unknown option of the {}: {}", entry.name, declared()),
-            ));
-        };
-        let v = match spec.kind {
-            OptionKind::Choice(words) => match value.as_str() {
-                Some(w) if words.contains(&w) => OptionValue::Word(w.to_string()),
-                _ => {
-                    return Err(invalid(
-                        &field,
-                        value,
-                        &format!(
-                            "must be one of {}",
-                            words
-                                .iter()
-                                .map(|w| format!("\"{w}\""))
-                                .collect::<Vec<_>>()
-                                .join(", ")
-                        ),
-                    ))
-                }
-            },
-            OptionKind::Angle => OptionValue::Number(
-                to_si(value, Dimension::Angle).map_err(|r| invalid(&field, value, &r))?,
-            ),
-            OptionKind::Length => OptionValue::Number(
-                to_si(value, Dimension::Length).map_err(|r| invalid(&field, value, &r))?,
-            ),
-            OptionKind::Number => OptionValue::Number(
-                to_si(value, Dimension::Number).map_err(|r| invalid(&field, value, &r))?,
-            ),
-        };
-        options.insert(key.clone(), v);
-    }
-    Ok(options)
 }

@@ -7,6 +7,8 @@ pub mod case;
 pub mod friction;
 pub mod gas;
 pub mod gear;
+pub mod masses;
+pub mod mechanism_table;
 pub mod quantity;
 pub mod schema;
 pub mod sweep;

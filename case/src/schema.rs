@@ -174,10 +174,16 @@ fn wrong_type(message: &str) -> Option<(&str, &str)> {
     Some((found, expected))
 }
 
-/// "unknown field "x": did you mean "y"? (the fields here: ...)".
+/// "unknown field "x": did you mean "y"? (the fields here: ...)"; for a word (a value among
+/// some), "unknown word "x": did you mean "y"? (must be "a", "b" or "c")".
 pub fn suggest(what: &str, name: &str, expected: &[&str]) -> String {
     let listed = match expected {
         [] => format!("there are no {what}s here"),
+        [one] if what != "field" => format!("must be \"{one}\""),
+        [rest @ .., last] if what != "field" => {
+            let rest: Vec<String> = rest.iter().map(|w| format!("\"{w}\"")).collect();
+            format!("must be {} or \"{last}\"", rest.join(", "))
+        }
         _ => format!("the {what}s here: {}", expected.join(", ")),
     };
     match nearest(name, expected) {
@@ -205,9 +211,17 @@ fn what(root: &Value, path: &str, shown: &str) -> Option<String> {
     let mut node = root;
     let mut doc = None;
     for key in path.split('.').filter(|k| !k.is_empty()) {
-        let property = resolve(root, node).get("properties")?.get(key)?;
+        let (name, item) = match key.split_once('[') {
+            Some((name, _)) => (name, true),
+            None => (key, false),
+        };
+        let property = resolve(root, node).get("properties")?.get(name)?;
         doc = property.get("description").and_then(Value::as_str);
         node = property;
+        if item {
+            // An element of a list: what the list holds.
+            node = resolve(root, node).get("items")?;
+        }
     }
     let node = resolve(root, node);
     // An optional of a plain type is `"type": ["string", "null"]`.
@@ -257,13 +271,28 @@ fn what(root: &Value, path: &str, shown: &str) -> Option<String> {
         }
     };
     // The field's own doc, its first sentence, says what it is for.
-    let first = doc
-        .and_then(|d| d.split(". ").next())
-        .map(|d| d.trim_end_matches('.'));
+    let first = doc.map(first_sentence);
     Some(match first {
-        Some(d) if !d.is_empty() => format!("{what}: {d}"),
+        Some(d) if !d.is_empty() => {
+            let mut d = d.replace('\n', " ");
+            if let Some(c) = d.get(..1) {
+                d.replace_range(..1, &c.to_lowercase());
+            }
+            format!("{what}: {d}")
+        }
         _ => what,
     })
+}
+
+/// The first sentence of a doc comment: up to a full stop before a capital or the end.
+fn first_sentence(doc: &str) -> &str {
+    let ends = doc.match_indices(". ").find(|(i, _)| {
+        doc[i + 2..].starts_with(|c: char| c.is_uppercase() || c == '`' || c == '(')
+    });
+    match ends {
+        Some((i, _)) => &doc[..i],
+        None => doc.trim_end().trim_end_matches('.'),
+    }
 }
 
 /// A schema with its `$ref` followed and an optional's `null` branch dropped.
@@ -348,7 +377,7 @@ mod tests {
         let e = error("[geometry]\nsteps = 8");
         assert_eq!(
             e,
-            "geometry.crank_length = (missing): required: a number: The crank"
+            "geometry.crank_length = (missing): required: a number: the crank"
         );
         let e = error("[geometry]\ncrank_length = 1.0\nsteps = 8.5");
         assert_eq!(e, "geometry.steps = 8.5: must be a whole number");
