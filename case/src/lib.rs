@@ -7,6 +7,7 @@ pub mod case;
 pub mod friction;
 pub mod gas;
 pub mod gear;
+pub mod json_schema;
 pub mod masses;
 pub mod mechanism_table;
 pub mod quantity;

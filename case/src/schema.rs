@@ -223,6 +223,17 @@ fn what(root: &Value, path: &str, shown: &str) -> Option<String> {
             node = resolve(root, node).get("items")?;
         }
     }
+    let what = value_kind(root, node, shown)?;
+    // The field's own doc, its first sentence, says what it is for.
+    Some(match doc.map(first_sentence) {
+        Some(d) if !d.is_empty() => format!("{what}: {}", lower_first(&d.replace('\n', " "))),
+        _ => what,
+    })
+}
+
+/// What a value of the schema `node` must be, in words ("a number in m or a string with a
+/// unit", "a string in quotes: \"pump\" or \"engine\"", "a table [shown]").
+pub fn value_kind(root: &Value, node: &Value, shown: &str) -> Option<String> {
     let node = resolve(root, node);
     // An optional of a plain type is `"type": ["string", "null"]`.
     let kind = match node.get("type") {
@@ -247,45 +258,40 @@ fn what(root: &Value, path: &str, shown: &str) -> Option<String> {
             .map(|w| format!("\"{w}\""))
             .collect(),
     };
-    let what = if let Some(unit) = node.get("x-unit").and_then(Value::as_str) {
-        format!("a number in {unit} or a string with a unit")
-    } else if !words.is_empty() {
-        let (last, rest) = words.split_last()?;
-        match rest {
+    if let Some(unit) = node.get("x-unit").and_then(Value::as_str) {
+        return Some(format!("a number in {unit} or a string with a unit"));
+    }
+    if let Some((last, rest)) = words.split_last() {
+        return Some(match rest {
             [] => format!("a string in quotes: {last}"),
             _ => format!("a string in quotes: {} or {last}", rest.join(", ")),
-        }
-    } else {
-        match kind? {
-            "integer" => match (node.get("minimum"), node.get("maximum")) {
-                (Some(lo), Some(hi)) => format!("a whole number from {lo} to {hi}"),
-                (Some(lo), None) if lo != 0 => format!("a whole number of at least {lo}"),
-                _ => "a whole number".to_string(),
-            },
-            "number" => "a number".to_string(),
-            "boolean" => "true or false (without quotes)".to_string(),
-            "string" => "a string in quotes".to_string(),
-            "array" => "a list in brackets, even of one: [...]".to_string(),
-            "object" => format!("a table [{shown}]"),
-            _ => return None,
-        }
-    };
-    // The field's own doc, its first sentence, says what it is for.
-    let first = doc.map(first_sentence);
-    Some(match first {
-        Some(d) if !d.is_empty() => {
-            let mut d = d.replace('\n', " ");
-            if let Some(c) = d.get(..1) {
-                d.replace_range(..1, &c.to_lowercase());
-            }
-            format!("{what}: {d}")
-        }
-        _ => what,
+        });
+    }
+    Some(match kind? {
+        "integer" => match (node.get("minimum"), node.get("maximum")) {
+            (Some(lo), Some(hi)) => format!("a whole number from {lo} to {hi}"),
+            (Some(lo), None) if lo != 0 => format!("a whole number of at least {lo}"),
+            _ => "a whole number".to_string(),
+        },
+        "number" => "a number".to_string(),
+        "boolean" => "true or false (without quotes)".to_string(),
+        "string" => "a string in quotes".to_string(),
+        "array" => "a list in brackets, even of one: [...]".to_string(),
+        "object" => format!("a table [{shown}]"),
+        _ => return None,
     })
 }
 
+fn lower_first(s: &str) -> String {
+    let mut c = s.chars();
+    match c.next() {
+        Some(f) => f.to_lowercase().chain(c).collect(),
+        None => String::new(),
+    }
+}
+
 /// The first sentence of a doc comment: up to a full stop before a capital or the end.
-fn first_sentence(doc: &str) -> &str {
+pub fn first_sentence(doc: &str) -> &str {
     let ends = doc.match_indices(". ").find(|(i, _)| {
         doc[i + 2..].starts_with(|c: char| c.is_uppercase() || c == '`' || c == '(')
     });
@@ -296,7 +302,7 @@ fn first_sentence(doc: &str) -> &str {
 }
 
 /// A schema with its `$ref` followed and an optional's `null` branch dropped.
-fn resolve<'a>(root: &'a Value, mut node: &'a Value) -> &'a Value {
+pub fn resolve<'a>(root: &'a Value, mut node: &'a Value) -> &'a Value {
     for _ in 0..8 {
         if let Some(r) = node.get("$ref").and_then(Value::as_str) {
             let name = r.rsplit('/').next().unwrap_or_default();

@@ -10,7 +10,100 @@ pub fn sections() -> Vec<(&'static str, String)> {
         ("metrics", cardan_dynamics::metrics::markdown_table()),
         ("columns", columns_table()),
         ("mechanisms", mechanisms_table()),
+        (
+            "case-fields",
+            fields_tables(&cardan_case::json_schema::case_schema()),
+        ),
     ]
+}
+
+/// The field tables of a case file, one per table, from its JSON Schema: each field, what its
+/// value must be, whether it is required, and its doc's first sentence. Sibling tables of one
+/// definition (`[masses.<mechanism>]`) are described once.
+fn fields_tables(root: &serde_json::Value) -> String {
+    use cardan_case::schema::{first_sentence, resolve, value_kind};
+    /// A table to describe: its parent's path, its names there, its schema.
+    struct Table<'a> {
+        parent: String,
+        names: Vec<String>,
+        schema: &'a serde_json::Value,
+    }
+    let mut out = String::new();
+    let mut tables = vec![Table {
+        parent: String::new(),
+        names: Vec::new(),
+        schema: root,
+    }];
+    while let Some(table) = tables.pop() {
+        let node = resolve(root, table.schema);
+        let Some(properties) = node.get("properties").and_then(|p| p.as_object()) else {
+            continue;
+        };
+        if properties.is_empty() {
+            continue;
+        }
+        let path = match &table.names[..] {
+            [] => String::new(),
+            [one] => join(&table.parent, one),
+            _ => join(&table.parent, "<mechanism>"),
+        };
+        let title = match &table.names[..] {
+            [] => "top level".to_string(),
+            [_] => format!("[{path}]"),
+            names => format!("[{path}], for each of {}", names.join(", ")),
+        };
+        let required: Vec<&str> = node
+            .get("required")
+            .and_then(|r| r.as_array())
+            .map(|r| r.iter().filter_map(|v| v.as_str()).collect())
+            .unwrap_or_default();
+        out.push_str(&format!(
+            "\n**{title}**\n\n| field | value | required | meaning |\n|---|---|---|---|\n"
+        ));
+        let mut nested: Vec<Table> = Vec::new();
+        for (name, schema) in properties {
+            let full = join(&path, name);
+            let kind = value_kind(root, schema, &full).unwrap_or_default();
+            let doc = schema
+                .get("description")
+                .or_else(|| resolve(root, schema).get("description"))
+                .and_then(|d| d.as_str())
+                .map(|d| first_sentence(d).replace('\n', " "))
+                .unwrap_or_default();
+            let needed = if required.contains(&name.as_str()) {
+                "yes"
+            } else {
+                "no"
+            };
+            out.push_str(&format!("| `{name}` | {kind} | {needed} | {doc} |\n"));
+            if resolve(root, schema).get("properties").is_none() {
+                continue;
+            }
+            let reference = schema.get("$ref");
+            match nested
+                .iter_mut()
+                .find(|t| reference.is_some() && t.schema.get("$ref") == reference)
+            {
+                Some(same) => same.names.push(name.clone()),
+                None => nested.push(Table {
+                    parent: path.clone(),
+                    names: vec![name.clone()],
+                    schema,
+                }),
+            }
+        }
+        // Depth first, in the order of the fields.
+        tables.extend(nested.into_iter().rev());
+    }
+    out
+}
+
+fn join(table: &str, key: &str) -> String {
+    if table.is_empty() {
+        key.to_string()
+    } else {
+        format!("{table}.{key}")
+    }
 }
 
 fn columns_table() -> String {
@@ -130,4 +223,18 @@ pub fn regenerate_all(
         }
     }
     Ok(out)
+}
+
+/// The JSON Schemas shipped for editors: (path under the root, generated text).
+/// `cargo xtask schema` writes them; a test checks that the shipped ones are fresh.
+pub fn schemas() -> Vec<(&'static str, String)> {
+    let text = |schema: serde_json::Value| {
+        let mut text = serde_json::to_string_pretty(&schema).unwrap_or_default();
+        text.push('\n');
+        text
+    };
+    vec![(
+        "schema/case.schema.json",
+        text(cardan_case::json_schema::case_schema()),
+    )]
 }

@@ -1,0 +1,71 @@
+//! The JSON Schema of case files is the typed schema's: the shipped file is fresh, every
+//! shipped case validates against it, and a misspelled field does not.
+
+use std::path::{Path, PathBuf};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+fn case_schema() -> jsonschema::Validator {
+    jsonschema::validator_for(&cardan_case::json_schema::case_schema()).unwrap()
+}
+
+fn as_json(text: &str) -> serde_json::Value {
+    let table: toml::Table = toml::from_str(text).unwrap();
+    serde_json::to_value(table).unwrap()
+}
+
+#[test]
+fn the_shipped_schemas_are_fresh() {
+    for (path, fresh) in xtask::schemas() {
+        let shipped = std::fs::read_to_string(root().join(path)).unwrap_or_default();
+        assert!(
+            shipped == fresh,
+            "{path} is stale: run `cargo xtask schema`"
+        );
+    }
+}
+
+#[test]
+fn every_shipped_case_validates_against_the_schema() {
+    let validator = case_schema();
+    let mut checked = 0;
+    for entry in std::fs::read_dir(root().join("configs")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let value = as_json(&text);
+        let errors: Vec<String> = validator
+            .iter_errors(&value)
+            .map(|e| format!("{} at {}", e, e.instance_path()))
+            .collect();
+        assert!(errors.is_empty(), "{}: {errors:#?}", path.display());
+        checked += 1;
+    }
+    assert!(checked > 10, "only {checked} cases");
+}
+
+/// What the reader refuses for its form, the schema refuses too: a misspelled field or table,
+/// an unknown word, a count out of range, an unknown unit. (The rules between fields and the
+/// plausibility of bare numbers are the reader's alone.)
+#[test]
+fn the_schema_refuses_what_the_reader_refuses() {
+    let validator = case_schema();
+    let good =
+        std::fs::read_to_string(root().join("configs/karhula-r60-l140-a0-w3pi.toml")).unwrap();
+    assert!(validator.is_valid(&as_json(&good)));
+    for (from, to) in [
+        ("crank_length", "crank_lenght"),
+        ("machine = \"pump\"", "machine = \"pmup\""),
+        ("steps = 7200", "steps = 4"),
+        ("bore = 0.12", "bore = \"120 furlongs\""),
+        ("[motion]", "[motions]"),
+    ] {
+        assert!(good.contains(from), "test set-up: {from}");
+        let bad = good.replacen(from, to, 1);
+        assert!(!validator.is_valid(&as_json(&bad)), "accepted {to}");
+    }
+}
