@@ -11,11 +11,12 @@
 //! steps: the NPY file's size is known in advance (rows × columns), so every block's column
 //! pieces are written in place.
 
-use crate::report::{ChartData, ChartRecorder, ChartRows, MAX_POINTS};
 use anyhow::{bail, Context};
 use cardan_case::case::OutputOptions;
 use cardan_dynamics::{radial, tangential, GearRatings, Sink, Step, StepBlock, StepScratch};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
+use cardan_report::files::write_file;
+use cardan_report::{row_count, ChartData, ChartRecorder, ChartRows, MAX_POINTS};
 use std::fs::File;
 use std::io::{BufWriter, Seek, SeekFrom, Write};
 use std::ops::Range;
@@ -175,11 +176,6 @@ pub struct RunLayout<'b> {
 /// enough that a block (rows × columns × 8 bytes, about 0.5 MB for a cardan gear with every
 /// family) stays in the caches.
 const BLOCK_ROWS: usize = 512;
-
-/// The number of rows written for steps 0..=`last_step`: every `decimation`-th and the last.
-pub fn row_count(last_step: usize, decimation: usize) -> usize {
-    last_step / decimation + 1 + usize::from(last_step % decimation != 0)
-}
 
 /// The per-step row of one crank train: its column names and how a [`Step`] fills it. The
 /// files and the charts both take their rows from here, so that a column's name and its value
@@ -631,7 +627,7 @@ impl Writer {
         let npy = if options.npy {
             let names = dir.join(format!("{label}.columns.json"));
             let json = serde_json::to_string(header)? + "\n";
-            crate::output::write_file(&names, json.as_bytes())?;
+            write_file(&names, json.as_bytes())?;
             Some(NpyFile::create(
                 &dir.join(format!("{label}.npy")),
                 rows,
@@ -932,14 +928,6 @@ mod tests {
                 );
             }
             assert_eq!(sink.taken_from(last_step + 1), usize::MAX);
-        }
-    }
-
-    #[test]
-    fn row_count_is_every_nth_step_and_the_last() {
-        for (last, d) in [(0, 1), (10, 1), (10, 3), (9, 3), (7200, 7), (5, 10)] {
-            let expected = (0..=last).filter(|i| i % d == 0 || *i == last).count();
-            assert_eq!(row_count(last, d), expected, "last {last}, every {d}");
         }
     }
 

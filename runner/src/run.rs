@@ -3,7 +3,6 @@
 
 use crate::output;
 use crate::per_step::{ChartSink, PerStepSink, RunLayout};
-use crate::report::ChartData;
 use anyhow::Context;
 use cardan_case::case::{self, Case, CaseError};
 use cardan_dynamics::stepper::GasAt;
@@ -12,6 +11,7 @@ use cardan_dynamics::{
     SummarySink,
 };
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
+use cardan_report::{files, ChartData};
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -136,7 +136,7 @@ pub fn estimated_bytes(case: &Case) -> Result<(u64, String), String> {
     if !(o.csv || o.npy) {
         return Ok((0, "no per-step file".into()));
     }
-    let rows = crate::per_step::row_count(case.steps, o.decimation) as u64;
+    let rows = cardan_report::row_count(case.steps, o.decimation) as u64;
     let mut names = vec![Inertial(Solver::ClosedForm).name()];
     if case.gas.is_some() {
         names.push(Gas(Solver::ClosedForm).name());
@@ -192,7 +192,7 @@ pub fn human_bytes(bytes: u64) -> String {
 /// case's (the second train of a phased opposed-piston case; 0 otherwise), writing its
 /// per-step files (named `label`, as `case.output` asks) into `dir` if given. Both trains'
 /// pistons see the one chamber's pressure. With `dir` and `charts`, it also records the
-/// series of the report's charts (thinned as it steps, see `report/envelope.rs`) and returns
+/// series of the report's charts (thinned as it steps, see `report/src/envelope.rs`) and returns
 /// them, so that the report need not read the CSV back, nor the CSV exist.
 fn run_mechanism(
     case: &Case,
@@ -618,7 +618,7 @@ fn run_and_write(
     if !options.allow_large {
         let limit = options.max_bytes.unwrap_or(DEFAULT_MAX_BYTES);
         // Most cases are far below the limit whatever their columns: no need to count them.
-        let rows = crate::per_step::row_count(case.steps, case.output.decimation) as u64;
+        let rows = cardan_report::row_count(case.steps, case.output.decimation) as u64;
         let csv_bytes = case
             .output
             .significant_digits
@@ -641,7 +641,7 @@ fn run_and_write(
             ));
         }
     }
-    let tmp = output::temporary_dir(&dir).map_err(cannot_write)?;
+    let tmp = files::temporary_dir(&dir).map_err(cannot_write)?;
     // A sweep's points are reported by the sweep's report: no charts of their own.
     let report = options.reports && case.sweep.is_none();
     let result = run_trains(case, Some(&tmp), report).and_then(|trains| {
@@ -657,13 +657,13 @@ fn run_and_write(
         let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
             .map_err(|e| e.to_string())?;
         summary.push('\n');
-        output::write_file(&tmp.join("summary.json"), summary.as_bytes())
+        files::write_file(&tmp.join("summary.json"), summary.as_bytes())
             .and_then(|()| {
                 if report {
-                    crate::report::case_report_from_run(&tmp, None, charts)
+                    cardan_report::case_report_from_run(&tmp, None, charts)
                         .context("the report")?;
                 }
-                output::replace_dir(&tmp, &dir)
+                files::replace_dir(&tmp, &dir)
             })
             .map_err(cannot_write)?;
         Ok(results)
@@ -844,7 +844,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         case.output.csv = options.csv.unwrap_or(case.output.csv);
         case.output.npy = options.npy.unwrap_or(case.output.npy);
     }
-    output::remove_stale_temporaries(out);
+    files::remove_stale_temporaries(out);
     let mut selected: HashMap<&str, usize> = HashMap::new();
     for c in &cases {
         if let Some((sweep, _)) = &c.sweep {
@@ -865,7 +865,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         let dir = out.join(sweep);
         let some = selected[sweep.as_str()] < all_points[sweep].len();
         let target = if some && dir.join("sweep.csv").is_file() {
-            output::remove_stale_temporaries(&dir);
+            files::remove_stale_temporaries(&dir);
             let swept: Vec<String> = values.iter().map(|(p, _)| p.clone()).collect();
             match swept_columns(&dir.join("sweep.csv"), swept.len()) {
                 Ok(columns) if columns == swept => Ok(SweepTarget::Update),
@@ -875,7 +875,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
                 Err(e) => Err(e),
             }
         } else {
-            output::temporary_dir(&dir).map(SweepTarget::Whole)
+            files::temporary_dir(&dir).map(SweepTarget::Whole)
         };
         if let Err(e) = &target {
             report.failures.push(format!(
@@ -990,13 +990,13 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
                 continue;
             }
             SweepTarget::Whole(tmp) => {
-                output::write_file(&tmp.join("sweep.csv"), sweep_csv(rows).as_bytes())
+                files::write_file(&tmp.join("sweep.csv"), sweep_csv(rows).as_bytes())
                     .and_then(|()| {
                         if options.reports && !rows.is_empty() {
-                            crate::report::sweep_report(tmp, sweep, None)
+                            cardan_report::sweep_report(tmp, sweep, None)
                                 .context("the sweep report")?;
                         }
-                        output::replace_dir(tmp, &dir)
+                        files::replace_dir(tmp, &dir)
                     })
                     .inspect_err(|_| {
                         let _ = std::fs::remove_dir_all(tmp);
@@ -1006,12 +1006,12 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
             SweepTarget::Update => {
                 merged_sweep_csv(&dir, &sweep_csv(rows), &all_points[sweep])
                     .and_then(|csv| {
-                        output::write_file_replacing(&dir.join("sweep.csv"), csv.as_bytes())
+                        files::write_file_replacing(&dir.join("sweep.csv"), csv.as_bytes())
                     })
                     .and_then(|()| {
                         // The sweep's report, if asked or already there: never one of old points.
                         if options.reports || dir.join("report.html").is_file() {
-                            crate::report::sweep_report(&dir, sweep, None)
+                            cardan_report::sweep_report(&dir, sweep, None)
                                 .context("the sweep report")?;
                         }
                         Ok(())
@@ -1031,7 +1031,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let changed = !report.written.is_empty() || !report.sweeps.is_empty();
     let index = out.join("index.html");
     if changed && (options.reports || index.symlink_metadata().is_ok()) {
-        if let Err(e) = crate::report::index(out) {
+        if let Err(e) = cardan_report::index(out) {
             report
                 .failures
                 .push(format!("cannot write {}: {e:#}", index.display()));

@@ -15,6 +15,8 @@
 //!   of each mechanism and of the difference, with the 0 % contour: where the mechanisms swap
 //!   places).
 //! - [`index`]: `<out>/index.html`, linking every report with a few headline metrics per case.
+//! - [`files`]: an output folder's files, each written whole (used by the runner and the
+//!   gear calculator too).
 //!
 //! The differences are `Δ = (mechanism − reference) / |reference| × 100 %`; lower is better for
 //! loads, torques, power need and losses, higher for efficiency and output. The reference is
@@ -27,18 +29,26 @@
 //! the CSV it wrote nor holds more than [`MAX_POINTS`] points per series, and draws the same
 //! bytes as a report made from the CSV. Reports hold no timestamps and list everything in a
 //! fixed order, so that two runs give the same bytes.
+//!
+//! This crate knows a run's per-step rows by their column names only: the runner's one row
+//! definition (`cardan_runner::per_step::Row`) fills them and hands them to a
+//! [`ChartRecorder`], or writes them to the CSV this crate reads back; which rows are taken is
+//! [`row_count`] and [`ChartRows`]. It does not depend on the runner.
 
 mod case_plots;
 mod cases;
 mod data;
 mod doc;
 mod envelope;
+pub mod files;
 mod heatmap;
 mod index;
+mod rows;
 mod svg;
 mod sweeps;
 
-pub use envelope::{ChartData, ChartRecorder, ChartRows, Envelope, Trace};
+pub use envelope::{ChartData, ChartRecorder, Envelope, Trace};
+pub use rows::{row_count, ChartRows, MAX_CHART_ROWS};
 pub use svg::MAX_POINTS;
 
 use anyhow::Context;
@@ -239,10 +249,10 @@ fn write_report(dir: &Path, doc: &doc::Doc, plots: &[(String, String)]) -> anyho
             .with_context(|| format!("create {}", plots_dir.display()))?;
     }
     for (name, svg) in plots {
-        crate::output::write_file(&plots_dir.join(name), svg.as_bytes())?;
+        files::write_file(&plots_dir.join(name), svg.as_bytes())?;
     }
-    crate::output::write_file(&dir.join("report.md"), doc.markdown().as_bytes())?;
-    crate::output::write_file(&dir.join("report.html"), doc.html().as_bytes())?;
+    files::write_file(&dir.join("report.md"), doc.markdown().as_bytes())?;
+    files::write_file(&dir.join("report.html"), doc.html().as_bytes())?;
     Ok(())
 }
 

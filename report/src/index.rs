@@ -172,7 +172,7 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
                 .collect(),
         ));
     }
-    crate::output::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
+    crate::files::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
 }
 
 #[cfg(test)]
