@@ -19,7 +19,7 @@
 //! peaks), and a summary-only run of millions of steps does not pay the charts' per-row cost
 //! at every step. Reading the rows back from a CSV takes the same rows.
 
-use crate::case_plots::traces;
+use crate::chart_columns::traces;
 use crate::rows::{row_count, ChartRows};
 use std::collections::BTreeMap;
 

@@ -4,7 +4,7 @@
 //! `<rect class="cell">` with `data-i`, `data-j`, `data-value`; the legend is
 //! `<g class="legend">` with `data-min`/`data-max`; the contour `<path class="contour">`.
 
-use super::svg::{
+use crate::svg::{
     attr_num, c, esc, nice_range, open_svg, text_width, tick_label, PLOT_HEIGHT, TOP, WIDTH,
 };
 use std::fmt::Write as _;
