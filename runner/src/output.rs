@@ -1,11 +1,27 @@
-//! The result file `summary.json` (the per-step files are [`crate::per_step`]'s). A case's
+//! A case's results: each crank train's [`MechanismResult`] (made by [`crate::run`]), and the
+//! result file `summary.json` made of them (the per-step files are [`crate::per_step`]'s). A case's
 //! files are written into a fresh temporary folder that then replaces the case's folder as a
 //! whole ([`cardan_report::files`]), so no file of an earlier run survives beside the new ones.
 
-use crate::run::MechanismResult;
 use cardan_case::case::Case;
-use cardan_mechanism::JointKind;
+use cardan_dynamics::Summary;
+use cardan_mechanism::{JointKind, Mechanism};
 use serde_json::{json, Map, Value};
+use std::sync::Arc;
+
+/// The result of one crank train of a case: one per mechanism, two per mechanism in an
+/// opposed-piston case with a crank phase offset.
+#[derive(Debug, Clone)]
+pub struct MechanismResult {
+    pub mechanism: Arc<dyn Mechanism>,
+    /// Its name in the outputs (the key in `summary.json`, the CSV's name): the mechanism's
+    /// name, with `_crank2` for the second crank train of a phased opposed-piston case.
+    pub label: String,
+    pub summary: Summary,
+    /// What the case should know about these results (a grid too coarse for its peaks), said
+    /// on stderr and in summary.json and the report.
+    pub warnings: Vec<String>,
+}
 
 /// Version of the layout of `summary.json`; raised when a name or the shape changes.
 pub const SCHEMA_VERSION: u32 = 2;
