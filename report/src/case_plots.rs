@@ -26,81 +26,9 @@ pub(super) struct PlotSpec {
 
 /// The columns of the charts a CSV header allows.
 pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Vec<PlotSpec> {
-    let has = |k: usize, c: &str| {
-        headers[k]
-            .as_ref()
-            .is_some_and(|h| h.iter().any(|x| x == c))
-    };
     let n = s.mechanisms.len();
-    let pistons = |k: usize| -> Vec<String> {
-        headers[k]
-            .iter()
-            .flatten()
-            .filter_map(|h| h.strip_suffix("_dx_dtheta_m_rad"))
-            .map(String::from)
-            .collect()
-    };
-    let mut specs = Vec::new();
-    let per_piston = |suffix: &str| -> Vec<Vec<(String, String)>> {
-        (0..n)
-            .map(|k| {
-                let ps = pistons(k);
-                let many = ps.len() > 1;
-                ps.iter()
-                    .map(|p| {
-                        (
-                            format!("{p}_{suffix}"),
-                            if many { format!(" {p}") } else { String::new() },
-                        )
-                    })
-                    .collect()
-            })
-            .collect()
-    };
-    for (file, title, quantity, unit, suffix) in [
-        (
-            "piston_position",
-            "Piston position",
-            "position",
-            "m",
-            "position_m",
-        ),
-        (
-            "piston_velocity",
-            "Piston velocity",
-            "velocity",
-            "m/s",
-            "velocity_m_s",
-        ),
-        (
-            "piston_acceleration",
-            "Piston acceleration",
-            "acceleration",
-            "m/s^2",
-            "acceleration_m_s2",
-        ),
-    ] {
-        specs.push(PlotSpec {
-            file: file.into(),
-            title: title.into(),
-            y_label: quantity.into(),
-            unit: unit.into(),
-            zero_line: suffix != "position_m",
-            columns: per_piston(suffix),
-            sum: false,
-        });
-    }
-    let single = |column: &str| -> Vec<Vec<(String, String)>> {
-        (0..n)
-            .map(|k| {
-                if has(k, column) {
-                    vec![(column.to_string(), String::new())]
-                } else {
-                    Vec::new()
-                }
-            })
-            .collect()
-    };
+    let single = |column: &str| single_column(headers, n, column);
+    let mut specs = piston_specs(headers, n);
     specs.push(PlotSpec {
         file: "cylinder_pressure".into(),
         title: "Cylinder pressure (absolute)".into(),
@@ -154,6 +82,101 @@ pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Ve
             });
         }
     }
+    specs.extend(friction_specs(headers, n));
+    specs
+}
+
+/// Per mechanism (the first `n` of `headers`), `column` if its header has it.
+fn single_column(
+    headers: &[Option<Vec<String>>],
+    n: usize,
+    column: &str,
+) -> Vec<Vec<(String, String)>> {
+    let has = |k: usize, c: &str| {
+        headers[k]
+            .as_ref()
+            .is_some_and(|h| h.iter().any(|x| x == c))
+    };
+    (0..n)
+        .map(|k| {
+            if has(k, column) {
+                vec![(column.to_string(), String::new())]
+            } else {
+                Vec::new()
+            }
+        })
+        .collect()
+}
+
+/// The piston charts (position, velocity, acceleration) of the first `n` of `headers`: every
+/// piston of a mechanism, each named when it has several.
+fn piston_specs(headers: &[Option<Vec<String>>], n: usize) -> Vec<PlotSpec> {
+    let mut specs = Vec::new();
+    let pistons = |k: usize| -> Vec<String> {
+        headers[k]
+            .iter()
+            .flatten()
+            .filter_map(|h| h.strip_suffix("_dx_dtheta_m_rad"))
+            .map(String::from)
+            .collect()
+    };
+    let per_piston = |suffix: &str| -> Vec<Vec<(String, String)>> {
+        (0..n)
+            .map(|k| {
+                let ps = pistons(k);
+                let many = ps.len() > 1;
+                ps.iter()
+                    .map(|p| {
+                        (
+                            format!("{p}_{suffix}"),
+                            if many { format!(" {p}") } else { String::new() },
+                        )
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    for (file, title, quantity, unit, suffix) in [
+        (
+            "piston_position",
+            "Piston position",
+            "position",
+            "m",
+            "position_m",
+        ),
+        (
+            "piston_velocity",
+            "Piston velocity",
+            "velocity",
+            "m/s",
+            "velocity_m_s",
+        ),
+        (
+            "piston_acceleration",
+            "Piston acceleration",
+            "acceleration",
+            "m/s^2",
+            "acceleration_m_s2",
+        ),
+    ] {
+        specs.push(PlotSpec {
+            file: file.into(),
+            title: title.into(),
+            y_label: quantity.into(),
+            unit: unit.into(),
+            zero_line: suffix != "position_m",
+            columns: per_piston(suffix),
+            sum: false,
+        });
+    }
+    specs
+}
+
+/// The friction charts of the first `n` of `headers`: the friction torque, the power loss of
+/// all components (their sum) and of each.
+fn friction_specs(headers: &[Option<Vec<String>>], n: usize) -> Vec<PlotSpec> {
+    let single = |column: &str| single_column(headers, n, column);
+    let mut specs = Vec::new();
     specs.push(PlotSpec {
         file: "friction_torque".into(),
         title: "Friction torque".into(),
