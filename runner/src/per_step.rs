@@ -2,8 +2,9 @@
 //! ([`Row`]: the header and how a step fills it), written as CSV text (`<label>.csv`) and/or
 //! as a binary columnar array (`<label>.npy`, NPY format 1.0, `<f8`, Fortran order: each
 //! column contiguous, with its names in `<label>.columns.json`), and/or thinned for the
-//! report's charts ([`ChartRecorder`]: a few hundred points per charted column, whatever the
-//! number of steps). The one sink fills each row once for all of them.
+//! report's charts ([`ChartRecorder`](cardan_report::ChartRecorder): a few hundred points per
+//! charted column, whatever the number of steps). The one sink fills each row once for all of
+//! them.
 //!
 //! The run's thread only copies each row's numbers into a block; a thread of the sink's own
 //! formats and writes the blocks, so a large case keeps two cores busy (float formatting is

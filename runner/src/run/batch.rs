@@ -150,7 +150,7 @@ fn run_all(
             .map(|case| {
                 let _span = tracing::info_span!("case", name = %case.name).entered();
                 let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                    run_and_write(case, &base(case), &options)
+                    run_and_write(case, &base(case), options)
                 }));
                 if let Some(progress) = &options.progress {
                     progress(
