@@ -11,13 +11,13 @@
 //! never holds more than the budget). A finer envelope (more bins than the writer draws)
 //! would be thinned again by the writer, so it would buy nothing on the page.
 //!
-//! [`ChartRecorder`] applies one envelope per series the charts draw to a crank train's
-//! per-step rows (the rows of the runner's `per_step` module, whose header names their columns). Of a run of
-//! more than [`MAX_CHART_ROWS`](crate::rows::MAX_CHART_ROWS) rows it takes every k-th row (and the last), the fewest k that
-//! keeps it within that many: at least 32 rows per bucket of the envelope still, so a peak of
-//! a smooth curve is drawn within a small fraction of a pixel (the summary has the exact
-//! peaks), and a summary-only run of millions of steps does not pay the charts' per-row cost
-//! at every step. Reading the rows back from a CSV takes the same rows.
+//! [`ChartRecorder`] applies one envelope per series the charts draw to a crank train's per-step
+//! rows (the rows of the runner's `per_step` module, whose header names their columns). Of a run of
+//! more than [`MAX_CHART_ROWS`](crate::rows::MAX_CHART_ROWS) rows it takes every k-th row (and the
+//! last), the fewest k that keeps it within that many: at least 32 rows per bucket of the envelope
+//! still, so a peak of a smooth curve is drawn within a small fraction of a pixel (the summary has
+//! the exact peaks), and a summary-only run of millions of steps does not pay the charts' per-row
+//! cost at every step. Reading the rows back from a CSV takes the same rows.
 
 use crate::chart_columns::traces;
 use crate::rows::{row_count, ChartRows};

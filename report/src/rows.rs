@@ -6,7 +6,8 @@ pub fn row_count(last_step: usize, decimation: usize) -> usize {
     last_step / decimation + 1 + usize::from(last_step % decimation != 0)
 }
 
-/// The most rows a chart series takes from a run (why so many: [`ChartRecorder`](crate::ChartRecorder)).
+/// The most rows a chart series takes from a run (why so many:
+/// [`ChartRecorder`](crate::ChartRecorder)).
 pub const MAX_CHART_ROWS: usize = 16 * crate::svg::MAX_POINTS;
 
 /// Which of a run's per-step rows the charts take: every `stride`-th of the `rows` and the

@@ -12,9 +12,9 @@
 //! steps: the NPY file's size is known in advance (rows × columns), so every block's column
 //! pieces are written in place.
 //!
-//! The row's definition is `row.rs`; the sink that writes the files (and records the charts of
-//! the rows it writes) `sink.rs`, the one for the charts alone (and the chart recorder both use) `charts.rs`; the writing thread
-//! `writer.rs`, the file formats `csv.rs` and `npy.rs`.
+//! The row's definition is `row.rs`; the sink that writes the files (and records the charts of the
+//! rows it writes) `sink.rs`, the one for the charts alone (and the chart recorder both use)
+//! `charts.rs`; the writing thread `writer.rs`, the file formats `csv.rs` and `npy.rs`.
 
 mod charts;
 mod csv;
