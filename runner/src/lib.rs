@@ -5,7 +5,6 @@
 
 pub mod output;
 pub mod per_step;
-pub mod report;
 pub mod run;
 
 pub use cardan_case::{Case, CaseError};

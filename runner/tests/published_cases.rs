@@ -2,7 +2,7 @@
 //! each mechanism's volume curve, dynamics, summary.
 
 use cardan_case::case;
-use cardan_runner::run::MechanismResult;
+use cardan_runner::output::MechanismResult;
 use cardan_runner::run_case;
 use cardan_testing::within;
 use std::path::Path;

@@ -42,6 +42,87 @@ fn the_case_crate_does_not_depend_on_the_runner() {
     }
 }
 
+/// The reports are made from an output folder: their crate never depends on the runner (which
+/// depends on it) or the command line.
+#[test]
+fn the_report_crate_does_not_depend_on_the_runner() {
+    let manifest = std::fs::read_to_string(root().join("report/Cargo.toml")).unwrap();
+    for forbidden in ["cardan-runner", "cardan =", "\ncardan."] {
+        assert!(
+            !manifest.contains(forbidden),
+            "report depends on {forbidden}"
+        );
+    }
+}
+
+/// The lengths of the functions of a Rust file formatted by rustfmt: (name, first line,
+/// lines from `fn` to its closing brace, both counted). A function ends at the first later
+/// line that is its indentation and `}`; a declaration without a body is skipped.
+fn function_lengths(text: &str) -> Vec<(String, usize, usize)> {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::new();
+    for (k, line) in lines.iter().enumerate() {
+        let body = line.trim_start();
+        let indent = &line[..line.len() - body.len()];
+        let mut rest = body;
+        for prefix in ["pub(crate) ", "pub(super) ", "pub ", "const ", "unsafe "] {
+            rest = rest.strip_prefix(prefix).unwrap_or(rest);
+        }
+        let Some(name) = rest.strip_prefix("fn ") else {
+            continue;
+        };
+        let name: String = name
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        // The signature runs to the line with the body's `{` (or a `;`: no body).
+        let Some(open) = (k..lines.len())
+            .find(|&j| lines[j].contains('{') || lines[j].trim_end().ends_with(';'))
+        else {
+            continue;
+        };
+        if !lines[open].contains('{') {
+            continue;
+        }
+        let closing = format!("{indent}}}");
+        let end = if lines[open].trim_end().ends_with('}') {
+            Some(open)
+        } else {
+            (open + 1..lines.len()).find(|&j| lines[j].trim_end() == closing)
+        };
+        if let Some(end) = end {
+            out.push((name, k + 1, end - k + 1));
+        }
+    }
+    out
+}
+
+/// The runner and the report crate stay readable: no source file over 800 lines, no function
+/// over 150 (issue 23).
+#[test]
+fn runner_and_report_files_and_functions_are_short() {
+    let mut files = Vec::new();
+    for dir in ["runner/src", "report/src"] {
+        rust_files(&root().join(dir), &mut files);
+    }
+    assert!(files.len() > 20);
+    for file in files {
+        let text = std::fs::read_to_string(&file).unwrap();
+        let lines = text.lines().count();
+        assert!(lines <= 800, "{}: {lines} lines", file.display());
+        for (name, line, length) in function_lengths(&text) {
+            assert!(
+                length <= 150,
+                "{}:{line}: fn {name} is {length} lines",
+                file.display()
+            );
+        }
+    }
+    // The measure itself: a function of three lines, and a declaration without a body.
+    let sample = "fn a() {\n    1\n}\ntrait T {\n    fn b();\n}\n";
+    assert_eq!(function_lengths(sample), vec![("a".to_string(), 1, 3)]);
+}
+
 /// No code outside the mechanisms' own modules names a mechanism: the rest of the code reads
 /// bodies, joints and pistons from the topology.
 #[test]
@@ -52,6 +133,7 @@ fn no_code_outside_a_mechanism_module_names_a_mechanism() {
         "crates/gas/src",
         "case/src",
         "runner/src",
+        "report/src",
         "cli/src",
     ] {
         rust_files(&root().join(dir), &mut files);

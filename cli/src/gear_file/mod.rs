@@ -16,7 +16,7 @@
 //! the rules of thumb it breaks.
 
 use cardan_gears::{BendingHighCycle, BendingLowCycle, IForm, LoadDistribution, PairSpec, Quality};
-use cardan_runner::output::{replace_dir, temporary_dir, write_file};
+use cardan_report::files::{replace_dir, temporary_dir, write_file};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 

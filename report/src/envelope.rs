@@ -1,7 +1,7 @@
 //! A series thinned while it is being made: a case's charts come from its run, step by step,
 //! in memory that does not grow with the number of steps.
 //!
-//! [`Envelope`] keeps what the SVG writer's [`decimate`](super::svg::decimate) would keep of
+//! [`Envelope`] keeps what the SVG writer's [`decimate`](crate::svg::decimate) would keep of
 //! the whole series, computed on the fly: all the points when the run has at most the budget,
 //! else the first point, per bucket of consecutive rows the points of smallest and largest
 //! value in their order, and the last point. The buckets are decimate's (`buckets = (budget −
@@ -11,15 +11,16 @@
 //! never holds more than the budget). A finer envelope (more bins than the writer draws)
 //! would be thinned again by the writer, so it would buy nothing on the page.
 //!
-//! [`ChartRecorder`] applies one envelope per series the charts draw to a crank train's
-//! per-step rows (the rows of `per_step.rs`, whose header names their columns). Of a run of
-//! more than [`MAX_CHART_ROWS`] rows it takes every k-th row (and the last), the fewest k that
-//! keeps it within that many: at least 32 rows per bucket of the envelope still, so a peak of
-//! a smooth curve is drawn within a small fraction of a pixel (the summary has the exact
-//! peaks), and a summary-only run of millions of steps does not pay the charts' per-row cost
-//! at every step. Reading the rows back from a CSV takes the same rows.
+//! [`ChartRecorder`] applies one envelope per series the charts draw to a crank train's per-step
+//! rows (the rows of the runner's `per_step` module, whose header names their columns). Of a run of
+//! more than [`MAX_CHART_ROWS`](crate::rows::MAX_CHART_ROWS) rows it takes every k-th row (and the
+//! last), the fewest k that keeps it within that many: at least 32 rows per bucket of the envelope
+//! still, so a peak of a smooth curve is drawn within a small fraction of a pixel (the summary has
+//! the exact peaks), and a summary-only run of millions of steps does not pay the charts' per-row
+//! cost at every step. Reading the rows back from a CSV takes the same rows.
 
-use super::case_plots::traces;
+use crate::chart_columns::traces;
+use crate::rows::{row_count, ChartRows};
 use std::collections::BTreeMap;
 
 /// The running min/max thinning of one series (see the module's documentation).
@@ -159,37 +160,6 @@ pub struct ChartData {
     pub traces: BTreeMap<String, Trace>,
 }
 
-/// The most rows a chart series takes from a run (see the module's documentation).
-pub const MAX_CHART_ROWS: usize = 16 * super::svg::MAX_POINTS;
-
-/// Which of a run's per-step rows the charts take: every `stride`-th of the `rows` and the
-/// last, the fewest that keeps them within `MAX_CHART_ROWS` (16 000).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ChartRows {
-    rows: usize,
-    stride: usize,
-}
-
-impl ChartRows {
-    fn new(rows: usize) -> Self {
-        Self {
-            rows,
-            stride: rows.div_ceil(MAX_CHART_ROWS).max(1),
-        }
-    }
-
-    /// Whether the charts take the row of index `k`.
-    pub fn takes(&self, k: usize) -> bool {
-        k % self.stride == 0 || k + 1 == self.rows
-    }
-
-    /// The first row from `k` on that the charts take (`rows - 1` or more past the last
-    /// stride-th row).
-    pub fn next_taken(&self, k: usize) -> usize {
-        k.div_ceil(self.stride) * self.stride
-    }
-}
-
 /// Thins, row by row, the series the charts draw from a crank train's per-step rows.
 #[derive(Debug, Clone)]
 pub struct ChartRecorder {
@@ -216,7 +186,7 @@ impl ChartRecorder {
     ) -> Self {
         let index = |c: &str| header.iter().position(|h| h == c);
         let pick = ChartRows::new(rows);
-        let taken = crate::per_step::row_count(rows.saturating_sub(1), pick.stride);
+        let taken = row_count(rows.saturating_sub(1), pick.stride);
         let series = traces(header, joints)
             .into_iter()
             .map(|(key, columns)| {
@@ -297,8 +267,9 @@ impl ChartRecorder {
 
 #[cfg(test)]
 mod tests {
-    use super::super::svg::decimate;
     use super::*;
+    use crate::rows::MAX_CHART_ROWS;
+    use crate::svg::decimate;
 
     fn thin(x: &[f64], y: &[f64], budget: usize) -> (Vec<f64>, Vec<f64>) {
         let mut e = Envelope::new(x.len(), budget);
@@ -418,7 +389,7 @@ mod tests {
                 "{rows} rows: {}",
                 taken.len()
             );
-            assert_eq!(taken.len(), crate::per_step::row_count(rows - 1, stride));
+            assert_eq!(taken.len(), row_count(rows - 1, stride));
             assert_eq!(taken.last(), Some(&(rows - 1)), "the last row is taken");
             assert!(taken.iter().all(|k| k % stride == 0 || *k == rows - 1));
             let data = r.finish();

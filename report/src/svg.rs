@@ -243,38 +243,13 @@ pub(super) fn open_svg(o: &mut String, height: f64) {
 
 /// The line chart as an SVG document.
 pub fn line_chart(chart: &LineChart) -> String {
-    let finite = |v: &&f64| v.is_finite();
-    let (mut x_min, mut x_max, mut y_min, mut y_max) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     let decimated: Vec<(Vec<f64>, Vec<f64>)> = chart
         .series
         .iter()
         .map(|s| decimate(&s.x, &s.y, MAX_POINTS))
         .collect();
-    for (x, y) in &decimated {
-        for v in x.iter().filter(finite) {
-            x_min = x_min.min(*v);
-            x_max = x_max.max(*v);
-        }
-        for v in y.iter().filter(finite) {
-            y_min = y_min.min(*v);
-            y_max = y_max.max(*v);
-        }
-    }
-    if x_min > x_max {
-        (x_min, x_max, y_min, y_max) = (0.0, 1.0, 0.0, 1.0);
-    }
-    let (x_lo, x_hi, x_step) = if chart.x_categories.is_some() {
-        (x_min - 0.5, x_max + 0.5, 1.0)
-    } else if chart.angle_axis && x_max - x_min >= 180.0 {
-        let step = if x_max - x_min > 1440.0 { 180.0 } else { 90.0 };
-        (
-            (x_min / step + 1e-9).floor() * step,
-            (x_max / step - 1e-9).ceil() * step,
-            step,
-        )
-    } else {
-        nice_range(x_min, x_max, 8.0)
-    };
+    let (x_min, x_max, y_min, y_max) = extent(&decimated);
+    let (x_lo, x_hi, x_step) = x_range(chart, x_min, x_max);
     let (y_lo, y_hi, y_step) = nice_range(y_min, y_max, 5.0);
     let (scale, pre) = prefix(y_lo.abs().max(y_hi.abs()), &chart.y_unit);
     let plot_w = WIDTH - LEFT - RIGHT;
@@ -366,7 +341,81 @@ pub fn line_chart(chart: &LineChart) -> String {
             y = c(py(0.0))
         );
     }
-    for (s, (x, y)) in chart.series.iter().zip(&decimated) {
+    series_lines(&mut o, &chart.series, &decimated, px, py);
+    o.push_str("</g>\n");
+    let unit = pretty_unit_prefixed(pre, &chart.y_unit);
+    let y_title = if unit.is_empty() {
+        chart.y_label.clone()
+    } else {
+        format!("{}, {unit}", chart.y_label)
+    };
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
+        c(LEFT + plot_w / 2.0),
+        c(TOP + PLOT_HEIGHT + 36.0),
+        esc(&chart.x_label)
+    );
+    let _ = writeln!(
+        o,
+        "<text transform=\"translate(16 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
+        c(TOP + PLOT_HEIGHT / 2.0),
+        esc(&y_title)
+    );
+    legend_lines(&mut o, &chart.series, &legend);
+    o.push_str("</g>\n</svg>\n");
+    o
+}
+
+/// The smallest and largest finite x and y of the series drawn, (x_min, x_max, y_min, y_max);
+/// (0, 1, 0, 1) without any.
+fn extent(decimated: &[(Vec<f64>, Vec<f64>)]) -> (f64, f64, f64, f64) {
+    let finite = |v: &&f64| v.is_finite();
+    let (mut x_min, mut x_max, mut y_min, mut y_max) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for (x, y) in decimated {
+        for v in x.iter().filter(finite) {
+            x_min = x_min.min(*v);
+            x_max = x_max.max(*v);
+        }
+        for v in y.iter().filter(finite) {
+            y_min = y_min.min(*v);
+            y_max = y_max.max(*v);
+        }
+    }
+    if x_min > x_max {
+        (x_min, x_max, y_min, y_max) = (0.0, 1.0, 0.0, 1.0);
+    }
+    (x_min, x_max, y_min, y_max)
+}
+
+/// The x axis of `chart` over the data's `x_min..x_max`: (low, high, tick step). Categories
+/// one apart, half a step of margin; a crank angle of half a turn or more in steps of 90° (180°
+/// over four turns); else a nice range.
+fn x_range(chart: &LineChart, x_min: f64, x_max: f64) -> (f64, f64, f64) {
+    if chart.x_categories.is_some() {
+        (x_min - 0.5, x_max + 0.5, 1.0)
+    } else if chart.angle_axis && x_max - x_min >= 180.0 {
+        let step = if x_max - x_min > 1440.0 { 180.0 } else { 90.0 };
+        (
+            (x_min / step + 1e-9).floor() * step,
+            (x_max / step - 1e-9).ceil() * step,
+            step,
+        )
+    } else {
+        nice_range(x_min, x_max, 8.0)
+    }
+}
+
+/// Writes each series as a polyline of its `decimated` points (pixels by `px`, `py`), with
+/// its markers if it has them.
+fn series_lines(
+    o: &mut String,
+    series: &[Series],
+    decimated: &[(Vec<f64>, Vec<f64>)],
+    px: impl Fn(f64) -> f64,
+    py: impl Fn(f64) -> f64,
+) {
+    for (s, (x, y)) in series.iter().zip(decimated) {
         let colour = PALETTE[s.colour % PALETTE.len()];
         let dash = DASHES[s.dash % DASHES.len()];
         let mut points = String::with_capacity(x.len() * 14);
@@ -400,28 +449,12 @@ pub fn line_chart(chart: &LineChart) -> String {
             }
         }
     }
-    o.push_str("</g>\n");
-    let unit = pretty_unit_prefixed(pre, &chart.y_unit);
-    let y_title = if unit.is_empty() {
-        chart.y_label.clone()
-    } else {
-        format!("{}, {unit}", chart.y_label)
-    };
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
-        c(LEFT + plot_w / 2.0),
-        c(TOP + PLOT_HEIGHT + 36.0),
-        esc(&chart.x_label)
-    );
-    let _ = writeln!(
-        o,
-        "<text transform=\"translate(16 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
-        c(TOP + PLOT_HEIGHT / 2.0),
-        esc(&y_title)
-    );
+}
+
+/// Writes the legend's line and label of each series, at the places `legend` laid out.
+fn legend_lines(o: &mut String, series: &[Series], legend: &[(f64, f64)]) {
     o.push_str("<g class=\"legend-lines\">\n");
-    for (s, (x, y)) in chart.series.iter().zip(&legend) {
+    for (s, (x, y)) in series.iter().zip(legend) {
         let colour = PALETTE[s.colour % PALETTE.len()];
         let dash = DASHES[s.dash % DASHES.len()];
         let _ = writeln!(
@@ -441,8 +474,6 @@ pub fn line_chart(chart: &LineChart) -> String {
             esc(&s.label)
         );
     }
-    o.push_str("</g>\n</svg>\n");
-    o
 }
 
 /// A unit as printed: `N*m` → `N·m`, `m/s^2` → `m/s²`, `1` → nothing.

@@ -5,10 +5,10 @@
 //! draws are kept ([`traces`]), thinned as the run makes them (`envelope.rs`) or read from
 //! the CSV.
 
-use super::cases::family_rank;
-use super::data::CaseSummary;
-use super::envelope::ChartData;
-use super::svg::{self, LineChart, Series};
+use crate::chart_columns::{load_family, loss_columns, sum_key};
+use crate::data::{family_rank, CaseSummary};
+use crate::envelope::ChartData;
+use crate::svg::{self, LineChart, Series};
 
 /// One chart over crank angle: the file name, title, y quantity and unit, and per mechanism
 /// the columns to draw (column name, label suffix).
@@ -26,81 +26,9 @@ pub(super) struct PlotSpec {
 
 /// The columns of the charts a CSV header allows.
 pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Vec<PlotSpec> {
-    let has = |k: usize, c: &str| {
-        headers[k]
-            .as_ref()
-            .is_some_and(|h| h.iter().any(|x| x == c))
-    };
     let n = s.mechanisms.len();
-    let pistons = |k: usize| -> Vec<String> {
-        headers[k]
-            .iter()
-            .flatten()
-            .filter_map(|h| h.strip_suffix("_dx_dtheta_m_rad"))
-            .map(String::from)
-            .collect()
-    };
-    let mut specs = Vec::new();
-    let per_piston = |suffix: &str| -> Vec<Vec<(String, String)>> {
-        (0..n)
-            .map(|k| {
-                let ps = pistons(k);
-                let many = ps.len() > 1;
-                ps.iter()
-                    .map(|p| {
-                        (
-                            format!("{p}_{suffix}"),
-                            if many { format!(" {p}") } else { String::new() },
-                        )
-                    })
-                    .collect()
-            })
-            .collect()
-    };
-    for (file, title, quantity, unit, suffix) in [
-        (
-            "piston_position",
-            "Piston position",
-            "position",
-            "m",
-            "position_m",
-        ),
-        (
-            "piston_velocity",
-            "Piston velocity",
-            "velocity",
-            "m/s",
-            "velocity_m_s",
-        ),
-        (
-            "piston_acceleration",
-            "Piston acceleration",
-            "acceleration",
-            "m/s^2",
-            "acceleration_m_s2",
-        ),
-    ] {
-        specs.push(PlotSpec {
-            file: file.into(),
-            title: title.into(),
-            y_label: quantity.into(),
-            unit: unit.into(),
-            zero_line: suffix != "position_m",
-            columns: per_piston(suffix),
-            sum: false,
-        });
-    }
-    let single = |column: &str| -> Vec<Vec<(String, String)>> {
-        (0..n)
-            .map(|k| {
-                if has(k, column) {
-                    vec![(column.to_string(), String::new())]
-                } else {
-                    Vec::new()
-                }
-            })
-            .collect()
-    };
+    let single = |column: &str| single_column(headers, n, column);
+    let mut specs = piston_specs(headers, n);
     specs.push(PlotSpec {
         file: "cylinder_pressure".into(),
         title: "Cylinder pressure (absolute)".into(),
@@ -154,6 +82,101 @@ pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Ve
             });
         }
     }
+    specs.extend(friction_specs(headers, n));
+    specs
+}
+
+/// Per mechanism (the first `n` of `headers`), `column` if its header has it.
+fn single_column(
+    headers: &[Option<Vec<String>>],
+    n: usize,
+    column: &str,
+) -> Vec<Vec<(String, String)>> {
+    let has = |k: usize, c: &str| {
+        headers[k]
+            .as_ref()
+            .is_some_and(|h| h.iter().any(|x| x == c))
+    };
+    (0..n)
+        .map(|k| {
+            if has(k, column) {
+                vec![(column.to_string(), String::new())]
+            } else {
+                Vec::new()
+            }
+        })
+        .collect()
+}
+
+/// The piston charts (position, velocity, acceleration) of the first `n` of `headers`: every
+/// piston of a mechanism, each named when it has several.
+fn piston_specs(headers: &[Option<Vec<String>>], n: usize) -> Vec<PlotSpec> {
+    let mut specs = Vec::new();
+    let pistons = |k: usize| -> Vec<String> {
+        headers[k]
+            .iter()
+            .flatten()
+            .filter_map(|h| h.strip_suffix("_dx_dtheta_m_rad"))
+            .map(String::from)
+            .collect()
+    };
+    let per_piston = |suffix: &str| -> Vec<Vec<(String, String)>> {
+        (0..n)
+            .map(|k| {
+                let ps = pistons(k);
+                let many = ps.len() > 1;
+                ps.iter()
+                    .map(|p| {
+                        (
+                            format!("{p}_{suffix}"),
+                            if many { format!(" {p}") } else { String::new() },
+                        )
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    for (file, title, quantity, unit, suffix) in [
+        (
+            "piston_position",
+            "Piston position",
+            "position",
+            "m",
+            "position_m",
+        ),
+        (
+            "piston_velocity",
+            "Piston velocity",
+            "velocity",
+            "m/s",
+            "velocity_m_s",
+        ),
+        (
+            "piston_acceleration",
+            "Piston acceleration",
+            "acceleration",
+            "m/s^2",
+            "acceleration_m_s2",
+        ),
+    ] {
+        specs.push(PlotSpec {
+            file: file.into(),
+            title: title.into(),
+            y_label: quantity.into(),
+            unit: unit.into(),
+            zero_line: suffix != "position_m",
+            columns: per_piston(suffix),
+            sum: false,
+        });
+    }
+    specs
+}
+
+/// The friction charts of the first `n` of `headers`: the friction torque, the power loss of
+/// all components (their sum) and of each.
+fn friction_specs(headers: &[Option<Vec<String>>], n: usize) -> Vec<PlotSpec> {
+    let single = |column: &str| single_column(headers, n, column);
+    let mut specs = Vec::new();
     specs.push(PlotSpec {
         file: "friction_torque".into(),
         title: "Friction torque".into(),
@@ -271,81 +294,4 @@ pub(super) fn charts(
         ));
     }
     out
-}
-
-/// The load family `f` of a drive-torque column `f_torque_nm` (`per_step::COLUMNS`), `None`
-/// for any other column, the friction torque `friction_torque_nm` (a `[friction]` case's, not a
-/// load family: it has no joint forces, and its own chart) among them.
-fn load_family(column: &str) -> Option<&str> {
-    column
-        .strip_suffix("_torque_nm")
-        .filter(|f| !f.is_empty() && !f.contains("_torque_") && *f != "friction")
-}
-
-/// The power-loss columns of a header (`power_loss_<component>_w`): each one's chart, and
-/// their sum's (the total loss).
-pub(super) fn loss_columns(h: &[String]) -> Vec<String> {
-    h.iter()
-        .filter(|c| c.starts_with("power_loss_") && c.ends_with("_w"))
-        .cloned()
-        .collect()
-}
-
-/// The key of the series that sums `columns`: their names joined by `+` (as its charts'
-/// `data-source` names it) after `sum:`, which no column name starts with, so that the sum of
-/// one column stays apart from the column itself (the sum counts a gap as 0).
-pub(super) fn sum_key(columns: &[String]) -> String {
-    format!("sum:{}", columns.join("+"))
-}
-
-/// The series the charts can draw from rows with the header `h` (the mechanism's `joints`):
-/// every wanted column but the crank angle (the x of them all) on its own, keyed by its name,
-/// and the sum of the power-loss columns ([`sum_key`]). Summing per row before thinning keeps
-/// the total's own peaks, which the sum of the thinned parts would not.
-pub(super) fn traces(h: &[String], joints: &[String]) -> Vec<(String, Vec<String>)> {
-    let mut out: Vec<(String, Vec<String>)> = wanted_columns(h, joints)
-        .into_iter()
-        .filter(|c| c != "crank_angle_deg")
-        .map(|c| (c.clone(), vec![c]))
-        .collect();
-    let losses = loss_columns(h);
-    if !losses.is_empty() {
-        out.push((sum_key(&losses), losses));
-    }
-    out
-}
-
-/// The CSV columns the charts use, of the header `h` (the mechanism's `joints`): crank angle,
-/// piston motion, pressure, drive torques, the joint forces of the last load family (the
-/// total), friction.
-pub(super) fn wanted_columns(h: &[String], joints: &[String]) -> Vec<String> {
-    let pistons: Vec<&str> = h
-        .iter()
-        .filter_map(|x| x.strip_suffix("_dx_dtheta_m_rad"))
-        .collect();
-    let mut families: Vec<&str> = h.iter().filter_map(|x| load_family(x)).collect();
-    families.sort_by_key(|x| family_rank(x));
-    let forces: Vec<String> = families
-        .last()
-        .map(|f| {
-            joints
-                .iter()
-                .map(|j| format!("{f}_{j}_force_magnitude_n"))
-                .collect()
-        })
-        .unwrap_or_default();
-    h.iter()
-        .filter(|c| {
-            c.as_str() == "crank_angle_deg"
-                || c.as_str() == "cylinder_pressure_pa"
-                || c.as_str() == "friction_torque_nm"
-                || (c.starts_with("power_loss_") && c.ends_with("_w"))
-                || ["_position_m", "_velocity_m_s", "_acceleration_m_s2"]
-                    .iter()
-                    .any(|s| c.strip_suffix(s).is_some_and(|p| pistons.contains(&p)))
-                || load_family(c).is_some_and(|f| families.contains(&f))
-                || forces.contains(c)
-        })
-        .cloned()
-        .collect()
 }

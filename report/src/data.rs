@@ -56,6 +56,15 @@ pub fn order_mechanisms(names: &mut [String], reference: &str) {
     names.sort_by(|a, b| rank(a).cmp(&rank(b)).then_with(|| a.cmp(b)));
 }
 
+/// Load families in display order: the registry's (inertial, gas, total), then by name.
+pub fn family_rank(f: &str) -> (usize, String) {
+    let k = ["inertial", "gas", "total"]
+        .iter()
+        .position(|x| *x == f)
+        .unwrap_or(3);
+    (k, f.to_string())
+}
+
 /// The reference mechanism: `requested` if given (it must be present), else the first of the
 /// registry's order that is present (the slider-crank when the case has it), else the first
 /// by name.

@@ -2,15 +2,30 @@
 //! and of the difference to the reference), or over a grid of two (heat maps of each mechanism
 //! and of the difference, with the 0 % contour where the mechanisms swap places).
 
-use super::data::{self, parse_quantity, SweepTable};
-use super::doc::{Align, Block, Doc};
-use super::heatmap::{self, HeatMap};
-use super::svg::{self, LineChart, Series};
-use super::{
-    better, delta, fmt_num, fmt_pct, phrase, round_off_floor, signed, write_report, Better, Delta,
-    KEY_METRICS, ROUND_OFF_LEGEND, SIGN_LEGEND,
+use crate::data::{self, parse_quantity, SweepTable};
+use crate::doc::{self, write_report, Align, Block, Doc};
+use crate::heatmap::{self, HeatMap};
+use crate::numbers::{
+    better, delta, fmt_num, fmt_pct, phrase, round_off_floor, signed, Better, Delta,
+    ROUND_OFF_LEGEND, SIGN_LEGEND,
 };
+use crate::svg::{self, LineChart, Series};
 use std::path::Path;
+
+/// The metrics a sweep report charts, in this order: each entry is a list of alternatives of
+/// which the first present in `sweep.csv` is taken (a metric already taken is not repeated).
+/// Efficiency and losses come first (present once friction is modelled), then the power need
+/// or output, the peak drive torque (total, then inertial), the peak crank-pin force and the
+/// mean drive power.
+pub const KEY_METRICS: &[&[&str]] = &[
+    &["mechanical_efficiency"],
+    &["power_loss_mean"],
+    &["power_need_mean", "output_power_mean"],
+    &["total_torque_max", "inertial_torque_max"],
+    &["inertial_torque_max"],
+    &["total_crank_pin_force_max", "inertial_crank_pin_force_max"],
+    &["total_power_mean", "inertial_power_mean"],
+];
 
 /// One swept field's values as an axis.
 #[derive(Debug, Clone)]
@@ -542,13 +557,13 @@ pub(super) fn sweep_report(
         if dir.join("report.html").is_file() {
             points.push((
                 c.clone(),
-                super::doc::href(&format!("{c}/report.html")),
+                doc::href(&format!("{c}/report.html")),
                 String::new(),
             ));
         } else if dir.join("summary.json").is_file() {
             points.push((
                 c.clone(),
-                super::doc::href(&format!("{c}/summary.json")),
+                doc::href(&format!("{c}/summary.json")),
                 String::new(),
             ));
         }

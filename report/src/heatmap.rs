@@ -4,7 +4,7 @@
 //! `<rect class="cell">` with `data-i`, `data-j`, `data-value`; the legend is
 //! `<g class="legend">` with `data-min`/`data-max`; the contour `<path class="contour">`.
 
-use super::svg::{
+use crate::svg::{
     attr_num, c, esc, nice_range, open_svg, text_width, tick_label, PLOT_HEIGHT, TOP, WIDTH,
 };
 use std::fmt::Write as _;
@@ -257,8 +257,16 @@ pub fn heat_map(map: &HeatMap) -> String {
         c(TOP + plot_h / 2.0),
         esc(&map.y_label)
     );
-    // Colour legend: 64 bands from the low end (bottom) to the high end (top).
-    let (lx, bands) = (left + plot_w + 24.0, 64);
+    colour_legend(&mut o, map, range, left + plot_w + 24.0, plot_h);
+    o.push_str("</svg>\n");
+    o
+}
+
+/// Writes the colour legend of `map` (its colours over `range`) at x = `lx`, beside a plot
+/// `plot_h` high: 64 bands from the low end (bottom) to the high end (top), ticks and the
+/// value's label.
+fn colour_legend(o: &mut String, map: &HeatMap, range: (f64, f64), lx: f64, plot_h: f64) {
+    let bands = 64;
     let _ = writeln!(
         o,
         "<g class=\"legend\" data-min=\"{}\" data-max=\"{}\">",
@@ -302,8 +310,7 @@ pub fn heat_map(map: &HeatMap) -> String {
         c(TOP - 8.0),
         esc(&map.value_label)
     );
-    o.push_str("</g>\n</svg>\n");
-    o
+    o.push_str("</g>\n");
 }
 
 #[cfg(test)]

@@ -2,8 +2,10 @@
 //! `plots/`) and as one self-contained HTML page (`report.html`: inline CSS, charts inlined as
 //! SVG, no script, no network). Text may hold `` `code` `` and `**bold**` spans.
 
-use super::svg::esc;
+use crate::svg::esc;
+use anyhow::Context;
 use std::fmt::Write as _;
+use std::path::Path;
 
 /// Column alignment.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -232,4 +234,28 @@ pub fn href(path: &str) -> String {
         }
     }
     o
+}
+
+/// Writes `report.md`, `report.html` and `plots/<name>.svg` into `dir`; an older `plots/`
+/// folder is replaced.
+pub(crate) fn write_report(
+    dir: &Path,
+    doc: &Doc,
+    plots: &[(String, String)],
+) -> anyhow::Result<()> {
+    let plots_dir = dir.join("plots");
+    if plots_dir.exists() {
+        std::fs::remove_dir_all(&plots_dir)
+            .with_context(|| format!("remove {}", plots_dir.display()))?;
+    }
+    if !plots.is_empty() {
+        std::fs::create_dir_all(&plots_dir)
+            .with_context(|| format!("create {}", plots_dir.display()))?;
+    }
+    for (name, svg) in plots {
+        crate::files::write_file(&plots_dir.join(name), svg.as_bytes())?;
+    }
+    crate::files::write_file(&dir.join("report.md"), doc.markdown().as_bytes())?;
+    crate::files::write_file(&dir.join("report.html"), doc.html().as_bytes())?;
+    Ok(())
 }

@@ -1,9 +1,9 @@
 //! `<out>/index.html`: every case and sweep of an output folder, each linked to its report
 //! (or, without one, to its results), and a table of headline metrics per case and mechanism.
 
-use super::data;
-use super::doc::{href, Align, Block, Doc};
-use super::fmt_num;
+use crate::data;
+use crate::doc::{href, Align, Block, Doc};
+use crate::numbers::fmt_num;
 use std::path::Path;
 
 /// The headline columns: (title, alternatives, first present is shown).
@@ -172,7 +172,7 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
                 .collect(),
         ));
     }
-    crate::output::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
+    crate::files::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
 }
 
 #[cfg(test)]

@@ -2,15 +2,16 @@
 //! "which is better" summary, the loss budget; the charts over crank angle are drawn by
 //! `case_plots.rs`.
 
-use super::case_plots::{charts, plot_specs, wanted_columns};
-use super::data::{self, CaseSummary, MechanismSummary};
-use super::doc::{Align, Block, Doc};
-use super::envelope::{ChartData, ChartRecorder};
-use super::svg::{self, MAX_POINTS};
-use super::{
-    better, delta, fmt_delta, fmt_num, phrase, round_off_floor, signed, write_report, Better,
-    Delta, ROUND_OFF_LEGEND, SIGN_LEGEND,
+use crate::case_plots::{charts, plot_specs};
+use crate::chart_columns::wanted_columns;
+use crate::data::{self, family_rank, CaseSummary, MechanismSummary};
+use crate::doc::{write_report, Align, Block, Doc};
+use crate::envelope::{ChartData, ChartRecorder};
+use crate::numbers::{
+    better, delta, fmt_delta, fmt_num, phrase, round_off_floor, signed, Better, Delta,
+    ROUND_OFF_LEGEND, SIGN_LEGEND,
 };
+use crate::svg::{self, MAX_POINTS};
 use cardan_dynamics::metrics::Group as MetricGroup;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
@@ -42,15 +43,6 @@ impl Group {
             Group::Other => "Other".into(),
         }
     }
-}
-
-/// Load families in display order: the registry's (inertial, gas, total), then by name.
-pub(super) fn family_rank(f: &str) -> (usize, String) {
-    let k = ["inertial", "gas", "total"]
-        .iter()
-        .position(|x| *x == f)
-        .unwrap_or(3);
-    (k, f.to_string())
 }
 
 /// The group of a metric and its sort key within the group.

@@ -1,0 +1,83 @@
+//! The columns of a crank train's per-step rows that the case charts draw, told by their
+//! names (`cardan_runner::per_step::COLUMNS`): the crank angle, piston motion, pressure, the
+//! drive torque of each load family, the joint forces of the last family, friction; and the
+//! series made of them ([`traces`]: each column, and the sum of the power losses).
+
+use crate::data::family_rank;
+
+/// The load family `f` of a drive-torque column `f_torque_nm` (`per_step::COLUMNS`), `None`
+/// for any other column, the friction torque `friction_torque_nm` (a `[friction]` case's, not a
+/// load family: it has no joint forces, and its own chart) among them.
+pub(crate) fn load_family(column: &str) -> Option<&str> {
+    column
+        .strip_suffix("_torque_nm")
+        .filter(|f| !f.is_empty() && !f.contains("_torque_") && *f != "friction")
+}
+
+/// The power-loss columns of a header (`power_loss_<component>_w`): each one's chart, and
+/// their sum's (the total loss).
+pub(crate) fn loss_columns(h: &[String]) -> Vec<String> {
+    h.iter()
+        .filter(|c| c.starts_with("power_loss_") && c.ends_with("_w"))
+        .cloned()
+        .collect()
+}
+
+/// The key of the series that sums `columns`: their names joined by `+` (as its charts'
+/// `data-source` names it) after `sum:`, which no column name starts with, so that the sum of
+/// one column stays apart from the column itself (the sum counts a gap as 0).
+pub(crate) fn sum_key(columns: &[String]) -> String {
+    format!("sum:{}", columns.join("+"))
+}
+
+/// The series the charts can draw from rows with the header `h` (the mechanism's `joints`):
+/// every wanted column but the crank angle (the x of them all) on its own, keyed by its name,
+/// and the sum of the power-loss columns ([`sum_key`]). Summing per row before thinning keeps
+/// the total's own peaks, which the sum of the thinned parts would not.
+pub(crate) fn traces(h: &[String], joints: &[String]) -> Vec<(String, Vec<String>)> {
+    let mut out: Vec<(String, Vec<String>)> = wanted_columns(h, joints)
+        .into_iter()
+        .filter(|c| c != "crank_angle_deg")
+        .map(|c| (c.clone(), vec![c]))
+        .collect();
+    let losses = loss_columns(h);
+    if !losses.is_empty() {
+        out.push((sum_key(&losses), losses));
+    }
+    out
+}
+
+/// The CSV columns the charts use, of the header `h` (the mechanism's `joints`): crank angle,
+/// piston motion, pressure, drive torques, the joint forces of the last load family (the
+/// total), friction.
+pub(crate) fn wanted_columns(h: &[String], joints: &[String]) -> Vec<String> {
+    let pistons: Vec<&str> = h
+        .iter()
+        .filter_map(|x| x.strip_suffix("_dx_dtheta_m_rad"))
+        .collect();
+    let mut families: Vec<&str> = h.iter().filter_map(|x| load_family(x)).collect();
+    families.sort_by_key(|x| family_rank(x));
+    let forces: Vec<String> = families
+        .last()
+        .map(|f| {
+            joints
+                .iter()
+                .map(|j| format!("{f}_{j}_force_magnitude_n"))
+                .collect()
+        })
+        .unwrap_or_default();
+    h.iter()
+        .filter(|c| {
+            c.as_str() == "crank_angle_deg"
+                || c.as_str() == "cylinder_pressure_pa"
+                || c.as_str() == "friction_torque_nm"
+                || (c.starts_with("power_loss_") && c.ends_with("_w"))
+                || ["_position_m", "_velocity_m_s", "_acceleration_m_s2"]
+                    .iter()
+                    .any(|s| c.strip_suffix(s).is_some_and(|p| pistons.contains(&p)))
+                || load_family(c).is_some_and(|f| families.contains(&f))
+                || forces.contains(c)
+        })
+        .cloned()
+        .collect()
+}

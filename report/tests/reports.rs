@@ -1,0 +1,324 @@
+//! Reports of output folders written by hand (no run): a synthetic grid sweep's heat maps; the
+//! friction metrics' loss budget and charts of a synthetic case; categorical, zipped and empty
+//! sweeps; no difference in % of round-off, and the sign legend. The reports of the shipped
+//! configs' runs are tested with the runner (`runner/tests/report.rs`).
+
+use cardan_report::{case_report, sweep_report, MAX_POINTS};
+use cardan_testing::chart::{attr_f64, check_series, data_area, Axes};
+
+/// A 10 × 10 grid sweep written by hand: a value map per mechanism, the difference map with
+/// its colour scale symmetric about 0 and its 0 contour between the 5th and 6th columns.
+#[test]
+fn heat_maps_of_a_grid_sweep() {
+    let dir = tempfile::tempdir().unwrap();
+    let sweep = dir.path().join("grid");
+    std::fs::create_dir(&sweep).unwrap();
+    let mut csv = String::from(
+        "case,motion.initial_speed,geometry.rod_length,slider_crank.total_torque_max,cardan_gear.total_torque_max\n",
+    );
+    // Rows in reverse order: the report sorts the axes by value.
+    for i in (0..10).rev() {
+        for j in (0..10).rev() {
+            let c = 50.5 + 10.0 * i as f64 + j as f64;
+            csv.push_str(&format!(
+                "p{i}{j},{} rpm,{} mm,100.0,{c}\n",
+                100 * (i + 1),
+                140 + 10 * j
+            ));
+        }
+    }
+    std::fs::write(sweep.join("sweep.csv"), csv).unwrap();
+    sweep_report(&sweep, &sweep.file_name().unwrap().to_string_lossy(), None).unwrap();
+    let parse = |name: &str| std::fs::read_to_string(sweep.join("plots").join(name)).unwrap();
+    let cells = |doc: &roxmltree::Document| -> Vec<(usize, usize, f64, String)> {
+        doc.descendants()
+            .filter(|n| n.attribute("class") == Some("cell"))
+            .map(|n| {
+                (
+                    n.attribute("data-i").unwrap().parse().unwrap(),
+                    n.attribute("data-j").unwrap().parse().unwrap(),
+                    attr_f64(n, "data-value"),
+                    n.attribute("fill").unwrap().to_string(),
+                )
+            })
+            .collect()
+    };
+    let legend = |doc: &roxmltree::Document| {
+        let g = doc
+            .descendants()
+            .find(|n| n.attribute("class") == Some("legend"))
+            .unwrap();
+        (attr_f64(g, "data-min"), attr_f64(g, "data-max"))
+    };
+    // The cardan gear's values: column i is the i-th speed, row j the j-th rod length.
+    let text = parse("total_torque_max_cardan_gear.svg");
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let c = cells(&doc);
+    assert_eq!(c.len(), 100);
+    for (i, j, v, _) in &c {
+        assert_eq!(*v, 50.5 + 10.0 * *i as f64 + *j as f64);
+    }
+    assert_eq!(legend(&doc), (50.5, 149.5));
+    // Viridis ends: #440154 at the smallest value, #fde725 at the largest.
+    let fill = |c: &[(usize, usize, f64, String)], i: usize, j: usize| {
+        c.iter().find(|x| x.0 == i && x.1 == j).unwrap().3.clone()
+    };
+    assert_eq!(fill(&c, 0, 0), "#440154");
+    assert_eq!(fill(&c, 9, 9), "#fde725");
+    assert_eq!(
+        cells(&roxmltree::Document::parse(&parse("total_torque_max_slider_crank.svg")).unwrap())
+            .len(),
+        100
+    );
+    // The difference: Δ = c − 100 (%), from −49.5 to +49.5, scale ±49.5: blue, white at 0, red.
+    let text = parse("total_torque_max_difference_cardan_gear.svg");
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let c = cells(&doc);
+    assert_eq!(c.len(), 100);
+    for (i, j, v, _) in &c {
+        assert!((v - (-49.5 + 10.0 * *i as f64 + *j as f64)).abs() < 1e-12);
+    }
+    assert_eq!(legend(&doc), (-49.5, 49.5));
+    assert_eq!(fill(&c, 0, 0), "#2166ac");
+    assert_eq!(fill(&c, 9, 9), "#b2182b");
+    // Δ = 0.5 % at (5, 0): t = 50/99 on the 5-stop scale, 2 % of the way from #f7f7f7 to
+    // #f4a582: nearly white.
+    assert_eq!(fill(&c, 5, 0), "#f7f5f5");
+    // The 0 contour: in each of the 9 bands between rows, one segment between the centres of
+    // columns 4 and 5.
+    let g = doc
+        .descendants()
+        .find(|n| n.attribute("class") == Some("heatmap"))
+        .unwrap();
+    let area = data_area(g);
+    let centre = |i: f64| area[0] + (i + 0.5) * area[2] / 10.0;
+    let contour = doc
+        .descendants()
+        .find(|n| n.attribute("class") == Some("contour"))
+        .unwrap();
+    assert_eq!(contour.attribute("data-segments"), Some("9"));
+    let d = contour.attribute("d").unwrap();
+    let xs: Vec<f64> = d
+        .split(['M', 'L'])
+        .filter(|s| !s.is_empty())
+        .map(|p| p.split(' ').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(xs.len(), 18);
+    for x in xs {
+        assert!(x > centre(4.0) && x < centre(5.0), "{x}");
+    }
+    let md = std::fs::read_to_string(sweep.join("report.md")).unwrap();
+    assert!(md.contains("a full grid of two fields"));
+    assert!(
+        md.contains("`cardan_gear` is better than `slider_crank` at 50 of 100 points"),
+        "{md}"
+    );
+}
+
+/// Friction metrics and columns, when present: the loss budget (W and % of the total per
+/// component) and the friction charts.
+#[test]
+fn loss_budget_and_friction_charts() {
+    let dir = tempfile::tempdir().unwrap();
+    let case = dir.path().join("lossy");
+    std::fs::create_dir(&case).unwrap();
+    let mechanism = |loss: [f64; 3], eff: f64| {
+        serde_json::json!({
+            "bodies": {}, "joints": {"crank_pin": {}, "main_bearing": {}}, "mass_properties": {},
+            "metrics": {
+                "power_loss_mean": loss[0], "power_loss_mean_crank_pin": loss[1],
+                "power_loss_mean_main_bearing": loss[2], "mechanical_efficiency": eff,
+                "total_torque_max": 10.0
+            },
+            "units": {
+                "power_loss_mean": "W", "power_loss_mean_crank_pin": "W",
+                "power_loss_mean_main_bearing": "W", "mechanical_efficiency": "1",
+                "total_torque_max": "N*m"
+            }
+        })
+    };
+    let summary = serde_json::json!({
+        "schema_version": 2, "case": "lossy", "machine": "pump", "gas_model": null,
+        "mechanisms": {
+            "slider_crank": mechanism([100.0, 60.0, 40.0], 0.90),
+            "cardan_gear": mechanism([80.0, 20.0, 60.0], 0.92),
+        }
+    });
+    std::fs::write(case.join("summary.json"), summary.to_string()).unwrap();
+    let mut peak = 0.0f64;
+    for (m, scale) in [("slider_crank", 1.0), ("cardan_gear", 0.8)] {
+        let mut csv = String::from(
+            "crank_angle_deg,friction_torque_nm,power_loss_crank_pin_w,power_loss_main_bearing_w\n",
+        );
+        for k in 0..2000 {
+            let a = k as f64 * 0.36;
+            let (p1, p2) = (scale * (1.0 + a.to_radians().sin().abs()), scale * 0.5);
+            peak = peak.max(p1 + p2);
+            csv.push_str(&format!("{a},{},{p1},{p2}\n", scale * 0.1));
+        }
+        std::fs::write(case.join(format!("{m}.csv")), csv).unwrap();
+    }
+    case_report(&case, None).unwrap();
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    assert!(md.contains("## Loss budget"));
+    assert!(
+        md.contains("| `crank_pin` | 60 | 60.0 % | 20 | 25.0 % |"),
+        "{md}"
+    );
+    assert!(md.contains("| `main_bearing` | 40 | 40.0 % | 60 | 75.0 % |"));
+    assert!(md.contains("| **total** | 100 | 100.0 % | 80 | 100.0 % |"));
+    assert!(
+        md.contains("**Mean power loss** (`power_loss_mean`, lower is better): best `cardan_gear`")
+    );
+    assert!(md.contains(
+        "**Mechanical efficiency** (`mechanical_efficiency`, higher is better): best `cardan_gear`"
+    ));
+    assert!(md.contains("| `mechanical_efficiency` |  | 0.9 | 0.92 | +2.2 % |"));
+    for chart in [
+        "friction_torque.svg",
+        "power_loss.svg",
+        "power_loss_crank_pin.svg",
+        "power_loss_main_bearing.svg",
+    ] {
+        assert!(case.join("plots").join(chart).is_file(), "{chart}");
+    }
+    let text = std::fs::read_to_string(case.join("plots/power_loss.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let axes = Axes::of(&doc);
+    let s = doc
+        .descendants()
+        .find(|n| n.attribute("data-label") == Some("slider_crank"))
+        .unwrap();
+    let x: Vec<f64> = (0..2000).map(|k| k as f64 * 0.36).collect();
+    let y: Vec<f64> = x.iter().map(|a| 1.5 + a.to_radians().sin().abs()).collect();
+    check_series(
+        &case.join("plots/power_loss.svg"),
+        &axes,
+        s,
+        &x,
+        &y,
+        MAX_POINTS,
+    );
+    assert!((peak - 2.5).abs() < 1e-6);
+}
+
+/// A sweep over a field that is not a number, and a zip of two fields: charts along the
+/// points, one per key metric, with every point drawn; an empty sweep still gets a report.
+#[test]
+fn categorical_zipped_and_empty_sweeps() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, text: &str| {
+        let sweep = dir.path().join(name);
+        std::fs::create_dir(&sweep).unwrap();
+        std::fs::write(sweep.join("sweep.csv"), text).unwrap();
+        sweep_report(&sweep, &sweep.file_name().unwrap().to_string_lossy(), None).unwrap();
+        sweep
+    };
+    let sweep = write(
+        "material",
+        "case,masses.rod_material,slider_crank.inertial_torque_max,cardan_gear.inertial_torque_max\n\
+         a,steel,10,20\nb,titanium,6,12\nc,aluminium,4,8\n",
+    );
+    let text = std::fs::read_to_string(sweep.join("plots/inertial_torque_max.svg")).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    for s in doc
+        .descendants()
+        .filter(|n| n.attribute("class") == Some("series"))
+    {
+        assert_eq!(s.attribute("data-n"), Some("3"));
+    }
+    for label in ["steel", "titanium", "aluminium"] {
+        assert!(
+            doc.descendants().any(|n| n.text() == Some(label)),
+            "{label}"
+        );
+    }
+    let md = std::fs::read_to_string(sweep.join("report.md")).unwrap();
+    // Δ = +100 % at every point: the cardan gear is never better here.
+    assert!(
+        md.contains("at 0 of 3 points; Δ from +100.0 % to +100.0 %"),
+        "{md}"
+    );
+    let sweep = write(
+        "zip",
+        "case,motion.initial_speed,geometry.rod_length,slider_crank.total_torque_max,cardan_gear.total_torque_max\n\
+         a,100 rpm,140 mm,10,5\nb,200 rpm,150 mm,10,15\n",
+    );
+    let md = std::fs::read_to_string(sweep.join("report.md")).unwrap();
+    assert!(md.contains("charts along the points"), "{md}");
+    assert!(
+        md.contains("Δ crosses 0 between 100 rpm and 200 rpm (≈ 150 rpm"),
+        "{md}"
+    );
+    let sweep = write(
+        "empty",
+        "case,motion.initial_speed,slider_crank.total_torque_max\n",
+    );
+    assert!(sweep.join("report.html").is_file());
+}
+
+/// Issue 22: a Δ in % of quadrature round-off ("+144 %" on −4.8e-15 J, the inertial work of a
+/// constant-speed run over whole turns) is no result. Below its metric's round-off floor
+/// (1e-9 of the work, torque or power the drive's peak torque could make over the run) a
+/// value gets no Δ: "≈ 0" where both are below it, "—" where one is; the legend says so, and a
+/// sign convention follows the table of signed quantities.
+#[test]
+fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
+    let dir = tempfile::tempdir().unwrap();
+    let case = dir.path().join("steady");
+    std::fs::create_dir(&case).unwrap();
+    // Scales: 0.2 N·m × 9.42 rad/s × 1.33 s = 2.5 J, 1.9 W; the floors 2.5e-9 J, 1.9e-9 W,
+    // 2e-10 N·m.
+    let mechanism = |work: f64, mean: f64, power: f64, total: f64| {
+        serde_json::json!({
+            "bodies": {}, "joints": {}, "mass_properties": {},
+            "metrics": {
+                "inertial_torque_max": 0.2, "crankshaft_angular_velocity_max": 9.42,
+                "cycle_time": 1.33, "inertial_work": work, "inertial_torque_mean": mean,
+                "inertial_power_mean": power, "total_torque_max": 0.4, "total_work": total
+            },
+            "units": {
+                "inertial_torque_max": "N*m", "crankshaft_angular_velocity_max": "rad/s",
+                "cycle_time": "s", "inertial_work": "J", "inertial_torque_mean": "N*m",
+                "inertial_power_mean": "W", "total_torque_max": "N*m", "total_work": "J"
+            }
+        })
+    };
+    let summary = serde_json::json!({
+        "schema_version": 2, "case": "steady", "machine": "pump", "gas_model": null,
+        "mechanisms": {
+            "slider_crank": mechanism(2e-15, 3e-16, 1e-3, 1.0),
+            "cardan_gear": mechanism(-4.8e-15, -1e-16, 1e-10, 1.25),
+        }
+    });
+    std::fs::write(case.join("summary.json"), summary.to_string()).unwrap();
+    case_report(&case, None).unwrap();
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    // Both within round-off: no Δ.
+    assert!(
+        md.contains("| `inertial_work` | J | 2e-15 | -4.8e-15 | ≈ 0 |"),
+        "{md}"
+    );
+    assert!(md.contains("| `inertial_torque_mean` | N·m | 3e-16 | -1e-16 | ≈ 0 |"));
+    // One within round-off (1e-10 W of a 1.9 W scale), the other not: no Δ either.
+    assert!(md.contains("| `inertial_power_mean` | W | 0.001 | 1e-10 | — |"));
+    // Above the floor: the Δ as ever, (1.25 − 1) / 1.
+    assert!(md.contains("| `total_work` | J | 1 | 1.25 | +25.0 % |"));
+    assert!(
+        md.contains("round-off"),
+        "the legend explains the floor: {md}"
+    );
+    let torque_table = md.split("### Drive torque, power and work").nth(1).unwrap();
+    let after = torque_table.split("\n\n").nth(2).unwrap_or("");
+    for part in [
+        "positive in the direction of rotation",
+        "pump",
+        "engine",
+        "negative",
+    ] {
+        assert!(
+            after.contains(part),
+            "the sign line under the torque table names {part:?}: {after}"
+        );
+    }
+}

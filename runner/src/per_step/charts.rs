@@ -1,0 +1,244 @@
+//! The sink that thins a crank train's per-step rows for the report's charts when the run
+//! writes no file ([`ChartSink`]; shared by the threads of a run), and the chart recorder of a
+//! row both sinks use.
+
+use super::row::{finite_row, Row, RunLayout};
+use cardan_dynamics::{Sink, Step, StepBlock, StepScratch};
+use cardan_mechanism::Mechanism;
+use cardan_report::{row_count, ChartData, ChartRecorder, ChartRows, MAX_POINTS};
+use std::sync::Arc;
+
+/// The recorder of the report's charts of `mechanism`'s rows `row`, `rows` of them, held in
+/// the file `file` names (or none: the crank train's label).
+pub(super) fn chart_recorder(
+    row: &Row,
+    mechanism: &dyn Mechanism,
+    rows: usize,
+    file: String,
+) -> ChartRecorder {
+    let joints: Vec<String> = mechanism
+        .topology()
+        .joints
+        .iter()
+        .map(|j| j.name.to_string())
+        .collect();
+    ChartRecorder::new(row.header(), &joints, rows, MAX_POINTS, file)
+}
+
+/// A sink thinning the per-step rows of a crank train that writes no file for the report's charts:
+/// the rows [`PerStepSink`](super::PerStepSink) would write (every `decimation`-th step and the
+/// last) that the charts take ([`ChartRows`]), the row's undrawn columns left unfilled. The pieces
+/// of a shared run ([`cardan_dynamics::run_parallel`]) keep their rows until they are joined, in
+/// the steps' order: the charts are the same as a run by one thread gives.
+#[derive(Clone)]
+pub struct ChartSink<'a> {
+    row: Row<'a>,
+    decimation: usize,
+    last_step: usize,
+    pick: ChartRows,
+    /// The next step the charts take (found at the first step this sink takes, then counted on:
+    /// no division per step).
+    next: Option<usize>,
+    /// The recorder; `None` in a piece of a shared run.
+    recorder: Option<ChartRecorder>,
+    /// The columns the charts read (shared by the pieces).
+    read: Arc<[usize]>,
+    /// The row being filled, and a row being recorded (NaN where the charts do not read).
+    scratch: Vec<f64>,
+    whole: Vec<f64>,
+    /// The rows taken and not yet recorded, one after the other, each of the `read` columns
+    /// only, and the steps of the first and the last one taken.
+    rows: Vec<f64>,
+    first_taken: Option<usize>,
+    last_taken: Option<usize>,
+    /// Where a step the charts take is gathered from a block's columns.
+    step: StepScratch,
+}
+
+impl<'a> ChartSink<'a> {
+    /// The charts of `mechanism` run with `run`'s families and stages over `last_step + 1`
+    /// steps, its rows every `decimation`-th step and the last; `label` names the series.
+    pub fn new(
+        mechanism: &'a dyn Mechanism,
+        run: &RunLayout,
+        decimation: usize,
+        last_step: usize,
+        label: &str,
+    ) -> Self {
+        let mut row = Row::new(mechanism, run);
+        let rows = row_count(last_step, decimation);
+        let recorder = chart_recorder(&row, mechanism, rows, label.to_string());
+        row.skip_unread_bodies(|k| recorder.reads(k));
+        let width = row.header().len();
+        Self {
+            row,
+            decimation,
+            last_step,
+            pick: recorder.rows(),
+            next: None,
+            read: (0..width).filter(|&k| recorder.reads(k)).collect(),
+            recorder: Some(recorder),
+            scratch: Vec::with_capacity(width),
+            whole: vec![f64::NAN; width],
+            rows: Vec::new(),
+            first_taken: None,
+            last_taken: None,
+            step: StepScratch::for_topology(mechanism.topology()),
+        }
+    }
+
+    /// The first step from `step` on whose row the charts take (`usize::MAX` past the last).
+    fn taken_from(&self, step: usize) -> usize {
+        if step > self.last_step {
+            return usize::MAX;
+        }
+        // The rows taken are every stride-th and the last (whose step is the last step).
+        let last_row = row_count(self.last_step, self.decimation) - 1;
+        let k = self.pick.next_taken(step.div_ceil(self.decimation));
+        if k >= last_row {
+            self.last_step
+        } else {
+            k * self.decimation
+        }
+    }
+
+    /// Records the rows taken so far (in a sink that has the recorder).
+    fn record(&mut self) {
+        if let Some(r) = &mut self.recorder {
+            for row in self.rows.chunks_exact(self.read.len()) {
+                for (&k, &v) in self.read.iter().zip(row) {
+                    self.whole[k] = v;
+                }
+                r.add(&self.whole);
+            }
+            self.rows.clear();
+        }
+    }
+
+    /// The thinned series.
+    pub fn finish(mut self) -> Option<ChartData> {
+        self.record();
+        self.recorder.map(ChartRecorder::finish)
+    }
+}
+
+impl ChartSink<'_> {
+    /// Takes the row of `s`, a step the charts take.
+    fn take(&mut self, s: &Step) -> Result<(), String> {
+        self.scratch.clear();
+        self.row.fill(s, &mut self.scratch);
+        finite_row(
+            self.row.header(),
+            &self.scratch,
+            self.read.iter().copied(),
+            s,
+        )?;
+        self.rows.extend(self.read.iter().map(|&k| self.scratch[k]));
+        self.first_taken.get_or_insert(s.index);
+        self.last_taken = Some(s.index);
+        // One row at a time, unless this is a piece of a shared run.
+        self.record();
+        Ok(())
+    }
+}
+
+impl Sink for ChartSink<'_> {
+    /// Only the steps the charts take, each gathered from the block's columns (a long run's
+    /// charts take one step in many).
+    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
+        let end = block.first + block.len();
+        let mut next = match self.next {
+            Some(n) => n,
+            None => self.taken_from(block.first),
+        };
+        let mut scratch = std::mem::take(&mut self.step);
+        while next < end {
+            let s = block.step(next - block.first, &mut scratch);
+            self.take(&s).map_err(|message| (next, message))?;
+            next = self.taken_from(next + 1);
+        }
+        self.step = scratch;
+        self.next = Some(next);
+        Ok(())
+    }
+
+    fn wants_steps(&self) -> bool {
+        false
+    }
+}
+
+impl cardan_dynamics::Joinable for ChartSink<'_> {
+    fn fork(&self) -> Self {
+        Self {
+            recorder: None,
+            ..self.clone()
+        }
+    }
+
+    fn join(&mut self, later: Self) {
+        // The step both pieces took is recorded once.
+        let width = self.read.len();
+        let skip = usize::from(later.first_taken.is_some() && later.first_taken <= self.last_taken);
+        self.rows
+            .extend_from_slice(&later.rows[(skip * width).min(later.rows.len())..]);
+        if later.last_taken.is_some() {
+            self.last_taken = later.last_taken;
+        }
+        self.record();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The chart sink finds the next step the charts take by arithmetic: the steps the files
+    /// would write (every `decimation`-th and the last) whose rows the charts take.
+    #[test]
+    fn chart_sink_takes_the_rows_the_recorder_takes() {
+        // Any mechanism: the rows' layout does not matter here.
+        let m = (cardan_mechanism::MECHANISMS[0].build)(
+            &cardan_mechanism::MachineGeometry {
+                crank_length: 0.06,
+                rod_length: 0.14,
+                bore: 0.12,
+                pin_offset: 0.0,
+            },
+            &cardan_mechanism::MassInputs::default(),
+            &cardan_mechanism::Options::new(),
+        )
+        .unwrap();
+        let layout = RunLayout {
+            families: &["inertial"],
+            gas: false,
+            losses: &[],
+            gears: None,
+        };
+        for (last_step, decimation) in [(10, 1), (100_000, 1), (100_000, 3), (700_001, 7)] {
+            let sink = ChartSink::new(m.as_ref(), &layout, decimation, last_step, "c");
+            let rows = row_count(last_step, decimation);
+            let taken = |i: usize| {
+                let row = if i % decimation == 0 {
+                    i / decimation
+                } else if i == last_step {
+                    rows - 1
+                } else {
+                    return false;
+                };
+                sink.pick.takes(row)
+            };
+            let mut next = usize::MAX;
+            for i in (0..=last_step).rev() {
+                if taken(i) {
+                    next = i;
+                }
+                assert_eq!(
+                    sink.taken_from(i),
+                    next,
+                    "step {i} of {last_step}, every {decimation}"
+                );
+            }
+            assert_eq!(sink.taken_from(last_step + 1), usize::MAX);
+        }
+    }
+}

@@ -1,0 +1,305 @@
+//! The per-step row of one crank train, defined once: its documented columns ([`COLUMNS`]),
+//! its header for a mechanism and a run ([`RunLayout`]), how a step fills it ([`Row`]), and the
+//! check that its numbers are finite.
+
+use cardan_dynamics::{radial, tangential, GearRatings, Step};
+use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
+use std::ops::Range;
+use std::sync::Arc;
+
+/// The per-step CSV columns: a name template (units in the name; `{piston}`, `{body}`,
+/// `{joint}`, `{extra}`, `{family}` stand for names of the mechanism's topology and the run's
+/// load families), and its meaning. The column table of docs/results.md is made from this list.
+pub const COLUMNS: &[(&str, &str)] = &[
+    ("crank_angle_deg", "crank angle θ from the +x axis (90° is top dead centre of an in-line machine)"),
+    ("time_s", "time since the start of the run"),
+    ("crank_speed_rad_s", "crank angular velocity ω"),
+    ("crank_acceleration_rad_s2", "crank angular acceleration α"),
+    ("{piston}_position_m", "piston-pin distance along the cylinder axis from the main bearing axis"),
+    ("{piston}_velocity_m_s", "piston velocity along the cylinder, positive away from the crankshaft"),
+    ("{piston}_acceleration_m_s2", "piston acceleration along the cylinder"),
+    ("{piston}_dx_dtheta_m_rad", "dx/dθ: dV/dθ = −bore area × this"),
+    ("{body}_angle_deg", "orientation of the body"),
+    ("{body}_angular_velocity_rad_s", "angular velocity of the body"),
+    ("{body}_angular_acceleration_rad_s2", "angular acceleration of the body"),
+    ("{body}_cg_x_m", "centre of gravity, x"),
+    ("{body}_cg_y_m", "centre of gravity, y (along the cylinder)"),
+    ("{body}_cg_velocity_m_s", "speed of the centre of gravity"),
+    ("{body}_cg_acceleration_m_s2", "acceleration magnitude of the centre of gravity"),
+    ("{body}_cg_radial_acceleration_m_s2", "its radial part about the main axis (Karhula 4.1.3)"),
+    ("{body}_cg_coriolis_acceleration_m_s2", "its Coriolis part 2·v_r·ω"),
+    ("{body}_cg_tangential_acceleration_m_s2", "its tangential part |Z|·α"),
+    ("{body}_cg_normal_acceleration_m_s2", "its normal part −|Z|·ω²"),
+    ("{joint}_speed_rad_s", "pins: angular velocity of the joint's first body relative to its second"),
+    ("{joint}_speed_m_s", "slides: sliding velocity of the first body relative to the second along the slide; meshes: pitch-line velocity relative to the gear carrier"),
+    ("{extra}", "a quantity of one mechanism (see its section)"),
+    ("cylinder_pressure_pa", "absolute cylinder pressure (empty without a gas model)"),
+    ("gas_force_n", "gas force on the piston, towards the crankshaft (empty without a gas model)"),
+    ("{family}_{joint}_force_x_n", "force on the joint's first body from its second, x"),
+    ("{family}_{joint}_force_y_n", "the same, y"),
+    ("{family}_{joint}_force_magnitude_n", "its magnitude"),
+    ("{family}_{joint}_moment_nm", "couple a slide carries"),
+    ("{family}_{joint}_tangential_n", "gear meshes: the force along the pitch-circle tangent (the tooth load that transmits torque, Karhula A8.1.10)"),
+    ("{family}_{joint}_radial_n", "gear meshes: the force towards the first gear's centre"),
+    ("{family}_torque_nm", "drive torque on the crankshaft, positive in the direction of rotation"),
+    ("{family}_torque_{body}_nm", "the body's share of it by the power balance (Karhula's T_1i10, T_2i10, T_3i10); empty while the crank stands still"),
+    ("{joint}_dynamic_tooth_load_n", "with [gear]: Buckingham's dynamic tooth load of the mesh (Karhula A8.1.14), per gear set"),
+    ("{joint}_contact_stress_pa", "with [gear]: AGMA contact stress of the mesh"),
+    ("{joint}_bending_stress_pa", "with [gear] and known J: AGMA bending stress, the larger member's"),
+    ("friction_torque_nm", "with [friction]: the drive torque that covers the losses, Σ P / ω"),
+    ("power_loss_{component}_w", "with [friction]: one loss component's power (rings, skirt, a slide, a revolute joint's bearings by joint name, a gear mesh by joint name)"),
+];
+
+/// The CSV header of `mechanism` run with the load families `families` (the run's, then
+/// `total` when there are several), and where its body columns are; [`Row::fill`] fills a
+/// row in this order.
+fn header(
+    mechanism: &dyn Mechanism,
+    families: &[&str],
+    gas: bool,
+    losses: &[String],
+    gears: Option<&GearRatings>,
+) -> (Vec<String>, Range<usize>) {
+    let t = mechanism.topology();
+    let mut h: Vec<String> = [
+        "crank_angle_deg",
+        "time_s",
+        "crank_speed_rad_s",
+        "crank_acceleration_rad_s2",
+    ]
+    .map(String::from)
+    .to_vec();
+    for p in &t.pistons {
+        for s in [
+            "position_m",
+            "velocity_m_s",
+            "acceleration_m_s2",
+            "dx_dtheta_m_rad",
+        ] {
+            h.push(format!("{}_{s}", p.name));
+        }
+    }
+    let bodies_start = h.len();
+    for b in &t.bodies {
+        for s in [
+            "angle_deg",
+            "angular_velocity_rad_s",
+            "angular_acceleration_rad_s2",
+            "cg_x_m",
+            "cg_y_m",
+            "cg_velocity_m_s",
+            "cg_acceleration_m_s2",
+            "cg_radial_acceleration_m_s2",
+            "cg_coriolis_acceleration_m_s2",
+            "cg_tangential_acceleration_m_s2",
+            "cg_normal_acceleration_m_s2",
+        ] {
+            h.push(format!("{}_{s}", b.name));
+        }
+    }
+    let bodies = bodies_start..h.len();
+    for j in &t.joints {
+        let unit = match j.kind {
+            JointKind::Revolute(_) => "rad_s",
+            JointKind::Prismatic | JointKind::GearMesh { .. } => "m_s",
+        };
+        h.push(format!("{}_speed_{unit}", j.name));
+    }
+    h.extend(t.extras.iter().map(|e| e.name.to_string()));
+    if gas {
+        h.push("cylinder_pressure_pa".into());
+        h.push("gas_force_n".into());
+    }
+    for f in families {
+        for j in &t.joints {
+            for s in ["force_x_n", "force_y_n", "force_magnitude_n"] {
+                h.push(format!("{f}_{}_{s}", j.name));
+            }
+            match j.kind {
+                JointKind::Prismatic => h.push(format!("{f}_{}_moment_nm", j.name)),
+                JointKind::GearMesh { .. } => {
+                    h.push(format!("{f}_{}_tangential_n", j.name));
+                    h.push(format!("{f}_{}_radial_n", j.name));
+                }
+                JointKind::Revolute(_) => {}
+            }
+        }
+        h.push(format!("{f}_torque_nm"));
+        for b in &t.bodies {
+            h.push(format!("{f}_torque_{}_nm", b.name));
+        }
+    }
+    if let Some(g) = gears {
+        for (name, bending) in g.names().into_iter().zip(g.bending()) {
+            h.push(format!("{name}_dynamic_tooth_load_n"));
+            h.push(format!("{name}_contact_stress_pa"));
+            if bending {
+                h.push(format!("{name}_bending_stress_pa"));
+            }
+        }
+    }
+    if !losses.is_empty() {
+        h.push("friction_torque_nm".into());
+        h.extend(losses.iter().map(|c| format!("power_loss_{c}_w")));
+    }
+    (h, bodies)
+}
+
+/// What a run's steps hold besides the mechanism's own state: the load families (in the run's
+/// order), a gas model, the loss components, the rated gear meshes.
+pub struct RunLayout<'b> {
+    pub families: &'b [&'b str],
+    pub gas: bool,
+    pub losses: &'b [String],
+    pub gears: Option<&'b GearRatings>,
+}
+
+/// The per-step row of one crank train: its column names and how a [`Step`] fills it. The
+/// files and the charts both take their rows from here, so that a column's name and its value
+/// are defined in one place.
+#[derive(Clone)]
+pub struct Row<'a> {
+    mechanism: &'a dyn Mechanism,
+    /// Shared by the copies a shared run makes.
+    header: Arc<[String]>,
+    /// The body columns (orientation, centre-of-gravity motion and its polar parts).
+    bodies: Range<usize>,
+    /// Whether to compute them; else they are NaN. Their arc tangents and hypotenuses are
+    /// most of a row's cost, and no chart draws them: a row for the charts alone skips them.
+    fill_bodies: bool,
+    /// Families with a total (the names of the header's force blocks).
+    with_total: bool,
+    total_shares: Vec<f64>,
+}
+
+impl<'a> Row<'a> {
+    /// The row of `mechanism` run with `run`'s families and stages.
+    pub fn new(mechanism: &'a dyn Mechanism, run: &RunLayout) -> Self {
+        let mut names: Vec<&str> = run.families.to_vec();
+        let with_total = run.families.len() > 1;
+        if with_total {
+            names.push("total");
+        }
+        let (header, bodies) = header(mechanism, &names, run.gas, run.losses, run.gears);
+        Self {
+            mechanism,
+            header: header.into(),
+            bodies,
+            fill_bodies: true,
+            with_total,
+            total_shares: vec![0.0; mechanism.topology().bodies.len()],
+        }
+    }
+
+    /// The column names.
+    pub fn header(&self) -> &[String] {
+        &self.header
+    }
+
+    /// Leaves the body columns NaN unless `reads` says one of them is read (by its index).
+    pub fn skip_unread_bodies(&mut self, reads: impl Fn(usize) -> bool) {
+        self.fill_bodies = self.bodies.clone().any(reads);
+    }
+
+    /// Appends the step's row to `r` (NaN for a quantity undefined at the step).
+    pub fn fill(&mut self, s: &Step, r: &mut Vec<f64>) {
+        let t = self.mechanism.topology();
+        let st = s.state;
+        let start = r.len();
+        r.extend([
+            st.crank.angle.to_degrees(),
+            st.crank.time,
+            st.crank.speed,
+            st.crank.acceleration,
+        ]);
+        for p in &st.pistons {
+            r.extend([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
+        }
+        if self.fill_bodies {
+            for b in &st.bodies {
+                let polar = PolarComponents::of(&b.cg);
+                r.extend([
+                    b.orientation.arg().to_degrees(),
+                    b.angular_velocity,
+                    b.angular_acceleration,
+                    b.cg.position.re,
+                    b.cg.position.im,
+                    b.cg.velocity.norm(),
+                    b.cg.acceleration.norm(),
+                    polar.radial_acceleration,
+                    polar.coriolis_acceleration,
+                    polar.tangential_acceleration,
+                    polar.normal_acceleration,
+                ]);
+            }
+        } else {
+            r.resize(r.len() + self.bodies.len(), f64::NAN);
+        }
+        r.extend(st.joints.iter().map(|j| j.relative_speed));
+        r.extend(&st.extras);
+        if let Some(p) = s.pressure {
+            r.push(p);
+            r.push(s.piston_forces.first().copied().unwrap_or(0.0));
+        }
+        if self.with_total {
+            for (k, total) in self.total_shares.iter_mut().enumerate() {
+                *total = s.shares.iter().map(|sh| sh[k]).sum();
+            }
+        }
+        let total = self
+            .with_total
+            .then_some((s.total, self.total_shares.as_slice()));
+        let families = s.families.iter().zip(s.shares.iter().map(Vec::as_slice));
+        for (loads, shares) in families.chain(total) {
+            for ((j, l), m) in t.joints.iter().zip(&loads.joints).zip(&st.joints) {
+                r.extend([l.force.re, l.force.im, l.force.norm()]);
+                match j.kind {
+                    JointKind::Prismatic => r.push(l.moment),
+                    JointKind::GearMesh { .. } => {
+                        r.extend([tangential(l.force, m), radial(l.force, m)]);
+                    }
+                    JointKind::Revolute(_) => {}
+                }
+            }
+            r.push(loads.crank_torque);
+            r.extend(shares);
+        }
+        for g in s.gears {
+            r.extend([g.dynamic_load, g.contact_stress]);
+            if !g.bending_stress.is_nan() {
+                r.push(g.bending_stress);
+            }
+        }
+        if !s.losses.is_empty() {
+            r.push(s.friction_torque);
+            r.extend(s.losses);
+        }
+        debug_assert_eq!(
+            r.len() - start,
+            self.header.len(),
+            "a row must match the header"
+        );
+    }
+}
+
+/// Fails the step `s` if a number of its row `row` among `columns` is infinite, naming the
+/// column (the CSV's name) and the crank angle: the stepper checks what the loads are made of
+/// (NaN included), but a derived column (a magnitude, a torque share, a power) can still
+/// overflow. A NaN here is a documented empty cell (a torque share while the crank stands
+/// still, an extra where it is undefined).
+pub(super) fn finite_row(
+    header: &[String],
+    row: &[f64],
+    columns: impl IntoIterator<Item = usize>,
+    s: &Step,
+) -> Result<(), String> {
+    match columns.into_iter().find(|&k| row[k].is_infinite()) {
+        None => Ok(()),
+        Some(k) => Err(format!(
+            "crank angle {:.4}°: {} is not finite ({})",
+            s.state.crank.angle.to_degrees(),
+            header[k],
+            row[k]
+        )),
+    }
+}

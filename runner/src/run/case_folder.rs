@@ -1,0 +1,70 @@
+//! Writing one case into its output folder: run into a temporary folder beside it
+//! (`summary.json`, the per-step files, the report), which then replaces it as a whole.
+
+use super::options::RunOptions;
+use super::size::check_size;
+use super::train::run_trains;
+use crate::output::{self, MechanismResult};
+use anyhow::Context;
+use cardan_case::case::Case;
+use cardan_report::{files, ChartData};
+use std::path::{Path, PathBuf};
+
+/// Runs one case into `out/<case name>/`, replacing that folder as a whole.
+pub(super) fn run_and_write(
+    case: &Case,
+    out: &Path,
+    options: &RunOptions,
+) -> Result<(PathBuf, Vec<MechanismResult>), String> {
+    let dir = out.join(&case.name);
+    let cannot_write = |e: anyhow::Error| {
+        format!(
+            "{}: case \"{}\": cannot write results to {}: {e:#}",
+            case.file.display(),
+            case.name,
+            dir.display()
+        )
+    };
+    if let Ok(meta) = dir.symlink_metadata() {
+        if !meta.is_dir() {
+            return Err(format!(
+                "{}: case \"{}\": {} is a file, not a case folder: it is not replaced; move it away or rename the case",
+                case.file.display(),
+                case.name,
+                dir.display()
+            ));
+        }
+    }
+    check_size(case, options)?;
+    let tmp = files::temporary_dir(&dir).map_err(cannot_write)?;
+    // A sweep's points are reported by the sweep's report: no charts of their own.
+    let report = options.reports && case.sweep.is_none();
+    let result = run_trains(case, Some(&tmp), report).and_then(|trains| {
+        // The chart series go to the report, and are dropped with it: a batch keeps only
+        // the summaries.
+        let (results, series): (Vec<MechanismResult>, Vec<Option<ChartData>>) =
+            trains.into_iter().unzip();
+        let charts: std::collections::BTreeMap<String, ChartData> = results
+            .iter()
+            .zip(series)
+            .filter_map(|(r, s)| Some((r.label.clone(), s?)))
+            .collect();
+        let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
+            .map_err(|e| e.to_string())?;
+        summary.push('\n');
+        files::write_file(&tmp.join("summary.json"), summary.as_bytes())
+            .and_then(|()| {
+                if report {
+                    cardan_report::case_report_from_run(&tmp, None, charts)
+                        .context("the report")?;
+                }
+                files::replace_dir(&tmp, &dir)
+            })
+            .map_err(cannot_write)?;
+        Ok(results)
+    });
+    if result.is_err() {
+        let _ = std::fs::remove_dir_all(&tmp);
+    }
+    result.map(|results| (dir, results))
+}

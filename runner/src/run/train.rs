@@ -1,0 +1,295 @@
+//! Running one case's crank trains (every mechanism in parallel, and the second train of a
+//! phased opposed-piston case), each step streamed to the summary, the per-step files and the
+//! charts: [`run_case`], and each train's [`MechanismResult`].
+
+use super::sampling::{sampling_warning, shifted_peaks, SAMPLING_CHECK_STEPS_PER_REV};
+use crate::output::MechanismResult;
+use crate::per_step::{ChartSink, PerStepSink, RunLayout};
+use cardan_case::case::Case;
+use cardan_dynamics::stepper::GasAt;
+use cardan_dynamics::{
+    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stages, Summary,
+    SummarySink,
+};
+use cardan_gas::GasMetric;
+use cardan_mechanism::{CrankMotion, Grid, Mechanism};
+use cardan_report::ChartData;
+use rayon::prelude::*;
+use std::path::Path;
+use std::sync::Arc;
+
+/// The mean crank speed over the run, rad/s: the speed of a steady run, which the
+/// speed-dependent gas models use.
+fn mean_speed(case: &Case) -> f64 {
+    match case.motion.at_angle(case.end_angle) {
+        Ok(end) if end.time > 0.0 => (case.end_angle - case.motion.start_angle) / end.time,
+        _ => case.motion.initial_speed,
+    }
+}
+
+/// The loss budget and the gear ratings of `mechanism` in `case`, as its run takes them.
+pub(super) fn stages_of(
+    case: &Case,
+    mechanism: &dyn Mechanism,
+) -> Result<(Option<LossBudget>, Option<GearRatings>), String> {
+    let losses = match &case.friction {
+        Some(f) => Some(
+            LossBudget::new(f, mechanism, case.geometry.bore)
+                .map_err(|e| format!("{}: {}", e.field, e.rule))?,
+        ),
+        None => None,
+    };
+    let gears = match &case.gear {
+        Some(spec) => {
+            let ratings = GearRatings::new(spec, mechanism, case.friction.as_ref())
+                .map_err(|e| format!("{}: {}", e.field, e.rule))?;
+            (!ratings.names().is_empty()).then_some(ratings)
+        }
+        None => None,
+    };
+    Ok((losses, gears))
+}
+
+/// Runs one crank train of `case`: `mechanism` with its crank `shift` (rad) ahead of the
+/// case's (the second train of a phased opposed-piston case; 0 otherwise), writing its
+/// per-step files (named `label`, as `case.output` asks) into `dir` if given. Both trains'
+/// pistons see the one chamber's pressure. With `dir` and `charts`, it also records the
+/// series of the report's charts (thinned as it steps, see `report/src/envelope.rs`) and returns
+/// them, so that the report need not read the CSV back, nor the CSV exist.
+fn run_mechanism(
+    case: &Case,
+    mechanism: &dyn Mechanism,
+    shift: f64,
+    label: &str,
+    dir: Option<&Path>,
+    charts: bool,
+) -> Result<(Summary, Option<ChartData>, Vec<String>), String> {
+    let inertial = Inertial(Solver::ClosedForm);
+    let gas_family = Gas(Solver::ClosedForm);
+    let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
+    if case.gas.is_some() {
+        families.push(&gas_family);
+    }
+    let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
+    let (mut losses, gears) = stages_of(case, mechanism)?;
+    let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
+    let mut summary = SummarySink::new(mechanism, &names, case.steps + 1);
+    if let Some(l) = &losses {
+        summary = summary.with_losses(l.names());
+    }
+    if let Some(g) = &gears {
+        summary = summary.with_gears(g);
+    }
+    let layout = RunLayout {
+        families: &names,
+        gas: case.gas.is_some(),
+        losses: &loss_names,
+        gears: gears.as_ref(),
+    };
+    let mut per_step = match dir {
+        Some(dir) => PerStepSink::create(
+            dir,
+            label,
+            mechanism,
+            &layout,
+            case.output,
+            case.steps,
+            charts,
+        )
+        .map_err(|e| format!("{e:#}"))?,
+        None => None,
+    };
+    // Without files, the charts take their rows on their own, so that the run can be shared.
+    let mut sinks = (
+        summary,
+        (per_step.is_none() && dir.is_some() && charts).then(|| {
+            ChartSink::new(
+                mechanism,
+                &layout,
+                case.output.decimation,
+                case.steps,
+                label,
+            )
+        }),
+    );
+    // A coarse grid's peaks are checked by the same run on the grid shifted by a third and by
+    // two thirds of a step (summaries only).
+    let revolutions = (case.end_angle - case.motion.start_angle) / std::f64::consts::TAU;
+    let per_rev = case.steps as f64 / revolutions;
+    let check_sampling = per_rev < SAMPLING_CHECK_STEPS_PER_REV;
+    let mut shifted = Vec::new();
+    let mut steps = |gas: Option<GasAt>| {
+        let motion = CrankMotion {
+            start_angle: case.motion.start_angle + shift,
+            ..case.motion
+        };
+        let mut grid = Grid::new(
+            motion,
+            motion.start_angle,
+            case.end_angle + shift,
+            case.steps,
+        );
+        let stages = Stages {
+            losses: losses.as_mut(),
+            gears: gears.as_ref(),
+        };
+        // Without files the run is shared by the threads (the same results bit for bit); the
+        // files are written in the steps' order, by a thread of their own.
+        match per_step.as_mut() {
+            Some(p) => run(
+                mechanism,
+                &mut grid,
+                &families,
+                gas,
+                stages,
+                &mut [&mut sinks.0, p],
+            ),
+            None => run_parallel(mechanism, &mut grid, &families, gas, stages, &mut sinks),
+        }
+        .map_err(|e| e.to_string())?;
+        if check_sampling {
+            shifted.extend(shifted_peaks(
+                case, mechanism, motion, &names, &families, gas,
+            )?);
+        }
+        Ok::<(), String>(())
+    };
+    let gas_metrics = match &case.gas {
+        None => {
+            steps(None)?;
+            Vec::new()
+        }
+        Some(gas) => {
+            let failed = |e: cardan_gas::GasError| format!("gas.{e}");
+            let cylinder = gas
+                .cylinder(case.geometry.bore, mechanism.stroke(), case.pistons)
+                .map_err(failed)?;
+            cylinder.with_phased_chamber(mechanism, case.crank_phase, |chamber| {
+                let prepared = gas
+                    .model()
+                    .prepare(*chamber, mean_speed(case))
+                    .map_err(failed)?;
+                // The chamber's pressure is a function of the first train's crank angle.
+                let at = |theta: f64| prepared.at(theta - shift);
+                steps(Some(&at))?;
+                Ok::<_, String>(prepared.metrics())
+            })?
+        }
+    };
+    let (summary, chart_rows) = sinks;
+    let summary = finish_summary(case, mechanism, &summary, gas_metrics)?;
+    let charts = match per_step {
+        Some(p) => p
+            .finish()
+            .map_err(|e| format!("cannot write the per-step files: {e:#}"))?,
+        None => chart_rows.and_then(ChartSink::finish),
+    };
+    let warnings = sampling_warning(&summary, &shifted, case.steps, per_rev)
+        .into_iter()
+        .collect();
+    Ok((summary, charts, warnings))
+}
+
+/// The summary of `mechanism`'s run in `case` from its sink, with the gas model's metrics and,
+/// with `[friction]`, the engine's; refused if a metric is not finite.
+fn finish_summary(
+    case: &Case,
+    mechanism: &dyn Mechanism,
+    sink: &SummarySink,
+    gas_metrics: Vec<GasMetric>,
+) -> Result<Summary, String> {
+    let mut summary = sink.finish(mechanism)?;
+    for m in gas_metrics {
+        if !m.value.is_finite() {
+            return Err(format!(
+                "gas model metric {} is not finite ({})",
+                m.name, m.value
+            ));
+        }
+        summary.push(m.name, m.value);
+    }
+    if let Some(f) = &case.friction {
+        // An engine's fmep and the whole-engine correlation beside it.
+        for (name, value) in cardan_dynamics::engine_metrics(
+            f,
+            mechanism,
+            case.geometry.bore,
+            &case.motion,
+            case.end_angle,
+            &summary,
+        ) {
+            summary.push(name, value);
+        }
+    }
+    // Every metric written is finite: a peak or an integral of finite steps can still
+    // overflow (a crank speed of 1e150 rad/s), and summary.json would hold a null.
+    if let Some(m) = summary.metrics.iter().find(|m| !m.value.is_finite()) {
+        return Err(format!(
+            "the summary's {} is not finite ({}): the run's numbers overflow or are undefined",
+            m.name, m.value
+        ));
+    }
+    Ok(summary)
+}
+
+/// Runs every mechanism of a case (in parallel), writing their per-step files into `dir` if
+/// given (as the case's `[output]` asks).
+/// A failure names the file, the case, the mechanism, and the step and quantity that went
+/// wrong.
+pub fn run_case(case: &Case, dir: Option<&Path>) -> Result<Vec<MechanismResult>, String> {
+    let trains = run_trains(case, dir, false)?;
+    Ok(trains.into_iter().map(|(r, _)| r).collect())
+}
+
+/// [`run_case`], with each crank train's chart series if `charts` (and `dir`) are given.
+pub(super) fn run_trains(
+    case: &Case,
+    dir: Option<&Path>,
+    charts: bool,
+) -> Result<Vec<(MechanismResult, Option<ChartData>)>, String> {
+    // Each mechanism's crank train, and its second one in a phased opposed-piston case.
+    let mut trains = Vec::new();
+    for m in &case.mechanisms {
+        trains.push((m, 0.0, m.name().to_string()));
+        if case.crank_phase != 0.0 {
+            trains.push((m, case.crank_phase, format!("{}_crank2", m.name())));
+        }
+    }
+    let results: Vec<Result<(MechanismResult, Option<ChartData>), String>> = trains
+        .par_iter()
+        .map(|(m, shift, label)| {
+            let (summary, series, warnings) =
+                run_mechanism(case, m.as_ref(), *shift, label, dir, charts).map_err(|e| {
+                    format!(
+                        "{}: case \"{}\": {label}: {e}",
+                        case.file.display(),
+                        case.name
+                    )
+                })?;
+            for w in &warnings {
+                tracing::warn!(
+                    "{}: case \"{}\": {label}: {w}",
+                    case.file.display(),
+                    case.name
+                );
+            }
+            let result = MechanismResult {
+                mechanism: Arc::clone(m),
+                label: label.clone(),
+                summary,
+                warnings,
+            };
+            Ok((result, series))
+        })
+        .collect();
+    // Every mechanism's failure, not only the first.
+    let failures: Vec<String> = results
+        .iter()
+        .filter_map(|r| r.as_ref().err().cloned())
+        .collect();
+    if failures.is_empty() {
+        Ok(results.into_iter().flatten().collect())
+    } else {
+        Err(failures.join("\n  "))
+    }
+}
