@@ -10,8 +10,11 @@
 //! the free moment.
 
 mod common;
-use cardan_balance::{throws_from_firing_order, Cylinder, Layout, MachineOrders};
-use cardan_mechanism::{Mechanism, C};
+use cardan_balance::{
+    lanchester_shafts, throws_from_firing_order, CardanCounterweights, CardanMasses, Cylinder,
+    Layout, MachineOrders, Rotor,
+};
+use cardan_mechanism::{MassInputs, Mechanism, C};
 use cardan_testing::near;
 use common::*;
 use std::f64::consts::PI;
@@ -196,6 +199,23 @@ fn a_three_cylinder_radial_engine_has_rotating_primary_and_secondary_forces() {
         1.5 * m.p1 * 0.25 * 0.02,
     );
     near("fourth backward", o.force[4].backward.norm(), 0.0, tol);
+    // Its secondary turns backwards alone: of the two balance shafts sized from it, the
+    // forward one has no mass, and the backward one cancels it (to 1e-12 of it).
+    let shafts = lanchester_shafts(&o.force[2], m.speed, 0.0);
+    near("forward shaft", shafts[0].mass_radius.norm(), 0.0, 1e-12);
+    let balanced = Layout::radial(3).orders(m.mech.as_ref(), &shafts, m.speed, STEPS, 4);
+    near(
+        "secondary with a shaft",
+        balanced.force[2].amplitude(),
+        0.0,
+        1e-12 * o.force[2].amplitude(),
+    );
+    near(
+        "primary with a shaft",
+        balanced.force[1].amplitude(),
+        o.force[1].amplitude(),
+        tol,
+    );
     // One plane: no free moment.
     near(
         "moment",
@@ -317,5 +337,157 @@ fn the_layout_table_of_free_forces_and_moments() {
         near(&format!("{name} F2"), o.force[2].amplitude(), f2, tol);
         near(&format!("{name} M1"), o.moment[1].amplitude(), m1, tol);
         near(&format!("{name} M2"), o.moment[2].amplitude(), m2, tol);
+    }
+}
+
+/// The thesis cardan gear in every cylinder (rod and piston m, crank r_c, with a 0.4 kg wheel
+/// and a 0.01 kg·m crank unbalance per cylinder), its rotors given in the cylinder's frame and
+/// placed by [`Layout::place`].
+fn cardan() -> (Box<dyn Mechanism>, CardanMasses) {
+    let mech = machine("cardan_gear", &THESIS, &MassInputs::default());
+    let masses = CardanMasses {
+        crank: THESIS.crank_length / 2.0,
+        reciprocating: mech.topology().bodies.iter().map(|b| b.mass).sum(),
+        wheel: 0.4,
+        crank_unbalance: 0.01,
+    };
+    (mech, masses)
+}
+
+/// Each cylinder's rotors (in its own frame) placed in the machine frame.
+fn placed(layout: &Layout, rotors: &[Rotor]) -> Vec<Rotor> {
+    (0..layout.cylinders.len())
+        .flat_map(|i| rotors.iter().map(move |r| layout.place(i, r)))
+        .collect()
+}
+
+/// Cardan machines whose every cylinder carries its counterweight pair (sized from its masses
+/// in its own frame, placed by the layout) have no shaking force and no free moment at any
+/// step, accelerating, whatever the throws, axis angles and axial positions (to 1e-12 of the
+/// bare machine's first order: round-off).
+#[test]
+fn cardan_machines_with_their_counterweight_pairs_do_not_shake() {
+    let (mech, masses) = cardan();
+    let pair = CardanCounterweights::for_masses(&masses, 0.025);
+    let own: Vec<Rotor> = masses
+        .rotors()
+        .into_iter()
+        .chain(pair.rotors(&masses))
+        .collect();
+    let w = Layout {
+        cylinders: [-60.0f64, 0.0, 60.0]
+            .iter()
+            .map(|b| Cylinder {
+                throw: 0.0,
+                axis_angle: b.to_radians(),
+                axial_position: 0.0,
+            })
+            .collect(),
+    };
+    let odd = Layout {
+        cylinders: vec![
+            Cylinder {
+                throw: 0.0,
+                axis_angle: 0.0,
+                axial_position: 0.0,
+            },
+            Cylinder {
+                throw: 1.1,
+                axis_angle: 0.7,
+                axial_position: 0.05,
+            },
+            Cylinder {
+                throw: 4.0,
+                axis_angle: -2.0,
+                axial_position: 0.13,
+            },
+        ],
+    };
+    let speed = 300.0;
+    for (name, layout) in [
+        ("radial-5", Layout::radial(5)),
+        (
+            "inline-3",
+            Layout::in_line(&[0.0, 4.0 * PI / 3.0, 2.0 * PI / 3.0], 0.1),
+        ),
+        ("half-radial", w),
+        ("custom", odd),
+    ] {
+        let rotors = placed(&layout, &own);
+        let bare = layout.orders(
+            mech.as_ref(),
+            &placed(&layout, &masses.rotors()),
+            speed,
+            64,
+            2,
+        );
+        let scale =
+            bare.force[1].forward.norm() + masses.reciprocating * masses.crank * speed * speed;
+        let motion = cardan_mechanism::CrankMotion {
+            start_angle: 0.2,
+            initial_speed: speed,
+            angular_acceleration: -3000.0,
+        };
+        for crank in motion.grid(0.2, 6.0, 300).unwrap() {
+            let s = layout.shaking(mech.as_ref(), &rotors, &crank);
+            near(
+                &format!("{name} force at {}", crank.angle),
+                s.force.norm(),
+                0.0,
+                1e-12 * scale * 5.0,
+            );
+            near(
+                &format!("{name} moment at {}", crank.angle),
+                s.moment.norm(),
+                0.0,
+                1e-12 * scale * 0.5,
+            );
+        }
+    }
+}
+
+/// A radial cardan engine (3 or more cylinders on one pin) has a first order that turns with
+/// the crank alone, n·m·r_c·ω² forward plus the wheels' and cranks' unbalance, and no other
+/// order: one counterweight on the crank, sized from those masses, balances it completely.
+#[test]
+fn a_radial_cardan_engine_is_balanced_by_one_crank_counterweight() {
+    let (mech, masses) = cardan();
+    let speed = 400.0;
+    for n in [3, 5, 6] {
+        let layout = Layout::radial(n);
+        let unbalance: Vec<Rotor> = placed(&layout, &masses.rotors());
+        let o = layout.orders(mech.as_ref(), &unbalance, speed, 64, 6);
+        let forward = n as f64
+            * ((masses.reciprocating + masses.wheel) * masses.crank + masses.crank_unbalance)
+            * speed
+            * speed;
+        let tol = 1e-12 * forward;
+        near(
+            &format!("radial-{n} forward"),
+            o.force[1].forward.norm(),
+            forward,
+            tol,
+        );
+        near(
+            &format!("radial-{n} backward"),
+            o.force[1].backward.norm(),
+            0.0,
+            tol,
+        );
+        for k in 2..=6 {
+            near(
+                &format!("radial-{n} order {k}"),
+                o.force[k].amplitude(),
+                0.0,
+                tol,
+            );
+        }
+        let weight = Rotor::on_crank(-o.force[1].forward / (speed * speed), 0.0);
+        let all: Vec<Rotor> = unbalance.into_iter().chain([weight]).collect();
+        let balanced = layout.orders(mech.as_ref(), &all, speed, 64, 6);
+        assert!(
+            balanced.force.iter().all(|o| o.amplitude() <= tol),
+            "radial-{n}: {balanced:?}"
+        );
     }
 }
