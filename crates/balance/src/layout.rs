@@ -28,7 +28,7 @@
 //! y part (about the vertical: the **yaw**) are the free moments; the moment about the crank
 //! axis (roll) is the reaction of the torque and not part of them. z₀ is midway between the
 //! outermost cylinders (issue 24): the free moment of a machine whose forces cancel does not
-//! depend on it.
+//! depend on it (`docs/validation/balance.md`, free moments).
 
 use crate::counterweight::Rotor;
 use crate::harmonics::{orders, revolution, Order};
@@ -248,5 +248,38 @@ impl Layout {
             force: orders(&forces, 0.0, max_order),
             moment: orders(&moments, 0.0, max_order),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    #[should_panic(expected = "not a permutation")]
+    fn a_firing_order_that_is_not_a_permutation_is_refused() {
+        throws_from_firing_order(&[1, 3, 3, 2], std::f64::consts::PI);
+    }
+
+    /// A rotor of a cylinder turned by β with its throw at φ: on the crank (k = 1) it turns
+    /// with the throw, e^{iφ}; against it (k = −1) by e^{i(2β − φ)}.
+    #[test]
+    fn a_rotor_is_placed_with_its_cylinder() {
+        let layout = Layout {
+            cylinders: vec![Cylinder {
+                throw: 0.3,
+                axis_angle: 1.1,
+                axial_position: 0.2,
+            }],
+        };
+        let on_crank = layout.place(0, &Rotor::on_crank(C::new(2.0, 0.0), 0.05));
+        assert!((on_crank.mass_radius - C::from_polar(2.0, 0.3)).norm() < 1e-15);
+        assert!((on_crank.axial_position - 0.25).abs() < 1e-15);
+        let backward = Rotor {
+            order: -1,
+            ..Rotor::on_crank(C::new(2.0, 0.0), 0.0)
+        };
+        let placed = layout.place(0, &backward);
+        assert!((placed.mass_radius - C::from_polar(2.0, 2.2 - 0.3)).norm() < 1e-15);
     }
 }

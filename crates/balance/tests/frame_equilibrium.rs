@@ -61,7 +61,14 @@ fn every_machine() -> Vec<(String, Box<dyn Mechanism>)> {
 
 #[test]
 fn the_shaking_force_is_minus_the_frame_reactions_for_every_mechanism() {
-    for (name, mech) in every_machine() {
+    let machines = every_machine();
+    // The registry, and at least the offset piston pin and the involute mesh besides.
+    assert!(
+        machines.len() >= MECHANISMS.len() + 2,
+        "{} machines",
+        machines.len()
+    );
+    for (name, mech) in machines {
         let topology = mech.topology();
         let motion = CrankMotion {
             start_angle: 0.1,
