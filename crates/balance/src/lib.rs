@@ -12,7 +12,7 @@
 //! in the direction of rotation). The published values and equations relied on are written out
 //! in `docs/validation/balance.md`.
 //!
-//! - [`shaking`]: one mechanism's [`Shaking`] at one state: F = −Σ m·a, and its roll moment;
+//! - [`shaking`](fn@shaking): one mechanism's [`Shaking`] at one state: F = −Σ m·a, and its roll moment;
 //! - [`Layout`]: cylinders on one crankshaft (throw, axis angle, axial position):
 //!   [`MachineShaking`] (force, free pitch and yaw moments), [`MachineOrders`];
 //! - [`orders`]: the [`Order`]s of a planar vector over a revolution, each with its forward and
