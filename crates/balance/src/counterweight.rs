@@ -148,7 +148,10 @@ pub struct CardanMasses {
 
 impl CardanMasses {
     /// The wheel's mass and the crank's unbalance as rotors (the reciprocating mass is the
-    /// mechanism's own body): both forward, (m_w·r_c + m·e) towards S.
+    /// mechanism's own body): both forward, (m_w·r_c + m·e) towards S. Add them to a shaking
+    /// force only where the mechanism's topology does not carry them already (today it folds
+    /// the wheel into a massless body and the crankshaft is balanced: both masses 0); the
+    /// counterweights ([`CardanCounterweights::for_masses`]) need them either way.
     pub fn rotors(&self) -> Vec<Rotor> {
         vec![Rotor::on_crank(
             C::new(self.wheel * self.crank + self.crank_unbalance, 0.0),

@@ -234,6 +234,23 @@ fn the_cardan_counterweight_pair_cancels_the_shaking_force_at_every_step() {
         1e-12,
         0.0,
     );
+    // The first order read as the texts' masses: the wheel and crank turn, the rod and piston
+    // reciprocate over the cardan gear's crank radius 2·r_c (half the stroke).
+    let first = FirstOrderMasses::from_first_order(&bare[1], SPEED);
+    close(
+        "rotating",
+        first.rotating.re,
+        0.4 * masses.crank + 0.01,
+        1e-12,
+        0.0,
+    );
+    close(
+        "reciprocating",
+        first.reciprocating,
+        m * 2.0 * masses.crank,
+        1e-12,
+        0.0,
+    );
     let pair = CardanCounterweights::for_masses(&masses, 0.02);
     close(
         "wheel counterweight",

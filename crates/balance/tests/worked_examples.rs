@@ -52,7 +52,8 @@ fn a_single_cylinder_with_two_thirds_balanced() {
     within("residual force at 30°, N", residual, 3264.0, 3e-4);
 }
 
-/// Khurmi & Gupta, *Theory of Machines*, ch. 22 (as solved on sarthaks.com, question 491921):
+/// A textbook's solved example as reproduced on sarthaks.com (question 491921; the page as read
+/// does not name the book):
 /// 240 rpm, stroke 300 mm, reciprocating 50 kg, revolving 37 kg at the 150 mm crank, two thirds
 /// balanced, balance mass at 400 mm: B·b = (m₁ + c·m)·r = 10.55 kg·m, B = 26.38 kg (printed to
 /// 4 figures: tolerance 3e-4). The residual is left to the other example: its printed value was
