@@ -70,8 +70,8 @@ pub struct FirstOrderMasses {
 
 impl FirstOrderMasses {
     /// The masses that give `first`, a mechanism's first order at constant speed `speed`
-    /// (rad/s) in the frame of its cylinder, whose axis is at top dead centre the crank's
-    /// direction at θ = π/2 (every in-line mechanism, [`cardan_mechanism::Mechanism::top_dead_centre`]).
+    /// (rad/s), in the frame of its cylinder: the axis along +y, top dead centre at θ = π/2, as
+    /// every in-line mechanism has it ([`cardan_mechanism::Mechanism::top_dead_centre`]).
     ///
     /// A reciprocating m·r on the axis i moving as r·sin θ shakes with m·r·ω²·sin θ·i =
     /// (m·r·ω²/2)·(e^{iθ} − e^{−iθ}); a rotating u with u·ω²·e^{iθ}. So B₁ = −m·r·ω²/2 and
