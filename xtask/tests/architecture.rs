@@ -20,7 +20,7 @@ fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
 /// Physics crates never depend on the runner or the command line.
 #[test]
 fn physics_crates_do_not_depend_on_the_runner() {
-    for krate in ["mechanism", "dynamics", "gas", "gears", "friction"] {
+    for krate in ["mechanism", "dynamics", "gas", "gears", "friction", "balance"] {
         let manifest =
             std::fs::read_to_string(root().join(format!("crates/{krate}/Cargo.toml"))).unwrap();
         for forbidden in ["cardan-runner", "cardan =", "\ncardan."] {
@@ -131,6 +131,7 @@ fn no_code_outside_a_mechanism_module_names_a_mechanism() {
     for dir in [
         "crates/dynamics/src",
         "crates/gas/src",
+        "crates/balance/src",
         "case/src",
         "runner/src",
         "report/src",

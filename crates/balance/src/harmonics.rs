@@ -1,0 +1,149 @@
+//! Orders of a planar vector over one crank revolution: forward and backward rotating
+//! components.
+//!
+//! A planar vector V(θ) (a force, or a free moment, as the complex number x + i·y) sampled at
+//! constant crank speed over one revolution is a Fourier series in the crank angle θ whose
+//! terms pair up by order k ≥ 1 (k times per revolution):
+//!
+//! V(θ) = V₀ + Σ_k (A_k·e^{ikθ} + B_k·e^{−ikθ}),
+//!
+//! A_k rotating with the crank (forward), B_k against it (backward): the "direct and reverse
+//! cranks" of the theory-of-machines texts, a reciprocating harmonic P·cos kφ along a fixed
+//! axis being two half-size vectors turning at ±k·ω (`docs/validation/balance.md`). On N
+//! equally spaced samples θ_j = θ₀ + 2πj/N the discrete transform gives them exactly for every
+//! order below N/2 whose aliases (orders k ± N, …) are absent:
+//! A_k = (1/N)·Σ_j V_j·e^{−ikθ_j}, B_k = (1/N)·Σ_j V_j·e^{ikθ_j}.
+//!
+//! The amplitude of order k is the largest magnitude its vector A_k·e^{ikθ} + B_k·e^{−ikθ}
+//! takes over a revolution: the two turn towards each other and line up twice per turn of
+//! their difference, so it is |A_k| + |B_k| (and the smallest, ||A_k| − |B_k||): issue 24's
+//! order amplitude. A reciprocating harmonic has |A_k| = |B_k| (a line); a rotating one a single
+//! component (a circle of constant magnitude).
+
+use cardan_mechanism::{CrankState, C};
+use std::f64::consts::TAU;
+
+/// One order of a planar vector over a revolution.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Order {
+    /// k: times per crank revolution (0: the mean).
+    pub order: usize,
+    /// A_k, the component turning with the crank at k·ω, in the vector's unit (N, N·m); its
+    /// argument is the component's direction at θ = 0.
+    pub forward: C,
+    /// B_k, the component turning against the crank at k·ω (0 for the mean).
+    pub backward: C,
+}
+
+impl Order {
+    /// The largest magnitude of this order's vector over a revolution, |A_k| + |B_k|.
+    pub fn amplitude(&self) -> f64 {
+        self.forward.norm() + self.backward.norm()
+    }
+
+    /// The smallest magnitude over a revolution, ||A_k| − |B_k||.
+    pub fn least(&self) -> f64 {
+        (self.forward.norm() - self.backward.norm()).abs()
+    }
+
+    /// This order's vector at crank angle `theta` (rad): A_k·e^{ikθ} + B_k·e^{−ikθ}.
+    pub fn at(&self, theta: f64) -> C {
+        let e = C::from_polar(1.0, self.order as f64 * theta);
+        self.forward * e + self.backward * e.conj()
+    }
+}
+
+/// The orders 0..=`max_order` of `samples`, taken at the crank angles `start + 2πj/N` (rad),
+/// j = 0..N, N = `samples.len()`, at constant speed over one revolution.
+///
+/// # Panics
+/// If N ≤ 2·`max_order` (the highest order asked for would alias with a lower one).
+pub fn orders(samples: &[C], start: f64, max_order: usize) -> Vec<Order> {
+    let n = samples.len();
+    assert!(
+        n > 2 * max_order,
+        "{n} samples per revolution resolve orders below {}, not {max_order}",
+        n.div_ceil(2)
+    );
+    let step = TAU / n as f64;
+    (0..=max_order)
+        .map(|k| {
+            let (mut forward, mut backward) = (C::new(0.0, 0.0), C::new(0.0, 0.0));
+            for (j, v) in samples.iter().enumerate() {
+                // e^{ikθ_j} from k·θ_j reduced to one turn: exact to an ulp of 2π.
+                let turn = ((k * j) % n) as f64 * step + k as f64 * start;
+                let e = C::from_polar(1.0, turn);
+                forward += v * e.conj();
+                backward += v * e;
+            }
+            let (forward, backward) = (forward / n as f64, backward / n as f64);
+            if k == 0 {
+                Order {
+                    order: 0,
+                    forward,
+                    backward: C::new(0.0, 0.0),
+                }
+            } else {
+                Order {
+                    order: k,
+                    forward,
+                    backward,
+                }
+            }
+        })
+        .collect()
+}
+
+/// `steps` crank states over one revolution from `start` (rad) at the constant speed `speed`
+/// (rad/s): θ_j = start + 2πj/steps, the angles [`orders`] expects.
+pub fn revolution(start: f64, speed: f64, steps: usize) -> Vec<CrankState> {
+    let step = TAU / steps as f64;
+    (0..steps)
+        .map(|j| {
+            let angle = start + j as f64 * step;
+            CrankState::new(angle, speed, 0.0, (angle - start) / speed)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A vector built from known components comes back apart, and its amplitude is the
+    /// largest magnitude sampled.
+    #[test]
+    fn known_components_come_back() {
+        let (a1, b1, a2, b2) = (
+            C::new(3.0, 1.0),
+            C::new(-0.5, 2.0),
+            C::new(0.0, 0.7),
+            C::new(1.1, 0.0),
+        );
+        let v = |t: f64| {
+            C::new(0.25, -0.5)
+                + a1 * C::from_polar(1.0, t)
+                + b1 * C::from_polar(1.0, -t)
+                + a2 * C::from_polar(1.0, 2.0 * t)
+                + b2 * C::from_polar(1.0, -2.0 * t)
+        };
+        let start = 0.4;
+        let samples: Vec<C> = (0..64).map(|j| v(start + TAU * j as f64 / 64.0)).collect();
+        let o = orders(&samples, start, 4);
+        let tol = 1e-13;
+        assert!((o[0].forward - C::new(0.25, -0.5)).norm() < tol);
+        assert!((o[1].forward - a1).norm() < tol && (o[1].backward - b1).norm() < tol);
+        assert!((o[2].forward - a2).norm() < tol && (o[2].backward - b2).norm() < tol);
+        assert!(o[3].amplitude() < tol && o[4].amplitude() < tol);
+        let largest = (0..100_000)
+            .map(|j| o[1].at(TAU * j as f64 / 100_000.0).norm())
+            .fold(0.0, f64::max);
+        assert!((largest - o[1].amplitude()).abs() < 1e-6 * o[1].amplitude());
+    }
+
+    #[test]
+    #[should_panic(expected = "resolve orders below")]
+    fn too_few_samples_are_refused() {
+        orders(&[C::new(1.0, 0.0); 8], 0.0, 4);
+    }
+}

@@ -1,0 +1,285 @@
+//! Multi-cylinder machines: each cylinder runs the same mechanism on one crankshaft; the
+//! machine's shaking force is the sum of theirs, and their axial spread makes free moments.
+//!
+//! # Frames
+//!
+//! The machine frame: the crank axis is z (the crankshaft's, pointing so that the crank turns
+//! counter-clockwise seen from +z), x and y across it; the machine's crank angle θ is that of a
+//! reference throw from +x, as in one mechanism (Karhula 2008 ch. 4). Cylinder i:
+//!
+//! - its **throw** φ_i (rad): its crank throw's angle ahead of the reference throw, in the
+//!   direction of rotation (the crankshaft's geometry, the same in every plane);
+//! - its **axis angle** β_i (rad): its plane frame turned by β_i about the crank axis, so its
+//!   cylinder lies along e^{iβ_i}·i (β = 0: along +y, as one mechanism's);
+//! - its **axial position** z_i (m) along the crank axis.
+//!
+//! In its own frame the throw is at ψ_i = θ + φ_i − β_i: the cylinder's mechanism is evaluated
+//! at ψ_i ([`Layout::cylinder_crank`]) and its force turned back by e^{iβ_i}. For an in-line
+//! machine (β = 0) that is θ + φ_i. A **radial** engine has every cylinder's rod on the one
+//! crank pin (φ_i = 0, β_i = 2π·i/n, z_i = 0): each cylinder is a whole mechanism of its own on
+//! that pin (no master and articulated rods). A vee shares each pin between its banks
+//! (β = ±half the bank angle).
+//!
+//! # Free moments
+//!
+//! A force F_i (planar, N) acting in the plane z_i has about the point of the crank axis at z₀
+//! the moment (z_i − z₀)·ẑ × F_i = (z_i − z₀)·(−F_y, F_x): as a complex number
+//! i·(z_i − z₀)·F_i. Its x part (about the horizontal axis across the crank: the **pitch**) and
+//! y part (about the vertical: the **yaw**) are the free moments; the moment about the crank
+//! axis (roll) is the reaction of the torque and not part of them. z₀ is midway between the
+//! outermost cylinders (issue 24): the free moment of a machine whose forces cancel does not
+//! depend on it (`docs/validation/balance.md`, free moments).
+
+use crate::counterweight::Rotor;
+use crate::harmonics::{orders, revolution, Order};
+use crate::shaking::{shaking, Shaking};
+use cardan_mechanism::{CrankState, Mechanism, C};
+use std::f64::consts::TAU;
+
+/// One cylinder's place on the crankshaft (module note).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cylinder {
+    /// φ: its throw's angle ahead of the reference throw, rad.
+    pub throw: f64,
+    /// β: its plane frame's turn about the crank axis, rad (its axis along e^{iβ}·i).
+    pub axis_angle: f64,
+    /// z: its plane's position along the crank axis, m.
+    pub axial_position: f64,
+}
+
+/// The cylinders of a machine, cylinder 1 first.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Layout {
+    pub cylinders: Vec<Cylinder>,
+}
+
+/// The machine's shaking at one step, in the machine frame.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct MachineShaking {
+    /// Σ of the cylinders' and rotors' shaking forces, N (x, y as re, im).
+    pub force: C,
+    /// Free moment about the crank axis's point midway between the outermost cylinders, N·m:
+    /// pitch (about x) as re, yaw (about y) as im.
+    pub moment: C,
+}
+
+impl MachineShaking {
+    /// Moment about the horizontal axis across the crank axis, N·m.
+    pub fn pitch(&self) -> f64 {
+        self.moment.re
+    }
+
+    /// Moment about the vertical axis, N·m.
+    pub fn yaw(&self) -> f64 {
+        self.moment.im
+    }
+}
+
+impl Layout {
+    /// One cylinder, as every case is today.
+    pub fn single() -> Self {
+        Self::in_line(&[0.0], 0.0)
+    }
+
+    /// An in-line machine: throws `throws` (rad), cylinder i at i·`spacing` (m).
+    pub fn in_line(throws: &[f64], spacing: f64) -> Self {
+        Self {
+            cylinders: throws
+                .iter()
+                .enumerate()
+                .map(|(i, &throw)| Cylinder {
+                    throw,
+                    axis_angle: 0.0,
+                    axial_position: i as f64 * spacing,
+                })
+                .collect(),
+        }
+    }
+
+    /// A radial engine of `n` cylinders at 2π/n, every rod on the one crank pin (module note).
+    pub fn radial(n: usize) -> Self {
+        Self {
+            cylinders: (0..n)
+                .map(|i| Cylinder {
+                    throw: 0.0,
+                    axis_angle: TAU * i as f64 / n as f64,
+                    axial_position: 0.0,
+                })
+                .collect(),
+        }
+    }
+
+    /// z₀, m: midway between the outermost cylinders.
+    pub fn reference(&self) -> f64 {
+        let z = self.cylinders.iter().map(|c| c.axial_position);
+        let (lo, hi) = z.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), z| {
+            (lo.min(z), hi.max(z))
+        });
+        0.5 * (lo + hi)
+    }
+
+    /// Cylinder `i`'s own crank state at the machine's `crank`: its angle ψ = θ + φ − β, the
+    /// same speed, acceleration and time.
+    pub fn cylinder_crank(&self, i: usize, crank: &CrankState) -> CrankState {
+        let c = &self.cylinders[i];
+        CrankState::new(
+            crank.angle + c.throw - c.axis_angle,
+            crank.speed,
+            crank.acceleration,
+            crank.time,
+        )
+    }
+
+    /// A rotor of cylinder `i`, given in that cylinder's frame at its own angle ψ, in the
+    /// machine frame at θ: z = e^{iβ}·u·e^{ik(θ+φ−β)}, so u turns by β + k·(φ − β); at the
+    /// cylinder's axial position plus its own.
+    pub fn place(&self, i: usize, rotor: &Rotor) -> Rotor {
+        let c = &self.cylinders[i];
+        let turn = c.axis_angle + rotor.order as f64 * (c.throw - c.axis_angle);
+        Rotor {
+            mass_radius: rotor.mass_radius * C::from_polar(1.0, turn),
+            order: rotor.order,
+            axial_position: c.axial_position + rotor.axial_position,
+        }
+    }
+
+    /// The machine's shaking from each cylinder's own (`per_cylinder[i]` in cylinder i's frame
+    /// at its angle ψ_i) and from `rotors` (in the machine frame, [`Layout::place`]) at
+    /// `crank` (module note).
+    pub fn sum(
+        &self,
+        per_cylinder: &[Shaking],
+        rotors: &[Rotor],
+        crank: &CrankState,
+    ) -> MachineShaking {
+        assert_eq!(
+            per_cylinder.len(),
+            self.cylinders.len(),
+            "one shaking per cylinder"
+        );
+        let z0 = self.reference();
+        let mut out = MachineShaking::default();
+        let mut add = |force: C, z: f64| {
+            out.force += force;
+            out.moment += C::i() * (z - z0) * force;
+        };
+        for (c, s) in self.cylinders.iter().zip(per_cylinder) {
+            add(C::from_polar(1.0, c.axis_angle) * s.force, c.axial_position);
+        }
+        for r in rotors {
+            add(r.force(crank), r.axial_position);
+        }
+        out
+    }
+
+    /// Every cylinder's [`Shaking`] in its own frame at the machine's `crank`, each running
+    /// `mechanism` at its own angle.
+    pub fn cylinders_shaking(&self, mechanism: &dyn Mechanism, crank: &CrankState) -> Vec<Shaking> {
+        (0..self.cylinders.len())
+            .map(|i| {
+                let state = mechanism.state(&self.cylinder_crank(i, crank));
+                shaking(mechanism.topology(), &state)
+            })
+            .collect()
+    }
+
+    /// The machine's shaking at `crank`: `mechanism` in every cylinder, plus `rotors` (machine
+    /// frame).
+    pub fn shaking(
+        &self,
+        mechanism: &dyn Mechanism,
+        rotors: &[Rotor],
+        crank: &CrankState,
+    ) -> MachineShaking {
+        self.sum(&self.cylinders_shaking(mechanism, crank), rotors, crank)
+    }
+}
+
+/// The throws of an evenly firing machine from its firing order (cylinder numbers from 1): the
+/// cylinder that fires j-th reaches its top dead centre j·`interval` later than the first, so
+/// its throw trails by that angle, φ = −j·interval mod 2π (`interval`: 4π/n for a four-stroke,
+/// 2π/n for a two-stroke, rad). Returns the throws by cylinder number.
+///
+/// # Panics
+/// If `firing_order` is not a permutation of 1..=n.
+pub fn throws_from_firing_order(firing_order: &[usize], interval: f64) -> Vec<f64> {
+    let n = firing_order.len();
+    let mut throws = vec![f64::NAN; n];
+    for (j, &cylinder) in firing_order.iter().enumerate() {
+        assert!(
+            (1..=n).contains(&cylinder) && throws[cylinder - 1].is_nan(),
+            "firing order {firing_order:?} is not a permutation of 1..={n}"
+        );
+        throws[cylinder - 1] = (-(j as f64) * interval).rem_euclid(TAU);
+    }
+    throws
+}
+
+/// A machine's orders over one revolution at constant speed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MachineOrders {
+    /// Orders 0..=max of the shaking force, N.
+    pub force: Vec<Order>,
+    /// Orders 0..=max of the free moment (pitch as re, yaw as im), N·m.
+    pub moment: Vec<Order>,
+}
+
+impl Layout {
+    /// The orders 0..=`max_order` of the machine's shaking force and free moment
+    /// ([`Layout::shaking`]) over one revolution from θ = 0 at the constant speed `speed`
+    /// (rad/s), on `steps` steps ([`crate::orders`]: `steps` > 2·`max_order`, and high enough
+    /// that the orders above N/2 are negligible).
+    pub fn orders(
+        &self,
+        mechanism: &dyn Mechanism,
+        rotors: &[Rotor],
+        speed: f64,
+        steps: usize,
+        max_order: usize,
+    ) -> MachineOrders {
+        let (forces, moments): (Vec<C>, Vec<C>) = revolution(0.0, speed, steps)
+            .iter()
+            .map(|crank| {
+                let s = self.shaking(mechanism, rotors, crank);
+                (s.force, s.moment)
+            })
+            .unzip();
+        MachineOrders {
+            force: orders(&forces, 0.0, max_order),
+            moment: orders(&moments, 0.0, max_order),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    #[should_panic(expected = "not a permutation")]
+    fn a_firing_order_that_is_not_a_permutation_is_refused() {
+        throws_from_firing_order(&[1, 3, 3, 2], std::f64::consts::PI);
+    }
+
+    /// A rotor of a cylinder turned by β with its throw at φ: on the crank (k = 1) it turns
+    /// with the throw, e^{iφ}; against it (k = −1) by e^{i(2β − φ)}.
+    #[test]
+    fn a_rotor_is_placed_with_its_cylinder() {
+        let layout = Layout {
+            cylinders: vec![Cylinder {
+                throw: 0.3,
+                axis_angle: 1.1,
+                axial_position: 0.2,
+            }],
+        };
+        let on_crank = layout.place(0, &Rotor::on_crank(C::new(2.0, 0.0), 0.05));
+        assert!((on_crank.mass_radius - C::from_polar(2.0, 0.3)).norm() < 1e-15);
+        assert!((on_crank.axial_position - 0.25).abs() < 1e-15);
+        let backward = Rotor {
+            order: -1,
+            ..Rotor::on_crank(C::new(2.0, 0.0), 0.0)
+        };
+        let placed = layout.place(0, &backward);
+        assert!((placed.mass_radius - C::from_polar(2.0, 2.2 - 0.3)).norm() < 1e-15);
+    }
+}
