@@ -431,49 +431,9 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     }
     let steps = m.steps.0 as usize;
 
-    if raw.mechanisms.is_empty() {
-        return Err(invalid(
-            "mechanisms",
-            &"[]",
-            &format!("must list at least one of {}", cardan_mechanism::names()),
-        ));
-    }
-    let mut mechanisms: Vec<Arc<dyn Mechanism>> = Vec::new();
-    for name in &raw.mechanisms {
-        let Some(entry) = cardan_mechanism::entry(name) else {
-            let rule = crate::schema::suggest("mechanism", name, &mechanism_names());
-            return Err(invalid("mechanisms", &format!("\"{name}\""), &rule));
-        };
-        if mechanisms.iter().any(|c| c.name() == entry.name) {
-            return Err(invalid(
-                "mechanisms",
-                &format!("\"{name}\""),
-                "is listed twice",
-            ));
-        }
-        let own_masses = match own.masses.get(entry.name) {
-            Some(v) => Some(crate::masses::own_table(v.clone(), entry.name).map_err(field_error)?),
-            None => None,
-        };
-        let inputs = crate::masses::inputs(&raw.masses, own_masses.as_ref(), entry, &invalid)?;
-        let options = crate::mechanism_table::options(own.options.get(entry.name), entry)
-            .map_err(field_error)?;
-        let mechanism = (entry.build)(&geometry, &inputs, &options).map_err(|e| {
-            let field = match e.field.as_str() {
-                // The rod's centre of gravity may come from either mass table.
-                "masses.rod_cg" if own_masses.as_ref().is_some_and(|t| t.rod_cg.is_some()) => {
-                    format!("masses.{}.rod_cg", entry.name)
-                }
-                f => f.to_string(),
-            };
-            invalid(&field, &e.value, &e.rule)
-        })?;
-        let step = (end_angle - start_angle) / steps as f64;
-        mechanism
-            .check_angles(start_angle, step, steps)
-            .map_err(|e| invalid(&e.field, &e.value, &e.rule))?;
-        mechanisms.push(Arc::from(mechanism));
-    }
+    let step = (end_angle - start_angle) / steps as f64;
+    let angles = (start_angle, step, steps);
+    let mechanisms = build_mechanisms(&raw, &own, &geometry, angles, &invalid, &field_error)?;
     let gas = raw
         .gas
         .as_ref()
@@ -493,23 +453,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     }
     let gear = match &raw.gear {
         None => None,
-        Some(table) => {
-            let spec = crate::gear::parse(table, &invalid)?;
-            let mut meshes = 0;
-            for m in &mechanisms {
-                let ratings = GearRatings::new(&spec, m.as_ref(), None)
-                    .map_err(|e| invalid(&e.field, &format!("(for the {})", m.name()), &e.rule))?;
-                meshes += ratings.names().len();
-            }
-            if meshes == 0 {
-                return Err(invalid(
-                    "gear",
-                    &"a [gear] table",
-                    "no mechanism of the case has a gear mesh to rate",
-                ));
-            }
-            Some(spec)
-        }
+        Some(table) => Some(gear_spec(table, &mechanisms, &invalid)?),
     };
     let friction = match &raw.friction {
         None => None,
@@ -562,4 +506,83 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         output: (&raw.output).into(),
         sweep: None,
     })
+}
+
+/// The case's mechanisms from the registry, each with its masses and options, checked over the
+/// run's angles (`start`, `step`, `steps`).
+fn build_mechanisms(
+    raw: &CaseFile,
+    own: &MechanismTables,
+    geometry: &MachineGeometry,
+    (start, step, steps): (f64, f64, usize),
+    invalid: &Invalid,
+    field_error: &dyn Fn(crate::schema::FieldError) -> CaseError,
+) -> Result<Vec<Arc<dyn Mechanism>>, CaseError> {
+    if raw.mechanisms.is_empty() {
+        return Err(invalid(
+            "mechanisms",
+            &"[]",
+            &format!("must list at least one of {}", cardan_mechanism::names()),
+        ));
+    }
+    let mut mechanisms: Vec<Arc<dyn Mechanism>> = Vec::new();
+    for name in &raw.mechanisms {
+        let Some(entry) = cardan_mechanism::entry(name) else {
+            let rule = crate::schema::suggest("mechanism", name, &mechanism_names());
+            return Err(invalid("mechanisms", &format!("\"{name}\""), &rule));
+        };
+        if mechanisms.iter().any(|c| c.name() == entry.name) {
+            return Err(invalid(
+                "mechanisms",
+                &format!("\"{name}\""),
+                "is listed twice",
+            ));
+        }
+        let own_masses = match own.masses.get(entry.name) {
+            Some(v) => Some(crate::masses::own_table(v.clone(), entry.name).map_err(field_error)?),
+            None => None,
+        };
+        let inputs = crate::masses::inputs(&raw.masses, own_masses.as_ref(), entry, invalid)?;
+        let options = crate::mechanism_table::options(own.options.get(entry.name), entry)
+            .map_err(field_error)?;
+        let mechanism = (entry.build)(geometry, &inputs, &options).map_err(|e| {
+            let field = match e.field.as_str() {
+                // The rod's centre of gravity may come from either mass table.
+                "masses.rod_cg" if own_masses.as_ref().is_some_and(|t| t.rod_cg.is_some()) => {
+                    format!("masses.{}.rod_cg", entry.name)
+                }
+                f => f.to_string(),
+            };
+            invalid(&field, &e.value, &e.rule)
+        })?;
+        mechanism
+            .check_angles(start, step, steps)
+            .map_err(|e| invalid(&e.field, &e.value, &e.rule))?;
+        mechanisms.push(Arc::from(mechanism));
+    }
+    Ok(mechanisms)
+}
+
+/// `[gear]`, checked against every gear mesh of the case's mechanisms (a case with none has no
+/// use for it).
+fn gear_spec(
+    table: &toml::Table,
+    mechanisms: &[Arc<dyn Mechanism>],
+    invalid: &Invalid,
+) -> Result<GearSpec, CaseError> {
+    let spec = crate::gear::parse(table, invalid)?;
+    let mut meshes = 0;
+    for m in mechanisms {
+        let ratings = GearRatings::new(&spec, m.as_ref(), None)
+            .map_err(|e| invalid(&e.field, &format!("(for the {})", m.name()), &e.rule))?;
+        meshes += ratings.names().len();
+    }
+    if meshes == 0 {
+        return Err(invalid(
+            "gear",
+            &"a [gear] table",
+            "no mechanism of the case has a gear mesh to rate",
+        ));
+    }
+    Ok(spec)
 }

@@ -14,6 +14,7 @@ pub fn case_schema() -> Value {
     // The quantities the mechanisms' options refer to.
     generator.subschema_for::<Quantity<Angle>>();
     generator.subschema_for::<Quantity<Length>>();
+    let sweep = crate::sweep::json_schema(&mut generator);
     let root = generator.into_root_schema_for::<CaseFile>();
     let mut root = serde_json::to_value(root).unwrap_or_default();
     root["title"] = "cardan case file".into();
@@ -30,37 +31,6 @@ pub fn case_schema() -> Value {
         root["$defs"]["MassTable"]["properties"][entry.name] =
             json!({ "$ref": "#/$defs/MechanismMassTable" });
     }
-    root["properties"]["sweep"] = sweep_schema();
+    root["properties"]["sweep"] = sweep;
     root
-}
-
-/// `[sweep]`: `mode`, then each swept field by its dotted path (see [`crate::sweep`]).
-fn sweep_schema() -> Value {
-    let value = json!({ "type": ["number", "string"] });
-    json!({
-        "type": "object",
-        "description": "Varies fields of the case: each by its dotted path, over a list or a range; the points run as cases of their own",
-        "properties": {
-            "mode": {
-                "description": "\"grid\" (every combination, the default) or \"zip\" (the n-th values together)",
-                "enum": ["grid", "zip"]
-            }
-        },
-        "additionalProperties": {
-            "anyOf": [
-                { "type": "array", "items": value, "minItems": 1 },
-                {
-                    "type": "object",
-                    "properties": {
-                        "from": value,
-                        "to": value,
-                        "points": { "type": "integer", "minimum": 2 },
-                        "scale": { "enum": ["linear", "log"] }
-                    },
-                    "required": ["from", "to", "points"],
-                    "additionalProperties": false
-                }
-            ]
-        }
-    })
 }

@@ -13,8 +13,11 @@
 //! ```
 
 use crate::case::CaseError;
+use crate::quantity::Whole;
 use crate::units::split_number;
 use rayon::prelude::*;
+use schemars::JsonSchema;
+use serde::Deserialize;
 use std::path::Path;
 
 /// One point of a sweep: its name, the value of each swept field, and its case table.
@@ -55,6 +58,55 @@ fn number_and_unit(v: &toml::Value) -> Option<(f64, String)> {
     }
 }
 
+/// A range of values `{ from, to, points, scale }` of a swept field.
+#[derive(Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+struct Range {
+    /// The first value: a number, or a string with a unit ("120 mm").
+    #[schemars(schema_with = "number_or_text")]
+    from: toml::Value,
+    /// The last value, in the unit of `from`.
+    #[schemars(schema_with = "number_or_text")]
+    to: toml::Value,
+    /// How many values, the ends included.
+    points: Whole<2, { MAX_POINTS as i64 }>,
+    /// "linear" (the default) or "log" (evenly spaced logarithms; positive ends).
+    #[serde(default)]
+    scale: Scale,
+}
+
+fn number_or_text(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+    schemars::json_schema!({ "type": ["number", "string"] })
+}
+
+#[derive(Default, Deserialize, JsonSchema, PartialEq)]
+#[serde(rename_all = "snake_case")]
+enum Scale {
+    #[default]
+    Linear,
+    Log,
+}
+
+/// `[sweep]`'s JSON Schema: `mode`, then each swept field by its dotted path, a list or a
+/// [`Range`].
+pub(crate) fn json_schema(generator: &mut schemars::SchemaGenerator) -> serde_json::Value {
+    let range = serde_json::to_value(generator.subschema_for::<Range>()).unwrap_or_default();
+    let value = serde_json::json!({ "type": ["number", "string"] });
+    serde_json::json!({
+        "type": "object",
+        "description": "Varies fields of the case: each by its dotted path, over a list or a range; the points run as cases of their own",
+        "properties": {
+            "mode": {
+                "description": "\"grid\" (every combination, the default) or \"zip\" (the n-th values together)",
+                "enum": ["grid", "zip"]
+            }
+        },
+        "additionalProperties": {
+            "anyOf": [{ "type": "array", "items": value, "minItems": 1 }, range]
+        }
+    })
+}
+
 /// The values one swept field takes.
 fn values_of(
     file: &Path,
@@ -63,120 +115,62 @@ fn values_of(
     spec: &toml::Value,
 ) -> Result<Vec<toml::Value>, CaseError> {
     let field = format!("sweep.\"{path}\"");
-    match spec {
-        toml::Value::Array(list) if !list.is_empty() => Ok(list.clone()),
-        toml::Value::Table(t) => {
-            let get = |k: &str| t.get(k).and_then(number_and_unit);
-            let (Some((from, unit)), Some((to, unit_to))) = (get("from"), get("to")) else {
-                return Err(invalid(
-                    file,
-                    case,
-                    &field,
-                    spec,
-                    "a range needs `from` and `to` (numbers, or strings with the same unit)",
-                ));
-            };
-            if unit != unit_to {
-                return Err(invalid(
-                    file,
-                    case,
-                    &field,
-                    spec,
-                    "`from` and `to` must have the same unit",
-                ));
-            }
-            for (key, x) in [("from", from), ("to", to)] {
-                if !x.is_finite() {
-                    return Err(invalid(
-                        file,
-                        case,
-                        &format!("{field}.{key}"),
-                        &t[key],
-                        &format!("must be a finite number (it reads as {x})"),
-                    ));
-                }
-            }
-            let points = match t.get("points") {
-                Some(toml::Value::Integer(n)) if (2..=MAX_POINTS as i64).contains(n) => *n as usize,
-                other => {
-                    return Err(invalid(
-                        file,
-                        case,
-                        &format!("{field}.points"),
-                        &other.map_or("(missing)".to_string(), |v| v.to_string()),
-                        &format!("must be a whole number from 2 to {MAX_POINTS}"),
-                    ))
-                }
-            };
-            if from == to {
-                return Err(invalid(
-                    file,
-                    case,
-                    &field,
-                    spec,
-                    "`from` and `to` are equal: every point would be the same (and share one folder); give a single value as a list, e.g. [\"3000 rpm\"]",
-                ));
-            }
-            let log = match t.get("scale").and_then(|s| s.as_str()) {
-                None | Some("linear") => false,
-                Some("log") => true,
-                Some(other) => {
-                    return Err(invalid(
-                        file,
-                        case,
-                        &format!("{field}.scale"),
-                        &other,
-                        "must be \"linear\" or \"log\"",
-                    ))
-                }
-            };
-            if log && !(from > 0.0 && to > 0.0) {
-                return Err(invalid(
-                    file,
-                    case,
-                    &field,
-                    spec,
-                    "a logarithmic range needs positive `from` and `to`",
-                ));
-            }
-            for key in t.keys() {
-                if !["from", "to", "points", "scale"].contains(&key.as_str()) {
-                    return Err(invalid(
-                        file,
-                        case,
-                        &format!("{field}.{key}"),
-                        &t[key],
-                        "unknown key of a range: from, to, points, scale",
-                    ));
-                }
-            }
-            Ok((0..points)
-                .map(|k| {
-                    let f = k as f64 / (points - 1) as f64;
-                    // Six significant digits: readable point names and axes (185.714 mm, not
-                    // 185.71428571428572 mm); the ends are exact.
-                    let x = if log {
-                        from * (to / from).powf(f)
-                    } else {
-                        from + (to - from) * f
-                    };
-                    let x = format!("{x:.5e}").parse::<f64>().unwrap_or(x);
-                    if unit.is_empty() {
-                        toml::Value::Float(x)
-                    } else {
-                        toml::Value::String(format!("{x} {unit}"))
-                    }
-                })
-                .collect())
+    let fail = |rule: &str| Err(invalid(file, case, &field, spec, rule));
+    let range: Range = match spec {
+        toml::Value::Array(list) if !list.is_empty() => return Ok(list.clone()),
+        toml::Value::Table(_) => {
+            crate::schema::read(spec.clone(), &field).map_err(|error| CaseError::Field {
+                file: file.into(),
+                case: case.to_string(),
+                error,
+            })?
         }
-        _ => Err(invalid(
-            file,
-            case,
-            &field,
-            spec,
-            "must be a non-empty list of values, or a range { from, to, points, scale }",
-        )),
+        _ => {
+            return fail(
+                "must be a non-empty list of values, or a range { from, to, points, scale }",
+            )
+        }
+    };
+    let (Some((from, unit)), Some((to, unit_to))) =
+        (number_and_unit(&range.from), number_and_unit(&range.to))
+    else {
+        return fail("a range needs `from` and `to` (numbers, or strings with the same unit)");
+    };
+    if unit != unit_to {
+        return fail("`from` and `to` must have the same unit");
     }
+    for (key, x, v) in [("from", from, &range.from), ("to", to, &range.to)] {
+        if !x.is_finite() {
+            let rule = format!("must be a finite number (it reads as {x})");
+            return Err(invalid(file, case, &format!("{field}.{key}"), v, &rule));
+        }
+    }
+    if from == to {
+        return fail("`from` and `to` are equal: every point would be the same (and share one folder); give a single value as a list, e.g. [\"3000 rpm\"]");
+    }
+    let log = range.scale == Scale::Log;
+    if log && !(from > 0.0 && to > 0.0) {
+        return fail("a logarithmic range needs positive `from` and `to`");
+    }
+    let points = range.points.0 as usize;
+    Ok((0..points)
+        .map(|k| {
+            let f = k as f64 / (points - 1) as f64;
+            // Six significant digits: readable point names and axes (185.714 mm, not
+            // 185.71428571428572 mm); the ends are exact.
+            let x = if log {
+                from * (to / from).powf(f)
+            } else {
+                from + (to - from) * f
+            };
+            let x = format!("{x:.5e}").parse::<f64>().unwrap_or(x);
+            if unit.is_empty() {
+                toml::Value::Float(x)
+            } else {
+                toml::Value::String(format!("{x} {unit}"))
+            }
+        })
+        .collect())
 }
 
 /// Sets the value at the dotted `path` of `table`, making the tables on the way.

@@ -20,7 +20,14 @@ fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
 /// Physics crates never depend on the runner or the command line.
 #[test]
 fn physics_crates_do_not_depend_on_the_runner() {
-    for krate in ["mechanism", "dynamics", "gas", "gears", "friction", "balance"] {
+    for krate in [
+        "mechanism",
+        "dynamics",
+        "gas",
+        "gears",
+        "friction",
+        "balance",
+    ] {
         let manifest =
             std::fs::read_to_string(root().join(format!("crates/{krate}/Cargo.toml"))).unwrap();
         for forbidden in ["cardan-runner", "cardan =", "\ncardan."] {

@@ -297,10 +297,11 @@ impl fmt::Display for CheckReport {
     }
 }
 
-impl GearPair {
-    /// Validates the input and computes the ISO 21771 geometry. Never panics; invalid input
-    /// returns [`GearError::InvalidInput`] naming the field, the rule and the value.
-    pub fn new(spec: PairSpec) -> Result<Self, GearError> {
+impl PairSpec {
+    /// The input's own rules (module, pressure angle, teeth, shifts, tips), each error naming
+    /// the field, the rule and the value.
+    fn check(&self) -> Result<(), GearError> {
+        let spec = self;
         let m = spec.module;
         positive("module", m)?;
         let alpha = spec.pressure_angle;
@@ -324,8 +325,7 @@ impl GearPair {
             "must be non-zero (negative = internal)",
             0.0,
         )?;
-        let internal = z2 < 0;
-        if internal {
+        if z2 < 0 {
             require(
                 -z2 > z1,
                 "gear.teeth",
@@ -366,6 +366,19 @@ impl GearPair {
             }
         }
 
+        Ok(())
+    }
+}
+
+impl GearPair {
+    /// Validates the input and computes the ISO 21771 geometry. Never panics; invalid input
+    /// returns [`GearError::InvalidInput`] naming the field, the rule and the value.
+    pub fn new(spec: PairSpec) -> Result<Self, GearError> {
+        spec.check()?;
+        let m = spec.module;
+        let alpha = spec.pressure_angle;
+        let (z1, z2) = (spec.pinion.teeth, spec.gear.teeth);
+        let internal = z2 < 0;
         let (zf1, zf2) = (z1 as f64, z2 as f64);
         let (x1, x2) = (spec.pinion.shift, spec.gear.shift);
         let (ca, ta) = (alpha.cos(), alpha.tan());
