@@ -152,6 +152,8 @@ fn bad_sweeps_name_their_field() {
         ("[sweep]\nmode = \"zip\"\n\"motion.initial_speed\" = [1, 2]\n\"geometry.bore\" = [0.1]\n", &["as many values"][..]),
         // A swept value is checked like any case value, naming the point.
         ("[sweep]\n\"geometry.rod_length\" = [0.14, 0.01]\n", &["geometry.rod_length", "pump-sweep-rod_length-0.01"][..]),
+        // A misspelled key of a range: its path and the nearest valid key.
+        ("[sweep]\n\"motion.initial_speed\" = { from = 1, to = 2, pionts = 3 }\n", &["sweep.\"motion.initial_speed\".pionts", "did you mean \"points\"?"][..]),
         // A swept value of the wrong type: the point, the field's path and the value.
         ("[sweep]\n\"motion.steps\" = [\"many\"]\n", &["\"pump-sweep-steps-many\"", "motion.steps", "\"many\"", "whole number"][..]),
     ] {
