@@ -577,7 +577,7 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
     let gas = raw
         .gas
         .as_ref()
-        .map(|table| crate::gas::parse(table, file, machine, &invalid))
+        .map(|table| crate::gas::parse(table, file, &case_name, machine))
         .transpose()?;
     if gas.is_some() {
         if let Some(m) = mechanisms.iter().find(|m| !m.has_cylinder()) {
@@ -594,7 +594,7 @@ fn validate(file: &Path, raw: RawCase) -> Result<Case, CaseError> {
     let gear = match &raw.gear {
         None => None,
         Some(table) => {
-            let spec = crate::gear::parse(table, &invalid)?;
+            let spec = crate::gear::parse(table, file, &case_name)?;
             let mut meshes = 0;
             for m in &mechanisms {
                 let ratings = GearRatings::new(&spec, m.as_ref(), None)
