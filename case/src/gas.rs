@@ -174,8 +174,7 @@ impl Context<'_> {
             if let Some(end) = rest.find('"') {
                 let name = &rest[..end];
                 let tail = rest[end + 1..].replace("the fields here", "its fields");
-                error.message =
-                    format!("unknown field \"{name}\", not an input of {model}{tail}");
+                error.message = format!("unknown field \"{name}\", not an input of {model}{tail}");
             }
         } else if m == "required, and missing" {
             error.message = format!("required by {model}, and missing");

@@ -109,7 +109,8 @@ impl<R: Range, D: Dim> PerGear<Ranged<R, D>> {
 impl<'de, T: serde::de::DeserializeOwned + Clone> Deserialize<'de> for PerGear<T> {
     fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
         let value = toml::Value::deserialize(deserializer)?;
-        let one = |v: &toml::Value| T::deserialize(v.clone()).map_err(|e| De::Error::custom(e.message()));
+        let one =
+            |v: &toml::Value| T::deserialize(v.clone()).map_err(|e| De::Error::custom(e.message()));
         match &value {
             toml::Value::Array(a) if a.len() == 2 => Ok(Self([one(&a[0])?, one(&a[1])?])),
             toml::Value::Array(_) => Err(De::Error::custom(broken(

@@ -606,22 +606,34 @@ fn a_misspelled_field_names_its_path_and_the_nearest_name() {
         (
             "face_width = ",
             "face_widht = ",
-            &["face_widht: unknown field \"face_widht\"", "did you mean \"face_width\"?"][..],
+            &[
+                "face_widht: unknown field \"face_widht\"",
+                "did you mean \"face_width\"?",
+            ][..],
         ),
         (
             "pinion_speed = ",
             "pinion_sped = ",
-            &["rating.pinion_sped: unknown field", "did you mean \"pinion_speed\"?"][..],
+            &[
+                "rating.pinion_sped: unknown field",
+                "did you mean \"pinion_speed\"?",
+            ][..],
         ),
         (
             "lewis_y = 0.412",
             "lewis_why = 0.412",
-            &["rating.gear.lewis_why: unknown field", "did you mean \"lewis_y\"?"][..],
+            &[
+                "rating.gear.lewis_why: unknown field",
+                "did you mean \"lewis_y\"?",
+            ][..],
         ),
         (
             "enclosure = \"commercial\"",
             "enclosure = \"comercial\"",
-            &["rating.enclosure: unknown word \"comercial\"", "did you mean \"commercial\"?"][..],
+            &[
+                "rating.enclosure: unknown word \"comercial\"",
+                "did you mean \"commercial\"?",
+            ][..],
         ),
     ] {
         assert!(shigley.contains(from), "{from}");
@@ -641,7 +653,12 @@ fn the_gear_file_schema_lists_the_fields() {
     }
     assert_eq!(schema["additionalProperties"], false);
     let text = schema.to_string();
-    for field in ["pinion_speed", "bending_allowable", "lewis_y", "extra-precision"] {
+    for field in [
+        "pinion_speed",
+        "bending_allowable",
+        "lewis_y",
+        "extra-precision",
+    ] {
         assert!(text.contains(field), "{field}");
     }
 }

@@ -3,7 +3,9 @@
 
 use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::case::{CaseError, Machine};
-use crate::quantity::{GasConstant, NonNegative, Number, Positive, Pressure, Quantity, Temperature};
+use crate::quantity::{
+    GasConstant, NonNegative, Number, Positive, Pressure, Quantity, Temperature,
+};
 use cardan_gas::compressor::{Compressor, AIR_GAS_CONSTANT};
 use schemars::JsonSchema;
 use serde::Deserialize;

@@ -231,7 +231,11 @@ mod tests {
         let text = std::fs::read_to_string(&file).unwrap();
         for (from, to, rule) in [
             ("traces/karhula", "traces/nothing-", "cannot read"),
-            ("file = ", "# file = ", "required by gas.model = \"pressure_trace\""),
+            (
+                "file = ",
+                "# file = ",
+                "required by gas.model = \"pressure_trace\"",
+            ),
         ] {
             let e = crate::case::parse(&file, &text.replace(from, to)).unwrap_err();
             let e = e.to_string();

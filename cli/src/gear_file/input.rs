@@ -7,7 +7,7 @@ use super::table::{
     RatingTable,
 };
 use super::*;
-use cardan_case::quantity::{Number, Positive, Pressure, Quantity};
+use cardan_case::quantity::{Number, Positive, Pressure};
 use cardan_case::schema::FieldError;
 use cardan_case::units::{is_folder_name, short};
 use cardan_gears::agma::factors::{
@@ -43,8 +43,8 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
         value: value.to_string(),
         rule: rule.to_string(),
     };
-    let raw: GearFileTable =
-        cardan_case::schema::read(toml::Value::Table(table.clone()), "").map_err(|e| {
+    let raw: GearFileTable = cardan_case::schema::read(toml::Value::Table(table.clone()), "")
+        .map_err(|e| {
             let FieldError { field, message } = e;
             match message.strip_prefix("= ").and_then(|m| m.split_once(": ")) {
                 Some((value, rule)) => invalid(&field, &value, rule),
@@ -106,12 +106,11 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
         }
     };
     let mut spec = PairSpec::standard(module, z[0], z[1], raw.pressure_angle.si, 0.0, 0.0);
-    let pair = |p: &super::table::Pair<Quantity<_>>| p.0.clone().map(|q| q.si);
     if let Some(x) = &raw.profile_shift {
-        [spec.pinion.shift, spec.gear.shift] = pair(x);
+        [spec.pinion.shift, spec.gear.shift] = x.si();
     }
     if let Some(h) = &raw.addendum_coefficient {
-        let h = pair(h);
+        let h = h.si();
         spec.pinion.tip = Tip::Coefficient(h[0]);
         spec.gear.tip = Tip::Coefficient(h[1]);
     }
@@ -123,14 +122,21 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
                 "give tip_diameter or addendum_coefficient, not both",
             ));
         }
-        spec.pinion.tip = Tip::Diameter(d.0[0].si);
-        spec.gear.tip = Tip::Diameter(d.0[1].si);
+        let d = d.si();
+        spec.pinion.tip = Tip::Diameter(d[0]);
+        spec.gear.tip = Tip::Diameter(d[1]);
     }
     if let Some(h) = &raw.dedendum_coefficient {
-        [spec.pinion.dedendum_coefficient, spec.gear.dedendum_coefficient] = pair(h);
+        [
+            spec.pinion.dedendum_coefficient,
+            spec.gear.dedendum_coefficient,
+        ] = h.si();
     }
     if let Some(t) = &raw.thickness_allowance {
-        [spec.pinion.thickness_allowance, spec.gear.thickness_allowance] = pair(t);
+        [
+            spec.pinion.thickness_allowance,
+            spec.gear.thickness_allowance,
+        ] = t.si();
     }
     spec.centre_distance = raw.center_distance.as_ref().map(|c| c.si);
     if let Some(d) = raw.min_teeth_difference {
@@ -225,33 +231,7 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
         ));
     }
 
-    let kv = match (&r.quality, &r.accuracy_level, &r.dynamic_factor) {
-        (Some(q), None, None) => {
-            dynamic_factor(Quality::Qv(q.si), 0.0)
-                .map_err(|e| gear_err("rating.quality", &q.written, e))?;
-            KvInput::Quality(Quality::Qv(q.si))
-        }
-        (None, Some(a), None) => {
-            dynamic_factor(Quality::Av(a.si), 0.0)
-                .map_err(|e| gear_err("rating.accuracy_level", &a.written, e))?;
-            KvInput::Quality(Quality::Av(a.si))
-        }
-        (None, None, Some(k)) => {
-            if k.si < 1.0 {
-                return Err(invalid("rating.dynamic_factor", &k.written, "must be >= 1"));
-            }
-            KvInput::Given(k.si)
-        }
-        _ => {
-            let q = r.quality.as_ref().map_or("(missing)", |q| &q.written);
-            return Err(invalid(
-                "rating.quality",
-                &q,
-                "give exactly one of quality (AGMA 2001 Qv, 5-12), accuracy_level (AGMA 2101 Av, 6-12) or dynamic_factor (Kv)",
-            ));
-        }
-    };
-
+    let kv = kv_input(r, invalid)?;
     let reliability_factor = match (&r.reliability, &r.reliability_factor) {
         (Some(v), None) => reliability_factor_table(v.si)
             .or_else(|_| reliability_factor_fit(v.si))
@@ -274,7 +254,11 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
         }
         None => DEFAULT_PINION_CYCLES,
     };
-    let i = match r.geometry_factor_i.clone().unwrap_or(GeometryFactorI::Lpstc) {
+    let i = match r
+        .geometry_factor_i
+        .clone()
+        .unwrap_or(GeometryFactorI::Lpstc)
+    {
         GeometryFactorI::Lpstc => IInput::Form(IForm::Lpstc),
         GeometryFactorI::PitchPoint => IInput::Form(IForm::PitchPoint),
         GeometryFactorI::Given(x) => IInput::Given(x),
@@ -293,29 +277,7 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
         ));
     }
 
-    let elastic = match &r.elastic_coefficient {
-        Some(cp) => cp.si,
-        None => {
-            let mut en = [(0.0, 0.0); 2];
-            for (k, (which, m)) in [("pinion", &r.pinion), ("gear", &r.gear)]
-                .iter()
-                .enumerate()
-            {
-                let (Some(e), Some(nu)) = (&m.youngs_modulus, &m.poisson_ratio) else {
-                    return Err(invalid(
-                        "rating.elastic_coefficient",
-                        &"(missing)",
-                        &format!("give it (e.g. \"2300 sqrt(psi)\", \"190 sqrt(MPa)\") or youngs_modulus and poisson_ratio in [rating.{which}]"),
-                    ));
-                };
-                en[k] = (e.si, nu.si);
-            }
-            elastic_coefficient(en[0].0, en[0].1, en[1].0, en[1].1).map_err(|e| {
-                let shown = r.pinion.youngs_modulus.as_ref().map_or(&r.pinion.j.written, |y| &y.written);
-                gear_err("rating.pinion.youngs_modulus", shown, e)
-            })?
-        }
-    };
+    let elastic = elastic(r, invalid)?;
     let required_safety_factor = match &r.required_safety_factor {
         None => 1.0,
         Some(n) if !n.si.is_finite() => {
@@ -372,6 +334,70 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
         },
         members,
         required_safety_factor,
+    })
+}
+
+/// How Kv is obtained: exactly one of `quality`, `accuracy_level`, `dynamic_factor`.
+fn kv_input(r: &RatingTable, invalid: &Invalid) -> Result<KvInput, GearFileError> {
+    let gear_err =
+        |field: &str, v: &dyn std::fmt::Display, e: GearError| invalid(field, v, &e.to_string());
+    Ok(match (&r.quality, &r.accuracy_level, &r.dynamic_factor) {
+        (Some(q), None, None) => {
+            dynamic_factor(Quality::Qv(q.si), 0.0)
+                .map_err(|e| gear_err("rating.quality", &q.written, e))?;
+            KvInput::Quality(Quality::Qv(q.si))
+        }
+        (None, Some(a), None) => {
+            dynamic_factor(Quality::Av(a.si), 0.0)
+                .map_err(|e| gear_err("rating.accuracy_level", &a.written, e))?;
+            KvInput::Quality(Quality::Av(a.si))
+        }
+        (None, None, Some(k)) => {
+            if k.si < 1.0 {
+                return Err(invalid("rating.dynamic_factor", &k.written, "must be >= 1"));
+            }
+            KvInput::Given(k.si)
+        }
+        _ => {
+            let q = r.quality.as_ref().map_or("(missing)", |q| &q.written);
+            return Err(invalid(
+                "rating.quality",
+                &q,
+                "give exactly one of quality (AGMA 2001 Qv, 5-12), accuracy_level (AGMA 2101 Av, 6-12) or dynamic_factor (Kv)",
+            ));
+        }
+    })
+}
+
+/// The elastic coefficient Cp, given or from both members' Young's modulus and Poisson's
+/// ratio.
+fn elastic(r: &RatingTable, invalid: &Invalid) -> Result<f64, GearFileError> {
+    Ok(match &r.elastic_coefficient {
+        Some(cp) => cp.si,
+        None => {
+            let mut en = [(0.0, 0.0); 2];
+            for (k, (which, m)) in [("pinion", &r.pinion), ("gear", &r.gear)]
+                .iter()
+                .enumerate()
+            {
+                let (Some(e), Some(nu)) = (&m.youngs_modulus, &m.poisson_ratio) else {
+                    return Err(invalid(
+                        "rating.elastic_coefficient",
+                        &"(missing)",
+                        &format!("give it (e.g. \"2300 sqrt(psi)\", \"190 sqrt(MPa)\") or youngs_modulus and poisson_ratio in [rating.{which}]"),
+                    ));
+                };
+                en[k] = (e.si, nu.si);
+            }
+            elastic_coefficient(en[0].0, en[0].1, en[1].0, en[1].1).map_err(|e| {
+                let shown = r
+                    .pinion
+                    .youngs_modulus
+                    .as_ref()
+                    .map_or(&r.pinion.j.written, |y| &y.written);
+                invalid("rating.pinion.youngs_modulus", shown, &e.to_string())
+            })?
+        }
     })
 }
 

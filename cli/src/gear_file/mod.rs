@@ -26,8 +26,8 @@ mod rating;
 mod report;
 mod table;
 pub use input::parse;
-pub use table::gear_file_schema;
 pub use rating::{check_info, evaluate, GearReport, RatingResult, Severity};
+pub use table::gear_file_schema;
 
 pub const SCHEMA_VERSION: u32 = 1;
 

@@ -4,8 +4,8 @@
 //! (`input.rs`). The doc comments are the JSON Schema's descriptions ([`gear_file_schema`]).
 
 use cardan_case::quantity::{
-    broken, Angle, AngularSpeed, Length, NonNegative, Number, Positive, Power, Pressure,
-    Quantity, RootStress, Torque,
+    broken, Angle, AngularSpeed, Length, NonNegative, Number, Positive, Power, Pressure, Quantity,
+    RootStress, Torque,
 };
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::{de::DeserializeOwned, de::Error as _, Deserialize, Deserializer};
@@ -205,11 +205,9 @@ impl<'de> Deserialize<'de> for GeometryFactorI {
         match &v {
             toml::Value::String(s) if s == "lpstc" => Ok(Self::Lpstc),
             toml::Value::String(s) if s == "pitch-point" => Ok(Self::PitchPoint),
-            toml::Value::Float(_) | toml::Value::Integer(_) => {
-                Positive::<Number>::from_value(&v)
-                    .map(|q| Self::Given(q.si))
-                    .map_err(|rule| De::Error::custom(broken(&v, &rule)))
-            }
+            toml::Value::Float(_) | toml::Value::Integer(_) => Positive::<Number>::from_value(&v)
+                .map(|q| Self::Given(q.si))
+                .map_err(|rule| De::Error::custom(broken(&v, &rule))),
             _ => Err(De::Error::custom(broken(
                 &v,
                 "must be \"lpstc\" (AGMA 908), \"pitch-point\" (Shigley eq. 14-23) or a number",
@@ -252,7 +250,8 @@ pub struct Teeth(pub i32);
 
 impl<'de> Deserialize<'de> for Teeth {
     fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
-        let rule = "must be two whole numbers [z1, z2] (z2 negative for an internal gear), |z| <= 100000";
+        let rule =
+            "must be two whole numbers [z1, z2] (z2 negative for an internal gear), |z| <= 100000";
         whole(deserializer, -100_000..=100_000, rule).map(|i| Teeth(i as i32))
     }
 }
@@ -263,8 +262,12 @@ pub struct TeethDifference(pub u32);
 
 impl<'de> Deserialize<'de> for TeethDifference {
     fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
-        whole(deserializer, 0..=1000, "must be a whole number from 0 to 1000")
-            .map(|i| TeethDifference(i as u32))
+        whole(
+            deserializer,
+            0..=1000,
+            "must be a whole number from 0 to 1000",
+        )
+        .map(|i| TeethDifference(i as u32))
     }
 }
 
@@ -302,12 +305,18 @@ whole_schema! {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Pair<T>(pub [T; 2]);
 
+impl<D, const RULE: u8> Pair<Quantity<D, RULE>> {
+    /// [pinion, gear] in SI.
+    pub fn si(&self) -> [f64; 2] {
+        [self.0[0].si, self.0[1].si]
+    }
+}
+
 impl<'de, T: DeserializeOwned> Deserialize<'de> for Pair<T> {
     fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
         let value = toml::Value::deserialize(deserializer)?;
-        let one = |v: &toml::Value| {
-            T::deserialize(v.clone()).map_err(|e| De::Error::custom(e.message()))
-        };
+        let one =
+            |v: &toml::Value| T::deserialize(v.clone()).map_err(|e| De::Error::custom(e.message()));
         match value.as_array() {
             Some(a) if a.len() == 2 => Ok(Pair([one(&a[0])?, one(&a[1])?])),
             _ => Err(De::Error::custom(broken(
