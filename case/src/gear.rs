@@ -84,8 +84,9 @@ impl<R: Range, D: Dim> JsonSchema for Ranged<R, D> {
         // A bare number in the range (a string with a unit is checked on reading).
         if let Some(object) = schema.as_object_mut() {
             if object.contains_key("anyOf") {
-                let first = object["anyOf"].get_mut(0).and_then(|n| n.as_object_mut());
-                first.map(bounds);
+                if let Some(n) = object["anyOf"].get_mut(0).and_then(|n| n.as_object_mut()) {
+                    bounds(n);
+                }
             } else {
                 bounds(object);
             }
@@ -145,7 +146,7 @@ macro_rules! ranges {
         #[derive(Debug, Clone, PartialEq)]
         pub struct $name;
         impl Range for $name {
-            const NAME: &'static str = stringify!($name);
+            const NAME: &'static str = concat!("Gear", stringify!($name));
             const MIN: f64 = $min;
             const MAX: f64 = $max;
             $(const $flag: bool = true;)*
@@ -172,7 +173,7 @@ ranges! {
 /// The gears' steel and its treatment, for the allowable stresses.
 #[derive(Debug, Clone, Copy, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
-pub enum Material {
+pub enum GearMaterialWord {
     /// Through-hardened steel: allowables from the hardness (AGMA 2001-D04 Figs. 3 and 8).
     ThroughHardened,
     /// Carburized and hardened, grade 2.
@@ -211,7 +212,7 @@ pub struct GearTable {
     /// project's).
     pub quality: Option<Ranged<QualityNumber>>,
     /// The gears' steel and treatment. Default "through_hardened".
-    pub material: Option<Material>,
+    pub material: Option<GearMaterialWord>,
     /// Brinell hardness of through-hardened steel, from 140 to 400 HB; one for both, or
     /// [pinion, gear]. Default 300 HB (this project's).
     pub hardness: Option<PerGear<Ranged<Hardness>>>,
@@ -252,8 +253,8 @@ impl GearTable {
         }
         if let Some(m) = self.material {
             g.material = match m {
-                Material::ThroughHardened => GearMaterial::ThroughHardened,
-                Material::Carburized => GearMaterial::Carburized,
+                GearMaterialWord::ThroughHardened => GearMaterial::ThroughHardened,
+                GearMaterialWord::Carburized => GearMaterial::Carburized,
             };
         }
         if let Some(h) = &self.hardness {
@@ -291,4 +292,71 @@ pub fn parse(table: &toml::Table, file: &Path, case: &str) -> Result<GearSpec, C
             case: case.to_string(),
             error,
         })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read(text: &str) -> Result<GearSpec, String> {
+        let table: toml::Table = toml::from_str(text).unwrap();
+        parse(&table, Path::new("c.toml"), "c").map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn a_misspelled_field_or_word_names_the_nearest_name() {
+        let e = read("ring_adendum = 0.8").unwrap_err();
+        assert!(
+            e.contains("gear.ring_adendum: unknown field \"ring_adendum\": did you mean \"ring_addendum\"?"),
+            "{e}"
+        );
+        let e = read("tooth_load = \"ring_forse\"").unwrap_err();
+        assert!(
+            e.contains(
+                "gear.tooth_load: unknown word \"ring_forse\": did you mean \"ring_force\"?"
+            ),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn ranges_and_pairs_are_checked_with_the_value_written() {
+        let e = read("hardness = [300, 500]").unwrap_err();
+        assert!(
+            e.contains("gear.hardness = 500: must be from 140 to 400 HB"),
+            "{e}"
+        );
+        let e = read("j = [0.3, 0.4, 0.5]").unwrap_err();
+        assert!(
+            e.contains("gear.j = [0.3, 0.4, 0.5]: must be one value or two"),
+            "{e}"
+        );
+        let e = read("teeth = 20.5").unwrap_err();
+        assert!(
+            e.contains("gear.teeth = 20.5: must be a whole number"),
+            "{e}"
+        );
+        let g = read("teeth = 24.0\nprofile_shift = 0.1\nj = [0.3, 0.4]\nbacklash = \"0.1 mm\"")
+            .unwrap();
+        assert_eq!(g.teeth, 24);
+        assert_eq!(g.profile_shift, [0.1, 0.1]);
+        assert_eq!(g.j, Some([0.3, 0.4]));
+        assert!((g.error - 1e-4).abs() < 1e-15);
+        assert_eq!(read("").unwrap(), GearSpec::default());
+    }
+
+    #[test]
+    fn the_schema_has_every_field_with_its_range() {
+        let schema = schemars::schema_for!(GearTable).to_value();
+        assert_eq!(schema["additionalProperties"], false);
+        let text = schema.to_string();
+        for part in [
+            "ring_addendum",
+            "tooth_load",
+            "ring_force",
+            "\"maximum\":400.0",
+        ] {
+            assert!(text.contains(part), "{part}: {text}");
+        }
+    }
 }

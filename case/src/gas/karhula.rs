@@ -63,13 +63,13 @@ pub struct KarhulaEngineTable {
     pub combustion_delay: Quantity<Angle>,
     /// Which pressure the compression stroke carries. Default "direct".
     #[serde(default)]
-    pub reading: Reading,
+    pub reading: KarhulaEngineReading,
 }
 
 /// The engine's reading of the thesis (see `cardan_gas::karhula`).
 #[derive(Debug, Clone, Copy, Default, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
-pub enum Reading {
+pub enum KarhulaEngineReading {
     /// The polytropic compression pressure on the compression stroke: the physical cycle.
     #[default]
     Direct,
@@ -115,8 +115,8 @@ impl ModelTable for KarhulaEngineTable {
         let mut engine = KarhulaEngine::new(gas, self.peak_pressure.si, self.combustion_delay.si)
             .map_err(|e| cx.broken(e))?;
         engine.reading = match self.reading {
-            Reading::Direct => EngineReading::Direct,
-            Reading::Thesis => EngineReading::Thesis,
+            KarhulaEngineReading::Direct => EngineReading::Direct,
+            KarhulaEngineReading::Thesis => EngineReading::Thesis,
         };
         let clearance = Clearance::CompressionRatio(self.compression_ratio.si);
         Ok((Arc::new(engine), clearance))
