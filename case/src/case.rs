@@ -140,14 +140,14 @@ pub struct CaseFile {
     #[serde(default)]
     pub masses: MassTable,
     /// The gas loading the pistons (its model and their inputs); without it, inertial loads only.
-    #[schemars(with = "Option<serde_json::Map<String, serde_json::Value>>")]
+    /// Read by the model `model` names ([`crate::gas::MODELS`]).
+    #[schemars(schema_with = "crate::gas::gas_schema")]
     pub gas: Option<toml::Table>,
     /// The loss models; without it the run has no losses.
     #[schemars(with = "Option<serde_json::Map<String, serde_json::Value>>")]
     pub friction: Option<toml::Table>,
     /// The gear pair and its rating data; without it no gear mesh is rated.
-    #[schemars(with = "Option<serde_json::Map<String, serde_json::Value>>")]
-    pub gear: Option<toml::Table>,
+    pub gear: Option<crate::gear::GearTable>,
     #[serde(default)]
     pub output: OutputTable,
 }
@@ -437,7 +437,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     let gas = raw
         .gas
         .as_ref()
-        .map(|table| crate::gas::parse(table, file, machine, &invalid))
+        .map(|table| crate::gas::parse(table, file, &case_name, machine))
         .transpose()?;
     if gas.is_some() {
         if let Some(m) = mechanisms.iter().find(|m| !m.has_cylinder()) {
@@ -566,11 +566,11 @@ fn build_mechanisms(
 /// `[gear]`, checked against every gear mesh of the case's mechanisms (a case with none has no
 /// use for it).
 fn gear_spec(
-    table: &toml::Table,
+    table: &crate::gear::GearTable,
     mechanisms: &[Arc<dyn Mechanism>],
     invalid: &Invalid,
 ) -> Result<GearSpec, CaseError> {
-    let spec = crate::gear::parse(table, invalid)?;
+    let spec = table.spec();
     let mut meshes = 0;
     for m in mechanisms {
         let ratings = GearRatings::new(&spec, m.as_ref(), None)

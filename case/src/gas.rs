@@ -1,18 +1,28 @@
 //! The `[gas]` table of a case: which gas model loads the pistons, with its inputs converted
 //! to SI and validated once, here.
+//!
+//! `model` picks a [`GasEntry`] of [`MODELS`]; the rest of the table is that model's typed
+//! table (a struct with `deny_unknown_fields`, one module per model), read by
+//! [`crate::schema::read`], then built into the model by [`ModelTable::build`], which checks
+//! the rules that join fields (through the gas crate's own checks, naming the field).
 
 use crate::case::{CaseError, Machine};
-use crate::units::{to_si, Dimension};
-use cardan_gas::closed_cycle::ClosedCycle;
-use cardan_gas::compressor::{Compressor, AIR_GAS_CONSTANT};
-use cardan_gas::{
-    Cylinder, EngineReading, GasError, GasModel, KarhulaEngine, KarhulaPump, Polytropic,
-};
-use std::cell::RefCell;
+use crate::schema::FieldError;
+use cardan_gas::{Cylinder, GasError, GasModel};
+use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
+use serde::de::DeserializeOwned;
 use std::path::Path;
 use std::sync::Arc;
 
+mod closed_cycle;
+mod compressor;
+mod karhula;
 mod pressure_trace;
+
+pub use closed_cycle::ClosedCycleTable;
+pub use compressor::CompressorTable;
+pub use karhula::{KarhulaEngineTable, KarhulaPumpTable};
+pub use pressure_trace::PressureTraceTable;
 
 /// How the clearance volume is given.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -83,309 +93,149 @@ impl Clearance {
 /// A model read from its `[gas]` table, with the cylinder's clearance it takes.
 pub type ReadModel = (Arc<dyn GasModel + Send>, Clearance);
 
-/// A gas model a `[gas]` table may name: adding one is a module with its reader and one line
-/// in [`MODELS`].
+/// A model's typed table (the `[gas]` table without `model`): its fields, their units and
+/// defaults, and how they build the model.
+pub trait ModelTable: DeserializeOwned + JsonSchema {
+    /// The model and its clearance; a rule that joins fields, broken, names its field
+    /// ([`Context::broken`]).
+    fn build(self, cx: &Context) -> Result<ReadModel, CaseError>;
+}
+
+/// A gas model a `[gas]` table may name: adding one is a module with its [`ModelTable`] and
+/// one line in [`MODELS`] (`entry::<Table>(name, machine)`).
 pub struct GasEntry {
     /// `gas.model` in case files.
     pub name: &'static str,
     /// The machine it belongs to (`None`: either).
     pub machine: Option<Machine>,
-    /// Reads the model's fields of the table (each read field is then known to the table's
-    /// check of unknown keys), validated and in SI.
-    read: fn(&Fields) -> Result<ReadModel, CaseError>,
+    /// Reads the model's typed table (the `[gas]` table without `model`) and builds it.
+    read: fn(toml::Value, &Context) -> Result<ReadModel, CaseError>,
+    /// The JSON Schema of the model's table (inline, without `model`).
+    pub schema: fn(&mut SchemaGenerator) -> Schema,
+}
+
+/// The registry line of a model whose table is `T`.
+pub const fn entry<T: ModelTable>(name: &'static str, machine: Option<Machine>) -> GasEntry {
+    GasEntry {
+        name,
+        machine,
+        read: read_table::<T>,
+        schema: T::json_schema,
+    }
 }
 
 /// The registry of gas models.
 pub const MODELS: &[GasEntry] = &[
-    GasEntry {
-        name: "karhula_pump",
-        machine: Some(Machine::Pump),
-        read: karhula_pump,
-    },
-    GasEntry {
-        name: "karhula_engine",
-        machine: Some(Machine::Engine),
-        read: karhula_engine,
-    },
-    GasEntry {
-        name: "closed_cycle",
-        machine: Some(Machine::Engine),
-        read: closed_cycle,
-    },
-    GasEntry {
-        name: "compressor",
-        machine: Some(Machine::Pump),
-        read: compressor,
-    },
+    karhula::PUMP,
+    karhula::ENGINE,
+    closed_cycle::ENTRY,
+    compressor::ENTRY,
     pressure_trace::ENTRY,
 ];
 
-type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> CaseError + 'a;
-
-/// The keys of a `[gas]` table, read one by one; keys nobody read are reported.
-pub struct Fields<'a> {
+/// What a model's table is read in: the case file (relative paths are taken from it), the
+/// case, its machine, and the table as written (for the values of messages).
+pub struct Context<'a> {
     table: &'a toml::Table,
-    read: RefCell<Vec<&'static str>>,
-    invalid: &'a Invalid<'a>,
     /// The case file, which relative paths are taken from.
-    file: &'a Path,
-    machine: Machine,
+    pub file: &'a Path,
+    case: &'a str,
+    /// The case's machine.
+    pub machine: Machine,
+    /// `gas.model`.
+    model: &'static str,
 }
 
-impl Fields<'_> {
-    /// A string field, if given (an error if it is not a string).
-    fn text(&self, key: &'static str) -> Result<Option<&str>, CaseError> {
-        self.read.borrow_mut().push(key);
-        match self.table.get(key) {
-            None => Ok(None),
-            Some(toml::Value::String(s)) => Ok(Some(s)),
-            Some(v) => Err((self.invalid)(&format!("gas.{key}"), v, "must be a string")),
+impl Context<'_> {
+    /// A rule broken by `value` of the field `key` of `[gas]`.
+    pub fn refuse(&self, key: &str, value: &dyn std::fmt::Display, rule: &str) -> CaseError {
+        CaseError::Invalid {
+            file: self.file.into(),
+            case: self.case.to_string(),
+            field: format!("gas.{key}"),
+            value: crate::units::show(&value.to_string()),
+            rule: rule.to_string(),
         }
-    }
-
-    /// A rule of the model's broken by the value of `key`.
-    fn refuse(&self, key: &str, value: &dyn std::fmt::Display, rule: &str) -> CaseError {
-        (self.invalid)(&format!("gas.{key}"), value, rule)
-    }
-
-    fn optional(&self, key: &'static str, dim: Dimension) -> Result<Option<f64>, CaseError> {
-        self.read.borrow_mut().push(key);
-        self.table
-            .get(key)
-            .map(|v| to_si(v, dim).map_err(|rule| (self.invalid)(&format!("gas.{key}"), v, &rule)))
-            .transpose()
-    }
-
-    fn required(&self, key: &'static str, dim: Dimension) -> Result<f64, CaseError> {
-        self.optional(key, dim)?.ok_or_else(|| {
-            (self.invalid)(
-                &format!("gas.{key}"),
-                &"(missing)",
-                &format!("is required by gas.model = \"{}\"", self.model()),
-            )
-        })
-    }
-
-    fn model(&self) -> String {
-        self.table
-            .get("model")
-            .and_then(|v| v.as_str())
-            .unwrap_or_default()
-            .to_string()
     }
 
     /// A model's rule broken: the field as the case file names it, with the value given.
-    fn broken(&self, e: GasError) -> CaseError {
-        let field = format!("gas.{}", e.field);
+    pub fn broken(&self, e: GasError) -> CaseError {
         match self.table.get(e.field) {
-            Some(v) => (self.invalid)(&field, v, e.rule),
-            None => (self.invalid)(&field, &e.value, e.rule),
+            Some(v) => self.refuse(e.field, v, e.rule),
+            None => self.refuse(e.field, &e.value, e.rule),
         }
     }
 
-    fn no_other_keys(&self) -> Result<(), CaseError> {
-        let read = self.read.borrow();
-        match self
-            .table
-            .keys()
-            .find(|k| *k != "model" && !read.contains(&k.as_str()))
-        {
-            None => Ok(()),
-            Some(k) => Err((self.invalid)(
-                &format!("gas.{k}"),
-                &self.table[k],
-                &format!(
-                    "is not an input of gas.model = \"{}\"; it takes: {}",
-                    self.model(),
-                    read.join(", ")
-                ),
-            )),
+    /// A field of the table that did not read, said in the model's terms.
+    fn field(&self, mut error: FieldError) -> CaseError {
+        let model = format!("gas.model = \"{}\"", self.model);
+        let m = &error.message;
+        if let Some(rest) = m.strip_prefix("unknown field \"") {
+            if let Some(end) = rest.find('"') {
+                let name = &rest[..end];
+                let tail = rest[end + 1..].replace("the fields here", "its fields");
+                error.message = format!("unknown field \"{name}\", not an input of {model}{tail}");
+            }
+        } else if m == "required, and missing" {
+            error.message = format!("required by {model}, and missing");
+        }
+        CaseError::Field {
+            file: self.file.into(),
+            case: self.case.to_string(),
+            error,
         }
     }
 }
 
-/// The closed-cycle model: every input optional, defaulting to Nunes (2017)'s (Table 3.2).
-fn closed_cycle_inputs(f: &Fields) -> Result<ClosedCycle, CaseError> {
-    use Dimension::*;
-    let mut c = ClosedCycle::nunes_2017();
-    let inputs: [(&'static str, Dimension, &mut f64); 21] = [
-        ("ambient_pressure", Pressure, &mut c.ambient_pressure),
-        (
-            "ambient_temperature",
-            Temperature,
-            &mut c.ambient_temperature,
-        ),
-        ("wall_temperature", Temperature, &mut c.wall_temperature),
-        ("gas_constant", GasConstant, &mut c.gas_constant),
-        ("gamma", Number, &mut c.gamma),
-        ("lambda", Number, &mut c.lambda),
-        (
-            "stoichiometric_air_fuel_ratio",
-            Number,
-            &mut c.stoichiometric_air_fuel_ratio,
-        ),
-        (
-            "fuel_heating_value",
-            SpecificEnergy,
-            &mut c.fuel_heating_value,
-        ),
-        (
-            "vaporisation_heat",
-            SpecificEnergy,
-            &mut c.vaporisation_heat,
-        ),
-        (
-            "max_combustion_efficiency",
-            Number,
-            &mut c.max_combustion_efficiency,
-        ),
-        ("combustion_start", Angle, &mut c.combustion_start),
-        (
-            "combustion_start_per_speed",
-            AnglePerSpeed,
-            &mut c.combustion_start_per_speed,
-        ),
-        ("combustion_duration", Angle, &mut c.combustion_duration),
-        (
-            "combustion_duration_per_speed",
-            AnglePerSpeed,
-            &mut c.combustion_duration_per_speed,
-        ),
-        ("wiebe_a", Number, &mut c.wiebe_a),
-        ("wiebe_m", Number, &mut c.wiebe_m),
-        ("annand_a", Number, &mut c.annand_a),
-        (
-            "radiation_coefficient",
-            Number,
-            &mut c.radiation_coefficient,
-        ),
-        ("intake_closing", Angle, &mut c.intake_closing),
-        ("exhaust_opening", Angle, &mut c.exhaust_opening),
-        ("step", Angle, &mut c.step),
-    ];
-    for (key, dim, target) in inputs {
-        if let Some(x) = f.optional(key, dim)? {
-            *target = x;
-        }
-    }
-    c.validate().map_err(|e| f.broken(e))?;
-    Ok(c)
+fn read_table<T: ModelTable>(rest: toml::Value, cx: &Context) -> Result<ReadModel, CaseError> {
+    crate::schema::read::<T>(rest, "gas")
+        .map_err(|e| cx.field(e))?
+        .build(cx)
 }
 
-fn polytropic(f: &Fields) -> Result<Polytropic, CaseError> {
-    Polytropic::new(
-        f.required("polytropic_exponent", Dimension::Number)?,
-        f.optional("filling", Dimension::Number)?.unwrap_or(1.0),
-        f.optional("ambient_pressure", Dimension::Pressure)?
-            .unwrap_or(101_325.0),
-    )
-    .map_err(|e| f.broken(e))
-}
-
-fn compression_ratio(f: &Fields) -> Result<Clearance, CaseError> {
-    Ok(Clearance::CompressionRatio(
-        f.required("compression_ratio", Dimension::Number)?,
-    ))
-}
-
-/// Karhula's air pump (ch. 6.2).
-fn karhula_pump(f: &Fields) -> Result<ReadModel, CaseError> {
-    let gas = polytropic(f)?;
-    Ok((Arc::new(KarhulaPump { gas }), compression_ratio(f)?))
-}
-
-/// Karhula's four-stroke engine (ch. 6.3), in its reading.
-fn karhula_engine(f: &Fields) -> Result<ReadModel, CaseError> {
-    let mut engine = KarhulaEngine::new(
-        polytropic(f)?,
-        f.required("peak_pressure", Dimension::Pressure)?,
-        f.required("combustion_delay", Dimension::Angle)?,
-    )
-    .map_err(|e| f.broken(e))?;
-    engine.reading = match f.text("reading")? {
-        None | Some("direct") => EngineReading::Direct,
-        Some("thesis") => EngineReading::Thesis,
-        Some(other) => {
-            return Err(f.refuse(
-                "reading",
-                &format!("\"{other}\""),
-                "must be \"direct\" (polytropic compression stroke) or \"thesis\" (the combustion pressure on the compression stroke too, as Karhula's work columns imply)",
-            ))
-        }
-    };
-    Ok((Arc::new(engine), compression_ratio(f)?))
-}
-
-/// The closed cycle of Nunes (2017).
-fn closed_cycle(f: &Fields) -> Result<ReadModel, CaseError> {
-    let c = closed_cycle_inputs(f)?;
-    Ok((Arc::new(c), compression_ratio(f)?))
-}
-
-/// A reciprocating compressor with its valves, in its periodic steady state.
-fn compressor(f: &Fields) -> Result<ReadModel, CaseError> {
-    let n_c = f.required("compression_exponent", Dimension::Number)?;
-    let compressor = Compressor::new(
-        f.required("suction_pressure", Dimension::Pressure)?,
-        f.required("suction_temperature", Dimension::Temperature)?,
-        f.required("delivery_pressure", Dimension::Pressure)?,
-        n_c,
-        f.optional("expansion_exponent", Dimension::Number)?
-            .unwrap_or(n_c),
-        f.optional("gas_constant", Dimension::GasConstant)?
-            .unwrap_or(AIR_GAS_CONSTANT),
-    )
-    .map_err(|e| f.broken(e))?;
-    let clearance = Clearance::ClearanceRatio(f.required("clearance_ratio", Dimension::Number)?);
-    // A compressor must deliver, whatever its size.
-    let cylinder = clearance.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
-    compressor
-        .steady_state(&cylinder)
-        .map_err(|e| f.broken(e))?;
-    Ok((Arc::new(compressor), clearance))
-}
-
-/// Validates a `[gas]` table of the case file `file`, a case of `machine`.
-pub(crate) fn parse(
+/// Validates a `[gas]` table of the case `case` of the file `file`, a case of `machine`.
+pub fn parse(
     table: &toml::Table,
     file: &Path,
+    case: &str,
     machine: Machine,
-    invalid: &Invalid,
 ) -> Result<GasCase, CaseError> {
-    let names = || {
-        MODELS
-            .iter()
-            .map(|m| format!("\"{}\"", m.name))
-            .collect::<Vec<_>>()
-            .join(", ")
+    let mut cx = Context {
+        table,
+        file,
+        case,
+        machine,
+        model: "",
+    };
+    let names: Vec<&str> = MODELS.iter().map(|m| m.name).collect();
+    let listed = || {
+        let quoted: Vec<String> = names.iter().map(|n| format!("\"{n}\"")).collect();
+        quoted.join(", ")
     };
     let name = match table.get("model") {
         Some(toml::Value::String(s)) => s.as_str(),
-        Some(v) => {
-            return Err(invalid(
-                "gas.model",
-                v,
-                &format!("must be one of {}", names()),
-            ))
-        }
+        Some(v) => return Err(cx.refuse("model", v, &format!("must be one of {}", listed()))),
         None => {
-            return Err(invalid(
-                "gas.model",
+            return Err(cx.refuse(
+                "model",
                 &"(missing)",
-                &format!("is required: one of {}", names()),
+                &format!("is required: one of {}", listed()),
             ))
         }
     };
     let Some(entry) = MODELS.iter().find(|m| m.name == name) else {
-        return Err(invalid(
-            "gas.model",
+        let guess = crate::schema::nearest(name, &names)
+            .map(|n| format!("did you mean \"{n}\"? "))
+            .unwrap_or_default();
+        return Err(cx.refuse(
+            "model",
             &format!("\"{name}\""),
-            &format!("unknown gas model: use one of {}", names()),
+            &format!("unknown gas model: {guess}use one of {}", listed()),
         ));
     };
     if let Some(own) = entry.machine.filter(|&m| m != machine) {
-        return Err(invalid(
-            "gas.model",
+        return Err(cx.refuse(
+            "model",
             &format!("\"{name}\""),
             &format!(
                 "is a model of a {}: set machine = \"{}\"",
@@ -394,20 +244,163 @@ pub(crate) fn parse(
             ),
         ));
     }
-    let f = Fields {
-        table,
-        read: RefCell::new(Vec::new()),
-        invalid,
-        file,
-        machine,
-    };
-    let (model, clearance) = (entry.read)(&f)?;
-    f.no_other_keys()?;
+    cx.model = entry.name;
+    let mut rest = table.clone();
+    rest.remove("model");
+    let (model, clearance) = (entry.read)(toml::Value::Table(rest), &cx)?;
     // The cylinder rules (a compression ratio above 1) do not depend on its size.
-    clearance.cylinder(1.0, 1.0, 1).map_err(|e| f.broken(e))?;
+    clearance.cylinder(1.0, 1.0, 1).map_err(|e| cx.broken(e))?;
     Ok(GasCase {
         name: entry.name,
         model,
         clearance,
     })
+}
+
+/// The JSON Schema of `[gas]`: one branch per registered model, its table with `model` as a
+/// constant.
+pub fn gas_schema(generator: &mut SchemaGenerator) -> Schema {
+    let branches: Vec<serde_json::Value> = MODELS
+        .iter()
+        .map(|entry| {
+            let mut branch = (entry.schema)(generator);
+            let machine = match entry.machine {
+                Some(m) => format!(" (a {} model)", m.name()),
+                None => String::new(),
+            };
+            let model = json_schema!({
+                "const": entry.name,
+                "description": format!("The gas model{machine}."),
+            });
+            let object = branch.ensure_object();
+            let properties = object
+                .entry("properties")
+                .or_insert_with(|| serde_json::json!({}));
+            if let Some(p) = properties.as_object_mut() {
+                p.insert("model".into(), model.to_value());
+            }
+            let required = object
+                .entry("required")
+                .or_insert_with(|| serde_json::json!([]));
+            if let Some(r) = required.as_array_mut() {
+                r.insert(0, "model".into());
+            }
+            branch.to_value()
+        })
+        .collect();
+    json_schema!({
+        "description": "The gas that loads the pistons: `model` names one of the registered models, whose fields follow.",
+        "type": "object",
+        "oneOf": branches,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every shipped case's `[gas]` reads (through the whole case, as the runner reads it).
+    #[test]
+    fn every_shipped_gas_table_reads() {
+        let configs = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+        let mut read = 0;
+        for entry in std::fs::read_dir(&configs).unwrap() {
+            let file = entry.unwrap().path();
+            if file.extension().is_none_or(|e| e != "toml") {
+                continue;
+            }
+            let text = std::fs::read_to_string(&file).unwrap();
+            let table: toml::Table = toml::from_str(&text).unwrap();
+            let Some(toml::Value::Table(gas)) = table.get("gas") else {
+                continue;
+            };
+            let machine = match table.get("machine").and_then(|m| m.as_str()) {
+                Some("engine") => Machine::Engine,
+                _ => Machine::Pump,
+            };
+            let case = parse(gas, &file, "shipped", machine)
+                .unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+            assert_eq!(Some(case.name()), gas.get("model").and_then(|m| m.as_str()));
+            read += 1;
+        }
+        assert!(read >= 5, "{read} shipped cases with [gas]");
+    }
+
+    fn error(machine: Machine, text: &str) -> String {
+        let table: toml::Table = toml::from_str(text).unwrap();
+        parse(&table, Path::new("c.toml"), "c", machine)
+            .unwrap_err()
+            .to_string()
+    }
+
+    /// A misspelled field of each model's table names its path, the nearest field and the
+    /// model.
+    #[test]
+    fn a_misspelled_field_of_each_model_names_the_nearest_field() {
+        for (machine, text, wrong, near) in [
+            (
+                Machine::Pump,
+                "model = \"karhula_pump\"\ncompression_ratio = 12\npolytropic_exponnet = 1.4",
+                "polytropic_exponnet",
+                "polytropic_exponent",
+            ),
+            (
+                Machine::Engine,
+                "model = \"karhula_engine\"\ncompression_ratio = 12\npolytropic_exponent = 1.4\npeak_presure = \"12 MPa\"\ncombustion_delay = 9.5",
+                "peak_presure",
+                "peak_pressure",
+            ),
+            (
+                Machine::Engine,
+                "model = \"closed_cycle\"\ncompression_ratio = 10\nlamda = 1.0",
+                "lamda",
+                "lambda",
+            ),
+            (
+                Machine::Pump,
+                "model = \"compressor\"\nsuction_pressure = \"1 bar\"\nsuction_temperature = \"20 °C\"\ndelivery_pressure = \"8 bar\"\nclearance_ration = 0.05\ncompression_exponent = 1.3",
+                "clearance_ration",
+                "clearance_ratio",
+            ),
+            (
+                Machine::Pump,
+                "model = \"pressure_trace\"\nfiles = \"trace.csv\"",
+                "files",
+                "file",
+            ),
+        ] {
+            let e = error(machine, text);
+            let model = text.lines().next().unwrap().replace("model", "gas.model");
+            for part in [
+                format!("gas.{wrong}: unknown field \"{wrong}\""),
+                format!("did you mean \"{near}\"?"),
+                format!("not an input of {model}"),
+            ] {
+                assert!(e.contains(&part), "{e}\nlacks: {part}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_misspelled_model_names_the_nearest_model() {
+        let e = error(Machine::Pump, "model = \"karhula_pmup\"");
+        assert!(e.contains("did you mean \"karhula_pump\"?"), "{e}");
+    }
+
+    /// The schema has a branch per model, `model` a constant in each, and every field of the
+    /// model's table.
+    #[test]
+    fn the_schema_lists_every_model() {
+        let mut generator = SchemaGenerator::default();
+        let schema = gas_schema(&mut generator).to_value();
+        let branches = schema["oneOf"].as_array().unwrap();
+        assert_eq!(branches.len(), MODELS.len());
+        for (branch, entry) in branches.iter().zip(MODELS) {
+            assert_eq!(branch["properties"]["model"]["const"], entry.name);
+            assert_eq!(branch["required"][0], "model");
+            assert_eq!(branch["additionalProperties"], false, "{}", entry.name);
+        }
+        let pump = &branches[0]["properties"];
+        assert!(pump.get("polytropic_exponent").is_some(), "{pump}");
+    }
 }

@@ -1,162 +1,349 @@
 //! The `[gear]` table of a case: the gear pair of every gear mesh and its rating data, in SI,
 //! validated once here. With it, each mechanism's meshes are rated at every step
 //! ([`cardan_dynamics::GearRatings`]); the mesh loss of `[friction]` uses the same pair.
+//!
+//! The table is [`GearTable`]; its defaults are [`GearSpec::default`]'s (the dynamics crate),
+//! written there once. [`Ranged`] and [`PerGear`] are the number with a range and the value
+//! given once or per member, also used by the gear file of `cardan gear`.
 
-use crate::case::{CaseError, Invalid};
-use crate::units::{to_si, Dimension};
+use crate::quantity::{broken, Dim, Length, NonNegative, Number, Positive, Pressure, Quantity};
 use cardan_dynamics::{GearMaterial, GearSpec, ToothLoad};
+use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
+use serde::{de::Error as _, Deserialize, Deserializer};
+use std::borrow::Cow;
+use std::marker::PhantomData;
 
-/// The fields of `[gear]`, with their dimensions.
-const FIELDS: [(&str, Dimension); 12] = [
-    ("teeth", Dimension::Number),
-    ("face_width", Dimension::Length),
-    ("ring_addendum", Dimension::Number),
-    ("profile_shift", Dimension::Number),
-    ("quality", Dimension::Number),
-    ("material", Dimension::Number),
-    ("hardness", Dimension::Number),
-    ("j", Dimension::Number),
-    ("backlash", Dimension::Length),
-    ("youngs_modulus", Dimension::Pressure),
-    ("twin", Dimension::Number),
-    ("tooth_load", Dimension::Number),
-];
+/// A range a number must lie in, with the rule a value outside it breaks.
+pub trait Range {
+    /// The name in the JSON Schema's definitions.
+    const NAME: &'static str;
+    const MIN: f64;
+    const MAX: f64;
+    /// The ends themselves are outside.
+    const EXCLUSIVE: bool = false;
+    /// Only whole numbers.
+    const WHOLE: bool = false;
+    /// What a value outside breaks ("must be ...").
+    const RULE: &'static str;
+}
 
-/// Reads `[gear]`.
-pub fn parse(table: &toml::Table, invalid: &Invalid) -> Result<GearSpec, CaseError> {
-    let mut g = GearSpec::default();
-    for (key, value) in table {
-        let path = format!("gear.{key}");
-        let Some((_, dim)) = FIELDS.iter().find(|(f, _)| f == key) else {
-            return Err(invalid(
-                &path,
-                value,
-                &format!(
-                    "unknown field: [gear] has {}",
-                    FIELDS.map(|(f, _)| f).join(", ")
-                ),
-            ));
+/// A number of dimension `D` (SI) in the range `R`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ranged<R, D = Number> {
+    pub si: f64,
+    /// As the file wrote it.
+    pub written: String,
+    range: PhantomData<(R, D)>,
+}
+
+impl<R: Range, D: Dim> Ranged<R, D> {
+    fn holds(x: f64) -> bool {
+        let inside = if R::EXCLUSIVE {
+            x > R::MIN && x < R::MAX
+        } else {
+            (R::MIN..=R::MAX).contains(&x)
         };
-        let number = |v: &toml::Value| to_si(v, *dim).map_err(|rule| invalid(&path, v, &rule));
-        // One number, or a pair [pinion, gear] (one number applies to both).
-        let pair = |v: &toml::Value| -> Result<[f64; 2], CaseError> {
-            match v.as_array() {
-                Some(a) if a.len() == 2 => Ok([number(&a[0])?, number(&a[1])?]),
-                Some(_) => Err(invalid(&path, v, "must be one value or two [pinion, gear]")),
-                None => {
-                    let x = number(v)?;
-                    Ok([x, x])
+        inside && (!R::WHOLE || x.fract() == 0.0)
+    }
+}
+
+impl<'de, R: Range, D: Dim> Deserialize<'de> for Ranged<R, D> {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let q = Quantity::<D>::deserialize(deserializer)?;
+        if !Self::holds(q.si) {
+            return Err(De::Error::custom(broken(&q.written, R::RULE)));
+        }
+        Ok(Self {
+            si: q.si,
+            written: q.written,
+            range: PhantomData,
+        })
+    }
+}
+
+impl<R: Range, D: Dim> JsonSchema for Ranged<R, D> {
+    fn schema_name() -> Cow<'static, str> {
+        R::NAME.into()
+    }
+
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let mut schema = Quantity::<D>::json_schema(generator);
+        let (min, max) = match R::EXCLUSIVE {
+            true => ("exclusiveMinimum", "exclusiveMaximum"),
+            false => ("minimum", "maximum"),
+        };
+        let bounds = |n: &mut serde_json::Map<String, serde_json::Value>| {
+            n.insert(min.into(), R::MIN.into());
+            n.insert(max.into(), R::MAX.into());
+            if R::WHOLE {
+                n.insert("multipleOf".into(), 1.into());
+            }
+        };
+        // A bare number in the range (a string with a unit is checked on reading).
+        if let Some(object) = schema.as_object_mut() {
+            if object.contains_key("anyOf") {
+                if let Some(n) = object["anyOf"].get_mut(0).and_then(|n| n.as_object_mut()) {
+                    bounds(n);
                 }
-            }
-        };
-        let check = |ok: bool, rule: &str| {
-            if ok {
-                Ok(())
             } else {
-                Err(invalid(&path, value, rule))
+                bounds(object);
             }
-        };
-        match key.as_str() {
-            "teeth" => {
-                let x = number(value)?;
-                check(
-                    x.fract() == 0.0 && (5.0..=1000.0).contains(&x),
-                    "must be a whole number from 5 to 1000 (the teeth of the mesh's first gear: the cardan wheel)",
-                )?;
-                g.teeth = x as u32;
-            }
-            "face_width" => {
-                let x = number(value)?;
-                check(x > 0.0, "must be positive")?;
-                g.face_width = Some(x);
-            }
-            "ring_addendum" => {
-                let x = number(value)?;
-                check(
-                    (0.0..=1.5).contains(&x),
-                    "must be from 0 to 1.5 modules (1 is a full addendum)",
-                )?;
-                g.ring_addendum = x;
-            }
-            "profile_shift" => {
-                let x = pair(value)?;
-                check(
-                    x.iter().all(|s| (-1.0..=1.0).contains(s)),
-                    "profile shift coefficients must be from -1 to 1",
-                )?;
-                g.profile_shift = x;
-            }
-            "quality" => {
-                let x = number(value)?;
-                check(
-                    (5.0..=12.0).contains(&x),
-                    "must be an AGMA quality number Qv from 5 to 12",
-                )?;
-                g.quality = x;
-            }
-            "hardness" => {
-                let x = pair(value)?;
-                check(
-                    x.iter().all(|h| (140.0..=400.0).contains(h)),
-                    "must be from 140 to 400 HB (through-hardened steel, AGMA 2001-D04 Figs. 3 and 8)",
-                )?;
-                g.hardness = x;
-            }
-            "j" => {
-                let x = pair(value)?;
-                check(
-                    x.iter().all(|j| *j > 0.0 && *j < 1.0),
-                    "bending geometry factors J must be between 0 and 1",
-                )?;
-                g.j = Some(x);
-            }
-            "backlash" => {
-                let x = number(value)?;
-                check(x >= 0.0, "must not be negative")?;
-                g.error = x;
-            }
-            "youngs_modulus" => {
-                let x = number(value)?;
-                check(x > 0.0, "must be positive")?;
-                g.youngs_modulus = x;
-            }
-            "material" => {
-                g.material = match value.as_str() {
-                    Some("through_hardened") => GearMaterial::ThroughHardened,
-                    Some("carburized") => GearMaterial::Carburized,
-                    _ => {
-                        return Err(invalid(
-                            &path,
-                            value,
-                            "must be \"through_hardened\" (allowables from the hardness) or \"carburized\" (carburized and hardened, grade 2)",
-                        ))
-                    }
-                };
-            }
-            "twin" => {
-                g.twin = value.as_bool().ok_or_else(|| {
-                    invalid(
-                        &path,
-                        value,
-                        "must be true (two gear sets share the load) or false",
-                    )
-                })?;
-            }
-            _ => {
-                g.tooth_load = match value.as_str() {
-                    Some("tangential") => ToothLoad::Tangential,
-                    Some("ring_force") => ToothLoad::RingForce,
-                    Some("thesis") => ToothLoad::Thesis,
-                    _ => {
-                        return Err(invalid(
-                            &path,
-                            value,
-                            "must be \"tangential\" (the mesh force along the pitch-circle tangent, A8.1.10) or \"ring_force\" (its magnitude) or \"thesis\" (Karhula's reading that reproduces his published dynamic tooth loads)",
-                        ))
-                    }
-                };
+        }
+        schema.insert("description".into(), R::RULE.into());
+        schema
+    }
+}
+
+/// A value given once for both members of a pair, or per member as `[pinion, gear]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PerGear<T>(pub [T; 2]);
+
+impl<R: Range, D: Dim> PerGear<Ranged<R, D>> {
+    /// [pinion, gear] in SI.
+    pub fn si(&self) -> [f64; 2] {
+        [self.0[0].si, self.0[1].si]
+    }
+}
+
+impl<'de, T: serde::de::DeserializeOwned + Clone> Deserialize<'de> for PerGear<T> {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let value = toml::Value::deserialize(deserializer)?;
+        let one =
+            |v: &toml::Value| T::deserialize(v.clone()).map_err(|e| De::Error::custom(e.message()));
+        match &value {
+            toml::Value::Array(a) if a.len() == 2 => Ok(Self([one(&a[0])?, one(&a[1])?])),
+            toml::Value::Array(_) => Err(De::Error::custom(broken(
+                &value,
+                "must be one value or two [pinion, gear]",
+            ))),
+            v => {
+                let x = one(v)?;
+                Ok(Self([x.clone(), x]))
             }
         }
     }
-    Ok(g)
+}
+
+impl<T: JsonSchema> JsonSchema for PerGear<T> {
+    fn schema_name() -> Cow<'static, str> {
+        format!("PerGear_{}", T::schema_name()).into()
+    }
+
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let one = generator.subschema_for::<T>();
+        json_schema!({
+            "description": "One value for both members, or [pinion, gear].",
+            "anyOf": [one, { "type": "array", "items": one, "minItems": 2, "maxItems": 2 }]
+        })
+    }
+}
+
+macro_rules! ranges {
+    ($($(#[$doc:meta])* $name:ident: $min:expr, $max:expr, $($flag:ident)* => $rule:literal;)*) => {$(
+        $(#[$doc])*
+        #[derive(Debug, Clone, PartialEq)]
+        pub struct $name;
+        impl Range for $name {
+            const NAME: &'static str = concat!("Gear", stringify!($name));
+            const MIN: f64 = $min;
+            const MAX: f64 = $max;
+            $(const $flag: bool = true;)*
+            const RULE: &'static str = $rule;
+        }
+    )*};
+}
+
+ranges! {
+    /// The teeth of the cardan wheel.
+    Teeth: 5.0, 1000.0, WHOLE => "must be a whole number from 5 to 1000 (the teeth of the mesh's first gear: the cardan wheel)";
+    /// A ring gear's addendum in modules.
+    RingAddendum: 0.0, 1.5, => "must be from 0 to 1.5 modules (1 is a full addendum)";
+    /// A profile shift coefficient.
+    ProfileShift: -1.0, 1.0, => "profile shift coefficients must be from -1 to 1";
+    /// An AGMA quality number.
+    QualityNumber: 5.0, 12.0, => "must be an AGMA quality number Qv from 5 to 12";
+    /// Brinell hardness of through-hardened steel.
+    Hardness: 140.0, 400.0, => "must be from 140 to 400 HB (through-hardened steel, AGMA 2001-D04 Figs. 3 and 8)";
+    /// An AGMA bending geometry factor.
+    GeometryFactorJ: 0.0, 1.0, EXCLUSIVE => "bending geometry factors J must be between 0 and 1";
+}
+
+/// The gears' steel and its treatment, for the allowable stresses.
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum GearMaterialWord {
+    /// Through-hardened steel: allowables from the hardness (AGMA 2001-D04 Figs. 3 and 8).
+    ThroughHardened,
+    /// Carburized and hardened, grade 2.
+    Carburized,
+}
+
+/// Which load is rated.
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum ToothLoadWord {
+    /// The mesh force along the pitch-circle tangent (Karhula A8.1.10).
+    Tangential,
+    /// The mesh force's magnitude.
+    RingForce,
+    /// Karhula's reading that reproduces his published dynamic tooth loads.
+    Thesis,
+}
+
+/// `[gear]`: the gear pair of every gear mesh of the case and its rating data. Every field is
+/// optional; the defaults are `cardan_dynamics::GearSpec::default`'s.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GearTable {
+    /// Teeth of the mesh's first gear (the cardan wheel), a whole number from 5 to 1000.
+    /// Default 20 (Karhula A9.1.36).
+    pub teeth: Option<Ranged<Teeth>>,
+    /// Face width; m. Default a third of the pinion's pitch diameter (Karhula A8.1.9, A9.1.46).
+    pub face_width: Option<Positive<Length>>,
+    /// Addendum of an internal (ring) gear in modules, from 0 to 1.5. Default 0.8, the contact
+    /// ratio of about 1.8 of Karhula's text (a full 1.0 interferes on 20/40 at 20°).
+    pub ring_addendum: Option<Ranged<RingAddendum>>,
+    /// Profile shift coefficients, from −1 to 1 (ISO 21771 signs); one for both, or
+    /// [pinion, gear]. Default 0.
+    pub profile_shift: Option<PerGear<Ranged<ProfileShift>>>,
+    /// AGMA 2000 quality number Qv for the dynamic factor, from 5 to 12. Default 8 (this
+    /// project's).
+    pub quality: Option<Ranged<QualityNumber>>,
+    /// The gears' steel and treatment. Default "through_hardened".
+    pub material: Option<GearMaterialWord>,
+    /// Brinell hardness of through-hardened steel, from 140 to 400 HB; one for both, or
+    /// [pinion, gear]. Default 300 HB (this project's).
+    pub hardness: Option<PerGear<Ranged<Hardness>>>,
+    /// AGMA bending geometry factors J, between 0 and 1; one for both, or [pinion, gear].
+    /// Default: the AGMA 908 25° table proxy for an internal pair at 25°, no bending rating
+    /// otherwise.
+    pub j: Option<PerGear<Ranged<GeometryFactorJ>>>,
+    /// Buckingham's effective profile error (backlash); m. Default 0.005 in = 0.127 mm
+    /// (Karhula).
+    pub backlash: Option<NonNegative<Length>>,
+    /// Young's modulus of both gears; Pa. Default 210 GPa (Karhula).
+    pub youngs_modulus: Option<Positive<Pressure>>,
+    /// Two identical gear sets side by side share the load (Nunes 2017's twin set). Default
+    /// false.
+    pub twin: Option<bool>,
+    /// Which load is rated. Default "tangential".
+    pub tooth_load: Option<ToothLoadWord>,
+}
+
+impl GearTable {
+    /// The gear data of the case: each given field replaces [`GearSpec::default`]'s.
+    pub fn spec(&self) -> GearSpec {
+        let mut g = GearSpec::default();
+        if let Some(t) = &self.teeth {
+            g.teeth = t.si as u32;
+        }
+        if let Some(w) = &self.face_width {
+            g.face_width = Some(w.si);
+        }
+        if let Some(a) = &self.ring_addendum {
+            g.ring_addendum = a.si;
+        }
+        if let Some(x) = &self.profile_shift {
+            g.profile_shift = x.si();
+        }
+        if let Some(q) = &self.quality {
+            g.quality = q.si;
+        }
+        if let Some(m) = self.material {
+            g.material = match m {
+                GearMaterialWord::ThroughHardened => GearMaterial::ThroughHardened,
+                GearMaterialWord::Carburized => GearMaterial::Carburized,
+            };
+        }
+        if let Some(h) = &self.hardness {
+            g.hardness = h.si();
+        }
+        if let Some(j) = &self.j {
+            g.j = Some(j.si());
+        }
+        if let Some(b) = &self.backlash {
+            g.error = b.si;
+        }
+        if let Some(e) = &self.youngs_modulus {
+            g.youngs_modulus = e.si;
+        }
+        if let Some(t) = self.twin {
+            g.twin = t;
+        }
+        if let Some(t) = self.tooth_load {
+            g.tooth_load = match t {
+                ToothLoadWord::Tangential => ToothLoad::Tangential,
+                ToothLoadWord::RingForce => ToothLoad::RingForce,
+                ToothLoadWord::Thesis => ToothLoad::Thesis,
+            };
+        }
+        g
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read(text: &str) -> Result<GearSpec, String> {
+        let table: toml::Table = toml::from_str(text).unwrap();
+        parse(&table, Path::new("c.toml"), "c").map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn a_misspelled_field_or_word_names_the_nearest_name() {
+        let e = read("ring_adendum = 0.8").unwrap_err();
+        assert!(
+            e.contains("gear.ring_adendum: unknown field \"ring_adendum\": did you mean \"ring_addendum\"?"),
+            "{e}"
+        );
+        let e = read("tooth_load = \"ring_forse\"").unwrap_err();
+        assert!(
+            e.contains(
+                "gear.tooth_load: unknown word \"ring_forse\": did you mean \"ring_force\"?"
+            ),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn ranges_and_pairs_are_checked_with_the_value_written() {
+        let e = read("hardness = [300, 500]").unwrap_err();
+        assert!(
+            e.contains("gear.hardness = 500: must be from 140 to 400 HB"),
+            "{e}"
+        );
+        let e = read("j = [0.3, 0.4, 0.5]").unwrap_err();
+        assert!(
+            e.contains("gear.j = [0.3, 0.4, 0.5]: must be one value or two"),
+            "{e}"
+        );
+        let e = read("teeth = 20.5").unwrap_err();
+        assert!(
+            e.contains("gear.teeth = 20.5: must be a whole number"),
+            "{e}"
+        );
+        let g = read("teeth = 24.0\nprofile_shift = 0.1\nj = [0.3, 0.4]\nbacklash = \"0.1 mm\"")
+            .unwrap();
+        assert_eq!(g.teeth, 24);
+        assert_eq!(g.profile_shift, [0.1, 0.1]);
+        assert_eq!(g.j, Some([0.3, 0.4]));
+        assert!((g.error - 1e-4).abs() < 1e-15);
+        assert_eq!(read("").unwrap(), GearSpec::default());
+    }
+
+    #[test]
+    fn the_schema_has_every_field_with_its_range() {
+        let schema = schemars::schema_for!(GearTable).to_value();
+        assert_eq!(schema["additionalProperties"], false);
+        let text = schema.to_string();
+        for part in [
+            "ring_addendum",
+            "tooth_load",
+            "ring_force",
+            "\"maximum\":400.0",
+        ] {
+            assert!(text.contains(part), "{part}: {text}");
+        }
+    }
 }

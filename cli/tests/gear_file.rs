@@ -326,7 +326,7 @@ fn bad_files_name_file_pair_field_and_rule() {
         (
             "enclosure = \"commercial\"",
             "enclosure = \"closed\"",
-            &["rating.enclosure", "\"precision\""],
+            &["rating.enclosure", "unknown word \"closed\"", "precision"],
         ),
         (
             "pinion_speed = \"1800 rpm\"",
@@ -579,4 +579,86 @@ fn a_bare_module_meant_in_millimetres_is_refused() {
     assert!(e.contains("module") && e.contains("\"3 mm\""), "{e}");
     let with_unit = text.replace(&line, "module = \"3 mm\"");
     assert!(parse(std::path::Path::new("g.toml"), &with_unit).is_ok());
+}
+
+/// Every shipped gear file reads (and the test files written by the tests above are built on
+/// them).
+#[test]
+fn every_shipped_gear_file_reads() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs-gears");
+    let mut read = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let file = entry.unwrap().path();
+        if file.extension().is_some_and(|e| e == "toml") {
+            load(&file).unwrap_or_else(|e| panic!("{e}"));
+            read += 1;
+        }
+    }
+    assert!(read >= 2, "{read} shipped gear files");
+}
+
+/// A misspelled field, at the top level, in `[rating]` or in a member's table, names its path
+/// and the nearest valid name; a misspelled word the nearest word.
+#[test]
+fn a_misspelled_field_names_its_path_and_the_nearest_name() {
+    let shigley = std::fs::read_to_string(shipped("shigley-14-4.toml")).unwrap();
+    for (from, to, parts) in [
+        (
+            "face_width = ",
+            "face_widht = ",
+            &[
+                "face_widht: unknown field \"face_widht\"",
+                "did you mean \"face_width\"?",
+            ][..],
+        ),
+        (
+            "pinion_speed = ",
+            "pinion_sped = ",
+            &[
+                "rating.pinion_sped: unknown field",
+                "did you mean \"pinion_speed\"?",
+            ][..],
+        ),
+        (
+            "lewis_y = 0.412",
+            "lewis_why = 0.412",
+            &[
+                "rating.gear.lewis_why: unknown field",
+                "did you mean \"lewis_y\"?",
+            ][..],
+        ),
+        (
+            "enclosure = \"commercial\"",
+            "enclosure = \"comercial\"",
+            &[
+                "rating.enclosure: unknown word \"comercial\"",
+                "did you mean \"commercial\"?",
+            ][..],
+        ),
+    ] {
+        assert!(shigley.contains(from), "{from}");
+        let e = error_of(&shigley.replacen(from, to, 1));
+        mentions(&e, &["gears/bad.toml", "shigley-14-4"]);
+        mentions(&e, parts);
+    }
+}
+
+/// The gear file's JSON Schema names every table and says which fields are required.
+#[test]
+fn the_gear_file_schema_lists_the_fields() {
+    let schema = cardan::gear_file::gear_file_schema();
+    let required = schema["required"].as_array().unwrap();
+    for field in ["name", "pressure_angle", "teeth"] {
+        assert!(required.iter().any(|r| r == field), "{field}: {schema}");
+    }
+    assert_eq!(schema["additionalProperties"], false);
+    let text = schema.to_string();
+    for field in [
+        "pinion_speed",
+        "bending_allowable",
+        "lewis_y",
+        "extra-precision",
+    ] {
+        assert!(text.contains(field), "{field}");
+    }
 }

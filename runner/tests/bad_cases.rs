@@ -879,16 +879,19 @@ fn a_crank_that_just_reaches_the_end_angle_at_rest_runs() {
 /// nearest valid name (issue 23), as README.md shows.
 #[test]
 fn a_misspelling_anywhere_names_its_path_and_the_nearest_valid_name() {
-    let readme = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md"),
-    )
-    .unwrap();
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../README.md"))
+            .unwrap();
     let shown = "geometry.crank_lenght: unknown field \"crank_lenght\": did you mean \"crank_length\"? (the fields here: crank_length, rod_length, bore, pin_offset, opposed_pistons, crank_phase)";
     assert!(readme.contains(shown), "README.md no longer shows: {shown}");
     let e = error_of(&GOOD.replace("crank_length", "crank_lenght"));
     assert!(e.ends_with(shown), "{e}");
     let cases: &[(&str, &str, &[&str])] = &[
-        ("steps = 720", "stpes = 720", &["motion.stpes", "did you mean \"steps\"?"]),
+        (
+            "steps = 720",
+            "stpes = 720",
+            &["motion.stpes", "did you mean \"steps\"?"],
+        ),
         (
             "steps = 720",
             "steps = 720\n[masses]\nrod_mas = \"1 kg\"",
@@ -897,7 +900,10 @@ fn a_misspelling_anywhere_names_its_path_and_the_nearest_valid_name() {
         (
             "steps = 720",
             "steps = 720\n[masses.cardan_gear]\npiston_mas = \"1 kg\"",
-            &["masses.cardan_gear.piston_mas", "did you mean \"piston_mass\"?"],
+            &[
+                "masses.cardan_gear.piston_mas",
+                "did you mean \"piston_mass\"?",
+            ],
         ),
         (
             "steps = 720",
@@ -907,7 +913,10 @@ fn a_misspelling_anywhere_names_its_path_and_the_nearest_valid_name() {
         (
             "steps = 720",
             "steps = 720\n[cardan_gear]\ngear_mesh_modle = \"involute\"",
-            &["cardan_gear.gear_mesh_modle", "did you mean \"gear_mesh_model\"?"],
+            &[
+                "cardan_gear.gear_mesh_modle",
+                "did you mean \"gear_mesh_model\"?",
+            ],
         ),
         (
             "steps = 720",

@@ -233,8 +233,14 @@ pub fn schemas() -> Vec<(&'static str, String)> {
         text.push('\n');
         text
     };
-    vec![(
-        "schema/case.schema.json",
-        text(cardan_case::json_schema::case_schema()),
-    )]
+    vec![
+        (
+            "schema/case.schema.json",
+            text(cardan_case::json_schema::case_schema()),
+        ),
+        (
+            "schema/gear-file.schema.json",
+            text(cardan::gear_file::gear_file_schema()),
+        ),
+    ]
 }

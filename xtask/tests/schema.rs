@@ -69,3 +69,32 @@ fn the_schema_refuses_what_the_reader_refuses() {
         assert!(!validator.is_valid(&as_json(&bad)), "accepted {to}");
     }
 }
+
+#[test]
+fn every_shipped_gear_file_validates_against_its_schema() {
+    let validator = jsonschema::validator_for(&cardan::gear_file::gear_file_schema()).unwrap();
+    let mut checked = 0;
+    for entry in std::fs::read_dir(root().join("configs-gears")).unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let value = as_json(&text);
+        let errors: Vec<String> = validator
+            .iter_errors(&value)
+            .map(|e| format!("{} at {}", e, e.instance_path()))
+            .collect();
+        assert!(errors.is_empty(), "{}: {errors:#?}", path.display());
+        // Its first field misspelled is refused.
+        let key = text
+            .lines()
+            .find_map(|l| {
+                l.split_once(" =")
+                    .map(|(k, _)| k)
+                    .filter(|k| !k.starts_with('#'))
+            })
+            .unwrap();
+        let misspelled = text.replacen(&format!("{key} ="), &format!("{key}x ="), 1);
+        assert!(!validator.is_valid(&as_json(&misspelled)), "{key}");
+        checked += 1;
+    }
+    assert!(checked >= 2);
+}

@@ -13,18 +13,34 @@
 //! Karhula's models (A6.2.1.1): a trace of gauge pressure gives the net force on a piston
 //! whose crankcase is at ambient.
 
-use super::{Clearance, Fields, GasEntry, ReadModel};
+use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::case::{CaseError, Machine};
+use crate::quantity::{Number, Quantity};
 use cardan_gas::{Chamber, GasError, GasMetric, GasModel, PreparedGas};
+use schemars::JsonSchema;
+use serde::Deserialize;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
 /// The registry line.
-pub const ENTRY: GasEntry = GasEntry {
-    name: "pressure_trace",
-    machine: None,
-    read,
-};
+pub const ENTRY: GasEntry = entry::<PressureTraceTable>("pressure_trace", None);
+
+/// The compression ratio when not given: any, as the pressure does not depend on the volume
+/// (10 keeps the cylinder's rules satisfied).
+pub const DEFAULT_COMPRESSION_RATIO: f64 = 10.0;
+
+/// `[gas]` of `model = "pressure_trace"`: a measured (or computed) indicator diagram.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PressureTraceTable {
+    /// The trace: a CSV file, relative to the case file, with the header line
+    /// `crank_angle_deg,pressure_pa` then rows of crank angle (degrees, increasing, one cycle
+    /// of the machine) and absolute pressure (Pa); required.
+    pub file: String,
+    /// Compression ratio of the cylinder, greater than 1; it does not enter the pressure.
+    /// Default 10.
+    pub compression_ratio: Option<Quantity<Number>>,
+}
 
 /// The trace, in SI: crank angles (rad, increasing) and absolute pressures (Pa), and the
 /// cycle it repeats over (rad).
@@ -51,38 +67,33 @@ impl PressureTrace {
     }
 }
 
-fn read(f: &Fields) -> Result<ReadModel, CaseError> {
-    let Some(name) = f.text("file")? else {
-        return Err(f.refuse(
-            "file",
-            &"(missing)",
-            "is required by gas.model = \"pressure_trace\": a CSV of crank_angle_deg,pressure_pa",
-        ));
-    };
-    let path = f
-        .file
-        .parent()
-        .unwrap_or(std::path::Path::new("."))
-        .join(name);
-    let shown = format!("\"{name}\"");
-    let text = std::fs::read_to_string(&path).map_err(|e| {
-        f.refuse(
-            "file",
-            &shown,
-            &format!("cannot read {}: {e}", path.display()),
-        )
-    })?;
-    let period = match f.machine {
-        Machine::Engine => 4.0 * PI,
-        _ => 2.0 * PI,
-    };
-    let trace = parse(&text, period).map_err(|rule| f.refuse("file", &shown, &rule))?;
-    // The cylinder's clearance does not enter the pressure; a compression ratio is only asked
-    // of a model whose pressure depends on the volume.
-    let ratio = f
-        .optional("compression_ratio", crate::units::Dimension::Number)?
-        .unwrap_or(10.0);
-    Ok((Arc::new(trace), Clearance::CompressionRatio(ratio)))
+impl ModelTable for PressureTraceTable {
+    fn build(self, cx: &Context) -> Result<ReadModel, CaseError> {
+        let name = &self.file;
+        let path = cx
+            .file
+            .parent()
+            .unwrap_or(std::path::Path::new("."))
+            .join(name);
+        let shown = format!("\"{name}\"");
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            cx.refuse(
+                "file",
+                &shown,
+                &format!("cannot read {}: {e}", path.display()),
+            )
+        })?;
+        let period = match cx.machine {
+            Machine::Engine => 4.0 * PI,
+            _ => 2.0 * PI,
+        };
+        let trace = parse(&text, period).map_err(|rule| cx.refuse("file", &shown, &rule))?;
+        // The cylinder's clearance does not enter the pressure.
+        let ratio = self
+            .compression_ratio
+            .map_or(DEFAULT_COMPRESSION_RATIO, |r| r.si);
+        Ok((Arc::new(trace), Clearance::CompressionRatio(ratio)))
+    }
 }
 
 /// The trace of the CSV `text` over a cycle of `period` (rad), or the rule it breaks (with the
@@ -220,7 +231,11 @@ mod tests {
         let text = std::fs::read_to_string(&file).unwrap();
         for (from, to, rule) in [
             ("traces/karhula", "traces/nothing-", "cannot read"),
-            ("file = ", "# file = ", "is required"),
+            (
+                "file = ",
+                "# file = ",
+                "required by gas.model = \"pressure_trace\"",
+            ),
         ] {
             let e = crate::case::parse(&file, &text.replace(from, to)).unwrap_err();
             let e = e.to_string();

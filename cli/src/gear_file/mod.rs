@@ -24,8 +24,10 @@ use std::path::{Path, PathBuf};
 mod input;
 mod rating;
 mod report;
+mod table;
 pub use input::parse;
 pub use rating::{check_info, evaluate, GearReport, RatingResult, Severity};
+pub use table::gear_file_schema;
 
 pub const SCHEMA_VERSION: u32 = 1;
 
@@ -41,6 +43,14 @@ pub enum GearFileError {
     /// is the TOML reader's, with the line and column.
     #[error("{file}: {message}")]
     Syntax { file: PathBuf, message: String },
+    /// A field of the typed schema that did not read (a misspelled field or word, a value of
+    /// the wrong form): its path and what is wrong with it.
+    #[error("{file}: gear pair \"{name}\": {error}")]
+    Field {
+        file: PathBuf,
+        name: String,
+        error: cardan_case::schema::FieldError,
+    },
     #[error("{file}: gear pair \"{name}\": {field} = {value}: {rule}")]
     Invalid {
         file: PathBuf,

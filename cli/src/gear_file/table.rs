@@ -1,0 +1,347 @@
+//! The gear file's typed schema: one struct per table, `deny_unknown_fields`, each value a
+//! [`Quantity`] in its dimension (units from the one table of `cardan_case::units`), words as
+//! enums. Rules that join fields, and the physics' own ranges, are checked after reading
+//! (`input.rs`). The doc comments are the JSON Schema's descriptions ([`gear_file_schema`]).
+
+use cardan_case::quantity::{
+    broken, Angle, AngularSpeed, Length, NonNegative, Number, Positive, Power, Pressure, Quantity,
+    RootStress, Torque,
+};
+use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
+use serde::{de::DeserializeOwned, de::Error as _, Deserialize, Deserializer};
+use std::borrow::Cow;
+
+/// A gear pair's file: `name`, the geometry at the top level, `[rating]` for the AGMA rating.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GearFileTable {
+    /// The output folder's name (`DIR/<name>`): letters, digits, '-', '_' and '.', at most
+    /// 200, not starting with '.'; required.
+    pub name: String,
+    /// Module m; m (a bare number above 0.1 is refused as meant in mm: ISO 54 modules run to
+    /// 100 mm). Give it or `cardan_crank_length`.
+    pub module: Option<Positive<Length>>,
+    /// The cardan crank length e the module follows from, m = 2e/z1 (Karhula A9.1.37); m.
+    /// Give it or `module`.
+    pub cardan_crank_length: Option<Positive<Length>>,
+    /// Reference (generating) pressure angle α, in (0°, 45°); degrees; required.
+    pub pressure_angle: Quantity<Angle>,
+    /// Teeth [z1, z2], whole numbers, |z| ≤ 100 000; z2 < 0 is an internal gear (ISO 21771),
+    /// |z2| > z1; required.
+    pub teeth: Pair<Teeth>,
+    /// Profile shift coefficients [x1, x2], ISO 21771 signs (KHK's internal x2 = −ISO x2).
+    /// Default [0, 0].
+    pub profile_shift: Option<Pair<Quantity<Number>>>,
+    /// Operating centre distance; m. Default the zero-backlash working centre distance.
+    pub center_distance: Option<Positive<Length>>,
+    /// Tip diameters [da1, da2] (a ring's: its inner circle); m. Give it or
+    /// `addendum_coefficient`.
+    pub tip_diameter: Option<Pair<Positive<Length>>>,
+    /// Addendum coefficients [ha1, ha2], in modules. Default [1, 1] (ISO 53).
+    pub addendum_coefficient: Option<Pair<Quantity<Number>>>,
+    /// Dedendum coefficients [hf1, hf2], in modules. Default [1.25, 1.25] (ISO 53).
+    pub dedendum_coefficient: Option<Pair<Quantity<Number>>>,
+    /// Tooth thinning [j1, j2] at the reference circle; m. Default [0, 0].
+    pub thickness_allowance: Option<Pair<Quantity<Length>>>,
+    /// Face width; m. Needed with `[rating]`.
+    pub face_width: Option<Positive<Length>>,
+    /// The smallest |z2| − z1 of an internal pair, a whole number from 0 to 1000. Default 10
+    /// (AGMA 917-B97 as quoted by Nunes 2017, `cardan_gears::PairSpec::standard`).
+    pub min_teeth_difference: Option<TeethDifference>,
+    /// The AGMA 2001-D04 rating; without it, the geometry only.
+    pub rating: Option<RatingTable>,
+}
+
+/// `[rating]`: the load, the speed and the AGMA factors of the pair.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RatingTable {
+    /// Transmitted power, positive; W. Give it or `torque`.
+    pub power: Option<Quantity<Power>>,
+    /// Pinion torque, positive; N·m. Give it or `power`.
+    pub torque: Option<Quantity<Torque>>,
+    /// Pinion speed relative to the gear's frame (a cardan gear's carrier); rad/s; required.
+    pub pinion_speed: Positive<AngularSpeed>,
+    /// AGMA 2001 quality number Qv (5-12), for Kv. Give one of `quality`, `accuracy_level`,
+    /// `dynamic_factor`.
+    pub quality: Option<Quantity<Number>>,
+    /// AGMA 2101 accuracy level Av (6-12), for Kv.
+    pub accuracy_level: Option<Quantity<Number>>,
+    /// The dynamic factor Kv itself, at least 1.
+    pub dynamic_factor: Option<Quantity<Number>>,
+    /// Overload factor Ko. Default 1.
+    pub overload_factor: Option<Positive<Number>>,
+    /// Reliability R (AGMA table at 0.5, 0.9, 0.99, 0.999, 0.9999, else Shigley's fit). Give
+    /// it or `reliability_factor`; default KR = 1.
+    pub reliability: Option<Quantity<Number>>,
+    /// Reliability factor KR. Default 1.
+    pub reliability_factor: Option<Positive<Number>>,
+    /// Temperature factor KT. Default 1.
+    pub temperature_factor: Option<Positive<Number>>,
+    /// Surface condition factor Cf. Default 1.
+    pub surface_condition_factor: Option<Positive<Number>>,
+    /// Load cycles of the pinion (the gear's: divided by the ratio). Default 1e7 (the cycles
+    /// the AGMA 2001 charts are drawn for).
+    pub pinion_cycles: Option<Quantity<Number>>,
+    /// Low-cycle curve of the bending stress-cycle factor YN (AGMA 2001-D04 Fig. 18). Default
+    /// "hb250".
+    #[serde(default)]
+    pub bending_cycle_low: BendingLow,
+    /// High-cycle curve of YN. Default "upper".
+    #[serde(default)]
+    pub bending_cycle_high: BendingHigh,
+    /// The nitrided curve of the pitting stress-cycle factor ZN. Default false.
+    pub pitting_nitrided: Option<bool>,
+    /// Pitting geometry factor I: "lpstc" (AGMA 908, the lowest point of single tooth
+    /// contact), "pitch-point" (Shigley eq. 14-23) or a positive number. Default "lpstc".
+    pub geometry_factor_i: Option<GeometryFactorI>,
+    /// Elastic coefficient Cp; √Pa. Give it, or `youngs_modulus` and `poisson_ratio` in both
+    /// member tables.
+    pub elastic_coefficient: Option<Positive<RootStress>>,
+    /// Hardness ratio factor CH of the gear. Default from the hardnesses (through-hardened).
+    pub hardness_ratio_factor: Option<Positive<Number>>,
+    /// Load distribution Km: the gearing's enclosure. Default "commercial".
+    #[serde(default)]
+    pub enclosure: EnclosureWord,
+    /// Load distribution Km: crowned teeth. Default false.
+    pub crowned: Option<bool>,
+    /// Load distribution Km: the pinion's offset ratio S1/S. Default 0.
+    pub offset_ratio: Option<NonNegative<Number>>,
+    /// Load distribution Km: the mesh adjusted at assembly. Default false.
+    pub adjusted_at_assembly: Option<bool>,
+    /// The smallest bending SF and pitting SH each member must reach, at least 1. Default 1.
+    pub required_safety_factor: Option<Quantity<Number>>,
+    /// `[rating.pinion]`.
+    pub pinion: MemberTable,
+    /// `[rating.gear]`.
+    pub gear: MemberTable,
+}
+
+/// `[rating.pinion]`, `[rating.gear]`: one member's factors and material.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MemberTable {
+    /// AGMA bending geometry factor J; required.
+    pub j: Positive<Number>,
+    /// Rim thickness factor KB. Default 1.
+    pub rim_factor: Option<Positive<Number>>,
+    /// Lewis form factor Y, for the size factor Ks (Shigley eq. 14-10); both members or
+    /// neither. Give it or `size_factor`; default Ks = 1.
+    pub lewis_y: Option<Positive<Number>>,
+    /// Size factor Ks.
+    pub size_factor: Option<Positive<Number>>,
+    /// Brinell hardness of a through-hardened steel, 140-400 HB: St and Sc from the AGMA
+    /// charts.
+    pub hardness: Option<Positive<Number>>,
+    /// AGMA 2001 grade of the through-hardened steel, 1 or 2. Default 1.
+    pub grade: Option<GradeNumber>,
+    /// Allowable bending stress number St; Pa. Default from `hardness`.
+    pub bending_allowable: Option<Positive<Pressure>>,
+    /// Allowable contact stress number Sc; Pa. Default from `hardness`.
+    pub contact_allowable: Option<Positive<Pressure>>,
+    /// Young's modulus, for Cp; Pa.
+    pub youngs_modulus: Option<Quantity<Pressure>>,
+    /// Poisson's ratio, for Cp.
+    pub poisson_ratio: Option<Quantity<Number>>,
+}
+
+/// YN's low-cycle curve.
+#[derive(Debug, Clone, Copy, Default, Deserialize, JsonSchema)]
+#[serde(rename_all = "kebab-case")]
+pub enum BendingLow {
+    /// 400 HB.
+    Hb400,
+    /// Case carburized.
+    CaseCarburized,
+    /// 250 HB.
+    #[default]
+    Hb250,
+    /// Nitrided.
+    Nitrided,
+    /// 160 HB.
+    Hb160,
+}
+
+/// YN's high-cycle curve.
+#[derive(Debug, Clone, Copy, Default, Deserialize, JsonSchema)]
+#[serde(rename_all = "kebab-case")]
+pub enum BendingHigh {
+    /// General applications.
+    #[default]
+    Upper,
+    /// Critical service.
+    Lower,
+}
+
+/// The gearing's enclosure, for Km (AGMA 2001-D04, Shigley Table 14-9).
+#[derive(Debug, Clone, Copy, Default, Deserialize, JsonSchema)]
+#[serde(rename_all = "kebab-case")]
+pub enum EnclosureWord {
+    /// Open gearing.
+    Open,
+    /// Commercial enclosed units.
+    #[default]
+    Commercial,
+    /// Precision enclosed units.
+    Precision,
+    /// Extra-precision enclosed units.
+    ExtraPrecision,
+}
+
+/// The pitting geometry factor I: how it is computed, or its value.
+#[derive(Debug, Clone, PartialEq)]
+pub enum GeometryFactorI {
+    /// AGMA 908, at the lowest point of single tooth contact.
+    Lpstc,
+    /// Shigley eq. 14-23, at the pitch point.
+    PitchPoint,
+    /// Given.
+    Given(f64),
+}
+
+impl<'de> Deserialize<'de> for GeometryFactorI {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let v = toml::Value::deserialize(deserializer)?;
+        match &v {
+            toml::Value::String(s) if s == "lpstc" => Ok(Self::Lpstc),
+            toml::Value::String(s) if s == "pitch-point" => Ok(Self::PitchPoint),
+            toml::Value::Float(_) | toml::Value::Integer(_) => Positive::<Number>::from_value(&v)
+                .map(|q| Self::Given(q.si))
+                .map_err(|rule| De::Error::custom(broken(&v, &rule))),
+            _ => Err(De::Error::custom(broken(
+                &v,
+                "must be \"lpstc\" (AGMA 908), \"pitch-point\" (Shigley eq. 14-23) or a number",
+            ))),
+        }
+    }
+}
+
+impl JsonSchema for GeometryFactorI {
+    fn schema_name() -> Cow<'static, str> {
+        "GeometryFactorI".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "anyOf": [
+                { "enum": ["lpstc", "pitch-point"] },
+                { "type": "number", "exclusiveMinimum": 0 }
+            ]
+        })
+    }
+}
+
+/// A whole number read from a TOML integer, in `[MIN, MAX]`, or the rule it breaks.
+fn whole<'de, De: Deserializer<'de>>(
+    deserializer: De,
+    range: std::ops::RangeInclusive<i64>,
+    rule: &str,
+) -> Result<i64, De::Error> {
+    let v = toml::Value::deserialize(deserializer)?;
+    match v.as_integer() {
+        Some(i) if range.contains(&i) => Ok(i),
+        _ => Err(De::Error::custom(broken(&v, rule))),
+    }
+}
+
+/// A number of teeth, z2 negative for an internal gear.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Teeth(pub i32);
+
+impl<'de> Deserialize<'de> for Teeth {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let rule =
+            "must be two whole numbers [z1, z2] (z2 negative for an internal gear), |z| <= 100000";
+        whole(deserializer, -100_000..=100_000, rule).map(|i| Teeth(i as i32))
+    }
+}
+
+/// The smallest teeth difference of an internal pair.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TeethDifference(pub u32);
+
+impl<'de> Deserialize<'de> for TeethDifference {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        whole(
+            deserializer,
+            0..=1000,
+            "must be a whole number from 0 to 1000",
+        )
+        .map(|i| TeethDifference(i as u32))
+    }
+}
+
+/// An AGMA 2001 grade, 1 or 2.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GradeNumber(pub u8);
+
+impl<'de> Deserialize<'de> for GradeNumber {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        whole(deserializer, 1..=2, "must be 1 or 2 (AGMA 2001 grade)").map(|i| GradeNumber(i as u8))
+    }
+}
+
+macro_rules! whole_schema {
+    ($($name:ident: $min:expr, $max:expr;)*) => {$(
+        impl JsonSchema for $name {
+            fn schema_name() -> Cow<'static, str> {
+                stringify!($name).into()
+            }
+
+            fn json_schema(_: &mut SchemaGenerator) -> Schema {
+                json_schema!({ "type": "integer", "minimum": $min, "maximum": $max })
+            }
+        }
+    )*};
+}
+
+whole_schema! {
+    Teeth: -100_000, 100_000;
+    TeethDifference: 0, 1000;
+    GradeNumber: 1, 2;
+}
+
+/// Two values, [pinion, gear].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pair<T>(pub [T; 2]);
+
+impl<D, const RULE: u8> Pair<Quantity<D, RULE>> {
+    /// [pinion, gear] in SI.
+    pub fn si(&self) -> [f64; 2] {
+        [self.0[0].si, self.0[1].si]
+    }
+}
+
+impl<'de, T: DeserializeOwned> Deserialize<'de> for Pair<T> {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let value = toml::Value::deserialize(deserializer)?;
+        let one =
+            |v: &toml::Value| T::deserialize(v.clone()).map_err(|e| De::Error::custom(e.message()));
+        match value.as_array() {
+            Some(a) if a.len() == 2 => Ok(Pair([one(&a[0])?, one(&a[1])?])),
+            _ => Err(De::Error::custom(broken(
+                &value,
+                "must be a list of two values [pinion, gear]",
+            ))),
+        }
+    }
+}
+
+impl<T: JsonSchema> JsonSchema for Pair<T> {
+    fn schema_name() -> Cow<'static, str> {
+        format!("Pair_{}", T::schema_name()).into()
+    }
+
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let one = generator.subschema_for::<T>();
+        json_schema!({
+            "description": "[pinion, gear]",
+            "type": "array", "items": one, "minItems": 2, "maxItems": 2
+        })
+    }
+}
+
+/// The JSON Schema of a gear file, for `cargo xtask schema` and editors.
+pub fn gear_file_schema() -> serde_json::Value {
+    schemars::schema_for!(GearFileTable).to_value()
+}
