@@ -1,77 +1,330 @@
-//! The `[friction]` table of a case: which loss model at which piston and joint,
-//! converted to SI and validated once, here. Without `[friction]` a case has no losses; an
-//! empty `[friction]` table is Karhula's (2008) App. 9.1 set ([`Friction::karhula`]). An
-//! engine's `[friction]` also reads the engine components (valve train, accessories, pumping;
-//! all off by default) and the settings of the fmep cross-check
-//! ([`cardan_dynamics::EngineLosses`]).
+//! The `[friction]` table of a case: which loss model at which piston and joint, read into
+//! [`FrictionTable`] (units, signs and words checked by the schema) and built into a
+//! [`Friction`] by [`build`]. Without `[friction]` a case has no losses; an empty `[friction]`
+//! table is Karhula's (2008) App. 9.1 set ([`Friction::karhula`]). The models' words come from
+//! the registry [`cardan_dynamics::LOSS_MODELS`], their defaults from
+//! [`cardan_dynamics::Parameters::default`]. An engine's `[friction]` also reads the engine
+//! components (valve train, accessories, pumping; all off by default) and the settings of the
+//! fmep cross-check ([`cardan_dynamics::EngineLosses`]).
 
 use crate::case::{CaseError, Invalid, Machine};
 use crate::gas::{Clearance, GasCase};
+use crate::quantity::{
+    broken, AngularSpeed, Density, Force, KinematicViscosity, Length, NonNegative, Number,
+    Positive, Pressure, Quantity,
+};
 use crate::units::{to_si, Dimension};
-use cardan_dynamics::engine_losses::AMBIENT_PRESSURE;
+use cardan_dynamics::loss_models::{self, words, Attachment, Parameters, Setting, NONE};
 use cardan_dynamics::{
-    Bearing, BearingSize, EngineLosses, FmepModel, FollowerContact, Friction, GearSpec,
-    MeshLossModel, Rings, Skirt, ValveTrain,
+    BearingSize, EngineLosses, FmepModel, Friction, GearSpec, LossModel, MeshLossModel, ValveTrain,
 };
-use cardan_friction::{
-    PalmgrenCoefficients, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
-};
-use cardan_gears::mesh_loss::Reading;
+use cardan_mechanism::{JointKind, Mechanism};
+use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
+use serde::de::{Error as _, MapAccess, Visitor};
+use serde::{Deserialize, Deserializer};
+use std::borrow::Cow;
+use std::marker::PhantomData;
+use std::sync::Arc;
 
-/// The fields of `[friction]`, with their dimensions.
-const FIELDS: [(&str, Dimension); 24] = [
-    ("rings", Dimension::Number),
-    ("ring_friction_coefficient", Dimension::Number),
-    ("ring_crown_height", Dimension::Length),
-    ("skirt", Dimension::Number),
-    ("skirt_friction_coefficient", Dimension::Number),
-    ("skirt_length", Dimension::Length),
-    ("skirt_clearance", Dimension::Length),
-    ("slide_friction_coefficient", Dimension::Number),
-    ("bearings", Dimension::Number),
-    ("lubrication_factor", Dimension::Number),
-    ("bearing_load_constant", Dimension::Number),
-    ("journal_length_ratio", Dimension::Number),
-    ("journal_clearance_ratio", Dimension::Number),
-    ("gear_mesh", Dimension::Number),
-    ("oil_viscosity", Dimension::KinematicViscosity),
-    ("oil_density", Dimension::Density),
-    ("joints", Dimension::Number),
-    ("valve_train", Dimension::Number),
-    ("cam_friction_coefficient", Dimension::Number),
-    ("valve_spring_speed", Dimension::AngularSpeed),
-    ("accessories", Dimension::Number),
-    ("pumping", Dimension::Number),
-    ("intake_pressure", Dimension::Pressure),
-    ("fmep_model", Dimension::Number),
-];
+/// The `[friction]` table: each model's word and parameters, the oil, per-joint bearings, and
+/// an engine's components. Every field is optional; its default is the model's
+/// ([`Parameters::default`]).
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionTable {
+    /// Piston-ring model of every piston in a cylinder (default "karhula").
+    pub rings: Option<Model<Rings>>,
+    /// μ_ring of the "karhula" ring pack (default 0.07, Karhula A9.1.4 after Andersson et al.
+    /// 2002).
+    pub ring_friction_coefficient: Option<NonNegative<Number>>,
+    /// Crown height of the "film" rings' barrel faces, m (default 5 µm).
+    pub ring_crown_height: Option<Positive<Length>>,
+    /// Model of a piston's slide on the frame (default "karhula").
+    pub skirt: Option<Model<Skirt>>,
+    /// μ_skirt of the "karhula" skirt (default 0.09, Karhula A9.1.5).
+    pub skirt_friction_coefficient: Option<NonNegative<Number>>,
+    /// Length of the "viscous" skirt, m (default 0.6 × bore, the Thai thesis's proportions).
+    pub skirt_length: Option<Positive<Length>>,
+    /// Radial clearance of the "viscous" skirt, m (default 20 µm, the Thai thesis's example).
+    pub skirt_clearance: Option<Positive<Length>>,
+    /// Coulomb μ of every other slide, a Scotch-yoke slot (default 0.09, Karhula's skirt).
+    pub slide_friction_coefficient: Option<NonNegative<Number>>,
+    /// Bearing model of every revolute joint (default "karhula").
+    pub bearings: Option<Model<Bearings>>,
+    /// Lubrication factor f0 of the "karhula" and "palmgren" bearings (default 2, Karhula).
+    pub lubrication_factor: Option<Positive<Number>>,
+    /// Constant of the "karhula" bearings' load term (default 0.0009, which reproduces the
+    /// thesis's tables; 0.009 as printed in A9.1.26-27).
+    pub bearing_load_constant: Option<Positive<Number>>,
+    /// L/D of the "petroff" and "short_bearing" journals (default 0.5).
+    pub journal_length_ratio: Option<Positive<Number>>,
+    /// c/R of the "petroff" and "short_bearing" journals (default 0.001).
+    pub journal_clearance_ratio: Option<Positive<Number>>,
+    /// Gear-mesh loss model on the pair of `[gear]` (default "karhula").
+    pub gear_mesh: Option<Model<GearMesh>>,
+    /// Kinematic viscosity of the oil at running temperature, m²/s (default 5 mm²/s, Karhula).
+    pub oil_viscosity: Option<Positive<KinematicViscosity>>,
+    /// Density of the oil, kg/m³ (default 900, Karhula).
+    pub oil_density: Option<Positive<Density>>,
+    /// Per named revolute joint: another bearing model, or a table of a model and catalogue
+    /// values replacing the mechanism's sizing rules (Karhula A9.1.10-13).
+    pub joints: Option<Joints>,
+    /// Engine only: valve-train model (default "none").
+    pub valve_train: Option<Model<ValveTrainModels>>,
+    /// Engine only, valve_train = "flat": μ at the cam contact (default 0.08).
+    pub cam_friction_coefficient: Option<NonNegative<Number>>,
+    /// Engine only, with a valve train: crank speed the springs are sized for, rad/s (default
+    /// 6000 rpm).
+    pub valve_spring_speed: Option<Positive<AngularSpeed>>,
+    /// Engine only: Bishop's pumps and accessories (default false).
+    pub accessories: Option<bool>,
+    /// Engine only: Bishop's throttling loss at intake_pressure (default false).
+    pub pumping: Option<bool>,
+    /// Engine only: absolute intake-manifold pressure, Pa, above 0.1 × ambient and at most
+    /// ambient (default ambient, 101 325 Pa: wide-open throttle).
+    pub intake_pressure: Option<Positive<Pressure>>,
+    /// Engine only: the whole-engine fmep cross-check (default "sandoval_heywood").
+    pub fmep_model: Option<FmepWord>,
+}
 
-/// The fields only an engine reads.
-const ENGINE_FIELDS: [&str; 7] = [
-    "valve_train",
-    "cam_friction_coefficient",
-    "valve_spring_speed",
-    "accessories",
-    "pumping",
-    "intake_pressure",
-    "fmep_model",
-];
+/// The fmep correlation of an engine's cross-check.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum FmepWord {
+    /// Sandoval & Heywood (2003): PNH with the oil's viscosity scaling.
+    SandovalHeywood,
+    /// Patton, Nitschke & Heywood (1989).
+    Pnh,
+}
+
+/// An attachment of loss models, as a type: the field type [`Model`] takes its words from the
+/// registry.
+pub trait Site {
+    const ATTACHMENT: Attachment;
+    /// The name used in the JSON Schema's definitions.
+    const NAME: &'static str;
+}
+
+macro_rules! sites {
+    ($($(#[$doc:meta])* $name:ident => $attachment:ident),* $(,)?) => {$(
+        $(#[$doc])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        pub struct $name;
+        impl Site for $name {
+            const ATTACHMENT: Attachment = Attachment::$attachment;
+            const NAME: &'static str = concat!(stringify!($name), "Model");
+        }
+    )*};
+}
+
+sites!(
+    /// The rings of the pistons.
+    Rings => Rings,
+    /// A piston's slide on the frame.
+    Skirt => Skirt,
+    /// A revolute joint's bearings.
+    Bearings => Bearing,
+    /// A gear mesh.
+    GearMesh => GearMesh,
+    /// An engine's valve train.
+    ValveTrainModels => ValveTrain,
+);
+
+/// A loss model's word, checked against the registry: `model` is `None` for "none".
+#[derive(Debug, Clone, Copy)]
+pub struct Model<S> {
+    pub model: Option<&'static LossModel>,
+    site: PhantomData<S>,
+}
+
+impl<S: Site> Model<S> {
+    /// The word as written.
+    pub fn word(&self) -> &'static str {
+        self.model.map_or(NONE, |m| m.name)
+    }
+}
+
+impl<'de, S: Site> Deserialize<'de> for Model<S> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let word = String::deserialize(deserializer)?;
+        let model = loss_models::find(S::ATTACHMENT, &word);
+        if model.is_none() && word != NONE {
+            let words = words(S::ATTACHMENT);
+            return Err(D::Error::custom(crate::schema::suggest(
+                "word", &word, &words,
+            )));
+        }
+        Ok(Self {
+            model,
+            site: PhantomData,
+        })
+    }
+}
+
+impl<S: Site> JsonSchema for Model<S> {
+    fn schema_name() -> Cow<'static, str> {
+        S::NAME.into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        let models: Vec<String> = loss_models::LOSS_MODELS
+            .iter()
+            .filter(|m| m.attachment == S::ATTACHMENT)
+            .map(|m| format!("\"{}\": {}", m.name, m.summary))
+            .collect();
+        json_schema!({
+            "type": "string",
+            "enum": words(S::ATTACHMENT),
+            "description": format!("{}; \"none\": no loss", models.join("; "))
+        })
+    }
+}
+
+/// `[friction.joints]`: joint name = a bearing model, or a table; in the file's order.
+#[derive(Debug, Clone, Default)]
+pub struct Joints(pub Vec<(String, Joint)>);
+
+/// One entry of `[friction.joints]`.
+#[derive(Debug, Clone)]
+pub enum Joint {
+    /// `crank_pin = "short_bearing"`.
+    Model(Model<Bearings>),
+    /// `crank_pin = { model = "palmgren", pitch_diameter = "50 mm", ... }`.
+    Table(JointTable),
+}
+
+/// A joint's bearing model and catalogue values; what is left out keeps the sizing rules.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct JointTable {
+    /// The joint's bearing model (default: `bearings`).
+    pub model: Option<Model<Bearings>>,
+    /// Pitch (mean) diameter of one bearing, m (of a plain bearing: the journal diameter).
+    pub pitch_diameter: Option<Positive<Length>>,
+    /// Basic static load rating C0 of one bearing, N.
+    pub static_load_rating: Option<Positive<Force>>,
+    /// Bearings side by side sharing the joint's load, 1 to 16.
+    pub count: Option<Count>,
+}
+
+/// A number of bearings, a whole number from 1 to 16.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Count(pub u32);
+
+impl<'de> Deserialize<'de> for Count {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let value = toml::Value::deserialize(deserializer)?;
+        let x =
+            to_si(&value, Dimension::Number).map_err(|r| D::Error::custom(broken(&value, &r)))?;
+        if x.fract() != 0.0 || !(1.0..=16.0).contains(&x) {
+            let rule = "must be a whole number from 1 to 16";
+            return Err(D::Error::custom(broken(&value, rule)));
+        }
+        Ok(Count(x as u32))
+    }
+}
+
+impl JsonSchema for Count {
+    fn schema_name() -> Cow<'static, str> {
+        "BearingCount".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({ "type": "integer", "minimum": 1, "maximum": 16 })
+    }
+}
+
+impl<'de> Deserialize<'de> for Joint {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Either;
+        impl<'de> Visitor<'de> for Either {
+            type Value = Joint;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a bearing model, or a table of model, pitch_diameter, static_load_rating, count")
+            }
+            fn visit_str<E: serde::de::Error>(self, word: &str) -> Result<Joint, E> {
+                let word = serde::de::value::StrDeserializer::<E>::new(word);
+                Model::<Bearings>::deserialize(word).map(Joint::Model)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Joint, A::Error> {
+                // Through the reader's own map, so that a field's path goes on to the field.
+                JointTable::deserialize(serde::de::value::MapAccessDeserializer::new(map))
+                    .map(Joint::Table)
+            }
+        }
+        deserializer.deserialize_any(Either)
+    }
+}
+
+impl<'de> Deserialize<'de> for Joints {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Entries;
+        impl<'de> Visitor<'de> for Entries {
+            type Value = Joints;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a table of joint name = bearing model or table")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Joints, A::Error> {
+                let mut joints = Vec::new();
+                while let Some(entry) = map.next_entry::<String, Joint>()? {
+                    joints.push(entry);
+                }
+                Ok(Joints(joints))
+            }
+        }
+        deserializer.deserialize_map(Entries)
+    }
+}
+
+impl JsonSchema for Joints {
+    fn schema_name() -> Cow<'static, str> {
+        "FrictionJoints".into()
+    }
+
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let word = generator.subschema_for::<Model<Bearings>>();
+        let table = generator.subschema_for::<JointTable>();
+        json_schema!({
+            "type": "object",
+            "additionalProperties": { "anyOf": [word, table] }
+        })
+    }
+}
+
+/// The fields only an engine reads, with their values as written.
+fn engine_fields(t: &FrictionTable) -> Vec<(&'static str, String)> {
+    let mut fields = Vec::new();
+    let mut field = |name, written: Option<String>| {
+        if let Some(w) = written {
+            fields.push((name, w));
+        }
+    };
+    field(
+        "valve_train",
+        t.valve_train.map(|m| format!("\"{}\"", m.word())),
+    );
+    let cam = t.cam_friction_coefficient.as_ref();
+    field("cam_friction_coefficient", cam.map(|q| q.written.clone()));
+    let spring = t.valve_spring_speed.as_ref();
+    field("valve_spring_speed", spring.map(|q| q.written.clone()));
+    field("accessories", t.accessories.map(|b| b.to_string()));
+    field("pumping", t.pumping.map(|b| b.to_string()));
+    let intake = t.intake_pressure.as_ref();
+    field("intake_pressure", intake.map(|q| q.written.clone()));
+    let fmep = |w: FmepWord| match w {
+        FmepWord::SandovalHeywood => "\"sandoval_heywood\"",
+        FmepWord::Pnh => "\"pnh\"",
+    };
+    field("fmep_model", t.fmep_model.map(|w| fmep(w).to_string()));
+    fields
+}
 
 /// Compression ratio of the PNH gas-loading term when the case has no gas model that gives one.
 const DEFAULT_COMPRESSION_RATIO: f64 = 10.0;
 
-const BEARING_WORDS: &[&str] = &[
-    "karhula",
-    "palmgren",
-    "skf",
-    "petroff",
-    "short_bearing",
-    "none",
-];
-
-/// Reads `[friction]`, its mesh loss on the pair of `[gear]` (`gear`), for a cylinder of
-/// `bore` (m) of a `machine`; an engine's compression ratio (for the fmep cross-check) comes
-/// from its `gas` model.
+/// Reads `[friction]` (`table`) and builds it ([`build`]); the transition's reader for a case
+/// read as a TOML table: a field that does not read is a [`CaseError::Field`] of the file and
+/// case that `invalid` names.
 pub fn parse(
     table: &toml::Table,
     gear: Option<&GearSpec>,
@@ -80,257 +333,176 @@ pub fn parse(
     gas: Option<&GasCase>,
     invalid: &Invalid,
 ) -> Result<Friction, CaseError> {
-    for (key, value) in table {
-        if !FIELDS.iter().any(|(f, _)| f == key) {
-            return Err(invalid(
-                &format!("friction.{key}"),
-                value,
-                &format!(
-                    "unknown field: [friction] has {}",
-                    FIELDS.map(|(f, _)| f).join(", ")
-                ),
-            ));
-        }
-    }
-    let field = |name: &str| table.get(name).map(|v| (format!("friction.{name}"), v));
-    let number = |name: &str, default: f64, positive: bool| -> Result<f64, CaseError> {
-        let dim = FIELDS
-            .iter()
-            .find(|(f, _)| *f == name)
-            .map_or(Dimension::Number, |(_, d)| *d);
-        match field(name) {
-            None => Ok(default),
-            Some((path, v)) => {
-                let x = to_si(v, dim).map_err(|rule| invalid(&path, v, &rule))?;
-                if positive && x <= 0.0 {
-                    Err(invalid(&path, v, "must be positive"))
-                } else if x < 0.0 {
-                    Err(invalid(&path, v, "must not be negative"))
-                } else {
-                    Ok(x)
-                }
-            }
-        }
-    };
-    let word = |name: &str, words: &[&str], default: &'static str| -> Result<String, CaseError> {
-        match field(name) {
-            None => Ok(default.to_string()),
-            Some((path, v)) => match v.as_str() {
-                Some(w) if words.contains(&w) => Ok(w.to_string()),
-                _ => Err(invalid(&path, v, &one_of(words))),
-            },
-        }
-    };
+    let typed: FrictionTable = crate::schema::read(toml::Value::Table(table.clone()), "friction")
+        .map_err(|error| match invalid("", &"", "") {
+        CaseError::Invalid { file, case, .. } => CaseError::Field { file, case, error },
+        other => other,
+    })?;
+    build(&typed, gear, bore, machine, gas, invalid)
+}
 
+/// The loss models of `[friction]` (`table`), its mesh loss on the pair of `[gear]` (`gear`),
+/// for a cylinder of `bore` (m) of a `machine`; an engine's compression ratio (for the fmep
+/// cross-check) comes from its `gas` model. Checks what the schema cannot: the engine fields
+/// (refused for a pump; the valve train's own fields without one) and the intake pressure.
+pub fn build(
+    table: &FrictionTable,
+    gear: Option<&GearSpec>,
+    bore: f64,
+    machine: Machine,
+    gas: Option<&GasCase>,
+    invalid: &Invalid,
+) -> Result<Friction, CaseError> {
+    let p = parameters(table);
+    // A model written (`Some(None)`: "none"), else the attachment's default.
+    let setting = |written: Option<Option<&'static LossModel>>, attachment| {
+        let model = written.unwrap_or_else(|| loss_models::default_model(attachment));
+        model.map(|m| (m.setting)(&p, bore))
+    };
     let mut f = Friction::karhula();
-    f.oil.kinematic_viscosity = number("oil_viscosity", f.oil.kinematic_viscosity, true)?;
-    f.oil.density = number("oil_density", f.oil.density, true)?;
-    f.rings = match word("rings", &["karhula", "film", "none"], "karhula")?.as_str() {
-        "karhula" => Some(Rings::Karhula {
-            friction_coefficient: number("ring_friction_coefficient", 0.07, false)?,
-        }),
-        "film" => Some(Rings::Film {
-            crown_height: number("ring_crown_height", 5e-6, true)?,
-        }),
+    if let Some(q) = &table.oil_viscosity {
+        f.oil.kinematic_viscosity = q.si;
+    }
+    if let Some(q) = &table.oil_density {
+        f.oil.density = q.si;
+    }
+    f.rings = match setting(table.rings.map(|m| m.model), Attachment::Rings) {
+        Some(Setting::Rings(r)) => Some(r),
         _ => None,
     };
-    f.skirt = match word("skirt", &["karhula", "viscous", "none"], "karhula")?.as_str() {
-        "karhula" => Some(Skirt::Coulomb {
-            friction_coefficient: number("skirt_friction_coefficient", 0.09, false)?,
-        }),
-        // Thai thesis example proportions: a skirt of 0.6 bore and 20 µm clearance.
-        "viscous" => Some(Skirt::Viscous {
-            length: number("skirt_length", 0.6 * bore, true)?,
-            clearance: number("skirt_clearance", 20e-6, true)?,
-        }),
+    f.skirt = match setting(table.skirt.map(|m| m.model), Attachment::Skirt) {
+        Some(Setting::Skirt(s)) => Some(s),
         _ => None,
     };
-    f.slide_friction_coefficient = number(
-        "slide_friction_coefficient",
-        f.slide_friction_coefficient,
-        false,
-    )?;
-    let f0 = number("lubrication_factor", 2.0, true)?;
-    let load_constant = number("bearing_load_constant", KARHULA_LOAD_CONSTANT, true)?;
-    let length_ratio = number("journal_length_ratio", 0.5, true)?;
-    let clearance_ratio = number("journal_clearance_ratio", 1e-3, true)?;
-    let bearing = |w: &str| match w {
-        "karhula" => Some(Bearing::Rolling(RollingReading::Karhula {
-            f0,
-            load_constant,
-        })),
-        "palmgren" => Some(Bearing::Rolling(RollingReading::Palmgren(
-            PalmgrenCoefficients {
-                f0,
-                ..PalmgrenCoefficients::DEEP_GROOVE_BALL
-            },
-        ))),
-        "skf" => Some(Bearing::Rolling(RollingReading::Skf(
-            SkfDeepGrooveBall::SERIES_62,
-        ))),
-        "petroff" | "short_bearing" => Some(Bearing::Journal {
-            short_bearing: w == "short_bearing",
-            length_ratio,
-            clearance_ratio,
-        }),
-        _ => None,
-    };
-    f.bearings = bearing(&word("bearings", BEARING_WORDS, "karhula")?);
-    if let Some((path, v)) = field("joints") {
-        let Some(joints) = v.as_table() else {
-            return Err(invalid(
-                &path,
-                v,
-                "must be a table of joint name = bearing model, or joint name = { model, pitch_diameter, static_load_rating, count }",
-            ));
+    if let Some(q) = &table.slide_friction_coefficient {
+        f.slide_friction_coefficient = q.si;
+    }
+    let bearing =
+        |m: Option<Model<Bearings>>| match setting(m.map(|m| m.model), Attachment::Bearing) {
+            Some(Setting::Bearing(b)) => Some(b),
+            _ => None,
         };
-        for (joint, v) in joints {
-            let at = format!("{path}.{joint}");
-            let model = |v: &toml::Value, at: &str| match v.as_str() {
-                Some(w) if BEARING_WORDS.contains(&w) => Ok(bearing(w)),
-                _ => Err(invalid(at, v, &one_of(BEARING_WORDS))),
-            };
-            // A model name, or a table of a model and catalogue values.
-            let Some(t) = v.as_table() else {
-                f.joint_bearings.push((joint.clone(), model(v, &at)?));
-                continue;
-            };
-            let mut size = BearingSize::default();
-            for (key, value) in t {
-                let field = format!("{at}.{key}");
-                let positive = |dim: Dimension| {
-                    let x = to_si(value, dim).map_err(|rule| invalid(&field, value, &rule))?;
-                    if x > 0.0 {
-                        Ok(x)
-                    } else {
-                        Err(invalid(&field, value, "must be positive"))
-                    }
-                };
-                match key.as_str() {
-                    "model" => f.joint_bearings.push((joint.clone(), model(value, &field)?)),
-                    "pitch_diameter" => size.pitch_diameter = Some(positive(Dimension::Length)?),
-                    "static_load_rating" => {
-                        size.static_load_rating = Some(positive(Dimension::Force)?)
-                    }
-                    "count" => {
-                        let x = positive(Dimension::Number)?;
-                        if x.fract() != 0.0 || x > 16.0 {
-                            return Err(invalid(&field, value, "must be a whole number from 1 to 16"));
-                        }
-                        size.count = Some(x as u32);
-                    }
-                    _ => {
-                        return Err(invalid(
-                            &field,
-                            value,
-                            "unknown field: a joint's table has model, pitch_diameter, static_load_rating, count",
-                        ))
-                    }
+    f.bearings = bearing(table.bearings);
+    for (name, joint) in table.joints.iter().flat_map(|j| &j.0) {
+        match joint {
+            Joint::Model(m) => f.joint_bearings.push((name.clone(), bearing(Some(*m)))),
+            Joint::Table(t) => {
+                if let Some(m) = t.model {
+                    f.joint_bearings.push((name.clone(), bearing(Some(m))));
                 }
+                let size = BearingSize {
+                    pitch_diameter: t.pitch_diameter.as_ref().map(|q| q.si),
+                    static_load_rating: t.static_load_rating.as_ref().map(|q| q.si),
+                    count: t.count.map(|c| c.0),
+                };
+                f.joint_sizes.push((name.clone(), size));
             }
-            f.joint_sizes.push((joint.clone(), size));
         }
     }
     f.engine = match machine {
-        Machine::Engine => Some(engine(table, gas, &number, &word, invalid)?),
+        Machine::Engine => Some(engine(table, &p, gas, invalid)?),
         Machine::Pump => {
-            if let Some(key) = ENGINE_FIELDS.iter().find(|k| table.contains_key(**k)) {
+            if let Some((field, written)) = engine_fields(table).into_iter().next() {
                 return Err(invalid(
-                    &format!("friction.{key}"),
-                    &table[*key],
+                    &format!("friction.{field}"),
+                    &written,
                     "only an engine has a valve train, accessories and pumping losses (and an fmep): this case has machine = \"pump\"",
                 ));
             }
             None
         }
     };
-    f.gear_mesh = match word("gear_mesh", &["karhula", "corrected", "none"], "karhula")?.as_str() {
-        "none" => None,
-        w => Some(MeshLossModel {
-            reading: if w == "karhula" {
-                Reading::Karhula
-            } else {
-                Reading::Corrected
-            },
+    f.gear_mesh = match setting(table.gear_mesh.map(|m| m.model), Attachment::GearMesh) {
+        Some(Setting::GearMesh(reading)) => Some(MeshLossModel {
+            reading,
             pair: gear.copied().unwrap_or_default(),
         }),
+        _ => None,
     };
     Ok(f)
 }
 
-/// Reads a number field of `[friction]`: (name, default, must be positive).
-type NumberField<'a> = dyn Fn(&str, f64, bool) -> Result<f64, CaseError> + 'a;
+/// A quantity's value in SI, else `default`.
+fn si_or<D, const RULE: u8>(q: &Option<Quantity<D, RULE>>, default: f64) -> f64 {
+    q.as_ref().map_or(default, |q| q.si)
+}
 
-/// Reads a word field of `[friction]`: (name, the words it may be, default).
-type WordField<'a> = dyn Fn(&str, &[&str], &'static str) -> Result<String, CaseError> + 'a;
+/// The models' parameters: the table's, else the defaults.
+fn parameters(t: &FrictionTable) -> Parameters {
+    let d = Parameters::default();
+    Parameters {
+        ring_friction_coefficient: si_or(&t.ring_friction_coefficient, d.ring_friction_coefficient),
+        ring_crown_height: si_or(&t.ring_crown_height, d.ring_crown_height),
+        skirt_friction_coefficient: si_or(
+            &t.skirt_friction_coefficient,
+            d.skirt_friction_coefficient,
+        ),
+        skirt_length: t.skirt_length.as_ref().map(|q| q.si).or(d.skirt_length),
+        skirt_clearance: si_or(&t.skirt_clearance, d.skirt_clearance),
+        lubrication_factor: si_or(&t.lubrication_factor, d.lubrication_factor),
+        bearing_load_constant: si_or(&t.bearing_load_constant, d.bearing_load_constant),
+        journal_length_ratio: si_or(&t.journal_length_ratio, d.journal_length_ratio),
+        journal_clearance_ratio: si_or(&t.journal_clearance_ratio, d.journal_clearance_ratio),
+        cam_friction_coefficient: si_or(&t.cam_friction_coefficient, d.cam_friction_coefficient),
+    }
+}
 
 /// The engine components of `[friction]` (every one off by default) and the settings of the
 /// fmep cross-check.
 fn engine(
-    table: &toml::Table,
+    t: &FrictionTable,
+    p: &Parameters,
     gas: Option<&GasCase>,
-    number: &NumberField,
-    word: &WordField,
     invalid: &Invalid,
 ) -> Result<EngineLosses, CaseError> {
-    let flag = |name: &str| -> Result<bool, CaseError> {
-        match table.get(name) {
-            None => Ok(false),
-            Some(v) => v
-                .as_bool()
-                .ok_or_else(|| invalid(&format!("friction.{name}"), v, "must be true or false")),
-        }
-    };
     let mut e = EngineLosses::off();
-    if let Some(Clearance::CompressionRatio(r)) = gas.map(|g| g.clearance) {
-        e.compression_ratio = r;
-    } else {
-        e.compression_ratio = DEFAULT_COMPRESSION_RATIO;
-    }
-    let train = word("valve_train", &["none", "flat", "roller"], "none")?;
-    // A field that only one valve train reads is an error with any other.
-    let only = |name: &str, rule: &str| -> Result<(), CaseError> {
-        match table.get(name) {
-            Some(v) => Err(invalid(&format!("friction.{name}"), v, rule)),
-            None => Ok(()),
-        }
+    e.compression_ratio = match gas.map(|g| g.clearance) {
+        Some(Clearance::CompressionRatio(r)) => r,
+        _ => DEFAULT_COMPRESSION_RATIO,
     };
-    e.valve_train = match train.as_str() {
-        "none" => {
-            for name in ["cam_friction_coefficient", "valve_spring_speed"] {
-                only(
-                    name,
-                    "is read only with valve_train = \"flat\" or \"roller\" (the valve train is off)",
-                )?;
-            }
+    let train = t.valve_train.and_then(|m| m.model);
+    // A field that only one valve train reads is an error with any other.
+    let cam = t.cam_friction_coefficient.as_ref().map(|q| &q.written);
+    let spring = t.valve_spring_speed.as_ref();
+    let only = |field: &str, written: Option<&String>, rule: &str| match written {
+        Some(w) => Err(invalid(&format!("friction.{field}"), w, rule)),
+        None => Ok(()),
+    };
+    e.valve_train = match train {
+        None => {
+            let rule =
+                "is read only with valve_train = \"flat\" or \"roller\" (the valve train is off)";
+            only("cam_friction_coefficient", cam, rule)?;
+            only("valve_spring_speed", spring.map(|q| &q.written), rule)?;
             None
         }
-        w => {
-            let follower = if w == "flat" {
-                FollowerContact::Flat {
-                    friction_coefficient: number("cam_friction_coefficient", 0.08, false)?,
-                }
-            } else {
+        Some(model) => {
+            let Setting::ValveTrain(follower) = (model.setting)(p, 0.0) else {
+                unreachable!("a valve-train model gives a follower")
+            };
+            if model.name != "flat" {
                 only(
                     "cam_friction_coefficient",
+                    cam,
                     "is read only with valve_train = \"flat\" (a roller follower rolls: its loss is rolling resistance and the roller's pin bearing)",
                 )?;
-                FollowerContact::ROLLER
-            };
+            }
             let mut v = ValveTrain::new(follower);
-            v.spring_speed = number("valve_spring_speed", v.spring_speed, true)?;
+            if let Some(q) = spring {
+                v.spring_speed = q.si;
+            }
             Some(v)
         }
     };
-    e.accessories = flag("accessories")?;
-    e.pumping = flag("pumping")?;
-    e.intake_pressure = number("intake_pressure", AMBIENT_PRESSURE, true)?;
-    if let Some(v) = table.get("intake_pressure") {
+    e.accessories = t.accessories.unwrap_or(false);
+    e.pumping = t.pumping.unwrap_or(false);
+    if let Some(q) = &t.intake_pressure {
+        e.intake_pressure = q.si;
         let pa = e.ambient_pressure;
         if !(e.intake_pressure > 0.1 * pa && e.intake_pressure <= pa) {
             return Err(invalid(
                 "friction.intake_pressure",
-                v,
+                &q.written,
                 &format!(
                     "must be above 0.1 × ambient ({} Pa, where Bishop's standard imep is zero) and at most ambient ({pa} Pa: wide-open throttle; Bishop's engines are not boosted)",
                     0.1 * pa
@@ -338,26 +510,109 @@ fn engine(
             ));
         }
     }
-    e.fmep_model = match word(
-        "fmep_model",
-        &["sandoval_heywood", "pnh"],
-        "sandoval_heywood",
-    )?
-    .as_str()
-    {
-        "pnh" => FmepModel::Pnh1989,
-        _ => FmepModel::SandovalHeywood2003,
+    e.fmep_model = match t.fmep_model {
+        Some(FmepWord::Pnh) => FmepModel::Pnh1989,
+        Some(FmepWord::SandovalHeywood) | None => FmepModel::SandovalHeywood2003,
     };
     Ok(e)
 }
 
-fn one_of(words: &[&str]) -> String {
-    format!(
-        "must be one of {}",
-        words
-            .iter()
-            .map(|w| format!("\"{w}\""))
-            .collect::<Vec<_>>()
-            .join(", ")
-    )
+/// Every joint `[friction.joints]` names must be a revolute joint of a mechanism of the case.
+pub fn check_joints(
+    table: &FrictionTable,
+    mechanisms: &[Arc<dyn Mechanism>],
+    invalid: &Invalid,
+) -> Result<(), CaseError> {
+    for (joint, entry) in table.joints.iter().flat_map(|j| &j.0) {
+        let revolute = |m: &Arc<dyn Mechanism>| {
+            let t = m.topology();
+            t.joints
+                .iter()
+                .any(|j| j.name == joint && matches!(j.kind, JointKind::Revolute(_)))
+        };
+        if !mechanisms.iter().any(revolute) {
+            let written = match entry {
+                Joint::Model(m) => format!("\"{}\"", m.word()),
+                Joint::Table(_) => "a table".to_string(),
+            };
+            return Err(invalid(
+                &format!("friction.joints.{joint}"),
+                &written,
+                "no mechanism of the case has a revolute joint of this name (see summary.json's joints)",
+            ));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn error(text: &str) -> String {
+        let value: toml::Value = toml::from_str(text).unwrap();
+        crate::schema::read::<FrictionTable>(value, "friction")
+            .unwrap_err()
+            .to_string()
+    }
+
+    #[test]
+    fn a_misspelled_field_names_its_path_and_the_nearest_field() {
+        let e = error("ring_frction_coefficient = 0.1");
+        assert!(
+            e.starts_with("friction.ring_frction_coefficient: unknown field \"ring_frction_coefficient\": did you mean \"ring_friction_coefficient\"?"),
+            "{e}"
+        );
+        let e = error("[joints]\ncrank_pin = { modle = \"skf\" }");
+        assert!(
+            e.starts_with(
+                "friction.joints.crank_pin.modle: unknown field \"modle\": did you mean \"model\"?"
+            ),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_misspelled_model_names_its_path_and_the_nearest_model_of_the_registry() {
+        let e = error("rings = \"flim\"");
+        assert_eq!(
+            e,
+            "friction.rings: unknown word \"flim\": did you mean \"film\"? (the words here: karhula, film, none)"
+        );
+        let e = error("[joints]\ncrank_pin = \"palmgrn\"");
+        assert!(
+            e.starts_with(
+                "friction.joints.crank_pin: unknown word \"palmgrn\": did you mean \"palmgren\"?"
+            ),
+            "{e}"
+        );
+        let e = error("[joints]\nmain_bearing = { model = \"short_baering\" }");
+        assert!(
+            e.starts_with("friction.joints.main_bearing.model: unknown word \"short_baering\": did you mean \"short_bearing\"?"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn an_empty_table_is_karhulas_set() {
+        let t: FrictionTable =
+            crate::schema::read(toml::Value::Table(Default::default()), "friction").unwrap();
+        let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
+            file: "x.toml".into(),
+            case: "x".into(),
+            field: field.into(),
+            value: value.to_string(),
+            rule: rule.into(),
+        };
+        let f = build(&t, None, 0.12, Machine::Pump, None, &invalid).unwrap();
+        assert_eq!(f, Friction::karhula());
+    }
+
+    #[test]
+    fn the_schema_lists_the_registrys_words() {
+        let schema = serde_json::to_string(&schemars::schema_for!(FrictionTable)).unwrap();
+        for m in loss_models::LOSS_MODELS {
+            assert!(schema.contains(&format!("\"{}\"", m.name)), "{}", m.name);
+        }
+    }
 }

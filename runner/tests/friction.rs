@@ -293,3 +293,42 @@ fn joint_tables_take_catalogue_values_and_name_bad_ones() {
         assert!(e.contains(field) && e.contains(rule), "{joints}: {e}");
     }
 }
+
+#[test]
+fn a_misspelled_field_or_model_names_the_path_and_the_nearest_name() {
+    let path = Path::new("pump.toml");
+    let base = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../configs/karhula-pump-r60-l140-a0-w30pi.toml"),
+    )
+    .unwrap();
+    for (friction, parts) in [
+        (
+            "skirt_frictoin_coefficient = 0.1",
+            &[
+                "pump.toml",
+                "friction.skirt_frictoin_coefficient",
+                "did you mean \"skirt_friction_coefficient\"",
+            ][..],
+        ),
+        (
+            "bearings = \"petrof\"",
+            &[
+                "friction.bearings",
+                "unknown word \"petrof\"",
+                "did you mean \"petroff\"",
+                "karhula, palmgren, skf, petroff, short_bearing, none",
+            ][..],
+        ),
+        (
+            "[friction.joints]\ncrank_pin = { model = \"skff\" }",
+            &["friction.joints.crank_pin.model", "did you mean \"skf\""][..],
+        ),
+    ] {
+        let text = format!("{base}\n[friction]\n{friction}\n");
+        let e = cardan_case::case::parse(path, &text)
+            .unwrap_err()
+            .to_string();
+        cardan_testing::mentions(&e, parts);
+    }
+}

@@ -19,6 +19,7 @@ pub mod energy;
 pub mod engine_losses;
 pub mod family;
 pub mod gear_rating;
+pub mod loss_models;
 pub mod losses;
 pub mod metrics;
 pub mod parallel;
@@ -33,8 +34,10 @@ pub use engine_losses::{
 };
 pub use family::{Gas, Inertial, LoadFamily, Solver};
 pub use gear_rating::{GearMaterial, GearRatings, GearSpec, MeshRating, ToothLoad};
+pub use loss_models::{Attachment, LossModel, Parameters, Setting, LOSS_MODELS};
 pub use losses::{
-    Bearing, BearingSize, Friction, LossBudget, LossError, MeshLossModel, Oil, Rings, Skirt,
+    At, Bearing, BearingSize, Friction, Loss, LossBudget, LossError, MeshLossModel, Oil, Rings,
+    Skirt,
 };
 pub use metrics::{Aggregation, MetricDef, METRICS};
 pub use parallel::{run_parallel, Joinable};

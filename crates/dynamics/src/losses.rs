@@ -17,19 +17,17 @@
 //! - of an engine ([`Friction::engine`]) with a cylinder, each if switched on: `valve_train`,
 //!   `accessories`, `pumping` ([`crate::engine_losses`]), at the step's crank speed.
 
-use crate::gear_rating::{mesh_pair, mesh_speeds, GearSpec};
-use cardan_friction::{
-    coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
-    KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel, RollingReading,
-    ViscousSkirt, KARHULA_LOAD_CONSTANT,
-};
-use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, Reading};
-use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
+pub mod models;
 
-use crate::engine_losses::{
-    accessories_power, displacement, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
+use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
+use crate::gear_rating::{mesh_pair, GearSpec};
+use crate::loss_models::Parameters;
+use cardan_friction::{
+    AsperityContact, JournalBearing, KarhulaRingPack, RingFilm, RingProfile, RollingBearing,
+    RollingModel, RollingReading, ViscousSkirt, KARHULA_SKIRT_MU,
 };
-use crate::summary::tangential;
+use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, Reading};
+use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
 
 /// The lubricant of every lubricated contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -158,25 +156,27 @@ pub struct Friction {
 }
 
 impl Friction {
-    /// Karhula's (2008) App. 9.1 models and values: ring pack with μ = 0.07, Coulomb skirt with
-    /// μ = 0.09, rolling bearings in his reading with f0 = 2, mesh loss as printed with z1 = 20,
-    /// oil of 5 mm²/s and 900 kg/m³; no engine components (the thesis has none).
+    /// Karhula's (2008) App. 9.1 models and values ([`Parameters::default`]): ring pack with
+    /// μ = 0.07, Coulomb skirt (and other slides) with μ = 0.09, rolling bearings in his reading
+    /// with f0 = 2, mesh loss as printed with z1 = 20, oil of 5 mm²/s and 900 kg/m³; no engine
+    /// components (the thesis has none).
     pub fn karhula() -> Self {
+        let p = Parameters::default();
         Self {
             oil: Oil {
                 kinematic_viscosity: 5e-6,
                 density: 900.0,
             },
             rings: Some(Rings::Karhula {
-                friction_coefficient: 0.07,
+                friction_coefficient: p.ring_friction_coefficient,
             }),
             skirt: Some(Skirt::Coulomb {
-                friction_coefficient: 0.09,
+                friction_coefficient: p.skirt_friction_coefficient,
             }),
-            slide_friction_coefficient: 0.09,
+            slide_friction_coefficient: KARHULA_SKIRT_MU,
             bearings: Some(Bearing::Rolling(RollingReading::Karhula {
-                f0: 2.0,
-                load_constant: KARHULA_LOAD_CONSTANT,
+                f0: p.lubrication_factor,
+                load_constant: p.bearing_load_constant,
             })),
             joint_bearings: Vec::new(),
             joint_sizes: Vec::new(),
@@ -189,71 +189,54 @@ impl Friction {
     }
 }
 
-/// One component's model, bound to its piston or joint.
-#[derive(Debug, Clone)]
-enum Part {
-    /// All pistons' rings, constant force μ·F_cont.
-    RingPack { force: f64 },
-    /// All pistons' rings on films; the minimum film of each ring of each piston (`None` before
-    /// the first step) and the time of the previous step.
-    RingFilms {
-        rings: Vec<(RingFilm, f64, bool)>,
-        films: Vec<Option<f64>>,
-        time: Option<f64>,
-        viscosity: f64,
-    },
-    Coulomb {
-        joint: usize,
-        friction_coefficient: f64,
-    },
-    ViscousSkirt {
-        joint: usize,
-        skirt: ViscousSkirt,
-        viscosity: f64,
-    },
-    Rolling {
-        joint: usize,
-        /// The bearing in its reading.
-        model: RollingModel,
-        count: f64,
-        /// Kinematic viscosity, m²/s (the rolling readings' input).
-        viscosity: f64,
-    },
-    Journal {
-        joint: usize,
-        bearing: JournalBearing,
-        count: f64,
-        short: bool,
-        viscosity: f64,
-    },
-    Mesh {
-        joint: usize,
-        /// The body carrying the pinion.
-        body: usize,
-        geometry: MeshGeometry,
-        lubricant: Lubricant,
-        reading: Reading,
-        pitch_radius: f64,
-        /// Gear sets sharing the load (2 for a twin set): each carries its share and loses
-        /// its own, as in the gear rating.
-        sets: f64,
-    },
-    /// The cylinder's valve train.
-    ValveTrain(ValveTrainLoss),
-    /// Bishop's accessories on the swept volume, m³.
-    Accessories { displacement: f64 },
-    /// Bishop's throttling loss on the swept volume, m³.
-    Pumping {
-        displacement: f64,
-        engine: EngineLosses,
-    },
+/// What a loss model reads at a step.
+#[derive(Debug, Clone, Copy)]
+pub struct At<'a> {
+    /// The step's state (crank, pistons, joints).
+    pub state: &'a State,
+    /// The total (lossless) loads.
+    pub total: &'a Loads,
+    /// Absolute cylinder pressure, Pa, if a gas model runs.
+    pub pressure: Option<f64>,
+    /// The loss (W) of each gear-mesh joint a [`crate::GearRatings`] has rated at this step.
+    pub rated_meshes: &'a [(usize, f64)],
+}
+
+/// A loss model bound to its piston, joint or crank: its power loss step by step. A model is a
+/// type of [`models`] (or of its own module) implementing this and deriving `Clone`.
+pub trait Loss: LossClone + std::fmt::Debug + Send + Sync {
+    /// The power loss at the step, W; `Err`: why it cannot be computed.
+    fn power(&mut self, at: &At) -> Result<f64, String>;
+
+    /// Whether a step's loss depends on the steps before it (then the steps are taken in
+    /// order, by one thread).
+    fn carries_history(&self) -> bool {
+        false
+    }
+}
+
+/// A boxed [`Loss`] cloned (every `Clone` model has it).
+pub trait LossClone {
+    fn clone_box(&self) -> Box<dyn Loss>;
+}
+
+impl<T: Loss + Clone + 'static> LossClone for T {
+    fn clone_box(&self) -> Box<dyn Loss> {
+        Box::new(self.clone())
+    }
+}
+
+impl Clone for Box<dyn Loss> {
+    fn clone(&self) -> Self {
+        self.clone_box()
+    }
 }
 
 /// The loss models of one mechanism, ready to evaluate step by step.
 #[derive(Debug, Clone)]
 pub struct LossBudget {
     names: Vec<String>,
-    parts: Vec<Part>,
+    parts: Vec<Box<dyn Loss>>,
 }
 
 /// A loss model that cannot be set up for a mechanism: the case field at fault and why.
@@ -277,53 +260,13 @@ impl LossBudget {
         bore: f64,
     ) -> Result<Self, LossError> {
         let t = mechanism.topology();
-        let failed = |field: &str, e: &dyn std::fmt::Display| LossError {
-            field: field.to_string(),
-            rule: e.to_string(),
-        };
         let viscosity = friction.oil.dynamic_viscosity();
         let mut names = Vec::new();
         let mut parts = Vec::new();
         if mechanism.has_cylinder() {
             if let Some(rings) = friction.rings {
-                let pack =
-                    KarhulaRingPack::karhula(bore).map_err(|e| failed("geometry.bore", &e))?;
                 names.push("rings".to_string());
-                parts.push(match rings {
-                    Rings::Karhula {
-                        friction_coefficient,
-                    } => Part::RingPack {
-                        force: friction_coefficient * pack.contact_force(),
-                    },
-                    Rings::Film { crown_height } => {
-                        let ring = |height: f64, pressure: f64, top: bool| {
-                            let profile = RingProfile::Barrel {
-                                width: height,
-                                crown_height,
-                            };
-                            RingFilm::new(profile, bore, AsperityContact::typical())
-                                .map(|f| (f, pressure, top))
-                                .map_err(|e| failed("friction.ring_crown_height", &e))
-                        };
-                        let mut rings = Vec::new();
-                        for k in 0..pack.compression_rings {
-                            rings.push(ring(
-                                pack.compression_ring_height,
-                                pack.compression_ring_pressure,
-                                k == 0,
-                            )?);
-                        }
-                        for _ in 0..pack.oil_rings {
-                            rings.push(ring(pack.oil_ring_height, pack.oil_ring_pressure, false)?);
-                        }
-                        Part::RingFilms {
-                            films: vec![None; rings.len() * t.pistons.len()],
-                            rings,
-                            time: None,
-                            viscosity,
-                        }
-                    }
-                });
+                parts.push(rings.bind(bore, t.pistons.len(), viscosity)?);
             }
         }
         for (k, j) in t.joints.iter().enumerate() {
@@ -332,25 +275,8 @@ impl LossBudget {
                     let skirt = j.other.is_none() && t.pistons.iter().any(|p| p.body == j.body);
                     let part = match (skirt, friction.skirt) {
                         (true, None) => continue,
-                        (true, Some(Skirt::Viscous { length, clearance })) => Part::ViscousSkirt {
-                            joint: k,
-                            skirt: ViscousSkirt::new(bore, length, clearance)
-                                .map_err(|e| failed("friction.skirt_length", &e))?,
-                            viscosity,
-                        },
-                        (
-                            true,
-                            Some(Skirt::Coulomb {
-                                friction_coefficient,
-                            }),
-                        ) => Part::Coulomb {
-                            joint: k,
-                            friction_coefficient,
-                        },
-                        (false, _) => Part::Coulomb {
-                            joint: k,
-                            friction_coefficient: friction.slide_friction_coefficient,
-                        },
+                        (true, Some(model)) => model.bind(k, bore, viscosity)?,
+                        (false, _) => models::coulomb(k, friction.slide_friction_coefficient),
                     };
                     names.push(if skirt { "skirt" } else { j.name }.to_string());
                     parts.push(part);
@@ -367,7 +293,7 @@ impl LossBudget {
                         .iter()
                         .find(|(name, _)| name == j.name)
                         .map_or(b, |(_, size)| size.apply(b));
-                    parts.push(bearing_part(k, b, model, &friction.oil)?);
+                    parts.push(model.bind(k, b, &friction.oil)?);
                     names.push(j.name.to_string());
                 }
                 JointKind::GearMesh {
@@ -383,7 +309,7 @@ impl LossBudget {
                     let geometry =
                         mesh_geometry(&mesh, ratio, pitch_radius, internal, pressure_angle)?;
                     names.push(j.name.to_string());
-                    parts.push(Part::Mesh {
+                    parts.push(Box::new(models::Mesh {
                         joint: k,
                         body: j.body,
                         geometry,
@@ -394,7 +320,7 @@ impl LossBudget {
                         reading: mesh.reading,
                         pitch_radius,
                         sets: if mesh.pair.twin { 2.0 } else { 1.0 },
-                    });
+                    }));
                 }
             }
         }
@@ -407,20 +333,20 @@ impl LossBudget {
                 let part = ValveTrainLoss::new(train, bore, mechanism.top_dead_centre())
                     .map_err(|e| failed("friction.valve_train", &e))?;
                 names.push("valve_train".to_string());
-                parts.push(Part::ValveTrain(part));
+                parts.push(Box::new(part));
             }
             if engine.accessories {
                 names.push("accessories".to_string());
-                parts.push(Part::Accessories {
+                parts.push(Box::new(models::Accessories {
                     displacement: volume,
-                });
+                }));
             }
             if engine.pumping {
                 names.push("pumping".to_string());
-                parts.push(Part::Pumping {
+                parts.push(Box::new(models::Pumping {
                     displacement: volume,
                     engine: *engine,
-                });
+                }));
             }
         }
         Ok(Self { names, parts })
@@ -435,9 +361,7 @@ impl LossBudget {
     /// carries each film's thickness from step to step): then the steps must be taken in
     /// order, by one thread.
     pub fn carries_history(&self) -> bool {
-        self.parts
-            .iter()
-            .any(|p| matches!(p, Part::RingFilms { .. }))
+        self.parts.iter().any(|p| p.carries_history())
     }
 
     /// The power loss of each component at `state` under the `total` loads, W, into `out`
@@ -452,166 +376,120 @@ impl LossBudget {
         rated_meshes: &[(usize, f64)],
         out: &mut [f64],
     ) -> Result<(), String> {
+        let at = At {
+            state,
+            total,
+            pressure,
+            rated_meshes,
+        };
         for (part, out) in self.parts.iter_mut().zip(out.iter_mut()) {
-            *out = match part {
-                Part::RingPack { force } => state
-                    .pistons
-                    .iter()
-                    .map(|p| *force * p.velocity.abs())
-                    .sum(),
-                Part::RingFilms {
-                    rings,
-                    films,
-                    time,
-                    viscosity,
-                } => {
-                    let now = state.crank.time;
-                    let dt = time.map(|t0| now - t0).filter(|dt| *dt > 0.0);
-                    *time = Some(now);
-                    let gauge = pressure.map_or(0.0, |p| (p - AMBIENT_PRESSURE).max(0.0));
-                    let mut power = 0.0;
-                    let per_piston = rings.len();
-                    for (k, p) in state.pistons.iter().enumerate() {
-                        for (r, (film, elastic, top)) in rings.iter().enumerate() {
-                            let load = RingLoad {
-                                elastic_pressure: *elastic,
-                                gas_pressure_behind: if *top { gauge } else { 0.0 },
-                            };
-                            let h = &mut films[k * per_piston + r];
-                            let s = match (*h, dt) {
-                                (Some(h0), Some(dt)) => {
-                                    film.step(h0, dt, *viscosity, p.velocity, load)
-                                }
-                                _ => film.quasi_steady(*viscosity, p.velocity, load),
-                            };
-                            *h = Some(s.min_film_thickness);
-                            power += s.loss.power;
-                        }
-                    }
-                    power
-                }
-                Part::Coulomb {
-                    joint,
-                    friction_coefficient,
-                } => {
-                    coulomb_sliding(
-                        *friction_coefficient,
-                        total.joints[*joint].force.norm(),
-                        state.joints[*joint].relative_speed,
-                    )
-                    .power
-                }
-                Part::ViscousSkirt {
-                    joint,
-                    skirt,
-                    viscosity,
-                } => viscous_skirt(skirt, *viscosity, state.joints[*joint].relative_speed).power,
-                Part::Rolling {
-                    joint,
-                    model,
-                    count,
-                    viscosity,
-                } => {
-                    // Each of `count` bearings carries an equal share (A9.1.23-25).
-                    let share = total.joints[*joint].force.norm() / *count;
-                    let w = state.joints[*joint].relative_speed;
-                    *count * model.loss(share, w, *viscosity).power
-                }
-                Part::Journal {
-                    joint,
-                    bearing,
-                    count,
-                    short,
-                    viscosity,
-                } => {
-                    let share = total.joints[*joint].force.norm() / *count;
-                    let w = state.joints[*joint].relative_speed;
-                    *count
-                        * if *short {
-                            short_bearing(bearing, *viscosity, share, w, w).loss.power
-                        } else {
-                            petroff(bearing, *viscosity, w, share).0.power
-                        }
-                }
-                Part::Mesh {
-                    joint,
-                    body,
-                    geometry,
-                    lubricant,
-                    reading,
-                    pitch_radius,
-                    sets,
-                } => {
-                    // A rated mesh's loss is the rating's (the same model on the same pair):
-                    // computed once.
-                    match rated_meshes.iter().find(|(j, _)| j == joint) {
-                        Some(&(_, loss)) => loss,
-                        None => {
-                            let ft = tangential(total.joints[*joint].force, &state.joints[*joint]);
-                            let speeds = mesh_speeds(state, *joint, *body, *pitch_radius);
-                            *sets
-                                * mesh_loss(geometry, lubricant, &speeds, ft / *sets, *reading)
-                                    .map_err(|e| format!("gear mesh loss: {e}"))?
-                                    .total_power
-                        }
-                    }
-                }
-                Part::ValveTrain(train) => train.power(
-                    state.crank.angle,
-                    state.crank.speed,
-                    state.crank.acceleration,
-                ),
-                Part::Accessories { displacement } => {
-                    accessories_power(*displacement, state.crank.speed)
-                }
-                Part::Pumping {
-                    displacement,
-                    engine,
-                } => pumping_power(engine, *displacement, state.crank.speed),
-            };
+            *out = part.power(&at)?;
         }
         Ok(())
     }
 }
 
-/// The part of revolute joint `joint` on bearings `b` under `model`.
-fn bearing_part(joint: usize, b: Bearings, model: Bearing, oil: &Oil) -> Result<Part, LossError> {
-    let count = f64::from(b.count.max(1));
-    Ok(match model {
-        Bearing::Rolling(reading) => Part::Rolling {
-            joint,
-            model: RollingModel::new(
-                RollingBearing::new(2.0 * b.radius, b.static_load_rating).map_err(|e| {
-                    LossError {
-                        field: "friction.bearings".into(),
-                        rule: e.to_string(),
-                    }
-                })?,
-                reading,
-            ),
-            count,
-            viscosity: oil.kinematic_viscosity,
-        },
-        Bearing::Journal {
-            short_bearing,
-            length_ratio,
-            clearance_ratio,
-        } => Part::Journal {
-            joint,
-            bearing: JournalBearing::new(
-                b.radius,
-                2.0 * b.radius * length_ratio,
-                b.radius * clearance_ratio,
-            )
-            .map_err(|e| LossError {
-                field: "friction.journal_length_ratio".into(),
-                rule: e.to_string(),
-            })?,
-            count,
-            short: short_bearing,
-            viscosity: oil.dynamic_viscosity(),
-        },
-    })
+impl Rings {
+    /// The rings of `pistons` pistons in a cylinder of `bore` (m), oil of dynamic viscosity
+    /// `viscosity` (Pa·s).
+    fn bind(self, bore: f64, pistons: usize, viscosity: f64) -> Result<Box<dyn Loss>, LossError> {
+        let pack = KarhulaRingPack::karhula(bore).map_err(|e| failed("geometry.bore", &e))?;
+        Ok(match self {
+            Rings::Karhula {
+                friction_coefficient,
+            } => Box::new(models::RingPack {
+                force: friction_coefficient * pack.contact_force(),
+            }),
+            Rings::Film { crown_height } => {
+                let ring = |height: f64, pressure: f64, top: bool| {
+                    let profile = RingProfile::Barrel {
+                        width: height,
+                        crown_height,
+                    };
+                    RingFilm::new(profile, bore, AsperityContact::typical())
+                        .map(|f| (f, pressure, top))
+                        .map_err(|e| failed("friction.ring_crown_height", &e))
+                };
+                let mut rings = Vec::new();
+                for k in 0..pack.compression_rings {
+                    rings.push(ring(
+                        pack.compression_ring_height,
+                        pack.compression_ring_pressure,
+                        k == 0,
+                    )?);
+                }
+                for _ in 0..pack.oil_rings {
+                    rings.push(ring(pack.oil_ring_height, pack.oil_ring_pressure, false)?);
+                }
+                Box::new(models::RingFilms {
+                    films: vec![None; rings.len() * pistons],
+                    rings,
+                    time: None,
+                    viscosity,
+                })
+            }
+        })
+    }
+}
+
+impl Skirt {
+    /// The skirt of the piston sliding on prismatic joint `joint`, in a cylinder of `bore` (m).
+    fn bind(self, joint: usize, bore: f64, viscosity: f64) -> Result<Box<dyn Loss>, LossError> {
+        Ok(match self {
+            Skirt::Viscous { length, clearance } => Box::new(models::ViscousSkirtLoss {
+                joint,
+                skirt: ViscousSkirt::new(bore, length, clearance)
+                    .map_err(|e| failed("friction.skirt_length", &e))?,
+                viscosity,
+            }),
+            Skirt::Coulomb {
+                friction_coefficient,
+            } => models::coulomb(joint, friction_coefficient),
+        })
+    }
+}
+
+impl Bearing {
+    /// The bearings `b` of revolute joint `joint`.
+    fn bind(self, joint: usize, b: Bearings, oil: &Oil) -> Result<Box<dyn Loss>, LossError> {
+        let count = f64::from(b.count.max(1));
+        Ok(match self {
+            Bearing::Rolling(reading) => Box::new(models::Rolling {
+                joint,
+                model: RollingModel::new(
+                    RollingBearing::new(2.0 * b.radius, b.static_load_rating)
+                        .map_err(|e| failed("friction.bearings", &e))?,
+                    reading,
+                ),
+                count,
+                viscosity: oil.kinematic_viscosity,
+            }),
+            Bearing::Journal {
+                short_bearing,
+                length_ratio,
+                clearance_ratio,
+            } => Box::new(models::Journal {
+                joint,
+                bearing: JournalBearing::new(
+                    b.radius,
+                    2.0 * b.radius * length_ratio,
+                    b.radius * clearance_ratio,
+                )
+                .map_err(|e| failed("friction.journal_length_ratio", &e))?,
+                count,
+                short: short_bearing,
+                viscosity: oil.dynamic_viscosity(),
+            }),
+        })
+    }
+}
+
+/// A setup that failed: the case field at fault and why.
+fn failed(field: &str, e: &dyn std::fmt::Display) -> LossError {
+    LossError {
+        field: field.to_string(),
+        rule: e.to_string(),
+    }
 }
 
 /// The mesh geometry of the pair [`mesh_pair`] builds for a mesh joint.

@@ -51,14 +51,14 @@ pub use journal_bearing::{
 };
 pub use rings::{
     thai_ring_friction_per_length, thai_ring_power, AsperityContact, KarhulaRingPack, RingFilm,
-    RingFilmState, RingLoad, RingProfile,
+    RingFilmState, RingLoad, RingProfile, KARHULA_RING_MU,
 };
 pub use rolling_bearing::{
     rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing, RollingLoss,
     RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
     KARHULA_LOAD_CONSTANT_PRINTED,
 };
-pub use skirt::{coulomb_sliding, karhula_skirt, viscous_skirt, ViscousSkirt};
+pub use skirt::{coulomb_sliding, karhula_skirt, viscous_skirt, ViscousSkirt, KARHULA_SKIRT_MU};
 
 /// Errors of the constructors and solvers of this crate.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

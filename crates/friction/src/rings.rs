@@ -35,6 +35,10 @@
 use crate::{positive, FrictionError, SlidingLoss};
 use std::f64::consts::PI;
 
+/// Ring friction coefficient μ_ring of Karhula (2008) App. 9.1 (A9.1.4, from Andersson et al.
+/// 2002).
+pub const KARHULA_RING_MU: f64 = 0.07;
+
 /// Karhula's (2008) constant-coefficient ring pack.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct KarhulaRingPack {
@@ -70,7 +74,7 @@ impl KarhulaRingPack {
             oil_rings: 1,
             oil_ring_height: 4e-3,
             oil_ring_pressure: 1e6,
-            friction_coefficient: 0.07,
+            friction_coefficient: KARHULA_RING_MU,
         })
     }
 
