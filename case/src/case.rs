@@ -144,8 +144,7 @@ pub struct CaseFile {
     #[schemars(schema_with = "crate::gas::gas_schema")]
     pub gas: Option<toml::Table>,
     /// The loss models; without it the run has no losses.
-    #[schemars(with = "Option<serde_json::Map<String, serde_json::Value>>")]
-    pub friction: Option<toml::Table>,
+    pub friction: Option<crate::friction::FrictionTable>,
     /// The gear pair and its rating data; without it no gear mesh is rated.
     pub gear: Option<crate::gear::GearTable>,
     #[serde(default)]
@@ -458,7 +457,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     let friction = match &raw.friction {
         None => None,
         Some(table) => {
-            let f = crate::friction::parse(
+            let f = crate::friction::build(
                 table,
                 gear.as_ref(),
                 geometry.bore,
@@ -466,22 +465,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
                 gas.as_ref(),
                 &invalid,
             )?;
-            let named = f.joint_bearings.iter().map(|(j, _)| j);
-            for joint in named.chain(f.joint_sizes.iter().map(|(j, _)| j)) {
-                let revolute = |m: &Arc<dyn Mechanism>| {
-                    m.topology().joints.iter().any(|j| {
-                        j.name == joint
-                            && matches!(j.kind, cardan_mechanism::JointKind::Revolute(_))
-                    })
-                };
-                if !mechanisms.iter().any(revolute) {
-                    return Err(invalid(
-                        &format!("friction.joints.{joint}"),
-                        &table["joints"][joint],
-                        "no mechanism of the case has a revolute joint of this name (see summary.json's joints)",
-                    ));
-                }
-            }
+            crate::friction::check_joints(table, &mechanisms, &invalid)?;
             for m in &mechanisms {
                 LossBudget::new(&f, m.as_ref(), geometry.bore)
                     .map_err(|e| invalid(&e.field, &format!("(for the {})", m.name()), &e.rule))?;

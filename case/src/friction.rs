@@ -322,25 +322,6 @@ fn engine_fields(t: &FrictionTable) -> Vec<(&'static str, String)> {
 /// Compression ratio of the PNH gas-loading term when the case has no gas model that gives one.
 const DEFAULT_COMPRESSION_RATIO: f64 = 10.0;
 
-/// Reads `[friction]` (`table`) and builds it ([`build`]); the transition's reader for a case
-/// read as a TOML table: a field that does not read is a [`CaseError::Field`] of the file and
-/// case that `invalid` names.
-pub fn parse(
-    table: &toml::Table,
-    gear: Option<&GearSpec>,
-    bore: f64,
-    machine: Machine,
-    gas: Option<&GasCase>,
-    invalid: &Invalid,
-) -> Result<Friction, CaseError> {
-    let typed: FrictionTable = crate::schema::read(toml::Value::Table(table.clone()), "friction")
-        .map_err(|error| match invalid("", &"", "") {
-        CaseError::Invalid { file, case, .. } => CaseError::Field { file, case, error },
-        other => other,
-    })?;
-    build(&typed, gear, bore, machine, gas, invalid)
-}
-
 /// The loss models of `[friction]` (`table`), its mesh loss on the pair of `[gear]` (`gear`),
 /// for a cylinder of `bore` (m) of a `machine`; an engine's compression ratio (for the fmep
 /// cross-check) comes from its `gas` model. Checks what the schema cannot: the engine fields
