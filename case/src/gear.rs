@@ -287,7 +287,9 @@ mod tests {
 
     fn read(text: &str) -> Result<GearSpec, String> {
         let table: toml::Table = toml::from_str(text).unwrap();
-        parse(&table, Path::new("c.toml"), "c").map_err(|e| e.to_string())
+        crate::schema::read::<GearTable>(toml::Value::Table(table), "gear")
+            .map(|t| t.spec())
+            .map_err(|e| e.to_string())
     }
 
     #[test]

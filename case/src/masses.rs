@@ -87,7 +87,7 @@ pub(crate) fn own_table(value: toml::Value, mechanism: &str) -> Result<MassTable
                 "unknown field \"rules\" in a mechanism's mass table: the reading of the rules is the machine's, set it in [masses] (the fields here: {}, rod_cg, piston_mass, rod_material)",
                 fields.join(", ")
             ),
-            expected: Vec::new(),
+            expected: Box::default(),
         });
     }
     Ok(table)

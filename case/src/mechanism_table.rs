@@ -16,7 +16,7 @@ pub(crate) fn options(table: Option<&toml::Value>, entry: &Entry) -> Result<Opti
     let error = |field: String, message: String| FieldError {
         field,
         message,
-        expected: Vec::new(),
+        expected: Box::default(),
     };
     let Some(table) = table.as_table() else {
         let rule = "must be a table of the mechanism's options";

@@ -21,7 +21,7 @@ pub struct FieldError {
     pub message: String,
     /// For an unknown field: the valid names of its table (a caller that also takes other
     /// names there, e.g. the mechanisms' tables, says so with [`FieldError::unknown_among`]).
-    pub expected: Vec<String>,
+    pub expected: Box<[String]>,
 }
 
 impl FieldError {
@@ -34,8 +34,8 @@ impl FieldError {
                 .next()
                 .unwrap_or_default()
                 .to_string();
-            self.expected.extend(more.iter().map(|m| m.to_string()));
-            let expected: Vec<&str> = self.expected.iter().map(String::as_str).collect();
+            let mut expected: Vec<&str> = self.expected.iter().map(String::as_str).collect();
+            expected.extend(more);
             self.message = suggest("field", &name, &expected);
         }
         self
@@ -80,7 +80,7 @@ fn explain(
     root: impl Fn() -> Value,
 ) -> FieldError {
     let mut field = join(prefix, inner);
-    let mut expected = Vec::new();
+    let mut expected = Box::default();
     // A table written as an array of tables (`[[geometry]]`) reads, as serde may read a
     // struct from a list, as `geometry[0]` of the wrong form.
     if let Some(i) = inner.find('[') {
