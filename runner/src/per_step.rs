@@ -14,7 +14,7 @@
 use crate::report::{ChartData, ChartRecorder, ChartRows, MAX_POINTS};
 use anyhow::{bail, Context};
 use cardan_case::case::OutputOptions;
-use cardan_dynamics::{radial, tangential, GearRatings, Sink, Step, StepBlock, StepScratch};
+use cardan_dynamics::{radial, tangential, Sink, StageColumn, Step, StepBlock, StepScratch};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use std::fs::File;
 use std::io::{BufWriter, Seek, SeekFrom, Write};
@@ -74,8 +74,7 @@ fn header(
     mechanism: &dyn Mechanism,
     families: &[&str],
     gas: bool,
-    losses: &[String],
-    gears: Option<&GearRatings>,
+    stages: &[Vec<StageColumn>],
 ) -> (Vec<String>, Range<usize>) {
     let t = mechanism.topology();
     let mut h: Vec<String> = [
@@ -146,29 +145,16 @@ fn header(
             h.push(format!("{f}_torque_{}_nm", b.name));
         }
     }
-    if let Some(g) = gears {
-        for (name, bending) in g.names().into_iter().zip(g.bending()) {
-            h.push(format!("{name}_dynamic_tooth_load_n"));
-            h.push(format!("{name}_contact_stress_pa"));
-            if bending {
-                h.push(format!("{name}_bending_stress_pa"));
-            }
-        }
-    }
-    if !losses.is_empty() {
-        h.push("friction_torque_nm".into());
-        h.extend(losses.iter().map(|c| format!("power_loss_{c}_w")));
-    }
+    h.extend(stages.iter().flatten().map(|c| c.name.clone()));
     (h, bodies)
 }
 
 /// What a run's steps hold besides the mechanism's own state: the load families (in the run's
-/// order), a gas model, the loss components, the rated gear meshes.
+/// order), a gas model, the columns of each of the run's stages (in the run's order).
 pub struct RunLayout<'b> {
     pub families: &'b [&'b str],
     pub gas: bool,
-    pub losses: &'b [String],
-    pub gears: Option<&'b GearRatings>,
+    pub stages: &'b [Vec<StageColumn>],
 }
 
 /// Rows per block handed to the writing thread: large enough that the hand-over is rare, small
@@ -197,6 +183,8 @@ pub struct Row<'a> {
     /// Families with a total (the names of the header's force blocks).
     with_total: bool,
     total_shares: Vec<f64>,
+    /// Which of each stage's values its columns hold.
+    stages: Arc<[Vec<usize>]>,
 }
 
 impl<'a> Row<'a> {
@@ -207,7 +195,7 @@ impl<'a> Row<'a> {
         if with_total {
             names.push("total");
         }
-        let (header, bodies) = header(mechanism, &names, run.gas, run.losses, run.gears);
+        let (header, bodies) = header(mechanism, &names, run.gas, run.stages);
         Self {
             mechanism,
             header: header.into(),
@@ -215,6 +203,11 @@ impl<'a> Row<'a> {
             fill_bodies: true,
             with_total,
             total_shares: vec![0.0; mechanism.topology().bodies.len()],
+            stages: run
+                .stages
+                .iter()
+                .map(|s| s.iter().map(|c| c.value).collect())
+                .collect(),
         }
     }
 
@@ -291,15 +284,8 @@ impl<'a> Row<'a> {
             r.push(loads.crank_torque);
             r.extend(shares);
         }
-        for g in s.gears {
-            r.extend([g.dynamic_load, g.contact_stress]);
-            if !g.bending_stress.is_nan() {
-                r.push(g.bending_stress);
-            }
-        }
-        if !s.losses.is_empty() {
-            r.push(s.friction_torque);
-            r.extend(s.losses);
+        for (columns, values) in self.stages.iter().zip(s.stages) {
+            r.extend(columns.iter().map(|&k| values[k]));
         }
         debug_assert_eq!(
             r.len() - start,
@@ -904,8 +890,7 @@ mod tests {
         let layout = RunLayout {
             families: &["inertial"],
             gas: false,
-            losses: &[],
-            gears: None,
+            stages: &[],
         };
         for (last_step, decimation) in [(10, 1), (100_000, 1), (100_000, 3), (700_001, 7)] {
             let sink = ChartSink::new(m.as_ref(), &layout, decimation, last_step, "c");

@@ -8,7 +8,7 @@ use anyhow::Context;
 use cardan_case::case::{self, Case, CaseError};
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stages, Summary,
+    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stage, Summary,
     SummarySink,
 };
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
@@ -93,11 +93,9 @@ fn mean_speed(case: &Case) -> f64 {
     }
 }
 
-/// The loss budget and the gear ratings of `mechanism` in `case`, as its run takes them.
-fn stages_of(
-    case: &Case,
-    mechanism: &dyn Mechanism,
-) -> Result<(Option<LossBudget>, Option<GearRatings>), String> {
+/// The stages of `mechanism` in `case`, as its run takes them: the gear ratings, then the loss
+/// budget (which takes their mesh losses).
+fn stages_of(case: &Case, mechanism: &dyn Mechanism) -> Result<Vec<Box<dyn Stage>>, String> {
     let losses = match &case.friction {
         Some(f) => Some(
             LossBudget::new(f, mechanism, case.geometry.bore)
@@ -113,7 +111,11 @@ fn stages_of(
         }
         None => None,
     };
-    Ok((losses, gears))
+    let gears = gears.map(|g| Box::new(g) as Box<dyn Stage>);
+    Ok(gears
+        .into_iter()
+        .chain(losses.map(|l| Box::new(l) as _))
+        .collect())
 }
 
 /// The largest size of a case's per-step files, in bytes, unless a run is allowed more
@@ -148,13 +150,11 @@ pub fn estimated_bytes(case: &Case) -> Result<(u64, String), String> {
     let trains = if case.crank_phase != 0.0 { 2 } else { 1 };
     let mut columns = 0u64;
     for m in &case.mechanisms {
-        let (losses, gears) = stages_of(case, m.as_ref())?;
-        let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
+        let stages = stages_of(case, m.as_ref())?;
         let layout = RunLayout {
             families: &names,
             gas: case.gas.is_some(),
-            losses: &loss_names,
-            gears: gears.as_ref(),
+            stages: &stages.iter().map(|s| s.columns()).collect::<Vec<_>>(),
         };
         columns += trains
             * crate::per_step::Row::new(m.as_ref(), &layout)
@@ -209,20 +209,14 @@ fn run_mechanism(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let (mut losses, gears) = stages_of(case, mechanism)?;
-    let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
-    let mut summary = SummarySink::new(mechanism, &names, case.steps + 1);
-    if let Some(l) = &losses {
-        summary = summary.with_losses(l.names());
-    }
-    if let Some(g) = &gears {
-        summary = summary.with_gears(g);
-    }
+    let mut stages = stages_of(case, mechanism)?;
+    let listed: Vec<&dyn Stage> = stages.iter().map(|s| s.as_ref()).collect();
+    let summary = SummarySink::new(mechanism, &names, case.steps + 1).with_stages(&listed);
+    let columns: Vec<_> = stages.iter().map(|s| s.columns()).collect();
     let layout = RunLayout {
         families: &names,
         gas: case.gas.is_some(),
-        losses: &loss_names,
-        gears: gears.as_ref(),
+        stages: &columns,
     };
     let mut per_step = match dir {
         Some(dir) => PerStepSink::create(
@@ -267,10 +261,10 @@ fn run_mechanism(
             case.end_angle + shift,
             case.steps,
         );
-        let stages = Stages {
-            losses: losses.as_mut(),
-            gears: gears.as_ref(),
-        };
+        let mut stages: Vec<&mut dyn Stage> = stages
+            .iter_mut()
+            .map(|s| &mut **s as &mut dyn Stage)
+            .collect();
         // Without files the run is shared by the threads (the same results bit for bit); the
         // files are written in the steps' order, by a thread of their own.
         match per_step.as_mut() {
@@ -279,10 +273,17 @@ fn run_mechanism(
                 &mut grid,
                 &families,
                 gas,
-                stages,
+                &mut stages,
                 &mut [&mut sinks.0, p],
             ),
-            None => run_parallel(mechanism, &mut grid, &families, gas, stages, &mut sinks),
+            None => run_parallel(
+                mechanism,
+                &mut grid,
+                &families,
+                gas,
+                &mut stages,
+                &mut sinks,
+            ),
         }
         .map_err(|e| e.to_string())?;
         if check_sampling {
@@ -292,8 +293,7 @@ fn run_mechanism(
                 let a = motion.start_angle + third * h / 3.0;
                 let mut grid = Grid::new(motion, a, a + n as f64 * h, n);
                 let mut sink = SummarySink::new(mechanism, &names, n + 1).for_peaks();
-                let stages = Stages::default();
-                run_parallel(mechanism, &mut grid, &families, gas, stages, &mut sink)
+                run_parallel(mechanism, &mut grid, &families, gas, &mut [], &mut sink)
                     .map_err(|e| format!("the run on the shifted grid (sampling check): {e}"))?;
                 shifted.push(sink.finish(mechanism)?);
             }

@@ -17,7 +17,8 @@
 //! - of an engine ([`Friction::engine`]) with a cylinder, each if switched on: `valve_train`,
 //!   `accessories`, `pumping` ([`crate::engine_losses`]), at the step's crank speed.
 
-use crate::gear_rating::{mesh_pair, mesh_speeds, GearSpec};
+use crate::mesh::{mesh_pair, mesh_speeds, tangential, GearSpec};
+use crate::stage::SetupError;
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
     KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel, RollingReading,
@@ -29,7 +30,6 @@ use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
 use crate::engine_losses::{
     accessories_power, displacement, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::summary::tangential;
 
 /// The lubricant of every lubricated contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -256,28 +256,15 @@ pub struct LossBudget {
     parts: Vec<Part>,
 }
 
-/// A loss model that cannot be set up for a mechanism: the case field at fault and why.
-#[derive(Debug, Clone, PartialEq)]
-pub struct LossError {
-    pub field: String,
-    pub rule: String,
-}
-
-impl std::fmt::Display for LossError {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        write!(f, "{}: {}", self.field, self.rule)
-    }
-}
-
 impl LossBudget {
     /// The budget of `mechanism` in a cylinder of `bore` (m) under `friction`.
     pub fn new(
         friction: &Friction,
         mechanism: &dyn Mechanism,
         bore: f64,
-    ) -> Result<Self, LossError> {
+    ) -> Result<Self, SetupError> {
         let t = mechanism.topology();
-        let failed = |field: &str, e: &dyn std::fmt::Display| LossError {
+        let failed = |field: &str, e: &dyn std::fmt::Display| SetupError {
             field: field.to_string(),
             rule: e.to_string(),
         };
@@ -575,14 +562,14 @@ impl LossBudget {
 }
 
 /// The part of revolute joint `joint` on bearings `b` under `model`.
-fn bearing_part(joint: usize, b: Bearings, model: Bearing, oil: &Oil) -> Result<Part, LossError> {
+fn bearing_part(joint: usize, b: Bearings, model: Bearing, oil: &Oil) -> Result<Part, SetupError> {
     let count = f64::from(b.count.max(1));
     Ok(match model {
         Bearing::Rolling(reading) => Part::Rolling {
             joint,
             model: RollingModel::new(
                 RollingBearing::new(2.0 * b.radius, b.static_load_rating).map_err(|e| {
-                    LossError {
+                    SetupError {
                         field: "friction.bearings".into(),
                         rule: e.to_string(),
                     }
@@ -603,7 +590,7 @@ fn bearing_part(joint: usize, b: Bearings, model: Bearing, oil: &Oil) -> Result<
                 2.0 * b.radius * length_ratio,
                 b.radius * clearance_ratio,
             )
-            .map_err(|e| LossError {
+            .map_err(|e| SetupError {
                 field: "friction.journal_length_ratio".into(),
                 rule: e.to_string(),
             })?,
@@ -621,9 +608,9 @@ fn mesh_geometry(
     pitch_radius: f64,
     internal: bool,
     pressure_angle: f64,
-) -> Result<MeshGeometry, LossError> {
+) -> Result<MeshGeometry, SetupError> {
     let (pair, face_width) = mesh_pair(&mesh.pair, ratio, pitch_radius, internal, pressure_angle)?;
-    MeshGeometry::from_pair(&pair, face_width).map_err(|e| LossError {
+    MeshGeometry::from_pair(&pair, face_width).map_err(|e| SetupError {
         field: "gear.face_width".into(),
         rule: e.to_string(),
     })
