@@ -276,41 +276,7 @@ impl LossBudget {
                 let pack =
                     KarhulaRingPack::karhula(bore).map_err(|e| failed("geometry.bore", &e))?;
                 names.push("rings".to_string());
-                parts.push(match rings {
-                    Rings::Karhula {
-                        friction_coefficient,
-                    } => Part::RingPack {
-                        force: friction_coefficient * pack.contact_force(),
-                    },
-                    Rings::Film { crown_height } => {
-                        let ring = |height: f64, pressure: f64, top: bool| {
-                            let profile = RingProfile::Barrel {
-                                width: height,
-                                crown_height,
-                            };
-                            RingFilm::new(profile, bore, AsperityContact::typical())
-                                .map(|f| (f, pressure, top))
-                                .map_err(|e| failed("friction.ring_crown_height", &e))
-                        };
-                        let mut rings = Vec::new();
-                        for k in 0..pack.compression_rings {
-                            rings.push(ring(
-                                pack.compression_ring_height,
-                                pack.compression_ring_pressure,
-                                k == 0,
-                            )?);
-                        }
-                        for _ in 0..pack.oil_rings {
-                            rings.push(ring(pack.oil_ring_height, pack.oil_ring_pressure, false)?);
-                        }
-                        Part::RingFilms {
-                            films: vec![None; rings.len() * t.pistons.len()],
-                            rings,
-                            time: None,
-                            viscosity,
-                        }
-                    }
-                });
+                parts.push(ring_part(rings, &pack, bore, t.pistons.len(), viscosity)?);
             }
         }
         for (k, j) in t.joints.iter().enumerate() {
@@ -559,6 +525,55 @@ impl LossBudget {
         }
         Ok(())
     }
+}
+
+/// The part of the rings of `pistons` pistons in a cylinder of `bore` (m) under `rings`, of
+/// Karhula's `pack` (A9.1.2-4, A9.1.8) with oil of dynamic viscosity `viscosity` (Pa·s).
+fn ring_part(
+    rings: Rings,
+    pack: &KarhulaRingPack,
+    bore: f64,
+    pistons: usize,
+    viscosity: f64,
+) -> Result<Part, SetupError> {
+    Ok(match rings {
+        Rings::Karhula {
+            friction_coefficient,
+        } => Part::RingPack {
+            force: friction_coefficient * pack.contact_force(),
+        },
+        Rings::Film { crown_height } => {
+            let ring = |height: f64, pressure: f64, top: bool| {
+                let profile = RingProfile::Barrel {
+                    width: height,
+                    crown_height,
+                };
+                RingFilm::new(profile, bore, AsperityContact::typical())
+                    .map(|f| (f, pressure, top))
+                    .map_err(|e| SetupError {
+                        field: "friction.ring_crown_height".into(),
+                        rule: e.to_string(),
+                    })
+            };
+            let mut rings = Vec::new();
+            for k in 0..pack.compression_rings {
+                rings.push(ring(
+                    pack.compression_ring_height,
+                    pack.compression_ring_pressure,
+                    k == 0,
+                )?);
+            }
+            for _ in 0..pack.oil_rings {
+                rings.push(ring(pack.oil_ring_height, pack.oil_ring_pressure, false)?);
+            }
+            Part::RingFilms {
+                films: vec![None; rings.len() * pistons],
+                rings,
+                time: None,
+                viscosity,
+            }
+        }
+    })
 }
 
 /// The part of revolute joint `joint` on bearings `b` under `model`.

@@ -153,18 +153,6 @@ pub const RUN: &[MetricDef] = &[
     def("cycle_time", "s", R, K, Ne, "duration of the run"),
 ];
 
-/// The metrics of the gear-rating stage ([`crate::GearRatings`]), with gear meshes rated.
-pub const GEAR_RATING: &[MetricDef] = &[
-    def("contact_ratio", "1", T, GR, Hi, "gear rating: transverse contact ratio of the mesh's pair (the smallest over the meshes)"),
-    def("mesh_tangential_load_max", "N", T, GR, Lo, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\", or Karhula's reading with \"thesis\""),
-    def("dynamic_tooth_load_max", "N", T, GR, Lo, "gear rating: largest Buckingham dynamic tooth load (Karhula A8.1.1-14)"),
-    def("contact_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA 2001-D04 contact stress"),
-    def("contact_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA pitting safety factor S_H over the run (stress ratio)"),
-    def("bending_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA bending stress (with the bending geometry factors J known)"),
-    def("bending_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA bending safety factor S_F over the run"),
-    def("gear_mesh_power_loss_mean", "W", T, GR, Lo, "gear rating: mean Anderson & Loewenthal mesh loss (A9.1.40-55), all gear sets"),
-];
-
 /// The metrics of the loss stage ([`crate::LossBudget`]), with friction: the losses, and the
 /// need or output and the efficiency that follow from them.
 pub const LOSSES: &[MetricDef] = &[
@@ -177,6 +165,18 @@ pub const LOSSES: &[MetricDef] = &[
     def("output_torque_mean", "N*m", T, D, Hi, "engine (net work out of the crank): (−total_work − loss_work) / crank-angle span (A9.1.66-67)"),
     def("output_power_mean", "W", T, D, Hi, "engine: (−total_work − loss_work) / cycle_time (A9.1.62-63)"),
     def("mechanical_efficiency", "1", T, L, Hi, "pump: gas_work / (total_work + loss_work) (A9.1.72-73); engine: (−total_work − loss_work) / −total_work (A9.1.74-75)"),
+];
+
+/// The metrics of the gear-rating stage ([`crate::GearRatings`]), with gear meshes rated.
+pub const GEAR_RATING: &[MetricDef] = &[
+    def("contact_ratio", "1", T, GR, Hi, "gear rating: transverse contact ratio of the mesh's pair (the smallest over the meshes)"),
+    def("mesh_tangential_load_max", "N", T, GR, Lo, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\", or Karhula's reading with \"thesis\""),
+    def("dynamic_tooth_load_max", "N", T, GR, Lo, "gear rating: largest Buckingham dynamic tooth load (Karhula A8.1.1-14)"),
+    def("contact_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA 2001-D04 contact stress"),
+    def("contact_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA pitting safety factor S_H over the run (stress ratio)"),
+    def("bending_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA bending stress (with the bending geometry factors J known)"),
+    def("bending_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA bending safety factor S_F over the run"),
+    def("gear_mesh_power_loss_mean", "W", T, GR, Lo, "gear rating: mean Anderson & Loewenthal mesh loss (A9.1.40-55), all gear sets"),
 ];
 
 /// The fmep metrics of an engine with friction ([`crate::engine_metrics`], after the run).
@@ -346,7 +346,7 @@ pub const GAS_MODEL: &[MetricDef] = &[
 pub const METRICS: &[MetricDef] = &concat::<{ count(PARTS) }>(PARTS);
 
 /// The registry's parts, in summary order.
-const PARTS: &[&[MetricDef]] = &[RUN, GEAR_RATING, LOSSES, ENGINE_FRICTION, GAS, GAS_MODEL];
+const PARTS: &[&[MetricDef]] = &[RUN, LOSSES, GEAR_RATING, ENGINE_FRICTION, GAS, GAS_MODEL];
 
 /// Definitions in all of `parts`.
 const fn count(parts: &[&[MetricDef]]) -> usize {

@@ -3,7 +3,8 @@
 //! even number of near-equal pieces, none longer than [`MAX_CHUNK`] steps), each chunk is run
 //! into sinks of its own, and the sinks are joined in the chunks' order. The summary adds its
 //! integrals chunk by chunk in any run, so the result is the one [`run`] gives, bit for bit,
-//! whatever the number of threads (tested in `tests/parallel.rs`).
+//! whatever the number of threads (tested in `tests/parallel.rs`). [`run_summary`] is the whole
+//! pipeline in one call.
 
 use crate::family::{Gas, Inertial, LoadFamily, Solver};
 use crate::metrics::Summary;

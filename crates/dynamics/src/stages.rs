@@ -360,3 +360,51 @@ impl StageTotals for GearTotals {
         self
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Friction, GearSpec};
+    use cardan_mechanism::{MachineGeometry, MassInputs, Options, MECHANISMS};
+
+    /// Each stage's columns hold values it gives, and its totals give only metrics of its own
+    /// part of the registry.
+    #[test]
+    fn a_stage_declares_its_columns_and_metrics() {
+        let g = MachineGeometry {
+            crank_length: 0.06,
+            rod_length: 0.14,
+            bore: 0.12,
+            pin_offset: 0.0,
+        };
+        for entry in MECHANISMS {
+            let m = (entry.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
+            let mut stages: Vec<Box<dyn Stage>> = Vec::new();
+            if let Ok(r) = GearRatings::new(&GearSpec::default(), m.as_ref(), None) {
+                stages.push(Box::new(r));
+            }
+            let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
+            stages.push(Box::new(budget));
+            for s in &stages {
+                assert!(
+                    s.columns().iter().all(|c| c.value < s.width()),
+                    "{}",
+                    entry.name
+                );
+                let works = [("gas", -1.0), ("total", -2.0)];
+                let run = RunTotals {
+                    span: 1.0,
+                    time: 1.0,
+                    works: &works,
+                };
+                let mut summary = Summary::default();
+                s.totals().finish(&run, &mut summary);
+                assert!(!summary.metrics.is_empty());
+                for x in &summary.metrics {
+                    let own = metrics::find_in(s.metrics(), &x.name);
+                    assert!(own.is_some(), "{}: {}", entry.name, x.name);
+                }
+            }
+        }
+    }
+}

@@ -56,6 +56,8 @@ struct Family {
 /// A stage's accumulator, with the metrics its stage defines.
 #[derive(Debug, Clone)]
 struct StageSlot {
+    /// The stage's index in the run (of its values in [`crate::Step::stages`]).
+    index: usize,
     metrics: &'static [MetricDef],
     totals: Box<dyn StageTotals>,
 }
@@ -120,12 +122,21 @@ impl SummarySink {
         self
     }
 
-    /// The same summary, with the totals of the run's `stages` (in the run's order).
+    /// The same summary, with the totals of the run's `stages` (in the run's order), whose
+    /// metrics it holds in the registry's order ([`metrics::METRICS`]).
     pub fn with_stages(mut self, stages: &[&dyn Stage]) -> Self {
-        self.stages.extend(stages.iter().map(|s| StageSlot {
-            metrics: s.metrics(),
-            totals: s.totals(),
-        }));
+        self.stages
+            .extend(stages.iter().enumerate().map(|(index, s)| StageSlot {
+                index,
+                metrics: s.metrics(),
+                totals: s.totals(),
+            }));
+        let registered = |s: &StageSlot| {
+            let first = s.metrics.first().map(|d| d.name);
+            metrics::METRICS.iter().position(|d| Some(d.name) == first)
+        };
+        self.stages
+            .sort_by_key(|s| registered(s).unwrap_or(usize::MAX));
         self
     }
 
@@ -216,8 +227,8 @@ impl Sink for SummarySink {
             let closing = (block.first + lo).next_multiple_of(self.chunk) - block.first;
             let hi = (closing + 1).min(n);
             let time = self.previous.map(|(_, _, t)| t);
-            for (k, s) in self.stages.iter_mut().enumerate() {
-                s.totals.push_lanes(block, lo..hi, k, time);
+            for s in &mut self.stages {
+                s.totals.push_lanes(block, lo..hi, s.index, time);
             }
             take_lanes(self, block, lo..hi);
             if closing < n {
