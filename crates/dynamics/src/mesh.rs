@@ -44,7 +44,7 @@ pub enum ToothLoad {
     /// - its part along the tied mesh force's direction (the cylinder axis; A5.2.1.48-51),
     ///   projected on the pitch-circle tangent (A8.1.10), as a magnitude;
     /// - Buckingham's load in its saturated limit
-    ///   ([`BuckinghamPair::saturated_dynamic_load`]).
+    ///   ([`cardan_gears::buckingham::BuckinghamPair::saturated_dynamic_load`]).
     Thesis,
 }
 

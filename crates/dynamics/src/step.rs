@@ -26,7 +26,7 @@ pub struct Step<'a> {
     pub shares: &'a [Vec<f64>],
 }
 
-/// Consecutive steps (at most [`LANES`]), as columns, and one by one where wanted.
+/// Consecutive steps (at most [`cardan_mechanism::LANES`]), as columns, and one by one where wanted.
 #[derive(Debug, Clone, Copy)]
 pub struct StepBlock<'a> {
     /// Index of the block's first step in the run.
