@@ -1,6 +1,6 @@
 //! Kinetostatics of any mechanism of `cardan-mechanism`, step by step: the joint loads and
-//! drive torque of each load family (inertia, gas), their totals, the losses and gear ratings
-//! computed from the totals, and the cycle summary, streamed to sinks so that memory does not
+//! drive torque of each load family (inertia, gas), their totals, the per-step stages computed
+//! from the totals (the losses, the gear ratings: [`Stage`]), and the cycle summary, streamed to sinks so that memory does not
 //! grow with the number of steps.
 //!
 //! Two independent paths compute the same loads:
@@ -18,31 +18,38 @@
 pub mod energy;
 pub mod engine_losses;
 pub mod family;
+pub mod fmep;
 pub mod gear_rating;
 pub mod loss_models;
 pub mod losses;
+pub mod mesh;
 pub mod metrics;
 pub mod parallel;
 pub mod planar;
+pub mod stage;
+pub mod stages;
+pub mod step;
 pub mod stepper;
 pub mod summary;
 
 pub use energy::{kinetic_energy, torque_shares};
 pub use engine_losses::{
-    engine_metrics, fmep_breakdown, pnh_engine, CircularArcCam, EngineLosses, FmepModel,
-    FollowerContact, ValveTrain, ValveTrainGeometry, ValveTrainLoss,
+    CircularArcCam, EngineLosses, FmepModel, FollowerContact, ValveTrain, ValveTrainGeometry,
+    ValveTrainLoss,
 };
 pub use family::{Gas, Inertial, LoadFamily, Solver};
-pub use gear_rating::{GearMaterial, GearRatings, GearSpec, MeshRating, ToothLoad};
+pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
+pub use gear_rating::{GearRatings, MeshRating};
 pub use loss_models::{Attachment, LossModel, Parameters, Setting, LOSS_MODELS};
 pub use losses::{
-    At, Bearing, BearingSize, Friction, Loss, LossBudget, LossError, MeshLossModel, Oil, Rings,
-    Skirt,
+    At, Bearing, BearingSize, Friction, Loss, LossBudget, MeshLossModel, Oil, Rings, Skirt,
 };
-pub use metrics::{Aggregation, MetricDef, METRICS};
-pub use parallel::{run_parallel, Joinable};
-pub use stepper::{
-    run, run_summary, GasAt, RunError, Sink, Stages, Step, StepBlock, StepRecord, StepScratch,
-    Steps,
+pub use mesh::{radial, tangential, GearMaterial, GearSpec, ToothLoad};
+pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
+pub use parallel::{run_parallel, run_summary, Joinable};
+pub use stage::{
+    Handed, RunTotals, SetupError, Stage, StageColumn, StageError, StageInput, StageTotals,
 };
-pub use summary::{radial, summary_chunk, tangential, Metric, Summary, SummarySink, MAX_CHUNK};
+pub use step::{Sink, Step, StepBlock, StepRecord, StepScratch, Steps};
+pub use stepper::{run, GasAt, RunError};
+pub use summary::{summary_chunk, SummarySink, MAX_CHUNK};

@@ -20,8 +20,9 @@
 pub mod models;
 
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
-use crate::gear_rating::{mesh_pair, GearSpec};
 use crate::loss_models::Parameters;
+use crate::mesh::{mesh_pair, GearSpec};
+use crate::stage::SetupError;
 use cardan_friction::{
     AsperityContact, JournalBearing, KarhulaRingPack, RingFilm, RingProfile, RollingBearing,
     RollingModel, RollingReading, ViscousSkirt, KARHULA_SKIRT_MU,
@@ -239,26 +240,13 @@ pub struct LossBudget {
     parts: Vec<Box<dyn Loss>>,
 }
 
-/// A loss model that cannot be set up for a mechanism: the case field at fault and why.
-#[derive(Debug, Clone, PartialEq)]
-pub struct LossError {
-    pub field: String,
-    pub rule: String,
-}
-
-impl std::fmt::Display for LossError {
-    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        write!(f, "{}: {}", self.field, self.rule)
-    }
-}
-
 impl LossBudget {
     /// The budget of `mechanism` in a cylinder of `bore` (m) under `friction`.
     pub fn new(
         friction: &Friction,
         mechanism: &dyn Mechanism,
         bore: f64,
-    ) -> Result<Self, LossError> {
+    ) -> Result<Self, SetupError> {
         let t = mechanism.topology();
         let viscosity = friction.oil.dynamic_viscosity();
         let mut names = Vec::new();
@@ -392,7 +380,7 @@ impl LossBudget {
 impl Rings {
     /// The rings of `pistons` pistons in a cylinder of `bore` (m), oil of dynamic viscosity
     /// `viscosity` (Pa·s).
-    fn bind(self, bore: f64, pistons: usize, viscosity: f64) -> Result<Box<dyn Loss>, LossError> {
+    fn bind(self, bore: f64, pistons: usize, viscosity: f64) -> Result<Box<dyn Loss>, SetupError> {
         let pack = KarhulaRingPack::karhula(bore).map_err(|e| failed("geometry.bore", &e))?;
         Ok(match self {
             Rings::Karhula {
@@ -434,7 +422,7 @@ impl Rings {
 
 impl Skirt {
     /// The skirt of the piston sliding on prismatic joint `joint`, in a cylinder of `bore` (m).
-    fn bind(self, joint: usize, bore: f64, viscosity: f64) -> Result<Box<dyn Loss>, LossError> {
+    fn bind(self, joint: usize, bore: f64, viscosity: f64) -> Result<Box<dyn Loss>, SetupError> {
         Ok(match self {
             Skirt::Viscous { length, clearance } => Box::new(models::ViscousSkirtLoss {
                 joint,
@@ -451,7 +439,7 @@ impl Skirt {
 
 impl Bearing {
     /// The bearings `b` of revolute joint `joint`.
-    fn bind(self, joint: usize, b: Bearings, oil: &Oil) -> Result<Box<dyn Loss>, LossError> {
+    fn bind(self, joint: usize, b: Bearings, oil: &Oil) -> Result<Box<dyn Loss>, SetupError> {
         let count = f64::from(b.count.max(1));
         Ok(match self {
             Bearing::Rolling(reading) => Box::new(models::Rolling {
@@ -485,8 +473,8 @@ impl Bearing {
 }
 
 /// A setup that failed: the case field at fault and why.
-fn failed(field: &str, e: &dyn std::fmt::Display) -> LossError {
-    LossError {
+fn failed(field: &str, e: &dyn std::fmt::Display) -> SetupError {
+    SetupError {
         field: field.to_string(),
         rule: e.to_string(),
     }
@@ -499,9 +487,9 @@ fn mesh_geometry(
     pitch_radius: f64,
     internal: bool,
     pressure_angle: f64,
-) -> Result<MeshGeometry, LossError> {
+) -> Result<MeshGeometry, SetupError> {
     let (pair, face_width) = mesh_pair(&mesh.pair, ratio, pitch_radius, internal, pressure_angle)?;
-    MeshGeometry::from_pair(&pair, face_width).map_err(|e| LossError {
+    MeshGeometry::from_pair(&pair, face_width).map_err(|e| SetupError {
         field: "gear.face_width".into(),
         rule: e.to_string(),
     })

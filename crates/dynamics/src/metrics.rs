@@ -1,5 +1,8 @@
 //! The metric registry: one definition per summary metric (name, unit, meaning, what it
-//! aggregates), from which `summary.json`'s units and the metric table of docs/results.md are produced.
+//! aggregates, its group and which way is better), from which `summary.json`'s units and the
+//! metric table of docs/results.md are produced; and a run's metrics ([`Summary`]). The registry
+//! is made of parts, one per producer: the summary's own, each per-step stage's
+//! ([`crate::Stage::metrics`] is its part), the engine's fmep, the gas models'.
 //! A name may hold `{piston}`, `{body}`, `{joint}` (a name from the mechanism's topology) and
 //! `{family}` (`inertial`; with a gas model also `gas` and `total`).
 
@@ -125,8 +128,9 @@ use Group::{
     DriveTorque as D, Gas as G, GearRating as GR, JointLoads as J, Kinematics as K, Losses as L,
 };
 
-/// Every metric a summary may hold, in summary order.
-pub const METRICS: &[MetricDef] = &[
+/// The metrics of every run, from the summary's own accumulators (`summary/`: the motion's peaks,
+/// each family's joint peaks and drive work, the lever, the energy check).
+pub const RUN: &[MetricDef] = &[
     def("piston_stroke", "m", T, K, Ne, "top minus bottom dead-centre position of the piston pin"),
     def("{piston}_velocity_max", "m/s", T, K, Ne, "largest piston speed along the cylinder"),
     def("{piston}_acceleration_max", "m/s^2", T, K, Ne, "largest piston acceleration along the cylinder"),
@@ -147,14 +151,11 @@ pub const METRICS: &[MetricDef] = &[
     def("kinetic_energy_change", "J", T, D, Ne, "kinetic energy of all bodies, end minus start: equals inertial_work (energy check)"),
     def("energy_balance_error", "1", T, D, Lo, "|inertial_work − kinetic_energy_change| / ∫|T_inertial| dθ: a case fails above 1e-3"),
     def("cycle_time", "s", R, K, Ne, "duration of the run"),
-    def("contact_ratio", "1", T, GR, Hi, "gear rating: transverse contact ratio of the mesh's pair (the smallest over the meshes)"),
-    def("mesh_tangential_load_max", "N", T, GR, Lo, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\", or Karhula's reading with \"thesis\""),
-    def("dynamic_tooth_load_max", "N", T, GR, Lo, "gear rating: largest Buckingham dynamic tooth load (Karhula A8.1.1-14)"),
-    def("contact_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA 2001-D04 contact stress"),
-    def("contact_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA pitting safety factor S_H over the run (stress ratio)"),
-    def("bending_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA bending stress (with the bending geometry factors J known)"),
-    def("bending_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA bending safety factor S_F over the run"),
-    def("gear_mesh_power_loss_mean", "W", T, GR, Lo, "gear rating: mean Anderson & Loewenthal mesh loss (A9.1.40-55), all gear sets"),
+];
+
+/// The metrics of the loss stage ([`crate::LossBudget`]), with friction: the losses, and the
+/// need or output and the efficiency that follow from them.
+pub const LOSSES: &[MetricDef] = &[
     def("loss_work", "J", T, L, Lo, "friction: energy lost over the run, Σ ∫ P dt of every loss component (Karhula A9.1.68-71)"),
     def("power_loss_mean", "W", T, L, Lo, "friction: loss_work / cycle_time (A9.1.56-59)"),
     def("power_loss_mean_{component}", "W", T, L, Lo, "friction: one component's mean power loss: rings, skirt, a slide, a revolute joint's bearings, a gear mesh (by joint name); of an engine also valve_train, accessories, pumping"),
@@ -164,6 +165,22 @@ pub const METRICS: &[MetricDef] = &[
     def("output_torque_mean", "N*m", T, D, Hi, "engine (net work out of the crank): (−total_work − loss_work) / crank-angle span (A9.1.66-67)"),
     def("output_power_mean", "W", T, D, Hi, "engine: (−total_work − loss_work) / cycle_time (A9.1.62-63)"),
     def("mechanical_efficiency", "1", T, L, Hi, "pump: gas_work / (total_work + loss_work) (A9.1.72-73); engine: (−total_work − loss_work) / −total_work (A9.1.74-75)"),
+];
+
+/// The metrics of the gear-rating stage ([`crate::GearRatings`]), with gear meshes rated.
+pub const GEAR_RATING: &[MetricDef] = &[
+    def("contact_ratio", "1", T, GR, Hi, "gear rating: transverse contact ratio of the mesh's pair (the smallest over the meshes)"),
+    def("mesh_tangential_load_max", "N", T, GR, Lo, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\", or Karhula's reading with \"thesis\""),
+    def("dynamic_tooth_load_max", "N", T, GR, Lo, "gear rating: largest Buckingham dynamic tooth load (Karhula A8.1.1-14)"),
+    def("contact_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA 2001-D04 contact stress"),
+    def("contact_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA pitting safety factor S_H over the run (stress ratio)"),
+    def("bending_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA bending stress (with the bending geometry factors J known)"),
+    def("bending_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA bending safety factor S_F over the run"),
+    def("gear_mesh_power_loss_mean", "W", T, GR, Lo, "gear rating: mean Anderson & Loewenthal mesh loss (A9.1.40-55), all gear sets"),
+];
+
+/// The fmep metrics of an engine with friction ([`crate::engine_metrics`], after the run).
+pub const ENGINE_FRICTION: &[MetricDef] = &[
     def("fmep", "Pa", T, L, Lo, "engine with friction: the run's friction mean effective pressure, loss_work per swept volume π/4·B²·stroke per four-stroke cycle (4π of crank angle)"),
     def("fmep_mechanical", "Pa", T, L, Lo, "engine with friction: fmep without the pumping component (the scope of fmep_pnh)"),
     def("fmep_pnh", "Pa", T, L, Lo, "engine with friction: whole-engine mechanical fmep of Patton, Nitschke & Heywood (1989), or with Sandoval & Heywood's (2003) update, on a one-cylinder engine of this bore and stroke, crank-angle mean over the run: a cross-check of fmep_mechanical"),
@@ -171,37 +188,207 @@ pub const METRICS: &[MetricDef] = &[
     def("fmep_pnh_reciprocating", "Pa", T, L, Lo, "engine with friction: fmep_pnh's piston skirt, rings, rod bearing and gas-pressure loading of the rings"),
     def("fmep_pnh_valve_train", "Pa", T, L, Lo, "engine with friction: fmep_pnh's cam bearings, followers and oscillating valve-train terms"),
     def("fmep_pnh_auxiliaries", "Pa", T, L, Lo, "engine with friction: fmep_pnh's oil and water pumps and non-charging alternator"),
-    def("cylinder_pressure_max", "Pa", Y, G, Ne, "largest absolute cylinder pressure"),
-    def("gas_force_max", "N", T, G, Lo, "largest gas force on the piston"),
-    def("imep", "Pa", Y, G, Ne, "closed cycle: indicated mean effective pressure W/V_d (Nunes eq 2.50)"),
-    def("indicated_work", "J", Y, G, Ne, "closed cycle: ∮p dV of the chamber (eq 2.48)"),
-    def("indicated_torque_mean", "N*m", Y, G, Ne, "closed cycle: W/(4π), the chamber's mean torque"),
-    def("indicated_power", "W", Y, G, Ne, "closed cycle: W·ω/(4π) (eqs 2.46, 2.49); compressor: W·ω/(2π)"),
-    def("peak_pressure", "Pa", Y, G, Ne, "closed cycle: largest pressure on its own integration step"),
-    def("peak_pressure_angle_deg", "deg", Y, G, Ne, "closed cycle: crank angle of the peak from the cycle's first top dead centre"),
-    def("combustion_efficiency", "1", Y, G, Hi, "closed cycle: η_c from λ (eq 2.56)"),
-    def("isfc", "kg/J", Y, G, Lo, "closed cycle: gross indicated specific fuel consumption (eq 2.52)"),
-    def("indicated_efficiency", "1", Y, G, Hi, "closed cycle: W over the fuel energy (eq 2.53)"),
-    def("heat_loss_fraction", "1", Y, G, Lo, "closed cycle: heat lost to the walls and to vaporisation, share of the fuel energy"),
-    def("exhaust_fraction", "1", Y, G, Lo, "closed cycle: energy left in the gas at exhaust opening, share of the fuel energy"),
-    def("unreleased_fraction", "1", Y, G, Lo, "closed cycle: fuel energy never released, share"),
-    def("delivered_mass_flow", "kg/s", Y, G, Hi, "compressor: mass delivered per second at the periodic steady state"),
-    def("volumetric_efficiency", "1", Y, G, Hi, "compressor: inducted volume at suction state over the swept volume"),
-    def("specific_energy", "J/kg", Y, G, Lo, "compressor: indicated work per kilogram delivered"),
-    def("discharge_temperature", "K", Y, G, Ne, "compressor: gas temperature at the end of compression"),
 ];
+
+/// The peaks of a run with a gas model (the summary's own).
+pub const GAS: &[MetricDef] = &[
+    def(
+        "cylinder_pressure_max",
+        "Pa",
+        Y,
+        G,
+        Ne,
+        "largest absolute cylinder pressure",
+    ),
+    def(
+        "gas_force_max",
+        "N",
+        T,
+        G,
+        Lo,
+        "largest gas force on the piston",
+    ),
+];
+
+/// The metrics a gas model gives of its cycle (`cardan_gas`, added by the runner).
+pub const GAS_MODEL: &[MetricDef] = &[
+    def(
+        "imep",
+        "Pa",
+        Y,
+        G,
+        Ne,
+        "closed cycle: indicated mean effective pressure W/V_d (Nunes eq 2.50)",
+    ),
+    def(
+        "indicated_work",
+        "J",
+        Y,
+        G,
+        Ne,
+        "closed cycle: ∮p dV of the chamber (eq 2.48)",
+    ),
+    def(
+        "indicated_torque_mean",
+        "N*m",
+        Y,
+        G,
+        Ne,
+        "closed cycle: W/(4π), the chamber's mean torque",
+    ),
+    def(
+        "indicated_power",
+        "W",
+        Y,
+        G,
+        Ne,
+        "closed cycle: W·ω/(4π) (eqs 2.46, 2.49); compressor: W·ω/(2π)",
+    ),
+    def(
+        "peak_pressure",
+        "Pa",
+        Y,
+        G,
+        Ne,
+        "closed cycle: largest pressure on its own integration step",
+    ),
+    def(
+        "peak_pressure_angle_deg",
+        "deg",
+        Y,
+        G,
+        Ne,
+        "closed cycle: crank angle of the peak from the cycle's first top dead centre",
+    ),
+    def(
+        "combustion_efficiency",
+        "1",
+        Y,
+        G,
+        Hi,
+        "closed cycle: η_c from λ (eq 2.56)",
+    ),
+    def(
+        "isfc",
+        "kg/J",
+        Y,
+        G,
+        Lo,
+        "closed cycle: gross indicated specific fuel consumption (eq 2.52)",
+    ),
+    def(
+        "indicated_efficiency",
+        "1",
+        Y,
+        G,
+        Hi,
+        "closed cycle: W over the fuel energy (eq 2.53)",
+    ),
+    def(
+        "heat_loss_fraction",
+        "1",
+        Y,
+        G,
+        Lo,
+        "closed cycle: heat lost to the walls and to vaporisation, share of the fuel energy",
+    ),
+    def(
+        "exhaust_fraction",
+        "1",
+        Y,
+        G,
+        Lo,
+        "closed cycle: energy left in the gas at exhaust opening, share of the fuel energy",
+    ),
+    def(
+        "unreleased_fraction",
+        "1",
+        Y,
+        G,
+        Lo,
+        "closed cycle: fuel energy never released, share",
+    ),
+    def(
+        "delivered_mass_flow",
+        "kg/s",
+        Y,
+        G,
+        Hi,
+        "compressor: mass delivered per second at the periodic steady state",
+    ),
+    def(
+        "volumetric_efficiency",
+        "1",
+        Y,
+        G,
+        Hi,
+        "compressor: inducted volume at suction state over the swept volume",
+    ),
+    def(
+        "specific_energy",
+        "J/kg",
+        Y,
+        G,
+        Lo,
+        "compressor: indicated work per kilogram delivered",
+    ),
+    def(
+        "discharge_temperature",
+        "K",
+        Y,
+        G,
+        Ne,
+        "compressor: gas temperature at the end of compression",
+    ),
+];
+
+/// Every metric a summary may hold, in summary order: the parts above, one after another.
+pub const METRICS: &[MetricDef] = &concat::<{ count(PARTS) }>(PARTS);
+
+/// The registry's parts, in summary order.
+const PARTS: &[&[MetricDef]] = &[RUN, LOSSES, GEAR_RATING, ENGINE_FRICTION, GAS, GAS_MODEL];
+
+/// Definitions in all of `parts`.
+const fn count(parts: &[&[MetricDef]]) -> usize {
+    let (mut n, mut p) = (0, 0);
+    while p < parts.len() {
+        n += parts[p].len();
+        p += 1;
+    }
+    n
+}
+
+/// The definitions of `parts`, one part after another (`N` of them in all).
+const fn concat<const N: usize>(parts: &[&[MetricDef]]) -> [MetricDef; N] {
+    let mut out = [def("", "", R, K, Ne, ""); N];
+    let (mut k, mut p) = (0, 0);
+    while p < parts.len() {
+        let mut i = 0;
+        while i < parts[p].len() {
+            out[k] = parts[p][i];
+            (k, i) = (k + 1, i + 1);
+        }
+        p += 1;
+    }
+    assert!(k == N, "the parts hold N definitions");
+    out
+}
 
 /// The definition a metric name falls under: the matching template with the most fixed
 /// characters (so `rod_cg_velocity_max` is a body's, not a piston's, `{piston}_velocity_max`).
 /// A template without placeholders equal to the name has the most (a placeholder takes at least
 /// one character): it is looked for first, by plain comparison.
 pub fn find(name: &str) -> Option<&'static MetricDef> {
-    if let Some(exact) = METRICS.iter().find(|d| d.name == name) {
+    find_in(METRICS, name)
+}
+
+/// The definition of `defs` a metric name falls under, as [`find`] looks for it in the registry.
+pub fn find_in<'d>(defs: &'d [MetricDef], name: &str) -> Option<&'d MetricDef> {
+    if let Some(exact) = defs.iter().find(|d| d.name == name) {
         return Some(exact);
     }
     let fixed = |t: &str| t.split(['{', '}']).step_by(2).map(str::len).sum::<usize>();
-    METRICS
-        .iter()
+    defs.iter()
         .filter(|d| matches_template(d.name, name))
         .max_by_key(|d| fixed(d.name))
 }
@@ -248,6 +435,52 @@ pub fn markdown_table() -> String {
         ));
     }
     t
+}
+
+/// One named scalar result, in SI units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Metric {
+    pub name: String,
+    pub unit: &'static str,
+    pub value: f64,
+}
+
+/// The summary of a run: metrics in a fixed order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Summary {
+    pub metrics: Vec<Metric>,
+}
+
+impl Summary {
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.metrics
+            .iter()
+            .find(|m| m.name == name)
+            .map(|m| m.value)
+    }
+
+    /// Adds a metric; its unit is the registry's (a name the registry lacks is a programming
+    /// error, caught by the tests of every shipped case).
+    pub fn push(&mut self, name: impl Into<String>, value: f64) {
+        let name = name.into();
+        let unit = find(&name).map_or("?", |d| d.unit);
+        debug_assert!(unit != "?", "metric {name} is not in the registry");
+        self.metrics.push(Metric { name, unit, value });
+    }
+
+    /// Adds a metric named from the registry's `template` (its unit found by the template's
+    /// exact name, without matching the filled name against every template).
+    pub(crate) fn push_as(&mut self, template: &'static str, name: String, value: f64) {
+        let unit = METRICS
+            .iter()
+            .find(|d| d.name == template)
+            .map_or("?", |d| d.unit);
+        debug_assert!(
+            find(&name).map(|d| d.name) == Some(template),
+            "metric {name} is not the registry's {template}"
+        );
+        self.metrics.push(Metric { name, unit, value });
+    }
 }
 
 #[cfg(test)]

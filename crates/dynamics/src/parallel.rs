@@ -3,11 +3,14 @@
 //! even number of near-equal pieces, none longer than [`MAX_CHUNK`] steps), each chunk is run
 //! into sinks of its own, and the sinks are joined in the chunks' order. The summary adds its
 //! integrals chunk by chunk in any run, so the result is the one [`run`] gives, bit for bit,
-//! whatever the number of threads (tested in `tests/parallel.rs`).
+//! whatever the number of threads (tested in `tests/parallel.rs`). [`run_summary`] is the whole
+//! pipeline in one call.
 
-use crate::family::LoadFamily;
-use crate::losses::LossBudget;
-use crate::stepper::{run, GasAt, RunError, Sink, Stages, StepBlock};
+use crate::family::{Gas, Inertial, LoadFamily, Solver};
+use crate::metrics::Summary;
+use crate::stage::Stage;
+use crate::step::{Sink, StepBlock, StepRecord, Steps};
+use crate::stepper::{run, GasAt, RunError};
 use crate::summary::{summary_chunk, SummarySink, MAX_CHUNK};
 use cardan_mechanism::{Mechanism, MotionSource};
 use rayon::prelude::*;
@@ -92,15 +95,16 @@ const WAVE: usize = 8;
 /// Runs as [`run`] does with `sink` (no step taken yet) as the only sink, the steps shared by
 /// the threads of the current rayon pool. A run of at most [`MAX_CHUNK`] steps (not worth the
 /// threads' start: a sweep's short cases share the pool case by case), a motion that
-/// cannot be split ([`MotionSource::part`]: a solved one) or a loss budget whose steps depend
-/// on the ones before ([`LossBudget::carries_history`]) runs on the calling thread alone. A
-/// failure is the one [`run`] reports: the first failing step's.
+/// cannot be split ([`MotionSource::part`]: a solved one) or a stage whose steps depend on the
+/// ones before ([`Stage::carries_history`]) runs on the calling thread alone. Each piece
+/// evaluates [forks](Stage::fork) of the `stages`. A failure is the one [`run`] reports: the
+/// first failing step's.
 pub fn run_parallel(
     mechanism: &dyn Mechanism,
     motion: &mut dyn MotionSource,
     families: &[&dyn LoadFamily],
     gas: Option<GasAt>,
-    stages: Stages,
+    stages: &mut [&mut dyn Stage],
     sink: &mut impl Joinable,
 ) -> Result<(), RunError> {
     let first = motion.first_index();
@@ -108,16 +112,12 @@ pub fn run_parallel(
     let chunk = summary_chunk(first + count);
     let splittable = count > MAX_CHUNK + 1
         && first % chunk == 0
-        && !stages
-            .losses
-            .as_deref()
-            .is_some_and(LossBudget::carries_history)
+        && !stages.iter().any(|s| s.carries_history())
         && motion.part(first, first).is_some();
     if !splittable {
         return run(mechanism, motion, families, gas, stages, &mut [sink]);
     }
-    let Stages { losses, gears } = stages;
-    let losses = losses.as_deref();
+    let stages: &[&mut dyn Stage] = stages;
     let template = sink.fork();
     let last = first + count - 1;
     // Chunk k takes the steps from its start to the next chunk's start: the interval that
@@ -136,17 +136,17 @@ pub fn run_parallel(
             .into_par_iter()
             .map(|mut part| {
                 let mut piece = template.clone();
-                let mut budget = losses.cloned();
-                let stages = Stages {
-                    losses: budget.as_mut(),
-                    gears,
-                };
+                let mut forks: Vec<Box<dyn Stage>> = stages.iter().map(|s| s.fork()).collect();
+                let mut forked: Vec<&mut dyn Stage> = forks
+                    .iter_mut()
+                    .map(|s| &mut **s as &mut dyn Stage)
+                    .collect();
                 run(
                     mechanism,
                     part.as_mut(),
                     families,
                     gas,
-                    stages,
+                    &mut forked,
                     &mut [&mut piece],
                 )?;
                 Ok(piece)
@@ -157,4 +157,41 @@ pub fn run_parallel(
         }
     }
     Ok(())
+}
+
+/// Runs `mechanism` through `motion` with the inertial loads (and the gas loads, if `gas` is
+/// given), both by `solver`, and returns every step (if `keep_steps`) with the summary: the
+/// whole pipeline in one call, for tests and small studies. Without the steps, the run is
+/// shared by the threads of the rayon pool ([`run_parallel`]).
+pub fn run_summary(
+    mechanism: &dyn Mechanism,
+    motion: &mut dyn MotionSource,
+    gas: Option<GasAt>,
+    solver: Solver,
+    keep_steps: bool,
+) -> Result<(Vec<StepRecord>, Summary), String> {
+    let inertial = Inertial(solver);
+    let gas_family = Gas(solver);
+    let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
+    if gas.is_some() {
+        families.push(&gas_family);
+    }
+    let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
+    let points = motion.first_index() + motion.len();
+    let mut summary = SummarySink::new(mechanism, &names, points);
+    let mut steps = Steps::default();
+    if keep_steps {
+        run(
+            mechanism,
+            motion,
+            &families,
+            gas,
+            &mut [],
+            &mut [&mut summary, &mut steps],
+        )
+    } else {
+        run_parallel(mechanism, motion, &families, gas, &mut [], &mut summary)
+    }
+    .map_err(|e| e.to_string())?;
+    Ok((steps.0, summary.finish(mechanism)?))
 }

@@ -1,171 +1,19 @@
 //! The step loop: a motion source gives crank states (a prescribed one a block of
 //! [`LANES`] at a time, straight into the block's columns), the mechanism fills its columns,
 //! each load family its loads' columns, the finiteness of every step is checked, and the block
-//! is handed to the sinks (the summary reads the columns; per-step files and the stages, losses
-//! and gear ratings, take the steps one at a time, gathered from the columns only where they
-//! are wanted) and then forgotten. Nothing here grows with the number of steps.
-//! [`crate::run_parallel`] shares one run among threads, each piece through this loop.
+//! is handed to the sinks (the summary reads the columns; per-step files and the stages
+//! ([`Stage`]: the losses, the gear ratings) take the steps one at a time, gathered from the
+//! columns only where they are wanted) and then forgotten. Nothing here grows with the number
+//! of steps. [`crate::run_parallel`] shares one run among threads, each piece through this loop.
 
 use crate::energy::torque_shares;
 use crate::family::LoadFamily;
-use crate::gear_rating::{GearRatings, MeshRating};
-use crate::losses::LossBudget;
+use crate::stage::{Handed, Stage, StageError, StageInput};
+use crate::step::{Sink, Step, StepBlock};
 use cardan_mechanism::{
     vectorised, Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
     Topology, LANES,
 };
-
-/// One step, as the sinks that take steps one at a time see it.
-#[derive(Debug, Clone, Copy)]
-pub struct Step<'a> {
-    /// Index of the step in the run, from 0.
-    pub index: usize,
-    pub state: &'a State,
-    /// Absolute cylinder pressure, Pa, if a gas model loads the pistons.
-    pub pressure: Option<f64>,
-    /// Gas force on each piston along its axis, towards the crankshaft, N (empty without gas).
-    pub piston_forces: &'a [f64],
-    /// The loads of each family, in the order of the run's families.
-    pub families: &'a [Loads],
-    /// Their sum.
-    pub total: &'a Loads,
-    /// The power loss of each component of the run's [`LossBudget`], W (empty without one).
-    pub losses: &'a [f64],
-    /// The drive torque that covers the losses, Σ losses / ω, N·m (0 at rest, where the
-    /// losses are 0 too).
-    pub friction_torque: f64,
-    /// The rating of each gear mesh of the run's [`GearRatings`] (empty without one).
-    pub gears: &'a [MeshRating],
-    /// Each family's torque shares by body ([`torque_shares`]), N·m; computed, with the
-    /// state's extras, only when a sink [wants](Sink::wants_details) them (zeros otherwise).
-    pub shares: &'a [Vec<f64>],
-}
-
-/// Consecutive steps (at most [`LANES`]), as columns, and one by one where wanted.
-#[derive(Debug, Clone, Copy)]
-pub struct StepBlock<'a> {
-    /// Index of the block's first step in the run.
-    pub first: usize,
-    /// The mechanism's states: lane `i` is step `first + i`.
-    pub state: &'a StateBlock,
-    /// Absolute cylinder pressure at each step, Pa, if a gas model loads the pistons.
-    pub pressure: Option<&'a Column>,
-    /// Gas force on every piston at each step, along its axis towards the crankshaft, N, if a
-    /// gas model loads the pistons.
-    pub piston_force: Option<&'a Column>,
-    /// The loads of each family, in the order of the run's families.
-    pub families: &'a [LoadsBlock],
-    /// Their sum.
-    pub total: &'a LoadsBlock,
-    /// The same steps one at a time, with the losses and gear ratings of the run's stages:
-    /// made only when a sink [wants](Sink::wants_steps) them or the run has stages (empty
-    /// otherwise).
-    pub steps: &'a [Step<'a>],
-}
-
-impl StepBlock<'_> {
-    /// Steps in the block.
-    pub fn len(&self) -> usize {
-        self.state.len
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.state.len == 0
-    }
-
-    /// Lane `i` as a step: the run's own, if it made the steps one at a time, else gathered
-    /// from the columns into `scratch` (a sink that takes few of a block's steps, without
-    /// [wanting](Sink::wants_steps) them all; no losses, gear ratings or details then, as a
-    /// run without stages or details has none).
-    pub fn step<'s>(&'s self, i: usize, scratch: &'s mut StepScratch) -> Step<'s> {
-        if let Some(s) = self.steps.get(i) {
-            return *s;
-        }
-        let StepScratch {
-            state,
-            forces,
-            families,
-            total,
-            shares,
-        } = scratch;
-        self.state.gather(i, state);
-        forces.clear();
-        if let Some(f) = self.piston_force {
-            forces.resize(state.pistons.len(), f[i]);
-        }
-        families.resize(self.families.len(), total.clone());
-        for (out, columns) in families.iter_mut().zip(self.families) {
-            columns.gather(i, out);
-        }
-        self.total.gather(i, total);
-        shares.resize(self.families.len(), vec![0.0; state.bodies.len()]);
-        Step {
-            index: self.first + i,
-            state,
-            pressure: self.pressure.map(|p| p[i]),
-            piston_forces: forces,
-            families,
-            total,
-            losses: &[],
-            friction_torque: 0.0,
-            gears: &[],
-            shares,
-        }
-    }
-}
-
-/// Where [`StepBlock::step`] gathers a step.
-#[derive(Debug, Clone, Default)]
-pub struct StepScratch {
-    state: State,
-    forces: Vec<f64>,
-    families: Vec<Loads>,
-    total: Loads,
-    shares: Vec<Vec<f64>>,
-}
-
-impl StepScratch {
-    /// Room for a step of a mechanism of `topology` (its extras left at 0: no details).
-    pub fn for_topology(topology: &Topology) -> Self {
-        Self {
-            state: State::for_topology(topology),
-            forces: Vec::new(),
-            families: Vec::new(),
-            total: Loads::for_topology(topology),
-            shares: Vec::new(),
-        }
-    }
-}
-
-/// Where steps go.
-pub trait Sink {
-    /// Takes one step (a sink that [wants](Sink::wants_steps) steps); an error stops the run (a
-    /// file that cannot be written).
-    fn push(&mut self, _step: &Step) -> Result<(), String> {
-        Ok(())
-    }
-
-    /// Takes a block of consecutive steps, in order; an error names the index of the step it
-    /// stopped at. By default each of [`StepBlock::steps`] in turn.
-    fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
-        for s in block.steps {
-            self.push(s).map_err(|message| (s.index, message))?;
-        }
-        Ok(())
-    }
-
-    /// Whether it reads the steps one at a time ([`StepBlock::steps`]); a sink that reads only
-    /// the columns spares the run a copy of every step.
-    fn wants_steps(&self) -> bool {
-        true
-    }
-
-    /// Whether it reads [`Step::shares`] and the state's extras (they cost divisions and square
-    /// roots per step that a summary does not need).
-    fn wants_details(&self) -> bool {
-        false
-    }
-}
 
 /// Why a run stopped.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -187,27 +35,17 @@ pub enum RunError {
 /// that the threads sharing a run ([`crate::run_parallel`]) can all ask it.
 pub type GasAt<'a> = &'a (dyn Fn(f64) -> (f64, f64) + Sync);
 
-/// What each step computes from its total loads besides the loads themselves.
-#[derive(Default)]
-pub struct Stages<'a> {
-    /// The power loss of each component and the friction torque.
-    pub losses: Option<&'a mut LossBudget>,
-    /// The rating of each gear mesh.
-    pub gears: Option<&'a GearRatings>,
-}
-
 /// Runs `mechanism` through every crank state of `motion`, with the loads of `families`, the
-/// pistons pushed by `gas` if given, the `stages` computed from the total loads, every step to
-/// every sink.
+/// pistons pushed by `gas` if given, the `stages` evaluated in their order from the total
+/// loads at every step, every step to every sink.
 pub fn run(
     mechanism: &dyn Mechanism,
     motion: &mut dyn MotionSource,
     families: &[&dyn LoadFamily],
     gas: Option<GasAt>,
-    stages: Stages,
+    stages: &mut [&mut dyn Stage],
     sinks: &mut [&mut dyn Sink],
 ) -> Result<(), RunError> {
-    let Stages { mut losses, gears } = stages;
     let topology = mechanism.topology();
     // A prescribed motion's states come a block at a time, filled and loaded column by column
     // (`Mechanism::fill_block`, `LoadFamily::loads`) and taken so by the sinks
@@ -220,71 +58,33 @@ pub fn run(
     let mut total = LoadsBlock::for_topology(topology);
     let details = sinks.iter().any(|s| s.wants_details());
     // The steps one at a time, for the sinks that take them and for the stages.
-    let one_by_one =
-        details || losses.is_some() || gears.is_some() || sinks.iter().any(|s| s.wants_steps());
+    let one_by_one = details || !stages.is_empty() || sinks.iter().any(|s| s.wants_steps());
     let pistons = if gas.is_some() {
         topology.pistons.len()
     } else {
         0
     };
-    let mut out = vec![
-        StepOut {
-            state: State::for_topology(topology),
-            forces: vec![0.0; pistons],
-            loads: vec![Loads::for_topology(topology); families.len()],
-            total: Loads::for_topology(topology),
-            shares: vec![vec![0.0; topology.bodies.len()]; families.len()],
-            losses: vec![0.0; losses.as_ref().map_or(0, |l| l.names().len())],
-            friction_torque: 0.0,
-            ratings: vec![MeshRating::default(); gears.map_or(0, |g| g.names().len())],
-        };
-        if one_by_one { block } else { 0 }
-    ];
-    // The rated meshes' losses by joint, which the loss budget takes instead of computing them
-    // again.
-    let mut mesh_losses: Vec<(usize, f64)> =
-        Vec::with_capacity(out.first().map_or(0, |o| o.ratings.len()));
+    let fresh = StepOut::new(topology, families.len(), pistons, stages);
+    let mut out = vec![fresh; if one_by_one { block } else { 0 }];
+    // What each step's stages hand on to the later ones.
+    let mut handed = Handed::default();
     // The allocation of the block's steps, kept from block to block.
     let mut spare: Vec<Step<'static>> = Vec::with_capacity(block);
     let mut previous_torque = None;
     // A part of a run numbers its steps as the whole run does.
     let mut index = motion.first_index();
-    let inertial = families.iter().position(|f| f.inertia());
-    // Each family sees the sum of those before it; one family is its own total.
-    let several = families.len() > 1;
-    // A joint whose reaction is not linear in the loads (an involute mesh's loaded flank) makes
-    // the total the solve of the families' loads together, not the sum of their solves.
-    let together = several && !topology.superposable();
-    let together_inertia = families.iter().any(|f| f.inertia());
-    let together_pushed = families.iter().any(|f| f.piston_forces());
-    let mut names: Vec<&str> = families.iter().map(|f| f.name()).collect();
-    names.push("total");
+    let loading = Loading::new(families, topology);
     let mut ended = false;
     while !ended {
-        let mut stopped = None;
-        if block > 1 {
-            if let Some(source) = states.fill_next(mechanism, motion) {
-                stopped = Some(RunError::Motion {
-                    step: index + states.len,
-                    source,
-                });
-            }
-            ended = states.len < block;
-        } else {
-            let crank = match motion.next(previous_torque) {
-                None => None,
-                Some(Ok(crank)) => Some(crank),
-                Some(Err(source)) => {
-                    stopped = Some(RunError::Motion {
-                        step: index,
-                        source,
-                    });
-                    None
-                }
-            };
-            ended = crank.is_none();
-            states.fill(mechanism, crank.as_slice());
-        }
+        let stopped;
+        (stopped, ended) = next_states(
+            &mut states,
+            mechanism,
+            motion,
+            block,
+            index,
+            previous_torque,
+        );
         let n = states.len;
         if let Some(g) = gas {
             for i in 0..n {
@@ -292,30 +92,10 @@ pub fn run(
             }
         }
         let applied = gas.map(|_| &force);
-        if several {
-            total.clear(n);
-        }
-        for (family, out) in families.iter().zip(loads.iter_mut()) {
-            let f = if family.piston_forces() {
-                applied
-            } else {
-                None
-            };
-            family.loads(mechanism, &states, f, &total, out);
-            if several {
-                total.add(out, n);
-            }
-        }
-        if together {
-            let f = if together_pushed { applied } else { None };
-            families[0]
-                .solver()
-                .loads(mechanism, &states, together_inertia, f, &mut total);
-        }
-        let total: &LoadsBlock = if several { &total } else { &loads[0] };
         let gas_pressure = gas.map(|_| &pressure);
-        let clean = all_finite(&states, gas_pressure, &loads)
-            && (!together || all_finite(&states, None, std::slice::from_ref(total)));
+        loading.loads(mechanism, &states, applied, &mut loads, &mut total);
+        let total: &LoadsBlock = if loading.several { &total } else { &loads[0] };
+        let clean = loading.all_finite(&states, gas_pressure, &loads, total);
         if let Some(t) = total.crank_torque[..n].last() {
             previous_torque = Some(*t);
         }
@@ -323,19 +103,7 @@ pub fn run(
             let step = index + i;
             if !clean {
                 let gas = gas.map(|_| (pressure[i], force[i]));
-                check_lane(step, &states, i, gas, &names, &loads, mechanism)?;
-                if together {
-                    let total = std::slice::from_ref(total);
-                    check_lane(
-                        step,
-                        &states,
-                        i,
-                        None,
-                        &names[families.len()..],
-                        total,
-                        mechanism,
-                    )?;
-                }
+                loading.check_lane(step, &states, i, gas, &loads, total, mechanism)?;
             }
             let Some(o) = out.get_mut(i) else {
                 if clean {
@@ -343,72 +111,16 @@ pub fn run(
                 }
                 continue;
             };
-            let StepOut {
-                state,
-                forces,
-                loads: step_loads,
-                total: step_total,
-                shares,
-                losses: power_losses,
-                friction_torque,
-                ratings,
-            } = o;
-            states.gather(i, state);
-            if details {
-                mechanism.fill_extras(state);
-            }
-            let state: &State = state;
-            forces.fill(force[i]);
-            for (((family, out), columns), share) in families
-                .iter()
-                .zip(step_loads.iter_mut())
-                .zip(&loads)
-                .zip(shares)
-            {
-                columns.gather(i, out);
-                if details {
-                    let applied: &[f64] = if family.piston_forces() { forces } else { &[] };
-                    torque_shares(topology, state, family.inertia(), applied, share);
-                }
-            }
-            if several {
-                total.gather(i, step_total);
-            }
-            let total: &Loads = if several { step_total } else { &step_loads[0] };
-            if let Some(g) = gears {
-                g.evaluate(state, total, inertial.map(|k| &step_loads[k]), ratings)
-                    .map_err(|message| RunError::Sink { step, message })?;
-                mesh_losses.clear();
-                mesh_losses.extend(g.joints().zip(ratings.iter().map(|r| r.loss)));
-            }
-            *friction_torque = 0.0;
-            if let Some(budget) = losses.as_deref_mut() {
-                budget
-                    .evaluate(
-                        state,
-                        total,
-                        gas.map(|_| pressure[i]),
-                        &mesh_losses,
-                        power_losses,
-                    )
-                    .map_err(|message| RunError::Sink { step, message })?;
-                let sum: f64 = power_losses.iter().sum();
-                if !sum.is_finite() {
-                    let k = power_losses
-                        .iter()
-                        .position(|p| !p.is_finite())
-                        .unwrap_or(0);
-                    return Err(RunError::NonFinite {
-                        step,
-                        angle_deg: state.crank.angle.to_degrees(),
-                        quantity: format!("power_loss_{}", budget.names()[k]),
-                        value: power_losses[k],
-                    });
-                }
-                if state.crank.speed != 0.0 {
-                    *friction_torque = sum / state.crank.speed.abs();
-                }
-            }
+            let lane = Lane {
+                states: &states,
+                i,
+                force: force[i],
+                pressure: gas.map(|_| pressure[i]),
+                loads: &loads,
+                total,
+            };
+            o.take(&lane, &loading, mechanism, details, stages, &mut handed)
+                .map_err(|e| e.at(step, o.state.crank.angle))?;
         }
         // The block's steps, in an allocation kept from block to block (emptied, it takes
         // steps borrowing this block's results).
@@ -419,10 +131,12 @@ pub fn run(
             pressure: gas.map(|_| pressure[j]),
             piston_forces: &o.forces,
             families: &o.loads,
-            total: if several { &o.total } else { &o.loads[0] },
-            losses: &o.losses,
-            friction_torque: o.friction_torque,
-            gears: &o.ratings,
+            total: if loading.several {
+                &o.total
+            } else {
+                &o.loads[0]
+            },
+            stages: &o.stages,
             shares: &o.shares,
         }));
         let taken = StepBlock {
@@ -448,6 +162,153 @@ pub fn run(
     Ok(())
 }
 
+/// Fills `states` with the next block of `motion`'s states (`block` of them, or one: a solved
+/// motion's next state after the torque `previous_torque` of the one before), whose first is
+/// step `index`: the error that stopped the motion, if it did, and whether it has ended.
+fn next_states(
+    states: &mut StateBlock,
+    mechanism: &dyn Mechanism,
+    motion: &mut dyn MotionSource,
+    block: usize,
+    index: usize,
+    previous_torque: Option<f64>,
+) -> (Option<RunError>, bool) {
+    if block > 1 {
+        let stopped = states
+            .fill_next(mechanism, motion)
+            .map(|source| RunError::Motion {
+                step: index + states.len,
+                source,
+            });
+        return (stopped, states.len < block);
+    }
+    let (crank, stopped) = match motion.next(previous_torque) {
+        None => (None, None),
+        Some(Ok(crank)) => (Some(crank), None),
+        Some(Err(source)) => (
+            None,
+            Some(RunError::Motion {
+                step: index,
+                source,
+            }),
+        ),
+    };
+    states.fill(mechanism, crank.as_slice());
+    (stopped, crank.is_none())
+}
+
+/// How a run loads its steps: its families, and how their total is made.
+struct Loading<'f> {
+    families: &'f [&'f dyn LoadFamily],
+    /// Whether there are several families (one family is its own total).
+    several: bool,
+    /// Whether the total is the solve of the families' loads together, not their sum: a joint
+    /// whose reaction is not linear in the loads (an involute mesh's loaded flank) makes it so.
+    together: bool,
+    together_inertia: bool,
+    together_pushed: bool,
+    /// The inertial family's index.
+    inertial: Option<usize>,
+    /// The families' names, then `total`.
+    names: Vec<&'static str>,
+}
+
+impl<'f> Loading<'f> {
+    fn new(families: &'f [&'f dyn LoadFamily], topology: &Topology) -> Self {
+        let several = families.len() > 1;
+        let mut names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
+        names.push("total");
+        Self {
+            families,
+            several,
+            together: several && !topology.superposable(),
+            together_inertia: families.iter().any(|f| f.inertia()),
+            together_pushed: families.iter().any(|f| f.piston_forces()),
+            inertial: families.iter().position(|f| f.inertia()),
+            names,
+        }
+    }
+
+    /// Each family's loads at the block `states` into `loads` (the pistons pushed by `applied`
+    /// where a family takes them), and with several families their total into `total`; each
+    /// family sees the sum of those before it.
+    fn loads(
+        &self,
+        mechanism: &dyn Mechanism,
+        states: &StateBlock,
+        applied: Option<&Column>,
+        loads: &mut [LoadsBlock],
+        total: &mut LoadsBlock,
+    ) {
+        let n = states.len;
+        if self.several {
+            total.clear(n);
+        }
+        for (family, out) in self.families.iter().zip(loads.iter_mut()) {
+            let f = if family.piston_forces() {
+                applied
+            } else {
+                None
+            };
+            family.loads(mechanism, states, f, total, out);
+            if self.several {
+                total.add(out, n);
+            }
+        }
+        if self.together {
+            let f = if self.together_pushed { applied } else { None };
+            self.families[0]
+                .solver()
+                .loads(mechanism, states, self.together_inertia, f, total);
+        }
+    }
+
+    /// Whether every step of the block is finite ([`all_finite`]): its families' loads, and
+    /// the total where it is solved apart.
+    fn all_finite(
+        &self,
+        states: &StateBlock,
+        pressure: Option<&Column>,
+        loads: &[LoadsBlock],
+        total: &LoadsBlock,
+    ) -> bool {
+        all_finite(states, pressure, loads)
+            && (!self.together || all_finite(states, None, std::slice::from_ref(total)))
+    }
+
+    /// [`check_lane`] on the families' loads, and the total's where it is solved apart.
+    #[allow(clippy::too_many_arguments)]
+    fn check_lane(
+        &self,
+        step: usize,
+        states: &StateBlock,
+        i: usize,
+        gas: Option<(f64, f64)>,
+        loads: &[LoadsBlock],
+        total: &LoadsBlock,
+        mechanism: &dyn Mechanism,
+    ) -> Result<(), RunError> {
+        check_lane(step, states, i, gas, &self.names, loads, mechanism)?;
+        if self.together {
+            let total = std::slice::from_ref(total);
+            let names = &self.names[self.families.len()..];
+            check_lane(step, states, i, None, names, total, mechanism)?;
+        }
+        Ok(())
+    }
+}
+
+/// Lane `i` of a block: its states, the gas force on each piston and the pressure there (if a
+/// gas model runs), the families' loads and their total.
+struct Lane<'a> {
+    states: &'a StateBlock,
+    i: usize,
+    force: f64,
+    pressure: Option<f64>,
+    loads: &'a [LoadsBlock],
+    total: &'a LoadsBlock,
+}
+
 /// A step's state and what it computes besides, one at a time, kept for each step of a block
 /// until the sinks have taken the block.
 #[derive(Clone)]
@@ -457,9 +318,97 @@ struct StepOut {
     loads: Vec<Loads>,
     total: Loads,
     shares: Vec<Vec<f64>>,
-    losses: Vec<f64>,
-    friction_torque: f64,
-    ratings: Vec<MeshRating>,
+    /// Each stage's values.
+    stages: Vec<Vec<f64>>,
+}
+
+impl StepOut {
+    fn new(
+        topology: &Topology,
+        families: usize,
+        pistons: usize,
+        stages: &[&mut dyn Stage],
+    ) -> Self {
+        Self {
+            state: State::for_topology(topology),
+            forces: vec![0.0; pistons],
+            loads: vec![Loads::for_topology(topology); families],
+            total: Loads::for_topology(topology),
+            shares: vec![vec![0.0; topology.bodies.len()]; families],
+            stages: stages.iter().map(|s| vec![0.0; s.width()]).collect(),
+        }
+    }
+
+    /// Takes `lane` one at a time: gathers its state and loads (with the state's extras and
+    /// the torque shares if `details`), then evaluates the `stages` on them in turn.
+    fn take(
+        &mut self,
+        lane: &Lane,
+        loading: &Loading,
+        mechanism: &dyn Mechanism,
+        details: bool,
+        stages: &mut [&mut dyn Stage],
+        handed: &mut Handed,
+    ) -> Result<(), StageError> {
+        let topology = mechanism.topology();
+        let i = lane.i;
+        lane.states.gather(i, &mut self.state);
+        if details {
+            mechanism.fill_extras(&mut self.state);
+        }
+        let state: &State = &self.state;
+        self.forces.fill(lane.force);
+        for (((family, out), columns), share) in loading
+            .families
+            .iter()
+            .zip(self.loads.iter_mut())
+            .zip(lane.loads)
+            .zip(&mut self.shares)
+        {
+            columns.gather(i, out);
+            if details {
+                let applied: &[f64] = if family.piston_forces() {
+                    &self.forces
+                } else {
+                    &[]
+                };
+                torque_shares(topology, state, family.inertia(), applied, share);
+            }
+        }
+        if loading.several {
+            lane.total.gather(i, &mut self.total);
+        }
+        let input = StageInput {
+            state,
+            total: if loading.several {
+                &self.total
+            } else {
+                &self.loads[0]
+            },
+            inertial: loading.inertial.map(|k| &self.loads[k]),
+            pressure: lane.pressure,
+        };
+        handed.mesh_losses.clear();
+        for (stage, values) in stages.iter_mut().zip(&mut self.stages) {
+            stage.evaluate(&input, handed, values)?;
+        }
+        Ok(())
+    }
+}
+
+impl StageError {
+    /// The run's error for this stage's error at step `step` (crank angle `angle`, rad).
+    fn at(self, step: usize, angle: f64) -> RunError {
+        match self {
+            StageError::Failed(message) => RunError::Sink { step, message },
+            StageError::NonFinite { quantity, value } => RunError::NonFinite {
+                step,
+                angle_deg: angle.to_degrees(),
+                quantity,
+                value,
+            },
+        }
+    }
 }
 
 vectorised! {
@@ -615,87 +564,6 @@ fn check_finite(
         }),
         None => Ok(()),
     }
-}
-
-/// One step kept whole, for tests and callers that want every step in memory.
-#[derive(Debug, Clone, PartialEq)]
-pub struct StepRecord {
-    pub state: State,
-    pub pressure: Option<f64>,
-    pub piston_forces: Vec<f64>,
-    pub families: Vec<Loads>,
-    pub total: Loads,
-    pub losses: Vec<f64>,
-    pub friction_torque: f64,
-    pub shares: Vec<Vec<f64>>,
-}
-
-/// A sink that keeps every step (memory grows with the steps: for tests and small runs).
-#[derive(Debug, Clone, Default)]
-pub struct Steps(pub Vec<StepRecord>);
-
-impl Sink for Steps {
-    fn wants_details(&self) -> bool {
-        true
-    }
-
-    fn push(&mut self, s: &Step) -> Result<(), String> {
-        self.0.push(StepRecord {
-            state: s.state.clone(),
-            pressure: s.pressure,
-            piston_forces: s.piston_forces.to_vec(),
-            families: s.families.to_vec(),
-            total: s.total.clone(),
-            losses: s.losses.to_vec(),
-            friction_torque: s.friction_torque,
-            shares: s.shares.to_vec(),
-        });
-        Ok(())
-    }
-}
-
-/// Runs `mechanism` through `motion` with the inertial loads (and the gas loads, if `gas` is
-/// given), both by `solver`, and returns every step (if `keep_steps`) with the summary: the
-/// whole pipeline in one call, for tests and small studies. Without the steps, the run is
-/// shared by the threads of the rayon pool ([`crate::run_parallel`]).
-pub fn run_summary(
-    mechanism: &dyn Mechanism,
-    motion: &mut dyn MotionSource,
-    gas: Option<GasAt>,
-    solver: crate::Solver,
-    keep_steps: bool,
-) -> Result<(Vec<StepRecord>, crate::Summary), String> {
-    let inertial = crate::Inertial(solver);
-    let gas_family = crate::Gas(solver);
-    let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
-    if gas.is_some() {
-        families.push(&gas_family);
-    }
-    let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let points = motion.first_index() + motion.len();
-    let mut summary = crate::SummarySink::new(mechanism, &names, points);
-    let mut steps = Steps::default();
-    if keep_steps {
-        run(
-            mechanism,
-            motion,
-            &families,
-            gas,
-            Stages::default(),
-            &mut [&mut summary, &mut steps],
-        )
-    } else {
-        crate::run_parallel(
-            mechanism,
-            motion,
-            &families,
-            gas,
-            Stages::default(),
-            &mut summary,
-        )
-    }
-    .map_err(|e| e.to_string())?;
-    Ok((steps.0, summary.finish(mechanism)?))
 }
 
 #[cfg(test)]

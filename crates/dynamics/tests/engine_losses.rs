@@ -9,8 +9,8 @@ mod common;
 use cardan_dynamics::engine_losses::{displacement, AMBIENT_PRESSURE};
 use cardan_dynamics::{
     engine_metrics, fmep_breakdown, run, CircularArcCam, EngineLosses, FmepModel, FollowerContact,
-    Friction, Inertial, LoadFamily, LossBudget, Oil, Sink, Solver, Stages, Steps, SummarySink,
-    ValveTrain, ValveTrainLoss,
+    Friction, Inertial, LoadFamily, LossBudget, Oil, Sink, Solver, Steps, SummarySink, ValveTrain,
+    ValveTrainLoss,
 };
 use cardan_friction::Valvetrain;
 use cardan_mechanism::{CrankMotion, CrankState, Grid, Loads, Material, Mechanism};
@@ -461,7 +461,7 @@ fn run_level_energy_books_and_fmep() {
             .windows(2)
             .map(|p| {
                 0.5 * (p[1].state.crank.time - p[0].state.crank.time)
-                    * (p[1].losses[k] + p[0].losses[k])
+                    * (p[1].stages[0][1 + k] + p[0].stages[0][1 + k])
             })
             .sum();
         let mean = summary.get(&format!("power_loss_mean_{name}")).unwrap();
@@ -474,7 +474,7 @@ fn run_level_energy_books_and_fmep() {
         .windows(2)
         .map(|p| {
             0.5 * (p[1].state.crank.angle - p[0].state.crank.angle)
-                * (p[1].friction_torque + p[0].friction_torque)
+                * (p[1].stages[0][0] + p[0].stages[0][0])
         })
         .sum();
     close("∫T_f dθ against ∫P dt", by_angle, lost, 1e-5);
@@ -600,16 +600,20 @@ fn run_once(
     let inertial = Inertial(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 1] = [&inertial];
     let mut budget = LossBudget::new(friction, m, BORE).unwrap();
-    let mut summary = SummarySink::new(m, &["inertial"], steps + 1).with_losses(budget.names());
+    let mut summary = SummarySink::new(m, &["inertial"], steps + 1).with_stages(&[&budget]);
     let mut records = Steps::default();
     let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, steps);
     {
         let mut sinks: [&mut dyn Sink; 2] = [&mut summary, &mut records];
-        let stages = Stages {
-            losses: Some(&mut budget),
-            ..Stages::default()
-        };
-        run(m, &mut grid, &families, None, stages, &mut sinks).unwrap();
+        run(
+            m,
+            &mut grid,
+            &families,
+            None,
+            &mut [&mut budget],
+            &mut sinks,
+        )
+        .unwrap();
     }
     (records.0, summary.finish(m).unwrap())
 }

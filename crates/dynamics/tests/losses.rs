@@ -6,7 +6,7 @@
 mod common;
 
 use cardan_dynamics::{
-    run, Friction, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Stages, Steps, SummarySink,
+    run, Friction, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Steps, SummarySink,
 };
 use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
@@ -156,13 +156,14 @@ fn the_skirt_carries_coulomb_friction_on_the_side_force() {
     assert!(!budget.names().iter().any(|n| n == "skirt"));
 }
 
-/// Records the crank angle and friction torque of every step.
+/// Records the crank angle and friction torque of every step (the loss budget's first value:
+/// the run's only stage).
 #[derive(Default)]
 struct FrictionTorque(Vec<(f64, f64)>);
 
 impl Sink for FrictionTorque {
     fn push(&mut self, s: &cardan_dynamics::Step) -> Result<(), String> {
-        self.0.push((s.state.crank.angle, s.friction_torque));
+        self.0.push((s.state.crank.angle, s.stages[0][0]));
         Ok(())
     }
 }
@@ -181,7 +182,7 @@ fn losses_keep_the_energy_books() {
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
     let mut budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
     let mut summary =
-        SummarySink::new(m.as_ref(), &["inertial", "gas"], 7201).with_losses(budget.names());
+        SummarySink::new(m.as_ref(), &["inertial", "gas"], 7201).with_stages(&[&budget]);
     let mut torque = FrictionTorque::default();
     let mut steps = Steps::default();
     let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, 7200);
@@ -190,10 +191,7 @@ fn losses_keep_the_energy_books() {
         &mut grid,
         &families,
         Some(&pump_gas),
-        Stages {
-            losses: Some(&mut budget),
-            gears: None,
-        },
+        &mut [&mut budget],
         &mut [&mut summary, &mut torque, &mut steps],
     )
     .unwrap();
@@ -227,9 +225,10 @@ fn losses_keep_the_energy_books() {
     assert!((efficiency - gas_work / (total + lost)).abs() < 1e-12);
     // Every step's losses are non-negative and sum to the friction torque times the speed.
     for r in &steps.0 {
-        assert!(r.losses.iter().all(|p| *p >= 0.0));
-        let sum: f64 = r.losses.iter().sum();
-        assert!((sum - r.friction_torque * r.state.crank.speed).abs() <= 1e-9 * sum.max(1.0));
+        let (friction_torque, losses) = r.stages[0].split_first().unwrap();
+        assert!(losses.iter().all(|p| *p >= 0.0));
+        let sum: f64 = losses.iter().sum();
+        assert!((sum - friction_torque * r.state.crank.speed).abs() <= 1e-9 * sum.max(1.0));
     }
 }
 

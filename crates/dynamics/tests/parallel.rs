@@ -6,7 +6,7 @@ mod common;
 
 use cardan_dynamics::{
     run, run_parallel, Friction, Gas, GearRatings, GearSpec, Inertial, LoadFamily, LossBudget,
-    RunError, Solver, Stages, Summary, SummarySink, MAX_CHUNK,
+    RunError, Solver, Stage, Summary, SummarySink, MAX_CHUNK,
 };
 use cardan_mechanism::{CrankMotion, Grid, Material, Mechanism};
 use common::{accelerating_pump, pump_gas, thesis};
@@ -26,30 +26,30 @@ fn summary(
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
     let mut budget = LossBudget::new(&Friction::karhula(), m, 0.12).unwrap();
     assert!(!budget.carries_history());
-    let gears = GearRatings::new(&GearSpec::default(), m, None)
+    let mut gears = GearRatings::new(&GearSpec::default(), m, None)
         .ok()
         .filter(|g| !g.names().is_empty());
-    let mut sink = SummarySink::new(m, &["inertial", "gas"], steps + 1).with_losses(budget.names());
-    if let Some(g) = &gears {
-        sink = sink.with_gears(g);
+    // The ratings first: the budget takes their mesh losses.
+    let mut stages: Vec<&mut dyn Stage> = Vec::new();
+    if let Some(g) = &mut gears {
+        stages.push(g);
     }
+    stages.push(&mut budget);
+    let listed: Vec<&dyn Stage> = stages.iter().map(|s| &**s).collect();
+    let mut sink = SummarySink::new(m, &["inertial", "gas"], steps + 1).with_stages(&listed);
     let mut grid = Grid::new(
         motion,
         motion.start_angle,
         motion.start_angle + 4.0 * PI,
         steps,
     );
-    let stages = Stages {
-        losses: Some(&mut budget),
-        gears: gears.as_ref(),
-    };
     let ran = if threads == 0 {
         run(
             m,
             &mut grid,
             &families,
             Some(&pump_gas),
-            stages,
+            &mut stages,
             &mut [&mut sink],
         )
     } else {
@@ -57,7 +57,16 @@ fn summary(
             .num_threads(threads)
             .build()
             .unwrap()
-            .install(|| run_parallel(m, &mut grid, &families, Some(&pump_gas), stages, &mut sink))
+            .install(|| {
+                run_parallel(
+                    m,
+                    &mut grid,
+                    &families,
+                    Some(&pump_gas),
+                    &mut stages,
+                    &mut sink,
+                )
+            })
     };
     ran.map_err(|e: RunError| e.to_string())?;
     sink.finish(m)
@@ -144,7 +153,7 @@ fn a_long_prescribed_run_is_split_at_chunk_starts() {
             &mut grid,
             &[&inertial],
             None,
-            Stages::default(),
+            &mut [],
             &mut sink,
         )
         .unwrap();

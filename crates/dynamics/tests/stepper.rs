@@ -3,7 +3,7 @@
 //! go on fails at the step where it stops.
 
 use cardan_dynamics::{
-    run, Inertial, LoadFamily, RunError, Sink, Solver, Stages, Steps, Summary, SummarySink,
+    run, Inertial, LoadFamily, RunError, Sink, Solver, Steps, Summary, SummarySink,
 };
 use cardan_mechanism::{
     CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, MotionError, MotionSource, Options,
@@ -59,14 +59,7 @@ fn run_slider_crank(
         if keep {
             sinks.push(&mut kept);
         }
-        run(
-            m.as_ref(),
-            motion,
-            &families,
-            None,
-            Stages::default(),
-            &mut sinks,
-        )
+        run(m.as_ref(), motion, &families, None, &mut [], &mut sinks)
     };
     (kept.0, summary.finish(m.as_ref()), result)
 }

@@ -297,84 +297,81 @@ impl fmt::Display for CheckReport {
     }
 }
 
-impl PairSpec {
-    /// The input's own rules (module, pressure angle, teeth, shifts, tips), each error naming
-    /// the field, the rule and the value.
-    fn check(&self) -> Result<(), GearError> {
-        let spec = self;
-        let m = spec.module;
-        positive("module", m)?;
-        let alpha = spec.pressure_angle;
+/// Checks a pair's input field by field, in the order [`GearPair::new`] reports the first
+/// failure.
+fn check_input(spec: &PairSpec) -> Result<(), GearError> {
+    let m = spec.module;
+    positive("module", m)?;
+    let alpha = spec.pressure_angle;
+    require(
+        alpha.is_finite() && alpha > 0.0 && alpha < 45f64.to_radians(),
+        "pressure_angle",
+        "must lie in (0, 45°) [rad]",
+        alpha,
+    )?;
+    let z1 = spec.pinion.teeth;
+    let z2 = spec.gear.teeth;
+    require(
+        z1 >= 3,
+        "pinion.teeth",
+        "must be >= 3 (external pinion)",
+        z1 as f64,
+    )?;
+    require(
+        z2 != 0,
+        "gear.teeth",
+        "must be non-zero (negative = internal)",
+        0.0,
+    )?;
+    let internal = z2 < 0;
+    if internal {
         require(
-            alpha.is_finite() && alpha > 0.0 && alpha < 45f64.to_radians(),
-            "pressure_angle",
-            "must lie in (0, 45°) [rad]",
-            alpha,
-        )?;
-        let z1 = spec.pinion.teeth;
-        let z2 = spec.gear.teeth;
-        require(
-            z1 >= 3,
-            "pinion.teeth",
-            "must be >= 3 (external pinion)",
-            z1 as f64,
-        )?;
-        require(
-            z2 != 0,
+            -z2 > z1,
             "gear.teeth",
-            "must be non-zero (negative = internal)",
-            0.0,
+            "an internal gear needs more teeth than the pinion (|z2| > z1)",
+            z2 as f64,
         )?;
-        if z2 < 0 {
-            require(
-                -z2 > z1,
-                "gear.teeth",
-                "an internal gear needs more teeth than the pinion (|z2| > z1)",
-                z2 as f64,
-            )?;
-        } else {
-            require(z2 >= 3, "gear.teeth", "must be >= 3", z2 as f64)?;
-        }
-        for (name_x, name_hf, name_j, g) in [
-            (
-                "pinion.shift",
-                "pinion.dedendum_coefficient",
-                "pinion.thickness_allowance",
-                &spec.pinion,
-            ),
-            (
-                "gear.shift",
-                "gear.dedendum_coefficient",
-                "gear.thickness_allowance",
-                &spec.gear,
-            ),
-        ] {
-            finite(name_x, g.shift)?;
-            require(g.shift.abs() <= 3.0, name_x, "|x| must be <= 3", g.shift)?;
-            non_negative(name_hf, g.dedendum_coefficient)?;
-            non_negative(name_j, g.thickness_allowance)?;
-            match g.tip {
-                Tip::Coefficient(ha) => {
-                    require(
-                        ha.is_finite() && (0.0..=3.0).contains(&ha),
-                        "tip addendum coefficient",
-                        "must lie in [0, 3]",
-                        ha,
-                    )?;
-                }
-                Tip::Diameter(da) => positive("tip diameter", da)?,
-            }
-        }
-
-        Ok(())
+    } else {
+        require(z2 >= 3, "gear.teeth", "must be >= 3", z2 as f64)?;
     }
+    for (name_x, name_hf, name_j, g) in [
+        (
+            "pinion.shift",
+            "pinion.dedendum_coefficient",
+            "pinion.thickness_allowance",
+            &spec.pinion,
+        ),
+        (
+            "gear.shift",
+            "gear.dedendum_coefficient",
+            "gear.thickness_allowance",
+            &spec.gear,
+        ),
+    ] {
+        finite(name_x, g.shift)?;
+        require(g.shift.abs() <= 3.0, name_x, "|x| must be <= 3", g.shift)?;
+        non_negative(name_hf, g.dedendum_coefficient)?;
+        non_negative(name_j, g.thickness_allowance)?;
+        match g.tip {
+            Tip::Coefficient(ha) => {
+                require(
+                    ha.is_finite() && (0.0..=3.0).contains(&ha),
+                    "tip addendum coefficient",
+                    "must lie in [0, 3]",
+                    ha,
+                )?;
+            }
+            Tip::Diameter(da) => positive("tip diameter", da)?,
+        }
+    }
+    Ok(())
 }
 
 impl GearPair {
     /// Validates the input and computes the ISO 21771 geometry. Never panics; invalid input
     /// returns [`GearError::InvalidInput`] naming the field, the rule and the value.
     pub fn new(spec: PairSpec) -> Result<Self, GearError> {
-        spec.check()?;
+        check_input(&spec)?;
         let m = spec.module;
         let alpha = spec.pressure_angle;
         let (z1, z2) = (spec.pinion.teeth, spec.gear.teeth);

@@ -211,8 +211,7 @@ mod tests {
         let layout = RunLayout {
             families: &["inertial"],
             gas: false,
-            losses: &[],
-            gears: None,
+            stages: &[],
         };
         for (last_step, decimation) in [(10, 1), (100_000, 1), (100_000, 3), (700_001, 7)] {
             let sink = ChartSink::new(m.as_ref(), &layout, decimation, last_step, "c");

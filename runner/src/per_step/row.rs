@@ -2,7 +2,7 @@
 //! its header for a mechanism and a run ([`RunLayout`]), how a step fills it ([`Row`]), and the
 //! check that its numbers are finite.
 
-use cardan_dynamics::{radial, tangential, GearRatings, Step};
+use cardan_dynamics::{radial, tangential, StageColumn, Step};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use std::ops::Range;
 use std::sync::Arc;
@@ -57,8 +57,7 @@ fn header(
     mechanism: &dyn Mechanism,
     families: &[&str],
     gas: bool,
-    losses: &[String],
-    gears: Option<&GearRatings>,
+    stages: &[Vec<StageColumn>],
 ) -> (Vec<String>, Range<usize>) {
     let t = mechanism.topology();
     let mut h: Vec<String> = [
@@ -129,29 +128,16 @@ fn header(
             h.push(format!("{f}_torque_{}_nm", b.name));
         }
     }
-    if let Some(g) = gears {
-        for (name, bending) in g.names().into_iter().zip(g.bending()) {
-            h.push(format!("{name}_dynamic_tooth_load_n"));
-            h.push(format!("{name}_contact_stress_pa"));
-            if bending {
-                h.push(format!("{name}_bending_stress_pa"));
-            }
-        }
-    }
-    if !losses.is_empty() {
-        h.push("friction_torque_nm".into());
-        h.extend(losses.iter().map(|c| format!("power_loss_{c}_w")));
-    }
+    h.extend(stages.iter().flatten().map(|c| c.name.clone()));
     (h, bodies)
 }
 
 /// What a run's steps hold besides the mechanism's own state: the load families (in the run's
-/// order), a gas model, the loss components, the rated gear meshes.
+/// order), a gas model, the columns of each of the run's stages (in the run's order).
 pub struct RunLayout<'b> {
     pub families: &'b [&'b str],
     pub gas: bool,
-    pub losses: &'b [String],
-    pub gears: Option<&'b GearRatings>,
+    pub stages: &'b [Vec<StageColumn>],
 }
 
 /// The per-step row of one crank train: its column names and how a [`Step`] fills it. The
@@ -170,6 +156,8 @@ pub struct Row<'a> {
     /// Families with a total (the names of the header's force blocks).
     with_total: bool,
     total_shares: Vec<f64>,
+    /// Which of each stage's values its columns hold.
+    stages: Arc<[Vec<usize>]>,
 }
 
 impl<'a> Row<'a> {
@@ -180,7 +168,7 @@ impl<'a> Row<'a> {
         if with_total {
             names.push("total");
         }
-        let (header, bodies) = header(mechanism, &names, run.gas, run.losses, run.gears);
+        let (header, bodies) = header(mechanism, &names, run.gas, run.stages);
         Self {
             mechanism,
             header: header.into(),
@@ -188,6 +176,11 @@ impl<'a> Row<'a> {
             fill_bodies: true,
             with_total,
             total_shares: vec![0.0; mechanism.topology().bodies.len()],
+            stages: run
+                .stages
+                .iter()
+                .map(|s| s.iter().map(|c| c.value).collect())
+                .collect(),
         }
     }
 
@@ -264,15 +257,8 @@ impl<'a> Row<'a> {
             r.push(loads.crank_torque);
             r.extend(shares);
         }
-        for g in s.gears {
-            r.extend([g.dynamic_load, g.contact_stress]);
-            if !g.bending_stress.is_nan() {
-                r.push(g.bending_stress);
-            }
-        }
-        if !s.losses.is_empty() {
-            r.push(s.friction_torque);
-            r.extend(s.losses);
+        for (columns, values) in self.stages.iter().zip(s.stages) {
+            r.extend(columns.iter().map(|&k| values[k]));
         }
         debug_assert_eq!(
             r.len() - start,

@@ -4,7 +4,7 @@
 
 use cardan_case::case::Case;
 use cardan_dynamics::stepper::GasAt;
-use cardan_dynamics::{run_parallel, LoadFamily, Stages, Summary, SummarySink};
+use cardan_dynamics::{run_parallel, LoadFamily, Summary, SummarySink};
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
 
 /// Steps per crank revolution below which a run estimates its peaks' sampling error: from a 1°
@@ -78,8 +78,7 @@ pub(super) fn shifted_peaks(
         let a = motion.start_angle + third * h / 3.0;
         let mut grid = Grid::new(motion, a, a + n as f64 * h, n);
         let mut sink = SummarySink::new(mechanism, names, n + 1).for_peaks();
-        let stages = Stages::default();
-        run_parallel(mechanism, &mut grid, families, gas, stages, &mut sink)
+        run_parallel(mechanism, &mut grid, families, gas, &mut [], &mut sink)
             .map_err(|e| format!("the run on the shifted grid (sampling check): {e}"))?;
         shifted.push(sink.finish(mechanism)?);
     }

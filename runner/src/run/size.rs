@@ -39,13 +39,11 @@ pub fn estimated_bytes(case: &Case) -> Result<(u64, String), String> {
     let trains = if case.crank_phase != 0.0 { 2 } else { 1 };
     let mut columns = 0u64;
     for m in &case.mechanisms {
-        let (losses, gears) = stages_of(case, m.as_ref())?;
-        let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
+        let stages = stages_of(case, m.as_ref())?;
         let layout = RunLayout {
             families: &names,
             gas: case.gas.is_some(),
-            losses: &loss_names,
-            gears: gears.as_ref(),
+            stages: &stages.iter().map(|s| s.columns()).collect::<Vec<_>>(),
         };
         columns += trains * Row::new(m.as_ref(), &layout).header().len() as u64;
     }

@@ -8,7 +8,7 @@ use crate::per_step::{ChartSink, PerStepSink, RunLayout};
 use cardan_case::case::Case;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stages, Summary,
+    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stage, Summary,
     SummarySink,
 };
 use cardan_gas::GasMetric;
@@ -27,11 +27,12 @@ fn mean_speed(case: &Case) -> f64 {
     }
 }
 
-/// The loss budget and the gear ratings of `mechanism` in `case`, as its run takes them.
+/// The stages of `mechanism` in `case`, as its run takes them: the gear ratings, then the loss
+/// budget (which takes their mesh losses).
 pub(super) fn stages_of(
     case: &Case,
     mechanism: &dyn Mechanism,
-) -> Result<(Option<LossBudget>, Option<GearRatings>), String> {
+) -> Result<Vec<Box<dyn Stage>>, String> {
     let losses = match &case.friction {
         Some(f) => Some(
             LossBudget::new(f, mechanism, case.geometry.bore)
@@ -47,7 +48,11 @@ pub(super) fn stages_of(
         }
         None => None,
     };
-    Ok((losses, gears))
+    let gears = gears.map(|g| Box::new(g) as Box<dyn Stage>);
+    Ok(gears
+        .into_iter()
+        .chain(losses.map(|l| Box::new(l) as _))
+        .collect())
 }
 
 /// Runs one crank train of `case`: `mechanism` with its crank `shift` (rad) ahead of the
@@ -71,20 +76,14 @@ fn run_mechanism(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let (mut losses, gears) = stages_of(case, mechanism)?;
-    let loss_names = losses.as_ref().map_or(Vec::new(), |l| l.names().to_vec());
-    let mut summary = SummarySink::new(mechanism, &names, case.steps + 1);
-    if let Some(l) = &losses {
-        summary = summary.with_losses(l.names());
-    }
-    if let Some(g) = &gears {
-        summary = summary.with_gears(g);
-    }
+    let mut stages = stages_of(case, mechanism)?;
+    let listed: Vec<&dyn Stage> = stages.iter().map(|s| s.as_ref()).collect();
+    let summary = SummarySink::new(mechanism, &names, case.steps + 1).with_stages(&listed);
+    let columns: Vec<_> = stages.iter().map(|s| s.columns()).collect();
     let layout = RunLayout {
         families: &names,
         gas: case.gas.is_some(),
-        losses: &loss_names,
-        gears: gears.as_ref(),
+        stages: &columns,
     };
     let mut per_step = match dir {
         Some(dir) => PerStepSink::create(
@@ -129,10 +128,10 @@ fn run_mechanism(
             case.end_angle + shift,
             case.steps,
         );
-        let stages = Stages {
-            losses: losses.as_mut(),
-            gears: gears.as_ref(),
-        };
+        let mut stages: Vec<&mut dyn Stage> = stages
+            .iter_mut()
+            .map(|s| &mut **s as &mut dyn Stage)
+            .collect();
         // Without files the run is shared by the threads (the same results bit for bit); the
         // files are written in the steps' order, by a thread of their own.
         match per_step.as_mut() {
@@ -141,10 +140,17 @@ fn run_mechanism(
                 &mut grid,
                 &families,
                 gas,
-                stages,
+                &mut stages,
                 &mut [&mut sinks.0, p],
             ),
-            None => run_parallel(mechanism, &mut grid, &families, gas, stages, &mut sinks),
+            None => run_parallel(
+                mechanism,
+                &mut grid,
+                &families,
+                gas,
+                &mut stages,
+                &mut sinks,
+            ),
         }
         .map_err(|e| e.to_string())?;
         if check_sampling {

@@ -6,8 +6,8 @@ use super::{At, Loss};
 use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::gear_rating::mesh_speeds;
-use crate::summary::tangential;
+use crate::mesh::mesh_speeds;
+use crate::mesh::tangential;
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, JournalBearing, RingFilm, RingLoad,
     RollingModel, ViscousSkirt,

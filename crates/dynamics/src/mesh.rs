@@ -1,0 +1,178 @@
+//! A gear mesh joint of a mechanism, as the loss budget and the gear rating both take it: the
+//! components of its force (the tangential tooth load, Karhula 2008 A8.1.10), its speeds, and
+//! the gear pair built from the joint's declared pitch radius, ratio, pressure angle and
+//! internal ring with the case's [`GearSpec`] (ISO 21771 through [`cardan_gears::geometry`]).
+
+use crate::stage::SetupError;
+use cardan_gears::geometry::{GearPair, PairSpec};
+use cardan_gears::mesh_loss::MeshSpeeds;
+use cardan_mechanism::{JointMotion, State, C};
+
+/// The component of a mesh force along the pitch-circle tangent t = i·d (d: from the pitch
+/// point towards the centre of the mesh's first gear): the tooth load that transmits torque
+/// (Karhula A8.1.10).
+pub fn tangential(force: C, mesh: &JointMotion) -> f64 {
+    let t = C::i() * mesh.direction;
+    force.re * t.re + force.im * t.im
+}
+
+/// The component of a mesh force along d, towards the centre of the mesh's first gear.
+pub fn radial(force: C, mesh: &JointMotion) -> f64 {
+    force.re * mesh.direction.re + force.im * mesh.direction.im
+}
+
+/// Which force the rating takes as the tooth load.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ToothLoad {
+    /// The component along the pitch-circle tangent (A8.1.10): the torque-transmitting load.
+    #[default]
+    Tangential,
+    /// The magnitude of the mesh force (the thesis's ring force |F_Σ02c|).
+    RingForce,
+    /// Karhula's reading, which reproduces his published dynamic tooth loads of the cardan gear
+    /// (App. 11.6.1: air pump within 1.2 %, engine within 0.4 %; docs/case-file.md "Gear rating in runs")
+    /// with the `karhula` mesh-force reading:
+    /// - the mesh force of A8.1.10 with the thesis's sign slip: A6.2.1.36 and A6.2.1.51 give
+    ///   the ring force the gas force's sign (F_comp02c = +F_comp23c) where A5.2.1.49 gives
+    ///   the inertial force the opposite one (F_3i02c = −F_3i23c), so A7.1.15 adds what
+    ///   physically cancels: gas − inertial, i.e. total − 2·inertial;
+    /// - plus the cardan wheel's own translational inertia force (inferred, not printed: the
+    ///   thesis's model gives the wheel only a torque, A5.2.1.43-46, and this project, as the
+    ///   thesis, carries the wheel's mass on the balanced crankshaft): the wheel is the steel
+    ///   disc of A8.1.5 of its pitch diameter and face width (0.444 kg for Karhula's pair, not
+    ///   fitted); without it the pump's loads at 100π-200π rad/s are 1.7-7.2 % low;
+    /// - its part along the tied mesh force's direction (the cylinder axis; A5.2.1.48-51),
+    ///   projected on the pitch-circle tangent (A8.1.10), as a magnitude;
+    /// - Buckingham's load in its saturated limit
+    ///   ([`cardan_gears::buckingham::BuckinghamPair::saturated_dynamic_load`]).
+    Thesis,
+}
+
+/// The gears' steel, for the AGMA allowable stress numbers (grade 2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GearMaterial {
+    /// Through-hardened, from the hardness (AGMA 2001-D04 Figs. 3 and 8).
+    #[default]
+    ThroughHardened,
+    /// Carburized and hardened (AGMA 2001-D04 Tables 3 and 4): Karhula's chapter 8 names
+    /// carburizing steel for the cardan pair.
+    Carburized,
+}
+
+/// The gear pair of a mesh and its rating data, SI. Defaults: Karhula (2008) App. 8.1 and 9.1
+/// where it gives a value, this project's stated choice elsewhere.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GearSpec {
+    /// Teeth of the gear on the mesh's body (the cardan wheel; Karhula A9.1.36: 20).
+    pub teeth: u32,
+    /// Face width, m; `None`: a third of the pinion's pitch diameter (A8.1.9, A9.1.46).
+    pub face_width: Option<f64>,
+    /// Addendum of an internal (ring) gear in modules: 0.8 gives the contact ratio ≈ 1.8 of
+    /// Karhula's text (a full 1.0 interferes on 20/40 at 20°, validation note §1).
+    pub ring_addendum: f64,
+    /// Profile shift coefficients [pinion, gear] (ISO 21771 signs).
+    pub profile_shift: [f64; 2],
+    /// AGMA 2000 quality number Qv for the dynamic factor (this project's default 8).
+    pub quality: f64,
+    /// The gears' steel and its treatment, for the allowable stresses.
+    pub material: GearMaterial,
+    /// Brinell hardness of [pinion, gear] of through-hardened steel (this project's default
+    /// 300 HB).
+    pub hardness: [f64; 2],
+    /// AGMA bending geometry factors [pinion, gear]; `None`: the AGMA 908 25° table proxy for an
+    /// internal pair at 25°, no bending rating otherwise (AGMA 908 tabulates no 20° internal J).
+    pub j: Option<[f64; 2]>,
+    /// Buckingham's effective profile error (backlash), m (Karhula: 0.005 in = 0.127 mm).
+    pub error: f64,
+    /// Young's modulus of both gears, Pa (Karhula: 210 GPa).
+    pub youngs_modulus: f64,
+    /// Two identical gear sets side by side share the load (Nunes 2017's twin set).
+    pub twin: bool,
+    pub tooth_load: ToothLoad,
+}
+
+impl Default for GearSpec {
+    fn default() -> Self {
+        Self {
+            teeth: 20,
+            face_width: None,
+            ring_addendum: 0.8,
+            profile_shift: [0.0, 0.0],
+            quality: 8.0,
+            material: GearMaterial::ThroughHardened,
+            hardness: [300.0, 300.0],
+            j: None,
+            error: 0.005 * 0.0254,
+            youngs_modulus: 210e9,
+            twin: false,
+            tooth_load: ToothLoad::Tangential,
+        }
+    }
+}
+
+/// The validated pair of a mesh whose pinion has pitch radius `pitch_radius` (m): module
+/// m = 2·r/z1 (Karhula A9.1.37 for the cardan wheel, r = Z_AA0c), z2 = ratio·z1 (negative for an
+/// internal gear, ISO 21771); the pair must pass the interference and contact checks, each
+/// failure naming the field to change.
+pub fn mesh_pair(
+    spec: &GearSpec,
+    ratio: f64,
+    pitch_radius: f64,
+    internal: bool,
+    pressure_angle: f64,
+) -> Result<(GearPair, f64), SetupError> {
+    let failed = |field: &str, rule: String| SetupError {
+        field: field.into(),
+        rule,
+    };
+    let z1 = spec.teeth as i32;
+    let z2_real = ratio * f64::from(z1);
+    let z2 = z2_real.round() as i32;
+    if (f64::from(z2) - z2_real).abs() > 1e-9 {
+        return Err(failed(
+            "gear.teeth",
+            format!("{z1} teeth on the pinion give {z2_real} on the gear of ratio {ratio}: choose a number of teeth that makes it whole"),
+        ));
+    }
+    let module = 2.0 * pitch_radius / f64::from(z1);
+    let [x1, x2] = spec.profile_shift;
+    let mut pair_spec = PairSpec::standard(
+        module,
+        z1,
+        if internal { -z2 } else { z2 },
+        pressure_angle,
+        x1,
+        x2,
+    );
+    if internal {
+        pair_spec.gear = pair_spec.gear.with_addendum(spec.ring_addendum);
+    }
+    let pair = GearPair::new(pair_spec).map_err(|e| failed("gear", e.to_string()))?;
+    pair.verify().map_err(|e| {
+        failed(
+            "gear.ring_addendum",
+            format!(
+                "{e} (ring addendum {} modules, {z1}/{z2} teeth): shorten the ring addendum, shift the profiles or raise the pressure angle",
+                spec.ring_addendum
+            ),
+        )
+    })?;
+    let face_width = spec.face_width.unwrap_or(pair.pinion.reference / 3.0);
+    Ok((pair, face_width))
+}
+
+/// The speeds of a mesh joint `joint` whose pinion is on `body` with pitch radius
+/// `pitch_radius` (m): the pinion's absolute angular speed, and the carrier's from the joint's
+/// relative speed, which is the pitch-line speed relative to the carrier.
+pub(crate) fn mesh_speeds(
+    state: &State,
+    joint: usize,
+    body: usize,
+    pitch_radius: f64,
+) -> MeshSpeeds {
+    let pinion = state.bodies[body].angular_velocity;
+    MeshSpeeds {
+        pinion_absolute: pinion,
+        carrier: pinion - state.joints[joint].relative_speed / pitch_radius,
+    }
+}

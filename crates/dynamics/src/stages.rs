@@ -1,0 +1,410 @@
+//! The per-step stages of a run ([`Stage`]): the gear ratings ([`GearRatings`]) and the loss
+//! budget ([`LossBudget`]), each with the accumulator that totals its values into the summary.
+//! A run takes the ratings before the budget, which charges a rated mesh's loss as the rating
+//! computed it ([`Handed::mesh_losses`]).
+
+use crate::gear_rating::{GearRatings, MeshRating};
+use crate::losses::LossBudget;
+use crate::metrics::{self, MetricDef, Summary};
+use crate::stage::{Handed, RunTotals, Stage, StageColumn, StageError, StageInput, StageTotals};
+use crate::step::StepBlock;
+use crate::summary::peaks::raise;
+use crate::summary::Integral;
+use std::any::Any;
+use std::ops::Range;
+
+/// The steps of `block` at `lanes` (none where the run made no steps one at a time) and their
+/// indices in the run, with the values of stage `stage` at each.
+fn stage_steps<'a>(
+    block: &'a StepBlock,
+    lanes: Range<usize>,
+    stage: usize,
+) -> impl Iterator<Item = (usize, f64, &'a [f64])> + 'a {
+    let steps = block.steps.get(lanes.clone()).unwrap_or_default();
+    let indices = block.first + lanes.start..;
+    indices
+        .zip(steps)
+        .map(move |(k, s)| (k, s.state.crank.time, s.stages[stage].as_slice()))
+}
+
+/// The loss budget as a stage. Its values at a step: the drive torque that covers the losses,
+/// Σ losses / |ω|, N·m (0 at rest, where the losses are 0 too), then the power loss of each
+/// component ([`LossBudget::names`]), W.
+impl Stage for LossBudget {
+    fn width(&self) -> usize {
+        1 + self.names().len()
+    }
+
+    fn evaluate(
+        &mut self,
+        input: &StageInput,
+        handed: &mut Handed,
+        out: &mut [f64],
+    ) -> Result<(), StageError> {
+        let (torque, losses) = out.split_first_mut().expect("a friction torque");
+        *torque = 0.0;
+        let state = input.state;
+        LossBudget::evaluate(
+            self,
+            state,
+            input.total,
+            input.pressure,
+            &handed.mesh_losses,
+            losses,
+        )
+        .map_err(StageError::Failed)?;
+        let sum: f64 = losses.iter().sum();
+        if !sum.is_finite() {
+            let k = losses.iter().position(|p| !p.is_finite()).unwrap_or(0);
+            return Err(StageError::NonFinite {
+                quantity: format!("power_loss_{}", self.names()[k]),
+                value: losses[k],
+            });
+        }
+        if state.crank.speed != 0.0 {
+            *torque = sum / state.crank.speed.abs();
+        }
+        Ok(())
+    }
+
+    fn columns(&self) -> Vec<StageColumn> {
+        let torque = std::iter::once("friction_torque_nm".to_string());
+        let losses = self.names().iter().map(|c| format!("power_loss_{c}_w"));
+        torque
+            .chain(losses)
+            .enumerate()
+            .map(|(value, name)| StageColumn { name, value })
+            .collect()
+    }
+
+    fn metrics(&self) -> &'static [MetricDef] {
+        metrics::LOSSES
+    }
+
+    fn totals(&self) -> Box<dyn StageTotals> {
+        let n = self.names().len();
+        Box::new(LossTotals {
+            names: self.names().to_vec(),
+            work: vec![Integral::default(); n],
+            previous: vec![0.0; n],
+            friction_torque: 0.0,
+        })
+    }
+
+    fn carries_history(&self) -> bool {
+        LossBudget::carries_history(self)
+    }
+
+    fn fork(&self) -> Box<dyn Stage> {
+        Box::new(self.clone())
+    }
+}
+
+/// The works of the loss components and the peak friction torque.
+#[derive(Debug, Clone)]
+struct LossTotals {
+    names: Vec<String>,
+    /// ∫ P dt of each component, J (Karhula A9.1.68-71), by the trapezoidal rule in time.
+    work: Vec<Integral>,
+    /// Each component's power at the last step taken, W.
+    previous: Vec<f64>,
+    friction_torque: f64,
+}
+
+impl StageTotals for LossTotals {
+    fn push_lanes(
+        &mut self,
+        block: &StepBlock,
+        lanes: Range<usize>,
+        stage: usize,
+        previous: Option<f64>,
+    ) {
+        let (mut started, mut t0) = (previous.is_some(), previous.unwrap_or(0.0));
+        for (k, time, values) in stage_steps(block, lanes, stage) {
+            let dt = time - t0;
+            let (torque, losses) = values.split_first().expect("a friction torque");
+            for ((w, p0), &p) in self.work.iter_mut().zip(&mut self.previous).zip(losses) {
+                if started {
+                    w.add(k, 0.5 * dt * (p + *p0));
+                }
+                *p0 = p;
+            }
+            raise(&mut self.friction_torque, *torque);
+            (started, t0) = (true, time);
+        }
+    }
+
+    fn close_chunk(&mut self) {
+        self.work.iter_mut().for_each(Integral::close_chunk);
+    }
+
+    fn merge(&mut self, later: &dyn StageTotals) {
+        let later = later.as_any().downcast_ref::<Self>().expect("loss totals");
+        for (x, y) in self.work.iter_mut().zip(&later.work) {
+            x.merge(y);
+        }
+        raise(&mut self.friction_torque, later.friction_torque);
+        self.previous.clone_from(&later.previous);
+    }
+
+    /// The loss metrics (Karhula A9.1.56-75): mean power loss in all and per component, the
+    /// work lost, the peak friction torque, and, with a gas model, the efficiency and the
+    /// torque and power the machine needs (a pump: net work into the crank) or gives (an
+    /// engine: net work out).
+    fn finish(&self, run: &RunTotals, m: &mut Summary) {
+        let (span, time) = (run.span, run.time);
+        let lost: f64 = self.work.iter().map(Integral::value).sum();
+        m.push("loss_work", lost);
+        m.push("power_loss_mean", lost / time);
+        for (name, work) in self.names.iter().zip(&self.work) {
+            m.push_as(
+                "power_loss_mean_{component}",
+                format!("power_loss_mean_{name}"),
+                work.value() / time,
+            );
+        }
+        m.push("friction_torque_max", self.friction_torque);
+        let (Some(gas), Some(total)) = (run.work("gas"), run.work("total")) else {
+            return;
+        };
+        if total > 0.0 {
+            // (A9.1.60-61, 64-65, 72-73)
+            let need = total + lost;
+            m.push("torque_need_mean", need / span);
+            m.push("power_need_mean", need / time);
+            m.push("mechanical_efficiency", gas / need);
+        } else if total < 0.0 {
+            // (A9.1.62-63, 66-67, 74-75)
+            let out = -total - lost;
+            m.push("output_torque_mean", out / span);
+            m.push("output_power_mean", out / time);
+            m.push("mechanical_efficiency", out / -total);
+        }
+    }
+
+    fn fork(&self) -> Box<dyn StageTotals> {
+        Box::new(self.clone())
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}
+
+/// The gear ratings as a stage. Its values at a step: each rated mesh's [`MeshRating`] as its
+/// [values](MeshRating::values); it hands each mesh's loss on to the stages after it.
+impl Stage for GearRatings {
+    fn width(&self) -> usize {
+        MeshRating::WIDTH * self.joints().count()
+    }
+
+    fn evaluate(
+        &mut self,
+        input: &StageInput,
+        handed: &mut Handed,
+        out: &mut [f64],
+    ) -> Result<(), StageError> {
+        let ratings = self.ratings(input.state, input.total, input.inertial);
+        let outs = out.chunks_exact_mut(MeshRating::WIDTH);
+        for ((r, out), joint) in ratings.zip(outs).zip(self.joints()) {
+            let r = r.map_err(StageError::Failed)?;
+            out.copy_from_slice(&r.values());
+            handed.mesh_losses.push((joint, r.loss));
+        }
+        Ok(())
+    }
+
+    /// Each mesh's dynamic tooth load and contact stress, and its bending stress where it gets
+    /// a bending rating.
+    fn columns(&self) -> Vec<StageColumn> {
+        let mut c = Vec::new();
+        let meshes = self.names().into_iter().zip(self.bending()).enumerate();
+        for (k, (name, bending)) in meshes {
+            let at = |value: usize, what: &str| StageColumn {
+                name: format!("{name}_{what}"),
+                value: k * MeshRating::WIDTH + value,
+            };
+            c.push(at(1, "dynamic_tooth_load_n"));
+            c.push(at(2, "contact_stress_pa"));
+            if bending {
+                c.push(at(4, "bending_stress_pa"));
+            }
+        }
+        c
+    }
+
+    fn metrics(&self) -> &'static [MetricDef] {
+        metrics::GEAR_RATING
+    }
+
+    fn totals(&self) -> Box<dyn StageTotals> {
+        Box::new(GearTotals {
+            contact_ratio: self
+                .contact_ratios()
+                .into_iter()
+                .fold(f64::INFINITY, f64::min),
+            bending: self.bending().iter().all(|b| *b),
+            tooth_load: 0.0,
+            dynamic_load: 0.0,
+            contact_stress: 0.0,
+            contact_safety: f64::INFINITY,
+            bending_stress: 0.0,
+            bending_safety: f64::INFINITY,
+            loss_work: Integral::default(),
+            previous_loss: 0.0,
+        })
+    }
+
+    fn fork(&self) -> Box<dyn Stage> {
+        Box::new(self.clone())
+    }
+}
+
+/// The gear meshes' rating over the run: peaks of the loads and stresses, the smallest safety
+/// factors, the mesh loss work.
+#[derive(Debug, Clone)]
+struct GearTotals {
+    /// The smallest contact ratio of the meshes.
+    contact_ratio: f64,
+    /// Whether every mesh gets a bending rating.
+    bending: bool,
+    tooth_load: f64,
+    dynamic_load: f64,
+    contact_stress: f64,
+    contact_safety: f64,
+    bending_stress: f64,
+    bending_safety: f64,
+    /// ∫ P dt of the meshes' loss, J, by the trapezoidal rule in time.
+    loss_work: Integral,
+    /// The meshes' loss at the last step taken, W.
+    previous_loss: f64,
+}
+
+impl StageTotals for GearTotals {
+    fn push_lanes(
+        &mut self,
+        block: &StepBlock,
+        lanes: Range<usize>,
+        stage: usize,
+        previous: Option<f64>,
+    ) {
+        let (mut started, mut t0) = (previous.is_some(), previous.unwrap_or(0.0));
+        for (k, time, values) in stage_steps(block, lanes, stage) {
+            let ratings = values.chunks_exact(MeshRating::WIDTH);
+            let ratings = ratings.map(MeshRating::from_values);
+            let loss: f64 = ratings.clone().map(|r| r.loss).sum();
+            if started {
+                let dt = time - t0;
+                self.loss_work
+                    .add(k, 0.5 * dt * (loss + self.previous_loss));
+            }
+            self.previous_loss = loss;
+            for r in ratings {
+                raise(&mut self.tooth_load, r.tooth_load);
+                raise(&mut self.dynamic_load, r.dynamic_load);
+                raise(&mut self.contact_stress, r.contact_stress);
+                self.contact_safety = self.contact_safety.min(r.contact_safety);
+                if self.bending {
+                    raise(&mut self.bending_stress, r.bending_stress);
+                    self.bending_safety = self.bending_safety.min(r.bending_safety);
+                }
+            }
+            (started, t0) = (true, time);
+        }
+    }
+
+    fn close_chunk(&mut self) {
+        self.loss_work.close_chunk();
+    }
+
+    fn merge(&mut self, later: &dyn StageTotals) {
+        let b = later.as_any().downcast_ref::<Self>().expect("gear totals");
+        raise(&mut self.tooth_load, b.tooth_load);
+        raise(&mut self.dynamic_load, b.dynamic_load);
+        raise(&mut self.contact_stress, b.contact_stress);
+        self.contact_safety = self.contact_safety.min(b.contact_safety);
+        raise(&mut self.bending_stress, b.bending_stress);
+        self.bending_safety = self.bending_safety.min(b.bending_safety);
+        self.loss_work.merge(&b.loss_work);
+        self.previous_loss = b.previous_loss;
+    }
+
+    /// The gear metrics (issue 10): peaks over the run and the meshes, smallest safety factors
+    /// (infinite only if no mesh ever carried a load), mean mesh loss.
+    fn finish(&self, run: &RunTotals, m: &mut Summary) {
+        m.push("contact_ratio", self.contact_ratio);
+        m.push("mesh_tangential_load_max", self.tooth_load);
+        m.push("dynamic_tooth_load_max", self.dynamic_load);
+        m.push("contact_stress_max", self.contact_stress);
+        // A mesh that never carried a load has no finite safety factor: none is reported.
+        if self.contact_safety.is_finite() {
+            m.push("contact_safety_factor", self.contact_safety);
+        }
+        if self.bending {
+            m.push("bending_stress_max", self.bending_stress);
+            if self.bending_safety.is_finite() {
+                m.push("bending_safety_factor", self.bending_safety);
+            }
+        }
+        m.push(
+            "gear_mesh_power_loss_mean",
+            self.loss_work.value() / run.time,
+        );
+    }
+
+    fn fork(&self) -> Box<dyn StageTotals> {
+        Box::new(self.clone())
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Friction, GearSpec};
+    use cardan_mechanism::{MachineGeometry, MassInputs, Options, MECHANISMS};
+
+    /// Each stage's columns hold values it gives, and its totals give only metrics of its own
+    /// part of the registry.
+    #[test]
+    fn a_stage_declares_its_columns_and_metrics() {
+        let g = MachineGeometry {
+            crank_length: 0.06,
+            rod_length: 0.14,
+            bore: 0.12,
+            pin_offset: 0.0,
+        };
+        for entry in MECHANISMS {
+            let m = (entry.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
+            let mut stages: Vec<Box<dyn Stage>> = Vec::new();
+            if let Ok(r) = GearRatings::new(&GearSpec::default(), m.as_ref(), None) {
+                stages.push(Box::new(r));
+            }
+            let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
+            stages.push(Box::new(budget));
+            for s in &stages {
+                assert!(
+                    s.columns().iter().all(|c| c.value < s.width()),
+                    "{}",
+                    entry.name
+                );
+                let works = [("gas", -1.0), ("total", -2.0)];
+                let run = RunTotals {
+                    span: 1.0,
+                    time: 1.0,
+                    works: &works,
+                };
+                let mut summary = Summary::default();
+                s.totals().finish(&run, &mut summary);
+                assert!(!summary.metrics.is_empty());
+                for x in &summary.metrics {
+                    let own = metrics::find_in(s.metrics(), &x.name);
+                    assert!(own.is_some(), "{}: {}", entry.name, x.name);
+                }
+            }
+        }
+    }
+}
