@@ -141,6 +141,7 @@ pub struct CaseFile {
     pub masses: MassTable,
     /// The gas loading the pistons (its model and their inputs); without it, inertial loads only.
     /// Read by the model `model` names ([`crate::gas::MODELS`]).
+    #[serde(default)]
     #[schemars(schema_with = "crate::gas::gas_schema")]
     pub gas: Option<toml::Table>,
     /// The loss models; without it the run has no losses.

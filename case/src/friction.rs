@@ -558,7 +558,7 @@ mod tests {
         let e = error("rings = \"flim\"");
         assert_eq!(
             e,
-            "friction.rings: unknown word \"flim\": did you mean \"film\"? (the words here: karhula, film, none)"
+            "friction.rings: unknown word \"flim\": did you mean \"film\"? (must be \"karhula\", \"film\" or \"none\")"
         );
         let e = error("[joints]\ncrank_pin = \"palmgrn\"");
         assert!(

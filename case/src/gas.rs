@@ -176,8 +176,8 @@ impl Context<'_> {
                 let tail = rest[end + 1..].replace("the fields here", "its fields");
                 error.message = format!("unknown field \"{name}\", not an input of {model}{tail}");
             }
-        } else if m == "required, and missing" {
-            error.message = format!("required by {model}, and missing");
+        } else if let Some(what) = m.strip_prefix("= (missing): required") {
+            error.message = format!("= (missing): required by {model}{what}");
         }
         CaseError::Field {
             file: self.file.into(),

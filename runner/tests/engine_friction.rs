@@ -155,7 +155,7 @@ fn bad_engine_fields_are_clear_errors() {
                 "friction.valve_train",
                 "hydraulic",
                 r#"unknown word "hydraulic""#,
-                "flat, roller, none",
+                "must be \"flat\", \"roller\" or \"none\"",
             ],
         ),
         (

@@ -317,7 +317,7 @@ fn a_misspelled_field_or_model_names_the_path_and_the_nearest_name() {
                 "friction.bearings",
                 "unknown word \"petrof\"",
                 "did you mean \"petroff\"",
-                "karhula, palmgren, skf, petroff, short_bearing, none",
+                "must be \"karhula\", \"palmgren\", \"skf\", \"petroff\", \"short_bearing\" or \"none\"",
             ][..],
         ),
         (
