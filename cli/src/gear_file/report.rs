@@ -128,10 +128,18 @@ impl GearReport {
 
     /// `report.md`: inputs with units, geometry, checks with margins and remedies, rating.
     pub fn to_markdown(&self) -> String {
+        let mut o = String::new();
+        self.verdict_markdown(&mut o);
+        self.geometry_markdown(&mut o);
+        self.checks_markdown(&mut o);
+        self.rating_markdown(&mut o);
+        o
+    }
+
+    /// The title, the pair in a sentence, and the verdict with its failures and warnings.
+    fn verdict_markdown(&self, o: &mut String) {
         let p = &self.pair;
         let s = &p.spec;
-        let mm = |x: f64| format!("{:.4}", x * 1e3);
-        let mut o = String::new();
         let _ = writeln!(o, "# Gear pair `{}`\n", self.input.name);
         let _ = writeln!(
             o,
@@ -172,7 +180,13 @@ impl GearReport {
             }
             o.push('\n');
         }
+    }
 
+    /// The inputs as given, and the ISO 21771 geometry.
+    fn geometry_markdown(&self, o: &mut String) {
+        let p = &self.pair;
+        let s = &p.spec;
+        let mm = |x: f64| format!("{:.4}", x * 1e3);
         let _ = writeln!(o, "## Inputs\n\n| field | value as given |\n|---|---|");
         for (k, v) in &self.input.given {
             let _ = writeln!(o, "| `{k}` | `{}` |", cell(v));
@@ -257,7 +271,10 @@ impl GearReport {
         ] {
             let _ = writeln!(o, "| {name} | {} | {} |", mm(f(&p.pinion)), mm(f(&p.gear)));
         }
+    }
 
+    /// Every check with its margin, rule and remedies.
+    fn checks_markdown(&self, o: &mut String) {
         let _ = writeln!(
             o,
             "\n## Checks\n\n| check | kind | margin | result | rule | remedy |\n|---|---|---:|---|---|---|"
@@ -283,7 +300,10 @@ impl GearReport {
                 )
             );
         }
+    }
 
+    /// The AGMA 2001 rating, or why there is none.
+    fn rating_markdown(&self, o: &mut String) {
         match &self.rating {
             None => {
                 let _ = writeln!(o, "\n## Rating\n\nNo `[rating]` table: geometry only.");
@@ -386,6 +406,5 @@ impl GearReport {
                 );
             }
         }
-        o
     }
 }
