@@ -3,6 +3,8 @@
 //! registry of `cardan-mechanism`; each builds itself from the shared geometry, the mass fields
 //! and its own table (`[cardan_gear]`, ...).
 
+use crate::error::Invalid;
+use crate::error::{CaseError, Machine};
 use crate::gas::GasCase;
 use crate::masses::MassTable;
 use crate::quantity::{
@@ -16,52 +18,6 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
-
-/// Why a case file could not become a case.
-#[derive(Debug, thiserror::Error)]
-pub enum CaseError {
-    #[error("{file}: cannot read: {source}")]
-    Io {
-        file: PathBuf,
-        source: std::io::Error,
-    },
-    /// TOML syntax, a missing field, an unknown key or a value of the wrong type; the message
-    /// is the TOML reader's, with the line and column.
-    #[error("{file}: {message}")]
-    Syntax { file: PathBuf, message: String },
-    /// A field of the typed schema that did not read: its path and what is wrong with it.
-    #[error("{file}: case \"{case}\": {error}")]
-    Field {
-        file: PathBuf,
-        case: String,
-        error: crate::schema::FieldError,
-    },
-    #[error("{file}: case \"{case}\": {field} = {value}: {rule}")]
-    Invalid {
-        file: PathBuf,
-        case: String,
-        field: String,
-        value: String,
-        rule: String,
-    },
-}
-
-/// Pump or engine: what the gas does (used by the gas models).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum Machine {
-    Pump,
-    Engine,
-}
-
-impl Machine {
-    pub fn name(self) -> &'static str {
-        match self {
-            Machine::Pump => "pump",
-            Machine::Engine => "engine",
-        }
-    }
-}
 
 /// What a case writes besides `summary.json`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -287,9 +243,6 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
         }
     }
 }
-
-/// Reports a broken rule: the field, its value, the rule.
-pub(crate) type Invalid<'a> = dyn Fn(&str, &dyn std::fmt::Display, &str) -> CaseError + 'a;
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {

@@ -7,7 +7,7 @@
 //! components (valve train, accessories, pumping; all off by default) and the settings of the
 //! fmep cross-check ([`cardan_dynamics::EngineLosses`]).
 
-use crate::case::{CaseError, Invalid, Machine};
+use crate::error::{CaseError, Invalid, Machine};
 use crate::gas::{Clearance, GasCase};
 use crate::quantity::{
     broken, AngularSpeed, Density, Force, KinematicViscosity, Length, NonNegative, Number,

@@ -6,7 +6,7 @@
 //! [`crate::schema::read`], then built into the model by [`ModelTable::build`], which checks
 //! the rules that join fields (through the gas crate's own checks, naming the field).
 
-use crate::case::{CaseError, Machine};
+use crate::error::{CaseError, Machine};
 use crate::schema::FieldError;
 use cardan_gas::{Cylinder, GasError, GasModel};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};

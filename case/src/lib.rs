@@ -4,6 +4,7 @@
 //! their results; nothing here steps a machine.
 
 pub mod case;
+pub mod error;
 pub mod friction;
 pub mod gas;
 pub mod gear;
@@ -15,4 +16,5 @@ pub mod schema;
 pub mod sweep;
 pub mod units;
 
-pub use case::{Case, CaseError};
+pub use case::Case;
+pub use error::{CaseError, Machine};

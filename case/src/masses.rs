@@ -2,7 +2,7 @@
 //! estimated by the mass rules of `cardan-mechanism` (Karhula 2008 ch. 10; docs/mass-rules.md).
 //! A mechanism's own table wins over the common one.
 
-use crate::case::{CaseError, Invalid};
+use crate::error::{CaseError, Invalid};
 use crate::quantity::{Inertia, Length, Mass, NonNegative, Quantity};
 use crate::schema::FieldError;
 use cardan_mechanism::{Entry, MassInputs, MassRules, Material};

@@ -12,7 +12,7 @@
 //! "motion.angular_acceleration" = { from = 10, to = 1000, points = 3, scale = "log" }
 //! ```
 
-use crate::case::CaseError;
+use crate::error::CaseError;
 use crate::quantity::Whole;
 use crate::units::split_number;
 use rayon::prelude::*;

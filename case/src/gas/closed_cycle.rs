@@ -3,7 +3,7 @@
 //! Nunes's ([`ClosedCycle::nunes_2017`], Table 3.2), written once, in the gas crate.
 
 use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
-use crate::case::{CaseError, Machine};
+use crate::error::{CaseError, Machine};
 use crate::quantity::{
     Angle, AnglePerSpeed, GasConstant, NonNegative, Number, Positive, Pressure, Quantity,
     SpecificEnergy, Temperature,

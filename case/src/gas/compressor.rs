@@ -2,7 +2,7 @@
 //! in its periodic steady state (`cardan_gas::compressor`).
 
 use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
-use crate::case::{CaseError, Machine};
+use crate::error::{CaseError, Machine};
 use crate::quantity::{
     GasConstant, NonNegative, Number, Positive, Pressure, Quantity, Temperature,
 };

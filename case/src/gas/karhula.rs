@@ -3,7 +3,7 @@
 //! strokes.
 
 use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
-use crate::case::{CaseError, Machine};
+use crate::error::{CaseError, Machine};
 use crate::quantity::{Angle, Number, Positive, Pressure, Quantity};
 use cardan_gas::{EngineReading, KarhulaEngine, KarhulaPump, Polytropic};
 use schemars::JsonSchema;

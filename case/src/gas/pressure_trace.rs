@@ -14,7 +14,7 @@
 //! whose crankcase is at ambient.
 
 use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
-use crate::case::{CaseError, Machine};
+use crate::error::{CaseError, Machine};
 use crate::quantity::{Number, Quantity};
 use cardan_gas::{Chamber, GasError, GasMetric, GasModel, PreparedGas};
 use schemars::JsonSchema;

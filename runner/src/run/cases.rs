@@ -1,7 +1,8 @@
 //! Finding and reading a batch's case files: every `*.toml` under the paths given, each
 //! validated, one output folder per case or sweep; and the `--only` pattern.
 
-use cardan_case::case::{self, Case, CaseError};
+use cardan_case::case::{self, Case};
+use cardan_case::CaseError;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 
