@@ -48,7 +48,8 @@ fn shipped_examples_pass_and_write_json_and_report() {
 
 #[test]
 fn interfering_internal_pair_exits_1_naming_the_remedy() {
-    // 20/40 internal, 20°, full ring addendum: KHK involute interference (validation note 1.3).
+    // 20/40 internal, 20°, full ring addendum: KHK involute interference
+    // (docs/validation/gears.md §1.3).
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("full-ring.toml");
     std::fs::write(

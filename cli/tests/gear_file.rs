@@ -1,5 +1,5 @@
 //! Gear files against published examples (Shigley Example 14-4, the KHK internal-gear example of
-//! the validation note §1.2), the interfering 20/40 internal pair, the shipped examples in
+//! `docs/validation/gears.md` §1.2), the interfering 20/40 internal pair, the shipped examples in
 //! `configs-gears/`, bad files and the output folder.
 
 use cardan::gear_file::{evaluate, load, parse, run, GearReport};
@@ -47,8 +47,8 @@ fn num(v: &Value) -> f64 {
 
 #[test]
 fn shigley_example_14_4_through_the_shipped_gear_file() {
-    // Validation note 2.1: Budynas & Nisbett, Shigley's MED, Example 14-4, with its KR = 0.85
-    // (AGMA table at R = 0.90) and Cp = 2300 √psi pinned as the example does.
+    // docs/validation/gears.md §2.1: Budynas & Nisbett, Shigley's MED, Example 14-4, with its KR =
+    // 0.85 (AGMA table at R = 0.90) and Cp = 2300 √psi pinned as the example does.
     let dir = tempfile::tempdir().unwrap();
     let written = run(&shipped("shigley-14-4.toml"), dir.path()).unwrap();
     assert!(written.report.failures().is_empty());
@@ -125,9 +125,9 @@ profile_shift = [0.0, -0.516]   # KHK x2 = +0.516 is ISO x2 = -0.516
 
 #[test]
 fn khk_internal_gear_example() {
-    // Validation note 1.2 (KHK Gear Technical Reference, m = 3, α = 20°, 16/24, x2 = 0.516):
-    // values printed to 4–6 significant figures, tolerance half a unit of the last digit, as in
-    // crates/gears/tests/geometry.rs.
+    // docs/validation/gears.md §1.2 (KHK Gear Technical Reference, m = 3, α = 20°, 16/24, x2 =
+    // 0.516): values printed to 4–6 significant figures, tolerance half a unit of the last digit,
+    // as in crates/gears/tests/geometry.rs.
     let j = report_of(KHK).to_json();
     let mm = |v: &Value| num(v) * 1e3;
     assert_eq!(j["pair"], "internal");
@@ -178,8 +178,8 @@ teeth = [20, -40]
 
 #[test]
 fn interfering_internal_pair_is_written_and_fails_naming_the_remedy() {
-    // Validation note 1.3/1.4: 20/40, 20°, full ring addendum interferes (KHK limit 0.592 >
-    // z1/z2 = 0.5); largest ring addendum 0.8975 m (4 decimals, ±5e-5 m).
+    // docs/validation/gears.md §1.3/§1.4: 20/40, 20°, full ring addendum interferes (KHK limit
+    // 0.592 > z1/z2 = 0.5); largest ring addendum 0.8975 m (4 decimals, ±5e-5 m).
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("pair.toml");
     std::fs::write(&file, INTERFERING).unwrap();
@@ -218,7 +218,7 @@ fn interfering_internal_pair_is_written_and_fails_naming_the_remedy() {
 #[test]
 fn karhula_cardan_pair_example() {
     // Karhula 2008 A9.1.37: m = 2e/z1 = 2·30 mm/20 = 3 mm; ring addendum 0.8 m gives εα 1.7649
-    // (validation note 1.4, 4 decimals) and no interference.
+    // (docs/validation/gears.md §1.3, 4 decimals) and no interference.
     let input = load(&shipped("karhula-cardan-20-40.toml")).unwrap();
     let report = evaluate(&input).unwrap();
     assert!(report.failures().is_empty(), "{:?}", report.failures());

@@ -164,7 +164,7 @@ fn bad_engine_fields_are_clear_errors() {
         ),
         (
             "pumping = 1",
-            &["friction.pumping", "must be true or false", "not 1"],
+            &["friction.pumping = 1", "must be true or false"],
         ),
         (
             r#"pumping = true

@@ -68,7 +68,7 @@ pub struct GearSpec {
     /// Face width, m; `None`: a third of the pinion's pitch diameter (A8.1.9, A9.1.46).
     pub face_width: Option<f64>,
     /// Addendum of an internal (ring) gear in modules: 0.8 gives the contact ratio ≈ 1.8 of
-    /// Karhula's text (a full 1.0 interferes on 20/40 at 20°, validation note §1).
+    /// Karhula's text (a full 1.0 interferes on 20/40 at 20°, docs/validation/gears.md §1.3).
     pub ring_addendum: f64,
     /// Profile shift coefficients [pinion, gear] (ISO 21771 signs).
     pub profile_shift: [f64; 2],

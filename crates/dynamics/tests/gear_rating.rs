@@ -102,8 +102,8 @@ fn twin_sets_share_and_the_ring_force_reading_takes_the_magnitude() {
 
 #[test]
 fn an_interfering_pair_is_refused_with_its_remedy() {
-    // 20/40 at 20° with a full ring addendum interferes (validation note §1): the error names
-    // the field and the remedies.
+    // 20/40 at 20° with a full ring addendum interferes (docs/validation/gears.md §1.3): the error
+    // names the field and the remedies.
     let m = thesis("cardan_gear", Material::Steel);
     let spec = GearSpec {
         ring_addendum: 1.0,

@@ -74,8 +74,8 @@ impl KarhulaBearingSizes {
 /// Palmgren coefficients: M0 lubrication factor f0 and the load factor f1 = z (P0/C0)^y.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PalmgrenCoefficients {
-    /// Lubrication factor f0 (Harris: 1.5–2 oil mist or jet, 2–4 oil bath or grease, higher
-    /// for roller bearings).
+    /// Lubrication factor f0 (Karhula A9.1.31 takes 2; no published table of f0 by lubrication
+    /// method could be read, `docs/validation/rolling-bearings.md`).
     pub f0: f64,
     /// Load-factor constant z of f1 = z (P0/C0)^y.
     pub z: f64,
@@ -84,23 +84,23 @@ pub struct PalmgrenCoefficients {
 }
 
 impl PalmgrenCoefficients {
-    /// Deep-groove ball bearing, Harris/Palmgren: z = 0.0005 (range 0.0004–0.0006), y = 0.55,
-    /// f0 = 2 (recalled, not read: `docs/validation/rolling-bearings.md`).
+    /// Deep-groove ball bearing: z = 0.0005, y = 0.55, f0 = 2 (f0 as Karhula A9.1.31). z and y
+    /// are assumed, not published: no source that could be read gives them
+    /// (`docs/validation/rolling-bearings.md`).
     pub const DEEP_GROOVE_BALL: Self = Self {
         f0: 2.0,
         z: 0.0005,
         y: 0.55,
     };
-    /// Deep-groove ball bearing, older SKF catalogue form f1 = 0.0007 (P0/C0)^0.5, f0 = 2
-    /// (recalled, not read: `docs/validation/rolling-bearings.md`).
+    /// Deep-groove ball bearing, a second load-factor form f1 = 0.0007 (P0/C0)^0.5, f0 = 2:
+    /// assumed, not published (`docs/validation/rolling-bearings.md`).
     pub const DEEP_GROOVE_BALL_OLD_SKF: Self = Self {
         f0: 2.0,
         z: 0.0007,
         y: 0.5,
     };
-    /// Cylindrical roller bearing with cage under radial load, Harris: f1 = 0.0002–0.0004
-    /// (mid value, constant), f0 = 2–3 (oil bath; 2.5 taken). Memory values \[M\], not in the
-    /// `docs/validation/rolling-bearings.md`: check against Harris & Kotzalas before relying on them.
+    /// Cylindrical roller bearing with cage under radial load: a constant f1 = 0.0003 and
+    /// f0 = 2.5, assumed, not published (`docs/validation/rolling-bearings.md`).
     pub const CYLINDRICAL_ROLLER: Self = Self {
         f0: 2.5,
         z: 0.0003,
@@ -155,8 +155,8 @@ pub const KARHULA_LOAD_CONSTANT_PRINTED: f64 = 0.009;
 /// the slider-crank air pump of appendix 11.6.1 loses 38.9 kW at 200π rad/s against the
 /// published 29.28 kW, and a least-squares fit of the published losses over 3π...200π against
 /// this project's ring, skirt and bearing components scales the bearings by 0.089 while the
-/// rings and skirt come out at 1.02 and 0.94; 0.0009 (also the top of Palmgren's deep-groove
-/// range of z) reproduces all six published slider-crank losses within 6 %
+/// rings and skirt come out at 1.02 and 0.94; 0.0009 reproduces all six published
+/// slider-crank losses within 6 %
 /// (`runner/tests/friction.rs`).
 pub const KARHULA_LOAD_CONSTANT: f64 = 0.0009;
 

@@ -23,15 +23,15 @@ fn printed(got: f64, want: f64, decimals: i32) {
 }
 
 #[test]
-fn shigley_12_1_sommerfeld_number() {
-    // Shigley Ex. 12-1 (docs/validation/journal-bearings.md): μ = 4 µreyn, N = 30 rev/s,
-    // W = 500 lbf, r = 0.75 in, c = 0.0015 in, l = 1.5 in; S = (r/c)² μN/P = 500²·1.2e-4/222.2
-    // = 0.1350 by hand in US units (printed 0.135). Inputs converted to SI; S is
-    // dimensionless. Tolerance: half a unit of the 4th decimal.
+fn sommerfeld_number_worked_by_hand_in_us_units() {
+    // docs/validation/journal-bearings.md, the hand-worked US bearing (derived; no published
+    // value): μ = 4 µreyn, N = 30 rev/s, W = 500 lbf, r = 0.75 in, c = 0.0015 in, l = 1.5 in;
+    // S = (r/c)² μN/P = 500²·1.2e-4/222.2 = 0.1350 by hand in US units. Inputs converted to SI;
+    // S is dimensionless. Tolerance: half a unit of the 4th decimal of the hand result.
     let b = JournalBearing::new(0.75 * INCH, 1.5 * INCH, 0.0015 * INCH).unwrap();
     let s = sommerfeld_number(&b, 4e-6 * REYN, 30.0 * 2.0 * PI, 500.0 * LBF);
     printed(s, 0.1350, 4);
-    // P = W/(2rl) = 222 psi (printed 222).
+    // P = W/(2rl) = 222.2 psi by hand, checked to the unit.
     printed(b.unit_load(500.0 * LBF) / (LBF / (INCH * INCH)), 222.0, 0);
 }
 
@@ -39,8 +39,8 @@ fn shigley_12_1_sommerfeld_number() {
 fn short_bearing_lies_on_or_above_petroffs_line() {
     // Shigley ch. 12: Petroff's concentric journal gives the friction variable (r/c) f = 2π² S;
     // an eccentric film carries more shear (1/√(1 − ε²)) and the load term, so the short
-    // bearing's (r/c) f is above that line, and meets it as S → ∞ (ε → 0). On the Shigley
-    // Ex. 12-1 bearing (SI) over three decades of load: above, and within 1e-3 at S > 100.
+    // bearing's (r/c) f is above that line, and meets it as S → ∞ (ε → 0). On the hand-worked
+    // US bearing (SI) over three decades of load: above, and within 1e-3 at S > 100.
     let b = JournalBearing::new(0.75 * INCH, 1.5 * INCH, 0.0015 * INCH).unwrap();
     let (mu, w) = (4e-6 * REYN, 30.0 * 2.0 * PI);
     for load in [0.5, 5.0, 50.0, 500.0 * LBF, 5000.0 * LBF] {

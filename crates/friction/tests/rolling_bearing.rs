@@ -1,5 +1,7 @@
 //! Rolling-bearing friction against the derived 6208 case of
-//! `docs/validation/rolling-bearings.md`.
+//! `docs/validation/rolling-bearings.md`. The Palmgren coefficients are assumed, not published
+//! (no readable source gives them), so the Palmgren tests check only that the formula is
+//! evaluated with the coefficients given: the expected values are the formula worked by hand.
 
 use cardan_friction::{
     rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing,
@@ -25,8 +27,9 @@ fn case() -> (RollingBearing, f64, f64, f64) {
 
 #[test]
 fn bearing_6208_palmgren_harris() {
-    // docs/validation/rolling-bearings.md (derived): M0 = 66.21 N·mm, f1 = 0.0005 (P0/C0)^0.55 → M1 = 17.39 N·mm,
-    // M = 83.60 N·mm. Tolerance: half a unit of the printed 2nd decimal (N·mm).
+    // docs/validation/rolling-bearings.md (derived): M0 = 66.21 N·mm, with the assumed
+    // f1 = 0.0005 (P0/C0)^0.55 → M1 = 17.39 N·mm, M = 83.60 N·mm. Tolerance: half a unit of the
+    // printed 2nd decimal (N·mm).
     let (b, f, w, nu) = case();
     let l = rolling_bearing_loss(
         &b,
@@ -42,7 +45,8 @@ fn bearing_6208_palmgren_harris() {
 
 #[test]
 fn bearing_6208_palmgren_old_skf() {
-    // docs/validation/rolling-bearings.md (derived): f1 = 0.0007 (P0/C0)^0.5 → M1 = 27.25 N·mm, M = 93.46 N·mm, P = 29.4 W.
+    // docs/validation/rolling-bearings.md (derived): the assumed f1 = 0.0007 (P0/C0)^0.5
+    // → M1 = 27.25 N·mm, M = 93.46 N·mm, P = 29.4 W.
     let (b, f, w, nu) = case();
     let l = rolling_bearing_loss(
         &b,
@@ -58,9 +62,9 @@ fn bearing_6208_palmgren_old_skf() {
 
 #[test]
 fn bearing_6208_karhula_reading_and_ratio() {
-    // docs/validation/rolling-bearings.md (derived): Karhula T_L = 0.3131 N·m, T_V = 0.0648 N·m; his load term is ~18×
-    // Harris's (0.313 vs 0.0174 N·m). Tolerances: half a unit of the printed last decimal; the
-    // ratio 18.0 to one decimal.
+    // docs/validation/rolling-bearings.md (derived): Karhula T_L = 0.3131 N·m, T_V = 0.0648 N·m;
+    // his load term is ~18× that of the assumed Palmgren coefficients (0.313 vs 0.0174 N·m).
+    // Tolerances: half a unit of the printed last decimal; the ratio 18.0 to one decimal.
     let (b, f, w, nu) = case();
     let k = rolling_bearing_loss(
         &b,
@@ -83,7 +87,7 @@ fn bearing_6208_karhula_reading_and_ratio() {
     );
     printed(p.load_torque, 0.0174, 4);
     printed(k.load_torque / p.load_torque, 18.0, 1);
-    // Totals 0.3779 / 0.0836 N·m: factor 4.52 (from the note's printed parts:
+    // Totals 0.3779 / 0.0836 N·m: factor 4.52 (from the page's printed parts:
     // (0.3131 + 0.0648)/0.08360 = 4.520).
     printed(k.friction_torque / p.friction_torque, 4.52, 2);
     // Power ratio equals torque ratio (same speed).
@@ -109,9 +113,10 @@ fn bearing_6208_skf() {
 
 #[test]
 fn karhula_low_speed_constant_is_discontinuous() {
-    // Finding 3: at νn = 2000 Karhula's high-speed form gives 9.79e-2·2000^(2/3) = 15.5 (× f0
-    // d_m³) but the low-speed form 24.1: a 55 % jump. Palmgren's 160e-7 vs 1e-7·2000^(2/3) =
-    // 158.7e-7 is continuous within 1 %. Evaluated just either side of νn = 2000.
+    // rolling-bearings.md, "Why the code keeps two readings": at νn = 2000 Karhula's high-speed
+    // form gives 9.79e-2·2000^(2/3) = 15.5 (× f0 d_m³) but the low-speed form 24.1: a 55 % jump.
+    // Palmgren's 160e-7 vs 1e-7·2000^(2/3) = 158.7e-7 is continuous within 1 %. Evaluated just
+    // either side of νn = 2000.
     let b = RollingBearing::new(0.05, 20_000.0).unwrap();
     let nu = 10e-6; // 10 mm²/s → n = 200 rpm at νn = 2000
     let w_at = |nun: f64| nun / 10.0 * 2.0 * PI / 60.0;

@@ -254,31 +254,26 @@ fn volumetric_efficiency_falls_with_clearance_and_pressure_ratio() {
     }
 }
 
-/// Eastop & McConkey, *Applied Thermodynamics for Engineering Technologists*, 5th ed., ch. 9
-/// (the single-stage double-acting compressor with clearance; quoted from memory, so the
-/// book's printed answers are checked only to the digits recalled): 14 m³/min free air
-/// delivery at 1.013 bar, 15 °C; delivery 7 bar; 300 rev/min; clearance 5 % of the swept
-/// volume; n = 1.3. Answers: swept volume 0.0281 m³, delivery temperature 177 °C, indicated
-/// power 57.6 kW.
+/// A single-stage double-acting air compressor of the textbook kind, worked by hand (no
+/// published answer is used: the textbook example these inputs were once remembered from could
+/// not be read, `docs/validation.md`): 14 m³/min free air delivery at 1.013 bar, 15 °C; delivery
+/// 7 bar; 300 rev/min; clearance 5 % of the swept volume; n = 1.3.
 ///
-/// By hand (T_s = 288 K as the book takes 15 °C; R = 287.05): r = 7/1.013 = 6.910 168;
+/// By hand (T_s = 288 K for 15 °C; R = 287.05): r = 7/1.013 = 6.910 168;
 /// r^(1/1.3) = 4.423 443; η_v = 1 + 0.05 − 0.05·4.423 443 = 0.828 828; two strokes per
 /// revolution give 600 suctions/min, so V_s = (14/600)/0.828 828 = 0.028 152 21 m³;
 /// r^(0.3/1.3) = 1.562 169, T_d = 288·1.562 169 = 449.904 8 K; W = (1.3/0.3)·1.013e5·(14/600)·
 /// 0.562 169 = 5 758.052 J per stroke, P = 10·W = 57 580.52 W; m = p_s·(14/600)/(R·T_s) =
-/// 0.028 591 45 kg per stroke. A double-acting cylinder (piston rod neglected, as in the book)
-/// is one chamber at 600 cycles/min.
+/// 0.028 591 45 kg per stroke. A double-acting cylinder (piston rod neglected) is one chamber at
+/// 600 cycles/min.
 #[test]
-fn eastop_mcconkey_double_acting_example() {
+fn double_acting_compressor_worked_by_hand() {
     let c = Compressor::air(1.013e5, 288.0, 7e5, 1.3).unwrap();
     let probe = Cylinder::with_clearance(0.3, 1.0, 0.05).unwrap();
     let eta = c.steady_state(&probe).unwrap().0.volumetric_efficiency();
     close("η_v (hand)", eta, 0.828_827_838_8, 1e-9, 0.0);
     let swept = 14.0 / 600.0 / eta;
     close("V_s (hand)", swept, 0.028_152_207_54, 1e-9, 0.0);
-    // The book rounds η_v to 0.829 before dividing (0.023 33/0.829 = 0.028 15 → 0.0281), so
-    // its printed 0.0281 is met to one unit in its last digit.
-    assert!((swept - 0.0281).abs() <= 0.000_1, "book: 0.0281 m³");
 
     let cyl = Cylinder::with_clearance(0.3, swept, 0.05 * swept).unwrap();
     let speed = 600.0 * 2.0 * PI / 60.0;
@@ -286,9 +281,7 @@ fn eastop_mcconkey_double_acting_example() {
     let t_d = metric(&gas, "discharge_temperature");
     let power = metric(&gas, "indicated_power");
     close("T_d (hand)", t_d, 449.904_798_3, 1e-9, 0.0);
-    assert!((t_d - 273.0 - 177.0).abs() <= 0.5, "book: 177 °C");
     close("power (hand)", power, 57_580.517_05, 1e-6, 0.0);
-    assert!((power - 57.6e3).abs() <= 50.0, "book: 57.6 kW");
     close(
         "mass flow (hand)",
         metric(&gas, "delivered_mass_flow"),

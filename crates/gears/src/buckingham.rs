@@ -171,8 +171,8 @@ pub fn cardan_pitch_line_velocity(crank_speed: f64, cardan_crank_length: f64) ->
 }
 
 /// Buckingham's deformation factor `C = k e / (1/E1 + 1/E2)`, a load per unit face width
-/// \[N/m\] (validation note 3.1; lb/in in US units). `k` \[-\] (0.111 for 20° FD), `e` \[m\],
-/// `E` \[Pa\]. Homogeneous: the same `k` serves US and SI units.
+/// \[N/m\] (`docs/validation/gears.md` §3.1; lb/in in US units). `k` \[-\] (0.111 for 20° FD), `e`
+/// \[m\], `E` \[Pa\]. Homogeneous: the same `k` serves US and SI units.
 pub fn deformation_factor(k: f64, error: f64, e1: f64, e2: f64) -> Result<f64, GearError> {
     positive("k", k)?;
     non_negative("error", error)?;
@@ -188,7 +188,7 @@ pub fn k3_exact() -> f64 {
     0.05 * LBF.sqrt() / FT_PER_MIN
 }
 
-/// Buckingham's simplified dynamic load (validation note 3.2/3.3):
+/// Buckingham's simplified dynamic load (`docs/validation/gears.md` §3.2/§3.3):
 /// `Fd = Ft + K3 v (b C + Ft) / (K3 v + √(b C + Ft))` \[N\], `v` \[m/s\], `b C` \[N\] (face width
 /// times deformation factor), `k3` \[√N·s/m\] ([`k3_exact`] or a textbook rounding).
 /// Returns the **total** load `Fd`; the increment is `Fd − Ft`.

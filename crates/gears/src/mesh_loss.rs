@@ -12,15 +12,15 @@
 //!   radius A9.1.50 as printed; dynamic viscosity in **Pa·s** (A9.1.47) in the friction,
 //!   film and windage correlations.
 //! * [`Reading::Corrected`] — (1) viscosity in **centipoise** in A9.1.48, A9.1.51 and A9.1.54
-//!   (validation note finding 4: Benedict & Kelley's `3.17·10⁸` in lb/in, in/s, cP converts
+//!   (`docs/validation/gears.md` §4.3: Benedict & Kelley's `3.17·10⁸` in lb/in, in/s, cP converts
 //!   exactly to the printed 29.66 in N/m, m/s, cP, and the film formula with cP agrees with a
 //!   Hamrock–Dowson check, ~0.13 µm, whereas Pa·s gives ~1 nm); (2) internal-mesh kinematics
-//!   (finding 5): the mesh speed is the pinion speed **relative to the carrier** (crank), `2ω`
-//!   for the 2:1 cardan gear where Karhula's absolute speed is `ω`; the sliding factor of an
-//!   internal mesh is `(i−1)/i` and the rolling-sum term `(i+1)/i` (derived here: at a distance
-//!   `s` from the pitch point the sliding speed is `(ω1 ∓ ω2) s` and the rolling-speed sum
-//!   `ω1 d1 sin α + ω1 (1 ∓ 1/i) s`, upper sign external); the equivalent radius is
-//!   `ρ1 ρ2/(ρ1 ± ρ2)` at the same contact point as A9.1.50 (`ρ1 = (d1 sin α + L/2)/2`), whose
+//!   (`docs/validation/gears.md` §4.4): the mesh speed is the pinion speed **relative to the
+//!   carrier** (crank), `2ω` for the 2:1 cardan gear where Karhula's absolute speed is `ω`; the
+//!   sliding factor of an internal mesh is `(i−1)/i` and the rolling-sum term `(i+1)/i` (derived
+//!   here: at a distance `s` from the pitch point the sliding speed is `(ω1 ∓ ω2) s` and the
+//!   rolling-speed sum `ω1 d1 sin α + ω1 (1 ∓ 1/i) s`, upper sign external); the equivalent radius
+//!   is `ρ1 ρ2/(ρ1 ± ρ2)` at the same contact point as A9.1.50 (`ρ1 = (d1 sin α + L/2)/2`), whose
 //!   printed denominator `2(d2 sin α + L/2)` matches neither pair type; path of contact, contact
 //!   ratio and pressure angle are the pair's actual (operating) values. The friction
 //!   coefficient is clamped at 0 where the Benedict & Kelley logarithm turns negative
@@ -66,9 +66,11 @@ impl Reading {
 /// `Reading::Corrected.options()` all `true`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct LossOptions {
-    /// Viscosity in cP (finding 4) instead of Pa·s in A9.1.48, A9.1.51, A9.1.54.
+    /// Viscosity in cP (`docs/validation/gears.md` §4.3) instead of Pa·s in A9.1.48, A9.1.51,
+    /// A9.1.54.
     pub viscosity_in_centipoise: bool,
-    /// Carrier-relative mesh speed and internal-mesh sliding/rolling factors (finding 5).
+    /// Carrier-relative mesh speed and internal-mesh sliding/rolling factors
+    /// (`docs/validation/gears.md` §4.4).
     pub mesh_kinematics: bool,
     /// Actual path of contact, contact ratio, operating pressure angle and pitch diameters and
     /// the curvature-consistent `R_eq`, instead of A9.1.40, A9.1.52, A9.1.50.

@@ -1,5 +1,5 @@
 //! AGMA 2001-D04 / 908-B89 against Shigley Example 14-4, the AGMA 908 tables reproduced by
-//! Nunes 2017 and Nunes's face-width tables (validation note §2).
+//! Nunes 2017 and Nunes's face-width tables (`docs/validation/gears.md` §2).
 
 use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, contact_allowable_through_hardened, Grade,
@@ -19,7 +19,8 @@ fn close(value: f64, printed: f64, half_unit: f64) -> bool {
     (value - printed).abs() <= half_unit + 1e-3 * printed.abs()
 }
 
-/// Shigley Example 14-4 (validation note 2.1), inputs converted to SI here at the test edge.
+/// Shigley Example 14-4 (`docs/validation/gears.md` §2.1), inputs converted to SI here at the test
+/// edge.
 fn shigley_14_4() -> (GearSetRating, f64, f64, f64) {
     let (np, ng) = (17, 52);
     let m = INCH / 10.0; // Pd = 10 teeth/in
@@ -181,8 +182,8 @@ fn elastic_coefficient_values() {
 
 #[test]
 fn agma_908_i_tables_by_formula() {
-    // Validation note 2.3 / Nunes Annex A: AGMA 908-B89 I, φ 25°, ha = 1 m; the tables print 3
-    // decimals, so ±0.001 covers the print rounding (0.0005) and AGMA's own rounding.
+    // docs/validation/gears.md §2.3 / Nunes Annex A: AGMA 908-B89 I, φ 25°, ha = 1 m; the tables
+    // print 3 decimals, so ±0.001 covers the print rounding (0.0005) and AGMA's own rounding.
     let rows: &[(i32, i32, f64, f64)] = &[
         (14, 14, 0.0, 0.086),
         (17, 35, 0.0, 0.109),
@@ -209,7 +210,8 @@ fn agma_908_i_tables_by_formula() {
 
 #[test]
 fn internal_pitting_geometry_factor() {
-    // Validation note 2.3 [D] (finding 2): internal LPSTC I, printed to 3 decimals (±0.0005).
+    // docs/validation/gears.md §2.3, derived (finding 2): internal LPSTC I, printed to 3 decimals
+    // (±0.0005).
     let n = GearPair::new(PairSpec::standard(1e-3, 26, -52, deg(25.0), 0.0, 0.0)).unwrap();
     let i = pitting_geometry_factor(&n, IForm::Lpstc).unwrap();
     assert!((i - 0.305).abs() < 5e-4, "{i}");
@@ -256,10 +258,10 @@ fn nunes_table_4_8_interpolation() {
 
 #[test]
 fn nunes_factors() {
-    // Nunes 2017 Table 4.10 / validation note 2.4: Km 1.25374 / 1.13493 (FW = 52 mm) and Kv at
-    // 8000 rpm 1.1080 / 1.1448 (note's recomputation), half-unit tolerances. The thesis prints
+    // Nunes 2017 Table 4.10 / docs/validation/gears.md §2.4: Km 1.25374 / 1.13493 (FW = 52 mm) and
+    // Kv at 8000 rpm 1.1080 / 1.1448 (recomputed), half-unit tolerances. The thesis prints
     // Kv systematically lower than its own formula (8000 rpm: 1.1073 / 1.1438, i.e. −0.06 % /
-    // −0.09 %; extraction item 18), so its printed 10 rpm values 1.0044 / 1.0062 are checked to
+    // −0.09 %; gears.md §2.4), so its printed 10 rpm values 1.0044 / 1.0062 are checked to
     // 0.1 % (this formula gives 1.00446 / 1.00628).
     let kmp = nunes::load_distribution_factor(0.052, 0.026, 1.1, 0.8).unwrap();
     let kmg = nunes::load_distribution_factor(0.052, 0.052, 1.0, 0.8).unwrap();

@@ -1,5 +1,5 @@
 //! Buckingham's dynamic tooth load: SI chain against the same chain in US units, and the
-//! formula-level values of validation note §3.
+//! formula-level values of `docs/validation/gears.md` §3.
 
 use cardan_gears::buckingham::{
     cardan_pitch_line_velocity, deformation_factor, dynamic_load_simplified, k3_exact,
@@ -68,7 +68,7 @@ fn si_chain_equals_us_chain() {
 
 #[test]
 fn karhula_method_derived_sample() {
-    // Validation note 3.3 [D]: Ft = 500 lb, crank 3000 rpm (v = 3710.5 ft/min):
+    // docs/validation/gears.md §3.3 (derived): Ft = 500 lb, crank 3000 rpm (v = 3710.5 ft/min):
     // def = 3.810e-4 in, f2 = 7061.7 lb, f1 = 15 326 lb, fa = 4834 lb, Fdyn = 7201 lb;
     // 6000 rpm: Fdyn = 7524 lb. Half-unit tolerances of the printed digits.
     let p = karhula_pair();
@@ -87,8 +87,9 @@ fn karhula_method_derived_sample() {
 
 #[test]
 fn deformation_factor_values() {
-    // Note 3.1: steel/steel E = 30 Mpsi, e = 0.001 in, k = 0.111 -> C = 1665 lb/in (exact
-    // arithmetic, printed to 4 figures); SI: E = 207 000 N/mm², Σe = 0.032 mm -> 367.6 N/mm.
+    // docs/validation/gears.md §3.1: steel/steel E = 30 Mpsi, e = 0.001 in, k = 0.111
+    // -> C = 1665 lb/in (exact arithmetic, printed to 4 figures); SI: E = 207 000 N/mm²,
+    // Σe = 0.032 mm -> 367.6 N/mm.
     let c = deformation_factor(0.111, 0.001 * INCH, 30e6 * PSI, 30e6 * PSI).unwrap();
     assert!((c / (LBF / INCH) - 1665.0).abs() < 0.5);
     let c = deformation_factor(0.111, 0.032e-3, 207e9, 207e9).unwrap();
@@ -97,16 +98,16 @@ fn deformation_factor_values() {
 
 #[test]
 fn simplified_form() {
-    // Note 3.3: US simplified form Ft = 1000 lb, V = 2000 ft/min, b = 1 in, C = 1665 lb/in
-    // -> Fd = 2757.6 lb; exact K3 makes the SI evaluation identical (±0.05 lb print).
+    // docs/validation/gears.md §3.3: US simplified form Ft = 1000 lb, V = 2000 ft/min, b = 1 in,
+    // C = 1665 lb/in -> Fd = 2757.6 lb; exact K3 makes the SI evaluation identical (±0.05 lb print).
     let fd = dynamic_load_simplified(1000.0 * LBF, 2000.0 * FT_PER_MIN, 1665.0 * LBF, k3_exact())
         .unwrap();
     assert!((fd / LBF - 2757.6).abs() < 0.05);
     // The exact constant sits between the textbook roundings 20.67 (PSG) and 21 (Bhandari).
     assert!((k3_exact() - 20.759).abs() < 5e-4);
-    // Note 3.2 calculators with K3 = 21 (increments): v = 3.7, C = 1100 N/mm², e = 0.05 mm,
-    // b = 34 mm, Pt = 952 N -> 1676.0832 N; v = 2.5, C = 10, e = 0.05, b = 40, Pt = 2000
-    // -> 1088.3128 N (printed to 1e-4 N).
+    // docs/validation/gears.md §3.2, calculators with K3 = 21 (increments): v = 3.7,
+    // C = 1100 N/mm², e = 0.05 mm, b = 34 mm, Pt = 952 N -> 1676.0832 N; v = 2.5, C = 10,
+    // e = 0.05, b = 40, Pt = 2000 -> 1088.3128 N (printed to 1e-4 N).
     let inc = |v: f64, c: f64, e: f64, b: f64, pt: f64| {
         dynamic_load_simplified(pt, v, c * e * b, 21.0).unwrap() - pt
     };

@@ -1,5 +1,5 @@
-//! Internal/external pair geometry against validation note §1 (KHK example, Karhula and Nunes
-//! pairs) and paper-free cross-checks.
+//! Internal/external pair geometry against `docs/validation/gears.md` §1 (KHK example, Karhula and
+//! Nunes pairs) and paper-free cross-checks.
 
 use cardan_gears::geometry::{karhula_contact_ratio, karhula_path_of_contact};
 use cardan_gears::involute::inv;
@@ -33,8 +33,8 @@ fn internal_ring_ha(m: f64, z1: i32, z2: i32, alpha_deg: f64, ring_ha: f64) -> G
 
 #[test]
 fn khk_internal_gear_example() {
-    // Validation note 1.2: KHK Gear Technical Reference, m = 3, α = 20°, 16/24, x1 = 0,
-    // x2(KHK) = 0.516 = −x2(ISO). Outputs [D] printed to 4–6 significant figures: tolerances
+    // docs/validation/gears.md §1.2: KHK Gear Technical Reference, m = 3, α = 20°, 16/24, x1 = 0,
+    // x2(KHK) = 0.516 = −x2(ISO). Outputs (derived) printed to 4–6 significant figures: tolerances
     // are half a unit of the last printed digit.
     let p = internal(3e-3, 16, 24, 20.0, 0.0, -0.516);
     assert!((inv(p.working_pressure_angle) - 0.061857).abs() < 5e-7);
@@ -81,7 +81,7 @@ fn khk_internal_gear_example() {
 
 #[test]
 fn standard_two_to_one_pairs_interfere_with_full_ring_addendum() {
-    // Validation note 1.3/1.4 (finding 1), α = 20°, x = 0, ha = 1 m; module-independent.
+    // docs/validation/gears.md §1.3/§1.4 (finding 1), α = 20°, x = 0, ha = 1 m; module-independent.
     // KHK limits printed to 3 decimals (±0.0005); max addenda to 4 decimals (±0.00005 m).
     for (z1, z2, limit, interferes, max_ha) in [
         (19, 38, 0.648, true, 0.8526),
@@ -118,8 +118,8 @@ fn standard_two_to_one_pairs_interfere_with_full_ring_addendum() {
 
 #[test]
 fn contact_ratios_of_karhula_pairs() {
-    // Validation note 1.4: εα with ring ha = 1.0 m and 0.8 m, printed to 4 decimals (±5e-5);
-    // trochoid OK for all.
+    // docs/validation/gears.md §1.4: εα with ring ha = 1.0 m and 0.8 m, printed to 4 decimals
+    // (±5e-5); trochoid OK for all.
     for (z1, z2, eps_full, eps_08) in [
         (19, 38, 2.1985, 1.7770),
         (20, 40, 2.1500, 1.7649),
@@ -149,7 +149,7 @@ fn karhula_path_of_contact_formula() {
     // Karhula A9.1.37: m = Z_AA0/z1 = 0.06/20 = 3 mm, i.e. 2 e / z1 with e = 0.03 m.
     let m = cardan_module(0.03, 20).unwrap();
     assert!((m - 3e-3).abs() < 1e-15);
-    // A9.1.40 and A9.1.52 for 20/40: L = 19.0414 mm, CR = 2.1500 (note 1.3, ±half unit),
+    // A9.1.40 and A9.1.52 for 20/40: L = 19.0414 mm, CR = 2.1500 (gears.md §1.3, ±half unit),
     // although the thesis says εα ≈ 1.8 (finding 1).
     let l = karhula_path_of_contact(0.06, 0.12, m, deg(20.0));
     assert!((l * 1e3 - 19.0414).abs() < 5e-5);
@@ -164,8 +164,8 @@ fn karhula_path_of_contact_formula() {
 
 #[test]
 fn nunes_pairs() {
-    // Validation note 1.5: α = 25°, a = 13 mm; Nunes's "+0.5/−0.5" = ISO x1 = +0.5, x2 = −0.5.
-    // Values printed to 4 decimals (εα) or 3 decimals (limits): half-unit tolerances.
+    // docs/validation/gears.md §1.5: α = 25°, a = 13 mm; Nunes's "+0.5/−0.5" = ISO x1 = +0.5,
+    // x2 = −0.5. Values printed to 4 decimals (εα) or 3 decimals (limits): half-unit tolerances.
     let p = internal(1e-3, 26, 52, 25.0, 0.0, 0.0);
     assert!((p.pinion.tip * 1e3 - 28.0).abs() < 1e-9 && (p.gear.tip * 1e3 - 50.0).abs() < 1e-9);
     assert!((p.contact_ratio - 1.6525).abs() < 5e-5);

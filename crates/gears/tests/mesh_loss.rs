@@ -1,10 +1,11 @@
 //! Anderson & Loewenthal mesh loss: Karhula's printed reading against the derived sample of
-//! validation note 4.2, the viscosity-unit and kinematics corrections (findings 4, 5).
+//! `docs/validation/gears.md` §4.2, the viscosity-unit and kinematics corrections (§4.3, §4.4).
 
 use cardan_gears::*;
 
 fn setup() -> (MeshGeometry, Lubricant) {
-    // Note 4.2: m = 3 mm, 20/40 internal, α = 20°, b = 20 mm, ν = 5 mm²/s, ρ = 900 kg/m³.
+    // docs/validation/gears.md §4.2: m = 3 mm, 20/40 internal, α = 20°, b = 20 mm, ν = 5 mm²/s,
+    // ρ = 900 kg/m³.
     let pair = GearPair::new(PairSpec::standard(
         3e-3,
         20,
@@ -41,8 +42,8 @@ fn sig(value: f64, printed: f64, digits: i32) -> bool {
 
 #[test]
 fn karhula_reading_reproduces_derived_sample() {
-    // Note 4.2 [D], Ft = 2000 N, viscosity in Pa·s as Karhula's A9.1.47. Printed with 2–4
-    // significant figures; tolerance half a unit of the last printed digit.
+    // docs/validation/gears.md §4.2 (derived), Ft = 2000 N, viscosity in Pa·s as Karhula's A9.1.47.
+    // Printed with 2–4 significant figures; tolerance half a unit of the last printed digit.
     let (g, lub) = setup();
     for (rpm, vs, vr, mu, ps, h_um, pr, pw) in [
         (3000.0, 2.245, 5.698, 0.0849, 405.5, 0.0013, 0.028, 0.12),
@@ -82,9 +83,9 @@ fn karhula_reading_reproduces_derived_sample() {
 
 #[test]
 fn centipoise_rows_of_the_derived_sample() {
-    // Note 4.2 cP rows (Karhula kinematics, viscosity in cP, finding 4): μ 0.0468 / 0.0353,
+    // gears.md §4.2 cP rows (Karhula kinematics, viscosity in cP, §4.3): μ 0.0468 / 0.0353,
     // Ps 223.4 / 337.3 W, h 0.129 / 0.206 µm (≈ 0.13 µm Hamrock–Dowson check), Pr 2.85 / 9.08 W,
-    // Pw 0.18 / 1.27 W. Half a unit of the last printed digit, except Ps: the note's Ps uses
+    // Pw 0.18 / 1.27 W. Half a unit of the last printed digit, except Ps: the page's Ps uses
     // its rounded μ (0.0468 vs 0.04677, 0.07 %), so Ps gets 0.1 %.
     let (g, lub) = setup();
     let opt = LossOptions {
@@ -120,8 +121,8 @@ fn centipoise_rows_of_the_derived_sample() {
 
 #[test]
 fn corrected_kinematics_ratios() {
-    // Finding 5, paper-free: for the 2:1 cardan mesh the carrier-relative speed is 2ω and the
-    // internal sliding factor (i−1)/i = 1/2, against Karhula's ω and (i+1)/i = 3/2: the
+    // gears.md §4.4 (finding 5), paper-free: for the 2:1 cardan mesh the carrier-relative speed is
+    // 2ω and the internal sliding factor (i−1)/i = 1/2, against Karhula's ω and (i+1)/i = 3/2: the
     // corrected sliding velocity is exactly 2/3 of Karhula's for the same path of contact
     // (full-addendum 20/40, where the actual path equals A9.1.40).
     let (g, lub) = setup();
@@ -136,7 +137,7 @@ fn corrected_kinematics_ratios() {
     let c = mesh_loss_with(&g, &lub, &s, 2000.0, only_kin).unwrap();
     assert!((c.sliding_velocity / k.sliding_velocity - 2.0 / 3.0).abs() < 1e-12);
     // Pitch-point rolling-speed sum 12.89 m/s (kinematic) vs 6.45 m/s (A9.1.43 at the pitch
-    // point), note 4.2: ω_rel d1 sin α with ω_rel = 2ω.
+    // point), gears.md §4.4: ω_rel d1 sin α with ω_rel = 2ω.
     let w = 3000.0 * std::f64::consts::PI / 30.0;
     let pitch_sum = 2.0 * w * 0.06 * 20f64.to_radians().sin();
     assert!((pitch_sum - 12.89).abs() < 5e-3);

@@ -487,7 +487,7 @@ mod tests {
     #[test]
     fn reliability_fit_matches_table_at_its_nodes() {
         // The fit reproduces the 0.99 and 0.9999 nodes to its 3-digit constants (±0.005) but not
-        // 0.9 (0.833 vs 0.85), as the validation note states.
+        // 0.9 (0.833 vs 0.85), as docs/validation/gears.md §2.2 states.
         assert!((reliability_factor_fit(0.99).unwrap() - 1.0).abs() < 0.005);
         assert!((reliability_factor_fit(0.9999).unwrap() - 1.5).abs() < 0.005);
         assert!((reliability_factor_fit(0.9).unwrap() - 0.833).abs() < 0.0005);

@@ -8,8 +8,8 @@
 //! upper sign external, lower sign internal, `d` the pinion operating pitch diameter, `φ` the
 //! operating pressure angle. Shigley eq. 14-23 uses the pitch point instead:
 //! `I = cos φ sin φ / 2 · mG/(mG ± 1)`. The LPSTC formula reproduces every external value of the
-//! AGMA 908 tables reproduced in Nunes 2017 Annex A to ±0.0006 (validation note 2.3); for the
-//! internal 26/52 pair it gives 0.305 where Nunes interpolated the external table (0.1168).
+//! AGMA 908 tables reproduced in Nunes 2017 Annex A to ±0.0006 (`docs/validation/gears.md` §2.3);
+//! for the internal 26/52 pair it gives 0.305 where Nunes interpolated the external table (0.1168).
 //!
 //! # J
 //!
