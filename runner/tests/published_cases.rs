@@ -121,11 +121,12 @@ fn nunes_at(rpm: f64) -> Vec<MechanismResult> {
     run_case(&case::parse(&file, &text).unwrap(), None).unwrap()
 }
 
-/// Nunes (2017) §3.4.3 (note 4.3) and L1209: the geared hypocycloid's tangential gear-tooth load
-/// F_gt (eq 2.75), the mesh joint's tangential load here: 9365.2 N at 2000 rpm and its global
-/// maximum 9368.4 N at 2360 rpm; the peak piston accelerations at 8000 rpm, 23 519.4 m/s²
-/// (slider-crank, r·ω²·(1 + r/l)) and 18 247.8 m/s² (geared hypocycloid, 2r·ω²). Tolerance
-/// 0.1 %, the for peaks (the tooth load follows the pressure trace, 0.02 % above).
+/// Nunes (2017) §3.4.3 (docs/validation/nunes-2017.md R4.3) and L1209: the geared
+/// hypocycloid's tangential gear-tooth load F_gt (eq 2.75), the mesh joint's tangential load
+/// here: 9365.2 N at 2000 rpm and its global maximum 9368.4 N at 2360 rpm; the peak piston
+/// accelerations at 8000 rpm, 23 519.4 m/s² (slider-crank, r·ω²·(1 + r/l)) and 18 247.8 m/s²
+/// (geared hypocycloid, 2r·ω²). Tolerance 0.1 %, the for peaks (the tooth load follows
+/// the pressure trace, 0.02 % above).
 #[test]
 fn nunes_gear_tooth_load_and_peak_accelerations() {
     for (rpm, f_gt) in [(2000.0, 9365.2), (2360.0, 9368.4)] {

@@ -6,36 +6,40 @@
 //! combustion timing (eqs 3.1-3.2).
 //!
 //! References: "eq" are the thesis's equations (summarised in docs/validation/nunes-2017.md);
-//! "L" lines of the thesis's OCR text; "note §" the sections of the extraction notes that
-//! docs/validation/nunes-2017.md summarises.
+//! "L" lines of the thesis's OCR text; "R…" the labelled readings of that page (its section
+//! "Readings of the closed-cycle model").
 //!
 //! Crank angles are measured from the opening top dead centre (IVO = 0, IVC = π, firing TDC
 //! = 2π, EVO = 3π: Table 3.2, L1178-1181), which is [`Chamber::cycle_angle`].
 //!
-//! Readings (note §5.1 lists the choices that reproduce the thesis):
+//! Readings (docs/validation/nunes-2017.md R5.1 lists the choices that reproduce the thesis):
 //! - Explicit steps of 1° by default: the thesis's peak pressures carry that discretisation
-//!   (0.1° steps lower them by 0.1-0.24 %, note §5.1.1). Heat loss is evaluated from the state
-//!   at the start of each step (note, Appendix).
+//!   (0.1° steps lower them by 0.1-0.24 %, docs/validation/nunes-2017.md R5.1.1). Heat loss is
+//!   evaluated from the state at the start of each step (docs/validation/nunes-2017.md RA).
 //! - Trapped mass m_1 = p_1·V(IVC)/(R·T_1) (eq 2.4; V(IVC) = V_d + V_c at the thesis's IVC,
-//!   note §5.1.2); fuel m_f = p_1·V_d/(R·T_1)/AFR (eqs 2.5-2.6: the swept volume at ambient
-//!   density, volumetric efficiency 1). There is no residual gas.
-//! - Vaporisation (note §5.1.3) adds dm = m_f·dθ/θ_vap and removes dm·h_vap over IVC → θ_0.
-//!   We share the step that contains θ_0 by its overlap, so exactly m_f is vaporised whatever
-//!   the step; the thesis's loop (note, Appendix) skips that partial step (0.5 % of the fuel
-//!   vapour at 1°), which changes the pressures by less than 5·10⁻⁵.
-//! - Wiebe χ_b = 0 before θ_0 and capped at χ_b(θ_0 + Δθ) = 1 − e^(−a) after it (note §5.1.4):
-//!   the fraction e^(−a) (0.7 % at a = 5) is never released.
-//! - Annand (note §5.1.5): S̄_p from one piston's stroke, [`crate::Cylinder::stroke`] = V_d/(pistons·A) (0.052 m for the
-//!   thesis, not its 0.104 m sum); wall area two ends plus the liner
-//!   ([`crate::Cylinder::wall_area`]); radiation on.
+//!   docs/validation/nunes-2017.md R5.1.2); fuel m_f = p_1·V_d/(R·T_1)/AFR (eqs 2.5-2.6: the
+//!   swept volume at ambient density, volumetric efficiency 1). There is no residual gas.
+//! - Vaporisation (docs/validation/nunes-2017.md R5.1.3) adds dm = m_f·dθ/θ_vap and removes
+//!   dm·h_vap over IVC → θ_0. We share the step that contains θ_0 by its overlap, so exactly
+//!   m_f is vaporised whatever the step; the thesis's loop (docs/validation/nunes-2017.md RA)
+//!   skips that partial step (0.5 % of the fuel vapour at 1°), which changes the pressures by
+//!   less than 5·10⁻⁵.
+//! - Wiebe χ_b = 0 before θ_0 and capped at χ_b(θ_0 + Δθ) = 1 − e^(−a) after it
+//!   (docs/validation/nunes-2017.md R5.1.4): the fraction e^(−a) (0.7 % at a = 5) is never
+//!   released.
+//! - Annand (docs/validation/nunes-2017.md R5.1.5): S̄_p from one piston's stroke,
+//!   [`crate::Cylinder::stroke`] = V_d/(pistons·A) (0.052 m for the thesis, not its 0.104 m
+//!   sum); wall area two ends plus the liner ([`crate::Cylinder::wall_area`]); radiation on.
 //! - Constant γ and R; U = p·V/(γ − 1), so c_v = R/(γ − 1) (717.6 J/(kg·K) for the thesis's
 //!   R and γ, which prints c_v = 718: 0.06 % on the exhaust fraction only).
 //! - Open strokes at the ambient pressure (the "ideal Otto" gas exchange, L1153, L1285): no
 //!   pumping work. The pressure drops to ambient at EVO (instant blow-down) and the chamber
 //!   refills at ambient pressure and temperature.
-//! - The piston force is p_abs·A on every piston at every angle (note §1: absolute pressure,
-//!   confirmed by F_max; no crankcase pressure). Inertia belongs to the mechanism.
-//! - Energy fractions of §5.1.1 (note §5.1.9): the vaporisation heat counts as heat loss.
+//! - The piston force is p_abs·A on every piston at every angle (docs/validation/nunes-2017.md
+//!   R1: absolute pressure, confirmed by F_max; no crankcase pressure). Inertia belongs to the
+//!   mechanism.
+//! - Energy fractions of §5.1.1 (docs/validation/nunes-2017.md R5.1.9): the vaporisation heat
+//!   counts as heat loss.
 
 use crate::{require, Chamber, GasError, GasMetric, GasModel, PreparedGas};
 use std::f64::consts::PI;
@@ -100,8 +104,9 @@ pub struct ClosedCycle {
     /// Exhaust valve opening EVO, rad from the opening TDC: the end of the closed cycle
     /// (Table 3.2: 540° = 3π).
     pub exhaust_opening: f64,
-    /// Integration step, rad (the thesis's 1°, note §5.1.1). It is shortened, if needed, to
-    /// fit a whole number of steps between IVC and EVO (at most 10 000 000).
+    /// Integration step, rad (the thesis's 1°, docs/validation/nunes-2017.md R5.1.1). It is
+    /// shortened, if needed, to fit a whole number of steps between IVC and EVO (at most
+    /// 10 000 000).
     pub step: f64,
 }
 
@@ -164,7 +169,8 @@ pub struct EnergyBalance {
     pub work: f64,
     /// U_EVO − U_IVC, with U = p·V/(γ − 1), J.
     pub internal_energy_change: f64,
-    /// The thesis's exhaust energy m_EVO·c_v·(T_EVO − T_1) (note §5.1.9), J.
+    /// The thesis's exhaust energy m_EVO·c_v·(T_EVO − T_1) (docs/validation/nunes-2017.md
+    /// R5.1.9), J.
     pub exhaust_energy: f64,
     /// Highest pressure of the trace (on the integration grid), Pa.
     pub peak_pressure: f64,
@@ -185,8 +191,9 @@ impl EnergyBalance {
 }
 
 impl ClosedCycle {
-    /// The inputs of Nunes (2017), Table 3.2 (L1155-1185) and note §5.1: WOT, sea-level ISA,
-    /// stoichiometric aviation gasoline, 1° steps (the two opposed pistons are the chamber's).
+    /// The inputs of Nunes (2017), Table 3.2 (L1155-1185) and docs/validation/nunes-2017.md
+    /// R5.1: WOT, sea-level ISA, stoichiometric aviation gasoline, 1° steps (the two opposed
+    /// pistons are the chamber's).
     pub fn nunes_2017() -> Self {
         Self {
             ambient_pressure: 101_325.0,
@@ -320,7 +327,8 @@ impl ClosedCycle {
     }
 
     /// Wiebe mass fraction burned χ_b = 1 − exp(−a·((θ − θ_0)/Δθ)^(m+1)) (eq 2.28), zero
-    /// before θ_0 and held at its value at θ_0 + Δθ after it (note §5.1.4).
+    /// before θ_0 and held at its value at θ_0 + Δθ after it (docs/validation/nunes-2017.md
+    /// R5.1.4).
     pub fn burned_fraction(&self, theta: f64, start: f64, duration: f64) -> f64 {
         if theta <= start {
             return 0.0;
@@ -518,11 +526,13 @@ fn interpolate(tr: &ClosedCycleTrace, angle: f64) -> f64 {
 
 impl GasModel for ClosedCycle {
     /// Pressure at each crank angle: the trace, linearly interpolated, from IVC to EVO
-    /// and the ambient pressure elsewhere; the force on each piston p·A_pis (note §1).
-    /// Metrics per cycle of the chamber (note §5.1.8-9):
+    /// and the ambient pressure elsewhere; the force on each piston p·A_pis
+    /// (docs/validation/nunes-2017.md R1). Metrics per cycle of the chamber
+    /// (docs/validation/nunes-2017.md R5.1.8-R5.1.9):
     /// - `imep` W/V_d, Pa (eq 2.50); `indicated_work` W, J (eq 2.48);
     /// - `indicated_torque_mean` W/(4π), N·m: the whole chamber's mean torque (the thesis's
-    ///   "average torque", note §1); `indicated_power` W·ω/(4π), W (eqs 2.46, 2.49);
+    ///   "average torque", docs/validation/nunes-2017.md R1); `indicated_power` W·ω/(4π), W
+    ///   (eqs 2.46, 2.49);
     /// - `peak_pressure`, Pa, on the integration grid, and `peak_pressure_angle_deg`, degrees
     ///   from the opening TDC;
     /// - `combustion_efficiency` η_c (eq 2.56);
@@ -616,7 +626,8 @@ mod tests {
     fn thesis_correlations() {
         let e = ClosedCycle::nunes_2017();
         assert!((e.combustion_efficiency() - 0.869_67).abs() < 5e-6);
-        // Note §2.9: at 8000 rpm θ_0 = 347.73°, Δθ = 52.263°; at 2000 rpm 350.13°, 36.063°.
+        // docs/validation/nunes-2017.md R2.9: at 8000 rpm θ_0 = 347.73°, Δθ = 52.263°; at
+        // 2000 rpm 350.13°, 36.063°.
         for (rpm, start, dur) in [(8000.0, 347.73, 52.263), (2000.0, 350.13, 36.063)] {
             let (s, d) = e.combustion_timing(rpm * PI / 30.0);
             assert!((s.to_degrees() - start).abs() < 1e-9, "{}", s.to_degrees());

@@ -7,13 +7,15 @@
 //! Sweep: 10 to 8000 rpm in 10 rpm steps, as the thesis; each cycle on its 1° grid
 //! (720 crank angles from the opening TDC), which is also the integration grid.
 //!
-//! Forces and torque (note §1, §2.7): F_t = p_abs·A + m_p·a along the cylinder, a the piston
-//! acceleration away from the crankshaft (negative near TDC, so inertia relieves the gas
-//! force there); F_t is the force the piston pushes its rod with, towards the crankshaft.
+//! Forces and torque (docs/validation/nunes-2017.md R1, R2.7): F_t = p_abs·A + m_p·a along the
+//! cylinder, a the piston acceleration away from the crankshaft (negative near TDC, so inertia
+//! relieves the gas force there); F_t is the force the piston pushes its rod with, towards the
+//! crankshaft.
 //! Our cylinder lies along +y with TDC at θ = 90°; virtual work gives the torque on one
 //! crankshaft Tq = F_t·(−dx/dθ), positive (driving) on the power stroke, which is Nunes's
 //! F_t/cos β·r·sin(θ + β) (eq 2.65) for θ_thesis = θ − 90°. The peak instantaneous torque is
-//! per piston; the "average torque" is the whole engine's, W/(4π) (note §1, §7.7).
+//! per piston; the "average torque" is the whole engine's, W/(4π) (docs/validation/nunes-2017.md
+//! R1, R7.7).
 //!
 //! Tolerances (the issue's): 0.1 % on peaks (p_max, F_t,max, Tq_max: the thesis prints 4-6
 //! digits and both integrate the same 1° explicit scheme), 0.5 % on averaged quantities
@@ -21,9 +23,9 @@
 //! above the thesis's (the mean torques below); the thesis does not say how it summed it and
 //! no quadrature we tried (trapezoid, left or right rectangles, Σ Tq/720) closes the gap, while
 //! its peaks agree to 0.02 %. Energy fractions are printed with three decimals: ±0.002
-//! absolute (rounding, plus that 0.3 % of the work fraction). Figure readings ("≈" in the
-//! note) at 10 rpm: ±5 %. Argmax speeds: within two grid steps (±20 rpm) where the curve has
-//! a sharp enough top, else as stated.
+//! absolute (rounding, plus that 0.3 % of the work fraction). Figure readings ("≈",
+//! docs/validation/nunes-2017.md R4.6) at 10 rpm: ±5 %. Argmax speeds: within two grid steps
+//! (±20 rpm) where the curve has a sharp enough top, else as stated.
 
 use cardan_gas::closed_cycle::ClosedCycle;
 use cardan_gas::{Chamber, Cylinder, GasCycle, GasModel};
@@ -41,8 +43,9 @@ fn rad_s(rpm: f64) -> f64 {
     rpm * PI / 30.0
 }
 
-/// One crank train of the thesis (note §1: r = 0.026 m, l = 0.090 m, bore 0.06 m), rod centre
-/// of gravity at mid-length. The piston's inertia is added by the tests from the kinematics.
+/// One crank train of the thesis (docs/validation/nunes-2017.md R1: r = 0.026 m, l = 0.090 m,
+/// bore 0.06 m), rod centre of gravity at mid-length. The piston's inertia is added by the
+/// tests from the kinematics.
 const GEOMETRY: MachineGeometry = MachineGeometry {
     crank_length: 0.026,
     rod_length: 0.090,
@@ -177,8 +180,8 @@ fn opsce_global_peaks_match_section_3_4_2() {
     let (r, f) = argmax(|r| r.force_max);
     within("peak piston force", f, 25967.0, 0.001);
     speed_near("peak piston force", r.rpm, 360.0, 20.0);
-    // Absolute pressure (note §1): near the pressure peak F_t ≈ p_max·A − 12 N of inertia; a
-    // gauge pressure would take 287 N (1.1 %) more off.
+    // Absolute pressure (docs/validation/nunes-2017.md R1): near the pressure peak
+    // F_t ≈ p_max·A − 12 N of inertia; a gauge pressure would take 287 N (1.1 %) more off.
     let r = at(370.0);
     let inertia = r.force_max - r.pressure_max * PI / 4.0 * 0.06 * 0.06;
     assert!((-20.0..-5.0).contains(&inertia), "{inertia} N");
@@ -226,7 +229,7 @@ fn check_row(layout: &str, r: &Row, [p, f, tq, avg]: [f64; 4]) {
     );
 }
 
-/// Thesis §5.1.1 (L2043-2083, note §4.6): performance over the sweep.
+/// Thesis §5.1.1 (L2043-2083, docs/validation/nunes-2017.md R4.6): performance over the sweep.
 #[test]
 fn opsce_performance_matches_section_5_1_1() {
     let (r, imep) = argmax(|r| r.metric("imep"));
@@ -290,8 +293,8 @@ fn opsce_performance_matches_section_5_1_1() {
     );
 
     // Energy fractions, three decimals (L2069-2073); NaN: not reported. The thesis's work
-    // fraction 0.434 at 2000 rpm contradicts its own mean torque there (0.438, note §7.10):
-    // we check the torque instead (above).
+    // fraction 0.434 at 2000 rpm contradicts its own mean torque there (0.438,
+    // docs/validation/nunes-2017.md R7.10): we check the torque instead (above).
     let fractions = [
         (500.0, 0.278, 0.403, 0.176),
         (2000.0, 0.192, f64::NAN, 0.228),
@@ -331,7 +334,8 @@ fn opsce_performance_matches_section_5_1_1() {
     assert_eq!(r.rpm, 8000.0);
 }
 
-/// The low-speed ends of the thesis's curves are read off its figures ("≈", note §4.6): 5 %.
+/// The low-speed ends of the thesis's curves are read off its figures ("≈",
+/// docs/validation/nunes-2017.md R4.6): 5 %.
 /// Its "≈0.15" work fraction and "≈600 kPa" imep at the low end contradict its own "≈15 N·m"
 /// (0.181 and 641 kPa); we check the torque and the other readings.
 #[test]
@@ -406,8 +410,9 @@ fn the_energy_balance_closes() {
             within("total work = ∮ p dV of the trace", b.work, pdv, 1e-12);
             let dm = tr.mass[last] - tr.mass[0];
             assert!((dm / b.fuel_mass - 1.0).abs() < 1e-12, "vaporised {dm} kg");
-            within("thesis m_1 (note §3.1)", b.trapped_mass, 4.00257e-4, 1e-5);
-            within("thesis m_f (note §3.1)", b.fuel_mass, 2.39197e-5, 1e-5);
+            // The thesis's masses: docs/validation/nunes-2017.md R3.1.
+            within("thesis m_1 (R3.1)", b.trapped_mass, 4.00257e-4, 1e-5);
+            within("thesis m_f (R3.1)", b.fuel_mass, 2.39197e-5, 1e-5);
             within("thesis fuel energy", b.fuel_energy, 1040.51, 1e-5);
             // Released = η_c·(1 − e^(−5))·E_f: combustion ends before EVO.
             within(
@@ -517,12 +522,14 @@ fn indicated_work_is_the_loop_integral_of_the_returned_pressure() {
         for p in model.cycle(ch, w, &open).unwrap().pressure {
             assert_eq!(p, model.ambient_pressure);
         }
-        // The ideal Otto cycle (eqs 2.1-2.21) bounds the work: 544.65 J (note §2.1).
+        // The ideal Otto cycle (eqs 2.1-2.21) bounds the work: 544.65 J
+        // (docs/validation/nunes-2017.md R2.1).
         assert!(metric(&g, "indicated_work") < 544.65);
     });
 }
 
-/// The thesis's numbers carry its 1° step (note §5.1.1): 0.1° lowers p_max by 0.1-0.24 %.
+/// The thesis's numbers carry its 1° step (docs/validation/nunes-2017.md R5.1.1): 0.1° lowers
+/// p_max by 0.1-0.24 %.
 /// We find 0.24 % at 370 rpm and 0.13 % at 2000 rpm; the explicit heat loss makes it 1 % at
 /// 10 rpm, and it is 0.06-0.1 % from 4000 to 8000 rpm.
 #[test]
@@ -547,11 +554,12 @@ fn a_finer_step_lowers_the_peak_pressure_as_the_note_says() {
     });
 }
 
-/// The geared hypocycloid of the same stroke (OPGHE, note §1: crank 13 mm, piston ±2r) on the
-/// same chamber and gas model, thesis §3.4.3 (L1311-1331): global peaks and the 2000 and
-/// 8000 rpm rows, at the tolerances of the OPSCE (0.1 % on peaks, 0.5 % on means). The thesis
-/// prints three or four digits here; its "2560 rpm" for the torque peak is the 2360 of its gear
-/// load (note §4.3), so the speed is checked to ±250 rpm around 2360.
+/// The geared hypocycloid of the same stroke (OPGHE, docs/validation/nunes-2017.md R1: crank
+/// 13 mm, piston ±2r) on the same chamber and gas model, thesis §3.4.3 (L1311-1331): global
+/// peaks and the 2000 and 8000 rpm rows, at the tolerances of the OPSCE (0.1 % on peaks, 0.5 %
+/// on means). The thesis prints three or four digits here; its "2560 rpm" for the torque peak
+/// is the 2360 of its gear load (docs/validation/nunes-2017.md R4.3), so the speed is checked
+/// to ±250 rpm around 2360.
 #[test]
 fn opghe_matches_section_3_4_3() {
     let rows = sweep_of(&CardanGear::build(&GEOMETRY, &masses(), &Options::new()).unwrap());
