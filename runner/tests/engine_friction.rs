@@ -216,7 +216,7 @@ cam_friction_coefficient = -0.1"#,
             &[
                 "friction.fmep_model",
                 r#"unknown word "chen_flynn""#,
-                "sandoval_heywood, pnh",
+                "must be \"sandoval_heywood\" or \"pnh\"",
             ],
         ),
         (

@@ -26,9 +26,10 @@ fn summary(mechanism: &str, crank: f64, rod: f64) -> Summary {
         .1
 }
 
-/// Vidinsky's in-line slider-crank maxima (note 10.1, his L481 with a = 0.75): 1.024092 for
-/// h = 3.4 and 1.010760 for h = 5.1. The 0.01° grid samples the flat peak to about 1e-9; the
-/// paper prints 7 digits: tolerance 1e-6.
+/// Vidinsky's in-line slider-crank comparison (his L481, a = 0.75): the maxima 1.024092 for
+/// h = 3.4 and 1.010760 for h = 5.1, computed independently of this code (their mean 1.017426 is
+/// the paper's printed "approximately 1.017"; docs/validation/vidinsky-2021.md). The 0.01° grid
+/// samples the flat peak to about 1e-9: tolerance 1e-6, the seven digits given.
 #[test]
 fn slider_crank_matches_vidinsky() {
     for (rod, published) in [(0.34, 1.024092), (0.51, 1.010760)] {
