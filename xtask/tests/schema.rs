@@ -11,6 +11,14 @@ fn case_schema() -> jsonschema::Validator {
     jsonschema::validator_for(&cardan_case::json_schema::case_schema()).unwrap()
 }
 
+/// Every place `value` breaks the schema, with its path.
+fn errors(validator: &jsonschema::Validator, value: &serde_json::Value) -> Vec<String> {
+    validator
+        .iter_errors(value)
+        .map(|e| format!("{} at {}", e, e.instance_path()))
+        .collect()
+}
+
 fn as_json(text: &str) -> serde_json::Value {
     let table: toml::Table = toml::from_str(text).unwrap();
     serde_json::to_value(table).unwrap()
@@ -38,10 +46,7 @@ fn every_shipped_case_validates_against_the_schema() {
         }
         let text = std::fs::read_to_string(&path).unwrap();
         let value = as_json(&text);
-        let errors: Vec<String> = validator
-            .iter_errors(&value)
-            .map(|e| format!("{} at {}", e, e.instance_path()))
-            .collect();
+        let errors = errors(&validator, &value);
         assert!(errors.is_empty(), "{}: {errors:#?}", path.display());
         checked += 1;
     }
@@ -78,10 +83,7 @@ fn every_shipped_gear_file_validates_against_its_schema() {
         let path = entry.unwrap().path();
         let text = std::fs::read_to_string(&path).unwrap();
         let value = as_json(&text);
-        let errors: Vec<String> = validator
-            .iter_errors(&value)
-            .map(|e| format!("{} at {}", e, e.instance_path()))
-            .collect();
+        let errors = errors(&validator, &value);
         assert!(errors.is_empty(), "{}: {errors:#?}", path.display());
         // Its first field misspelled is refused.
         let key = text
