@@ -79,7 +79,7 @@ pub struct Case {
 
 /// A case file as written: the typed schema of its top level. The mechanisms' own tables
 /// (`[cardan_gear]`, ...) and their mass tables (`[masses.cardan_gear]`) are named by the
-/// registry of `cardan-mechanism` and read apart ([`mechanism_tables`]).
+/// registry of `cardan-mechanism` and read apart (`mechanism_tables`).
 #[derive(Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CaseFile {

@@ -232,7 +232,7 @@ fn what(root: &Value, path: &str, shown: &str) -> Option<String> {
 }
 
 /// What a value of the schema `node` must be, in words ("a number in m or a string with a
-/// unit", "a string in quotes: \"pump\" or \"engine\"", "a table [shown]").
+/// unit", "a string in quotes: \"pump\" or \"engine\"", "a table `[shown]`").
 pub fn value_kind(root: &Value, node: &Value, shown: &str) -> Option<String> {
     let node = resolve(root, node);
     // An optional of a plain type is `"type": ["string", "null"]`.
