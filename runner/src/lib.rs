@@ -1,11 +1,10 @@
-//! The batch runner: TOML case files → validated cases → mechanism runs in parallel, each step
+//! The batch runner: validated cases (`cardan-case`) → mechanism runs in parallel, each step
 //! streamed to the summary and the per-step files → `summary.json` and, per mechanism, a CSV
-//! and/or an NPY file per case. Physics lives in the `cardan-*` crates; this crate only reads, validates, schedules and
-//! writes.
+//! and/or an NPY file per case; the reports are `cardan-report`'s. Physics lives in the
+//! `cardan-*` crates; this crate only schedules and writes.
 
 pub mod output;
 pub mod per_step;
 pub mod run;
 
-pub use cardan_case::{Case, CaseError};
 pub use run::{run_case, run_paths, Report, RunOptions};
