@@ -31,7 +31,7 @@ enum Command {
         /// Output folder; each case's folder in it is replaced as a whole.
         #[arg(long, default_value = "out")]
         out: PathBuf,
-        /// Worker threads (default: one per core; at most 4 per core).
+        /// Worker threads (default: one per core; more than the cores are capped to them).
         #[arg(long)]
         jobs: Option<usize>,
         /// Write no per-step CSV, whatever the cases' output tables say.
@@ -56,6 +56,24 @@ enum Command {
         /// and bytes per value as the case's [output] asks); without it they are refused.
         #[arg(long)]
         allow_large: bool,
+        /// Keep every case folder an earlier (killed) run left complete, written by this
+        /// program from the same input (its run.json), and run the rest.
+        #[arg(long)]
+        resume: bool,
+        /// Run only the K-th of N parts of the cases (sweeps expanded; parts balanced by
+        /// expected cost), for `cardan merge` to gather (see docs/cluster.md).
+        #[arg(long, value_name = "K/N", value_parser = cardan_runner::run::shard::parse_shard)]
+        shard: Option<(usize, usize)>,
+    },
+    /// Gather the output folders of the N shards of one run (`cardan run --shard K/N`) into
+    /// what one run writes; shards of other inputs or another program are refused.
+    Merge {
+        /// The shards' output folders, one per shard.
+        #[arg(required = true)]
+        dirs: Vec<PathBuf>,
+        /// Output folder; each case's and sweep's folder in it is replaced as a whole.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
     },
     /// Read and validate every case under PATHS without running them.
     Check {
@@ -170,9 +188,15 @@ fn main() -> ExitCode {
             quiet,
             no_report,
             allow_large,
+            resume,
+            shard,
         } => {
             if jobs == Some(0) {
                 eprintln!("error: --jobs must be at least 1");
+                return ExitCode::from(2);
+            }
+            if shard.is_some() && only.is_some() {
+                eprintln!("error: --shard and --only cannot be combined: a shard is a part of the whole batch");
                 return ExitCode::from(2);
             }
             let started = std::time::Instant::now();
@@ -185,6 +209,8 @@ fn main() -> ExitCode {
                 only,
                 reports: !no_report,
                 allow_large,
+                resume,
+                shard,
                 max_bytes: None,
                 progress: Some(std::sync::Arc::new(move |done, total| {
                     progress.set_length(total as u64);
@@ -212,9 +238,14 @@ fn main() -> ExitCode {
                 );
             }
             println!(
-                "{} case(s) written to {}, {} failed, in {:.2} s",
+                "{} case(s) written to {}{}, {} failed, in {:.2} s",
                 report.written.len(),
                 out.display(),
+                if resume {
+                    format!(" ({} kept from an earlier run)", report.reused)
+                } else {
+                    String::new()
+                },
                 report.failures.len(),
                 started.elapsed().as_secs_f64()
             );
@@ -225,6 +256,19 @@ fn main() -> ExitCode {
             (report.written.len(), report.failures)
         }
         Command::Gear { file, out } => return gear(&file, &out),
+        Command::Merge { dirs, out } => {
+            let started = std::time::Instant::now();
+            let report = cardan_runner::run::merge(&dirs, &out);
+            println!(
+                "{} case(s) merged into {} from {} shard(s), {} failed, in {:.2} s",
+                report.written.len(),
+                out.display(),
+                dirs.len(),
+                report.failures.len(),
+                started.elapsed().as_secs_f64()
+            );
+            (report.written.len(), report.failures)
+        }
         Command::Check { paths } => {
             let (cases, failures) = load_cases(&paths);
             for c in &cases {

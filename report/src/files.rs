@@ -100,25 +100,31 @@ fn alive(pid: u32) -> Option<bool> {
     Some(Path::new("/proc").join(pid.to_string()).exists())
 }
 
-/// Removes from `dir` the temporary folders and files (`.NAME.tmp-PID`, `.NAME.old-PID`) left
-/// by runs that ended without cleaning up (killed): those whose process is no longer alive.
-/// Those of a live process (another run at work) are left alone, and so is everything where
-/// the liveness of a process cannot be told. Returns what was removed.
+/// The temporary folders and files (`.NAME.tmp-PID`, `.NAME.old-PID`) in `dir` left by runs
+/// that ended without cleaning up (killed): those whose process is no longer alive, with
+/// that process's id. Those of a live process (another run at work) are not listed, nor is
+/// anything where the liveness of a process cannot be told.
+pub fn stale_temporaries(dir: &Path) -> Vec<(PathBuf, u32)> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut stale: Vec<(PathBuf, u32)> = entries
+        .flatten()
+        .filter_map(|entry| {
+            let pid = temporary_owner(&entry.file_name().to_string_lossy())?;
+            (pid != std::process::id() && alive(pid) == Some(false)).then(|| (entry.path(), pid))
+        })
+        .collect();
+    stale.sort();
+    stale
+}
+
+/// Removes from `dir` the [`stale_temporaries`] of runs that ended without cleaning up.
+/// Returns what was removed.
 pub fn remove_stale_temporaries(dir: &Path) -> Vec<PathBuf> {
     let mut removed = Vec::new();
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return removed;
-    };
-    for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        let Some(pid) = temporary_owner(&name) else {
-            continue;
-        };
-        if pid == std::process::id() || alive(pid) != Some(false) {
-            continue;
-        }
-        let path = entry.path();
-        let gone = match entry.file_type() {
+    for (path, pid) in stale_temporaries(dir) {
+        let gone = match path.symlink_metadata() {
             Ok(t) if t.is_dir() => std::fs::remove_dir_all(&path),
             _ => std::fs::remove_file(&path),
         };

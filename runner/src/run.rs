@@ -5,19 +5,26 @@
 //! its folder (`case_folder.rs`: refused first if its files would be too large, `size.rs`),
 //! its crank trains in parallel (`train.rs`, with the sampling check of a coarse grid in
 //! `sampling.rs`), then writes the sweeps' folders (`sweeps.rs`) and the index. How a batch
-//! runs is [`RunOptions`], what it did [`Report`] (`options.rs`).
+//! runs is [`RunOptions`], what it did [`Report`] (`options.rs`). Each case folder records
+//! what made it ([`stamp`], `run.json`: `--resume` keeps a folder whose record matches); a
+//! shard (`--shard K/N`) runs its part of the cases ([`shard`]) and [`merge`] gathers the
+//! shards into what one run writes (`merge.rs`).
 
 mod batch;
 mod case_folder;
 mod cases;
+mod merge;
 mod options;
 mod sampling;
+pub mod shard;
 mod size;
+pub mod stamp;
 mod sweeps;
 mod train;
 
-pub use batch::{run_paths, JOBS_PER_CORE};
+pub use batch::{run_paths, worker_threads};
 pub use cases::{case_files, load_cases, matches_pattern, RESERVED};
+pub use merge::merge;
 pub use options::{Progress, Report, RunOptions};
 pub use size::{estimated_bytes, human_bytes, DEFAULT_MAX_BYTES};
 pub use train::run_case;

@@ -1,20 +1,33 @@
 //! A batch: every case under the paths given run into its folder of the output folder, on the
 //! worker threads, then the sweeps' `sweep.csv` and reports and the index ([`run_paths`]).
 
-use super::case_folder::run_and_write;
+use super::case_folder::{run_and_write, Written};
 use super::cases::{load_cases, matches_pattern};
 use super::options::{Report, RunOptions};
-use super::sweeps::{sweep_targets, write_sweeps, SweepTarget};
-use crate::output::MechanismResult;
+use super::shard::{self, Manifest};
+use super::sweeps::{sweep_targets, write_sweeps, Point, SweepTarget};
 use cardan_case::case::Case;
 use cardan_report::files;
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
-/// The most worker threads a run starts per core: `--jobs` beyond it only costs memory and
-/// start-up time (100 000 threads did not finish a 10 ms case in a minute).
-pub const JOBS_PER_CORE: usize = 4;
+/// The worker threads a run starts for `requested` (`--jobs`; None: one per core) on a machine of
+/// `cores` cores, and the warning to log when `requested` is capped: the cases are CPU-bound, so
+/// threads beyond the cores only cost memory and start-up time (100 000 threads did not finish a
+/// 10 ms case in a minute; the per-step files' writer threads are apart from these).
+pub fn worker_threads(requested: Option<usize>, cores: usize) -> (Option<usize>, Option<String>) {
+    let cores = cores.max(1);
+    match requested {
+        Some(n) if n > cores => (
+            Some(cores),
+            Some(format!(
+                "--jobs {n}: more worker threads than the machine's {cores} core(s) only cost memory; running {cores}"
+            )),
+        ),
+        other => (other, None),
+    }
+}
 
 /// Loads, validates, runs and writes every case under `paths` (or those `options.only`
 /// selects) into `out/<case name>/`. A panic inside a case is caught and reported as that
@@ -39,6 +52,22 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     }
     let (mut cases, failures) = load_cases(paths);
     report.failures = failures;
+    for case in &mut cases {
+        case.output.csv = options.csv.unwrap_or(case.output.csv);
+        case.output.npy = options.npy.unwrap_or(case.output.npy);
+    }
+    // A shard runs its part of the cases as if they were all: its sweeps' folders hold its
+    // points only, and `cardan merge` gathers them.
+    let manifest = options.shard.map(|(k, n)| {
+        let manifest = Manifest::new(&cases, k, n, options.reports, &report.failures);
+        let mine = shard::part(&cases, k, n);
+        let mut index = 0;
+        cases.retain(|_| {
+            index += 1;
+            mine[index - 1]
+        });
+        manifest
+    });
     // Every sweep's points in their order, before `--only` selects some.
     let mut all_points: HashMap<String, Vec<String>> = HashMap::new();
     for c in &cases {
@@ -52,11 +81,6 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     if let Some(pattern) = &options.only {
         cases.retain(|c| matches_pattern(pattern, &c.name));
     }
-    for case in &mut cases {
-        case.output.csv = options.csv.unwrap_or(case.output.csv);
-        case.output.npy = options.npy.unwrap_or(case.output.npy);
-    }
-    files::remove_stale_temporaries(out);
     let mut selected: HashMap<&str, usize> = HashMap::new();
     for c in &cases {
         if let Some((sweep, _)) = &c.sweep {
@@ -65,7 +89,16 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     }
     // A sweep's points run into a temporary folder that replaces `out/<sweep>` as a whole, or,
     // when `--only` selects some of the points of a sweep written before, into its folder.
-    let sweeps = sweep_targets(&cases, out, &selected, &all_points, &mut report.failures);
+    let sweeps = sweep_targets(
+        &cases,
+        out,
+        &selected,
+        &all_points,
+        options.resume,
+        &mut report.failures,
+    );
+    // After the sweeps' targets: `--resume` keeps the points in the leftovers of killed runs.
+    files::remove_stale_temporaries(out);
     cases.retain(|c| match &c.sweep {
         Some((sweep, _)) => sweeps.get(sweep).is_some_and(Option::is_some),
         None => true,
@@ -83,20 +116,28 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let Some(outcomes) = run_all(&cases, &base, &options, &mut report.failures) else {
         return report;
     };
-    let mut points: std::collections::BTreeMap<&str, Vec<(&Case, &[MechanismResult])>> =
-        Default::default();
+    let mut points: std::collections::BTreeMap<&str, Vec<Point>> = Default::default();
     let mut failed: HashMap<&str, usize> = HashMap::new();
     for (case, o) in cases.iter().zip(&outcomes) {
         match o {
-            Ok((name, dir, results)) => {
+            Ok(written) => {
+                let name = &case.name;
                 let dir = match &case.sweep {
-                    Some((sweep, _)) => {
-                        points.entry(sweep).or_default().push((case, results));
+                    Some((sweep, values)) => {
+                        points
+                            .entry(sweep)
+                            .or_default()
+                            .push((name, values, &written.cells));
                         out.join(sweep).join(name)
                     }
-                    None => dir.clone(),
+                    None => written.dir.clone(),
                 };
-                tracing::info!(case = %name, folder = %dir.display(), "written");
+                if written.reused {
+                    tracing::info!(case = %name, folder = %dir.display(), "kept (--resume)");
+                    report.reused += 1;
+                } else {
+                    tracing::info!(case = %name, folder = %dir.display(), "written");
+                }
                 report.written.push((name.clone(), dir));
             }
             Err(e) => {
@@ -113,9 +154,16 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         &points,
         &failed,
         &all_points,
-        options.reports,
+        options.reports && manifest.is_none(),
         &mut report,
     );
+    if let Some(manifest) = manifest {
+        // A shard's sweeps and index are the merge's to report.
+        if let Err(e) = manifest.write(out, &report.failures) {
+            report.failures.push(format!("{e:#}"));
+        }
+        return report;
+    }
     // The index describes what the folder holds: rewritten whenever that changes, also by a
     // run that writes no reports (else it links reports that are gone, with old numbers).
     let changed = !report.written.is_empty() || !report.sweeps.is_empty();
@@ -130,8 +178,8 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     report
 }
 
-/// A case's outcome: its name, its folder and its results, or its failure.
-type Outcome = Result<(String, PathBuf, Vec<MechanismResult>), String>;
+/// A case's outcome: its folder and sweep row, or its failure.
+type Outcome = Result<Written, String>;
 
 /// Runs and writes every case of `cases` into its folder under `base(case)` on the worker
 /// threads `options` asks for, telling `options.progress` of each; a panic is the case's
@@ -159,7 +207,7 @@ fn run_all(
                     );
                 }
                 match outcome {
-                    Ok(r) => r.map(|(dir, results)| (case.name.clone(), dir, results)),
+                    Ok(r) => r,
                     Err(panic) => Err(format!(
                         "{}: case \"{}\": internal error (a bug, please report it): {}",
                         case.file.display(),
@@ -174,17 +222,11 @@ fn run_all(
             })
             .collect()
     };
-    let cap = std::thread::available_parallelism().map_or(1, |n| n.get()) * JOBS_PER_CORE;
-    let jobs = options.jobs.map(|n| {
-        if n > cap {
-            tracing::warn!(
-                "--jobs {n}: more worker threads than {JOBS_PER_CORE} per core only cost memory; running {cap}"
-            );
-            cap
-        } else {
-            n
-        }
-    });
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let (jobs, warning) = worker_threads(options.jobs, cores);
+    if let Some(warning) = warning {
+        tracing::warn!("{warning}");
+    }
     let outcomes = match jobs {
         Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
             Ok(pool) => pool.install(work),
@@ -196,4 +238,25 @@ fn run_all(
         None => work(),
     };
     Some(outcomes)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::worker_threads;
+
+    #[test]
+    fn jobs_above_the_cores_are_capped_with_one_warning() {
+        assert_eq!(worker_threads(None, 2), (None, None));
+        assert_eq!(worker_threads(Some(1), 2), (Some(1), None));
+        assert_eq!(worker_threads(Some(2), 2), (Some(2), None));
+        let (n, warning) = worker_threads(Some(100_000), 2);
+        assert_eq!(n, Some(2));
+        let warning = warning.expect("a warning");
+        assert!(
+            warning.contains("--jobs 100000") && warning.contains("running 2"),
+            "{warning}"
+        );
+        // No core count known: one thread.
+        assert_eq!(worker_threads(Some(3), 0).0, Some(1));
+    }
 }

@@ -3,6 +3,7 @@
 
 use super::options::RunOptions;
 use super::size::check_size;
+use super::stamp::{self, Cell};
 use super::train::run_trains;
 use crate::output::{self, MechanismResult};
 use anyhow::Context;
@@ -10,12 +11,22 @@ use cardan_case::case::Case;
 use cardan_report::{files, ChartData};
 use std::path::{Path, PathBuf};
 
-/// Runs one case into `out/<case name>/`, replacing that folder as a whole.
+/// A case written: its folder, its sweep row ([`stamp::cells`]), and whether `--resume` kept
+/// the folder of an earlier run instead of running the case.
+pub(super) struct Written {
+    pub dir: PathBuf,
+    pub cells: Vec<Cell>,
+    pub reused: bool,
+}
+
+/// Runs one case into `out/<case name>/`, replacing that folder as a whole, its record
+/// (`run.json`, [`stamp`]) written last; with `options.resume`, a complete folder recorded by
+/// this program from this input is kept instead.
 pub(super) fn run_and_write(
     case: &Case,
     out: &Path,
     options: &RunOptions,
-) -> Result<(PathBuf, Vec<MechanismResult>), String> {
+) -> Result<Written, String> {
     let dir = out.join(&case.name);
     let cannot_write = |e: anyhow::Error| {
         format!(
@@ -35,10 +46,19 @@ pub(super) fn run_and_write(
             ));
         }
     }
-    check_size(case, options)?;
-    let tmp = files::temporary_dir(&dir).map_err(cannot_write)?;
     // A sweep's points are reported by the sweep's report: no charts of their own.
     let report = options.reports && case.sweep.is_none();
+    if options.resume {
+        if let Some(cells) = stamp::reusable(&dir, case, report) {
+            return Ok(Written {
+                dir,
+                cells,
+                reused: true,
+            });
+        }
+    }
+    check_size(case, options)?;
+    let tmp = files::temporary_dir(&dir).map_err(cannot_write)?;
     let result = run_trains(case, Some(&tmp), report).and_then(|trains| {
         // The chart series go to the report, and are dropped with it: a batch keeps only
         // the summaries.
@@ -49,6 +69,11 @@ pub(super) fn run_and_write(
             .zip(series)
             .filter_map(|(r, s)| Some((r.label.clone(), s?)))
             .collect();
+        let cells = if case.sweep.is_some() {
+            stamp::cells(&results)
+        } else {
+            Vec::new()
+        };
         let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
             .map_err(|e| e.to_string())?;
         summary.push('\n');
@@ -58,13 +83,18 @@ pub(super) fn run_and_write(
                     cardan_report::case_report_from_run(&tmp, None, charts)
                         .context("the report")?;
                 }
+                stamp::write(&tmp, case, report, &cells)?;
                 files::replace_dir(&tmp, &dir)
             })
             .map_err(cannot_write)?;
-        Ok(results)
+        Ok(cells)
     });
     if result.is_err() {
         let _ = std::fs::remove_dir_all(&tmp);
     }
-    result.map(|results| (dir, results))
+    result.map(|cells| Written {
+        dir,
+        cells,
+        reused: false,
+    })
 }

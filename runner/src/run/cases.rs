@@ -45,7 +45,7 @@ pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
 }
 
 /// Names an output folder uses itself, which no case or sweep may take.
-pub const RESERVED: &[&str] = &["index.html"];
+pub const RESERVED: &[&str] = &["index.html", "shard.json"];
 
 /// Reads and validates every case under `paths`; failures are listed, not fatal. Two cases
 /// with one name would write one folder: the second is a failure.

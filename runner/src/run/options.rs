@@ -27,6 +27,11 @@ pub struct RunOptions {
     /// Writes the comparison reports ([`cardan_report`]): one per case (not per sweep point),
     /// one per sweep, and `index.html` at the top of the output folder.
     pub reports: bool,
+    /// Keeps every case folder of an earlier run that is complete and was written by this
+    /// program from the same input (`--resume`; its `run.json`), and runs the rest.
+    pub resume: bool,
+    /// Runs only the K-th (from 1) of N parts of the cases (`--shard K/N`): (K, N).
+    pub shard: Option<(usize, usize)>,
 }
 
 impl std::fmt::Debug for RunOptions {
@@ -39,6 +44,8 @@ impl std::fmt::Debug for RunOptions {
             .field("reports", &self.reports)
             .field("max_bytes", &self.max_bytes)
             .field("allow_large", &self.allow_large)
+            .field("resume", &self.resume)
+            .field("shard", &self.shard)
             .finish_non_exhaustive()
     }
 }
@@ -54,4 +61,6 @@ pub struct Report {
     /// Each sweep written: its name, its folder and how many of its points this run wrote
     /// (each point is also in `written`).
     pub sweeps: Vec<(String, PathBuf, usize)>,
+    /// Cases whose folder of an earlier run was kept (`--resume`; each is also in `written`).
+    pub reused: usize,
 }

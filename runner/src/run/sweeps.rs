@@ -3,63 +3,57 @@
 //! `sweep.csv` (made, or merged with the earlier one) and its report.
 
 use super::options::Report;
-use crate::output::MechanismResult;
+use super::stamp::{Cell, STAMP};
 use anyhow::Context;
 use cardan_case::case::Case;
 use cardan_report::files;
 use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 
+/// A sweep point's row: its name, the value of each swept field (dotted path, value as
+/// written) and its metrics ([`Cell`]s, each crank train's in order).
+pub(crate) type Point<'a> = (&'a str, &'a [(String, String)], &'a [Cell]);
+
 /// `sweep.csv`: one row per written point: its name, the value of each swept field, then every
 /// summary metric of every mechanism (`<mechanism>.<metric>`, in SI, units in `summary.json`).
-fn sweep_csv(points: &[(&Case, &[MechanismResult])]) -> String {
+pub(crate) fn sweep_csv(points: &[Point]) -> String {
     // The columns in the order they first appear, each found by a hash of its name: a sweep of
     // 10 000 points has some 200 columns, which a search through the list per metric and point
     // took a noticeable part of the sweep's time to match.
     let mut columns: Vec<(String, String)> = Vec::new();
     let mut index: HashMap<(&str, &str), usize> = HashMap::new();
-    for (_, results) in points {
-        for r in *results {
-            for m in &r.summary.metrics {
-                index
-                    .entry((r.label.as_str(), m.name.as_str()))
-                    .or_insert_with(|| {
-                        columns.push((r.label.clone(), m.name.clone()));
-                        columns.len() - 1
-                    });
-            }
+    for (_, _, cells) in points {
+        for (label, name, _) in *cells {
+            index
+                .entry((label.as_str(), name.as_str()))
+                .or_insert_with(|| {
+                    columns.push((label.clone(), name.clone()));
+                    columns.len() - 1
+                });
         }
     }
     let swept: Vec<String> = points
         .first()
-        .and_then(|(c, _)| c.sweep.as_ref())
-        .map(|(_, v)| v.iter().map(|(p, _)| p.clone()).collect())
+        .map(|(_, v, _)| v.iter().map(|(p, _)| p.clone()).collect())
         .unwrap_or_default();
     let mut w = csv::Writer::from_writer(Vec::new());
     let mut header = vec!["case".to_string()];
     header.extend(swept.iter().cloned());
     header.extend(columns.iter().map(|(m, k)| format!("{m}.{k}")));
     let _ = w.write_record(&header);
-    let mut buffer = zmij::Buffer::new();
-    for (case, results) in points {
-        let mut row = vec![case.name.clone()];
-        row.extend(
-            case.sweep
-                .iter()
-                .flat_map(|(_, v)| v.iter().map(|(_, x)| x.clone())),
-        );
-        let mut values = vec![None; columns.len()];
-        for r in *results {
-            for m in &r.summary.metrics {
-                // The first of a name, as a search from the start would find.
-                let slot = &mut values[index[&(r.label.as_str(), m.name.as_str())]];
-                slot.get_or_insert(m.value);
-            }
+    for (name, swept, cells) in points {
+        let mut row = vec![name.to_string()];
+        row.extend(swept.iter().map(|(_, x)| x.clone()));
+        let mut values: Vec<Option<&str>> = vec![None; columns.len()];
+        for (label, name, text) in *cells {
+            // The first of a name, as a search from the start would find.
+            let slot = &mut values[index[&(label.as_str(), name.as_str())]];
+            slot.get_or_insert(text.as_str());
         }
         row.extend(
             values
                 .into_iter()
-                .map(|v| v.map_or(String::new(), |v| buffer.format(v).to_string())),
+                .map(|v| v.unwrap_or_default().to_string()),
         );
         let _ = w.write_record(&row);
     }
@@ -136,13 +130,43 @@ fn merged_sweep_csv(dir: &Path, fresh: &str, order: &[String]) -> anyhow::Result
     Ok(String::from_utf8(w.into_inner()?)?)
 }
 
+/// Moves into `tmp`, the new temporary folder of the sweep `out/<sweep>`, the folders of its
+/// `points` that an earlier run left complete (with their `run.json`): in the temporary
+/// folders of killed runs of it, or in `out/<sweep>` itself (`--resume`). Whether each can be
+/// kept is then [`super::stamp::reusable`]'s to tell.
+fn salvage_points(out: &Path, sweep: &str, tmp: &Path, points: &[String]) {
+    let prefix = format!(".{sweep}.tmp-");
+    let mut sources: Vec<PathBuf> = files::stale_temporaries(out)
+        .into_iter()
+        .map(|(path, _)| path)
+        .filter(|p| {
+            p.is_dir()
+                && p.file_name()
+                    .is_some_and(|n| n.to_string_lossy().starts_with(&prefix))
+        })
+        .collect();
+    sources.push(out.join(sweep));
+    for source in sources {
+        for point in points {
+            let (from, to) = (source.join(point), tmp.join(point));
+            if from.join(STAMP).is_file() && to.symlink_metadata().is_err() {
+                if let Err(e) = std::fs::rename(&from, &to) {
+                    tracing::warn!(from = %from.display(), "cannot keep the point of an earlier run: {e}");
+                }
+            }
+        }
+    }
+}
+
 /// Where each sweep of `cases` is written ([`SweepTarget`]; None, with a failure in
-/// `failures`, where it cannot be): `selected` of each sweep's `all_points` are run.
+/// `failures`, where it cannot be): `selected` of each sweep's `all_points` are run. With
+/// `resume`, the complete points of earlier runs are gathered into a new sweep folder first.
 pub(super) fn sweep_targets(
     cases: &[Case],
     out: &Path,
     selected: &HashMap<&str, usize>,
     all_points: &HashMap<String, Vec<String>>,
+    resume: bool,
     failures: &mut Vec<String>,
 ) -> BTreeMap<String, Option<SweepTarget>> {
     let mut sweeps: BTreeMap<String, Option<SweepTarget>> = BTreeMap::new();
@@ -166,7 +190,12 @@ pub(super) fn sweep_targets(
                 Err(e) => Err(e),
             }
         } else {
-            files::temporary_dir(&dir).map(SweepTarget::Whole)
+            files::temporary_dir(&dir).map(|tmp| {
+                if resume {
+                    salvage_points(out, sweep, &tmp, &all_points[sweep]);
+                }
+                SweepTarget::Whole(tmp)
+            })
         };
         if let Err(e) = &target {
             failures.push(format!(
@@ -186,7 +215,7 @@ pub(super) fn sweep_targets(
 pub(super) fn write_sweeps(
     sweeps: &BTreeMap<String, Option<SweepTarget>>,
     out: &Path,
-    points: &BTreeMap<&str, Vec<(&Case, &[MechanismResult])>>,
+    points: &BTreeMap<&str, Vec<Point>>,
     failed: &HashMap<&str, usize>,
     all_points: &HashMap<String, Vec<String>>,
     reports: bool,

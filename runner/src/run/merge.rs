@@ -1,0 +1,212 @@
+//! `cardan merge`: the output folders of the N shards of one batch (`--shard K/N`) gathered
+//! into what one run of the batch writes: each case's folder copied whole, each sweep's folder
+//! made of its points' folders with its `sweep.csv` (from the points' records, `run.json`)
+//! and report, and the index. Shards of other inputs, another program or an incomplete set
+//! are refused before anything is written.
+
+use super::options::Report;
+use super::shard::Manifest;
+use super::stamp::{self, PROGRAM};
+use super::sweeps::{sweep_csv, Point};
+use anyhow::Context;
+use cardan_report::files;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// Copies the folder `from` into the new folder `to`, file by file.
+fn copy_dir(from: &Path, to: &Path) -> std::io::Result<()> {
+    std::fs::create_dir_all(to)?;
+    for entry in std::fs::read_dir(from)? {
+        let entry = entry?;
+        let target = to.join(entry.file_name());
+        if entry.file_type()?.is_dir() {
+            copy_dir(&entry.path(), &target)?;
+        } else {
+            std::fs::copy(entry.path(), &target)?;
+        }
+    }
+    Ok(())
+}
+
+/// The shards' records, checked to be the N shards, each once, of one batch run by this
+/// program; or why they cannot be merged.
+fn manifests(dirs: &[PathBuf]) -> Result<Vec<Manifest>, String> {
+    let mut all = Vec::new();
+    for dir in dirs {
+        all.push(Manifest::read(dir).map_err(|e| format!("{e:#}"))?);
+    }
+    let Some(first) = all.first() else {
+        return Err("no shard folder given".into());
+    };
+    let n = first.shard.1;
+    for (dir, m) in dirs.iter().zip(&all) {
+        if m.program != PROGRAM {
+            return Err(format!(
+                "{}: written by {}, this is {PROGRAM}: run every shard with one program",
+                dir.display(),
+                m.program
+            ));
+        }
+        if m.inputs_hash != first.inputs_hash || m.shard.1 != n || m.cases != first.cases {
+            return Err(format!(
+                "{} and {}: shards of different inputs (case files, options or shard count): they cannot be merged",
+                dirs[0].display(),
+                dir.display()
+            ));
+        }
+    }
+    let mut seen = vec![None; n];
+    for (dir, m) in dirs.iter().zip(&all) {
+        let k = m.shard.0;
+        if k == 0 || k > n {
+            return Err(format!("{}: shard {k} of {n}?", dir.display()));
+        }
+        if let Some(other) = seen[k - 1].replace(dir) {
+            return Err(format!(
+                "{} and {}: both are shard {k}/{n}",
+                other.display(),
+                dir.display()
+            ));
+        }
+    }
+    let missing: Vec<String> = (1..=n)
+        .filter(|k| seen[k - 1].is_none())
+        .map(|k| format!("{k}/{n}"))
+        .collect();
+    if !missing.is_empty() {
+        return Err(format!("shard(s) {} missing", missing.join(", ")));
+    }
+    Ok(all)
+}
+
+/// Merges the output folders `dirs` of the shards of one batch into `out`, which then holds
+/// byte for byte what one run of the batch writes. The failures of the shards are the
+/// merge's; a refusal (shards that do not belong together) writes nothing.
+pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
+    let mut report = Report::default();
+    let all = match manifests(dirs) {
+        Ok(all) => all,
+        Err(e) => {
+            report.failures.push(format!("cannot merge: {e}"));
+            return report;
+        }
+    };
+    // Each shard's folder by its K.
+    let mut by_shard: Vec<&Path> = vec![Path::new(""); all.len()];
+    for (dir, m) in dirs.iter().zip(&all) {
+        by_shard[m.shard.0 - 1] = dir;
+    }
+    for m in &all {
+        for f in &m.failures {
+            if !report.failures.contains(f) {
+                report.failures.push(f.clone());
+            }
+        }
+    }
+    if let Err(e) = std::fs::create_dir_all(out) {
+        report
+            .failures
+            .push(format!("--out {}: cannot create: {e}", out.display()));
+        return report;
+    }
+    files::remove_stale_temporaries(out);
+    let first = &all[0];
+    let mut sweeps: BTreeMap<&str, Vec<(&str, &Path)>> = BTreeMap::new();
+    for (name, sweep, k) in &first.cases {
+        let shard = by_shard[k - 1];
+        match sweep {
+            Some(s) => sweeps.entry(s).or_default().push((name, shard)),
+            None => {
+                let from = shard.join(name);
+                // A case the shard could not run has no complete folder: its failure is listed.
+                if !stamp::read(&from).is_some_and(|r| r.complete) {
+                    continue;
+                }
+                let dir = out.join(name);
+                let copied = files::temporary_dir(&dir).and_then(|tmp| {
+                    copy_dir(&from, &tmp)
+                        .with_context(|| format!("copy {}", from.display()))
+                        .and_then(|()| files::replace_dir(&tmp, &dir))
+                        .inspect_err(|_| {
+                            let _ = std::fs::remove_dir_all(&tmp);
+                        })
+                });
+                match copied {
+                    Ok(()) => report.written.push((name.clone(), dir)),
+                    Err(e) => report.failures.push(format!(
+                        "case \"{name}\": cannot write {}: {e:#}",
+                        dir.display()
+                    )),
+                }
+            }
+        }
+    }
+    for (sweep, points) in sweeps {
+        let dir = out.join(sweep);
+        match merge_sweep(sweep, &points, &dir, first.reports) {
+            Ok(written) if written.is_empty() => {}
+            Ok(written) => {
+                report
+                    .sweeps
+                    .push((sweep.to_string(), dir.clone(), written.len()));
+                for p in written {
+                    report.written.push((p.to_string(), dir.join(p)));
+                }
+            }
+            Err(e) => report.failures.push(format!(
+                "sweep \"{sweep}\": cannot write results to {}: {e:#}",
+                dir.display()
+            )),
+        }
+    }
+    let changed = !report.written.is_empty() || !report.sweeps.is_empty();
+    let index = out.join("index.html");
+    if changed && (first.reports || index.symlink_metadata().is_ok()) {
+        if let Err(e) = cardan_report::index(out) {
+            report
+                .failures
+                .push(format!("cannot write {}: {e:#}", index.display()));
+        }
+    }
+    report
+}
+
+/// Gathers the sweep's `points` (each in its shard's folder of the sweep) into `dir`, replaced
+/// whole, with `sweep.csv` and, if `reports`, the sweep's report; the points gathered. A sweep
+/// none of whose points was written is not written (an earlier folder stays, as in a run).
+fn merge_sweep<'a>(
+    sweep: &str,
+    points: &[(&'a str, &Path)],
+    dir: &Path,
+    reports: bool,
+) -> anyhow::Result<Vec<&'a str>> {
+    let tmp = files::temporary_dir(dir)?;
+    let result = (|| {
+        let mut rows = Vec::new();
+        for (name, shard) in points {
+            let from = shard.join(sweep).join(name);
+            let Some(record) = stamp::read(&from).filter(|r| r.complete) else {
+                continue;
+            };
+            copy_dir(&from, &tmp.join(name)).with_context(|| format!("copy {}", from.display()))?;
+            rows.push((*name, record));
+        }
+        if rows.is_empty() {
+            return Ok(Vec::new());
+        }
+        let table: Vec<Point> = rows
+            .iter()
+            .map(|(name, r)| (*name, &r.sweep_values[..], &r.metrics[..]))
+            .collect();
+        files::write_file(&tmp.join("sweep.csv"), sweep_csv(&table).as_bytes())?;
+        if reports {
+            cardan_report::sweep_report(&tmp, sweep, None).context("the sweep report")?;
+        }
+        files::replace_dir(&tmp, dir)?;
+        Ok(rows.into_iter().map(|(name, _)| name).collect())
+    })();
+    if !matches!(&result, Ok(w) if !w.is_empty()) {
+        let _ = std::fs::remove_dir_all(&tmp);
+    }
+    result
+}

@@ -1,0 +1,182 @@
+//! Shards (`--shard K/N`): the cases of a batch (sweeps expanded) split into N deterministic
+//! parts of near-equal expected cost ([`part`]), and the record a shard leaves in its output
+//! folder (`shard.json`, [`Manifest`]) by which `cardan merge` gathers the shards into what one
+//! run writes (`merge.rs`) and refuses shards of other inputs or another program.
+
+use super::stamp::{input_hash, Fnv, PROGRAM};
+use anyhow::Context;
+use cardan_case::case::Case;
+use serde_json::{json, Value};
+use std::path::Path;
+
+/// The record's file name in a shard's output folder.
+pub const MANIFEST: &str = "shard.json";
+
+/// The expected cost of running `case`, in step-evaluations: its steps, times its crank
+/// trains (mechanisms), times one plus its per-step stages (the loss budget, the gear
+/// rating), each of which costs about as much as the kinetostatics of a step. Its per-step
+/// files count as one stage more.
+pub fn cost(case: &Case) -> u128 {
+    let stages = 1
+        + usize::from(case.friction.is_some())
+        + usize::from(case.gear.is_some())
+        + usize::from(case.output.csv || case.output.npy);
+    (case.steps as u128 + 1) * case.mechanisms.len().max(1) as u128 * stages as u128
+}
+
+/// Which of `cases` the K-th (from 1) of `n` shards runs: the cases taken by decreasing
+/// [`cost`] (ties in their order), each given to the shard with the least cost so far (ties to
+/// the lowest): Graham's longest-processing-time rule (R. L. Graham, "Bounds on
+/// multiprocessing timing anomalies", SIAM J. Appl. Math. 17 (1969) 416-429: within 4/3 of the
+/// best split). The same cases give the same parts on every machine.
+pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
+    let n = n.max(1);
+    let mut order: Vec<usize> = (0..cases.len()).collect();
+    let costs: Vec<u128> = cases.iter().map(cost).collect();
+    order.sort_by_key(|&i| (std::cmp::Reverse(costs[i]), i));
+    let mut load = vec![0u128; n];
+    let mut shard_of = vec![0; cases.len()];
+    for i in order {
+        let k = (0..n).min_by_key(|&k| (load[k], k)).unwrap_or(0);
+        load[k] += costs[i];
+        shard_of[i] = k + 1;
+    }
+    shard_of
+}
+
+/// Whether each of `cases` is in the K-th of `n` shards ([`assignment`]).
+pub fn part(cases: &[Case], k: usize, n: usize) -> Vec<bool> {
+    assignment(cases, n).into_iter().map(|s| s == k).collect()
+}
+
+/// What a shard records of its run: the program, a hash of the whole batch's inputs, which
+/// shard of how many it is, whether reports were written, and every case of the batch (its
+/// name, its sweep, its shard) in the batch's order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Manifest {
+    pub program: String,
+    pub inputs_hash: String,
+    /// (K, N).
+    pub shard: (usize, usize),
+    pub reports: bool,
+    /// (case name, its sweep, the shard that runs it) of every case of the batch.
+    pub cases: Vec<(String, Option<String>, usize)>,
+    /// The failures this shard met (the batch's unreadable case files, its failed cases).
+    pub failures: Vec<String>,
+}
+
+impl Manifest {
+    /// The record of shard `k` of `n` of the batch `cases` (as they run: after the command
+    /// line's overrides); `failures` so far are the case files that could not be read, which
+    /// change the inputs as much as the cases do.
+    pub fn new(cases: &[Case], k: usize, n: usize, reports: bool, failures: &[String]) -> Self {
+        let shards = assignment(cases, n);
+        let mut hash = Fnv::default();
+        hash.update(format!("{n} shards, reports {reports}").as_bytes());
+        for f in failures {
+            hash.update(f.as_bytes());
+        }
+        for case in cases {
+            hash.update(case.name.as_bytes())
+                .update(input_hash(case, reports && case.sweep.is_none()).as_bytes());
+        }
+        Self {
+            program: PROGRAM.to_string(),
+            inputs_hash: hash.hex(),
+            shard: (k, n),
+            reports,
+            cases: cases
+                .iter()
+                .zip(shards)
+                .map(|(c, s)| (c.name.clone(), c.sweep.as_ref().map(|(s, _)| s.clone()), s))
+                .collect(),
+            failures: Vec::new(),
+        }
+    }
+
+    /// Writes the record, with the shard's `failures`, into the shard's output folder `out`.
+    pub fn write(mut self, out: &Path, failures: &[String]) -> anyhow::Result<()> {
+        self.failures = failures.to_vec();
+        let record = json!({
+            "program": self.program,
+            "inputs_hash": self.inputs_hash,
+            "shard": [self.shard.0, self.shard.1],
+            "reports": self.reports,
+            "cases": self.cases.iter().map(|(c, s, k)| json!([c, s, k])).collect::<Vec<_>>(),
+            "failures": self.failures,
+        });
+        let mut text = serde_json::to_string_pretty(&record)?;
+        text.push('\n');
+        std::fs::create_dir_all(out).with_context(|| format!("create {}", out.display()))?;
+        cardan_report::files::write_file_replacing(&out.join(MANIFEST), text.as_bytes())
+    }
+
+    /// Reads the record of the shard output folder `dir`.
+    pub fn read(dir: &Path) -> anyhow::Result<Self> {
+        let path = dir.join(MANIFEST);
+        let text = std::fs::read_to_string(&path).with_context(|| {
+            format!(
+                "read {}: not the output folder of a `cardan run --shard K/N`",
+                path.display()
+            )
+        })?;
+        let v: Value =
+            serde_json::from_str(&text).with_context(|| format!("read {}", path.display()))?;
+        let bad = || anyhow::anyhow!("{}: not a shard record of cardan", path.display());
+        let string = |v: &Value| v.as_str().map(String::from).ok_or_else(bad);
+        let number = |v: &Value| v.as_u64().map(|n| n as usize).ok_or_else(bad);
+        let cases = v["cases"]
+            .as_array()
+            .ok_or_else(bad)?
+            .iter()
+            .map(|c| {
+                let sweep = match &c[1] {
+                    Value::Null => None,
+                    s => Some(string(s)?),
+                };
+                Ok((string(&c[0])?, sweep, number(&c[2])?))
+            })
+            .collect::<anyhow::Result<_>>()?;
+        Ok(Self {
+            program: string(&v["program"])?,
+            inputs_hash: string(&v["inputs_hash"])?,
+            shard: (number(&v["shard"][0])?, number(&v["shard"][1])?),
+            reports: v["reports"].as_bool().ok_or_else(bad)?,
+            cases,
+            failures: v["failures"]
+                .as_array()
+                .ok_or_else(bad)?
+                .iter()
+                .map(string)
+                .collect::<anyhow::Result<_>>()?,
+        })
+    }
+}
+
+/// Parses `K/N` (1 <= K <= N).
+pub fn parse_shard(text: &str) -> Result<(usize, usize), String> {
+    let err = || format!("--shard {text}: expected K/N with 1 <= K <= N, e.g. 2/3");
+    let (k, n) = text.split_once('/').ok_or_else(err)?;
+    let (k, n): (usize, usize) = (
+        k.trim().parse().map_err(|_| err())?,
+        n.trim().parse().map_err(|_| err())?,
+    );
+    if k == 0 || k > n {
+        return Err(err());
+    }
+    Ok((k, n))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_shard;
+
+    #[test]
+    fn shards_are_read_as_k_of_n() {
+        assert_eq!(parse_shard("2/3"), Ok((2, 3)));
+        assert_eq!(parse_shard("1/1"), Ok((1, 1)));
+        for bad in ["0/3", "4/3", "3", "a/b", "1/0", "-1/2"] {
+            assert!(parse_shard(bad).is_err(), "{bad}");
+        }
+    }
+}

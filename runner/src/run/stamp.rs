@@ -1,0 +1,206 @@
+//! A case folder's record of what made it (`run.json`): the program and its version, a hash of
+//! the case's validated input, the files the folder holds with their sizes, and, for a sweep's
+//! point, its row of the sweep table. Written last into the temporary folder that then
+//! replaces the case's folder whole, so a folder holding it is complete. `--resume` keeps a
+//! folder whose record matches the case and the program ([`reusable`]); `cardan merge` reads
+//! the sweep rows of the shards' points from it.
+
+use crate::output::MechanismResult;
+use cardan_case::case::Case;
+use serde_json::{json, Value};
+use std::path::{Path, PathBuf};
+
+/// The record's file name in a case folder.
+pub const STAMP: &str = "run.json";
+
+/// The program and its version (Cargo's package version of the workspace), as recorded.
+pub const PROGRAM: &str = concat!("cardan ", env!("CARGO_PKG_VERSION"));
+
+/// One summary metric of a sweep point: (crank train label, metric name, the number as
+/// `sweep.csv` writes it).
+pub type Cell = (String, String, String);
+
+/// FNV-1a, 128 bits (Fowler, Noll and Vo; IETF draft-eastlake-fnv, section 2 and the 128-bit
+/// offset basis and prime of section 5): a stable hash of the inputs, the same in every build
+/// and on every machine (std's hasher promises neither). It tells inputs apart, it is no
+/// protection against someone forging a collision.
+#[derive(Clone, Copy)]
+pub struct Fnv(u128);
+
+impl Default for Fnv {
+    fn default() -> Self {
+        Self(0x6c62_272e_07bb_0142_62b8_2175_6295_c58d)
+    }
+}
+
+impl Fnv {
+    /// Hashes `bytes` in, then a separator, so that ("ab", "c") and ("a", "bc") differ.
+    pub fn update(&mut self, bytes: &[u8]) -> &mut Self {
+        const PRIME: u128 = 0x0000_0000_0100_0000_0000_0000_0000_013b;
+        for &b in bytes.iter().chain(&[0xff]) {
+            self.0 ^= u128::from(b);
+            self.0 = self.0.wrapping_mul(PRIME);
+        }
+        self
+    }
+
+    /// The hash as 32 hexadecimal digits.
+    pub fn hex(&self) -> String {
+        format!("{:032x}", self.0)
+    }
+}
+
+/// The hash of `case`'s validated input as it runs (after the command line's overrides of its
+/// `[output]`), and whether its folder holds a report: its whole validated form, except the
+/// path of its file (a case moved or run from another folder is the same case). The form is
+/// the program's own (`Debug`), which is why the program's version is recorded beside it.
+pub fn input_hash(case: &Case, report: bool) -> String {
+    let mut case = case.clone();
+    case.file = PathBuf::new();
+    Fnv::default()
+        .update(format!("{case:?}").as_bytes())
+        .update(if report { b"report" } else { b"no report" })
+        .hex()
+}
+
+/// A sweep point's row of the sweep table: every metric of every crank train, in order.
+pub fn cells(results: &[MechanismResult]) -> Vec<Cell> {
+    let mut buffer = zmij::Buffer::new();
+    results
+        .iter()
+        .flat_map(|r| {
+            r.summary
+                .metrics
+                .iter()
+                .map(|m| (r.label.clone(), m.name.clone(), m.value))
+                .collect::<Vec<_>>()
+        })
+        .map(|(label, name, v)| (label, name, buffer.format(v).to_string()))
+        .collect()
+}
+
+/// Every file under `dir` (its path relative to `dir`, with `/`) and its size, sorted, except
+/// the record itself.
+fn listing(dir: &Path) -> std::io::Result<Vec<(String, u64)>> {
+    fn walk(dir: &Path, prefix: &str, out: &mut Vec<(String, u64)>) -> std::io::Result<()> {
+        for entry in std::fs::read_dir(dir)? {
+            let entry = entry?;
+            let name = format!("{prefix}{}", entry.file_name().to_string_lossy());
+            let meta = entry.metadata()?;
+            if meta.is_dir() {
+                walk(&entry.path(), &format!("{name}/"), out)?;
+            } else if name != STAMP {
+                out.push((name, meta.len()));
+            }
+        }
+        Ok(())
+    }
+    let mut out = Vec::new();
+    walk(dir, "", &mut out)?;
+    out.sort();
+    Ok(out)
+}
+
+/// Writes the record of `case` into its finished temporary folder `dir` (every other file
+/// already written).
+pub fn write(dir: &Path, case: &Case, report: bool, cells: &[Cell]) -> anyhow::Result<()> {
+    let files: serde_json::Map<String, Value> = listing(dir)?
+        .into_iter()
+        .map(|(name, size)| (name, json!(size)))
+        .collect();
+    let mut record = json!({
+        "program": PROGRAM,
+        "input_hash": input_hash(case, report),
+        "files": files,
+    });
+    if let Some((_, values)) = &case.sweep {
+        record["sweep_values"] = json!(values);
+        record["metrics"] = json!(cells);
+    }
+    let mut text = serde_json::to_string(&record)?;
+    text.push('\n');
+    cardan_report::files::write_file(&dir.join(STAMP), text.as_bytes())
+}
+
+/// A case folder's record as read back.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Record {
+    pub program: String,
+    pub input_hash: String,
+    /// The value of each swept field (a sweep's point).
+    pub sweep_values: Vec<(String, String)>,
+    /// Its row of the sweep table (a sweep's point).
+    pub metrics: Vec<Cell>,
+    /// Whether the files the record lists are the folder's, with their sizes.
+    pub complete: bool,
+}
+
+/// Reads the record of the case folder `dir`; None if it has none or it cannot be read.
+pub fn read(dir: &Path) -> Option<Record> {
+    let text = std::fs::read_to_string(dir.join(STAMP)).ok()?;
+    let v: Value = serde_json::from_str(&text).ok()?;
+    let strings = |v: &Value| -> Option<Vec<String>> {
+        v.as_array()?
+            .iter()
+            .map(|s| s.as_str().map(String::from))
+            .collect()
+    };
+    // Sorted by name, as the listing is (a JSON object's keys are read back sorted).
+    let listed: Option<Vec<(String, u64)>> = v["files"]
+        .as_object()?
+        .iter()
+        .map(|(name, size)| Some((name.clone(), size.as_u64()?)))
+        .collect();
+    let complete = listing(dir).ok() == Some(listed?);
+    let sweep_values = match v.get("sweep_values") {
+        None => Vec::new(),
+        Some(values) => values
+            .as_array()?
+            .iter()
+            .map(|p| Some((p[0].as_str()?.to_string(), p[1].as_str()?.to_string())))
+            .collect::<Option<_>>()?,
+    };
+    let metrics = match v.get("metrics") {
+        None => Vec::new(),
+        Some(values) => values
+            .as_array()?
+            .iter()
+            .map(|c| {
+                let c = strings(c)?;
+                let [a, b, t] = <[String; 3]>::try_from(c).ok()?;
+                Some((a, b, t))
+            })
+            .collect::<Option<_>>()?,
+    };
+    Some(Record {
+        program: v["program"].as_str()?.to_string(),
+        input_hash: v["input_hash"].as_str()?.to_string(),
+        sweep_values,
+        metrics,
+        complete,
+    })
+}
+
+/// The sweep row of the folder `dir` of `case`, if the folder is complete and was written by
+/// this program from this very input: `--resume` keeps it instead of running the case again.
+pub fn reusable(dir: &Path, case: &Case, report: bool) -> Option<Vec<Cell>> {
+    let record = read(dir)?;
+    (record.complete && record.program == PROGRAM && record.input_hash == input_hash(case, report))
+        .then_some(record.metrics)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Fnv;
+
+    /// FNV-1a 128 of the empty string is its offset basis; of "a" (with our separator byte
+    /// after it) it differs from "a" followed by anything else.
+    #[test]
+    fn the_hash_is_stable_and_separates_parts() {
+        assert_eq!(Fnv::default().hex(), "6c62272e07bb014262b821756295c58d");
+        let ab_c = Fnv::default().update(b"ab").update(b"c").hex();
+        let a_bc = Fnv::default().update(b"a").update(b"bc").hex();
+        assert_ne!(ab_c, a_bc);
+        assert_eq!(ab_c, Fnv::default().update(b"ab").update(b"c").hex());
+    }
+}
