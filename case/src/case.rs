@@ -31,6 +31,9 @@ pub struct OutputOptions {
     /// Significant digits of the CSV numbers; `None`: the shortest text that reads back to
     /// the same number.
     pub significant_digits: Option<usize>,
+    /// A sweep's points each in a folder of their own (`Some(true)`), or only as rows of the
+    /// sweep table (`Some(false)`); `None`: the runner's default by the number of points.
+    pub case_folders: Option<bool>,
 }
 
 impl Default for OutputOptions {
@@ -40,6 +43,7 @@ impl Default for OutputOptions {
             npy: false,
             decimation: 1,
             significant_digits: None,
+            case_folders: None,
         }
     }
 }
@@ -159,6 +163,11 @@ pub struct OutputTable {
     /// Significant digits of the CSV numbers, from 1 to 17; default: the shortest text that
     /// reads back to the same number.
     pub significant_digits: Option<Whole<1, 17>>,
+    /// A sweep's points each in a folder of their own (summary.json, per-step files, listed in
+    /// sweep.csv); false: only as rows of the sweep table (columns/*.npy and sweep.json, no
+    /// folders, no per-step files), for sweeps of many points. Default: true up to 10 000
+    /// points, false above. Not read outside a sweep.
+    pub case_folders: Option<bool>,
 }
 
 fn yes() -> bool {
@@ -172,6 +181,7 @@ impl Default for OutputTable {
             npy: false,
             decimation: None,
             significant_digits: None,
+            case_folders: None,
         }
     }
 }
@@ -183,6 +193,7 @@ impl From<&OutputTable> for OutputOptions {
             npy: o.npy,
             decimation: o.decimation.map_or(1, |d| d.0 as usize),
             significant_digits: o.significant_digits.map(|d| d.0 as usize),
+            case_folders: o.case_folders,
         }
     }
 }

@@ -253,7 +253,7 @@ fn main() -> ExitCode {
             if !no_report && index.is_file() {
                 println!("reports: {}", index.display());
             }
-            (report.written.len(), report.failures)
+            (report.written.len() + report.sweeps.len(), report.failures)
         }
         Command::Gear { file, out } => return gear(&file, &out),
         Command::Merge { dirs, out } => {
@@ -267,7 +267,7 @@ fn main() -> ExitCode {
                 report.failures.len(),
                 started.elapsed().as_secs_f64()
             );
-            (report.written.len(), report.failures)
+            (report.written.len() + report.sweeps.len(), report.failures)
         }
         Command::Check { paths } => {
             let (cases, failures) = load_cases(&paths);

@@ -20,6 +20,7 @@ pub mod shard;
 mod size;
 pub mod stamp;
 mod sweeps;
+mod table;
 mod train;
 
 pub use batch::{run_paths, worker_threads};
@@ -27,4 +28,5 @@ pub use cases::{case_files, load_cases, matches_pattern, RESERVED};
 pub use merge::merge;
 pub use options::{Progress, Report, RunOptions};
 pub use size::{estimated_bytes, human_bytes, DEFAULT_MAX_BYTES};
+pub use table::{case_folders, CASE_FOLDERS_UP_TO};
 pub use train::run_case;

@@ -6,6 +6,7 @@ use super::cases::{load_cases, matches_pattern};
 use super::options::{Report, RunOptions};
 use super::shard::{self, Manifest};
 use super::sweeps::{sweep_targets, write_sweeps, Point, SweepTarget};
+use super::table::{run_table, take_tables};
 use cardan_case::case::Case;
 use cardan_report::files;
 use rayon::prelude::*;
@@ -81,6 +82,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     if let Some(pattern) = &options.only {
         cases.retain(|c| matches_pattern(pattern, &c.name));
     }
+    let tables = take_tables(&mut cases, &all_points);
     let mut selected: HashMap<&str, usize> = HashMap::new();
     for c in &cases {
         if let Some((sweep, _)) = &c.sweep {
@@ -113,9 +115,19 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
             None => out.to_path_buf(),
         }
     };
-    let Some(outcomes) = run_all(&cases, &base, &options, &mut report.failures) else {
+    let Some((outcomes, tables)) =
+        run_all(&cases, &tables, out, &base, &options, &mut report.failures)
+    else {
         return report;
     };
+    for (sweep, written, failures) in tables {
+        if written > 0 {
+            report
+                .sweeps
+                .push((sweep.clone(), out.join(&sweep), written));
+        }
+        report.failures.extend(failures);
+    }
     let mut points: std::collections::BTreeMap<&str, Vec<Point>> = Default::default();
     let mut failed: HashMap<&str, usize> = HashMap::new();
     for (case, o) in cases.iter().zip(&outcomes) {
@@ -181,19 +193,25 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
 /// A case's outcome: its folder and sweep row, or its failure.
 type Outcome = Result<Written, String>;
 
-/// Runs and writes every case of `cases` into its folder under `base(case)` on the worker
-/// threads `options` asks for, telling `options.progress` of each; a panic is the case's
-/// failure. None, with the failure in `failures`, if the threads cannot be started.
+/// A sweep written as a table: its name, its points that ran, its failures.
+type TableOutcome = (String, usize, Vec<String>);
+
+/// Runs and writes every case of `cases` into its folder under `base(case)`, then each sweep
+/// of `tables` into its table (`table.rs`), on the worker threads `options` asks for, telling
+/// `options.progress` of each case and point; a panic is the case's failure. None, with the
+/// failure in `failures`, if the threads cannot be started.
 fn run_all(
     cases: &[Case],
+    tables: &[(String, Vec<Case>)],
+    out: &Path,
     base: &(dyn Fn(&Case) -> PathBuf + Sync),
     options: &RunOptions,
     failures: &mut Vec<String>,
-) -> Option<Vec<Outcome>> {
-    let total = cases.len();
+) -> Option<(Vec<Outcome>, Vec<TableOutcome>)> {
+    let total = cases.len() + tables.iter().map(|(_, p)| p.len()).sum::<usize>();
     let done = std::sync::atomic::AtomicUsize::new(0);
-    let work = || -> Vec<Outcome> {
-        cases
+    let work = || {
+        let outcomes = cases
             .par_iter()
             .map(|case| {
                 let _span = tracing::info_span!("case", name = %case.name).entered();
@@ -220,7 +238,16 @@ fn run_all(
                     )),
                 }
             })
-            .collect()
+            .collect::<Vec<Outcome>>();
+        let tables: Vec<TableOutcome> = tables
+            .iter()
+            .map(|(sweep, points)| {
+                let points: Vec<&Case> = points.iter().collect();
+                let (n, failures) = run_table(sweep, &points, out, options, &done, total);
+                (sweep.clone(), n, failures)
+            })
+            .collect();
+        (outcomes, tables)
     };
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let (jobs, warning) = worker_threads(options.jobs, cores);

@@ -143,6 +143,29 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
     }
     for (sweep, points) in sweeps {
         let dir = out.join(sweep);
+        // A sweep written as a table: whole, by one shard.
+        if let Some(from) = points
+            .first()
+            .map(|(_, shard)| shard.join(sweep))
+            .filter(|from| from.join("sweep.json").is_file())
+        {
+            let copied = files::temporary_dir(&dir).and_then(|tmp| {
+                copy_dir(&from, &tmp)
+                    .with_context(|| format!("copy {}", from.display()))
+                    .and_then(|()| files::replace_dir(&tmp, &dir))
+                    .inspect_err(|_| {
+                        let _ = std::fs::remove_dir_all(&tmp);
+                    })
+            });
+            match copied {
+                Ok(()) => report.sweeps.push((sweep.to_string(), dir, points.len())),
+                Err(e) => report.failures.push(format!(
+                    "sweep \"{sweep}\": cannot write {}: {e:#}",
+                    dir.display()
+                )),
+            }
+            continue;
+        }
         match merge_sweep(sweep, &points, &dir, first.reports) {
             Ok(written) if written.is_empty() => {}
             Ok(written) => {

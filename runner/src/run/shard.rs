@@ -28,18 +28,47 @@ pub fn cost(case: &Case) -> u128 {
 /// [`cost`] (ties in their order), each given to the shard with the least cost so far (ties to
 /// the lowest): Graham's longest-processing-time rule (R. L. Graham, "Bounds on
 /// multiprocessing timing anomalies", SIAM J. Appl. Math. 17 (1969) 416-429: within 4/3 of the
-/// best split). The same cases give the same parts on every machine.
+/// best split). The points of a sweep written as a table (no case folders) go together, as
+/// one: its table is written whole by one shard. The same cases give the same parts on every
+/// machine.
 pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
     let n = n.max(1);
-    let mut order: Vec<usize> = (0..cases.len()).collect();
-    let costs: Vec<u128> = cases.iter().map(cost).collect();
-    order.sort_by_key(|&i| (std::cmp::Reverse(costs[i]), i));
+    let mut points: std::collections::HashMap<&str, usize> = Default::default();
+    for c in cases {
+        if let Some((s, _)) = &c.sweep {
+            *points.entry(s).or_default() += 1;
+        }
+    }
+    // Each unit: its first case, its cases, its cost.
+    let mut units: Vec<(usize, Vec<usize>, u128)> = Vec::new();
+    let mut table_unit: std::collections::HashMap<&str, usize> = Default::default();
+    for (i, c) in cases.iter().enumerate() {
+        let table = c
+            .sweep
+            .as_ref()
+            .filter(|(s, _)| !super::table::case_folders(c, points[s.as_str()]));
+        let u = match table {
+            Some((s, _)) => *table_unit.entry(s).or_insert_with(|| {
+                units.push((i, Vec::new(), 0));
+                units.len() - 1
+            }),
+            None => {
+                units.push((i, Vec::new(), 0));
+                units.len() - 1
+            }
+        };
+        units[u].1.push(i);
+        units[u].2 += cost(c);
+    }
+    units.sort_by_key(|(first, _, cost)| (std::cmp::Reverse(*cost), *first));
     let mut load = vec![0u128; n];
     let mut shard_of = vec![0; cases.len()];
-    for i in order {
+    for (_, members, cost) in units {
         let k = (0..n).min_by_key(|&k| (load[k], k)).unwrap_or(0);
-        load[k] += costs[i];
-        shard_of[i] = k + 1;
+        load[k] += cost;
+        for i in members {
+            shard_of[i] = k + 1;
+        }
     }
     shard_of
 }

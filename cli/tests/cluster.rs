@@ -1,0 +1,153 @@
+//! `cardan run --resume` after a real kill at a random moment, `--shard` and `cardan merge`
+//! through the command line, and `cardan slurm`'s script (issue 26).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn configs() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs")
+}
+
+fn cardan() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_cardan"))
+}
+
+/// Every file under `dir` and its bytes.
+fn tree(dir: &Path) -> BTreeMap<String, Vec<u8>> {
+    fn walk(dir: &Path, prefix: &str, out: &mut BTreeMap<String, Vec<u8>>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let entry = entry.unwrap();
+            let name = format!("{prefix}{}", entry.file_name().to_string_lossy());
+            if entry.file_type().unwrap().is_dir() {
+                walk(&entry.path(), &format!("{name}/"), out);
+            } else {
+                out.insert(name, std::fs::read(entry.path()).unwrap());
+            }
+        }
+    }
+    let mut out = BTreeMap::new();
+    walk(dir, "", &mut out);
+    out
+}
+
+fn assert_same(expected: &Path, actual: &Path, context: &str) {
+    let (a, b) = (tree(expected), tree(actual));
+    let keys_a: Vec<&String> = a.keys().collect();
+    let keys_b: Vec<&String> = b.keys().collect();
+    assert_eq!(keys_a, keys_b, "{context}: not the same files");
+    for (k, v) in &a {
+        assert!(b[k] == *v, "{context}: {k} differs");
+    }
+}
+
+fn run(args: &[&std::ffi::OsStr]) -> std::process::Output {
+    cardan().args(args).output().unwrap()
+}
+
+/// A run of the shipped configs killed (SIGKILL) at a random moment, then resumed, equals a
+/// single run byte for byte; the moment is in the failure message.
+#[test]
+fn a_run_killed_at_a_random_moment_and_resumed_equals_one_run() {
+    let tmp = tempfile::tempdir().unwrap();
+    let single = tmp.path().join("single");
+    let out = run(&[
+        "run".as_ref(),
+        configs().as_os_str(),
+        "--out".as_ref(),
+        single.as_os_str(),
+        "--quiet".as_ref(),
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .unwrap()
+        .subsec_nanos();
+    for round in 0..2u32 {
+        let killed = tmp.path().join(format!("killed{round}"));
+        let delay_ms = 100 + u64::from((nanos >> (round * 8)) % 2500);
+        let mut child = cardan()
+            .arg("run")
+            .arg(configs())
+            .arg("--out")
+            .arg(&killed)
+            .args(["--quiet", "--jobs", "1"])
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(delay_ms));
+        let _ = child.kill();
+        let _ = child.wait();
+        let out = run(&[
+            "run".as_ref(),
+            configs().as_os_str(),
+            "--out".as_ref(),
+            killed.as_os_str(),
+            "--quiet".as_ref(),
+            "--resume".as_ref(),
+        ]);
+        assert!(out.status.success(), "killed after {delay_ms} ms: {out:?}");
+        assert_same(&single, &killed, &format!("killed after {delay_ms} ms"));
+    }
+}
+
+/// `--shard` and `cardan merge` from the command line: the merge equals the single run; a
+/// shard count of 0, K above N and `--shard` with `--only` are usage errors (exit 2); a merge
+/// of an incomplete set of shards fails (exit 1).
+#[test]
+fn shards_from_the_command_line_merge_into_one_run() {
+    let tmp = tempfile::tempdir().unwrap();
+    let file = configs().join("sweeps/karhula-pump-speed-sweep.toml");
+    assert!(file.is_file());
+    let single = tmp.path().join("single");
+    let out = run(&[
+        "run".as_ref(),
+        file.as_os_str(),
+        "--out".as_ref(),
+        single.as_os_str(),
+        "--quiet".as_ref(),
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    let shards: Vec<PathBuf> = (1..=2).map(|k| tmp.path().join(format!("s{k}"))).collect();
+    for (k, dir) in shards.iter().enumerate() {
+        let spec = format!("{}/2", k + 1);
+        let out = run(&[
+            "run".as_ref(),
+            file.as_os_str(),
+            "--out".as_ref(),
+            dir.as_os_str(),
+            "--quiet".as_ref(),
+            "--shard".as_ref(),
+            spec.as_ref(),
+        ]);
+        assert!(out.status.success(), "{out:?}");
+    }
+    let merged = tmp.path().join("merged");
+    let out = run(&[
+        "merge".as_ref(),
+        shards[0].as_os_str(),
+        shards[1].as_os_str(),
+        "--out".as_ref(),
+        merged.as_os_str(),
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    assert_same(&single, &merged, "merged");
+    let out = run(&[
+        "merge".as_ref(),
+        shards[0].as_os_str(),
+        "--out".as_ref(),
+        tmp.path().join("m2").as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("2/2"));
+    for bad in [
+        &["--shard", "0/2"][..],
+        &["--shard", "3/2"],
+        &["--shard", "1/2", "--only", "x"],
+    ] {
+        let mut args: Vec<&std::ffi::OsStr> = vec!["run".as_ref(), file.as_os_str()];
+        args.extend(bad.iter().map(|a| std::ffi::OsStr::new(a)));
+        assert_eq!(run(&args).status.code(), Some(2), "{bad:?}");
+    }
+}

@@ -1,0 +1,355 @@
+//! A sweep without case folders (`[output] case_folders = false`, the default above
+//! [`CASE_FOLDERS_UP_TO`] points): its points only as rows of the sweep table, one NPY file
+//! per column (`columns/<column>.npy`: the case names and the swept values as text, each
+//! metric as f64) described by `sweep.json`. The points run a chunk at a time on the worker
+//! threads, and each chunk's rows are appended in the points' order as it finishes: memory
+//! holds one chunk's results, whatever the number of points; the folder replaces the
+//! sweep's folder whole when the table is complete.
+//!
+//! Read it with NumPy (`numpy.load`, one column per file), and so pandas and polars
+//! (`pandas.DataFrame({c["name"]: numpy.load(...)})`, `polars.from_numpy`), or DuckDB through
+//! them; docs/results.md shows how.
+
+use super::options::RunOptions;
+use super::train::run_trains;
+use crate::output::MechanismResult;
+use anyhow::Context;
+use cardan_case::case::Case;
+use cardan_report::files;
+use rayon::prelude::*;
+use serde_json::json;
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// The most points a sweep writes as case folders by default; above it, only its table.
+pub const CASE_FOLDERS_UP_TO: usize = 10_000;
+
+/// Points run at once before their rows are written.
+const CHUNK: usize = 1024;
+
+/// Whether the sweep of which `case` is one of `points` points writes a folder per point.
+pub fn case_folders(case: &Case, points: usize) -> bool {
+    case.output
+        .case_folders
+        .unwrap_or(points <= CASE_FOLDERS_UP_TO)
+}
+
+/// Takes out of `cases` the points of the sweeps written as tables ([`case_folders`]; a
+/// sweep's number of points is that of `all_points`): each such sweep's points, in order.
+pub(super) fn take_tables(
+    cases: &mut Vec<Case>,
+    all_points: &std::collections::HashMap<String, Vec<String>>,
+) -> Vec<(String, Vec<Case>)> {
+    let mut tables: Vec<(String, Vec<Case>)> = Vec::new();
+    let mut rest = Vec::with_capacity(cases.len());
+    for case in cases.drain(..) {
+        match &case.sweep {
+            Some((sweep, _)) if !case_folders(&case, all_points[sweep].len()) => {
+                match tables.iter_mut().find(|(s, _)| s == sweep) {
+                    Some((_, points)) => points.push(case),
+                    None => tables.push((sweep.clone(), vec![case])),
+                }
+            }
+            _ => rest.push(case),
+        }
+    }
+    *cases = rest;
+    tables
+}
+
+/// The NPY 1.0 preamble of a one-dimensional array of `rows` values of type `descr` (NumPy's
+/// `numpy.lib.format`: magic, version, header length, the header dictionary padded with
+/// spaces to a multiple of 64 bytes and ended by a newline).
+fn npy_header(descr: &str, rows: usize) -> Vec<u8> {
+    let dict = format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': ({rows},), }}");
+    let len = (10 + dict.len() + 1).div_ceil(64) * 64;
+    let mut h = b"\x93NUMPY\x01\x00".to_vec();
+    h.extend_from_slice(&((len - 10) as u16).to_le_bytes());
+    h.extend_from_slice(dict.as_bytes());
+    h.resize(len - 1, b' ');
+    h.push(b'\n');
+    h
+}
+
+/// One column file being written.
+struct Column {
+    name: String,
+    /// Its text's width (`|S<width>`), or None for f64.
+    width: Option<usize>,
+    unit: &'static str,
+    file: BufWriter<File>,
+}
+
+impl Column {
+    fn create(dir: &Path, name: &str, width: Option<usize>, rows: usize) -> anyhow::Result<Self> {
+        let path = dir.join("columns").join(format!("{name}.npy"));
+        let file = File::create(&path).with_context(|| format!("create {}", path.display()))?;
+        let mut file = BufWriter::with_capacity(1 << 16, file);
+        let descr = width.map_or("<f8".to_string(), |w| format!("|S{w}"));
+        file.write_all(&npy_header(&descr, rows))?;
+        Ok(Self {
+            name: name.to_string(),
+            width,
+            unit: "",
+            file,
+        })
+    }
+
+    fn text(&mut self, text: &str) -> std::io::Result<()> {
+        let width = self.width.unwrap_or(0);
+        let bytes = &text.as_bytes()[..text.len().min(width)];
+        self.file.write_all(bytes)?;
+        self.file.write_all(&vec![0; width - bytes.len()])
+    }
+}
+
+/// The table's files as the rows come: the text columns from the start, the metric columns
+/// from the first point that ran (every point of a sweep has its metrics; a metric another
+/// point lacks is NaN there, one it adds is left out and said in the log).
+struct Table<'a> {
+    dir: &'a Path,
+    rows: usize,
+    text: Vec<Column>,
+    metrics: Vec<Column>,
+    /// Rows written before the metric columns were known (every point failed so far).
+    pending: usize,
+    /// The next row's number.
+    next: usize,
+    failed: Vec<serde_json::Value>,
+    warned: bool,
+}
+
+impl Table<'_> {
+    fn row(
+        &mut self,
+        case: &Case,
+        result: Result<Vec<MechanismResult>, String>,
+    ) -> anyhow::Result<()> {
+        let row = self.next;
+        self.next += 1;
+        self.text[0].text(&case.name)?;
+        let values = case.sweep.as_ref().map_or(&[][..], |(_, v)| &v[..]);
+        for (column, (_, value)) in self.text[1..].iter_mut().zip(values) {
+            column.text(value)?;
+        }
+        let results = match result {
+            Ok(results) => results,
+            Err(e) => {
+                self.failed
+                    .push(json!({"case": case.name, "error": e, "row": row}));
+                return self.nan_row();
+            }
+        };
+        if self.metrics.is_empty() {
+            for r in &results {
+                for m in &r.summary.metrics {
+                    let name = format!("{}.{}", r.label, m.name);
+                    if self.metrics.iter().all(|c| c.name != name) {
+                        let mut c = Column::create(self.dir, &name, None, self.rows)?;
+                        c.unit = m.unit;
+                        for _ in 0..self.pending {
+                            c.file.write_all(&f64::NAN.to_le_bytes())?;
+                        }
+                        self.metrics.push(c);
+                    }
+                }
+            }
+        }
+        let mut values = vec![f64::NAN; self.metrics.len()];
+        let mut filled = vec![false; self.metrics.len()];
+        for r in &results {
+            for m in &r.summary.metrics {
+                let name = format!("{}.{}", r.label, m.name);
+                match self.metrics.iter().position(|c| c.name == name) {
+                    // The first of a name, as in sweep.csv.
+                    Some(k) if !filled[k] => {
+                        values[k] = m.value;
+                        filled[k] = true;
+                    }
+                    Some(_) => {}
+                    None if !self.warned => {
+                        tracing::warn!(case = %case.name, "metric {name} is not a column of the sweep table (the first point's): left out");
+                        self.warned = true;
+                    }
+                    None => {}
+                }
+            }
+        }
+        for (c, v) in self.metrics.iter_mut().zip(values) {
+            c.file.write_all(&v.to_le_bytes())?;
+        }
+        Ok(())
+    }
+
+    fn nan_row(&mut self) -> anyhow::Result<()> {
+        if self.metrics.is_empty() {
+            self.pending += 1;
+        }
+        for c in &mut self.metrics {
+            c.file.write_all(&f64::NAN.to_le_bytes())?;
+        }
+        Ok(())
+    }
+
+    /// Flushes the columns and writes `sweep.json`.
+    fn finish(self, sweep: &str) -> anyhow::Result<()> {
+        let mut columns = Vec::new();
+        for mut c in self.text.into_iter().chain(self.metrics) {
+            c.file.flush()?;
+            let mut column = json!({
+                "name": c.name,
+                "file": format!("columns/{}.npy", c.name),
+                "dtype": c.width.map_or("<f8".to_string(), |w| format!("|S{w}")),
+            });
+            if c.width.is_none() {
+                column["unit"] = json!(c.unit);
+            }
+            columns.push(column);
+        }
+        let header = json!({
+            "format": "cardan sweep table",
+            "version": 1,
+            "program": super::stamp::PROGRAM,
+            "sweep": sweep,
+            "rows": self.rows,
+            "columns": columns,
+            "failed": self.failed,
+        });
+        let mut text = serde_json::to_string_pretty(&header)?;
+        text.push('\n');
+        files::write_file(&self.dir.join("sweep.json"), text.as_bytes())
+    }
+}
+
+/// Runs the sweep `sweep`'s `points` (in their order) into its table in `out/<sweep>/`,
+/// replaced whole; `done` counts the points for `options.progress` out of `total`. Returns
+/// how many points ran, and each point's failure (a failed point's row is NaN).
+pub(super) fn run_table(
+    sweep: &str,
+    points: &[&Case],
+    out: &Path,
+    options: &RunOptions,
+    done: &AtomicUsize,
+    total: usize,
+) -> (usize, Vec<String>) {
+    let dir = out.join(sweep);
+    let mut failures = Vec::new();
+    // Each text column's width: the longest name, the longest value of each swept field.
+    let width =
+        |text: &dyn Fn(&Case) -> usize| points.iter().map(|c| text(c)).max().unwrap_or(0).max(1);
+    let value_len = |c: &Case, k: usize| {
+        c.sweep
+            .as_ref()
+            .and_then(|(_, v)| v.get(k))
+            .map_or(0, |(_, x)| x.len())
+    };
+    let tmp = match files::temporary_dir(&dir) {
+        Ok(tmp) => tmp,
+        Err(e) => {
+            failures.push(format!(
+                "sweep \"{sweep}\": cannot write its table to {}: {e:#}",
+                dir.display()
+            ));
+            return (0, failures);
+        }
+    };
+    let written = (|| -> anyhow::Result<usize> {
+        std::fs::create_dir(tmp.join("columns"))?;
+        let swept: Vec<&str> = points
+            .first()
+            .and_then(|c| c.sweep.as_ref())
+            .map(|(_, v)| v.iter().map(|(p, _)| p.as_str()).collect())
+            .unwrap_or_default();
+        let mut text = vec![Column::create(
+            &tmp,
+            "case",
+            Some(width(&|c| c.name.len())),
+            points.len(),
+        )?];
+        for (k, path) in swept.iter().enumerate() {
+            let w = width(&|c| value_len(c, k));
+            text.push(Column::create(&tmp, path, Some(w), points.len())?);
+        }
+        let mut table = Table {
+            dir: &tmp,
+            rows: points.len(),
+            text,
+            metrics: Vec::new(),
+            pending: 0,
+            next: 0,
+            failed: Vec::new(),
+            warned: false,
+        };
+        let mut ran = 0;
+        for chunk in points.chunks(CHUNK) {
+            let results: Vec<Result<Vec<MechanismResult>, String>> = chunk
+                .par_iter()
+                .map(|case| {
+                    let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                        run_trains(case, None, false)
+                    }))
+                    .unwrap_or_else(|_| {
+                        Err(format!(
+                            "{}: case \"{}\": internal error (a bug, please report it)",
+                            case.file.display(),
+                            case.name
+                        ))
+                    })
+                    .map(|trains| trains.into_iter().map(|(r, _)| r).collect());
+                    if let Some(progress) = &options.progress {
+                        progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                    }
+                    r
+                })
+                .collect();
+            for (case, result) in chunk.iter().zip(results) {
+                if let Err(e) = &result {
+                    failures.push(e.clone());
+                } else {
+                    ran += 1;
+                }
+                table.row(case, result)?;
+            }
+        }
+        if ran == 0 {
+            // Every point failed: the earlier folder, if any, stays.
+            return Ok(0);
+        }
+        table.finish(sweep)?;
+        files::replace_dir(&tmp, &dir)?;
+        Ok(ran)
+    })();
+    if !matches!(written, Ok(n) if n > 0) {
+        let _ = std::fs::remove_dir_all(&tmp);
+    }
+    match written {
+        Ok(n) => (n, failures),
+        Err(e) => {
+            failures.push(format!(
+                "sweep \"{sweep}\": cannot write its table to {}: {e:#}",
+                dir.display()
+            ));
+            (0, failures)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::npy_header;
+
+    #[test]
+    fn the_header_is_aligned_and_names_type_and_length() {
+        for (descr, rows) in [("<f8", 3), ("|S17", 1_000_000)] {
+            let h = npy_header(descr, rows);
+            assert_eq!(h.len() % 64, 0);
+            assert_eq!(&h[..8], b"\x93NUMPY\x01\x00");
+            let text = String::from_utf8_lossy(&h[10..]);
+            assert!(text.contains(&format!("'descr': '{descr}'")), "{text}");
+            assert!(text.contains(&format!("'shape': ({rows},)")), "{text}");
+            assert!(text.ends_with('\n'));
+        }
+    }
+}

@@ -1,0 +1,137 @@
+//! A sweep without case folders (`[output] case_folders = false`, issue 26): its table read
+//! back (one NPY file per column, described by `sweep.json`) holds, bit for bit, what the same
+//! sweep with folders writes in `sweep.csv`; no point folder is written; sharded and merged
+//! it is the single run's; the default follows the number of points.
+
+use cardan_runner::run::{case_folders, load_cases, merge, CASE_FOLDERS_UP_TO};
+use cardan_runner::{run_paths, RunOptions};
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+/// The shipped speed-and-rod map (80 points) under the name `t`, with `[output] case_folders`.
+fn sweep_file(dir: &Path, folders: bool) -> PathBuf {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../configs/sweeps/karhula-pump-map-speed-rod.toml"),
+    )
+    .unwrap();
+    let name = text.lines().find(|l| l.starts_with("name = ")).unwrap();
+    let text = text.replacen(name, "name = \"t\"", 1).replacen(
+        "[output]",
+        &format!("[output]\ncase_folders = {folders}"),
+        1,
+    );
+    assert!(text.contains("case_folders"));
+    let file = dir.join(format!("t-{folders}.toml"));
+    std::fs::write(&file, text).unwrap();
+    file
+}
+
+/// A one-dimensional NPY array's type and raw values.
+fn read_npy(path: &Path) -> (String, Vec<u8>) {
+    let bytes = std::fs::read(path).unwrap();
+    assert_eq!(&bytes[..8], b"\x93NUMPY\x01\x00", "{}", path.display());
+    let len = u16::from_le_bytes([bytes[8], bytes[9]]) as usize;
+    let header = String::from_utf8(bytes[10..10 + len].to_vec()).unwrap();
+    assert_eq!((10 + len) % 64, 0, "aligned");
+    let descr = header.split('\'').nth(3).unwrap().to_string();
+    (descr, bytes[10 + len..].to_vec())
+}
+
+#[test]
+fn the_table_holds_the_sweep_csv_bit_for_bit() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (with, without) = (tmp.path().join("with"), tmp.path().join("without"));
+    let o = RunOptions::default();
+    let r = run_paths(&[sweep_file(tmp.path(), true)], &with, o.clone());
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    let r = run_paths(&[sweep_file(tmp.path(), false)], &without, o.clone());
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    assert_eq!(r.sweeps.len(), 1);
+    assert_eq!(r.sweeps[0].2, 80, "points");
+    assert!(r.written.is_empty(), "no case folder: {:?}", r.written);
+    let dir = without.join("t");
+    let entries: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(entries.len(), 2, "{entries:?}");
+    let header: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("sweep.json")).unwrap()).unwrap();
+    assert_eq!(header["rows"], 80);
+    let mut csv = csv::Reader::from_path(with.join("t/sweep.csv")).unwrap();
+    let names: Vec<String> = csv.headers().unwrap().iter().map(String::from).collect();
+    let rows: Vec<csv::StringRecord> = csv.records().map(Result::unwrap).collect();
+    assert_eq!(rows.len(), 80);
+    let columns = header["columns"].as_array().unwrap();
+    let listed: Vec<&str> = columns
+        .iter()
+        .map(|c| c["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(listed, names, "the table's columns are sweep.csv's");
+    for (k, c) in columns.iter().enumerate() {
+        let (descr, data) = read_npy(&dir.join(c["file"].as_str().unwrap()));
+        assert_eq!(descr, c["dtype"].as_str().unwrap());
+        if let Some(width) = descr.strip_prefix("|S") {
+            let width: usize = width.parse().unwrap();
+            assert_eq!(data.len(), 80 * width);
+            for (row, text) in rows.iter().zip(data.chunks(width)) {
+                let text = String::from_utf8(text.to_vec()).unwrap();
+                assert_eq!(text.trim_end_matches('\0'), &row[k], "{}", names[k]);
+            }
+        } else {
+            assert_eq!(descr, "<f8");
+            assert!(c["unit"].is_string(), "{c}");
+            assert_eq!(data.len(), 80 * 8);
+            for (row, v) in rows.iter().zip(data.chunks(8)) {
+                let v = f64::from_le_bytes(v.try_into().unwrap());
+                let expected: f64 = row[k].parse().unwrap();
+                assert_eq!(v.to_bits(), expected.to_bits(), "{}", names[k]);
+            }
+        }
+    }
+
+    // In two shards (the table whole in one of them), merged: the single run's folder.
+    let shards: Vec<PathBuf> = (1..=2).map(|k| tmp.path().join(format!("s{k}"))).collect();
+    let both = [sweep_file(tmp.path(), false), with.join("../t-true.toml")];
+    let single = tmp.path().join("single");
+    let renamed =
+        std::fs::read_to_string(&both[1])
+            .unwrap()
+            .replacen("name = \"t\"", "name = \"u\"", 1);
+    std::fs::write(&both[1], renamed).unwrap();
+    assert!(run_paths(&both, &single, o.clone()).failures.is_empty());
+    for (k, s) in shards.iter().enumerate() {
+        let o = RunOptions {
+            shard: Some((k + 1, 2)),
+            ..o.clone()
+        };
+        assert!(run_paths(&both, s, o).failures.is_empty());
+    }
+    let merged = tmp.path().join("merged");
+    assert!(merge(&shards, &merged).failures.is_empty());
+    let same = std::process::Command::new("diff")
+        .arg("-r")
+        .arg(&single)
+        .arg(&merged)
+        .status()
+        .unwrap();
+    assert!(same.success(), "merged differs from the single run");
+}
+
+#[test]
+fn sweeps_of_many_points_default_to_the_table() {
+    let tmp = tempfile::tempdir().unwrap();
+    let file = sweep_file(tmp.path(), true);
+    let text = std::fs::read_to_string(&file)
+        .unwrap()
+        .replace("case_folders = true\n", "");
+    std::fs::write(&file, text).unwrap();
+    let (cases, failures) = load_cases(&[file]);
+    assert!(failures.is_empty(), "{failures:?}");
+    assert!(case_folders(&cases[0], CASE_FOLDERS_UP_TO));
+    assert!(!case_folders(&cases[0], CASE_FOLDERS_UP_TO + 1));
+    let mut asked = cases[0].clone();
+    asked.output.case_folders = Some(true);
+    assert!(case_folders(&asked, 10 * CASE_FOLDERS_UP_TO));
+}
