@@ -75,6 +75,29 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
     },
+    /// Write the Slurm job scripts that run PATHS as N shards (one job array) and merge them
+    /// into OUT (a dependent job): OUT.slurm/run.sbatch, merge.sbatch, submit.sh (see
+    /// docs/cluster.md); with --submit, submit them.
+    Slurm {
+        /// Case files, or folders searched recursively for *.toml.
+        #[arg(required = true)]
+        paths: Vec<PathBuf>,
+        /// The number of shards: array tasks.
+        #[arg(long)]
+        shards: usize,
+        /// The merged output folder; the scripts, shards and logs go to OUT.slurm beside it.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// The Slurm partition (#SBATCH --partition).
+        #[arg(long)]
+        partition: Option<String>,
+        /// Each job's time limit (#SBATCH --time, e.g. 30:00 or 2:00:00).
+        #[arg(long)]
+        time: Option<String>,
+        /// Submit the scripts (sbatch) once written.
+        #[arg(long)]
+        submit: bool,
+    },
     /// Read and validate every case under PATHS without running them.
     Check {
         /// Case files, or folders searched recursively for *.toml.
@@ -135,6 +158,60 @@ fn gear(file: &std::path::Path, out: &std::path::Path) -> ExitCode {
                 }
                 ExitCode::FAILURE
             }
+        }
+    }
+}
+
+/// `cardan slurm`: 0 the scripts were written (and submitted); 1 they could not be (or
+/// `sbatch` failed); 2 a bad option.
+fn slurm(
+    paths: Vec<PathBuf>,
+    shards: usize,
+    out: PathBuf,
+    partition: Option<String>,
+    time: Option<String>,
+    submit: bool,
+) -> ExitCode {
+    let absolute = |p: &PathBuf| std::path::absolute(p).unwrap_or_else(|_| p.clone());
+    let job = cardan::slurm::Job {
+        program: std::env::current_exe().unwrap_or_else(|_| "cardan".into()),
+        paths: paths.iter().map(absolute).collect(),
+        out: absolute(&out),
+        shards,
+        partition,
+        time,
+    };
+    if let Err(e) = cardan::slurm::scripts(&job) {
+        eprintln!("error: {e}");
+        return ExitCode::from(2);
+    }
+    let dir = match cardan::slurm::write(&job) {
+        Ok(dir) => dir,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    println!(
+        "job scripts for {shards} shard(s) written to {} (submit: sh {}/submit.sh)",
+        dir.display(),
+        dir.display()
+    );
+    if !submit {
+        return ExitCode::SUCCESS;
+    }
+    match std::process::Command::new("sh")
+        .arg(dir.join("submit.sh"))
+        .status()
+    {
+        Ok(s) if s.success() => ExitCode::SUCCESS,
+        Ok(s) => {
+            eprintln!("error: submit.sh (sbatch) failed: {s}");
+            ExitCode::FAILURE
+        }
+        Err(e) => {
+            eprintln!("error: cannot run submit.sh: {e}");
+            ExitCode::FAILURE
         }
     }
 }
@@ -256,6 +333,14 @@ fn main() -> ExitCode {
             (report.written.len() + report.sweeps.len(), report.failures)
         }
         Command::Gear { file, out } => return gear(&file, &out),
+        Command::Slurm {
+            paths,
+            shards,
+            out,
+            partition,
+            time,
+            submit,
+        } => return slurm(paths, shards, out, partition, time, submit),
         Command::Merge { dirs, out } => {
             let started = std::time::Instant::now();
             let report = cardan_runner::run::merge(&dirs, &out);

@@ -151,3 +151,137 @@ fn shards_from_the_command_line_merge_into_one_run() {
         assert_eq!(run(&args).status.code(), Some(2), "{bad:?}");
     }
 }
+
+/// `cardan slurm` writes a job array of N shard tasks and a merge job: their content, and
+/// the scripts run by bash as Slurm would run them (each array task with its
+/// `SLURM_ARRAY_TASK_ID`, then the merge) give the single run's folder byte for byte.
+#[test]
+fn slurm_scripts_run_the_shards_and_merge_them_into_one_run() {
+    let tmp = tempfile::tempdir().unwrap();
+    let file = configs().join("sweeps/karhula-pump-speed-sweep.toml");
+    let out = tmp.path().join("merged");
+    let written = run(&[
+        "slurm".as_ref(),
+        file.as_os_str(),
+        "--shards".as_ref(),
+        "3".as_ref(),
+        "--out".as_ref(),
+        out.as_os_str(),
+        "--partition".as_ref(),
+        "debug".as_ref(),
+        "--time".as_ref(),
+        "10:00".as_ref(),
+    ]);
+    assert!(written.status.success(), "{written:?}");
+    let dir = tmp.path().join("merged.slurm");
+    let read = |name: &str| std::fs::read_to_string(dir.join(name)).unwrap();
+    let (array, merge, submit) = (read("run.sbatch"), read("merge.sbatch"), read("submit.sh"));
+    for line in [
+        "#SBATCH --array=1-3",
+        "#SBATCH --partition=debug",
+        "#SBATCH --time=10:00",
+        "--shard \"$SLURM_ARRAY_TASK_ID/3\" --resume",
+    ] {
+        assert!(array.contains(line), "{line:?} not in:\n{array}");
+    }
+    assert!(array.contains(&*file.to_string_lossy()), "{array}");
+    assert!(
+        merge.contains(" merge ") && merge.contains("shard-3"),
+        "{merge}"
+    );
+    assert!(merge.contains("#SBATCH --partition=debug"), "{merge}");
+    assert!(
+        submit.contains("sbatch --parsable run.sbatch")
+            && submit.contains("--dependency=afterany:$array merge.sbatch"),
+        "{submit}"
+    );
+    for name in ["run.sbatch", "merge.sbatch", "submit.sh"] {
+        let syntax = Command::new("bash").arg("-n").arg(dir.join(name)).status();
+        if let Ok(s) = syntax {
+            assert!(s.success(), "{name}: not valid shell");
+        }
+    }
+    // The tasks as Slurm runs them, in any order, then the merge.
+    for k in ["2", "3", "1"] {
+        let task = Command::new("bash")
+            .arg(dir.join("run.sbatch"))
+            .env("SLURM_ARRAY_TASK_ID", k)
+            .output()
+            .unwrap();
+        assert!(task.status.success(), "task {k}: {task:?}");
+    }
+    let merged = Command::new("bash")
+        .arg(dir.join("merge.sbatch"))
+        .output()
+        .unwrap();
+    assert!(merged.status.success(), "{merged:?}");
+    let single = tmp.path().join("single");
+    let out1 = run(&[
+        "run".as_ref(),
+        file.as_os_str(),
+        "--out".as_ref(),
+        single.as_os_str(),
+        "--quiet".as_ref(),
+    ]);
+    assert!(out1.status.success(), "{out1:?}");
+    assert_same(&single, &out, "slurm scripts");
+
+    // A value that would break out of its #SBATCH line is refused.
+    let bad = run(&[
+        "slurm".as_ref(),
+        file.as_os_str(),
+        "--shards".as_ref(),
+        "2".as_ref(),
+        "--out".as_ref(),
+        tmp.path().join("x").as_os_str(),
+        "--partition".as_ref(),
+        "a\n#SBATCH --x".as_ref(),
+    ]);
+    assert_eq!(bad.status.code(), Some(2), "{bad:?}");
+}
+
+/// Opt-in (`CARDAN_SLURM_TEST=1`, with `sbatch` on the PATH, e.g. the one-node cluster of
+/// docs/cluster.md): the shipped configs submitted as 3 shards to the real Slurm, waited
+/// for, and the merge compared with a single run. Skipped otherwise.
+#[test]
+fn a_real_slurm_job_array_merges_into_one_run() {
+    if std::env::var("CARDAN_SLURM_TEST").as_deref() != Ok("1")
+        || Command::new("sbatch").arg("--version").output().is_err()
+    {
+        eprintln!("skipped: set CARDAN_SLURM_TEST=1 with Slurm installed (docs/cluster.md)");
+        return;
+    }
+    // Under the working folder: the compute node (this machine) must see it.
+    let tmp = tempfile::tempdir_in(env!("CARGO_TARGET_TMPDIR")).unwrap();
+    let out = tmp.path().join("merged");
+    let submitted = run(&[
+        "slurm".as_ref(),
+        configs().as_os_str(),
+        "--shards".as_ref(),
+        "3".as_ref(),
+        "--out".as_ref(),
+        out.as_os_str(),
+        "--submit".as_ref(),
+    ]);
+    assert!(submitted.status.success(), "{submitted:?}");
+    let started = std::time::Instant::now();
+    while !out.join("index.html").is_file() {
+        assert!(
+            started.elapsed().as_secs() < 1800,
+            "no merged output after 30 min"
+        );
+        std::thread::sleep(std::time::Duration::from_secs(2));
+    }
+    // The index is written last; give the merge a moment to exit.
+    std::thread::sleep(std::time::Duration::from_secs(2));
+    let single = tmp.path().join("single");
+    let out1 = run(&[
+        "run".as_ref(),
+        configs().as_os_str(),
+        "--out".as_ref(),
+        single.as_os_str(),
+        "--quiet".as_ref(),
+    ]);
+    assert!(out1.status.success(), "{out1:?}");
+    assert_same(&single, &out, "real slurm");
+}
