@@ -411,14 +411,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     let friction = match &raw.friction {
         None => None,
         Some(table) => {
-            let f = crate::friction::build(
-                table,
-                gear.as_ref(),
-                geometry.bore,
-                machine,
-                gas.as_ref(),
-                &invalid,
-            )?;
+            let f = crate::friction::build(table, gear.as_ref(), machine, gas.as_ref(), &invalid)?;
             crate::friction::check_joints(table, &mechanisms, &invalid)?;
             for m in &mechanisms {
                 LossBudget::new(&f, m.as_ref(), geometry.bore)
