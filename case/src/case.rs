@@ -10,8 +10,9 @@ use crate::masses::MassTable;
 use crate::quantity::{
     Angle, AngularAcceleration, AngularSpeed, Length, Positive, Quantity, Whole,
 };
+use crate::setup::Setup;
 use crate::units::is_folder_name;
-use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget};
+use cardan_dynamics::{Friction, GearSpec};
 use cardan_mechanism::{CrankMotion, MachineGeometry, Mechanism};
 use rayon::prelude::*;
 use schemars::JsonSchema;
@@ -75,6 +76,10 @@ pub struct Case {
     pub friction: Option<Friction>,
     /// The gear pair and rating data of every gear mesh; without it no mesh is rated.
     pub gear: Option<GearSpec>,
+    /// Each mechanism's per-step stages as validation built them (one per mechanism, in
+    /// order), which its runs take: after changing `friction`, `gear` or a mechanism, build
+    /// them again ([`Case::build_setups`]).
+    pub setups: Vec<Setup>,
     pub output: OutputOptions,
     /// The sweep this case is a point of (its results go to `out/<sweep>/<case>/`), and the
     /// value of each swept field (dotted path, value as written).
@@ -415,29 +420,22 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
             ));
         }
     }
-    let gear = match &raw.gear {
-        None => None,
-        Some(table) => Some(gear_spec(table, &mechanisms, &invalid)?),
-    };
+    let gear = raw.gear.as_ref().map(|table| table.spec());
     let friction = match &raw.friction {
         None => None,
         Some(table) => {
-            let f = crate::friction::build(
-                table,
-                gear.as_ref(),
-                geometry.bore,
-                machine,
-                gas.as_ref(),
-                &invalid,
-            )?;
+            let f = crate::friction::build(table, gear.as_ref(), machine, gas.as_ref(), &invalid)?;
             crate::friction::check_joints(table, &mechanisms, &invalid)?;
-            for m in &mechanisms {
-                LossBudget::new(&f, m.as_ref(), geometry.bore)
-                    .map_err(|e| invalid(&e.field, &format!("(for the {})", m.name()), &e.rule))?;
-            }
             Some(f)
         }
     };
+    let setups = setups(
+        &mechanisms,
+        geometry.bore,
+        friction.as_ref(),
+        gear.as_ref(),
+        &invalid,
+    )?;
     Ok(Case {
         file: file.into(),
         name: raw.name.0,
@@ -452,6 +450,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         gas,
         friction,
         gear,
+        setups,
         output: (&raw.output).into(),
         sweep: None,
     })
@@ -512,26 +511,48 @@ fn build_mechanisms(
     Ok(mechanisms)
 }
 
-/// `[gear]`, checked against every gear mesh of the case's mechanisms (a case with none has no
-/// use for it).
-fn gear_spec(
-    table: &crate::gear::GearTable,
+/// Each mechanism's setup ([`Setup::build`]), built with the case's `friction` and `gear`;
+/// `[gear]` is refused if no mechanism has a gear mesh to rate.
+fn setups(
     mechanisms: &[Arc<dyn Mechanism>],
+    bore: f64,
+    friction: Option<&Friction>,
+    gear: Option<&GearSpec>,
     invalid: &Invalid,
-) -> Result<GearSpec, CaseError> {
-    let spec = table.spec();
-    let mut meshes = 0;
-    for m in mechanisms {
-        let ratings = GearRatings::new(&spec, m.as_ref(), None)
-            .map_err(|e| invalid(&e.field, &format!("(for the {})", m.name()), &e.rule))?;
-        meshes += ratings.names().len();
-    }
-    if meshes == 0 {
+) -> Result<Vec<Setup>, CaseError> {
+    let setups = mechanisms
+        .iter()
+        .map(|m| Setup::build(m.as_ref(), bore, friction, gear, invalid))
+        .collect::<Result<Vec<_>, _>>()?;
+    if gear.is_some() && setups.iter().all(|s| s.gear_ratings.is_none()) {
         return Err(invalid(
             "gear",
             &"a [gear] table",
             "no mechanism of the case has a gear mesh to rate",
         ));
     }
-    Ok(spec)
+    Ok(setups)
+}
+
+impl Case {
+    /// Builds its setups again from its mechanisms, `friction` and `gear` (after a change to
+    /// them); the errors are validation's.
+    pub fn build_setups(&mut self) -> Result<(), CaseError> {
+        let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
+            file: self.file.clone(),
+            case: self.name.clone(),
+            field: field.to_string(),
+            value: crate::units::show(&value.to_string()),
+            rule: rule.to_string(),
+        };
+        let setups = setups(
+            &self.mechanisms,
+            self.geometry.bore,
+            self.friction.as_ref(),
+            self.gear.as_ref(),
+            &invalid,
+        )?;
+        self.setups = setups;
+        Ok(())
+    }
 }

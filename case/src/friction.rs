@@ -14,9 +14,9 @@ use crate::quantity::{
     Positive, Pressure, Quantity,
 };
 use crate::units::{to_si, Dimension};
-use cardan_dynamics::loss_models::{self, words, Attachment, Parameters, Setting, NONE};
+use cardan_dynamics::loss_models::{self, words, Attachment, Bind, Parameters, NONE};
 use cardan_dynamics::{
-    BearingSize, EngineLosses, FmepModel, Friction, GearSpec, LossModel, MeshLossModel, ValveTrain,
+    BearingSize, EngineLosses, FmepModel, Friction, GearSpec, LossModel, ValveTrain,
 };
 use cardan_mechanism::{JointKind, Mechanism};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
@@ -323,46 +323,35 @@ fn engine_fields(t: &FrictionTable) -> Vec<(&'static str, String)> {
 const DEFAULT_COMPRESSION_RATIO: f64 = 10.0;
 
 /// The loss models of `[friction]` (`table`), its mesh loss on the pair of `[gear]` (`gear`),
-/// for a cylinder of `bore` (m) of a `machine`; an engine's compression ratio (for the fmep
+/// for a `machine`; an engine's compression ratio (for the fmep
 /// cross-check) comes from its `gas` model. Checks what the schema cannot: the engine fields
 /// (refused for a pump; the valve train's own fields without one) and the intake pressure.
 pub fn build(
     table: &FrictionTable,
     gear: Option<&GearSpec>,
-    bore: f64,
     machine: Machine,
     gas: Option<&GasCase>,
     invalid: &Invalid,
 ) -> Result<Friction, CaseError> {
     let p = parameters(table);
     // A model written (`Some(None)`: "none"), else the attachment's default.
-    let setting = |written: Option<Option<&'static LossModel>>, attachment| {
-        let model = written.unwrap_or_else(|| loss_models::default_model(attachment));
-        model.map(|m| (m.setting)(&p, bore))
+    let model = |written: Option<Option<&'static LossModel>>, attachment| {
+        written.unwrap_or_else(|| loss_models::default_model(attachment))
     };
     let mut f = Friction::karhula();
+    f.parameters = p;
     if let Some(q) = &table.oil_viscosity {
         f.oil.kinematic_viscosity = q.si;
     }
     if let Some(q) = &table.oil_density {
         f.oil.density = q.si;
     }
-    f.rings = match setting(table.rings.map(|m| m.model), Attachment::Rings) {
-        Some(Setting::Rings(r)) => Some(r),
-        _ => None,
-    };
-    f.skirt = match setting(table.skirt.map(|m| m.model), Attachment::Skirt) {
-        Some(Setting::Skirt(s)) => Some(s),
-        _ => None,
-    };
+    f.rings = model(table.rings.map(|m| m.model), Attachment::Rings);
+    f.skirt = model(table.skirt.map(|m| m.model), Attachment::Skirt);
     if let Some(q) = &table.slide_friction_coefficient {
         f.slide_friction_coefficient = q.si;
     }
-    let bearing =
-        |m: Option<Model<Bearings>>| match setting(m.map(|m| m.model), Attachment::Bearing) {
-            Some(Setting::Bearing(b)) => Some(b),
-            _ => None,
-        };
+    let bearing = |m: Option<Model<Bearings>>| model(m.map(|m| m.model), Attachment::Bearing);
     f.bearings = bearing(table.bearings);
     for (name, joint) in table.joints.iter().flat_map(|j| &j.0) {
         match joint {
@@ -393,13 +382,8 @@ pub fn build(
             None
         }
     };
-    f.gear_mesh = match setting(table.gear_mesh.map(|m| m.model), Attachment::GearMesh) {
-        Some(Setting::GearMesh(reading)) => Some(MeshLossModel {
-            reading,
-            pair: gear.copied().unwrap_or_default(),
-        }),
-        _ => None,
-    };
+    f.gear_mesh = model(table.gear_mesh.map(|m| m.model), Attachment::GearMesh);
+    f.pair = gear.copied().unwrap_or_default();
     Ok(f)
 }
 
@@ -458,8 +442,8 @@ fn engine(
             None
         }
         Some(model) => {
-            let Setting::ValveTrain(follower) = (model.setting)(p, 0.0) else {
-                unreachable!("a valve-train model gives a follower")
+            let Bind::Follower(follower) = model.bind else {
+                unreachable!("a valve-train model gives a follower (the registry's test)")
             };
             if model.name != "flat" {
                 only(
@@ -468,7 +452,7 @@ fn engine(
                     "is read only with valve_train = \"flat\" (a roller follower rolls: its loss is rolling resistance and the roller's pin bearing)",
                 )?;
             }
-            let mut v = ValveTrain::new(follower);
+            let mut v = ValveTrain::new(follower(p));
             if let Some(q) = spring {
                 v.spring_speed = q.si;
             }
@@ -585,7 +569,7 @@ mod tests {
             value: value.to_string(),
             rule: rule.into(),
         };
-        let f = build(&t, None, 0.12, Machine::Pump, None, &invalid).unwrap();
+        let f = build(&t, None, Machine::Pump, None, &invalid).unwrap();
         assert_eq!(f, Friction::karhula());
     }
 

@@ -13,6 +13,7 @@ pub mod masses;
 pub mod mechanism_table;
 pub mod quantity;
 pub mod schema;
+pub mod setup;
 pub mod sweep;
 pub mod units;
 

@@ -74,6 +74,7 @@ fn runner(c: &mut Criterion) {
         .map(|c| {
             let mut c = c.clone();
             c.friction = Some(cardan_dynamics::Friction::karhula());
+            c.build_setups().unwrap();
             c
         })
         .collect();

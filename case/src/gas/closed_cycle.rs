@@ -2,7 +2,7 @@
 //! (2017), §3.4.1. Every input but the compression ratio is optional; the defaults are
 //! Nunes's ([`ClosedCycle::nunes_2017`], Table 3.2), written once, in the gas crate.
 
-use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
+use super::model::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::error::{CaseError, Machine};
 use crate::quantity::{
     Angle, AnglePerSpeed, GasConstant, NonNegative, Number, Positive, Pressure, Quantity,

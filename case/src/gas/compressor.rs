@@ -1,7 +1,7 @@
 //! `model = "compressor"`: a reciprocating compressor with its suction and delivery valves,
 //! in its periodic steady state (`cardan_gas::compressor`).
 
-use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
+use super::model::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::error::{CaseError, Machine};
 use crate::quantity::{
     GasConstant, NonNegative, Number, Positive, Pressure, Quantity, Temperature,

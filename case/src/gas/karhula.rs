@@ -2,7 +2,7 @@
 //! four-stroke engine (ch. 6.3), the polytropic compression of A6.1.1.11 on the closed
 //! strokes.
 
-use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
+use super::model::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::error::{CaseError, Machine};
 use crate::quantity::{Angle, Number, Positive, Pressure, Quantity};
 use cardan_gas::{EngineReading, KarhulaEngine, KarhulaPump, Polytropic};

@@ -13,7 +13,7 @@
 //! Karhula's models (A6.2.1.1): a trace of gauge pressure gives the net force on a piston
 //! whose crankcase is at ambient.
 
-use super::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
+use super::model::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::error::{CaseError, Machine};
 use crate::quantity::{Number, Quantity};
 use cardan_gas::{Chamber, GasError, GasMetric, GasModel, PreparedGas};

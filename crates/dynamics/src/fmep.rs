@@ -7,7 +7,8 @@
 //! (the loss budget's work, [`crate::engine_losses`] among its components).
 
 use crate::engine_losses::{displacement, EngineLosses, FmepModel};
-use crate::losses::{Friction, Oil};
+use crate::loss::Oil;
+use crate::losses::Friction;
 use crate::metrics::Summary;
 use cardan_friction::{pnh_fmep, FmepBreakdown, Follower, PnhEngine, PnhVariant, ShaftBearings};
 use cardan_mechanism::{CrankMotion, Mechanism};

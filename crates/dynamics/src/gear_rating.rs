@@ -16,10 +16,12 @@ use cardan_gears::agma::factors::{
 };
 use cardan_gears::agma::{GearSetRating, MemberData, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
-use cardan_gears::mesh_loss::{Lubricant, Reading};
+use cardan_gears::mesh_loss::Lubricant;
 use cardan_gears::{pitting_geometry_factor, GearSet, IForm, MeshStep, ShiftCase};
 use cardan_mechanism::{JointKind, Loads, Material, Mechanism, MeshForce, State, C};
 
+use crate::loss::{failed, At, Loss, Site};
+use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
 use crate::mesh::{mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, ToothLoad};
 use crate::stage::SetupError;
@@ -97,25 +99,22 @@ struct Rated {
     /// Unit vector of the thesis's ring force: the tied mesh force's direction (the cylinder
     /// axis in the cardan gear; unused with involute teeth).
     axis: C,
+    /// The mesh loss: the case's gear-mesh model bound to this mesh (the loss budget's own), so
+    /// that the rating's loss and the budget's mesh component are one figure.
+    loss: Box<dyn Loss>,
 }
 
 impl GearRatings {
-    /// The ratings of every gear mesh of `mechanism` under `spec`, the mesh loss in the reading
-    /// and oil of `friction` (its gear-mesh reading and its oil), or without one in the corrected
-    /// reading with Karhula's oil ([`Friction::karhula`]).
+    /// The ratings of every gear mesh of `mechanism` under `spec`, the mesh loss that of
+    /// `friction` (its gear-mesh model, parameters and oil) on the pair of `spec`, or, without
+    /// one or with its mesh loss off, Anderson & Loewenthal's in the corrected reading (with
+    /// Karhula's oil, [`Friction::karhula`], without `friction`).
     pub fn new(
         spec: &GearSpec,
         mechanism: &dyn Mechanism,
         friction: Option<&Friction>,
     ) -> Result<Self, SetupError> {
-        let (reading, oil) = match friction {
-            Some(f) => (f.gear_mesh.map_or(Reading::Corrected, |g| g.reading), f.oil),
-            None => (Reading::Corrected, Friction::karhula().oil),
-        };
-        let failed = |field: &str, e: &dyn std::fmt::Display| SetupError {
-            field: field.into(),
-            rule: e.to_string(),
-        };
+        let oil = friction.map_or(Friction::karhula().oil, |f| f.oil);
         let topology = mechanism.topology();
         let mut meshes = Vec::new();
         for (k, j) in topology.joints.iter().enumerate() {
@@ -228,8 +227,9 @@ impl GearRatings {
                     kinematic_viscosity: oil.kinematic_viscosity,
                     density: oil.density,
                 },
-                loss_reading: reading,
+                loss_reading: None,
             };
+            let loss = mesh_loss(spec, mechanism, friction, k)?;
             meshes.push(Rated {
                 joint: k,
                 body: j.body,
@@ -245,6 +245,7 @@ impl GearRatings {
                     * pitch_radius
                     * pitch_radius,
                 axis,
+                loss,
             });
         }
         Ok(Self { meshes })
@@ -276,35 +277,65 @@ impl GearRatings {
     /// Each mesh's rating at `state` under the `total` loads (and the `inertial` family's, which
     /// [`ToothLoad::Thesis`] needs; `None` without one), into `out`.
     pub fn evaluate(
-        &self,
+        &mut self,
         state: &State,
         total: &Loads,
         inertial: Option<&Loads>,
         out: &mut [MeshRating],
     ) -> Result<(), String> {
-        for (r, out) in self.ratings(state, total, inertial).zip(out.iter_mut()) {
+        for ((_, r), out) in self.ratings(state, total, inertial).zip(out.iter_mut()) {
             *out = r?;
         }
         Ok(())
     }
 
-    /// Each mesh's rating at `state` (as [`GearRatings::evaluate`] gives them), in rating order.
+    /// Each mesh's joint and rating at `state` (as [`GearRatings::evaluate`] gives them), in
+    /// rating order.
     pub(crate) fn ratings<'s>(
-        &'s self,
+        &'s mut self,
         state: &'s State,
         total: &'s Loads,
         inertial: Option<&'s Loads>,
-    ) -> impl Iterator<Item = Result<MeshRating, String>> + 's {
+    ) -> impl Iterator<Item = (usize, Result<MeshRating, String>)> + 's {
         self.meshes
-            .iter()
-            .map(move |m| m.rate(state, total, inertial))
+            .iter_mut()
+            .map(move |m| (m.joint, m.rate(state, total, inertial)))
     }
+}
+
+/// The mesh loss of gear-mesh joint `joint` of `mechanism` on the pair of `spec`: the model of
+/// `friction` (its parameters and oil), or, without one or with its mesh loss off, Anderson &
+/// Loewenthal's in the corrected reading (with Karhula's oil without `friction`).
+fn mesh_loss(
+    spec: &GearSpec,
+    mechanism: &dyn Mechanism,
+    friction: Option<&Friction>,
+    joint: usize,
+) -> Result<Box<dyn Loss>, SetupError> {
+    let karhula = Friction::karhula();
+    let f = friction.unwrap_or(&karhula);
+    let model = friction
+        .and_then(|f| f.gear_mesh)
+        .or_else(|| find(Attachment::GearMesh, "corrected"))
+        .expect("the registry has the corrected mesh loss");
+    let site = Site {
+        parameters: &f.parameters,
+        oil: &f.oil,
+        pair: spec,
+        mechanism,
+        bore: 0.0,
+        joint,
+        bearings: None,
+    };
+    model
+        .bind_at(&site)
+        .unwrap_or_else(|| Err(failed("friction.gear_mesh", &"is not a gear-mesh loss")))
 }
 
 impl Rated {
     /// The mesh's rating at `state` under the `total` loads (and the `inertial` family's).
     fn rate(
-        &self,
+        &mut self,
         state: &State,
         total: &Loads,
         inertial: Option<&Loads>,
@@ -318,8 +349,19 @@ impl Rated {
             pitch_line_velocity: motion.relative_speed,
             speeds: mesh_speeds(state, m.joint, m.body, m.pitch_radius),
         };
-        let failed = |e: cardan_gears::GearError| format!("gear rating of {}: {e}", m.name);
+        let name = m.name;
+        let failed = |e: cardan_gears::GearError| format!("gear rating of {name}: {e}");
         let mut r = m.set.evaluate(&step).map_err(failed)?;
+        let at = At {
+            state,
+            total,
+            pressure: None,
+            rated_meshes: &[],
+        };
+        let loss = m
+            .loss
+            .power(&at)
+            .map_err(|e| format!("gear rating of {name}: {e}"))?;
         let load = match m.tooth_load {
             ToothLoad::Tangential => tangential_load,
             ToothLoad::RingForce => force.norm() / m.sets,
@@ -363,7 +405,7 @@ impl Rated {
             contact_safety: r.rating.contact_safety[0].min(r.rating.contact_safety[1]),
             bending_stress,
             bending_safety,
-            loss: r.loss.total_power * m.sets,
+            loss,
         })
     }
 }

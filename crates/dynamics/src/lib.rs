@@ -20,6 +20,7 @@ pub mod engine_losses;
 pub mod family;
 pub mod fmep;
 pub mod gear_rating;
+pub mod loss;
 pub mod loss_models;
 pub mod losses;
 pub mod mesh;
@@ -40,10 +41,9 @@ pub use engine_losses::{
 pub use family::{Gas, Inertial, LoadFamily, Solver};
 pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
 pub use gear_rating::{GearRatings, MeshRating};
-pub use loss_models::{Attachment, LossModel, Parameters, Setting, LOSS_MODELS};
-pub use losses::{
-    At, Bearing, BearingSize, Friction, Loss, LossBudget, MeshLossModel, Oil, Rings, Skirt,
-};
+pub use loss::{At, Loss, Oil, Parameters, Site};
+pub use loss_models::{Attachment, Bind, LossModel, LOSS_MODELS};
+pub use losses::{BearingSize, Friction, LossBudget};
 pub use mesh::{radial, tangential, GearMaterial, GearSpec, ToothLoad};
 pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
 pub use parallel::{run_parallel, run_summary, Joinable};

@@ -20,83 +20,12 @@
 pub mod models;
 
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
-use crate::loss_models::Parameters;
-use crate::mesh::{mesh_pair, GearSpec};
+use crate::loss::{failed, At, Loss, Oil, Parameters, Site};
+use crate::loss_models::{default_model, Attachment, LossModel};
+use crate::mesh::GearSpec;
 use crate::stage::SetupError;
-use cardan_friction::{
-    AsperityContact, JournalBearing, KarhulaRingPack, RingFilm, RingProfile, RollingBearing,
-    RollingModel, RollingReading, ViscousSkirt, KARHULA_SKIRT_MU,
-};
-use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, Reading};
+use cardan_friction::KARHULA_SKIRT_MU;
 use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
-
-/// The lubricant of every lubricated contact.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Oil {
-    /// Kinematic viscosity ν at the running temperature, m²/s (Karhula: ≲ 5 mm²/s).
-    pub kinematic_viscosity: f64,
-    /// Density ρ, kg/m³ (Karhula: ≈ 900).
-    pub density: f64,
-}
-
-impl Oil {
-    /// Dynamic viscosity η = ν·ρ, Pa·s (Karhula A9.1.47).
-    pub fn dynamic_viscosity(&self) -> f64 {
-        self.kinematic_viscosity * self.density
-    }
-}
-
-/// How the piston rings are modelled.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Rings {
-    /// Karhula's pack (2 compression rings of 2 mm at 0.19 MPa, 1 oil ring of 4 mm at 1 MPa)
-    /// with a constant friction coefficient (A9.1.2-4, A9.1.8).
-    Karhula {
-        /// μ_ring (Karhula: 0.07, Andersson et al. 2002).
-        friction_coefficient: f64,
-    },
-    /// Each ring of the same pack on an oil film: a barrel face of the ring's height and
-    /// `crown_height`, loaded by its elastic pressure and, for the top ring, the cylinder
-    /// pressure above atmospheric behind it (the lower rings see none: inter-ring pressures are
-    /// not modelled); squeeze film stepped in time, Greenwood-Tripp asperity contact with
-    /// [`AsperityContact::typical`] surfaces.
-    Film {
-        /// Crown height of the barrel faces, m.
-        crown_height: f64,
-    },
-}
-
-/// How the skirt of a piston sliding on the frame is modelled.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Skirt {
-    /// Coulomb friction on the side force (A9.1.5; μ_skirt = 0.09 in the thesis).
-    Coulomb { friction_coefficient: f64 },
-    /// Couette shear of a concentric full film (Thai thesis 2.5.c.1-3): needs no side force.
-    Viscous {
-        /// Skirt length, m.
-        length: f64,
-        /// Radial skirt-to-liner clearance, m.
-        clearance: f64,
-    },
-}
-
-/// How the bearings of a revolute joint are modelled.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Bearing {
-    /// The joint's rolling bearings ([`Bearings`]: pitch diameter, C0, how many share the load)
-    /// in one of the readings of [`cardan_friction::rolling_bearing_loss`].
-    Rolling(RollingReading),
-    /// A plain journal bearing of the joint's journal radius.
-    Journal {
-        /// Short-bearing (Ocvirk) solution with the eccentricity from the instantaneous load;
-        /// `false`: Petroff's concentric journal.
-        short_bearing: bool,
-        /// Bearing length over diameter L/D.
-        length_ratio: f64,
-        /// Radial clearance over journal radius c/R.
-        clearance_ratio: f64,
-    },
-}
 
 /// Catalogue values of a joint's bearings; `None` keeps the declared value.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -122,34 +51,31 @@ impl BearingSize {
     }
 }
 
-/// The gear mesh loss and the pair it is computed on.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MeshLossModel {
-    pub reading: Reading,
-    /// The pair (the case's `[gear]`; Karhula's 20-tooth wheel with a 0.8-module ring addendum
-    /// and b = d1/3 by default, A9.1.36-46).
-    pub pair: GearSpec,
-}
-
-/// Every loss model of a case, SI.
+/// Every loss model of a case, SI: the registry's model at each attachment
+/// ([`crate::LOSS_MODELS`]; `None`: no loss there) and the parameters they are bound with.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Friction {
     pub oil: Oil,
-    /// `None`: no ring loss.
-    pub rings: Option<Rings>,
-    /// `None`: no skirt loss.
-    pub skirt: Option<Skirt>,
+    /// The models' parameters.
+    pub parameters: Parameters,
+    /// Model of the rings of every piston in a cylinder.
+    pub rings: Option<&'static LossModel>,
+    /// Model of a piston's slide on the frame.
+    pub skirt: Option<&'static LossModel>,
     /// Coulomb friction coefficient of the other slides (a Scotch-yoke slot).
     pub slide_friction_coefficient: f64,
-    /// Model of every revolute joint; `None`: no bearing loss.
-    pub bearings: Option<Bearing>,
+    /// Model of every revolute joint.
+    pub bearings: Option<&'static LossModel>,
     /// Models of named revolute joints (`None`: no loss), overriding [`Friction::bearings`].
-    pub joint_bearings: Vec<(String, Option<Bearing>)>,
+    pub joint_bearings: Vec<(String, Option<&'static LossModel>)>,
     /// Catalogue values of named revolute joints' bearings, overriding the sizing rules the
     /// mechanism declared (Karhula A9.1.10-13).
     pub joint_sizes: Vec<(String, BearingSize)>,
-    /// `None`: no gear mesh loss.
-    pub gear_mesh: Option<MeshLossModel>,
+    /// Model of every gear mesh.
+    pub gear_mesh: Option<&'static LossModel>,
+    /// The pair the mesh loss is computed on (the case's `[gear]`; Karhula's 20-tooth wheel
+    /// with a 0.8-module ring addendum and b = d1/3 by default, A9.1.36-46).
+    pub pair: GearSpec,
     /// The engine components (valve train, accessories, pumping) and the fmep cross-check of a
     /// four-stroke engine; `None` for a machine that is not an engine. The runner sets it for
     /// `machine = "engine"`, with every component off unless the case switches it on.
@@ -157,79 +83,54 @@ pub struct Friction {
 }
 
 impl Friction {
-    /// Karhula's (2008) App. 9.1 models and values ([`Parameters::default`]): ring pack with
-    /// μ = 0.07, Coulomb skirt (and other slides) with μ = 0.09, rolling bearings in his reading
-    /// with f0 = 2, mesh loss as printed with z1 = 20, oil of 5 mm²/s and 900 kg/m³; no engine
-    /// components (the thesis has none).
+    /// Karhula's (2008) App. 9.1 models and values ([`Parameters::default`],
+    /// [`default_model`]): ring pack with μ = 0.07, Coulomb skirt (and other slides) with
+    /// μ = 0.09, rolling bearings in his reading with f0 = 2, mesh loss as printed with z1 = 20,
+    /// oil of 5 mm²/s and 900 kg/m³; no engine components (the thesis has none).
     pub fn karhula() -> Self {
-        let p = Parameters::default();
         Self {
             oil: Oil {
                 kinematic_viscosity: 5e-6,
                 density: 900.0,
             },
-            rings: Some(Rings::Karhula {
-                friction_coefficient: p.ring_friction_coefficient,
-            }),
-            skirt: Some(Skirt::Coulomb {
-                friction_coefficient: p.skirt_friction_coefficient,
-            }),
+            parameters: Parameters::default(),
+            rings: default_model(Attachment::Rings),
+            skirt: default_model(Attachment::Skirt),
             slide_friction_coefficient: KARHULA_SKIRT_MU,
-            bearings: Some(Bearing::Rolling(RollingReading::Karhula {
-                f0: p.lubrication_factor,
-                load_constant: p.bearing_load_constant,
-            })),
+            bearings: default_model(Attachment::Bearing),
             joint_bearings: Vec::new(),
             joint_sizes: Vec::new(),
-            gear_mesh: Some(MeshLossModel {
-                reading: Reading::Karhula,
-                pair: GearSpec::default(),
-            }),
+            gear_mesh: default_model(Attachment::GearMesh),
+            pair: GearSpec::default(),
             engine: None,
         }
     }
-}
 
-/// What a loss model reads at a step.
-#[derive(Debug, Clone, Copy)]
-pub struct At<'a> {
-    /// The step's state (crank, pistons, joints).
-    pub state: &'a State,
-    /// The total (lossless) loads.
-    pub total: &'a Loads,
-    /// Absolute cylinder pressure, Pa, if a gas model runs.
-    pub pressure: Option<f64>,
-    /// The loss (W) of each gear-mesh joint a [`crate::GearRatings`] has rated at this step.
-    pub rated_meshes: &'a [(usize, f64)],
-}
-
-/// A loss model bound to its piston, joint or crank: its power loss step by step. A model is a
-/// type of [`models`] (or of its own module) implementing this and deriving `Clone`.
-pub trait Loss: LossClone + std::fmt::Debug + Send + Sync {
-    /// The power loss at the step, W; `Err`: why it cannot be computed.
-    fn power(&mut self, at: &At) -> Result<f64, String>;
-
-    /// Whether a step's loss depends on the steps before it (then the steps are taken in
-    /// order, by one thread).
-    fn carries_history(&self) -> bool {
-        false
-    }
-}
-
-/// A boxed [`Loss`] cloned (every `Clone` model has it).
-pub trait LossClone {
-    fn clone_box(&self) -> Box<dyn Loss>;
-}
-
-impl<T: Loss + Clone + 'static> LossClone for T {
-    fn clone_box(&self) -> Box<dyn Loss> {
-        Box::new(self.clone())
-    }
-}
-
-impl Clone for Box<dyn Loss> {
-    fn clone(&self) -> Self {
-        self.clone_box()
+    /// `model` bound at the site of `mechanism` in a cylinder of `bore` (m): joint `joint`, a
+    /// revolute joint's `bearings`.
+    fn bind(
+        &self,
+        model: &LossModel,
+        mechanism: &dyn Mechanism,
+        bore: f64,
+        joint: usize,
+        bearings: Option<Bearings>,
+    ) -> Result<Box<dyn Loss>, SetupError> {
+        let site = Site {
+            parameters: &self.parameters,
+            oil: &self.oil,
+            pair: &self.pair,
+            mechanism,
+            bore,
+            joint,
+            bearings,
+        };
+        model.bind_at(&site).unwrap_or_else(|| {
+            Err(failed(
+                model.attachment.field(),
+                &"is bound by the engine, not at a joint",
+            ))
+        })
     }
 }
 
@@ -248,13 +149,13 @@ impl LossBudget {
         bore: f64,
     ) -> Result<Self, SetupError> {
         let t = mechanism.topology();
-        let viscosity = friction.oil.dynamic_viscosity();
+        let f = friction;
         let mut names = Vec::new();
         let mut parts = Vec::new();
         if mechanism.has_cylinder() {
             if let Some(rings) = friction.rings {
                 names.push("rings".to_string());
-                parts.push(rings.bind(bore, t.pistons.len(), viscosity)?);
+                parts.push(f.bind(rings, mechanism, bore, 0, None)?);
             }
         }
         for (k, j) in t.joints.iter().enumerate() {
@@ -263,7 +164,7 @@ impl LossBudget {
                     let skirt = j.other.is_none() && t.pistons.iter().any(|p| p.body == j.body);
                     let part = match (skirt, friction.skirt) {
                         (true, None) => continue,
-                        (true, Some(model)) => model.bind(k, bore, viscosity)?,
+                        (true, Some(model)) => f.bind(model, mechanism, bore, k, None)?,
                         (false, _) => models::coulomb(k, friction.slide_friction_coefficient),
                     };
                     names.push(if skirt { "skirt" } else { j.name }.to_string());
@@ -281,34 +182,15 @@ impl LossBudget {
                         .iter()
                         .find(|(name, _)| name == j.name)
                         .map_or(b, |(_, size)| size.apply(b));
-                    parts.push(model.bind(k, b, &friction.oil)?);
+                    parts.push(f.bind(model, mechanism, bore, k, Some(b))?);
                     names.push(j.name.to_string());
                 }
-                JointKind::GearMesh {
-                    ratio,
-                    pitch_radius,
-                    internal,
-                    pressure_angle,
-                    ..
-                } => {
-                    let Some(mesh) = friction.gear_mesh else {
+                JointKind::GearMesh { .. } => {
+                    let Some(model) = friction.gear_mesh else {
                         continue;
                     };
-                    let geometry =
-                        mesh_geometry(&mesh, ratio, pitch_radius, internal, pressure_angle)?;
+                    parts.push(f.bind(model, mechanism, bore, k, None)?);
                     names.push(j.name.to_string());
-                    parts.push(Box::new(models::Mesh {
-                        joint: k,
-                        body: j.body,
-                        geometry,
-                        lubricant: Lubricant {
-                            kinematic_viscosity: friction.oil.kinematic_viscosity,
-                            density: friction.oil.density,
-                        },
-                        reading: mesh.reading,
-                        pitch_radius,
-                        sets: if mesh.pair.twin { 2.0 } else { 1.0 },
-                    }));
                 }
             }
         }
@@ -375,122 +257,4 @@ impl LossBudget {
         }
         Ok(())
     }
-}
-
-impl Rings {
-    /// The rings of `pistons` pistons in a cylinder of `bore` (m), oil of dynamic viscosity
-    /// `viscosity` (Pa·s).
-    fn bind(self, bore: f64, pistons: usize, viscosity: f64) -> Result<Box<dyn Loss>, SetupError> {
-        let pack = KarhulaRingPack::karhula(bore).map_err(|e| failed("geometry.bore", &e))?;
-        Ok(match self {
-            Rings::Karhula {
-                friction_coefficient,
-            } => Box::new(models::RingPack {
-                force: friction_coefficient * pack.contact_force(),
-            }),
-            Rings::Film { crown_height } => {
-                let ring = |height: f64, pressure: f64, top: bool| {
-                    let profile = RingProfile::Barrel {
-                        width: height,
-                        crown_height,
-                    };
-                    RingFilm::new(profile, bore, AsperityContact::typical())
-                        .map(|f| (f, pressure, top))
-                        .map_err(|e| failed("friction.ring_crown_height", &e))
-                };
-                let mut rings = Vec::new();
-                for k in 0..pack.compression_rings {
-                    rings.push(ring(
-                        pack.compression_ring_height,
-                        pack.compression_ring_pressure,
-                        k == 0,
-                    )?);
-                }
-                for _ in 0..pack.oil_rings {
-                    rings.push(ring(pack.oil_ring_height, pack.oil_ring_pressure, false)?);
-                }
-                Box::new(models::RingFilms {
-                    films: vec![None; rings.len() * pistons],
-                    rings,
-                    time: None,
-                    viscosity,
-                })
-            }
-        })
-    }
-}
-
-impl Skirt {
-    /// The skirt of the piston sliding on prismatic joint `joint`, in a cylinder of `bore` (m).
-    fn bind(self, joint: usize, bore: f64, viscosity: f64) -> Result<Box<dyn Loss>, SetupError> {
-        Ok(match self {
-            Skirt::Viscous { length, clearance } => Box::new(models::ViscousSkirtLoss {
-                joint,
-                skirt: ViscousSkirt::new(bore, length, clearance)
-                    .map_err(|e| failed("friction.skirt_length", &e))?,
-                viscosity,
-            }),
-            Skirt::Coulomb {
-                friction_coefficient,
-            } => models::coulomb(joint, friction_coefficient),
-        })
-    }
-}
-
-impl Bearing {
-    /// The bearings `b` of revolute joint `joint`.
-    fn bind(self, joint: usize, b: Bearings, oil: &Oil) -> Result<Box<dyn Loss>, SetupError> {
-        let count = f64::from(b.count.max(1));
-        Ok(match self {
-            Bearing::Rolling(reading) => Box::new(models::Rolling {
-                joint,
-                model: RollingModel::new(
-                    RollingBearing::new(2.0 * b.radius, b.static_load_rating)
-                        .map_err(|e| failed("friction.bearings", &e))?,
-                    reading,
-                ),
-                count,
-                viscosity: oil.kinematic_viscosity,
-            }),
-            Bearing::Journal {
-                short_bearing,
-                length_ratio,
-                clearance_ratio,
-            } => Box::new(models::Journal {
-                joint,
-                bearing: JournalBearing::new(
-                    b.radius,
-                    2.0 * b.radius * length_ratio,
-                    b.radius * clearance_ratio,
-                )
-                .map_err(|e| failed("friction.journal_length_ratio", &e))?,
-                count,
-                short: short_bearing,
-                viscosity: oil.dynamic_viscosity(),
-            }),
-        })
-    }
-}
-
-/// A setup that failed: the case field at fault and why.
-fn failed(field: &str, e: &dyn std::fmt::Display) -> SetupError {
-    SetupError {
-        field: field.to_string(),
-        rule: e.to_string(),
-    }
-}
-
-/// The mesh geometry of the pair [`mesh_pair`] builds for a mesh joint.
-fn mesh_geometry(
-    mesh: &MeshLossModel,
-    ratio: f64,
-    pitch_radius: f64,
-    internal: bool,
-    pressure_angle: f64,
-) -> Result<MeshGeometry, SetupError> {
-    let (pair, face_width) = mesh_pair(&mesh.pair, ratio, pitch_radius, internal, pressure_angle)?;
-    MeshGeometry::from_pair(&pair, face_width).map_err(|e| SetupError {
-        field: "gear.face_width".into(),
-        rule: e.to_string(),
-    })
 }

@@ -206,7 +206,7 @@ impl Stage for GearRatings {
     ) -> Result<(), StageError> {
         let ratings = self.ratings(input.state, input.total, input.inertial);
         let outs = out.chunks_exact_mut(MeshRating::WIDTH);
-        for ((r, out), joint) in ratings.zip(outs).zip(self.joints()) {
+        for ((joint, r), out) in ratings.zip(outs) {
             let r = r.map_err(StageError::Failed)?;
             out.copy_from_slice(&r.values());
             handed.mesh_losses.push((joint, r.loss));

@@ -42,7 +42,7 @@ fn rate(spec: &GearSpec, w: f64, force: C) -> (MeshRating, C) {
     let mut loads = Loads::for_topology(m.topology());
     let d = state.joints[mesh].direction;
     loads.joints[mesh].force = force.re * C::i() * d + force.im * d;
-    let ratings = GearRatings::new(spec, m.as_ref(), None).unwrap();
+    let mut ratings = GearRatings::new(spec, m.as_ref(), None).unwrap();
     assert_eq!(ratings.names(), ["gear_mesh"]);
     let mut out = [MeshRating::default()];
     ratings.evaluate(&state, &loads, None, &mut out).unwrap();

@@ -6,7 +6,8 @@
 mod common;
 
 use cardan_dynamics::{
-    run, Friction, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Steps, SummarySink,
+    run, Attachment, Friction, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Steps,
+    SummarySink,
 };
 use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
@@ -115,9 +116,12 @@ fn cardan_gear_components_are_their_models_at_their_joints() {
         kinematic_viscosity: 5e-6,
         density: 900.0,
     };
-    for reading in [Reading::Karhula, Reading::Corrected] {
+    for (word, reading) in [
+        ("karhula", Reading::Karhula),
+        ("corrected", Reading::Corrected),
+    ] {
         let mut friction = Friction::karhula();
-        friction.gear_mesh.as_mut().unwrap().reading = reading;
+        friction.gear_mesh = cardan_dynamics::loss_models::find(Attachment::GearMesh, word);
         let mut budget = LossBudget::new(&friction, m.as_ref(), 0.12).unwrap();
         budget
             .evaluate(&state, &loads, None, &[], &mut out)

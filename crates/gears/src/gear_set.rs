@@ -23,8 +23,8 @@ pub struct GearSet {
     pub buckingham: BuckinghamPair,
     /// Lubricant for the mesh loss.
     pub lubricant: Lubricant,
-    /// Mesh-loss reading.
-    pub loss_reading: Reading,
+    /// Mesh-loss reading; `None`: no mesh loss computed (a caller that computes it itself).
+    pub loss_reading: Option<Reading>,
 }
 
 /// Inputs of one step.
@@ -47,8 +47,8 @@ pub struct StepResult {
     pub kv: DynamicFactor,
     /// AGMA stresses and safety factors at `|Ft|` (infinite safety factors at zero load).
     pub rating: Rating,
-    /// Anderson & Loewenthal mesh loss.
-    pub loss: MeshLoss,
+    /// Anderson & Loewenthal mesh loss (`None` without a loss reading).
+    pub loss: Option<MeshLoss>,
 }
 
 impl GearSet {
@@ -68,14 +68,16 @@ impl GearSet {
         let kv = dynamic_factor(self.quality, v)?;
         let dynamic = self.buckingham.dynamic_load(wt, v)?;
         let rating = self.rating.rate(wt, kv.kv, self.face_width)?;
-        let geometry = MeshGeometry::from_pair(&self.pair, self.face_width)?;
-        let loss = mesh_loss(
-            &geometry,
-            &self.lubricant,
-            &step.speeds,
-            step.tangential_load,
-            self.loss_reading,
-        )?;
+        let loss = match self.loss_reading {
+            Some(reading) => Some(mesh_loss(
+                &MeshGeometry::from_pair(&self.pair, self.face_width)?,
+                &self.lubricant,
+                &step.speeds,
+                step.tangential_load,
+                reading,
+            )?),
+            None => None,
+        };
         Ok(StepResult {
             dynamic,
             kv,

@@ -62,7 +62,7 @@ fn cardan_set() -> GearSet {
             kinematic_viscosity: 5e-6,
             density: 900.0,
         },
-        loss_reading: Reading::Corrected,
+        loss_reading: Some(Reading::Corrected),
     }
 }
 
@@ -90,7 +90,8 @@ fn step_with_load_and_without() {
         assert!(r.rating.bending_stress[k] > 0.0 && r.rating.bending_safety[k].is_finite());
         assert!(r.rating.contact_safety[k] > 0.0);
     }
-    assert!(r.loss.total_power > 0.0);
+    let loss = r.loss.unwrap();
+    assert!(loss.total_power > 0.0);
     // Zero load: zero stresses and dynamic load, only windage remains.
     let z = set
         .evaluate(&MeshStep {
@@ -102,7 +103,8 @@ fn step_with_load_and_without() {
     assert_eq!(z.dynamic.dynamic_load, 0.0);
     assert_eq!(z.rating.bending_stress, [0.0, 0.0]);
     assert!(z.rating.bending_safety[0].is_infinite());
-    assert_eq!(z.loss.total_power, z.loss.windage_power);
+    let zero = z.loss.unwrap();
+    assert_eq!(zero.total_power, zero.windage_power);
     // Invalid step input is an error, not a panic.
     assert!(set
         .evaluate(&MeshStep {

@@ -2,7 +2,6 @@
 //! than the limit refused.
 
 use super::options::RunOptions;
-use super::train::stages_of;
 use crate::per_step::{Row, RunLayout};
 use cardan_case::case::Case;
 use cardan_dynamics::{Gas, Inertial, LoadFamily, Solver};
@@ -38,8 +37,8 @@ pub fn estimated_bytes(case: &Case) -> Result<(u64, String), String> {
     let per_value = u64::from(o.npy) * 8 + u64::from(o.csv) * csv_bytes;
     let trains = if case.crank_phase != 0.0 { 2 } else { 1 };
     let mut columns = 0u64;
-    for m in &case.mechanisms {
-        let stages = stages_of(case, m.as_ref())?;
+    for (m, setup) in case.mechanisms.iter().zip(&case.setups) {
+        let stages = setup.stages();
         let layout = RunLayout {
             families: &names,
             gas: case.gas.is_some(),

@@ -6,10 +6,10 @@ use super::sampling::{sampling_warning, shifted_peaks, SAMPLING_CHECK_STEPS_PER_
 use crate::output::MechanismResult;
 use crate::per_step::{ChartSink, PerStepSink, RunLayout};
 use cardan_case::case::Case;
+use cardan_case::setup::Setup;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stage, Summary,
-    SummarySink,
+    run, run_parallel, Gas, Inertial, LoadFamily, Solver, Stage, Summary, SummarySink,
 };
 use cardan_gas::GasMetric;
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
@@ -27,36 +27,8 @@ fn mean_speed(case: &Case) -> f64 {
     }
 }
 
-/// The stages of `mechanism` in `case`, as its run takes them: the gear ratings, then the loss
-/// budget (which takes their mesh losses).
-pub(super) fn stages_of(
-    case: &Case,
-    mechanism: &dyn Mechanism,
-) -> Result<Vec<Box<dyn Stage>>, String> {
-    let losses = match &case.friction {
-        Some(f) => Some(
-            LossBudget::new(f, mechanism, case.geometry.bore)
-                .map_err(|e| format!("{}: {}", e.field, e.rule))?,
-        ),
-        None => None,
-    };
-    let gears = match &case.gear {
-        Some(spec) => {
-            let ratings = GearRatings::new(spec, mechanism, case.friction.as_ref())
-                .map_err(|e| format!("{}: {}", e.field, e.rule))?;
-            (!ratings.names().is_empty()).then_some(ratings)
-        }
-        None => None,
-    };
-    let gears = gears.map(|g| Box::new(g) as Box<dyn Stage>);
-    Ok(gears
-        .into_iter()
-        .chain(losses.map(|l| Box::new(l) as _))
-        .collect())
-}
-
-/// Runs one crank train of `case`: `mechanism` with its crank `shift` (rad) ahead of the
-/// case's (the second train of a phased opposed-piston case; 0 otherwise), writing its
+/// Runs one crank train of `case`: `mechanism` (its stages copied from its `setup`, which
+/// validation built) with its crank `shift` (rad) ahead of the case's (the second train of a phased opposed-piston case; 0 otherwise), writing its
 /// per-step files (named `label`, as `case.output` asks) into `dir` if given. Both trains'
 /// pistons see the one chamber's pressure. With `dir` and `charts`, it also records the
 /// series of the report's charts (thinned as it steps, see `report/src/envelope.rs`) and returns
@@ -64,6 +36,7 @@ pub(super) fn stages_of(
 fn run_mechanism(
     case: &Case,
     mechanism: &dyn Mechanism,
+    setup: &Setup,
     shift: f64,
     label: &str,
     dir: Option<&Path>,
@@ -76,7 +49,7 @@ fn run_mechanism(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let mut stages = stages_of(case, mechanism)?;
+    let mut stages = setup.stages();
     let listed: Vec<&dyn Stage> = stages.iter().map(|s| s.as_ref()).collect();
     let summary = SummarySink::new(mechanism, &names, case.steps + 1).with_stages(&listed);
     let columns: Vec<_> = stages.iter().map(|s| s.columns()).collect();
@@ -255,23 +228,25 @@ pub(super) fn run_trains(
 ) -> Result<Vec<(MechanismResult, Option<ChartData>)>, String> {
     // Each mechanism's crank train, and its second one in a phased opposed-piston case.
     let mut trains = Vec::new();
-    for m in &case.mechanisms {
-        trains.push((m, 0.0, m.name().to_string()));
+    for (m, setup) in case.mechanisms.iter().zip(&case.setups) {
+        trains.push((m, setup, 0.0, m.name().to_string()));
         if case.crank_phase != 0.0 {
-            trains.push((m, case.crank_phase, format!("{}_crank2", m.name())));
+            trains.push((m, setup, case.crank_phase, format!("{}_crank2", m.name())));
         }
     }
     let results: Vec<Result<(MechanismResult, Option<ChartData>), String>> = trains
         .par_iter()
-        .map(|(m, shift, label)| {
+        .map(|(m, setup, shift, label)| {
             let (summary, series, warnings) =
-                run_mechanism(case, m.as_ref(), *shift, label, dir, charts).map_err(|e| {
-                    format!(
-                        "{}: case \"{}\": {label}: {e}",
-                        case.file.display(),
-                        case.name
-                    )
-                })?;
+                run_mechanism(case, m.as_ref(), setup, *shift, label, dir, charts).map_err(
+                    |e| {
+                        format!(
+                            "{}: case \"{}\": {label}: {e}",
+                            case.file.display(),
+                            case.name
+                        )
+                    },
+                )?;
             for w in &warnings {
                 tracing::warn!(
                     "{}: case \"{}\": {label}: {w}",

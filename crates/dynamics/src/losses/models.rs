@@ -1,18 +1,166 @@
 //! The loss models bound to a mechanism: one type per model, each its power loss at a step
 //! ([`Loss`]) from the joint's total load and relative speed, the pistons' speeds or the
-//! crank's; [`crate::LossBudget`] binds them by joint kind.
+//! crank's, and the functions that bind it at its [`Site`] (the registry's entries,
+//! [`crate::loss_models::LOSS_MODELS`], call them); [`crate::LossBudget`] binds them by joint
+//! kind.
 
-use super::{At, Loss};
 use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::mesh::mesh_speeds;
-use crate::mesh::tangential;
+use crate::loss::{failed, At, Loss, Site};
+use crate::mesh::{mesh_pair, mesh_speeds, tangential};
+use crate::stage::SetupError;
 use cardan_friction::{
-    coulomb_sliding, petroff, short_bearing, viscous_skirt, JournalBearing, RingFilm, RingLoad,
-    RollingModel, ViscousSkirt,
+    coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
+    KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel, RollingReading,
+    ViscousSkirt,
 };
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, Reading};
+use cardan_mechanism::{Bearings, JointKind};
+
+/// What a bound model is: its [`Loss`], or why it cannot be set up.
+pub type Bound = Result<Box<dyn Loss>, SetupError>;
+
+/// Karhula's ring pack (2 compression rings of 2 mm at 0.19 MPa, 1 oil ring of 4 mm at 1 MPa)
+/// in a cylinder of the site's bore.
+fn ring_pack(site: &Site) -> Result<KarhulaRingPack, SetupError> {
+    KarhulaRingPack::karhula(site.bore).map_err(|e| failed("geometry.bore", &e))
+}
+
+/// Karhula's ring pack with a constant friction coefficient μ (A9.1.2-4, A9.1.8).
+pub fn bind_ring_pack(site: &Site, friction_coefficient: f64) -> Bound {
+    let pack = ring_pack(site)?;
+    Ok(Box::new(RingPack {
+        force: friction_coefficient * pack.contact_force(),
+    }))
+}
+
+/// Each ring of Karhula's pack on an oil film: a barrel face of the ring's height and
+/// `crown_height` (m), loaded by its elastic pressure and, for the top ring, the cylinder
+/// pressure above atmospheric behind it (the lower rings see none: inter-ring pressures are
+/// not modelled); squeeze film stepped in time, Greenwood-Tripp asperity contact with
+/// [`AsperityContact::typical`] surfaces; on every piston of the cylinder.
+pub fn bind_ring_films(site: &Site, crown_height: f64) -> Bound {
+    let pack = ring_pack(site)?;
+    let bore = site.bore;
+    let ring = |height: f64, pressure: f64, top: bool| {
+        let profile = RingProfile::Barrel {
+            width: height,
+            crown_height,
+        };
+        RingFilm::new(profile, bore, AsperityContact::typical())
+            .map(|f| (f, pressure, top))
+            .map_err(|e| failed("friction.ring_crown_height", &e))
+    };
+    let mut rings = Vec::new();
+    for k in 0..pack.compression_rings {
+        rings.push(ring(
+            pack.compression_ring_height,
+            pack.compression_ring_pressure,
+            k == 0,
+        )?);
+    }
+    for _ in 0..pack.oil_rings {
+        rings.push(ring(pack.oil_ring_height, pack.oil_ring_pressure, false)?);
+    }
+    let pistons = site.mechanism.topology().pistons.len();
+    Ok(Box::new(RingFilms {
+        films: vec![None; rings.len() * pistons],
+        rings,
+        time: None,
+        viscosity: site.oil.dynamic_viscosity(),
+    }))
+}
+
+/// Coulomb friction of `friction_coefficient` on the site's slide (Karhula A9.1.5).
+pub fn bind_coulomb(site: &Site, friction_coefficient: f64) -> Bound {
+    Ok(coulomb(site.joint, friction_coefficient))
+}
+
+/// The viscous skirt (Thai thesis 2.5.c.1-3) of `length` and `clearance` (m) on the site's
+/// slide, in a cylinder of its bore.
+pub fn bind_viscous_skirt(site: &Site, length: f64, clearance: f64) -> Bound {
+    Ok(Box::new(ViscousSkirtLoss {
+        joint: site.joint,
+        skirt: ViscousSkirt::new(site.bore, length, clearance)
+            .map_err(|e| failed("friction.skirt_length", &e))?,
+        viscosity: site.oil.dynamic_viscosity(),
+    }))
+}
+
+/// The site's revolute-joint bearings.
+fn bearings(site: &Site) -> Result<Bearings, SetupError> {
+    site.bearings
+        .ok_or_else(|| failed("friction.bearings", &"attaches to a revolute joint only"))
+}
+
+/// The site's rolling bearings in `reading` of [`cardan_friction::rolling_bearing_loss`].
+pub fn bind_rolling(site: &Site, reading: RollingReading) -> Bound {
+    let b = bearings(site)?;
+    Ok(Box::new(Rolling {
+        joint: site.joint,
+        model: RollingModel::new(
+            RollingBearing::new(2.0 * b.radius, b.static_load_rating)
+                .map_err(|e| failed("friction.bearings", &e))?,
+            reading,
+        ),
+        count: f64::from(b.count.max(1)),
+        viscosity: site.oil.kinematic_viscosity,
+    }))
+}
+
+/// The site's plain journal bearings of its journal radius, L/D and c/R of the parameters:
+/// Ocvirk's short bearing (`short`), else Petroff's concentric journal.
+pub fn bind_journal(site: &Site, short: bool) -> Bound {
+    let b = bearings(site)?;
+    let p = site.parameters;
+    Ok(Box::new(Journal {
+        joint: site.joint,
+        bearing: JournalBearing::new(
+            b.radius,
+            2.0 * b.radius * p.journal_length_ratio,
+            b.radius * p.journal_clearance_ratio,
+        )
+        .map_err(|e| failed("friction.journal_length_ratio", &e))?,
+        count: f64::from(b.count.max(1)),
+        short,
+        viscosity: site.oil.dynamic_viscosity(),
+    }))
+}
+
+/// Anderson & Loewenthal's mesh loss in `reading` on the site's gear-mesh joint, the pair
+/// [`mesh_pair`] builds from the joint and the site's pair.
+pub fn bind_mesh(site: &Site, reading: Reading) -> Bound {
+    let j = &site.mechanism.topology().joints[site.joint];
+    let JointKind::GearMesh {
+        ratio,
+        pitch_radius,
+        internal,
+        pressure_angle,
+        ..
+    } = j.kind
+    else {
+        return Err(failed(
+            "friction.gear_mesh",
+            &"attaches to a gear mesh only",
+        ));
+    };
+    let (pair, face_width) = mesh_pair(site.pair, ratio, pitch_radius, internal, pressure_angle)?;
+    let geometry =
+        MeshGeometry::from_pair(&pair, face_width).map_err(|e| failed("gear.face_width", &e))?;
+    Ok(Box::new(Mesh {
+        joint: site.joint,
+        body: j.body,
+        geometry,
+        lubricant: Lubricant {
+            kinematic_viscosity: site.oil.kinematic_viscosity,
+            density: site.oil.density,
+        },
+        reading,
+        pitch_radius,
+        sets: if site.pair.twin { 2.0 } else { 1.0 },
+    }))
+}
 
 /// Karhula's ring pack on every piston: a constant force μ·F_cont (A9.1.2-4) at the piston's
 /// speed, P = F·|v| (A9.1.8).

@@ -1,0 +1,60 @@
+//! What validation builds for each mechanism's run, kept in the [`crate::Case`] so that the run
+//! takes it instead of building it again: the per-step stages, the gear ratings (with `[gear]`)
+//! and the loss budget (with `[friction]`), each built with the case's friction, as the run
+//! uses them. Building them is the check that they can be built: a case `cardan check` passes
+//! has its setup, and the run cannot fail setting it up.
+
+use crate::error::{CaseError, Invalid};
+use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget, Stage};
+use cardan_mechanism::Mechanism;
+
+/// A mechanism's per-step stages, as validation built them.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    /// The gear ratings of its meshes (`None` without `[gear]`, or without a gear mesh).
+    pub gear_ratings: Option<GearRatings>,
+    /// Its loss budget (`None` without `[friction]`).
+    pub losses: Option<LossBudget>,
+}
+
+impl Setup {
+    /// The setup of `mechanism` in a cylinder of `bore` (m) under the case's `friction` and
+    /// `gear`; a stage that cannot be set up is the case field at fault, for this mechanism.
+    pub fn build(
+        mechanism: &dyn Mechanism,
+        bore: f64,
+        friction: Option<&Friction>,
+        gear: Option<&GearSpec>,
+        invalid: &Invalid,
+    ) -> Result<Self, CaseError> {
+        let failed = |e: cardan_dynamics::SetupError| {
+            invalid(
+                &e.field,
+                &format!("(for the {})", mechanism.name()),
+                &e.rule,
+            )
+        };
+        let gear_ratings = match gear {
+            Some(spec) => {
+                let ratings = GearRatings::new(spec, mechanism, friction).map_err(failed)?;
+                (!ratings.names().is_empty()).then_some(ratings)
+            }
+            None => None,
+        };
+        let losses = match friction {
+            Some(f) => Some(LossBudget::new(f, mechanism, bore).map_err(failed)?),
+            None => None,
+        };
+        Ok(Self {
+            gear_ratings,
+            losses,
+        })
+    }
+
+    /// The stages of a run (a crank train's own copies, their history unset), in the run's
+    /// order: the gear ratings, then the loss budget (which takes their mesh losses).
+    pub fn stages(&self) -> Vec<Box<dyn Stage>> {
+        let gears = self.gear_ratings.iter().map(|g| g.fork());
+        gears.chain(self.losses.iter().map(|l| l.fork())).collect()
+    }
+}
