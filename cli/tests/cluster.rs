@@ -147,7 +147,7 @@ fn shards_from_the_command_line_merge_into_one_run() {
         &["--shard", "1/2", "--only", "x"],
     ] {
         let mut args: Vec<&std::ffi::OsStr> = vec!["run".as_ref(), file.as_os_str()];
-        args.extend(bad.iter().map(|a| std::ffi::OsStr::new(a)));
+        args.extend(bad.iter().map(std::ffi::OsStr::new));
         assert_eq!(run(&args).status.code(), Some(2), "{bad:?}");
     }
 }

@@ -4,7 +4,7 @@
 use super::case_folder::{run_and_write, Written};
 use super::cases::{load_cases, matches_pattern};
 use super::options::{Report, RunOptions};
-use super::shard::{self, Manifest};
+use super::shard;
 use super::sweeps::{sweep_targets, write_sweeps, Point, SweepTarget};
 use super::table::{run_table, take_tables};
 use cardan_case::case::Case;
@@ -59,16 +59,9 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     }
     // A shard runs its part of the cases as if they were all: its sweeps' folders hold its
     // points only, and `cardan merge` gathers them.
-    let manifest = options.shard.map(|(k, n)| {
-        let manifest = Manifest::new(&cases, k, n, options.reports, &report.failures);
-        let mine = shard::part(&cases, k, n);
-        let mut index = 0;
-        cases.retain(|_| {
-            index += 1;
-            mine[index - 1]
-        });
-        manifest
-    });
+    let manifest = options
+        .shard
+        .map(|(k, n)| shard::take(&mut cases, k, n, options.reports, &report.failures));
     // Every sweep's points in their order, before `--only` selects some.
     let mut all_points: HashMap<String, Vec<String>> = HashMap::new();
     for c in &cases {

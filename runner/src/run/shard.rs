@@ -78,6 +78,25 @@ pub fn part(cases: &[Case], k: usize, n: usize) -> Vec<bool> {
     assignment(cases, n).into_iter().map(|s| s == k).collect()
 }
 
+/// Keeps in `cases` only the K-th of `n` parts ([`part`]), and returns the shard's record of
+/// the whole batch ([`Manifest::new`]).
+pub fn take(
+    cases: &mut Vec<Case>,
+    k: usize,
+    n: usize,
+    reports: bool,
+    failures: &[String],
+) -> Manifest {
+    let manifest = Manifest::new(cases, k, n, reports, failures);
+    let mine = part(cases, k, n);
+    let mut index = 0;
+    cases.retain(|_| {
+        index += 1;
+        mine[index - 1]
+    });
+    manifest
+}
+
 /// What a shard records of its run: the program, a hash of the whole batch's inputs, which
 /// shard of how many it is, whether reports were written, and every case of the batch (its
 /// name, its sweep, its shard) in the batch's order.
