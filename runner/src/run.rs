@@ -21,3 +21,4 @@ pub use cases::{case_files, load_cases, matches_pattern, RESERVED};
 pub use options::{Progress, Report, RunOptions};
 pub use size::{estimated_bytes, human_bytes, DEFAULT_MAX_BYTES};
 pub use train::run_case;
+pub(crate) use train::{run_trains, StepsTo};

@@ -3,7 +3,7 @@
 
 use super::options::RunOptions;
 use super::size::check_size;
-use super::train::run_trains;
+use super::train::{run_trains, StepsTo};
 use crate::output::{self, MechanismResult};
 use anyhow::Context;
 use cardan_case::case::Case;
@@ -39,11 +39,15 @@ pub(super) fn run_and_write(
     let tmp = files::temporary_dir(&dir).map_err(cannot_write)?;
     // A sweep's points are reported by the sweep's report: no charts of their own.
     let report = options.reports && case.sweep.is_none();
-    let result = run_trains(case, Some(&tmp), report).and_then(|trains| {
+    let to = StepsTo::Files {
+        dir: &tmp,
+        charts: report,
+    };
+    let result = run_trains(case, to).and_then(|trains| {
         // The chart series go to the report, and are dropped with it: a batch keeps only
         // the summaries.
         let (results, series): (Vec<MechanismResult>, Vec<Option<ChartData>>) =
-            trains.into_iter().unzip();
+            trains.into_iter().map(|(r, rows)| (r, rows.charts)).unzip();
         let charts: std::collections::BTreeMap<String, ChartData> = results
             .iter()
             .zip(series)
