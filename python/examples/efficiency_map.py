@@ -38,9 +38,11 @@ def main(out="efficiency-map.png"):
         {"motion.initial_speed": list(speeds), "geometry.rod_length": list(rods)},
         as_pandas=False,
     )
-    shape = (len(speeds), len(rods))  # grid mode: the last field varies fastest
-    cardan_eff = table["cardan_gear.mechanical_efficiency"].reshape(shape)
-    slider_eff = table["slider_crank.mechanical_efficiency"].reshape(shape)
+    # Grid mode: the first field varies fastest.
+    shape = (len(rods), len(speeds))
+    assert (table["motion.initial_speed"].reshape(shape) == speeds).all()
+    cardan_eff = table["cardan_gear.mechanical_efficiency"].reshape(shape).T
+    slider_eff = table["slider_crank.mechanical_efficiency"].reshape(shape).T
     advantage = cardan_eff - slider_eff
     print("cardan gear efficiency minus the slider-crank's, percentage points")
     print("speed rad/s | " + " ".join(f"l={r * 1000:5.0f}mm" for r in rods))

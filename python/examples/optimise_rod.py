@@ -22,7 +22,7 @@ def advantage(rod_length, speed):
     return s["cardan_gear"]["mechanical_efficiency"] - s["slider_crank"]["mechanical_efficiency"]
 
 
-def main(speed=100.0):
+def main(speed=600.0):
     speed = float(speed)
     bounds = (0.13, 0.40)  # m: from just over twice the crank to a long rod
     try:

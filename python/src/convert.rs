@@ -49,7 +49,11 @@ pub fn to_toml(value: &Bound<'_, PyAny>, path: &str) -> PyResult<toml::Value> {
     if value.is_instance_of::<PyInt>() {
         return match value.extract::<i64>() {
             Ok(i) => Ok(toml::Value::Integer(i)),
-            Err(_) => Err(bad(path, &value.str()?.to_string(), "an integer must fit in 64 bits")),
+            Err(_) => Err(bad(
+                path,
+                &value.str()?.to_string(),
+                "an integer must fit in 64 bits",
+            )),
         };
     }
     if value.is_instance_of::<PyFloat>() {

@@ -56,12 +56,14 @@ fn given(case: &Bound<'_, PyAny>, what: &str) -> PyResult<Given> {
             let file: PathBuf = case.extract().map_err(|_| {
                 CaseError::new_err(format!(
                     "a {what} is a path, TOML text or a dict, not a {}",
-                    case.get_type().name().map(|n| n.to_string()).unwrap_or_default()
+                    case.get_type()
+                        .name()
+                        .map(|n| n.to_string())
+                        .unwrap_or_default()
                 ))
             })?;
-            let text = std::fs::read_to_string(&file).map_err(|e| {
-                CaseError::new_err(format!("{}: cannot read: {e}", file.display()))
-            })?;
+            let text = std::fs::read_to_string(&file)
+                .map_err(|e| CaseError::new_err(format!("{}: cannot read: {e}", file.display())))?;
             (file, text)
         }
     };
@@ -77,7 +79,9 @@ fn case_error(e: impl std::fmt::Display) -> PyErr {
 fn cases(py: Python<'_>, g: Given) -> PyResult<Vec<cardan_case::Case>> {
     py.detach(|| {
         std::panic::catch_unwind(|| cardan_case::case::cases_of_table(&g.file, g.table))
-            .map_err(|_| RunError::new_err("internal error reading the case (a bug, please report it)"))?
+            .map_err(|_| {
+                RunError::new_err("internal error reading the case (a bug, please report it)")
+            })?
             .map_err(case_error)
     })
 }
@@ -138,9 +142,9 @@ fn sweep<'py>(
         let mut table = toml::Table::new();
         table.insert("mode".into(), toml::Value::String(mode.into()));
         for (k, v) in fields.iter() {
-            let path: String = k
-                .extract()
-                .map_err(|_| CaseError::new_err("a swept field is named by its dotted path, a str"))?;
+            let path: String = k.extract().map_err(|_| {
+                CaseError::new_err("a swept field is named by its dotted path, a str")
+            })?;
             let values = convert::to_toml(&v, &format!("sweep.\"{path}\""))?;
             table.insert(path, values);
         }
@@ -192,7 +196,9 @@ fn gear<'py>(py: Python<'py>, pair: &Bound<'py, PyAny>) -> PyResult<Bound<'py, P
             json["warnings"] = report.warnings().into();
             Ok::<_, PyErr>(json)
         })
-        .map_err(|_| RunError::new_err("internal error rating the pair (a bug, please report it)"))?
+        .map_err(|_| {
+            RunError::new_err("internal error rating the pair (a bug, please report it)")
+        })?
     })?;
     convert::to_python(py, &report)
 }

@@ -154,12 +154,20 @@ def test_gear_is_the_published_example():
     path = os.path.join(ROOT, "configs-gears", "shigley-14-4.toml")
     rating = cardan.gear(path)
     assert rating["failures"] == []
-    assert rating == cardan.gear(case_dict(path))
+    from_dict = cardan.gear(case_dict(path))
+    assert from_dict.pop("file") == "<dict>"
+    assert {k: v for k, v in rating.items() if k != "file"} == from_dict
     psi = 6894.757293168361
+
+    def close(value, printed, half_unit):
+        # The printed figure's rounding (half its last digit) plus 0.1 % for the example's
+        # rounded intermediate factors: cli/tests/gear_file.rs's tolerance.
+        return abs(value - printed) <= half_unit + 1e-3 * abs(printed)
+
     for member, bending, sf in [("pinion", 6417.0, 5.62), ("gear", 4854.0, 6.82)]:
         m = rating["rating"][member]
-        assert abs(m["bending_stress"] / psi - bending) <= 0.5, member
-        assert abs(m["bending_safety_factor"] - sf) <= 0.005, member
+        assert close(m["bending_stress"] / psi, bending, 0.5), member
+        assert close(m["bending_safety_factor"], sf, 0.005), member
 
 
 # Bad input: CaseError naming the field, as the command line says it.

@@ -301,13 +301,14 @@ pub(crate) fn run_trains(
     let results: Vec<Result<(MechanismResult, TrainRows), String>> = trains
         .par_iter()
         .map(|(m, shift, label)| {
-            let (summary, warnings, rows) = run_mechanism(case, m.as_ref(), *shift, label, to).map_err(|e| {
-                format!(
-                    "{}: case \"{}\": {label}: {e}",
-                    case.file.display(),
-                    case.name
-                )
-            })?;
+            let (summary, warnings, rows) = run_mechanism(case, m.as_ref(), *shift, label, to)
+                .map_err(|e| {
+                    format!(
+                        "{}: case \"{}\": {label}: {e}",
+                        case.file.display(),
+                        case.name
+                    )
+                })?;
             for w in &warnings {
                 tracing::warn!(
                     "{}: case \"{}\": {label}: {w}",
