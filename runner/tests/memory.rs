@@ -92,7 +92,11 @@ fn a_sweep_in_memory_is_sweep_csv() {
     let table: toml::Table = toml::from_str(&text).unwrap();
     let cases = cases_of_table(Path::new("memory-sweep.toml"), table).unwrap();
     let results: Vec<_> = run_sweep(&cases).into_iter().map(Result::unwrap).collect();
-    let points: Vec<_> = cases.iter().zip(&results).map(|(c, r)| (c, &r[..])).collect();
+    let points: Vec<_> = cases
+        .iter()
+        .zip(&results)
+        .map(|(c, r)| (c, &r[..]))
+        .collect();
     let t = SweepTable::new(&points);
     let mut csv = csv::Reader::from_reader(written.as_bytes());
     let header: Vec<String> = csv.headers().unwrap().iter().map(String::from).collect();

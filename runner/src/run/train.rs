@@ -67,6 +67,16 @@ pub(crate) enum StepsTo<'p> {
     Memory,
 }
 
+impl<'p> StepsTo<'p> {
+    /// The folder of the per-step files, if any, and whether the charts are recorded.
+    fn files(self) -> (Option<&'p Path>, bool) {
+        match self {
+            StepsTo::Files { dir, charts } => (Some(dir), charts),
+            StepsTo::Summary | StepsTo::Memory => (None, false),
+        }
+    }
+}
+
 /// What one crank train's run gives besides its summary and warnings: the report's chart
 /// series and its per-step columns, each if asked.
 #[derive(Default)]
@@ -104,10 +114,7 @@ fn run_mechanism(
         gas: case.gas.is_some(),
         stages: &columns,
     };
-    let (dir, charts) = match to {
-        StepsTo::Files { dir, charts } => (Some(dir), charts),
-        StepsTo::Summary | StepsTo::Memory => (None, false),
-    };
+    let (dir, charts) = to.files();
     let mut per_step = match dir {
         Some(dir) => PerStepSink::create(
             dir,
