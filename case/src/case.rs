@@ -240,7 +240,13 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
         file: file.into(),
         source,
     })?;
-    let table = toml_table(file, &text)?;
+    cases_of_table(file, toml_table(file, &text)?)
+}
+
+/// The cases of a case file's table read as TOML (or made otherwise, e.g. by the Python
+/// package from a dict): one case, or every point of its `[sweep]`. `file` is only for the
+/// messages. The same reader as [`load_file`]'s, so the same errors.
+pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, CaseError> {
     match crate::sweep::expand(file, table.clone())? {
         None => Ok(vec![from_table(file, table)?]),
         Some((sweep, points)) => {
@@ -266,7 +272,7 @@ pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
 }
 
 /// The TOML of a case file; a syntax error as the TOML reader says it, with line and column.
-fn toml_table(file: &Path, text: &str) -> Result<toml::Table, CaseError> {
+pub fn toml_table(file: &Path, text: &str) -> Result<toml::Table, CaseError> {
     toml::from_str(text).map_err(|e: toml::de::Error| CaseError::Syntax {
         file: file.into(),
         message: e.to_string().trim_end().to_string(),

@@ -1,5 +1,7 @@
 //! The runner in-process: one shipped case with gas, summaries only and with its per-step
-//! files (CSV, NPY: written by their own thread, into a temporary folder); and a sweep of 10 000
+//! files (CSV, NPY: written by their own thread, into a temporary folder), and read from its
+//! text and run in memory as the Python package does (with and without its per-step columns);
+//! and a sweep of 10 000
 //! two-mechanism pump cases of 720 steps with gas, summaries only, on every core, without and
 //! with the thesis's loss models (the issue-8
 //! target through `cardan run` is 20 s; this is the computation without the files).
@@ -24,6 +26,20 @@ fn runner(c: &mut Criterion) {
     c.bench_function("full_case_pump_7200_steps_two_mechanisms", |b| {
         b.iter(|| black_box(run_case(black_box(&one), None).unwrap()))
     });
+    // The work of the Python package's `cardan.run(text)` (python/benches/run.py times it):
+    // the case read and validated, run in memory, its summary.json value, with and without the
+    // per-step columns.
+    for (label, steps) in [("in_memory_steps", true), ("in_memory_summary", false)] {
+        c.bench_function(
+            &format!("case_text_pump_7200_steps_two_mechanisms_{label}"),
+            |b| {
+                b.iter(|| {
+                    let case = case::parse(Path::new("pump.toml"), black_box(&pump)).unwrap();
+                    black_box(cardan_runner::memory::run_in_memory(&case, steps).unwrap())
+                })
+            },
+        );
+    }
     // Into a fresh folder each time, as a run writes new files (rewriting the same files would
     // time the file system's truncation instead).
     let dir = tempfile::tempdir().unwrap();

@@ -12,11 +12,15 @@
 //! steps: the NPY file's size is known in advance (rows × columns), so every block's column
 //! pieces are written in place.
 //!
+//! A caller that wants the rows in memory (the Python package) takes them as columns
+//! ([`ColumnSink`], `columns.rs`), filled by the same row.
+//!
 //! The row's definition is `row.rs`; the sink that writes the files (and records the charts of the
 //! rows it writes) `sink.rs`, the one for the charts alone (and the chart recorder both use)
 //! `charts.rs`; the writing thread `writer.rs`, the file formats `csv.rs` and `npy.rs`.
 
 mod charts;
+mod columns;
 mod csv;
 mod npy;
 mod row;
@@ -24,6 +28,7 @@ mod sink;
 mod writer;
 
 pub use charts::ChartSink;
+pub use columns::{ColumnSink, StepColumns};
 pub use npy::npy_header;
 pub use row::{Row, RunLayout, COLUMNS};
 pub use sink::PerStepSink;

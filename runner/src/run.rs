@@ -30,3 +30,4 @@ pub use options::{Progress, Report, RunOptions};
 pub use size::{estimated_bytes, human_bytes, DEFAULT_MAX_BYTES};
 pub use table::{case_folders, CASE_FOLDERS_UP_TO};
 pub use train::run_case;
+pub(crate) use train::{run_trains, StepsTo};

@@ -4,7 +4,7 @@
 use super::options::RunOptions;
 use super::size::check_size;
 use super::stamp::{self, Cell};
-use super::train::run_trains;
+use super::train::{run_trains, StepsTo};
 use crate::output::{self, MechanismResult};
 use anyhow::Context;
 use cardan_case::case::Case;
@@ -59,11 +59,15 @@ pub(super) fn run_and_write(
     }
     check_size(case, options)?;
     let tmp = files::temporary_dir(&dir).map_err(cannot_write)?;
-    let result = run_trains(case, Some(&tmp), report).and_then(|trains| {
+    let to = StepsTo::Files {
+        dir: &tmp,
+        charts: report,
+    };
+    let result = run_trains(case, to).and_then(|trains| {
         // The chart series go to the report, and are dropped with it: a batch keeps only
         // the summaries.
         let (results, series): (Vec<MechanismResult>, Vec<Option<ChartData>>) =
-            trains.into_iter().unzip();
+            trains.into_iter().map(|(r, rows)| (r, rows.charts)).unzip();
         let charts: std::collections::BTreeMap<String, ChartData> = results
             .iter()
             .zip(series)

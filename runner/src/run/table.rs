@@ -11,7 +11,7 @@
 //! them; docs/results.md shows how.
 
 use super::options::RunOptions;
-use super::train::run_trains;
+use super::train::{run_trains, StepsTo};
 use crate::output::MechanismResult;
 use anyhow::Context;
 use cardan_case::case::Case;
@@ -288,7 +288,7 @@ pub(super) fn run_table(
                 .par_iter()
                 .map(|case| {
                     let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                        run_trains(case, None, false)
+                        run_trains(case, StepsTo::Summary)
                     }))
                     .unwrap_or_else(|_| {
                         Err(format!(

@@ -4,12 +4,12 @@
 
 use super::sampling::{sampling_warning, shifted_peaks, SAMPLING_CHECK_STEPS_PER_REV};
 use crate::output::MechanismResult;
-use crate::per_step::{ChartSink, PerStepSink, RunLayout};
+use crate::per_step::{ChartSink, ColumnSink, PerStepSink, RunLayout, StepColumns};
 use cardan_case::case::Case;
 use cardan_case::setup::Setup;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, run_parallel, Gas, Inertial, LoadFamily, Solver, Stage, Summary, SummarySink,
+    run, run_parallel, Gas, Inertial, LoadFamily, Sink, Solver, Stage, Summary, SummarySink,
 };
 use cardan_gas::GasMetric;
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
@@ -27,21 +27,50 @@ fn mean_speed(case: &Case) -> f64 {
     }
 }
 
+/// Where a crank train's per-step rows go besides its summary.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum StepsTo<'p> {
+    /// Nowhere: the summary alone (the run shared by the threads).
+    Summary,
+    /// The per-step files `case.output` asks for, in the folder `dir`; with `charts`, the
+    /// report's charts too.
+    Files { dir: &'p Path, charts: bool },
+    /// Memory, as columns ([`ColumnSink`]: every `case.output.decimation`-th step and the last).
+    Memory,
+}
+
+impl<'p> StepsTo<'p> {
+    /// The folder of the per-step files, if any, and whether the charts are recorded.
+    fn files(self) -> (Option<&'p Path>, bool) {
+        match self {
+            StepsTo::Files { dir, charts } => (Some(dir), charts),
+            StepsTo::Summary | StepsTo::Memory => (None, false),
+        }
+    }
+}
+
+/// What one crank train's run gives besides its summary and warnings: the report's chart
+/// series and its per-step columns, each if asked.
+#[derive(Default)]
+pub(crate) struct TrainRows {
+    pub charts: Option<ChartData>,
+    pub columns: Option<StepColumns>,
+}
+
 /// Runs one crank train of `case`: `mechanism` (its stages copied from its `setup`, which
-/// validation built) with its crank `shift` (rad) ahead of the case's (the second train of a phased opposed-piston case; 0 otherwise), writing its
-/// per-step files (named `label`, as `case.output` asks) into `dir` if given. Both trains'
-/// pistons see the one chamber's pressure. With `dir` and `charts`, it also records the
-/// series of the report's charts (thinned as it steps, see `report/src/envelope.rs`) and returns
-/// them, so that the report need not read the CSV back, nor the CSV exist.
+/// validation built) with its crank `shift` (rad) ahead of the case's (the second train of a
+/// phased opposed-piston case; 0 otherwise), its per-step rows (named `label`) where `to` says.
+/// Both trains' pistons see the one chamber's pressure. With files and charts, it also records
+/// the series of the report's charts (thinned as it steps, see `report/src/envelope.rs`) and
+/// returns them, so that the report need not read the CSV back, nor the CSV exist.
 fn run_mechanism(
     case: &Case,
     mechanism: &dyn Mechanism,
     setup: &Setup,
     shift: f64,
     label: &str,
-    dir: Option<&Path>,
-    charts: bool,
-) -> Result<(Summary, Option<ChartData>, Vec<String>), String> {
+    to: StepsTo,
+) -> Result<(Summary, Vec<String>, TrainRows), String> {
     let inertial = Inertial(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
@@ -58,6 +87,7 @@ fn run_mechanism(
         gas: case.gas.is_some(),
         stages: &columns,
     };
+    let (dir, charts) = to.files();
     let mut per_step = match dir {
         Some(dir) => PerStepSink::create(
             dir,
@@ -71,10 +101,12 @@ fn run_mechanism(
         .map_err(|e| format!("{e:#}"))?,
         None => None,
     };
+    let mut columns = matches!(to, StepsTo::Memory)
+        .then(|| ColumnSink::new(mechanism, &layout, case.output.decimation, case.steps));
     // Without files, the charts take their rows on their own, so that the run can be shared.
     let mut sinks = (
         summary,
-        (per_step.is_none() && dir.is_some() && charts).then(|| {
+        (per_step.is_none() && charts).then(|| {
             ChartSink::new(
                 mechanism,
                 &layout,
@@ -105,9 +137,14 @@ fn run_mechanism(
             .iter_mut()
             .map(|s| &mut **s as &mut dyn Stage)
             .collect();
-        // Without files the run is shared by the threads (the same results bit for bit); the
-        // files are written in the steps' order, by a thread of their own.
-        match per_step.as_mut() {
+        // Without rows kept the run is shared by the threads (the same results bit for bit);
+        // the files are written in the steps' order, by a thread of their own.
+        let kept: Option<&mut dyn Sink> = match (per_step.as_mut(), columns.as_mut()) {
+            (Some(p), _) => Some(p),
+            (None, Some(c)) => Some(c),
+            (None, None) => None,
+        };
+        match kept {
             Some(p) => run(
                 mechanism,
                 &mut grid,
@@ -166,7 +203,11 @@ fn run_mechanism(
     let warnings = sampling_warning(&summary, &shifted, case.steps, per_rev)
         .into_iter()
         .collect();
-    Ok((summary, charts, warnings))
+    let rows = TrainRows {
+        charts,
+        columns: columns.map(ColumnSink::finish),
+    };
+    Ok((summary, warnings, rows))
 }
 
 /// The summary of `mechanism`'s run in `case` from its sink, with the gas model's metrics and,
@@ -216,16 +257,19 @@ fn finish_summary(
 /// A failure names the file, the case, the mechanism, and the step and quantity that went
 /// wrong.
 pub fn run_case(case: &Case, dir: Option<&Path>) -> Result<Vec<MechanismResult>, String> {
-    let trains = run_trains(case, dir, false)?;
+    let to = match dir {
+        Some(dir) => StepsTo::Files { dir, charts: false },
+        None => StepsTo::Summary,
+    };
+    let trains = run_trains(case, to)?;
     Ok(trains.into_iter().map(|(r, _)| r).collect())
 }
 
-/// [`run_case`], with each crank train's chart series if `charts` (and `dir`) are given.
-pub(super) fn run_trains(
+/// [`run_case`], each crank train's per-step rows where `to` says, with its [`TrainRows`].
+pub(crate) fn run_trains(
     case: &Case,
-    dir: Option<&Path>,
-    charts: bool,
-) -> Result<Vec<(MechanismResult, Option<ChartData>)>, String> {
+    to: StepsTo,
+) -> Result<Vec<(MechanismResult, TrainRows)>, String> {
     // Each mechanism's crank train, and its second one in a phased opposed-piston case.
     let mut trains = Vec::new();
     for (m, setup) in case.mechanisms.iter().zip(&case.setups) {
@@ -234,19 +278,17 @@ pub(super) fn run_trains(
             trains.push((m, setup, case.crank_phase, format!("{}_crank2", m.name())));
         }
     }
-    let results: Vec<Result<(MechanismResult, Option<ChartData>), String>> = trains
+    let results: Vec<Result<(MechanismResult, TrainRows), String>> = trains
         .par_iter()
         .map(|(m, setup, shift, label)| {
-            let (summary, series, warnings) =
-                run_mechanism(case, m.as_ref(), setup, *shift, label, dir, charts).map_err(
-                    |e| {
-                        format!(
-                            "{}: case \"{}\": {label}: {e}",
-                            case.file.display(),
-                            case.name
-                        )
-                    },
-                )?;
+            let (summary, warnings, rows) =
+                run_mechanism(case, m.as_ref(), setup, *shift, label, to).map_err(|e| {
+                    format!(
+                        "{}: case \"{}\": {label}: {e}",
+                        case.file.display(),
+                        case.name
+                    )
+                })?;
             for w in &warnings {
                 tracing::warn!(
                     "{}: case \"{}\": {label}: {w}",
@@ -260,7 +302,7 @@ pub(super) fn run_trains(
                 summary,
                 warnings,
             };
-            Ok((result, series))
+            Ok((result, rows))
         })
         .collect();
     // Every mechanism's failure, not only the first.
