@@ -72,6 +72,9 @@ pub struct Case {
     /// The gear pair and rating data of every gear mesh; without it no mesh is rated.
     pub gear: Option<GearSpec>,
     pub output: OutputOptions,
+    /// The machine's layout and balancing devices (`[layout]`, `[balance]`; default: one
+    /// cylinder, none).
+    pub balance: cardan_balance::MachineBalance,
     /// The sweep this case is a point of (its results go to `out/<sweep>/<case>/`), and the
     /// value of each swept field (dotted path, value as written).
     pub sweep: Option<(String, Vec<(String, String)>)>,
@@ -106,6 +109,10 @@ pub struct CaseFile {
     pub gear: Option<crate::gear::GearTable>,
     #[serde(default)]
     pub output: OutputTable,
+    /// The machine's cylinders: several on one crankshaft; without it, one cylinder.
+    pub layout: Option<crate::balance::LayoutTable>,
+    /// Counterweights and balance shafts; without it, none (a balanced crankshaft).
+    pub balance: Option<crate::balance::BalanceTable>,
 }
 
 /// `[geometry]`: the machine's shared dimensions.
@@ -427,6 +434,8 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
             Some(f)
         }
     };
+    let balance = crate::balance::build(raw.layout.as_ref(), raw.balance.as_ref(), &invalid)?;
+    check_machine(&balance, &mechanisms, pistons, &invalid)?;
     Ok(Case {
         file: file.into(),
         name: raw.name.0,
@@ -442,8 +451,45 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         friction,
         gear,
         output: (&raw.output).into(),
+        balance,
         sweep: None,
     })
+}
+
+/// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a
+/// mechanism whose pistons move in no cylinder, a balancing device the mechanism has no body
+/// for ([`cardan_balance::MachineBalance::prepare`]).
+fn check_machine(
+    machine: &cardan_balance::MachineBalance,
+    mechanisms: &[Arc<dyn Mechanism>],
+    pistons: u32,
+    invalid: &Invalid,
+) -> Result<(), CaseError> {
+    let n = machine.layout.cylinders.len();
+    if n > 1 && pistons == 2 {
+        return Err(invalid(
+            "layout.cylinders",
+            &n,
+            "a machine of several opposed-piston cylinders is not modelled: run one cylinder",
+        ));
+    }
+    for m in mechanisms {
+        if n > 1 && !m.has_cylinder() {
+            return Err(invalid(
+                "layout.cylinders",
+                &n,
+                &format!(
+                    "the {}'s pistons move in no cylinder: it cannot form a machine of several cylinders",
+                    m.name()
+                ),
+            ));
+        }
+        if let Err(e) = machine.prepare(Arc::clone(m)) {
+            let (field, rule) = e.split_once(": ").unwrap_or(("balance", &e));
+            return Err(invalid(field, &format!("(for the {})", m.name()), rule));
+        }
+    }
+    Ok(())
 }
 
 /// The case's mechanisms from the registry, each with its masses and options, checked over the

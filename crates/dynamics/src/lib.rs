@@ -22,6 +22,7 @@ pub mod fmep;
 pub mod gear_rating;
 pub mod loss_models;
 pub mod losses;
+pub mod machine_balance;
 pub mod mesh;
 pub mod metrics;
 pub mod parallel;
@@ -40,6 +41,7 @@ pub use engine_losses::{
 pub use family::{Gas, Inertial, LoadFamily, Solver};
 pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
 pub use gear_rating::{GearRatings, MeshRating};
+pub use machine_balance::MachineStage;
 pub use loss_models::{Attachment, LossModel, Parameters, Setting, LOSS_MODELS};
 pub use losses::{
     At, Bearing, BearingSize, Friction, Loss, LossBudget, MeshLossModel, Oil, Rings, Skirt,

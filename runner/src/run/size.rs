@@ -39,7 +39,7 @@ pub fn estimated_bytes(case: &Case) -> Result<(u64, String), String> {
     let trains = if case.crank_phase != 0.0 { 2 } else { 1 };
     let mut columns = 0u64;
     for m in &case.mechanisms {
-        let stages = stages_of(case, m.as_ref())?;
+        let stages = stages_of(case, m)?;
         let layout = RunLayout {
             families: &names,
             gas: case.gas.is_some(),

@@ -8,8 +8,8 @@ use crate::per_step::{ChartSink, PerStepSink, RunLayout};
 use cardan_case::case::Case;
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, Solver, Stage, Summary,
-    SummarySink,
+    run, run_parallel, Gas, GearRatings, Inertial, LoadFamily, LossBudget, MachineStage, Solver,
+    Stage, Summary, SummarySink,
 };
 use cardan_gas::GasMetric;
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
@@ -31,8 +31,9 @@ fn mean_speed(case: &Case) -> f64 {
 /// budget (which takes their mesh losses).
 pub(super) fn stages_of(
     case: &Case,
-    mechanism: &dyn Mechanism,
+    shared: &Arc<dyn Mechanism>,
 ) -> Result<Vec<Box<dyn Stage>>, String> {
+    let mechanism = shared.as_ref();
     let losses = match &case.friction {
         Some(f) => Some(
             LossBudget::new(f, mechanism, case.geometry.bore)
@@ -49,9 +50,16 @@ pub(super) fn stages_of(
         None => None,
     };
     let gears = gears.map(|g| Box::new(g) as Box<dyn Stage>);
+    // The machine's balance: its orders at the case's initial speed (issue 24).
+    let balance = MachineStage::new(
+        &case.balance,
+        Arc::clone(shared),
+        case.motion.initial_speed,
+    )?;
     Ok(gears
         .into_iter()
         .chain(losses.map(|l| Box::new(l) as _))
+        .chain([Box::new(balance) as _])
         .collect())
 }
 
@@ -63,7 +71,7 @@ pub(super) fn stages_of(
 /// them, so that the report need not read the CSV back, nor the CSV exist.
 fn run_mechanism(
     case: &Case,
-    mechanism: &dyn Mechanism,
+    shared: &Arc<dyn Mechanism>,
     shift: f64,
     label: &str,
     dir: Option<&Path>,
@@ -76,7 +84,8 @@ fn run_mechanism(
         families.push(&gas_family);
     }
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
-    let mut stages = stages_of(case, mechanism)?;
+    let mechanism = shared.as_ref();
+    let mut stages = stages_of(case, shared)?;
     let listed: Vec<&dyn Stage> = stages.iter().map(|s| s.as_ref()).collect();
     let summary = SummarySink::new(mechanism, &names, case.steps + 1).with_stages(&listed);
     let columns: Vec<_> = stages.iter().map(|s| s.columns()).collect();
@@ -265,7 +274,7 @@ pub(super) fn run_trains(
         .par_iter()
         .map(|(m, shift, label)| {
             let (summary, series, warnings) =
-                run_mechanism(case, m.as_ref(), *shift, label, dir, charts).map_err(|e| {
+                run_mechanism(case, m, *shift, label, dir, charts).map_err(|e| {
                     format!(
                         "{}: case \"{}\": {label}: {e}",
                         case.file.display(),
