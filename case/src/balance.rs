@@ -224,7 +224,11 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
         ));
     }
     if kind == LayoutKind::Radial && n < 3 {
-        return Err(invalid("layout.cylinders", &n, "a radial engine has at least 3 cylinders"));
+        return Err(invalid(
+            "layout.cylinders",
+            &n,
+            "a radial engine has at least 3 cylinders",
+        ));
     }
     let firing = match &t.firing_order {
         None => None,
@@ -252,7 +256,11 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
     let positions = per_cylinder("axial_positions", &t.axial_positions, n, |q| q.si, invalid)?;
     let bank = match &t.bank_angle {
         Some(b) if !(b.si > 0.0 && b.si <= PI + 1e-12) => {
-            return Err(invalid("layout.bank_angle", &b.written, "must be in (0°, 180°]"))
+            return Err(invalid(
+                "layout.bank_angle",
+                &b.written,
+                "must be in (0°, 180°]",
+            ))
         }
         Some(b) => b.si,
         None => PI / 2.0,
@@ -268,7 +276,9 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
                 Some(order) => throws_from_firing_order(order, interval),
                 None => inline_throws(n),
             };
-            (0..n).map(|i| (default[i], 0.0, i as f64 * spacing)).collect()
+            (0..n)
+                .map(|i| (default[i], 0.0, i as f64 * spacing))
+                .collect()
         }
         LayoutKind::Vee => {
             let pins = inline_throws(n / 2);
@@ -290,7 +300,9 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
                 })
                 .collect()
         }
-        LayoutKind::Radial => (0..n).map(|i| (0.0, TAU * i as f64 / n as f64, 0.0)).collect(),
+        LayoutKind::Radial => (0..n)
+            .map(|i| (0.0, TAU * i as f64 / n as f64, 0.0))
+            .collect(),
         LayoutKind::Custom => (0..n)
             .map(|i| {
                 let axis = axes.as_ref().map_or(0.0, |a| a[i]);
@@ -323,7 +335,12 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
 /// two-stroke fires there, a four-stroke at δ_i or δ_i + 2π: the one nearest its place j in
 /// the firing order, j·interval (the firing order given, or taken greedily: at each place the
 /// cylinder with a top dead centre nearest it, the lowest number first).
-fn firing_delays(layout: &Layout, order: Option<&[usize]>, cycle: Cycle, interval: f64) -> Vec<f64> {
+fn firing_delays(
+    layout: &Layout,
+    order: Option<&[usize]>,
+    cycle: Cycle,
+    interval: f64,
+) -> Vec<f64> {
     let n = layout.cylinders.len();
     let delta: Vec<f64> = layout
         .cylinders
@@ -347,7 +364,10 @@ fn firing_delays(layout: &Layout, order: Option<&[usize]>, cycle: Cycle, interva
         candidates(i)
             .into_iter()
             .map(|d| (distance(d, target), d))
-            .fold((f64::INFINITY, 0.0), |a, b| if b.0 < a.0 - 1e-12 { b } else { a })
+            .fold(
+                (f64::INFINITY, 0.0),
+                |a, b| if b.0 < a.0 - 1e-12 { b } else { a },
+            )
     };
     let mut delay = vec![f64::NAN; n];
     delay[0] = 0.0;
@@ -373,7 +393,11 @@ fn firing_delays(layout: &Layout, order: Option<&[usize]>, cycle: Cycle, interva
             let mut d = vec![0.0; n];
             for (j, &c) in order.iter().enumerate() {
                 let target = (j as f64 * interval - base).rem_euclid(period);
-                d[c - 1] = if c == 1 { 0.0 } else { nearest(c - 1, target).1 };
+                d[c - 1] = if c == 1 {
+                    0.0
+                } else {
+                    nearest(c - 1, target).1
+                };
             }
             return d;
         }
@@ -401,7 +425,9 @@ mod tests {
     }
 
     fn degrees(d: &[f64]) -> Vec<f64> {
-        d.iter().map(|x| (x.to_degrees() * 1e6).round() / 1e6).collect()
+        d.iter()
+            .map(|x| (x.to_degrees() * 1e6).round() / 1e6)
+            .collect()
     }
 
     /// A 90° vee twin on one pin fires 450° and 270° apart; an inline four of the flat crank in
@@ -414,10 +440,7 @@ mod tests {
         let four = machine(&[0.0, 180.0, 180.0, 0.0], &[0.0; 4]);
         let d = firing_delays(&four, Some(&[1, 3, 4, 2]), Cycle::FourStroke, PI);
         assert_eq!(degrees(&d), [0.0, 540.0, 180.0, 360.0]);
-        let radial = machine(
-            &[0.0; 5],
-            &[0.0, 72.0, 144.0, 216.0, 288.0],
-        );
+        let radial = machine(&[0.0; 5], &[0.0, 72.0, 144.0, 216.0, 288.0]);
         let d = firing_delays(&radial, None, Cycle::FourStroke, 4.0 * PI / 5.0);
         assert_eq!(degrees(&d), [0.0, 432.0, 144.0, 576.0, 288.0]);
     }

@@ -4,7 +4,8 @@
 //! the case texts, as a user writes them.
 
 use cardan_case::case::{parse, Case};
-use cardan_runner::{run_case, MechanismResult};
+use cardan_runner::output::MechanismResult;
+use cardan_runner::run_case;
 use cardan_testing::within;
 use std::f64::consts::PI;
 use std::path::Path;
@@ -96,7 +97,12 @@ fn single_cylinders_have_their_closed_form_orders() {
         1e-9,
     );
     let first = metric(&r, "cardan_gear", "shaking_force_order_1");
-    within("cardan order 1, N", first, 2.0 * 2.0 * 0.03 * SPEED * SPEED, 1e-9);
+    within(
+        "cardan order 1, N",
+        first,
+        2.0 * 2.0 * 0.03 * SPEED * SPEED,
+        1e-9,
+    );
     for k in [2, 4] {
         let v = metric(&r, "cardan_gear", &format!("shaking_force_order_{k}"));
         assert!(v < 1e-9 * first, "cardan order {k}: {v} N");
@@ -111,14 +117,19 @@ fn the_cardan_counterweight_pair_leaves_no_shaking_force() {
     let masses = "[masses.cardan_gear]\nwheel_mass = 0.4\ncrank_unbalance = 0.01";
     for acceleration in [0.0, 2000.0] {
         let with = |balance: &str| {
-            let t = text(r#""cardan_gear""#, 720, &format!("{masses}\n{balance}"))
-                .replace("angular_acceleration = 0.0", &format!("angular_acceleration = {acceleration}"));
+            let t = text(r#""cardan_gear""#, 720, &format!("{masses}\n{balance}")).replace(
+                "angular_acceleration = 0.0",
+                &format!("angular_acceleration = {acceleration}"),
+            );
             metric(&results(&t), "cardan_gear", "shaking_force_max")
         };
         let bare = with("");
         let balanced = with("[balance]\ncardan_counterweights = true");
         assert!(bare > 1000.0, "unbalanced {bare} N");
-        assert!(balanced < 1e-12 * bare, "α = {acceleration}: {balanced} N left of {bare} N");
+        assert!(
+            balanced < 1e-12 * bare,
+            "α = {acceleration}: {balanced} N left of {bare} N"
+        );
     }
 }
 
@@ -133,8 +144,18 @@ fn a_half_counterweight_leaves_a_first_order_of_constant_magnitude() {
         "[masses]\nrod_mass = 2.0\npiston_mass = 0.5\ncrank_unbalance = 0.02\n[balance]\ncounterweight = 0.5",
     ));
     let expected = 2.5 * 0.06 * SPEED * SPEED / 2.0;
-    within("peak, N", metric(&r, "scotch_yoke", "shaking_force_max"), expected, 1e-9);
-    within("order 1, N", metric(&r, "scotch_yoke", "shaking_force_order_1"), expected, 1e-9);
+    within(
+        "peak, N",
+        metric(&r, "scotch_yoke", "shaking_force_max"),
+        expected,
+        1e-9,
+    );
+    within(
+        "order 1, N",
+        metric(&r, "scotch_yoke", "shaking_force_order_1"),
+        expected,
+        1e-9,
+    );
 }
 
 /// A textbook problem with its printed answer (`docs/validation/balance.md`: 250 rpm, stroke
@@ -179,8 +200,18 @@ csv = true
     let mut lines = csv.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    let first: Vec<f64> = lines.next().unwrap().split(',').map(|x| x.parse().unwrap()).collect();
-    within("crank angle, deg", first[col("crank_angle_deg")], 120.0, 1e-12);
+    let first: Vec<f64> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    within(
+        "crank angle, deg",
+        first[col("crank_angle_deg")],
+        120.0,
+        1e-12,
+    );
     let force = first[col("shaking_force_x_n")].hypot(first[col("shaking_force_y_n")]);
     within("residual force at 30°, N", force, 3264.0, 3e-4);
     let _ = std::fs::remove_dir_all(&dir);
@@ -193,7 +224,13 @@ csv = true
 #[test]
 fn layouts_cancel_what_the_closed_forms_say() {
     let masses = "[masses]\nrod_mass = 0.0\nrod_inertia = 0.0\npiston_mass = 1.0";
-    let run = |layout: &str| results(&text(r#""slider_crank""#, 360, &format!("{masses}\n{layout}")));
+    let run = |layout: &str| {
+        results(&text(
+            r#""slider_crank""#,
+            360,
+            &format!("{masses}\n{layout}"),
+        ))
+    };
     let p1 = 0.06 * SPEED * SPEED;
     let six = run("[layout]\nkind = \"inline\"\ncylinders = 6\ncylinder_spacing = 0.1");
     for name in [
@@ -215,7 +252,10 @@ fn layouts_cancel_what_the_closed_forms_say() {
     );
     let approx = 4.0 * p1 * lambda;
     let f2 = metric(&four, "slider_crank", "shaking_force_order_2");
-    assert!((f2 / approx - 1.0).abs() < lambda * lambda / 4.0 * 1.1, "4·m·r·ω²·λ to O(λ²)");
+    assert!(
+        (f2 / approx - 1.0).abs() < lambda * lambda / 4.0 * 1.1,
+        "4·m·r·ω²·λ to O(λ²)"
+    );
     let radial = run("[layout]\nkind = \"radial\"\ncylinders = 3");
     within(
         "radial order 1, N",
@@ -264,7 +304,10 @@ combustion_delay = "9.5 deg"
     for m in ["slider_crank", "cardan_gear"] {
         let single = metric(&one, m, "torque_nonuniformity");
         let machine = metric(&four, m, "torque_nonuniformity");
-        assert!(machine < single / 2.0, "{m}: {machine} vs one cylinder's {single}");
+        assert!(
+            machine < single / 2.0,
+            "{m}: {machine} vs one cylinder's {single}"
+        );
     }
 }
 
@@ -273,23 +316,68 @@ combustion_delay = "9.5 deg"
 fn bad_layouts_and_balance_are_refused_naming_the_field() {
     let with = |tables: &str| refused(&text(r#""slider_crank", "cardan_gear""#, 360, tables));
     let cases = [
-        ("[layout]\ncylinders = 4\ncrank_angles = [0, 180, 180]", "layout.crank_angles"),
-        ("[layout]\ncylinders = 4\nfiring_order = [1, 3, 3, 2]", "layout.firing_order"),
-        ("[layout]\nkind = \"vee\"\ncylinders = 2\nbank_angle = 190", "layout.bank_angle"),
-        ("[layout]\nkind = \"vee\"\ncylinders = 2\nbank_angle = 0", "layout.bank_angle"),
-        ("[layout]\ncylinders = 2\nbank_angle = 90", "layout.bank_angle"),
-        ("[layout]\ncylinders = 2\ncylinder_axes = [0, 90]", "layout.cylinder_axes"),
-        ("[layout]\ncylinders = 2\naxial_positions = [0, 0.1]", "layout.axial_positions"),
-        ("[layout]\nkind = \"custom\"\ncylinders = 2\naxial_positions = [0]", "layout.axial_positions"),
-        ("[layout]\nkind = \"radial\"\ncylinders = 3\ncylinder_spacing = 0.1", "layout.cylinder_spacing"),
-        ("[layout]\nkind = \"boxer\"\ncylinders = 3", "layout.cylinders"),
-        ("[layout]\ncylinders = 2\nfiring_ordr = [1, 2]", "layout.firing_ordr"),
+        (
+            "[layout]\ncylinders = 4\ncrank_angles = [0, 180, 180]",
+            "layout.crank_angles",
+        ),
+        (
+            "[layout]\ncylinders = 4\nfiring_order = [1, 3, 3, 2]",
+            "layout.firing_order",
+        ),
+        (
+            "[layout]\nkind = \"vee\"\ncylinders = 2\nbank_angle = 190",
+            "layout.bank_angle",
+        ),
+        (
+            "[layout]\nkind = \"vee\"\ncylinders = 2\nbank_angle = 0",
+            "layout.bank_angle",
+        ),
+        (
+            "[layout]\ncylinders = 2\nbank_angle = 90",
+            "layout.bank_angle",
+        ),
+        (
+            "[layout]\ncylinders = 2\ncylinder_axes = [0, 90]",
+            "layout.cylinder_axes",
+        ),
+        (
+            "[layout]\ncylinders = 2\naxial_positions = [0, 0.1]",
+            "layout.axial_positions",
+        ),
+        (
+            "[layout]\nkind = \"custom\"\ncylinders = 2\naxial_positions = [0]",
+            "layout.axial_positions",
+        ),
+        (
+            "[layout]\nkind = \"radial\"\ncylinders = 3\ncylinder_spacing = 0.1",
+            "layout.cylinder_spacing",
+        ),
+        (
+            "[layout]\nkind = \"boxer\"\ncylinders = 3",
+            "layout.cylinders",
+        ),
+        (
+            "[layout]\ncylinders = 2\nfiring_ordr = [1, 2]",
+            "layout.firing_ordr",
+        ),
         ("[balance]\ncounterweight = 1.5", "balance.counterweight"),
         ("[balance]\ncounterweight = -0.5", "balance.counterweight"),
-        ("[balance]\nbalance_shafts = \"lanchaster\"", "balance.balance_shafts"),
-        ("[balance]\ncardan_counterweights = true", "balance.cardan_counterweights"),
-        ("[masses]\ncrank_unbalance = -0.01", "masses.crank_unbalance"),
-        ("[masses.cardan_gear]\nwheel_mass = -1", "masses.cardan_gear.wheel_mass"),
+        (
+            "[balance]\nbalance_shafts = \"lanchaster\"",
+            "balance.balance_shafts",
+        ),
+        (
+            "[balance]\ncardan_counterweights = true",
+            "balance.cardan_counterweights",
+        ),
+        (
+            "[masses]\ncrank_unbalance = -0.01",
+            "masses.crank_unbalance",
+        ),
+        (
+            "[masses.cardan_gear]\nwheel_mass = -1",
+            "masses.cardan_gear.wheel_mass",
+        ),
         ("[masses]\nwheel_mass = 1", "masses.wheel_mass"),
     ];
     for (tables, field) in cases {

@@ -41,11 +41,11 @@ pub use engine_losses::{
 pub use family::{Gas, Inertial, LoadFamily, Solver};
 pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
 pub use gear_rating::{GearRatings, MeshRating};
-pub use machine_balance::MachineStage;
 pub use loss_models::{Attachment, LossModel, Parameters, Setting, LOSS_MODELS};
 pub use losses::{
     At, Bearing, BearingSize, Friction, Loss, LossBudget, MeshLossModel, Oil, Rings, Skirt,
 };
+pub use machine_balance::MachineStage;
 pub use mesh::{radial, tangential, GearMaterial, GearSpec, ToothLoad};
 pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
 pub use parallel::{run_parallel, run_summary, Joinable};

@@ -51,11 +51,7 @@ pub(super) fn stages_of(
     };
     let gears = gears.map(|g| Box::new(g) as Box<dyn Stage>);
     // The machine's balance: its orders at the case's initial speed (issue 24).
-    let balance = MachineStage::new(
-        &case.balance,
-        Arc::clone(shared),
-        case.motion.initial_speed,
-    )?;
+    let balance = MachineStage::new(&case.balance, Arc::clone(shared), case.motion.initial_speed)?;
     Ok(gears
         .into_iter()
         .chain(losses.map(|l| Box::new(l) as _))
@@ -273,8 +269,8 @@ pub(super) fn run_trains(
     let results: Vec<Result<(MechanismResult, Option<ChartData>), String>> = trains
         .par_iter()
         .map(|(m, shift, label)| {
-            let (summary, series, warnings) =
-                run_mechanism(case, m, *shift, label, dir, charts).map_err(|e| {
+            let (summary, series, warnings) = run_mechanism(case, m, *shift, label, dir, charts)
+                .map_err(|e| {
                     format!(
                         "{}: case \"{}\": {label}: {e}",
                         case.file.display(),

@@ -74,7 +74,10 @@ pub fn every_machine() -> Vec<(String, Box<dyn Mechanism>)> {
     ));
     // A wheel that carries its own mass (issue 24), in every reading of every mechanism that
     // has one (the registry's `unused_masses` says which).
-    for e in MECHANISMS.iter().filter(|e| !e.unused_masses.contains(&"wheel_mass")) {
+    for e in MECHANISMS
+        .iter()
+        .filter(|e| !e.unused_masses.contains(&"wheel_mass"))
+    {
         let masses = MassInputs {
             wheel_mass: Some(0.7),
             ..thesis_masses(e.name, Material::Steel)
