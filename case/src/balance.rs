@@ -55,7 +55,8 @@ pub enum LayoutKind {
     /// crank pin; cylinders 1, 3, 5, ... on the first bank.
     Vee,
     /// Opposed cylinders (axes 180° apart, cylinders 1, 3, ... on the first side), each on its
-    /// own throw.
+    /// own throw, each opposed pair at its top dead centres together, the pairs' throws evenly
+    /// apart.
     Boxer,
     /// Cylinders equally spaced round the crank axis in one plane, every rod on the one crank
     /// pin.
@@ -291,8 +292,11 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
         }
         LayoutKind::Boxer => {
             // Opposed pairs on throws 180° apart: both pistons at their top dead centres
-            // together; the pairs' throws as an inline machine of half as many.
-            let pairs = inline_throws(n / 2);
+            // together; the pairs' throws evenly apart (360°/pairs, in the inline order of as
+            // many cylinders): the flat four's 0°, 180°, 180°, 0°, free of first-order
+            // couples, its second-order couple left (docs/validation/balance.md).
+            let m = n / 2;
+            let pairs = throws_from_firing_order(&inline_firing_order(m), TAU / m as f64);
             (0..n)
                 .map(|i| {
                     let side = if i % 2 == 0 { 0.0 } else { PI };

@@ -219,7 +219,8 @@ csv = true
 
 /// Layouts of the slider-crank: an inline six has no first or second order force or moment
 /// (1e-9 of one cylinder's first order); a flat inline four's second order force is four
-/// cylinders' m·r·ω²·q₂ (≈ 4·m·r·ω²·λ); a three-cylinder radial's first order is (3/2)·m·r·ω²,
+/// cylinders' m·r·ω²·q₂ (≈ 4·m·r·ω²·λ); a boxer four has only a second order couple; a
+/// three-cylinder radial's first order is (3/2)·m·r·ω²,
 /// turning with the crank. One cylinder's first order: m·r·ω², m the reciprocating mass.
 #[test]
 fn layouts_cancel_what_the_closed_forms_say() {
@@ -255,6 +256,23 @@ fn layouts_cancel_what_the_closed_forms_say() {
     assert!(
         (f2 / approx - 1.0).abs() < lambda * lambda / 4.0 * 1.1,
         "4·m·r·ω²·λ to O(λ²)"
+    );
+    // The boxer four (throws 0°, 180°, 180°, 0°, opposed pairs): no first or second order
+    // force, no first order couple; a second order couple of 2·a·m·r·ω²·q₂ (a = 0.1 m).
+    let boxer = run("[layout]\nkind = \"boxer\"\ncylinders = 4\ncylinder_spacing = 0.1");
+    for name in [
+        "shaking_force_order_1",
+        "shaking_force_order_2",
+        "shaking_moment_order_1",
+    ] {
+        let v = metric(&boxer, "slider_crank", name);
+        assert!(v < 1e-9 * p1, "boxer four {name}: {v}");
+    }
+    within(
+        "boxer four second order couple, N·m",
+        metric(&boxer, "slider_crank", "shaking_moment_order_2"),
+        2.0 * 0.1 * p1 * q2(lambda),
+        1e-9,
     );
     let radial = run("[layout]\nkind = \"radial\"\ncylinders = 3");
     within(
