@@ -12,9 +12,7 @@ use crate::data::family_rank;
 pub(crate) fn load_family(column: &str) -> Option<&str> {
     column
         .strip_suffix("_torque_nm")
-        .filter(|f| {
-            !f.is_empty() && !f.contains("_torque_") && *f != "friction" && *f != "machine"
-        })
+        .filter(|f| !f.is_empty() && !f.contains("_torque_") && *f != "friction" && *f != "machine")
 }
 
 /// The machine's balance columns the charts draw (issue 24): the shaking force's components,
