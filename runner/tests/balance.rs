@@ -77,8 +77,8 @@ fn q2(lambda: f64) -> f64 {
     4.0 * s.abs() / lambda
 }
 
-/// The slider-crank's second order is the exact series m_B·r·ω²·(λ + λ³/4 + …) (m_B = piston
-/// + rod·g/l, the rod's two-mass split) and the cardan gear has no second or fourth order (1e-9
+/// The slider-crank's second order is the exact series m_B·r·ω²·(λ + λ³/4 + …) (m_B is the
+/// piston plus rod·g/l, the rod's two-mass split) and the cardan gear has no second or fourth order (1e-9
 /// of its first: round-off). Tolerance 1e-9: sums of 360 terms of round-off.
 #[test]
 fn single_cylinders_have_their_closed_form_orders() {
