@@ -81,6 +81,9 @@ pub struct Case {
     /// them again ([`Case::build_setups`]).
     pub setups: Vec<Setup>,
     pub output: OutputOptions,
+    /// The machine's layout and balancing devices (`[layout]`, `[balance]`; default: one
+    /// cylinder, none).
+    pub balance: cardan_balance::MachineBalance,
     /// The sweep this case is a point of (its results go to `out/<sweep>/<case>/`), and the
     /// value of each swept field (dotted path, value as written).
     pub sweep: Option<(String, Vec<(String, String)>)>,
@@ -115,6 +118,10 @@ pub struct CaseFile {
     pub gear: Option<crate::gear::GearTable>,
     #[serde(default)]
     pub output: OutputTable,
+    /// The machine's cylinders: several on one crankshaft; without it, one cylinder.
+    pub layout: Option<crate::balance::LayoutTable>,
+    /// Counterweights and balance shafts; without it, none (a balanced crankshaft).
+    pub balance: Option<crate::balance::BalanceTable>,
 }
 
 /// `[geometry]`: the machine's shared dimensions.
@@ -435,11 +442,14 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
             Some(f)
         }
     };
+    let balance = crate::balance::build(raw.layout.as_ref(), raw.balance.as_ref(), &invalid)?;
+    check_machine(&balance, &mechanisms, pistons, &invalid)?;
     let setups = setups(
         &mechanisms,
         geometry.bore,
         friction.as_ref(),
         gear.as_ref(),
+        (&balance, motion.initial_speed),
         &invalid,
     )?;
     Ok(Case {
@@ -458,8 +468,45 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         gear,
         setups,
         output: (&raw.output).into(),
+        balance,
         sweep: None,
     })
+}
+
+/// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a
+/// mechanism whose pistons move in no cylinder, a balancing device the mechanism has no body
+/// for ([`cardan_balance::MachineBalance::prepare`]).
+fn check_machine(
+    machine: &cardan_balance::MachineBalance,
+    mechanisms: &[Arc<dyn Mechanism>],
+    pistons: u32,
+    invalid: &Invalid,
+) -> Result<(), CaseError> {
+    let n = machine.layout.cylinders.len();
+    if n > 1 && pistons == 2 {
+        return Err(invalid(
+            "layout.cylinders",
+            &n,
+            "a machine of several opposed-piston cylinders is not modelled: run one cylinder",
+        ));
+    }
+    for m in mechanisms {
+        if n > 1 && !m.has_cylinder() {
+            return Err(invalid(
+                "layout.cylinders",
+                &n,
+                &format!(
+                    "the {}'s pistons move in no cylinder: it cannot form a machine of several cylinders",
+                    m.name()
+                ),
+            ));
+        }
+        if let Err(e) = machine.prepare(Arc::clone(m)) {
+            let (field, rule) = e.split_once(": ").unwrap_or(("balance", &e));
+            return Err(invalid(field, &format!("(for the {})", m.name()), rule));
+        }
+    }
+    Ok(())
 }
 
 /// The case's mechanisms from the registry, each with its masses and options, checked over the
@@ -524,11 +571,12 @@ fn setups(
     bore: f64,
     friction: Option<&Friction>,
     gear: Option<&GearSpec>,
+    machine: (&cardan_balance::MachineBalance, f64),
     invalid: &Invalid,
 ) -> Result<Vec<Setup>, CaseError> {
     let setups = mechanisms
         .iter()
-        .map(|m| Setup::build(m.as_ref(), bore, friction, gear, invalid))
+        .map(|m| Setup::build(m, bore, friction, gear, machine, invalid))
         .collect::<Result<Vec<_>, _>>()?;
     if gear.is_some() && setups.iter().all(|s| s.gear_ratings.is_none()) {
         return Err(invalid(
@@ -556,6 +604,7 @@ impl Case {
             self.geometry.bore,
             self.friction.as_ref(),
             self.gear.as_ref(),
+            (&self.balance, self.motion.initial_speed),
             &invalid,
         )?;
         self.setups = setups;

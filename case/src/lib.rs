@@ -3,6 +3,7 @@
 //! is expanded into one case per point ([`sweep`]). The runner schedules the cases and writes
 //! their results; nothing here steps a machine.
 
+pub mod balance;
 pub mod case;
 pub mod error;
 pub mod friction;

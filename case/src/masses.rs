@@ -3,7 +3,7 @@
 //! A mechanism's own table wins over the common one.
 
 use crate::error::{CaseError, Invalid};
-use crate::quantity::{Inertia, Length, Mass, NonNegative, Quantity};
+use crate::quantity::{Inertia, Length, Mass, MassRadius, NonNegative, Quantity};
 use crate::schema::FieldError;
 use cardan_mechanism::{Entry, MassInputs, MassRules, Material};
 use schemars::JsonSchema;
@@ -27,6 +27,16 @@ pub struct MassTable {
     pub rod_cg: Option<NonNegative<Length>>,
     /// Piston mass (with pin and rings), kg; default: the mass rules.
     pub piston_mass: Option<NonNegative<Mass>>,
+    /// Cardan wheel's mass, kg, its centre of gravity at the wheel's centre (on a circle of the
+    /// cardan crank's radius, a quarter of the stroke); default 0: carried by the balanced
+    /// crankshaft, as the thesis has it (ch. 11.2). It loads the crank pin, the main bearing,
+    /// the drive torque and the shaking force.
+    pub wheel_mass: Option<NonNegative<Mass>>,
+    /// The crank's own unbalance m·e (crank pin and webs, without counterweights), kg·m,
+    /// towards the crank pin; default 0: a balanced crankshaft. It shakes the frame (the
+    /// shaking metrics; [balance] sizes the counterweights with it); the joint loads take the
+    /// crankshaft as balanced.
+    pub crank_unbalance: Option<NonNegative<MassRadius>>,
     /// The rod's material for the estimation rules; default "steel".
     pub rod_material: Option<RodMaterial>,
     /// The reading of the rod estimation rules (docs/mass-rules.md), for the whole machine:
@@ -54,7 +64,7 @@ pub enum Rules {
 
 impl MassTable {
     /// Each mass field's name and (SI value, value as written), where given.
-    fn fields(&self) -> [(&'static str, Option<(f64, &str)>); 6] {
+    fn fields(&self) -> [(&'static str, Option<(f64, &str)>); 8] {
         [
             ("crankshaft_inertia", given(&self.crankshaft_inertia)),
             ("wheel_inertia", given(&self.wheel_inertia)),
@@ -62,6 +72,8 @@ impl MassTable {
             ("rod_inertia", given(&self.rod_inertia)),
             ("rod_cg", given(&self.rod_cg)),
             ("piston_mass", given(&self.piston_mass)),
+            ("wheel_mass", given(&self.wheel_mass)),
+            ("crank_unbalance", given(&self.crank_unbalance)),
         ]
     }
 }
@@ -126,6 +138,8 @@ pub(crate) fn inputs(
             "rod_mass" => &mut inputs.rod_mass,
             "rod_inertia" => &mut inputs.rod_inertia,
             "rod_cg" => &mut inputs.rod_cg,
+            "wheel_mass" => &mut inputs.wheel_mass,
+            "crank_unbalance" => &mut inputs.crank_unbalance,
             _ => &mut inputs.piston_mass,
         };
         *slot = Some(x);

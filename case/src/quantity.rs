@@ -45,6 +45,8 @@ dimensions!(
     Mass,
     /// kg·m²; g·cm².
     Inertia,
+    /// kg·m (a mass times its radius); g·mm, g·cm.
+    MassRadius,
     /// Pa (absolute); kPa, MPa, bar, atm, psi.
     Pressure,
     /// K; °C.

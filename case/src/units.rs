@@ -17,6 +17,8 @@ pub enum Dimension {
     AngularAcceleration,
     Mass,
     Inertia,
+    /// A mass times a radius (an unbalance), kg·m.
+    MassRadius,
     /// Absolute pressure: a bare number is in Pa.
     Pressure,
     /// Absolute temperature: a bare number is in K; "°C" adds 273.15.
@@ -80,6 +82,13 @@ impl Dimension {
                 ("kg·m²", 1.0),
                 ("kg m^2", 1.0),
                 ("g*cm^2", 1e-7),
+            ],
+            Dimension::MassRadius => &[
+                ("kg*m", 1.0),
+                ("kg·m", 1.0),
+                ("kg m", 1.0),
+                ("g*mm", 1e-6),
+                ("g*cm", 1e-5),
             ],
             Dimension::Pressure => &[
                 ("Pa", 1.0),
@@ -157,6 +166,7 @@ impl Dimension {
             Dimension::AngularAcceleration => (0.0, 1e5, "rpm/s", "rpm per second"),
             Dimension::Mass => (0.0, 100.0, "g", "grams"),
             Dimension::Inertia => (0.0, 100.0, "g*cm^2", "g·cm²"),
+            Dimension::MassRadius => (0.0, 100.0, "g*mm", "gram-millimetres"),
             Dimension::Pressure => (1000.0, 1e12, "kPa", "kilopascals"),
             Dimension::Temperature => (100.0, 5000.0, "°C", "degrees Celsius"),
             Dimension::KinematicViscosity => (0.0, 1e-2, "cSt", "centistokes (mm²/s)"),

@@ -83,6 +83,74 @@ pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Ve
         }
     }
     specs.extend(friction_specs(headers, n));
+    specs.extend(balance_specs(headers, n, families.last()));
+    specs
+}
+
+/// The balance charts of the first `n` of `headers` (issue 24): the shaking force's and the
+/// free moment's components over crank angle, and the machine's summed torque against one
+/// cylinder's (the last load family's, the total).
+fn balance_specs(
+    headers: &[Option<Vec<String>>],
+    n: usize,
+    family: Option<&String>,
+) -> Vec<PlotSpec> {
+    let both = |a: &str, b: &str, la: &str, lb: &str| -> Vec<Vec<(String, String)>> {
+        let x = single_column(headers, n, a);
+        let y = single_column(headers, n, b);
+        x.into_iter()
+            .zip(y)
+            .map(|(x, y)| {
+                let x = x.into_iter().map(|(c, _)| (c, la.to_string()));
+                x.chain(y.into_iter().map(|(c, _)| (c, lb.to_string())))
+                    .collect()
+            })
+            .collect()
+    };
+    let mut specs = vec![
+        PlotSpec {
+            file: "shaking_force".into(),
+            title: "Shaking force on the frame (x and y)".into(),
+            y_label: "force".into(),
+            unit: "N".into(),
+            zero_line: true,
+            columns: both("shaking_force_x_n", "shaking_force_y_n", " x", " y"),
+            sum: false,
+        },
+        PlotSpec {
+            file: "shaking_moment".into(),
+            title: "Free moment (pitch and yaw)".into(),
+            y_label: "moment".into(),
+            unit: "N*m".into(),
+            zero_line: true,
+            columns: both(
+                "shaking_moment_pitch_nm",
+                "shaking_moment_yaw_nm",
+                " pitch",
+                " yaw",
+            ),
+            sum: false,
+        },
+    ];
+    if let Some(f) = family {
+        specs.push(PlotSpec {
+            file: "torque_machine".into(),
+            title: "Machine torque (all cylinders) against one cylinder's".into(),
+            y_label: "torque".into(),
+            unit: "N*m".into(),
+            zero_line: true,
+            columns: both(
+                "machine_torque_nm",
+                &format!("{f}_torque_nm"),
+                " machine",
+                " one cylinder",
+            )
+            .into_iter()
+            .map(|c| if c.len() == 2 { c } else { Vec::new() })
+            .collect(),
+            sum: false,
+        });
+    }
     specs
 }
 

@@ -28,6 +28,8 @@ enum Group {
     /// The rating of the gear meshes.
     Gears,
     Losses,
+    /// The machine's shaking forces and moments (the order table).
+    Balance,
     Other,
 }
 
@@ -40,6 +42,7 @@ impl Group {
             Group::Gas => "Cylinder and gas".into(),
             Group::Gears => "Gear rating".into(),
             Group::Losses => "Losses and efficiency".into(),
+            Group::Balance => "Balance: shaking forces and moments".into(),
             Group::Other => "Other".into(),
         }
     }
@@ -83,6 +86,7 @@ fn classify(metric: &str, families: &[String]) -> (Group, (usize, (usize, String
         Some(MetricGroup::Gas) => Group::Gas,
         Some(MetricGroup::GearRating) => Group::Gears,
         Some(MetricGroup::Losses) => Group::Losses,
+        Some(MetricGroup::Balance) => Group::Balance,
     };
     (group, key)
 }

@@ -7,12 +7,23 @@ use crate::data::family_rank;
 
 /// The load family `f` of a drive-torque column `f_torque_nm` (`per_step::COLUMNS`), `None`
 /// for any other column, the friction torque `friction_torque_nm` (a `[friction]` case's, not a
-/// load family: it has no joint forces, and its own chart) among them.
+/// load family: it has no joint forces, and its own chart) and the machine's summed torque
+/// `machine_torque_nm` (a `[layout]` case's) among them.
 pub(crate) fn load_family(column: &str) -> Option<&str> {
     column
         .strip_suffix("_torque_nm")
-        .filter(|f| !f.is_empty() && !f.contains("_torque_") && *f != "friction")
+        .filter(|f| !f.is_empty() && !f.contains("_torque_") && *f != "friction" && *f != "machine")
 }
+
+/// The machine's balance columns the charts draw (issue 24): the shaking force's components,
+/// the free moment's, the machine's summed torque.
+pub(crate) const BALANCE_COLUMNS: [&str; 5] = [
+    "shaking_force_x_n",
+    "shaking_force_y_n",
+    "shaking_moment_pitch_nm",
+    "shaking_moment_yaw_nm",
+    "machine_torque_nm",
+];
 
 /// The power-loss columns of a header (`power_loss_<component>_w`): each one's chart, and
 /// their sum's (the total loss).
@@ -71,6 +82,7 @@ pub(crate) fn wanted_columns(h: &[String], joints: &[String]) -> Vec<String> {
             c.as_str() == "crank_angle_deg"
                 || c.as_str() == "cylinder_pressure_pa"
                 || c.as_str() == "friction_torque_nm"
+                || BALANCE_COLUMNS.contains(&c.as_str())
                 || (c.starts_with("power_loss_") && c.ends_with("_w"))
                 || ["_position_m", "_velocity_m_s", "_acceleration_m_s2"]
                     .iter()

@@ -63,6 +63,16 @@ macro_rules! golden {
 }
 
 golden! {
+    balance_boxer4 => "balance-boxer4",
+    balance_inline3 => "balance-inline3",
+    balance_inline4 => "balance-inline4",
+    balance_inline6 => "balance-inline6",
+    balance_radial5_cardan => "balance-radial5-cardan",
+    balance_thesis_single_cw0 => "balance-thesis-single-cw0",
+    balance_thesis_single_cw100 => "balance-thesis-single-cw100",
+    balance_thesis_single_cw50 => "balance-thesis-single-cw50",
+    balance_vee_twin_90 => "balance-vee-twin-90",
+    balance_w3_cardan => "balance-w3-cardan",
     example_compressor => "example-compressor",
     example_offset_engine => "example-offset-engine",
     example_pressure_trace => "example-pressure-trace",

@@ -24,6 +24,7 @@
 pub mod counterweight;
 pub mod harmonics;
 pub mod layout;
+pub mod machine;
 pub mod shaking;
 
 pub use counterweight::{
@@ -32,4 +33,5 @@ pub use counterweight::{
 };
 pub use harmonics::{orders, revolution, Order};
 pub use layout::{throws_from_firing_order, Cylinder, Layout, MachineOrders, MachineShaking};
+pub use machine::{MachineBalance, PreparedBalance, MAX_ORDER, ORDER_STEPS};
 pub use shaking::{shaking, Shaking};

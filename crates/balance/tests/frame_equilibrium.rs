@@ -45,6 +45,16 @@ fn every_machine() -> Vec<(String, Box<dyn Mechanism>)> {
                 all.push((format!("{} offset", entry.name), m));
             }
         }
+        // A wheel that carries its own mass, where the mechanism has a wheel (issue 24).
+        let wheel = MassInputs {
+            wheel_mass: Some(0.7),
+            ..MassInputs::default()
+        };
+        let with_wheel = !entry.unused_masses.contains(&"wheel_mass");
+        if with_wheel {
+            let m = (entry.build)(&THESIS, &wheel, &Options::new()).unwrap();
+            all.push((format!("{} wheel mass", entry.name), m));
+        }
         for option in entry.options {
             if let OptionKind::Choice(words) = option.kind {
                 for word in &words[1..] {
@@ -52,6 +62,10 @@ fn every_machine() -> Vec<(String, Box<dyn Mechanism>)> {
                     o.insert(option.name.into(), OptionValue::Word(word.to_string()));
                     let m = (entry.build)(&THESIS, &MassInputs::default(), &o).unwrap();
                     all.push((format!("{} {word}", entry.name), m));
+                    if with_wheel {
+                        let m = (entry.build)(&THESIS, &wheel, &o).unwrap();
+                        all.push((format!("{} {word} wheel mass", entry.name), m));
+                    }
                 }
             }
         }

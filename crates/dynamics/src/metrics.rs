@@ -43,17 +43,21 @@ pub enum Group {
     GearRating,
     /// Friction losses, friction mean effective pressures and the mechanical efficiency.
     Losses,
+    /// The machine's shaking force and free moments, their orders, the torque's uniformity
+    /// (issue 24, `cardan-balance`).
+    Balance,
 }
 
 impl Group {
     /// Every group, in report order.
-    pub const ALL: [Group; 6] = [
+    pub const ALL: [Group; 7] = [
         Group::Kinematics,
         Group::JointLoads,
         Group::DriveTorque,
         Group::Gas,
         Group::GearRating,
         Group::Losses,
+        Group::Balance,
     ];
 
     pub fn name(self) -> &'static str {
@@ -64,6 +68,7 @@ impl Group {
             Group::Gas => "cylinder and gas",
             Group::GearRating => "gear rating",
             Group::Losses => "losses and efficiency",
+            Group::Balance => "balance: shaking forces and moments",
         }
     }
 }
@@ -342,11 +347,33 @@ pub const GAS_MODEL: &[MetricDef] = &[
     ),
 ];
 
+/// The machine's balance (issue 24): the shaking force and free moments of all its cylinders
+/// and rotors on the frame, their orders at constant speed, the summed torque's uniformity
+/// (the `machine_balance` stage, `cardan-balance`).
+pub const BALANCE: &[MetricDef] = &[
+    def("shaking_force_max", "N", R, Group::Balance, Lo, "largest magnitude over the run of the machine's shaking force on the frame, −Σ m·a of every moving body and rotor (counterweights, balance shafts) of every cylinder"),
+    def("shaking_force_order_1", "N", R, Group::Balance, Lo, "amplitude of the shaking force's first order (once per revolution): the largest magnitude over a revolution of its forward and backward rotating components together, |A₁| + |B₁|, at constant speed (the case's initial speed)"),
+    def("shaking_force_order_2", "N", R, Group::Balance, Lo, "the same, second order (twice per revolution)"),
+    def("shaking_force_order_4", "N", R, Group::Balance, Lo, "the same, fourth order"),
+    def("shaking_moment_max", "N*m", R, Group::Balance, Lo, "largest magnitude over the run of the machine's free moment about the crank-axis point midway between its outermost cylinders (pitch and yaw; the roll reaction is not part of it)"),
+    def("shaking_moment_order_1", "N*m", R, Group::Balance, Lo, "amplitude of the free moment's first order, |A₁| + |B₁|, at constant speed (the case's initial speed)"),
+    def("shaking_moment_order_2", "N*m", R, Group::Balance, Lo, "the same, second order"),
+    def("torque_nonuniformity", "1", R, Group::Balance, Lo, "(T_max − T_min)/|T_mean| of the machine's total drive torque (every cylinder's), where its mean is not zero"),
+];
+
 /// Every metric a summary may hold, in summary order: the parts above, one after another.
 pub const METRICS: &[MetricDef] = &concat::<{ count(PARTS) }>(PARTS);
 
 /// The registry's parts, in summary order.
-const PARTS: &[&[MetricDef]] = &[RUN, LOSSES, GEAR_RATING, ENGINE_FRICTION, GAS, GAS_MODEL];
+const PARTS: &[&[MetricDef]] = &[
+    RUN,
+    LOSSES,
+    GEAR_RATING,
+    ENGINE_FRICTION,
+    GAS,
+    GAS_MODEL,
+    BALANCE,
+];
 
 /// Definitions in all of `parts`.
 const fn count(parts: &[&[MetricDef]]) -> usize {

@@ -12,8 +12,12 @@ use cardan_mechanism::{Loads, State};
 use std::any::Any;
 use std::ops::Range;
 
+/// The gas at a crank angle: (absolute pressure in Pa, force on each piston in N); `Sync`, so
+/// that the threads sharing a run ([`crate::run_parallel`]) can all ask it.
+pub type GasAt<'a> = &'a (dyn Fn(f64) -> (f64, f64) + Sync);
+
 /// What a stage evaluates at a step.
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub struct StageInput<'a> {
     pub state: &'a State,
     /// The total loads of the step.
@@ -22,6 +26,21 @@ pub struct StageInput<'a> {
     pub inertial: Option<&'a Loads>,
     /// Absolute cylinder pressure, Pa, if a gas model runs.
     pub pressure: Option<f64>,
+    /// The gas at any crank angle (pressure, force on each piston), if a gas model runs: for a
+    /// stage that evaluates the cylinder at other angles (a machine's other cylinders).
+    pub gas: Option<GasAt<'a>>,
+}
+
+impl std::fmt::Debug for StageInput<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.debug_struct("StageInput")
+            .field("state", self.state)
+            .field("total", self.total)
+            .field("inertial", &self.inertial)
+            .field("pressure", &self.pressure)
+            .field("gas", &self.gas.map(|_| "a function of the crank angle"))
+            .finish()
+    }
 }
 
 /// What a step's stages hand on to the stages after them (emptied at every step).

@@ -31,9 +31,7 @@ pub enum RunError {
     Sink { step: usize, message: String },
 }
 
-/// The gas at a crank angle: (absolute pressure in Pa, force on each piston in N); `Sync`, so
-/// that the threads sharing a run ([`crate::run_parallel`]) can all ask it.
-pub type GasAt<'a> = &'a (dyn Fn(f64) -> (f64, f64) + Sync);
+pub use crate::stage::GasAt;
 
 /// Runs `mechanism` through every crank state of `motion`, with the loads of `families`, the
 /// pistons pushed by `gas` if given, the `stages` evaluated in their order from the total
@@ -73,7 +71,8 @@ pub fn run(
     let mut previous_torque = None;
     // A part of a run numbers its steps as the whole run does.
     let mut index = motion.first_index();
-    let loading = Loading::new(families, topology);
+    let mut loading = Loading::new(families, topology);
+    loading.gas = gas;
     let mut ended = false;
     while !ended {
         let stopped;
@@ -211,6 +210,9 @@ struct Loading<'f> {
     inertial: Option<usize>,
     /// The families' names, then `total`.
     names: Vec<&'static str>,
+    /// The gas, for a stage that evaluates the cylinder at other crank angles (the other
+    /// cylinders of a machine, [`StageInput::gas`]).
+    gas: Option<GasAt<'f>>,
 }
 
 impl<'f> Loading<'f> {
@@ -226,6 +228,7 @@ impl<'f> Loading<'f> {
             together_pushed: families.iter().any(|f| f.piston_forces()),
             inertial: families.iter().position(|f| f.inertia()),
             names,
+            gas: None,
         }
     }
 
@@ -387,6 +390,7 @@ impl StepOut {
             },
             inertial: loading.inertial.map(|k| &self.loads[k]),
             pressure: lane.pressure,
+            gas: loading.gas,
         };
         handed.mesh_losses.clear();
         for (stage, values) in stages.iter_mut().zip(&mut self.stages) {

@@ -8,8 +8,10 @@
 //! carries the piston at its upper end b = T + Z_bB·e^{i·90°} (A4.2.2.62-63) and does not turn.
 //! Same stroke as the slider-crank of crank 2r.
 //!
-//! Bodies: crankshaft, cardan wheel (its mass carried by the balanced crankshaft, ch. 11.2),
-//! rod (with the piston: they move together on the cylinder axis). Joints: `main_bearing`
+//! Bodies: crankshaft, cardan wheel (its mass carried by the balanced crankshaft, ch. 11.2,
+//! unless the case gives `wheel_mass`: then the wheel carries it at its centre S, which moves on
+//! the crank's circle; its inertia force −m_w·a_S acts at S and reaches the crank pin, and the
+//! drive supplies m_w·r²·α for it, S × (m_w·a_S)), rod (with the piston: they move together on the cylinder axis). Joints: `main_bearing`
 //! (crankshaft–frame), `crank_pin` (crankshaft–wheel at S), `piston_pin` (rod–wheel at T, the
 //! rod's big end, which Karhula A9.1 calls the piston pin bearing), `gear_mesh` (wheel–ring at
 //! the pitch point). There is no piston side force: the gears guide the rod.
@@ -154,7 +156,7 @@ impl CardanGear {
         let topology = Topology {
             bodies: vec![
                 Body::new("crankshaft", 0.0, crankshaft_inertia),
-                Body::new("wheel", 0.0, wheel_inertia),
+                Body::new("wheel", masses.wheel_mass, wheel_inertia),
                 Body::new(
                     "rod",
                     masses.rod_mass + masses.piston_mass,
@@ -328,14 +330,15 @@ vectorised! {
         out: &mut LoadsBlock,
     ) -> bool {
         let m = &gear.masses;
-        let (mass, crank_inertia, wheel_inertia) = if inertia {
+        let (mass, crank_inertia, wheel_inertia, wheel_mass) = if inertia {
             (
                 m.rod_mass + m.piston_mass,
                 m.crankshaft_inertia,
                 m.wheel_inertia,
+                m.wheel_mass,
             )
         } else {
-            (0.0, 0.0, 0.0)
+            (0.0, 0.0, 0.0, 0.0)
         };
         // −T_1i10c − T_2i10c (A5.2.1.40-46, module note) and −T_3i10c (A5.2.1.52): in the
         // involute reading the wheel's inertia enters through F_t instead.
@@ -344,6 +347,7 @@ vectorised! {
             MeshModel::Involute => crank_inertia,
         };
         let (c, rod, rod_pin, pin) = (&st.crank, &st.bodies[ROD], &st.joints[2], &st.joints[1]);
+        let wheel = &st.bodies[WHEEL];
         let gas = piston_force.unwrap_or(&ZERO);
         let tan = gear.tan_pressure_angle;
         let Some(([main, crank_pin_load, rod_pin_load, mesh_load], crank_torque)) = out.split()
@@ -365,7 +369,11 @@ vectorised! {
                     f_t * C::i() * e - f_t.abs() * tan * e
                 }
             };
-            let crank_pin = p + mesh; // 2·P in the thesis reading (A5.2.1.51)
+            // The wheel's own inertia force at its centre S (module note): its moment about S
+            // is zero, so the mesh force is the same in either reading.
+            let wheel_force = -wheel_mass * C::new(wheel.cg.ax[i], wheel.cg.ay[i]);
+            // 2·P in the thesis reading (A5.2.1.51), with the wheel's inertia force.
+            let crank_pin = p + mesh + wheel_force;
             main.set_force(i, -crank_pin); // (A5.2.1.54)
             crank_pin_load.set_force(i, crank_pin);
             rod_pin_load.set_force(i, -p); // (A5.2.1.49)

@@ -112,7 +112,7 @@ pub const ENTRY: Entry = Entry {
             meaning: "u, pitch radius of the planet; the carrier is m·u (4/3 of the crank by default, the paper's 100 mm for a 75 mm crank)",
         },
     ],
-    unused_masses: &["piston_mass"],
+    unused_masses: &["piston_mass", "wheel_mass"],
     build: |g, m, o| Ok(Box::new(Hypotrochoid::build(g, m, o)?)),
 };
 
@@ -473,6 +473,8 @@ pub fn massless() -> MassProperties {
         rod_cg: 0.0,
         piston_mass: 0.0,
         rod_material: crate::Material::Steel,
+        wheel_mass: 0.0,
+        crank_unbalance: 0.0,
     }
 }
 

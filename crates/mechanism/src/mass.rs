@@ -143,6 +143,10 @@ pub struct MassInputs {
     /// Which reading of the chapter-10 rules estimates the fields left out (default
     /// [`MassRules::RodLength`]).
     pub rules: Option<MassRules>,
+    /// Cardan wheel's mass, kg (default 0: carried by the balanced crankshaft, ch. 11.2).
+    pub wheel_mass: Option<f64>,
+    /// The crank's own unbalance m·e without counterweights, kg·m (default 0: balanced).
+    pub crank_unbalance: Option<f64>,
 }
 
 /// Mass properties of one mechanism's moving links, resolved: the case's values where it gives
@@ -166,6 +170,14 @@ pub struct MassProperties {
     /// Piston with pin and rings, kg.
     pub piston_mass: f64,
     pub rod_material: Material,
+    /// Cardan wheel's mass, kg, its centre of gravity at the wheel's centre (the crank pin S,
+    /// on a circle of the cardan crank's radius). 0 by default: the thesis folds it into the
+    /// balanced crankshaft (ch. 11.2). Not among [`MassProperties::fields`] (balance's input).
+    pub wheel_mass: f64,
+    /// The crank's own unbalance m·e (crank pin, webs, without counterweights), kg·m, towards
+    /// the crank pin. 0 by default (a balanced crankshaft). It loads the frame as a rotor
+    /// (`cardan-balance`); the topology's crankshaft keeps its centre of gravity on the axis.
+    pub crank_unbalance: f64,
 }
 
 /// Extra radius of the crankshaft's flywheel web beyond the crank length, m: the flywheel of
@@ -364,6 +376,8 @@ impl MassRules {
             rod_cg: rod / 2.0,
             piston_mass: self.piston_mass(crank, bore),
             rod_material,
+            wheel_mass: 0.0,
+            crank_unbalance: 0.0,
         }
     }
 }
@@ -406,6 +420,8 @@ impl MassProperties {
             rod_cg: pick(inputs.rod_cg, estimate.rod_cg),
             piston_mass: pick(inputs.piston_mass, estimate.piston_mass),
             rod_material: estimate.rod_material,
+            wheel_mass: pick(inputs.wheel_mass, estimate.wheel_mass),
+            crank_unbalance: pick(inputs.crank_unbalance, estimate.crank_unbalance),
         }
     }
 

@@ -25,7 +25,7 @@ pub const ENTRY: Entry = Entry {
     name: "scotch_yoke",
     summary: "crank pin with a block sliding in a slotted yoke: harmonic piston motion, slot and guide loads",
     options: &[],
-    unused_masses: &["wheel_inertia"],
+    unused_masses: &["wheel_inertia", "wheel_mass"],
     build: |g, m, o| Ok(Box::new(ScotchYoke::build(g, m, o)?)),
 };
 

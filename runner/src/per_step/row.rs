@@ -48,6 +48,12 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("{joint}_bending_stress_pa", "with [gear] and known J: AGMA bending stress, the larger member's"),
     ("friction_torque_nm", "with [friction]: the drive torque that covers the losses, Σ P / ω"),
     ("power_loss_{component}_w", "with [friction]: one loss component's power (rings, skirt, a slide, a revolute joint's bearings by joint name, a gear mesh by joint name)"),
+    // The machine's balance (issue 24; the `machine_balance` stage of cardan-dynamics).
+    ("shaking_force_x_n", "the machine's shaking force on the frame, x: −Σ m·a of every moving body and rotor (counterweights, balance shafts) of every cylinder"),
+    ("shaking_force_y_n", "the same, y"),
+    ("shaking_moment_pitch_nm", "the machine's free moment about the horizontal axis across the crank axis, at the crank-axis point midway between the outermost cylinders"),
+    ("shaking_moment_yaw_nm", "the same, about the vertical axis"),
+    ("machine_torque_nm", "with [layout] of several cylinders: the machine's drive torque, the sum of every cylinder's at its own throw and firing phase"),
 ];
 
 /// The CSV header of `mechanism` run with the load families `families` (the run's, then

@@ -72,6 +72,31 @@ pub fn every_machine() -> Vec<(String, Box<dyn Mechanism>)> {
             &[("gear_mesh_model", "involute")],
         ),
     ));
+    // A wheel that carries its own mass (issue 24), in every reading of every mechanism that
+    // has one (the registry's `unused_masses` says which).
+    for e in MECHANISMS
+        .iter()
+        .filter(|e| !e.unused_masses.contains(&"wheel_mass"))
+    {
+        let masses = MassInputs {
+            wheel_mass: Some(0.7),
+            ..thesis_masses(e.name, Material::Steel)
+        };
+        let mut readings = vec![Options::new()];
+        for option in e.options {
+            if let cardan_mechanism::OptionKind::Choice(words) = option.kind {
+                for word in &words[1..] {
+                    let mut o = Options::new();
+                    o.insert(option.name.into(), OptionValue::Word(word.to_string()));
+                    readings.push(o);
+                }
+            }
+        }
+        for (k, o) in readings.iter().enumerate() {
+            let m = (e.build)(&GEOMETRY, &masses, o).unwrap();
+            all.push((format!("{} wheel mass {k}", e.name), m));
+        }
+    }
     all
 }
 

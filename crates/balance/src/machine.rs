@@ -1,0 +1,208 @@
+//! A machine's balance as a case asks for it: its layout, the firing delays of its cylinders,
+//! and the balancing devices ([`MachineBalance`]); prepared for one mechanism
+//! ([`PreparedBalance`]): the rotors sized from that mechanism's masses, the shaking force and
+//! free moments at any step, and the orders at constant speed.
+//!
+//! Every device is sized from what the mechanism's own shaking force shows at constant speed
+//! (its first and second orders, [`FirstOrderMasses::from_first_order`]), never assumed. At a
+//! constant speed ω (α = 0) every force is the same function of θ times ω², so the rotors are
+//! sized at ω = 1 rad/s and hold at every speed; with the crank accelerating they shake with
+//! the tangential terms of [`Rotor::force`], as real counterweights do.
+
+use crate::counterweight::{
+    crank_counterweight, lanchester_shafts, CardanCounterweights, CardanMasses, FirstOrderMasses,
+    Rotor,
+};
+use crate::harmonics::revolution;
+use crate::layout::{Layout, MachineOrders, MachineShaking};
+use crate::shaking::{shaking, Shaking};
+use cardan_mechanism::{CrankState, Mechanism, State};
+use std::sync::Arc;
+
+/// Steps of the revolution over which the orders are taken: orders up to 6 are asked for, and
+/// the orders of the registered mechanisms above 180 are below 1e-60 of the first
+/// (`docs/validation/balance.md`).
+pub const ORDER_STEPS: usize = 360;
+
+/// The highest order a summary reports.
+pub const MAX_ORDER: usize = 6;
+
+/// What a case says about its machine's balance (issue 24's `[layout]` and `[balance]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MachineBalance {
+    /// The cylinders on the crankshaft.
+    pub layout: Layout,
+    /// Each cylinder's firing delay after cylinder 1, rad of crank angle (0 for cylinder 1): the
+    /// gas cycle of cylinder i is cylinder 1's, `firing_delay[i]` later.
+    pub firing_delay: Vec<f64>,
+    /// The crank counterweight of every cylinder: all its rotating mass and this fraction of
+    /// its reciprocating mass (`None`: no counterweight, today's balanced crankshaft).
+    pub counterweight: Option<f64>,
+    /// Two Lanchester shafts at twice the crank speed cancelling the machine's second order
+    /// force.
+    pub lanchester: bool,
+    /// The counterweight pair on crank and wheel of every cylinder ([`CardanCounterweights`]).
+    pub cardan_counterweights: bool,
+}
+
+impl Default for MachineBalance {
+    /// One cylinder, no balancing device: every case before issue 24.
+    fn default() -> Self {
+        Self {
+            layout: Layout::single(),
+            firing_delay: vec![0.0],
+            counterweight: None,
+            lanchester: false,
+            cardan_counterweights: false,
+        }
+    }
+}
+
+impl MachineBalance {
+    /// Whether the machine is one cylinder in the mechanism's own frame.
+    pub fn is_single(&self) -> bool {
+        self.layout.cylinders.len() == 1 && is_own_frame(&self.layout, 0)
+    }
+
+    /// The machine of `mechanism`: its rotors sized (module note), or why a device cannot be
+    /// formed with it.
+    pub fn prepare(&self, mechanism: Arc<dyn Mechanism>) -> Result<PreparedBalance, String> {
+        let m = mechanism.as_ref();
+        let own = self.cylinder_rotors(m)?;
+        let mut rotors: Vec<Rotor> = (0..self.layout.cylinders.len())
+            .flat_map(|i| own.iter().map(move |r| (i, r)))
+            .map(|(i, r)| self.layout.place(i, r))
+            .collect();
+        if self.lanchester {
+            let second = self.layout.orders(m, &rotors, 1.0, ORDER_STEPS, 2).force[2];
+            rotors.extend(lanchester_shafts(&second, 1.0, self.layout.reference()));
+        }
+        Ok(PreparedBalance {
+            mechanism,
+            layout: self.layout.clone(),
+            rotors,
+        })
+    }
+
+    /// One cylinder's rotors in its own frame: the crank's own unbalance, then its
+    /// counterweight or the cardan pair.
+    fn cylinder_rotors(&self, m: &dyn Mechanism) -> Result<Vec<Rotor>, String> {
+        let unbalance = m.masses().crank_unbalance;
+        let mut own = Vec::new();
+        if unbalance != 0.0 {
+            own.push(Rotor::crank_unbalance(unbalance));
+        }
+        let first = |own: &[Rotor]| Layout::single().orders(m, own, 1.0, ORDER_STEPS, 1).force[1];
+        if let Some(fraction) = self.counterweight {
+            if self.cardan_counterweights {
+                return Err("balance.counterweight: cannot be combined with cardan_counterweights = true (the pair already cancels the whole first order)".into());
+            }
+            let masses = FirstOrderMasses::from_first_order(&first(&own), 1.0);
+            own.push(crank_counterweight(&masses, fraction, 0.0));
+        }
+        if self.cardan_counterweights {
+            if !turns_backwards(m) {
+                return Err(format!(
+                    "balance.cardan_counterweights: the {} has no body turning against the crank at its speed (a cardan wheel) to carry the pair's counterweight",
+                    m.name()
+                ));
+            }
+            let first = first(&own);
+            let crank = m.crank_radius();
+            // The first order identifies the pair's masses (module note of `counterweight`):
+            // backward −m·r_c, forward (m + m_w)·r_c + m·e.
+            let reciprocating = first.backward.norm() / crank;
+            let masses = CardanMasses {
+                crank,
+                reciprocating,
+                wheel: 0.0,
+                crank_unbalance: first.forward.re - reciprocating * crank,
+            };
+            let pair = CardanCounterweights::for_masses(&masses, crank);
+            own.extend(pair.rotors(&masses));
+        }
+        Ok(own)
+    }
+}
+
+/// Whether cylinder `i` of `layout` runs at the machine's own crank angle in the machine's
+/// frame (no throw, no turn of its axis): its state is the step's.
+fn is_own_frame(layout: &Layout, i: usize) -> bool {
+    let c = &layout.cylinders[i];
+    c.throw == 0.0 && c.axis_angle == 0.0
+}
+
+/// Whether a body of `m` turns at minus the crank speed (read from a state at ω = 1 rad/s).
+fn turns_backwards(m: &dyn Mechanism) -> bool {
+    let state = m.state(&CrankState::new(0.3, 1.0, 0.0, 0.0));
+    state
+        .bodies
+        .iter()
+        .any(|b| (b.angular_velocity + 1.0).abs() < 1e-12)
+}
+
+/// A machine's balance prepared for one mechanism.
+#[derive(Debug, Clone)]
+pub struct PreparedBalance {
+    mechanism: Arc<dyn Mechanism>,
+    layout: Layout,
+    /// Every rotor of the machine, in the machine frame.
+    rotors: Vec<Rotor>,
+}
+
+impl PreparedBalance {
+    /// The layout.
+    pub fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    /// The rotors, in the machine frame.
+    pub fn rotors(&self) -> &[Rotor] {
+        &self.rotors
+    }
+
+    /// The machine's shaking at `crank`, cylinder 1's own shaking being `first` where its
+    /// state is the step's (the stepper's columns; computed here otherwise).
+    pub fn at(&self, crank: &CrankState, first: Option<Shaking>) -> MachineShaking {
+        let m = self.mechanism.as_ref();
+        let per_cylinder: Vec<Shaking> = (0..self.layout.cylinders.len())
+            .map(|i| match first {
+                Some(s) if i == 0 && is_own_frame(&self.layout, 0) => s,
+                _ => {
+                    let state = m.state(&self.layout.cylinder_crank(i, crank));
+                    shaking(m.topology(), &state)
+                }
+            })
+            .collect();
+        self.layout.sum(&per_cylinder, &self.rotors, crank)
+    }
+
+    /// [`PreparedBalance::at`] the state `state` of cylinder 1 (a whole step).
+    pub fn at_state(&self, state: &State) -> MachineShaking {
+        let own = shaking(self.mechanism.topology(), state);
+        self.at(&state.crank, Some(own))
+    }
+
+    /// The orders 0..=[`MAX_ORDER`] of the shaking force and free moment over one revolution
+    /// at the constant speed `speed` (rad/s).
+    pub fn orders(&self, speed: f64) -> MachineOrders {
+        self.layout.orders(
+            self.mechanism.as_ref(),
+            &self.rotors,
+            speed,
+            ORDER_STEPS,
+            MAX_ORDER,
+        )
+    }
+
+    /// The largest |F| and |M| over one revolution at the constant speed `speed`, for a check
+    /// against the per-step peaks.
+    pub fn revolution_peaks(&self, speed: f64) -> (f64, f64) {
+        revolution(0.0, speed, ORDER_STEPS)
+            .iter()
+            .map(|c| self.at(c, None))
+            .fold((0.0, 0.0), |(f, m), s| {
+                (f64::max(f, s.force.norm()), f64::max(m, s.moment.norm()))
+            })
+    }
+}

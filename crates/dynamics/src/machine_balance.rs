@@ -1,0 +1,246 @@
+//! The machine's balance as a per-step stage ([`MachineStage`]): at every step the shaking
+//! force and free moments of all the machine's cylinders and rotors on the frame
+//! (`cardan-balance`: [`PreparedBalance::at_state`]), and the machine's total drive torque, the
+//! sum of every cylinder's; its accumulator ([`BalanceTotals`]) keeps their peaks and the
+//! torque's mean, and takes the orders at constant speed over one revolution
+//! ([`PreparedBalance::orders`]) whatever the run's motion (issue 24).
+//!
+//! Cylinder 1 is the run's own train: its state and total loads are the step's. Every other
+//! cylinder i runs the same mechanism at its own crank angle ψ_i = θ + φ_i − β_i (its throw
+//! and axis, [`cardan_balance::Layout::cylinder_crank`]: the same speed and acceleration, the
+//! cylinders sharing the crankshaft, so this holds for any motion), with the gas of cylinder 1
+//! `firing_delay[i]` later (the firing order), solved by the general planar solve (which the
+//! closed forms equal to 1e-9, `tests/cross_checks.rs`). The drive torque of a machine is the
+//! sum of its cylinders' (one crankshaft; Karhula 2008 A5.2.1.69 per cylinder); the rotors'
+//! own inertia is not part of it.
+
+use crate::metrics::{self, MetricDef, Summary};
+use crate::planar;
+use crate::stage::{Handed, RunTotals, Stage, StageColumn, StageError, StageInput, StageTotals};
+use crate::step::StepBlock;
+use crate::summary::peaks::raise;
+use crate::summary::Integral;
+use cardan_balance::{MachineBalance, PreparedBalance};
+use cardan_mechanism::{Loads, Mechanism, State};
+use std::any::Any;
+use std::ops::Range;
+use std::sync::Arc;
+
+/// The per-step columns of the stage: the shaking force (x, y) and the free moment (pitch,
+/// yaw) of the machine, then, for a machine of several cylinders, its total drive torque.
+pub const COLUMNS: [&str; 5] = [
+    "shaking_force_x_n",
+    "shaking_force_y_n",
+    "shaking_moment_pitch_nm",
+    "shaking_moment_yaw_nm",
+    "machine_torque_nm",
+];
+
+/// The machine's balance of one mechanism as a stage (module note).
+#[derive(Debug, Clone)]
+pub struct MachineStage {
+    balance: Arc<PreparedBalance>,
+    mechanism: Arc<dyn Mechanism>,
+    /// Each cylinder's firing delay after cylinder 1, rad.
+    firing_delay: Arc<[f64]>,
+    /// Speed of the revolution the orders are taken over, rad/s.
+    order_speed: f64,
+    /// Room for another cylinder's state and loads.
+    state: State,
+    loads: Loads,
+}
+
+impl MachineStage {
+    /// The stage of `mechanism` in the machine `machine`, its orders taken at `order_speed`
+    /// (rad/s); refused where a device of `machine` cannot be formed with the mechanism.
+    pub fn new(
+        machine: &MachineBalance,
+        mechanism: Arc<dyn Mechanism>,
+        order_speed: f64,
+    ) -> Result<Self, String> {
+        let balance = machine.prepare(Arc::clone(&mechanism))?;
+        let t = mechanism.topology();
+        Ok(Self {
+            balance: Arc::new(balance),
+            firing_delay: machine.firing_delay.clone().into(),
+            order_speed,
+            state: State::for_topology(t),
+            loads: Loads::for_topology(t),
+            mechanism,
+        })
+    }
+
+    fn cylinders(&self) -> usize {
+        self.firing_delay.len()
+    }
+
+    /// The machine's drive torque at the step `input`: cylinder 1's total, and every other
+    /// cylinder's at its own angle and gas phase (module note).
+    fn machine_torque(&mut self, input: &StageInput) -> f64 {
+        let m = self.mechanism.as_ref();
+        let t = m.topology();
+        let crank = &input.state.crank;
+        let mut torque = input.total.crank_torque;
+        for i in 1..self.cylinders() {
+            self.state = m.state(&self.balance.layout().cylinder_crank(i, crank));
+            let force = input.gas.map(|g| g(crank.angle - self.firing_delay[i]).1);
+            let forces = force.map_or(vec![], |f| vec![f; t.pistons.len()]);
+            planar::loads(
+                t,
+                &self.state,
+                input.inertial.is_some(),
+                &forces,
+                &mut self.loads,
+            );
+            torque += self.loads.crank_torque;
+        }
+        torque
+    }
+}
+
+impl Stage for MachineStage {
+    fn width(&self) -> usize {
+        COLUMNS.len()
+    }
+
+    fn evaluate(
+        &mut self,
+        input: &StageInput,
+        _handed: &mut Handed,
+        out: &mut [f64],
+    ) -> Result<(), StageError> {
+        let s = self.balance.at_state(input.state);
+        let torque = self.machine_torque(input);
+        let values = [s.force.re, s.force.im, s.pitch(), s.yaw(), torque];
+        if let Some(k) = values.iter().position(|v| !v.is_finite()) {
+            return Err(StageError::NonFinite {
+                quantity: COLUMNS[k].to_string(),
+                value: values[k],
+            });
+        }
+        out.copy_from_slice(&values);
+        Ok(())
+    }
+
+    fn columns(&self) -> Vec<StageColumn> {
+        let shown = if self.cylinders() > 1 { 5 } else { 4 };
+        (0..shown)
+            .map(|value| StageColumn {
+                name: COLUMNS[value].to_string(),
+                value,
+            })
+            .collect()
+    }
+
+    fn metrics(&self) -> &'static [MetricDef] {
+        metrics::BALANCE
+    }
+
+    fn totals(&self) -> Box<dyn StageTotals> {
+        Box::new(BalanceTotals {
+            balance: Arc::clone(&self.balance),
+            order_speed: self.order_speed,
+            force: 0.0,
+            moment: 0.0,
+            torque: None,
+            work: Integral::default(),
+            previous: None,
+        })
+    }
+
+    fn fork(&self) -> Box<dyn Stage> {
+        Box::new(self.clone())
+    }
+}
+
+/// The balance's accumulator: the peaks of |F| and |M|, the machine torque's extremes and its
+/// integral over the crank angle (its mean), the orders at its finish.
+#[derive(Debug, Clone)]
+pub struct BalanceTotals {
+    balance: Arc<PreparedBalance>,
+    order_speed: f64,
+    force: f64,
+    moment: f64,
+    /// The machine torque's smallest and largest value so far.
+    torque: Option<(f64, f64)>,
+    /// ∫ T dθ, J.
+    work: Integral,
+    /// The angle and machine torque of the last step taken.
+    previous: Option<(f64, f64)>,
+}
+
+impl StageTotals for BalanceTotals {
+    fn push_lanes(
+        &mut self,
+        block: &StepBlock,
+        lanes: Range<usize>,
+        stage: usize,
+        _previous: Option<f64>,
+    ) {
+        let steps = block.steps.get(lanes.clone()).unwrap_or_default();
+        for (k, s) in (block.first + lanes.start..).zip(steps) {
+            let v = &s.stages[stage];
+            raise(&mut self.force, v[0].hypot(v[1]));
+            raise(&mut self.moment, v[2].hypot(v[3]));
+            let (angle, torque) = (s.state.crank.angle, v[4]);
+            self.torque = Some(match self.torque {
+                None => (torque, torque),
+                Some((lo, hi)) => (lo.min(torque), hi.max(torque)),
+            });
+            if let Some((a0, t0)) = self.previous {
+                self.work.add(k, 0.5 * (angle - a0) * (torque + t0));
+            }
+            self.previous = Some((angle, torque));
+        }
+    }
+
+    fn close_chunk(&mut self) {
+        self.work.close_chunk();
+    }
+
+    fn merge(&mut self, later: &dyn StageTotals) {
+        let later = later
+            .as_any()
+            .downcast_ref::<Self>()
+            .expect("balance totals");
+        raise(&mut self.force, later.force);
+        raise(&mut self.moment, later.moment);
+        self.torque = match (self.torque, later.torque) {
+            (Some((a, b)), Some((c, d))) => Some((a.min(c), b.max(d))),
+            (x, y) => x.or(y),
+        };
+        self.work.merge(&later.work);
+        self.previous = later.previous;
+    }
+
+    fn finish(&self, run: &RunTotals, m: &mut Summary) {
+        let orders = self.balance.orders(self.order_speed);
+        m.push("shaking_force_max", self.force);
+        for k in [1, 2, 4] {
+            let name = format!("shaking_force_order_{k}");
+            m.push(name, orders.force[k].amplitude());
+        }
+        m.push("shaking_moment_max", self.moment);
+        for k in [1, 2] {
+            let name = format!("shaking_moment_order_{k}");
+            m.push(name, orders.moment[k].amplitude());
+        }
+        let (Some((lo, hi)), true) = (self.torque, run.span > 0.0) else {
+            return;
+        };
+        let mean = self.work.value() / run.span;
+        // A mean that is round-off of a torque that swings both ways (an inertial run at
+        // constant speed) is zero: no uniformity then.
+        if mean.abs() > 1e-9 * (hi - lo) {
+            m.push("torque_nonuniformity", (hi - lo) / mean.abs());
+        }
+    }
+
+    fn fork(&self) -> Box<dyn StageTotals> {
+        Box::new(self.clone())
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}

@@ -1,0 +1,407 @@
+//! Balance through case files (issue 24): the `[masses]`, `[balance]` and `[layout]` tables
+//! read, run, and their shaking metrics checked against closed forms
+//! (`docs/validation/balance.md`) and published worked examples. Mechanisms are named only in
+//! the case texts, as a user writes them.
+
+use cardan_case::case::{parse, Case};
+use cardan_runner::output::MechanismResult;
+use cardan_runner::run_case;
+use cardan_testing::within;
+use std::f64::consts::PI;
+use std::path::Path;
+
+/// 3000 rpm, rad/s.
+const SPEED: f64 = 100.0 * PI;
+
+fn case(text: &str) -> Case {
+    parse(Path::new("balance-test.toml"), text).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn refused(text: &str) -> String {
+    match parse(Path::new("balance-test.toml"), text) {
+        Ok(_) => panic!("accepted:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// A case of `mechanisms` on the thesis geometry at constant speed [`SPEED`] over one
+/// revolution (`steps` steps), with the tables `tables` added.
+fn text(mechanisms: &str, steps: usize, tables: &str) -> String {
+    format!(
+        r#"
+name = "balance"
+machine = "pump"
+mechanisms = [{mechanisms}]
+[geometry]
+crank_length = 0.06
+rod_length = 0.14
+bore = 0.12
+[motion]
+start_angle = 90.0
+end_angle = 450.0
+initial_speed = {SPEED}
+angular_acceleration = 0.0
+steps = {steps}
+{tables}
+"#
+    )
+}
+
+fn results(text: &str) -> Vec<MechanismResult> {
+    run_case(&case(text), None).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn metric(results: &[MechanismResult], label: &str, name: &str) -> f64 {
+    let r = results.iter().find(|r| r.label == label).expect(label);
+    let m = r.summary.metrics.iter().find(|m| m.name == name);
+    m.unwrap_or_else(|| panic!("{label}: no {name}")).value
+}
+
+/// q_k(λ) of the slider-crank (order 2 only): the root's series summed exactly, as
+/// `crates/balance/tests/common/mod.rs` derives it (`docs/validation/balance.md`).
+fn q2(lambda: f64) -> f64 {
+    let (mut s, mut c, mut n) = (0.0, 1.0, 0usize);
+    // c_n = (−1)ⁿ·binom(1/2, n); the cos 2φ coefficient of sin²ⁿφ is −2·4⁻ⁿ·binom(2n, n−1).
+    loop {
+        if n >= 1 {
+            let binomial = (0..n - 1).fold(1.0, |b, i| b * (2 * n - i) as f64 / (i + 1) as f64);
+            let term = c * lambda.powi(2 * n as i32) * 2.0 / 4f64.powi(n as i32) * binomial;
+            s += term;
+            if term.abs() < 1e-20 {
+                break;
+            }
+        }
+        c *= -(0.5 - n as f64) / (n + 1) as f64;
+        n += 1;
+    }
+    4.0 * s.abs() / lambda
+}
+
+/// The slider-crank's second order is the exact series m_B·r·ω²·(λ + λ³/4 + …) (m_B is the
+/// piston plus rod·g/l, the rod's two-mass split) and the cardan gear has no second or fourth order (1e-9
+/// of its first: round-off). Tolerance 1e-9: sums of 360 terms of round-off.
+#[test]
+fn single_cylinders_have_their_closed_form_orders() {
+    let r = results(&text(
+        r#""slider_crank", "cardan_gear""#,
+        360,
+        "[masses]\nrod_mass = 1.2\nrod_cg = 0.05\npiston_mass = 0.8",
+    ));
+    let (crank, rod) = (0.06, 0.14);
+    let m_b = 0.8 + 1.2 * 0.05 / rod;
+    let expected = m_b * crank * SPEED * SPEED * q2(crank / rod);
+    within(
+        "slider-crank order 2, N",
+        metric(&r, "slider_crank", "shaking_force_order_2"),
+        expected,
+        1e-9,
+    );
+    let first = metric(&r, "cardan_gear", "shaking_force_order_1");
+    within(
+        "cardan order 1, N",
+        first,
+        2.0 * 2.0 * 0.03 * SPEED * SPEED,
+        1e-9,
+    );
+    for k in [2, 4] {
+        let v = metric(&r, "cardan_gear", &format!("shaking_force_order_{k}"));
+        assert!(v < 1e-9 * first, "cardan order {k}: {v} N");
+    }
+}
+
+/// The cardan counterweight pair, sized from the masses the case gives (the wheel's 0.4 kg,
+/// the crank's 0.01 kg·m), leaves no shaking force at any step, at constant speed and
+/// accelerating (1e-12 of the unbalanced peak: round-off).
+#[test]
+fn the_cardan_counterweight_pair_leaves_no_shaking_force() {
+    let masses = "[masses.cardan_gear]\nwheel_mass = 0.4\ncrank_unbalance = 0.01";
+    for acceleration in [0.0, 2000.0] {
+        let with = |balance: &str| {
+            let t = text(r#""cardan_gear""#, 720, &format!("{masses}\n{balance}")).replace(
+                "angular_acceleration = 0.0",
+                &format!("angular_acceleration = {acceleration}"),
+            );
+            metric(&results(&t), "cardan_gear", "shaking_force_max")
+        };
+        let bare = with("");
+        let balanced = with("[balance]\ncardan_counterweights = true");
+        assert!(bare > 1000.0, "unbalanced {bare} N");
+        assert!(
+            balanced < 1e-12 * bare,
+            "α = {acceleration}: {balanced} N left of {bare} N"
+        );
+    }
+}
+
+/// Half the reciprocating mass balanced on a Scotch yoke (a pure first order): the force left
+/// turns backwards at constant magnitude m·r·ω²/2, so its largest value over the run is its
+/// first order's, which is that.
+#[test]
+fn a_half_counterweight_leaves_a_first_order_of_constant_magnitude() {
+    let r = results(&text(
+        r#""scotch_yoke""#,
+        360,
+        "[masses]\nrod_mass = 2.0\npiston_mass = 0.5\ncrank_unbalance = 0.02\n[balance]\ncounterweight = 0.5",
+    ));
+    let expected = 2.5 * 0.06 * SPEED * SPEED / 2.0;
+    within(
+        "peak, N",
+        metric(&r, "scotch_yoke", "shaking_force_max"),
+        expected,
+        1e-9,
+    );
+    within(
+        "order 1, N",
+        metric(&r, "scotch_yoke", "shaking_force_order_1"),
+        expected,
+        1e-9,
+    );
+}
+
+/// A textbook problem with its printed answer (`docs/validation/balance.md`: 250 rpm, stroke
+/// 180 mm, reciprocating 120 kg, revolving 70 kg at the crank, two thirds balanced): the force
+/// left 30° from the dead centre is 3.264 kN (4 printed figures: 3e-4). Run as a case: the
+/// Scotch yoke (the texts neglect obliquity), its yoke the reciprocating mass, the revolving
+/// mass the crank's own unbalance; the run's step at 30° past top dead centre.
+#[test]
+fn a_textbook_single_cylinder_with_two_thirds_balanced() {
+    let t = format!(
+        r#"
+name = "textbook"
+machine = "pump"
+mechanisms = ["scotch_yoke"]
+[geometry]
+crank_length = 0.09
+rod_length = 0.3
+bore = 0.1
+[motion]
+start_angle = 120.0
+end_angle = 480.0
+initial_speed = "250 rpm"
+angular_acceleration = 0.0
+steps = 360
+[masses]
+rod_mass = "120 kg"
+piston_mass = 0.0
+crank_unbalance = {}
+[balance]
+counterweight = {}
+[output]
+csv = true
+"#,
+        70.0 * 0.09,
+        2.0 / 3.0
+    );
+    let dir = std::env::temp_dir().join("balance-textbook");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    run_case(&case(&t), Some(&dir)).unwrap();
+    let csv = std::fs::read_to_string(dir.join("scotch_yoke.csv")).unwrap();
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let first: Vec<f64> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    within(
+        "crank angle, deg",
+        first[col("crank_angle_deg")],
+        120.0,
+        1e-12,
+    );
+    let force = first[col("shaking_force_x_n")].hypot(first[col("shaking_force_y_n")]);
+    within("residual force at 30°, N", force, 3264.0, 3e-4);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Layouts of the slider-crank: an inline six has no first or second order force or moment
+/// (1e-9 of one cylinder's first order); a flat inline four's second order force is four
+/// cylinders' m·r·ω²·q₂ (≈ 4·m·r·ω²·λ); a boxer four has only a second order couple; a
+/// three-cylinder radial's first order is (3/2)·m·r·ω²,
+/// turning with the crank. One cylinder's first order: m·r·ω², m the reciprocating mass.
+#[test]
+fn layouts_cancel_what_the_closed_forms_say() {
+    let masses = "[masses]\nrod_mass = 0.0\nrod_inertia = 0.0\npiston_mass = 1.0";
+    let run = |layout: &str| {
+        results(&text(
+            r#""slider_crank""#,
+            360,
+            &format!("{masses}\n{layout}"),
+        ))
+    };
+    let p1 = 0.06 * SPEED * SPEED;
+    let six = run("[layout]\nkind = \"inline\"\ncylinders = 6\ncylinder_spacing = 0.1");
+    for name in [
+        "shaking_force_order_1",
+        "shaking_force_order_2",
+        "shaking_moment_order_1",
+        "shaking_moment_order_2",
+    ] {
+        let v = metric(&six, "slider_crank", name);
+        assert!(v < 1e-9 * p1, "inline six {name}: {v}");
+    }
+    let four = run("[layout]\ncylinders = 4");
+    let lambda = 0.06 / 0.14;
+    within(
+        "flat four order 2, N",
+        metric(&four, "slider_crank", "shaking_force_order_2"),
+        4.0 * p1 * q2(lambda),
+        1e-9,
+    );
+    let approx = 4.0 * p1 * lambda;
+    let f2 = metric(&four, "slider_crank", "shaking_force_order_2");
+    assert!(
+        (f2 / approx - 1.0).abs() < lambda * lambda / 4.0 * 1.1,
+        "4·m·r·ω²·λ to O(λ²)"
+    );
+    // The boxer four (throws 0°, 180°, 180°, 0°, opposed pairs): no first or second order
+    // force, no first order couple; a second order couple of 2·a·m·r·ω²·q₂ (a = 0.1 m).
+    let boxer = run("[layout]\nkind = \"boxer\"\ncylinders = 4\ncylinder_spacing = 0.1");
+    for name in [
+        "shaking_force_order_1",
+        "shaking_force_order_2",
+        "shaking_moment_order_1",
+    ] {
+        let v = metric(&boxer, "slider_crank", name);
+        assert!(v < 1e-9 * p1, "boxer four {name}: {v}");
+    }
+    within(
+        "boxer four second order couple, N·m",
+        metric(&boxer, "slider_crank", "shaking_moment_order_2"),
+        2.0 * 0.1 * p1 * q2(lambda),
+        1e-9,
+    );
+    let radial = run("[layout]\nkind = \"radial\"\ncylinders = 3");
+    within(
+        "radial order 1, N",
+        metric(&radial, "slider_crank", "shaking_force_order_1"),
+        1.5 * p1,
+        1e-9,
+    );
+}
+
+/// A four-stroke inline four with gas: the machine's torque is the sum of the four cylinders'
+/// each on its own throw and firing phase, so over a cycle its mean is four times one
+/// cylinder's (the work of four cylinders), and it is far more even than one cylinder's.
+#[test]
+fn a_machine_torque_is_the_sum_of_its_cylinders() {
+    let engine = |layout: &str| {
+        let t = format!(
+            r#"
+name = "engine"
+machine = "engine"
+mechanisms = ["slider_crank", "cardan_gear"]
+[geometry]
+crank_length = 0.06
+rod_length = 0.14
+bore = 0.12
+[motion]
+start_angle = 90.0
+end_angle = 810.0
+initial_speed = "3000 rpm"
+angular_acceleration = 0.0
+steps = 1440
+[gas]
+model = "karhula_engine"
+compression_ratio = 12
+polytropic_exponent = 1.4
+filling = 1.07
+ambient_pressure = "1 atm"
+peak_pressure = "8 MPa"
+combustion_delay = "9.5 deg"
+{layout}
+"#
+        );
+        results(&t)
+    };
+    let one = engine("");
+    let four = engine("[layout]\ncylinders = 4");
+    for m in ["slider_crank", "cardan_gear"] {
+        let single = metric(&one, m, "torque_nonuniformity");
+        let machine = metric(&four, m, "torque_nonuniformity");
+        assert!(
+            machine < single / 2.0,
+            "{m}: {machine} vs one cylinder's {single}"
+        );
+    }
+}
+
+/// Bad `[layout]` and `[balance]` input: a clear error naming the field.
+#[test]
+fn bad_layouts_and_balance_are_refused_naming_the_field() {
+    let with = |tables: &str| refused(&text(r#""slider_crank", "cardan_gear""#, 360, tables));
+    let cases = [
+        (
+            "[layout]\ncylinders = 4\ncrank_angles = [0, 180, 180]",
+            "layout.crank_angles",
+        ),
+        (
+            "[layout]\ncylinders = 4\nfiring_order = [1, 3, 3, 2]",
+            "layout.firing_order",
+        ),
+        (
+            "[layout]\nkind = \"vee\"\ncylinders = 2\nbank_angle = 190",
+            "layout.bank_angle",
+        ),
+        (
+            "[layout]\nkind = \"vee\"\ncylinders = 2\nbank_angle = 0",
+            "layout.bank_angle",
+        ),
+        (
+            "[layout]\ncylinders = 2\nbank_angle = 90",
+            "layout.bank_angle",
+        ),
+        (
+            "[layout]\ncylinders = 2\ncylinder_axes = [0, 90]",
+            "layout.cylinder_axes",
+        ),
+        (
+            "[layout]\ncylinders = 2\naxial_positions = [0, 0.1]",
+            "layout.axial_positions",
+        ),
+        (
+            "[layout]\nkind = \"custom\"\ncylinders = 2\naxial_positions = [0]",
+            "layout.axial_positions",
+        ),
+        (
+            "[layout]\nkind = \"radial\"\ncylinders = 3\ncylinder_spacing = 0.1",
+            "layout.cylinder_spacing",
+        ),
+        (
+            "[layout]\nkind = \"boxer\"\ncylinders = 3",
+            "layout.cylinders",
+        ),
+        (
+            "[layout]\ncylinders = 2\nfiring_ordr = [1, 2]",
+            "layout.firing_ordr",
+        ),
+        ("[balance]\ncounterweight = 1.5", "balance.counterweight"),
+        ("[balance]\ncounterweight = -0.5", "balance.counterweight"),
+        (
+            "[balance]\nbalance_shafts = \"lanchaster\"",
+            "balance.balance_shafts",
+        ),
+        (
+            "[balance]\ncardan_counterweights = true",
+            "balance.cardan_counterweights",
+        ),
+        (
+            "[masses]\ncrank_unbalance = -0.01",
+            "masses.crank_unbalance",
+        ),
+        (
+            "[masses.cardan_gear]\nwheel_mass = -1",
+            "masses.cardan_gear.wheel_mass",
+        ),
+        ("[masses]\nwheel_mass = 1", "masses.wheel_mass"),
+    ];
+    for (tables, field) in cases {
+        let e = with(tables);
+        assert!(e.contains(field), "{tables}: {e}");
+    }
+    // The pair on a slider-crank says which mechanism cannot form it.
+    assert!(with("[balance]\ncardan_counterweights = true").contains("slider_crank"));
+}
