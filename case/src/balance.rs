@@ -335,7 +335,7 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
 }
 
 /// Each cylinder's firing delay after cylinder 1 (rad). Cylinder i reaches its top dead
-/// centre δ_i = β_i − φ_i after cylinder 1 (mod 2π, its crank angle ψ = θ + φ − β); a
+/// centre δ_i = (β_i − φ_i) − (β_1 − φ_1) after cylinder 1 (mod 2π, its crank angle ψ = θ + φ − β); a
 /// two-stroke fires there, a four-stroke at δ_i or δ_i + 2π: the one nearest its place j in
 /// the firing order, j·interval (the firing order given, or taken greedily: at each place the
 /// cylinder with a top dead centre nearest it, the lowest number first).
@@ -349,7 +349,12 @@ fn firing_delays(
     let delta: Vec<f64> = layout
         .cylinders
         .iter()
-        .map(|c| (c.axis_angle - c.throw).rem_euclid(TAU))
+        .map(|c| c.axis_angle - c.throw)
+        .collect();
+    // Relative to cylinder 1's top dead centre.
+    let delta: Vec<f64> = delta
+        .iter()
+        .map(|d| (d - delta[0]).rem_euclid(TAU))
         .collect();
     let candidates = |i: usize| match cycle {
         Cycle::TwoStroke => vec![delta[i]],

@@ -5,9 +5,11 @@
 //! torque's mean, and takes the orders at constant speed over one revolution
 //! ([`PreparedBalance::orders`]) whatever the run's motion (issue 24).
 //!
-//! Cylinder 1 is the run's own train: its state and total loads are the step's. Every other
-//! cylinder i runs the same mechanism at its own crank angle ψ_i = θ + φ_i − β_i (its throw
-//! and axis, [`cardan_balance::Layout::cylinder_crank`]: the same speed and acceleration, the
+//! For the torque, cylinder 1 is the run's own train: its state and total loads are the step's
+//! (the machine's torque is then taken at a crank angle shifted by cylinder 1's β_1 − φ_1, a
+//! constant). Every other cylinder i runs the same mechanism at its crank angle relative to
+//! cylinder 1's, θ + (φ_i − β_i) − (φ_1 − β_1) (its throw and axis, as
+//! [`cardan_balance::Layout::cylinder_crank`] places them: the same speed and acceleration, the
 //! cylinders sharing the crankshaft, so this holds for any motion), with the gas of cylinder 1
 //! `firing_delay[i]` later (the firing order), solved by the general planar solve (which the
 //! closed forms equal to 1e-9, `tests/cross_checks.rs`). The drive torque of a machine is the
@@ -21,7 +23,7 @@ use crate::step::StepBlock;
 use crate::summary::peaks::raise;
 use crate::summary::Integral;
 use cardan_balance::{MachineBalance, PreparedBalance};
-use cardan_mechanism::{Loads, Mechanism, State};
+use cardan_mechanism::{CrankState, Loads, Mechanism, State};
 use std::any::Any;
 use std::ops::Range;
 use std::sync::Arc;
@@ -81,8 +83,18 @@ impl MachineStage {
         let t = m.topology();
         let crank = &input.state.crank;
         let mut torque = input.total.crank_torque;
+        let layout = self.balance.layout().clone();
         for i in 1..self.cylinders() {
-            self.state = m.state(&self.balance.layout().cylinder_crank(i, crank));
+            // Cylinder i relative to cylinder 1, which the run's train is (module note).
+            let (c0, ci) = (&layout.cylinders[0], &layout.cylinders[i]);
+            let lead = (ci.throw - ci.axis_angle) - (c0.throw - c0.axis_angle);
+            let at = CrankState::new(
+                crank.angle + lead,
+                crank.speed,
+                crank.acceleration,
+                crank.time,
+            );
+            self.state = m.state(&at);
             let force = input.gas.map(|g| g(crank.angle - self.firing_delay[i]).1);
             let forces = force.map_or(vec![], |f| vec![f; t.pistons.len()]);
             planar::loads(
