@@ -26,6 +26,7 @@ pub mod mesh;
 pub mod metrics;
 pub mod parallel;
 pub mod planar;
+pub mod reduced_inertia;
 pub mod stage;
 pub mod stages;
 pub mod step;
@@ -47,6 +48,7 @@ pub use losses::{
 pub use mesh::{radial, tangential, GearMaterial, GearSpec, ToothLoad};
 pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
 pub use parallel::{run_parallel, run_summary, Joinable};
+pub use reduced_inertia::{reduced_inertia, ReducedInertia, ReducedInertiaOf};
 pub use stage::{
     Handed, RunTotals, SetupError, Stage, StageColumn, StageError, StageInput, StageTotals,
 };
