@@ -22,6 +22,7 @@ pub mod fmep;
 pub mod gear_rating;
 pub mod loss_models;
 pub mod losses;
+pub mod machine_motion;
 pub mod mesh;
 pub mod metrics;
 pub mod parallel;

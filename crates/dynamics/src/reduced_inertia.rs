@@ -70,7 +70,8 @@ impl<'m> ReducedInertiaOf<'m> {
     /// J*, dJ*/dθ and the pistons' lever at crank angle `angle` (rad).
     pub fn at(&mut self, angle: f64) -> ReducedInertia {
         let crank = CrankState::new(angle, 1.0, 0.0, 0.0);
-        self.block.fill(self.mechanism, std::slice::from_ref(&crank));
+        self.block
+            .fill(self.mechanism, std::slice::from_ref(&crank));
         self.block.gather(0, &mut self.state);
         reduced_inertia(self.mechanism.topology(), &self.state)
     }
