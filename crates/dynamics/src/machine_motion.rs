@@ -240,12 +240,13 @@ impl Cycles {
     }
 
     /// The time from the start to where the cycles' start speeds stay within 1 % of the
-    /// reported cycle's, s; `None` if the last two cycles' starts differ by more.
+    /// reported cycle's, s; `None` after one cycle, or if the last two cycles' starts differ
+    /// by more.
     pub fn runup_time(&self) -> Option<f64> {
         let (_, last) = *self.starts.last()?;
         let within = |w: f64| (w - last).abs() <= 0.01 * last;
         let n = self.starts.len();
-        if n >= 2 && !within(self.starts[n - 2].1) {
+        if n < 2 || !within(self.starts[n - 2].1) {
             return None;
         }
         let first = (0..n)
