@@ -408,7 +408,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
             "the friction torque is not yet part of the solved motion's torques (issue 25): run the dynamic case without [friction]",
         ));
     }
-    if dynamics.is_some() && !(m.initial_speed.si >= 0.0) {
+    if dynamics.is_some() && (m.initial_speed.si.is_nan() || m.initial_speed.si < 0.0) {
         return Err(invalid(
             "motion.initial_speed",
             &m.initial_speed.written,

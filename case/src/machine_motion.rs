@@ -125,7 +125,7 @@ pub(crate) fn build(
             (f.inertia.as_ref().map_or(0.0, |j| j.si), target)
         }
     };
-    if let Some(t) = steady_tolerance.filter(|t| !(*t > 0.0 && *t < 1.0)) {
+    if let Some(t) = steady_tolerance.filter(|t| t.is_nan() || *t <= 0.0 || *t >= 1.0) {
         return Err(invalid(
             "motion.steady_tolerance",
             &t,

@@ -127,7 +127,7 @@ impl<'a> Acceleration<'a> {
     pub fn at(&mut self, angle: f64, speed: f64) -> Result<(f64, f64), SolveError> {
         let r = self.inertia.at(angle);
         let j = r.inertia + self.torques.flywheel;
-        if !(j > 0.0) {
+        if j.is_nan() || j <= 0.0 {
             return Err(SolveError::NoInertia(j, angle.to_degrees()));
         }
         let gas = self.torques.gas.map_or(0.0, |f| f(angle) * r.piston_lever);
@@ -261,7 +261,7 @@ impl Cycles {
 pub fn first_point(f: &mut Acceleration, run: &SolvedRun) -> Result<Point, SolveError> {
     let w = run.initial_speed;
     let (a, j) = f.at(run.start, w)?;
-    if w == 0.0 && !(a > 0.0) {
+    if w == 0.0 && (a.is_nan() || a <= 0.0) {
         return Err(SolveError::CannotStart(run.start.to_degrees(), a * j));
     }
     Ok(Point {
