@@ -80,6 +80,9 @@ pub struct Case {
     /// order), which its runs take: after changing `friction`, `gear` or a mechanism, build
     /// them again ([`Case::build_setups`]).
     pub setups: Vec<Setup>,
+    /// The solved machine motion (`[motion] mode = "dynamic"`, `[load]`, `[flywheel]`);
+    /// `None`: the crank follows `motion`.
+    pub dynamics: Option<crate::machine_motion::Dynamics>,
     pub output: OutputOptions,
     /// The machine's layout and balancing devices (`[layout]`, `[balance]`; default: one
     /// cylinder, none).
@@ -116,6 +119,10 @@ pub struct CaseFile {
     pub friction: Option<crate::friction::FrictionTable>,
     /// The gear pair and its rating data; without it no gear mesh is rated.
     pub gear: Option<crate::gear::GearTable>,
+    /// The torque a load or motor applies to the crankshaft (`[motion] mode = "dynamic"` only).
+    pub load: Option<crate::machine_motion::LoadTable>,
+    /// A flywheel on the crankshaft, given or sized (`[motion] mode = "dynamic"` only).
+    pub flywheel: Option<crate::machine_motion::FlywheelTable>,
     #[serde(default)]
     pub output: OutputTable,
     /// The machine's cylinders: several on one crankshaft; without it, one cylinder.
@@ -156,8 +163,19 @@ pub struct MotionTable {
     pub initial_speed: Quantity<AngularSpeed>,
     /// Constant crank angular acceleration, rad/s².
     pub angular_acceleration: Quantity<AngularAcceleration>,
-    /// The number of crank-angle intervals (the run has steps + 1 points).
+    /// The number of crank-angle intervals (the run has steps + 1 points); of one cycle in a
+    /// dynamic run.
     pub steps: Whole<8, MAX_STEPS>,
+    /// "prescribed" (default: the crank follows the law above) or "dynamic" (its speed solved
+    /// from its torques from initial_speed at start_angle; angular_acceleration unused).
+    #[serde(default)]
+    pub mode: crate::machine_motion::MotionMode,
+    /// Dynamic: cycles of start_angle..end_angle run from the initial state, the last reported;
+    /// default 1.
+    pub cycles: Option<Whole<1, 100_000>>,
+    /// Dynamic: stop before `cycles` once a cycle ends within this fraction of its start speed
+    /// (periodic steady state), from 0 to 1 (exclusive); default: run every cycle.
+    pub steady_tolerance: Option<f64>,
 }
 
 /// `[output]`: what a case writes besides `summary.json`.
@@ -404,7 +422,29 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         initial_speed: m.initial_speed.si,
         angular_acceleration: m.angular_acceleration.si,
     };
-    if let Err(e) = motion.at_angle(end_angle) {
+    let dynamics = crate::machine_motion::build(
+        m.mode,
+        m.cycles.map(|c| c.0),
+        m.steady_tolerance,
+        raw.load.as_ref(),
+        raw.flywheel.as_ref(),
+        &invalid,
+    )?;
+    if let (Some(_), Some(_)) = (&dynamics, &raw.friction) {
+        return Err(invalid(
+            "friction",
+            &"[friction] with motion.mode = \"dynamic\"",
+            "the friction torque is not yet part of the solved motion's torques (issue 25): run the dynamic case without [friction]",
+        ));
+    }
+    if dynamics.is_some() && (m.initial_speed.si.is_nan() || m.initial_speed.si < 0.0) {
+        return Err(invalid(
+            "motion.initial_speed",
+            &m.initial_speed.written,
+            "must not be negative: the crank turns forwards",
+        ));
+    }
+    if let (None, Err(e)) = (&dynamics, motion.at_angle(end_angle)) {
         return Err(invalid(
             "motion.initial_speed",
             &m.initial_speed.written,
@@ -467,6 +507,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         friction,
         gear,
         setups,
+        dynamics,
         output: (&raw.output).into(),
         balance,
         sweep: None,

@@ -10,6 +10,7 @@ pub mod friction;
 pub mod gas;
 pub mod gear;
 pub mod json_schema;
+pub mod machine_motion;
 pub mod masses;
 pub mod mechanism_table;
 pub mod quantity;

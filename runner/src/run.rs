@@ -4,7 +4,7 @@
 //! A batch ([`run_paths`], `batch.rs`) reads its case files (`cases.rs`), runs each case into
 //! its folder (`case_folder.rs`: refused first if its files would be too large, `size.rs`),
 //! its crank trains in parallel (`train.rs`, with the sampling check of a coarse grid in
-//! `sampling.rs`), then writes the sweeps' folders (`sweeps.rs`) and the index. How a batch
+//! `sampling.rs`; a solved machine motion's cycles and flywheel in `dynamic.rs`), then writes the sweeps' folders (`sweeps.rs`) and the index. How a batch
 //! runs is [`RunOptions`], what it did [`Report`] (`options.rs`). Each case folder records
 //! what made it ([`stamp`], `run.json`: `--resume` keeps a folder whose record matches); a
 //! shard (`--shard K/N`) runs its part of the cases ([`shard`]) and [`merge`] gathers the
@@ -13,6 +13,7 @@
 mod batch;
 mod case_folder;
 mod cases;
+mod dynamic;
 mod merge;
 mod options;
 mod sampling;

@@ -24,10 +24,12 @@ pub mod loss;
 pub mod loss_models;
 pub mod losses;
 pub mod machine_balance;
+pub mod machine_motion;
 pub mod mesh;
 pub mod metrics;
 pub mod parallel;
 pub mod planar;
+pub mod reduced_inertia;
 pub mod stage;
 pub mod stages;
 pub mod step;
@@ -49,6 +51,7 @@ pub use machine_balance::MachineStage;
 pub use mesh::{radial, tangential, GearMaterial, GearSpec, ToothLoad};
 pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
 pub use parallel::{run_parallel, run_summary, Joinable};
+pub use reduced_inertia::{reduced_inertia, ReducedInertia, ReducedInertiaOf};
 pub use stage::{
     Handed, RunTotals, SetupError, Stage, StageColumn, StageError, StageInput, StageTotals,
 };

@@ -361,6 +361,27 @@ pub const BALANCE: &[MetricDef] = &[
     def("torque_nonuniformity", "1", R, Group::Balance, Lo, "(T_max − T_min)/|T_mean| of the machine's total drive torque (every cylinder's), where its mean is not zero"),
 ];
 
+/// The metrics of a solved machine motion (`[motion] mode = "dynamic"`,
+/// [`crate::machine_motion`]), over the reported cycle; Petrescu's (2015) first approximation
+/// (eq. 1-2: ω = ω_m·sqrt(J*_m/J*), J*_m = (J*_max + J*_min)/2) and dynamic coefficient
+/// (eq. 4: D = ω/ω_m) beside the solved motion.
+pub const MACHINE_MOTION: &[MetricDef] = &[
+    def("speed_mean", "rad/s", T, K, Ne, "dynamic: time mean of the crank speed over the reported cycle, crank-angle span / cycle_time"),
+    def("speed_min", "rad/s", T, K, Ne, "dynamic: smallest crank speed of the reported cycle"),
+    def("speed_max", "rad/s", T, K, Ne, "dynamic: largest crank speed of the reported cycle"),
+    def("speed_fluctuation_coefficient", "1", T, K, Lo, "dynamic: (speed_max − speed_min) / speed_mean"),
+    def("flywheel_inertia", "kg*m^2", T, K, Ne, "dynamic: the flywheel inertia the run used (given, or sized)"),
+    def("flywheel_inertia_required", "kg*m^2", T, K, Lo, "dynamic, with flywheel.fluctuation_coefficient: the flywheel inertia that meets it on the solved motion (0: none needed)"),
+    def("runup_time", "s", T, K, Ne, "dynamic: time from the start until the cycles' start speeds stay within 1 % of the reported cycle's (absent after one cycle or if not reached)"),
+    def("reduced_inertia_min", "kg*m^2", T, K, Ne, "dynamic: smallest J* + flywheel over the reported cycle"),
+    def("reduced_inertia_max", "kg*m^2", T, K, Ne, "dynamic: largest J* + flywheel over the reported cycle"),
+    def("petrescu_speed_min", "rad/s", T, K, Ne, "dynamic: Petrescu's first approximation ω_m·sqrt(J*_m/J*_max), ω_m = speed_mean (eq. 1-2)"),
+    def("petrescu_speed_max", "rad/s", T, K, Ne, "dynamic: Petrescu's first approximation ω_m·sqrt(J*_m/J*_min)"),
+    def("petrescu_fluctuation_coefficient", "1", T, K, Ne, "dynamic: the fluctuation coefficient of Petrescu's first approximation, beside speed_fluctuation_coefficient"),
+    def("dynamic_coefficient_min", "1", T, K, Ne, "dynamic: Petrescu's dynamic coefficient D = ω/ω_m (eq. 4) at its smallest, speed_min/speed_mean"),
+    def("dynamic_coefficient_max", "1", T, K, Ne, "dynamic: the same at its largest, speed_max/speed_mean"),
+];
+
 /// Every metric a summary may hold, in summary order: the parts above, one after another.
 pub const METRICS: &[MetricDef] = &concat::<{ count(PARTS) }>(PARTS);
 
@@ -373,6 +394,7 @@ const PARTS: &[&[MetricDef]] = &[
     GAS,
     GAS_MODEL,
     BALANCE,
+    MACHINE_MOTION,
 ];
 
 /// Definitions in all of `parts`.

@@ -60,6 +60,9 @@ pub enum MotionError {
     Backwards(f64),
     #[error("the crank never turns: initial_speed and angular_acceleration are both 0")]
     Still,
+    /// A solved motion (the machine equation) cannot go on: why, with the step and angle.
+    #[error("{0}")]
+    Solved(String),
     #[error(
         "the crank stops at {stop_deg:.3}° before the end angle {angle_deg:.3}°: \
          ω² = ω0² + 2·α·Δθ would be {omega2:.3e} rad²/s² there, below 0 by more than round-off \

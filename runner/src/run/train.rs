@@ -7,6 +7,7 @@ use crate::output::MechanismResult;
 use crate::per_step::{ChartSink, ColumnSink, PerStepSink, RunLayout, StepColumns};
 use cardan_case::case::Case;
 use cardan_case::setup::Setup;
+use cardan_dynamics::machine_motion::{MachineTorques, SolvedMotion, SolvedRun};
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
     run, run_parallel, Gas, Inertial, LoadFamily, Sink, Solver, Stage, Summary, SummarySink,
@@ -120,9 +121,60 @@ fn run_mechanism(
     // two thirds of a step (summaries only).
     let revolutions = (case.end_angle - case.motion.start_angle) / std::f64::consts::TAU;
     let per_rev = case.steps as f64 / revolutions;
-    let check_sampling = per_rev < SAMPLING_CHECK_STEPS_PER_REV;
+    let check_sampling = per_rev < SAMPLING_CHECK_STEPS_PER_REV && case.dynamics.is_none();
     let mut shifted = Vec::new();
+    let mut solved_metrics = Vec::new();
     let mut steps = |gas: Option<GasAt>| {
+        if let Some(d) = &case.dynamics {
+            // The solved motion: its states depend on the run's torques, so one thread takes
+            // them one at a time.
+            let force = |theta: f64| gas.map_or(0.0, |g| g(theta).1);
+            let torques = MachineTorques {
+                mechanism,
+                gas: gas.map(|_| &force as &(dyn Fn(f64) -> f64 + Sync)),
+                load: &d.load,
+                flywheel: d.flywheel,
+            };
+            let run_spec = SolvedRun {
+                start: case.motion.start_angle + shift,
+                end: case.end_angle + shift,
+                steps: case.steps,
+                initial_speed: case.motion.initial_speed,
+                cycles: d.cycles,
+                steady_tolerance: d.steady_tolerance,
+            };
+            let solved = super::dynamic::solve(d, &torques, run_spec)?;
+            let torques = MachineTorques {
+                flywheel: solved.flywheel,
+                ..torques
+            };
+            let mut motion = SolvedMotion::new(&torques, solved.run, &solved.cycles);
+            let mut stages: Vec<&mut dyn Stage> = stages
+                .iter_mut()
+                .map(|s| &mut **s as &mut dyn Stage)
+                .collect();
+            let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0];
+            if let Some(p) = per_step.as_mut() {
+                list.push(p);
+            }
+            if let Some(c) = sinks.1.as_mut() {
+                list.push(c);
+            }
+            if let Some(c) = columns.as_mut() {
+                list.push(c);
+            }
+            run(
+                mechanism,
+                &mut motion,
+                &families,
+                gas,
+                &mut stages,
+                &mut list,
+            )
+            .map_err(|e| e.to_string())?;
+            solved_metrics = solved.metrics;
+            return Ok(());
+        }
         let motion = CrankMotion {
             start_angle: case.motion.start_angle + shift,
             ..case.motion
@@ -193,7 +245,15 @@ fn run_mechanism(
         }
     };
     let (summary, chart_rows) = sinks;
-    let summary = finish_summary(case, mechanism, &summary, gas_metrics)?;
+    let mut summary = finish_summary(case, mechanism, &summary, gas_metrics)?;
+    for (name, value) in solved_metrics {
+        if !value.is_finite() {
+            return Err(format!(
+                "the solved motion's {name} is not finite ({value})"
+            ));
+        }
+        summary.push(name, value);
+    }
     let charts = match per_step {
         Some(p) => p
             .finish()

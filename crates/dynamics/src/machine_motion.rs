@@ -1,0 +1,444 @@
+//! The crank's motion solved from its torques: Petrescu & Petrescu (2015) eq. (5), the
+//! Lagrange equation of a one-degree-of-freedom machine,
+//!
+//! (J*(θ) + J_f)·α + ½·dJ*/dθ·ω² = M_load(θ, ω) − M_gas(θ),
+//!
+//! with J* the mechanism's reduced inertia ([`crate::reduced_inertia`]), J_f a flywheel on the
+//! crankshaft, M_gas = F_gas·Σ dx/dθ the drive torque the gas asks for, and M_load the torque a
+//! load or motor applies to the crankshaft, positive in the direction of rotation
+//! (docs/validation/machine-motion.md).
+//!
+//! **Scheme.** The independent variable is the crank angle, on the run's uniform grid of step
+//! h, and the state is e = ½·ω²: de/dθ = ω·dω/dθ = dω/dt = α(θ, ω), with no division by ω
+//! (a run-up from rest starts at e = 0). It advances by the classical fourth-order Runge-Kutta
+//! step (global error O(h⁴), tested). Time follows from dt = dθ/ω by Simpson's rule on the
+//! step, ω at its middle from the cubic Hermite interpolant of e (its value and slope at both
+//! ends: e_m = (e0 + e1)/2 + h·(α0 − α1)/8, error O(h⁴)); on a step that starts at rest,
+//! where 1/ω is not finite, by the constant-acceleration step 2h/(ω0 + ω1).
+//!
+//! A crank that would stop or turn back (e < 0 at any stage of a step) fails the run naming the
+//! step and angle; a total inertia that is not positive fails it too. Every loop is bounded.
+
+use crate::reduced_inertia::ReducedInertiaOf;
+use cardan_mechanism::{CrankState, Mechanism, MotionError, MotionSource};
+use std::f64::consts::TAU;
+
+/// The torque a load or a motor applies to the crankshaft, N·m, positive in the direction of
+/// rotation (a brake, a pump or a driven machine is negative; a motor positive): the sum of a
+/// term of the crank angle and terms of the speed.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct LoadTorque {
+    /// A constant torque, N·m.
+    pub constant: f64,
+    /// A torque over one period of crank angle: (angle from the period's start, rad; torque,
+    /// N·m) sorted, the first at 0, the last at the period (with the first's torque), linear in
+    /// between and repeated every period.
+    pub table: Option<Table>,
+    /// k in k·ω, N·m·s/rad: a motor's falling characteristic (negative).
+    pub per_speed: f64,
+    /// k in k·ω², N·m·s²/rad²: the fan, pump and propeller law (negative for a load).
+    pub per_speed_squared: f64,
+}
+
+/// A periodic torque table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// The crank angle where the table's angle 0 is, rad.
+    pub start: f64,
+    /// (angle from `start`, rad; torque, N·m), sorted, from 0 to the period.
+    pub points: Vec<(f64, f64)>,
+}
+
+impl Table {
+    /// The table's period, rad.
+    pub fn period(&self) -> f64 {
+        self.points.last().map_or(TAU, |p| p.0)
+    }
+
+    /// The torque at crank angle `angle` (rad), linear between the points.
+    pub fn at(&self, angle: f64) -> f64 {
+        let p = &self.points;
+        let period = self.period();
+        let x = (angle - self.start).rem_euclid(period);
+        let k = p.partition_point(|q| q.0 <= x).clamp(1, p.len() - 1);
+        let ((x0, y0), (x1, y1)) = (p[k - 1], p[k]);
+        if x1 == x0 {
+            return y1;
+        }
+        y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    }
+}
+
+impl LoadTorque {
+    /// The torque at crank angle `angle` (rad) and speed `speed` (rad/s), N·m.
+    pub fn at(&self, angle: f64, speed: f64) -> f64 {
+        self.constant
+            + self.table.as_ref().map_or(0.0, |t| t.at(angle))
+            + self.per_speed * speed
+            + self.per_speed_squared * speed * speed
+    }
+}
+
+/// What drives and brakes a machine besides its own mechanism.
+pub struct MachineTorques<'a> {
+    pub mechanism: &'a dyn Mechanism,
+    /// The gas force on every piston at a crank angle, N (towards the crankshaft).
+    pub gas: Option<&'a (dyn Fn(f64) -> f64 + Sync)>,
+    pub load: &'a LoadTorque,
+    /// Flywheel inertia on the crankshaft, kg·m².
+    pub flywheel: f64,
+}
+
+/// Why a solved motion cannot go on.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SolveError {
+    #[error(
+        "the machine stops or turns back at step {step} (crank angle {angle_deg:.3}°): the \
+         load and the gas take more than its kinetic energy ({speed:.4} rad/s there)"
+    )]
+    Stops {
+        step: usize,
+        angle_deg: f64,
+        speed: f64,
+    },
+    #[error("the total reduced inertia J* + flywheel is {0} kg·m² at crank angle {1:.3}°: it must be positive")]
+    NoInertia(f64, f64),
+    #[error("the machine cannot start from rest at crank angle {0:.3}°: its torque there is {1} N·m, not positive")]
+    CannotStart(f64, f64),
+    #[error("the crank speed is not finite at step {0}")]
+    NonFinite(usize),
+}
+
+/// The right-hand side of the machine equation: α at (θ, ω).
+pub struct Acceleration<'a> {
+    torques: &'a MachineTorques<'a>,
+    inertia: ReducedInertiaOf<'a>,
+}
+
+impl<'a> Acceleration<'a> {
+    pub fn new(torques: &'a MachineTorques<'a>) -> Self {
+        Self {
+            torques,
+            inertia: ReducedInertiaOf::new(torques.mechanism),
+        }
+    }
+
+    /// (α, J* + J_f) at crank angle `angle` (rad) and speed `speed` (rad/s).
+    pub fn at(&mut self, angle: f64, speed: f64) -> Result<(f64, f64), SolveError> {
+        let r = self.inertia.at(angle);
+        let j = r.inertia + self.torques.flywheel;
+        if j.is_nan() || j <= 0.0 {
+            return Err(SolveError::NoInertia(j, angle.to_degrees()));
+        }
+        let gas = self.torques.gas.map_or(0.0, |f| f(angle) * r.piston_lever);
+        let load = self.torques.load.at(angle, speed);
+        Ok(((load - gas - 0.5 * r.derivative * speed * speed) / j, j))
+    }
+}
+
+/// The crank at one grid point of a solved motion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Point {
+    pub angle: f64,
+    /// ½·ω², rad²/s².
+    pub energy: f64,
+    pub speed: f64,
+    pub acceleration: f64,
+    pub time: f64,
+    /// J* + J_f there, kg·m².
+    pub inertia: f64,
+}
+
+/// One RK4 step of the machine equation from `p` over `h` (rad), at step `step` (for errors).
+pub fn rk4_step(f: &mut Acceleration, p: &Point, h: f64, step: usize) -> Result<Point, SolveError> {
+    let stops = |angle: f64, e: f64| SolveError::Stops {
+        step,
+        angle_deg: angle.to_degrees(),
+        speed: (2.0 * e.max(0.0)).sqrt(),
+    };
+    let speed = |angle: f64, e: f64| {
+        if e < 0.0 {
+            Err(stops(angle, e))
+        } else {
+            Ok((2.0 * e).sqrt())
+        }
+    };
+    let (t0, e0, k1) = (p.angle, p.energy, p.acceleration);
+    let k2 = f
+        .at(t0 + 0.5 * h, speed(t0 + 0.5 * h, e0 + 0.5 * h * k1)?)?
+        .0;
+    let k3 = f
+        .at(t0 + 0.5 * h, speed(t0 + 0.5 * h, e0 + 0.5 * h * k2)?)?
+        .0;
+    let k4 = f.at(t0 + h, speed(t0 + h, e0 + h * k3)?)?.0;
+    let e1 = e0 + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    let w1 = speed(t0 + h, e1)?;
+    if w1 == 0.0 || !w1.is_finite() {
+        return Err(if w1.is_finite() {
+            stops(t0 + h, e1)
+        } else {
+            SolveError::NonFinite(step)
+        });
+    }
+    let (a1, j1) = f.at(t0 + h, w1)?;
+    let dt = if p.speed > 0.0 {
+        let em = 0.5 * (e0 + e1) + h * (k1 - a1) / 8.0;
+        let wm = speed(t0 + 0.5 * h, em)?;
+        h / 6.0 * (1.0 / p.speed + 4.0 / wm + 1.0 / w1)
+    } else {
+        2.0 * h / (p.speed + w1)
+    };
+    Ok(Point {
+        angle: t0 + h,
+        energy: e1,
+        speed: w1,
+        acceleration: a1,
+        time: p.time + dt,
+        inertia: j1,
+    })
+}
+
+/// How a solved run goes: from `initial_speed` (rad/s) at `start` (rad), `cycles` repetitions
+/// of the span `start..end` of `steps` steps each, the last one reported.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolvedRun {
+    pub start: f64,
+    pub end: f64,
+    pub steps: usize,
+    pub initial_speed: f64,
+    pub cycles: usize,
+    /// Stop early once a cycle ends within this fraction of its start speed (periodic steady
+    /// state); `None`: run every cycle.
+    pub steady_tolerance: Option<f64>,
+}
+
+/// What the cycles before the reported one found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cycles {
+    /// The point where the reported cycle starts.
+    pub start: Point,
+    /// (time, speed) at the start of every cycle run, the reported one's last.
+    pub starts: Vec<(f64, f64)>,
+    /// The reported cycle's smallest and largest speed, rad/s, and its duration, s.
+    pub speed_min: f64,
+    pub speed_max: f64,
+    pub duration: f64,
+    /// The reported cycle's smallest and largest J* + J_f, kg·m².
+    pub inertia_min: f64,
+    pub inertia_max: f64,
+}
+
+impl Cycles {
+    /// The reported cycle's time-mean speed, rad/s.
+    pub fn speed_mean(&self, run: &SolvedRun) -> f64 {
+        (run.end - run.start) / self.duration
+    }
+
+    /// (ω_max − ω_min)/ω_mean over the reported cycle.
+    pub fn fluctuation(&self, run: &SolvedRun) -> f64 {
+        (self.speed_max - self.speed_min) / self.speed_mean(run)
+    }
+
+    /// The time from the start to where the cycles' start speeds stay within 1 % of the
+    /// reported cycle's, s; `None` after one cycle, or if the last two cycles' starts differ
+    /// by more.
+    pub fn runup_time(&self) -> Option<f64> {
+        let (_, last) = *self.starts.last()?;
+        let within = |w: f64| (w - last).abs() <= 0.01 * last;
+        let n = self.starts.len();
+        if n < 2 || !within(self.starts[n - 2].1) {
+            return None;
+        }
+        let first = (0..n)
+            .rev()
+            .take_while(|&k| within(self.starts[k].1))
+            .last()?;
+        Some(self.starts[first].0)
+    }
+}
+
+/// The first point of `run` under `torques`.
+pub fn first_point(f: &mut Acceleration, run: &SolvedRun) -> Result<Point, SolveError> {
+    let w = run.initial_speed;
+    let (a, j) = f.at(run.start, w)?;
+    if w == 0.0 && (a.is_nan() || a <= 0.0) {
+        return Err(SolveError::CannotStart(run.start.to_degrees(), a * j));
+    }
+    Ok(Point {
+        angle: run.start,
+        energy: 0.5 * w * w,
+        speed: w,
+        acceleration: a,
+        time: 0.0,
+        inertia: j,
+    })
+}
+
+/// Integrates the cycles of `run` before the reported one, and the reported one for its
+/// extremes (no state is kept: memory does not grow with the steps).
+pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles, SolveError> {
+    let mut f = Acceleration::new(torques);
+    let h = (run.end - run.start) / run.steps as f64;
+    let span = run.end - run.start;
+    let mut p = first_point(&mut f, run)?;
+    let mut starts = Vec::new();
+    let mut cycle = 0;
+    loop {
+        starts.push((p.time, p.speed));
+        let begin = p;
+        let (mut lo, mut hi) = (p.speed, p.speed);
+        let (mut jlo, mut jhi) = (p.inertia, p.inertia);
+        for k in 0..run.steps {
+            let step = cycle * run.steps + k + 1;
+            p = rk4_step(&mut f, &p, h, step)?;
+            (lo, hi) = (lo.min(p.speed), hi.max(p.speed));
+            (jlo, jhi) = (jlo.min(p.inertia), jhi.max(p.inertia));
+        }
+        // The next cycle starts exactly a span on, as the grid's last point is `end`.
+        p.angle = run.start + span;
+        let steady = run
+            .steady_tolerance
+            .is_some_and(|tol| (p.speed - begin.speed).abs() <= tol * begin.speed);
+        cycle += 1;
+        if cycle == run.cycles || steady {
+            return Ok(Cycles {
+                start: begin,
+                starts,
+                speed_min: lo,
+                speed_max: hi,
+                duration: p.time - begin.time,
+                inertia_min: jlo,
+                inertia_max: jhi,
+            });
+        }
+        p.angle = run.start;
+    }
+}
+
+/// The flywheel inertia (kg·m²) that brings the reported cycle's coefficient of fluctuation
+/// (ω_max − ω_min)/ω_mean down to `target`, and that coefficient: 0 if the machine meets it
+/// without one. Doubling from J*'s largest value until it is met (at most 60 times: an
+/// unreachable target is an error), then bisection in the logarithm to 1e-6 of the inertia
+/// (at most 60 steps). The first estimate is the textbook's J ≈ ΔE/(Cs·ω²)'s scale.
+pub fn size_flywheel(
+    torques: &MachineTorques,
+    run: &SolvedRun,
+    target: f64,
+) -> Result<(f64, f64), String> {
+    let cs = |flywheel: f64| {
+        let t = MachineTorques {
+            flywheel,
+            mechanism: torques.mechanism,
+            gas: torques.gas,
+            load: torques.load,
+        };
+        // A flywheel too small to carry the machine through its cycle (it stops) meets no
+        // coefficient: infinitely far from the target.
+        match solve_cycles(&t, run) {
+            Ok(c) => Ok((c.fluctuation(run), c.inertia_max)),
+            Err(SolveError::Stops { .. }) => Ok((f64::INFINITY, 0.0)),
+            Err(e) => Err(e.to_string()),
+        }
+    };
+    let (bare, c) = cs(torques.flywheel)?;
+    if bare <= target {
+        return Ok((torques.flywheel, bare));
+    }
+    let mut lo = torques.flywheel;
+    let scale = match c {
+        0.0 => {
+            ReducedInertiaOf::new(torques.mechanism)
+                .at(run.start)
+                .inertia
+        }
+        j => j,
+    };
+    let mut hi = torques.flywheel.max(scale);
+    let mut at_hi = bare;
+    let mut doublings = 0;
+    while at_hi > target {
+        lo = hi;
+        hi *= 2.0;
+        doublings += 1;
+        if doublings > 60 {
+            return Err(format!(
+                "flywheel.fluctuation_coefficient: {target} cannot be reached (still {at_hi} with a flywheel of {hi} kg·m²)"
+            ));
+        }
+        at_hi = cs(hi)?.0;
+    }
+    for _ in 0..60 {
+        if hi - lo <= 1e-6 * hi {
+            break;
+        }
+        let mid = if lo > 0.0 { (lo * hi).sqrt() } else { 0.5 * hi };
+        let at = cs(mid)?.0;
+        if at > target {
+            lo = mid;
+        } else {
+            (hi, at_hi) = (mid, at);
+        }
+    }
+    Ok((hi, at_hi))
+}
+
+/// The reported cycle of a solved run as a motion source: its `steps + 1` crank states, each
+/// made by one RK4 step from the one before (the stepper takes them one at a time and
+/// computes the joint loads at their real acceleration).
+pub struct SolvedMotion<'a> {
+    f: Acceleration<'a>,
+    run: SolvedRun,
+    next: Option<Point>,
+    /// Why the state after the last one given cannot be made.
+    pending: Option<SolveError>,
+    k: usize,
+    /// Steps before the reported cycle (for the errors' step numbers).
+    offset: usize,
+}
+
+impl<'a> SolvedMotion<'a> {
+    /// The reported cycle of `run` under `torques`, from the start `cycles` found.
+    pub fn new(torques: &'a MachineTorques<'a>, run: SolvedRun, cycles: &Cycles) -> Self {
+        Self {
+            f: Acceleration::new(torques),
+            offset: (cycles.starts.len() - 1) * run.steps,
+            run,
+            next: Some(cycles.start),
+            pending: None,
+            k: 0,
+        }
+    }
+}
+
+impl MotionSource for SolvedMotion<'_> {
+    fn len(&self) -> usize {
+        self.run.steps + 1
+    }
+
+    fn next(&mut self, _: Option<f64>) -> Option<Result<CrankState, MotionError>> {
+        if self.k > self.run.steps {
+            return None;
+        }
+        if let Some(e) = self.pending.take() {
+            self.k = self.run.steps + 1;
+            return Some(Err(MotionError::Solved(e.to_string())));
+        }
+        let p = self.next?;
+        let k = self.k;
+        self.k += 1;
+        let angle = if k == self.run.steps {
+            self.run.end
+        } else {
+            p.angle
+        };
+        let state = CrankState::new(angle, p.speed, p.acceleration, p.time);
+        if k < self.run.steps {
+            let h = (self.run.end - self.run.start) / self.run.steps as f64;
+            match rk4_step(&mut self.f, &p, h, self.offset + k + 1) {
+                Ok(q) => self.next = Some(q),
+                Err(e) => self.pending = Some(e),
+            }
+        }
+        Some(Ok(state))
+    }
+}
