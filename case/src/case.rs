@@ -484,6 +484,14 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     };
     let balance = crate::balance::build(raw.layout.as_ref(), raw.balance.as_ref(), &invalid)?;
     check_machine(&balance, &mechanisms, pistons, &invalid)?;
+    if dynamics.is_some() && balance.layout.cylinders.len() > 1 {
+        // The solved motion's torques are one cylinder's (machine_motion::MachineTorques).
+        return Err(invalid(
+            "layout.cylinders",
+            &balance.layout.cylinders.len(),
+            "a solved motion (motion.mode = \"dynamic\") of several cylinders is not modelled yet: run one cylinder, or a prescribed motion",
+        ));
+    }
     let setups = setups(
         &mechanisms,
         geometry.bore,

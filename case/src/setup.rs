@@ -52,9 +52,8 @@ impl Setup {
             Some(f) => Some(LossBudget::new(f, mechanism, bore).map_err(failed)?),
             None => None,
         };
-        let balance = MachineStage::new(machine.0, Arc::clone(shared), machine.1).map_err(|e| {
-            invalid("layout", &format!("(for the {})", mechanism.name()), &e)
-        })?;
+        let balance = MachineStage::new(machine.0, Arc::clone(shared), machine.1)
+            .map_err(|e| invalid("layout", &format!("(for the {})", mechanism.name()), &e))?;
         Ok(Self {
             gear_ratings,
             losses,
