@@ -118,7 +118,8 @@ fn a_case_folder_is_replaced_as_a_whole() {
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
     files.sort();
-    assert_eq!(files, ["summary.json"]);
+    // `run.json` records what made the folder (runner/src/run/stamp.rs).
+    assert_eq!(files, ["run.json", "summary.json"]);
     // Nothing temporary is left beside it either.
     let siblings: Vec<_> = std::fs::read_dir(dir.path().join("out"))
         .unwrap()

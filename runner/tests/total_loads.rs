@@ -30,6 +30,11 @@ fn shipped_cases_with_gas_have_the_general_solve_of_their_total() {
         }
         for text in readings {
             let case = case::parse(&file, &text).unwrap();
+            if case.dynamics.is_some() {
+                // A solved motion's steps are not a prescribed grid's: its totals are checked
+                // on its own motion (crates/dynamics/tests/machine_motion.rs).
+                continue;
+            }
             let gas = case.gas.as_ref().unwrap();
             for m in &case.mechanisms {
                 let t = m.topology();

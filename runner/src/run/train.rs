@@ -6,6 +6,7 @@ use super::sampling::{sampling_warning, shifted_peaks, SAMPLING_CHECK_STEPS_PER_
 use crate::output::MechanismResult;
 use crate::per_step::{ChartSink, ColumnSink, PerStepSink, RunLayout, StepColumns};
 use cardan_case::case::Case;
+use cardan_case::machine_motion::Dynamics;
 use cardan_case::setup::Setup;
 use cardan_dynamics::machine_motion::{MachineTorques, SolvedMotion, SolvedRun};
 use cardan_dynamics::stepper::GasAt;
@@ -56,6 +57,59 @@ impl<'p> StepsTo<'p> {
 pub(crate) struct TrainRows {
     pub charts: Option<ChartData>,
     pub columns: Option<StepColumns>,
+}
+
+/// A crank train on the solved motion of `d` (`[motion] mode = "dynamic"`): its cycles before
+/// the reported one (and the flywheel, if sized) solved first (`dynamic.rs`), then the
+/// reported cycle stepped one state at a time into `sinks`; returns the motion's metrics.
+#[allow(clippy::too_many_arguments)]
+fn run_solved(
+    case: &Case,
+    d: &Dynamics,
+    mechanism: &dyn Mechanism,
+    shift: f64,
+    families: &[&dyn LoadFamily],
+    gas: Option<GasAt>,
+    stages: &mut [Box<dyn Stage>],
+    mut sinks: Vec<&mut dyn Sink>,
+) -> Result<Vec<(&'static str, f64)>, String> {
+    // The solved motion: its states depend on the run's torques, so one thread takes them one
+    // at a time.
+    let force = |theta: f64| gas.map_or(0.0, |g| g(theta).1);
+    let torques = MachineTorques {
+        mechanism,
+        gas: gas.map(|_| &force as &(dyn Fn(f64) -> f64 + Sync)),
+        load: &d.load,
+        flywheel: d.flywheel,
+    };
+    let run_spec = SolvedRun {
+        start: case.motion.start_angle + shift,
+        end: case.end_angle + shift,
+        steps: case.steps,
+        initial_speed: case.motion.initial_speed,
+        cycles: d.cycles,
+        steady_tolerance: d.steady_tolerance,
+    };
+    let solved = super::dynamic::solve(d, &torques, run_spec)?;
+    let torques = MachineTorques {
+        flywheel: solved.flywheel,
+        ..torques
+    };
+    let mut motion = SolvedMotion::new(&torques, solved.run, &solved.cycles);
+    let mut stages: Vec<&mut dyn Stage> = stages
+        .iter_mut()
+        .map(|s| &mut **s as &mut dyn Stage)
+        .collect();
+    run(
+        mechanism,
+        &mut motion,
+        families,
+        gas,
+        &mut stages,
+        &mut sinks,
+    )
+    .map_err(|e| e.to_string())?;
+    Ok(solved.metrics)
 }
 
 /// Runs one crank train of `case`: `mechanism` (its stages copied from its `setup`, which
@@ -126,33 +180,6 @@ fn run_mechanism(
     let mut solved_metrics = Vec::new();
     let mut steps = |gas: Option<GasAt>| {
         if let Some(d) = &case.dynamics {
-            // The solved motion: its states depend on the run's torques, so one thread takes
-            // them one at a time.
-            let force = |theta: f64| gas.map_or(0.0, |g| g(theta).1);
-            let torques = MachineTorques {
-                mechanism,
-                gas: gas.map(|_| &force as &(dyn Fn(f64) -> f64 + Sync)),
-                load: &d.load,
-                flywheel: d.flywheel,
-            };
-            let run_spec = SolvedRun {
-                start: case.motion.start_angle + shift,
-                end: case.end_angle + shift,
-                steps: case.steps,
-                initial_speed: case.motion.initial_speed,
-                cycles: d.cycles,
-                steady_tolerance: d.steady_tolerance,
-            };
-            let solved = super::dynamic::solve(d, &torques, run_spec)?;
-            let torques = MachineTorques {
-                flywheel: solved.flywheel,
-                ..torques
-            };
-            let mut motion = SolvedMotion::new(&torques, solved.run, &solved.cycles);
-            let mut stages: Vec<&mut dyn Stage> = stages
-                .iter_mut()
-                .map(|s| &mut **s as &mut dyn Stage)
-                .collect();
             let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0];
             if let Some(p) = per_step.as_mut() {
                 list.push(p);
@@ -163,16 +190,8 @@ fn run_mechanism(
             if let Some(c) = columns.as_mut() {
                 list.push(c);
             }
-            run(
-                mechanism,
-                &mut motion,
-                &families,
-                gas,
-                &mut stages,
-                &mut list,
-            )
-            .map_err(|e| e.to_string())?;
-            solved_metrics = solved.metrics;
+            solved_metrics =
+                run_solved(case, d, mechanism, shift, &families, gas, &mut stages, list)?;
             return Ok(());
         }
         let motion = CrankMotion {
@@ -222,38 +241,10 @@ fn run_mechanism(
         }
         Ok::<(), String>(())
     };
-    let gas_metrics = match &case.gas {
-        None => {
-            steps(None)?;
-            Vec::new()
-        }
-        Some(gas) => {
-            let failed = |e: cardan_gas::GasError| format!("gas.{e}");
-            let cylinder = gas
-                .cylinder(case.geometry.bore, mechanism.stroke(), case.pistons)
-                .map_err(failed)?;
-            cylinder.with_phased_chamber(mechanism, case.crank_phase, |chamber| {
-                let prepared = gas
-                    .model()
-                    .prepare(*chamber, mean_speed(case))
-                    .map_err(failed)?;
-                // The chamber's pressure is a function of the first train's crank angle.
-                let at = |theta: f64| prepared.at(theta - shift);
-                steps(Some(&at))?;
-                Ok::<_, String>(prepared.metrics())
-            })?
-        }
-    };
+    let gas_metrics = with_gas(case, mechanism, shift, &mut steps)?;
     let (summary, chart_rows) = sinks;
     let mut summary = finish_summary(case, mechanism, &summary, gas_metrics)?;
-    for (name, value) in solved_metrics {
-        if !value.is_finite() {
-            return Err(format!(
-                "the solved motion's {name} is not finite ({value})"
-            ));
-        }
-        summary.push(name, value);
-    }
+    push_solved(&mut summary, solved_metrics)?;
     let charts = match per_step {
         Some(p) => p
             .finish()
@@ -268,6 +259,47 @@ fn run_mechanism(
         columns: columns.map(ColumnSink::finish),
     };
     Ok((summary, warnings, rows))
+}
+
+/// Runs `steps` with the case's gas, if any, as the chamber's pressure at the first train's
+/// crank angle (`shift`: this train's lead), and returns the gas model's metrics.
+fn with_gas(
+    case: &Case,
+    mechanism: &dyn Mechanism,
+    shift: f64,
+    steps: &mut dyn FnMut(Option<GasAt>) -> Result<(), String>,
+) -> Result<Vec<GasMetric>, String> {
+    let Some(gas) = &case.gas else {
+        steps(None)?;
+        return Ok(Vec::new());
+    };
+    let failed = |e: cardan_gas::GasError| format!("gas.{e}");
+    let cylinder = gas
+        .cylinder(case.geometry.bore, mechanism.stroke(), case.pistons)
+        .map_err(failed)?;
+    cylinder.with_phased_chamber(mechanism, case.crank_phase, |chamber| {
+        let prepared = gas
+            .model()
+            .prepare(*chamber, mean_speed(case))
+            .map_err(failed)?;
+        // The chamber's pressure is a function of the first train's crank angle.
+        let at = |theta: f64| prepared.at(theta - shift);
+        steps(Some(&at))?;
+        Ok::<_, String>(prepared.metrics())
+    })
+}
+
+/// The solved motion's metrics into `summary`; refused if one is not finite.
+fn push_solved(summary: &mut Summary, metrics: Vec<(&'static str, f64)>) -> Result<(), String> {
+    for (name, value) in metrics {
+        if !value.is_finite() {
+            return Err(format!(
+                "the solved motion's {name} is not finite ({value})"
+            ));
+        }
+        summary.push(name, value);
+    }
+    Ok(())
 }
 
 /// The summary of `mechanism`'s run in `case` from its sink, with the gas model's metrics and,
