@@ -3,7 +3,7 @@
 //!
 //! (J*(θ) + J_f)·α + ½·dJ*/dθ·ω² = M_load(θ, ω) − M_gas(θ),
 //!
-//! with J* the mechanism's reduced inertia ([`crate::reduced_inertia`]), J_f a flywheel on the
+//! with J* the mechanism's reduced inertia ([`mod@crate::reduced_inertia`]), J_f a flywheel on the
 //! crankshaft, M_gas = F_gas·Σ dx/dθ the drive torque the gas asks for, and M_load the torque a
 //! load or motor applies to the crankshaft, positive in the direction of rotation
 //! (docs/validation/machine-motion.md).
