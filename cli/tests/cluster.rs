@@ -94,7 +94,7 @@ fn a_run_killed_at_a_random_moment_and_resumed_equals_one_run() {
 
 /// `--shard` and `cardan merge` from the command line: the merge equals the single run; a
 /// shard count of 0, K above N and `--shard` with `--only` are usage errors (exit 2); a merge
-/// of an incomplete set of shards fails (exit 1).
+/// of an incomplete set of shards, or with a shard killed before its end, fails (exit 1).
 #[test]
 fn shards_from_the_command_line_merge_into_one_run() {
     let tmp = tempfile::tempdir().unwrap();
@@ -141,6 +141,26 @@ fn shards_from_the_command_line_merge_into_one_run() {
     ]);
     assert_eq!(out.status.code(), Some(1), "{out:?}");
     assert!(String::from_utf8_lossy(&out.stderr).contains("2/2"));
+    // A shard whose task was killed before its end (a Slurm task cancelled, timed out, on a
+    // failed node: its record, written last, is missing): refused, said so, nothing written.
+    std::fs::remove_file(shards[1].join("shard.json")).unwrap();
+    let m3 = tmp.path().join("m3");
+    let out = run(&[
+        "merge".as_ref(),
+        shards[0].as_os_str(),
+        shards[1].as_os_str(),
+        "--out".as_ref(),
+        m3.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        said.contains(&*shards[1].to_string_lossy())
+            && said.contains("did not finish")
+            && said.contains("--resume"),
+        "{said}"
+    );
+    assert!(!m3.exists(), "a refused merge wrote {}", m3.display());
     for bad in [
         &["--shard", "0/2"][..],
         &["--shard", "3/2"],
