@@ -75,7 +75,7 @@ struct Range {
     #[schemars(schema_with = "number_or_text")]
     to: toml::Value,
     /// How many values, the ends included.
-    points: Whole<2, { MAX_POINTS as i64 }>,
+    points: Whole<2, { MAX_EXPANDED as i64 }>,
     /// "linear" (the default) or "log" (evenly spaced logarithms; positive ends).
     #[serde(default)]
     scale: Scale,
