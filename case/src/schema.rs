@@ -408,7 +408,10 @@ mod tests {
     /// element, found 0 elements"): the field and what it must be.
     #[test]
     fn a_word_written_as_a_list_or_table_names_the_field_and_the_rule() {
-        for (written, shown) in [("[]", "[]"), ("[\"pump\", \"engine\"]", "[\"pump\", \"engine\"]")] {
+        for (written, shown) in [
+            ("[]", "[]"),
+            ("[\"pump\", \"engine\"]", "[\"pump\", \"engine\"]"),
+        ] {
             let e = error(&format!(
                 "[geometry]\ncrank_length = 1.0\nsteps = 8\nmachine = {written}"
             ));

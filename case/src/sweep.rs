@@ -460,8 +460,10 @@ impl Sweep {
         // (the later point, the first point of its name), the earliest later point kept.
         let mut clash: Option<(usize, usize)> = None;
         for group in hashes.chunk_by(|a, b| a.0 == b.0).filter(|g| g.len() > 1) {
-            let names: Vec<(String, usize)> =
-                group.iter().map(|&(_, k)| (self.point_name(k), k)).collect();
+            let names: Vec<(String, usize)> = group
+                .iter()
+                .map(|&(_, k)| (self.point_name(k), k))
+                .collect();
             for (j, (name, k)) in names.iter().enumerate() {
                 if let Some((_, first)) = names[..j].iter().find(|(n, _)| n == name) {
                     if clash.is_none_or(|(later, _)| *k < later) {

@@ -308,7 +308,8 @@ pub(super) fn run_table(
         };
         let mut ran = 0;
         for start in (0..rows).step_by(CHUNK) {
-            let results: Vec<Result<Vec<MechanismResult>, String>> = (start..(start + CHUNK).min(rows))
+            let results: Vec<Result<Vec<MechanismResult>, String>> = (start
+                ..(start + CHUNK).min(rows))
                 .into_par_iter()
                 .map(|j| {
                     let r = run_point(table, table.index(j));
