@@ -291,6 +291,22 @@ pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, Case
     }
 }
 
+/// Point `k` of `sweep` (from 0) validated: the case it runs as, with its sweep's name and its
+/// swept values; the errors are those of a case file of that point's table.
+pub fn point_case(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseError> {
+    let point = sweep.point(k)?;
+    let mut case = from_table(&sweep.file, point.table)?;
+    case.sweep = Some((sweep.name.clone(), point.values));
+    Ok(case)
+}
+
+/// Validates a case file's table that has no `[sweep]` (one made by
+/// [`crate::sweep::Sweep::define`]'s caller, or read by [`toml_table`]); `file` is only for the
+/// messages.
+pub fn case_of_table(file: &Path, table: toml::Table) -> Result<Case, CaseError> {
+    from_table(file, table)
+}
+
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
     from_table(file, toml_table(file, text)?)

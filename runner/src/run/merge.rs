@@ -165,7 +165,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
     }
     for (sweep, points) in sweeps {
         let dir = out.join(sweep);
-        // A sweep written as a table: whole, by one shard.
+        // A sweep written as a table: whole, by one shard (one entry of the records).
         if let Some(from) = points
             .first()
             .map(|(_, shard)| shard.join(sweep))
@@ -180,7 +180,18 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
                     })
             });
             match copied {
-                Ok(()) => report.sweeps.push((sweep.to_string(), dir, points.len())),
+                Ok(()) => {
+                    // Its points that ran: the table's rows but the failed ones.
+                    let header: Option<serde_json::Value> =
+                        std::fs::read_to_string(dir.join("sweep.json"))
+                            .ok()
+                            .and_then(|t| serde_json::from_str(&t).ok());
+                    let ran = header.map_or(0, |h| {
+                        let rows = h["rows"].as_u64().unwrap_or(0) as usize;
+                        rows.saturating_sub(h["failed"].as_array().map_or(0, Vec::len))
+                    });
+                    report.sweeps.push((sweep.to_string(), dir, ran))
+                }
                 Err(e) => report.failures.push(format!(
                     "sweep \"{sweep}\": cannot write {}: {e:#}",
                     dir.display()
