@@ -369,6 +369,12 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
             });
         }
         p.angle = run.start;
+        if f.friction.is_some() {
+            // The friction's acceleration at the grid's own angle, as the run's state is
+            // loaded (a loss may jump at a dead centre, where the previous cycle's end angle
+            // differs from it by a rounding).
+            p.acceleration = f.at(p.angle, p.speed)?.0;
+        }
     }
 }
 
@@ -376,7 +382,8 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
 /// (ω_max − ω_min)/ω_mean down to `target`, and that coefficient: 0 if the machine meets it
 /// without one. Doubling from J*'s largest value until it is met (at most 60 times: an
 /// unreachable target is an error), then bisection in the logarithm to 1e-6 of the inertia
-/// (at most 60 steps). The first estimate is the textbook's J ≈ ΔE/(Cs·ω²)'s scale.
+/// (at most 60 steps). The first estimate is the textbook's J ≈ ΔE/(Cs·ω²)'s scale; a
+/// mechanism of no inertia starts from 1e-6 kg·m².
 pub fn size_flywheel(
     torques: &MachineTorques,
     run: &SolvedRun,
@@ -392,6 +399,8 @@ pub fn size_flywheel(
         match solve_cycles(&t, run) {
             Ok(c) => Ok((c.fluctuation(run), c.inertia_max)),
             Err(SolveError::Stops { .. }) => Ok((f64::INFINITY, 0.0)),
+            // A mechanism of no mass without a flywheel: no inertia to carry it at all.
+            Err(SolveError::NoInertia(..)) if flywheel == 0.0 => Ok((f64::INFINITY, 0.0)),
             Err(e) => Err(e.to_string()),
         }
     };
@@ -408,6 +417,9 @@ pub fn size_flywheel(
         }
         j => j,
     };
+    // A mechanism of no inertia: doubling from a milligram-metre-squared flywheel (1e-6
+    // kg·m², far below any machine's; 60 doublings reach 1e12 kg·m²).
+    let scale = if scale > 0.0 { scale } else { 1e-6 };
     let mut hi = torques.flywheel.max(scale);
     let mut at_hi = bare;
     let mut doublings = 0;
@@ -486,7 +498,18 @@ impl MotionSource for SolvedMotion<'_> {
         } else {
             p.angle
         };
-        let state = CrankState::new(angle, p.speed, p.acceleration, p.time);
+        let mut acceleration = p.acceleration;
+        if angle != p.angle && self.f.friction.is_some() {
+            // As at a cycle's start (solve_cycles): the acceleration at the grid's last angle.
+            match self.f.at(angle, p.speed) {
+                Ok((a, _)) => acceleration = a,
+                Err(e) => {
+                    self.k = self.run.steps + 1;
+                    return Some(Err(MotionError::Solved(e.to_string())));
+                }
+            }
+        }
+        let state = CrankState::new(angle, p.speed, acceleration, p.time);
         if k < self.run.steps {
             let h = (self.run.end - self.run.start) / self.run.steps as f64;
             match rk4_step(&mut self.f, &p, h, self.offset + k + 1) {
