@@ -210,3 +210,17 @@ fn friction_is_among_the_solved_torques() {
         );
     }
 }
+
+/// A loss that carries its history from step to step (the ring films' squeeze term) has no
+/// value at the solved motion's Runge-Kutta stages: refused on reading, naming the field (so
+/// `cardan check` refuses it as `cardan run` would); Karhula's ring pack is taken.
+#[test]
+fn ring_films_are_refused_with_a_solved_motion() {
+    let text = pump(1, MOTOR, "[friction]\nrings = \"film\"");
+    let e = match parse(Path::new("machine-motion-test.toml"), &text) {
+        Ok(_) => panic!("ring films accepted with a solved motion"),
+        Err(e) => e.to_string(),
+    };
+    assert!(e.contains("friction.rings") && e.contains("dynamic"), "{e}");
+    case(&pump(1, MOTOR, "[friction]\nrings = \"karhula\""));
+}
