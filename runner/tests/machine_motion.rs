@@ -102,7 +102,12 @@ fn the_textbook_flywheel_problem_through_a_case_file() {
         ("speed_fluctuation_coefficient", solved, linear, 1e-3),
         ("fluctuation_coefficient_linear", linearised, linear, 1e-3),
         ("speed_mean", mean, MEAN_SPEED, 1e-3),
-        ("flywheel_inertia", metric(r, "flywheel_inertia"), INERTIA, 1e-12),
+        (
+            "flywheel_inertia",
+            metric(r, "flywheel_inertia"),
+            INERTIA,
+            1e-12,
+        ),
     ] {
         assert!(
             (got - want).abs() <= tol * want,
@@ -184,7 +189,10 @@ fn friction_is_among_the_solved_torques() {
         );
         assert!(wf < wb, "{}: friction does not slow the machine", f.label);
         let column = |name: &str| steps.get(name).unwrap_or_else(|| panic!("no {name}"));
-        let (w, a) = (column("crank_speed_rad_s"), column("crank_acceleration_rad_s2"));
+        let (w, a) = (
+            column("crank_speed_rad_s"),
+            column("crank_acceleration_rad_s2"),
+        );
         let (drive, friction) = (column("total_torque_nm"), column("friction_torque_nm"));
         let angle = column("crank_angle_deg");
         let mut work = 0.0;

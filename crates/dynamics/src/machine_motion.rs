@@ -152,7 +152,10 @@ impl<'a> Acceleration<'a> {
         if j.is_nan() || j <= 0.0 {
             return Err(SolveError::NoInertia(j, angle.to_degrees()));
         }
-        let gas = self.torques.gas.map_or(0.0, |f| f(angle).1 * r.piston_lever);
+        let gas = self
+            .torques
+            .gas
+            .map_or(0.0, |f| f(angle).1 * r.piston_lever);
         let load = self.torques.load.at(angle, speed);
         let drive = load - gas - 0.5 * r.derivative * speed * speed;
         let Some(friction) = self.friction.as_mut() else {
@@ -166,9 +169,7 @@ impl<'a> Acceleration<'a> {
         let scale = load.abs() + gas.abs() + (drive - load + gas).abs();
         let mut alpha = drive / j;
         for _ in 0..FRICTION_ITERATIONS {
-            let torque = friction
-                .torque(angle, speed, alpha)
-                .map_err(&failed)?;
+            let torque = friction.torque(angle, speed, alpha).map_err(&failed)?;
             let next = (drive - torque) / j;
             if !next.is_finite() {
                 return Err(failed(format!("its torque is not finite ({torque} N·m)")));

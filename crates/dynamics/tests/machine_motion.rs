@@ -419,9 +419,7 @@ fn friction_torque(m: &dyn Mechanism, budget: &mut LossBudget, c: &CrankState) -
     assert!(m.closed_form_loads(&s, false, &[f], &mut gas));
     total.add(&gas);
     let mut out = vec![0.0; budget.names().len()];
-    budget
-        .evaluate(&s, &total, Some(p), &[], &mut out)
-        .unwrap();
+    budget.evaluate(&s, &total, Some(p), &[], &mut out).unwrap();
     out.iter().sum::<f64>() / c.speed
 }
 
@@ -483,9 +481,8 @@ fn with_friction_the_torques_work_is_the_change_of_kinetic_energy() {
                 })
                 .sum();
             let mut j2 = ReducedInertiaOf::new(m.as_ref());
-            let mut ke = |c: &CrankState| {
-                0.5 * (j2.at(c.angle).inertia + flywheel) * c.speed * c.speed
-            };
+            let mut ke =
+                |c: &CrankState| 0.5 * (j2.at(c.angle).inertia + flywheel) * c.speed * c.speed;
             let dke = ke(s.last().unwrap()) - ke(&s[0]);
             let friction_work = lost * h;
             println!("{name} {steps}: work {work} ΔKE {dke} friction ≈ {friction_work}");
@@ -493,10 +490,18 @@ fn with_friction_the_torques_work_is_the_change_of_kinetic_energy() {
             ((work - dke) / dke.abs().max(work.abs())).abs()
         };
         let (a, b, c) = (mismatch(180), mismatch(360), mismatch(720));
-        println!("{name}: {a:e} {b:e} {c:e} orders {} {}", (a / b).log2(), (b / c).log2());
+        println!(
+            "{name}: {a:e} {b:e} {c:e} orders {} {}",
+            (a / b).log2(),
+            (b / c).log2()
+        );
         assert!(b < 1e-6, "{name}: work against ΔKE: {b:e}");
         for (x, y) in [(a, b), (b, c)] {
-            assert!((x / y).log2() > order, "{name}: order {} ({x:e} → {y:e})", (x / y).log2());
+            assert!(
+                (x / y).log2() > order,
+                "{name}: order {} ({x:e} → {y:e})",
+                (x / y).log2()
+            );
         }
     }
 }
