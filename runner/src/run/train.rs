@@ -60,7 +60,7 @@ pub(crate) struct TrainRows {
     pub columns: Option<StepColumns>,
 }
 
-/// A crank train on the solved motion of `d` (`[motion] mode = "dynamic"`): its cycles before
+/// A crank train on the solved motion of `case.dynamics` (`[motion] mode = "dynamic"`): its cycles before
 /// the reported one (and the flywheel, if sized) solved first (`dynamic.rs`), then the
 /// reported cycle stepped one state at a time into `sinks`; the friction torque of the
 /// `setup`'s loss budget (with `[friction]`) among the motion's torques; returns the motion's
@@ -68,7 +68,6 @@ pub(crate) struct TrainRows {
 #[allow(clippy::too_many_arguments)]
 fn run_solved(
     case: &Case,
-    d: &Dynamics,
     (mechanism, setup): (&dyn Mechanism, &Setup),
     shift: f64,
     families: &[&dyn LoadFamily],
@@ -78,6 +77,7 @@ fn run_solved(
 ) -> Result<Vec<(&'static str, f64)>, String> {
     // The solved motion: its states depend on the run's torques, so one thread takes them one
     // at a time.
+    let d: &Dynamics = case.dynamics.as_ref().ok_or("not a solved motion")?;
     let torques = MachineTorques {
         mechanism,
         gas,
@@ -185,7 +185,7 @@ fn run_mechanism(
     let mut shifted = Vec::new();
     let mut solved_metrics = Vec::new();
     let mut steps = |gas: Option<GasAt>| {
-        if let Some(d) = &case.dynamics {
+        if case.dynamics.is_some() {
             let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0];
             if let Some(p) = per_step.as_mut() {
                 list.push(p);
@@ -198,7 +198,6 @@ fn run_mechanism(
             }
             solved_metrics = run_solved(
                 case,
-                d,
                 (mechanism, setup),
                 shift,
                 &families,
@@ -257,12 +256,7 @@ fn run_mechanism(
     };
     let gas_metrics = with_gas(case, mechanism, shift, &mut steps)?;
     let (summary, chart_rows) = sinks;
-    // A solved motion's speed for the engine's fmep correlation: its reported cycle's mean.
-    let solved_speed = solved_metrics
-        .iter()
-        .find(|(name, _)| *name == "speed_mean")
-        .map(|m| m.1);
-    let mut summary = finish_summary(case, mechanism, &summary, gas_metrics, solved_speed)?;
+    let mut summary = finish_summary(case, mechanism, &summary, gas_metrics, &solved_metrics)?;
     push_solved(&mut summary, solved_metrics)?;
     let charts = match per_step {
         Some(p) => p
@@ -322,15 +316,16 @@ fn push_solved(summary: &mut Summary, metrics: Vec<(&'static str, f64)>) -> Resu
 }
 
 /// The summary of `mechanism`'s run in `case` from its sink, with the gas model's metrics and,
-/// with `[friction]`, the engine's (its correlation at the case's prescribed motion, or at
-/// `solved_speed`, rad/s, the mean speed of a solved one); refused if a metric is not finite.
+/// with `[friction]`, the engine's (its correlation at the case's prescribed motion, or at the
+/// `speed_mean` of a solved one's metrics `solved`); refused if a metric is not finite.
 fn finish_summary(
     case: &Case,
     mechanism: &dyn Mechanism,
     sink: &SummarySink,
     gas_metrics: Vec<GasMetric>,
-    solved_speed: Option<f64>,
+    solved: &[(&'static str, f64)],
 ) -> Result<Summary, String> {
+    let solved_speed = solved.iter().find(|m| m.0 == "speed_mean").map(|m| m.1);
     let mut summary = sink.finish(mechanism)?;
     for m in gas_metrics {
         if !m.value.is_finite() {
