@@ -232,3 +232,20 @@ fn ring_films_are_refused_with_a_solved_motion() {
     assert!(e.contains("friction.rings") && e.contains("dynamic"), "{e}");
     case(&pump(1, MOTOR, "[friction]\nrings = \"karhula\""));
 }
+
+/// From rest, a Coulomb loss takes its limit torque (the breakaway torque): a motor of 0.01 N·m
+/// starts the frictionless pump at top dead centre (no gas lever, no inertial torque at rest)
+/// but not the one with friction (its bearings carry the compressed gas's force there), which
+/// fails naming the start.
+#[test]
+fn friction_holds_a_weak_motor_at_rest() {
+    let weak = "torque = \"0.01 N*m\"";
+    let message = |text: &str| match run_case(&case(text), None) {
+        Ok(_) => String::new(),
+        Err(e) => e,
+    };
+    let bare = message(&pump(1, weak, ""));
+    assert!(!bare.contains("cannot start from rest"), "{bare}");
+    let held = message(&pump(1, weak, "[friction]\nrings = \"karhula\""));
+    assert!(held.contains("cannot start from rest"), "{held}");
+}
