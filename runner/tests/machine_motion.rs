@@ -170,8 +170,8 @@ const MOTOR: &str = "torque = \"223.4 N*m\"\ntorque_per_speed = -1.1851";
 /// (Coulomb losses at their limit at vanishing speed from rest) runs slower than without
 /// friction, and at every step of the reported cycle the per-step columns, computed by the
 /// run from the solved state apart from the solver (the joint loads' drive torque, the loss
-/// budget's friction torque Σ P/ω), meet the machine equation: total_torque + friction_torque
-/// + J_f·α = the motor's 223.4 − 1.1851·ω N·m, to 1e-9 of the torques (the solver's fixed
+/// budget's friction torque Σ P/ω), meet the machine equation: total_torque +
+/// friction_torque + J_f·α = the motor's 223.4 − 1.1851·ω N·m, to 1e-9 of the torques (the solver's fixed
 /// point in α is converged to 1e-12 of them). The losses the summary reports are thus those of
 /// the solved motion; their work (loss_work, ∫P dt) is ∫T_f dθ to 1e-4 (trapezoidal rules).
 #[test]
