@@ -446,13 +446,6 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         raw.flywheel.as_ref(),
         &invalid,
     )?;
-    if let (Some(_), Some(_)) = (&dynamics, &raw.friction) {
-        return Err(invalid(
-            "friction",
-            &"[friction] with motion.mode = \"dynamic\"",
-            "the friction torque is not yet part of the solved motion's torques (issue 25): run the dynamic case without [friction]",
-        ));
-    }
     if dynamics.is_some() && (m.initial_speed.si.is_nan() || m.initial_speed.si < 0.0) {
         return Err(invalid(
             "motion.initial_speed",
@@ -508,6 +501,9 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         (&balance, motion.initial_speed),
         &invalid,
     )?;
+    if dynamics.is_some() {
+        solved_friction(&setups, &invalid)?;
+    }
     Ok(Case {
         file: file.into(),
         name: raw.name.0,
@@ -528,6 +524,22 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         balance,
         sweep: None,
     })
+}
+
+/// Refuses the loss models a solved motion cannot take among its torques: those whose loss at
+/// a step depends on the steps before (the ring films' squeeze term carries each film from the
+/// previous step's time), which have no value at the Runge-Kutta stages' states
+/// (`cardan_dynamics::machine_friction`).
+fn solved_friction(setups: &[Setup], invalid: &Invalid) -> Result<(), CaseError> {
+    let history = |s: &Setup| s.losses.as_ref().is_some_and(|l| l.carries_history());
+    if setups.iter().any(history) {
+        return Err(invalid(
+            "friction.rings",
+            &"\"film\" with motion.mode = \"dynamic\"",
+            "the ring films carry their thickness from step to step, which a solved motion's Runge-Kutta stages do not have: use rings = \"karhula\" in a dynamic motion",
+        ));
+    }
+    Ok(())
 }
 
 /// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a
