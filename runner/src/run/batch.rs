@@ -10,7 +10,7 @@ use super::table::{run_table, TableSweep};
 use cardan_case::case::Case;
 use cardan_report::files;
 use rayon::prelude::*;
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 
 /// The worker threads a run starts for `requested` (`--jobs`; None: one per core) on a machine of
@@ -71,6 +71,10 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
             &report.failures,
         )
     });
+    if let Some(Err(why)) = manifest.as_ref().map(|_| shard::remove_record(out)) {
+        report.failures.push(why);
+        return report;
+    }
     // Every sweep's points in their order, before `--only` selects some.
     let mut all_points: HashMap<String, Vec<String>> = HashMap::new();
     for c in &cases {
@@ -138,38 +142,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         }
         report.failures.extend(failures);
     }
-    let mut points: std::collections::BTreeMap<&str, Vec<Point>> = Default::default();
-    let mut failed: HashMap<&str, usize> = HashMap::new();
-    for (case, o) in cases.iter().zip(&outcomes) {
-        match o {
-            Ok(written) => {
-                let name = &case.name;
-                let dir = match &case.sweep {
-                    Some((sweep, values)) => {
-                        points
-                            .entry(sweep)
-                            .or_default()
-                            .push((name, values, &written.cells));
-                        out.join(sweep).join(name)
-                    }
-                    None => written.dir.clone(),
-                };
-                if written.reused {
-                    tracing::info!(case = %name, folder = %dir.display(), "kept (--resume)");
-                    report.reused += 1;
-                } else {
-                    tracing::info!(case = %name, folder = %dir.display(), "written");
-                }
-                report.written.push((name.clone(), dir));
-            }
-            Err(e) => {
-                if let Some((sweep, _)) = &case.sweep {
-                    *failed.entry(sweep.as_str()).or_default() += 1;
-                }
-                report.failures.push(e.clone())
-            }
-        }
-    }
+    let (points, failed) = record_outcomes(&cases, &outcomes, out, &mut report);
     write_sweeps(
         &sweeps,
         out,
@@ -205,6 +178,49 @@ type Outcome = Result<Written, String>;
 
 /// A sweep written as a table: its name, how many of its points ran, its failures.
 type TableOutcome = (String, usize, Vec<String>);
+
+/// Each case's outcome into `report` (its folder written or kept, or its failure), and the
+/// points of each sweep that ran and the count of those that failed, for the sweep tables.
+fn record_outcomes<'a>(
+    cases: &'a [Case],
+    outcomes: &'a [Outcome],
+    out: &Path,
+    report: &mut Report,
+) -> (BTreeMap<&'a str, Vec<Point<'a>>>, HashMap<&'a str, usize>) {
+    let mut points: BTreeMap<&str, Vec<Point>> = Default::default();
+    let mut failed: HashMap<&str, usize> = HashMap::new();
+    for (case, o) in cases.iter().zip(outcomes) {
+        match o {
+            Ok(written) => {
+                let name = &case.name;
+                let dir = match &case.sweep {
+                    Some((sweep, values)) => {
+                        points
+                            .entry(sweep)
+                            .or_default()
+                            .push((name, values, &written.cells));
+                        out.join(sweep).join(name)
+                    }
+                    None => written.dir.clone(),
+                };
+                if written.reused {
+                    tracing::info!(case = %name, folder = %dir.display(), "kept (--resume)");
+                    report.reused += 1;
+                } else {
+                    tracing::info!(case = %name, folder = %dir.display(), "written");
+                }
+                report.written.push((name.clone(), dir));
+            }
+            Err(e) => {
+                if let Some((sweep, _)) = &case.sweep {
+                    *failed.entry(sweep.as_str()).or_default() += 1;
+                }
+                report.failures.push(e.clone())
+            }
+        }
+    }
+    (points, failed)
+}
 
 /// Runs and writes every case of `cases` into its folder under `base(case)`, then each sweep
 /// of `tables` into its table (`table.rs`), on the worker threads `options` asks for, telling

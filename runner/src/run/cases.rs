@@ -62,7 +62,7 @@ pub struct Batch {
 /// What one case file holds: its cases, or a sweep written as a table.
 enum Entry {
     Cases(Vec<Case>),
-    Table(TableSweep),
+    Table(Box<TableSweep>),
 }
 
 impl Entry {
@@ -93,11 +93,11 @@ fn load_entry(file: &Path) -> Result<Entry, CaseError> {
     let first = case::point_case(&sweep, 0)?;
     let n = sweep.len();
     if !case_folders(&first, n) {
-        return Ok(Entry::Table(TableSweep {
+        return Ok(Entry::Table(Box::new(TableSweep {
             sweep: Arc::new(sweep),
             first,
             selected: None,
-        }));
+        })));
     }
     if n > MAX_EXPANDED {
         return Err(CaseError::Invalid {
@@ -156,7 +156,7 @@ pub fn load_batch(paths: &[PathBuf]) -> (Batch, Vec<String>) {
         folders.insert(folder, file);
         match entry {
             Entry::Cases(cases) => batch.cases.extend(cases),
-            Entry::Table(t) => batch.tables.push(t),
+            Entry::Table(t) => batch.tables.push(*t),
         }
     }
     (batch, failures)

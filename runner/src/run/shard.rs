@@ -254,6 +254,19 @@ pub fn parse_shard(text: &str) -> Result<(usize, usize), String> {
     Ok((k, n))
 }
 
+/// Removes the record of an earlier run of the shard from its output folder `out`, before
+/// anything is written: a run killed now leaves a shard that `cardan merge` refuses as
+/// unfinished, not one whose old record vouches for folders of other inputs.
+pub fn remove_record(out: &Path) -> Result<(), String> {
+    let old = out.join(MANIFEST);
+    match std::fs::remove_file(&old) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+            Err(format!("remove {}: {e}: nothing was run", old.display()))
+        }
+        _ => Ok(()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::parse_shard;
