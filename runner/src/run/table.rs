@@ -61,7 +61,7 @@ impl TableSweep {
         self.selected.as_ref().map_or(j, |s| s[j])
     }
 
-    /// Validates every point of the sweep as a run would before stepping it, [`CHECK_CHUNK`]
+    /// Validates every point of the sweep as a run would before stepping it, 4096 (`CHECK_CHUNK`)
     /// points at a time on the worker threads (none kept): the first point in order that fails,
     /// or how many points are valid.
     pub fn check(&self) -> Result<usize, CaseError> {
