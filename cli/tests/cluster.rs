@@ -172,6 +172,68 @@ fn shards_from_the_command_line_merge_into_one_run() {
     }
 }
 
+/// A shard run again into its folder (a Slurm task requeued) and killed before its end: its
+/// old `shard.json` is gone before the rerun replaces anything, so `cardan merge` refuses the
+/// folder as unfinished instead of vouching for a mix of old and new outputs by the old record.
+/// The kill comes once the record is seen gone (polled), so it lands inside the rerun's work.
+#[test]
+fn a_shard_rerun_killed_before_its_end_is_refused_by_merge() {
+    let tmp = tempfile::tempdir().unwrap();
+    let shards: Vec<PathBuf> = (1..=2).map(|k| tmp.path().join(format!("s{k}"))).collect();
+    let shard_run = |k: usize| {
+        let mut c = cardan();
+        c.arg("run")
+            .arg(configs())
+            .arg("--out")
+            .arg(&shards[k - 1])
+            .args(["--quiet", "--jobs", "1", "--shard", &format!("{k}/2")]);
+        c
+    };
+    for k in 1..=2 {
+        let out = shard_run(k).output().unwrap();
+        assert!(out.status.success(), "{out:?}");
+    }
+    let record = shards[1].join("shard.json");
+    assert!(record.is_file());
+    let mut child = shard_run(2)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while record.exists() {
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the rerun ended with its old record never removed"
+        );
+        assert!(start.elapsed().as_secs() < 60, "the old record stayed 60 s");
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+    let _ = child.kill();
+    let status = child.wait().unwrap();
+    assert!(
+        !status.success(),
+        "the rerun finished before the kill: {status:?}"
+    );
+    assert!(!record.exists(), "a killed rerun left a record");
+    let merged = tmp.path().join("merged");
+    let out = run(&[
+        "merge".as_ref(),
+        shards[0].as_os_str(),
+        shards[1].as_os_str(),
+        "--out".as_ref(),
+        merged.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(said.contains("did not finish"), "{said}");
+    assert!(
+        !merged.exists(),
+        "a refused merge wrote {}",
+        merged.display()
+    );
+}
+
 /// `cardan slurm` writes a job array of N shard tasks and a merge job: their content, and
 /// the scripts run by bash as Slurm would run them (each array task with its
 /// `SLURM_ARRAY_TASK_ID`, then the merge) give the single run's folder byte for byte.
