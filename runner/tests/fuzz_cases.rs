@@ -158,7 +158,8 @@ fn document(fields: &[(String, Vec<String>)], changes: &[Change]) -> String {
     toml::to_string(&doc).unwrap_or_else(|_| BASE.to_string())
 }
 
-/// Whether every number in a summary is finite (JSON has no NaN: `null` is one).
+/// Whether every number in a summary is finite (JSON has no NaN: `null` is one; the two
+/// entries whose `null` means "none" are not numbers: `gas_model`, `layout.counterweight`).
 fn finite(v: &Value) -> bool {
     match v {
         Value::Null => false,
@@ -166,7 +167,9 @@ fn finite(v: &Value) -> bool {
         Value::Array(a) => a.iter().all(finite),
         Value::Object(o) => o
             .iter()
-            .all(|(k, v)| k == "gas_model" || finite(v) || v.is_string() || v.is_boolean()),
+            .all(|(k, v)| {
+                k == "gas_model" || k == "counterweight" || finite(v) || v.is_string() || v.is_boolean()
+            }),
         _ => true,
     }
 }
