@@ -291,6 +291,22 @@ pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, Case
     }
 }
 
+/// Point `k` of `sweep` (from 0) validated: the case it runs as, with its sweep's name and its
+/// swept values; the errors are those of a case file of that point's table.
+pub fn point_case(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseError> {
+    let point = sweep.point(k)?;
+    let mut case = from_table(&sweep.file, point.table)?;
+    case.sweep = Some((sweep.name.clone(), point.values));
+    Ok(case)
+}
+
+/// Validates a case file's table that has no `[sweep]` (one made by
+/// [`crate::sweep::Sweep::define`]'s caller, or read by [`toml_table`]); `file` is only for the
+/// messages.
+pub fn case_of_table(file: &Path, table: toml::Table) -> Result<Case, CaseError> {
+    from_table(file, table)
+}
+
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
     from_table(file, toml_table(file, text)?)
@@ -430,13 +446,6 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         raw.flywheel.as_ref(),
         &invalid,
     )?;
-    if let (Some(_), Some(_)) = (&dynamics, &raw.friction) {
-        return Err(invalid(
-            "friction",
-            &"[friction] with motion.mode = \"dynamic\"",
-            "the friction torque is not yet part of the solved motion's torques (issue 25): run the dynamic case without [friction]",
-        ));
-    }
     if dynamics.is_some() && (m.initial_speed.si.is_nan() || m.initial_speed.si < 0.0) {
         return Err(invalid(
             "motion.initial_speed",
@@ -492,6 +501,9 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         (&balance, motion.initial_speed),
         &invalid,
     )?;
+    if dynamics.is_some() {
+        solved_friction(&setups, &invalid)?;
+    }
     Ok(Case {
         file: file.into(),
         name: raw.name.0,
@@ -512,6 +524,22 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         balance,
         sweep: None,
     })
+}
+
+/// Refuses the loss models a solved motion cannot take among its torques: those whose loss at
+/// a step depends on the steps before (the ring films' squeeze term carries each film from the
+/// previous step's time), which have no value at the Runge-Kutta stages' states
+/// (`cardan_dynamics::machine_friction`).
+fn solved_friction(setups: &[Setup], invalid: &Invalid) -> Result<(), CaseError> {
+    let history = |s: &Setup| s.losses.as_ref().is_some_and(|l| l.carries_history());
+    if setups.iter().any(history) {
+        return Err(invalid(
+            "friction.rings",
+            &"\"film\" with motion.mode = \"dynamic\"",
+            "the ring films carry their thickness from step to step, which a solved motion's Runge-Kutta stages do not have: use rings = \"karhula\" in a dynamic motion",
+        ));
+    }
+    Ok(())
 }
 
 /// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a

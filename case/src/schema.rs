@@ -108,6 +108,14 @@ fn explain(
             Some(what) => format!("= (missing): required: {what}"),
             None => "= (missing): required".to_string(),
         }
+    } else if message.starts_with("wanted exactly 1 element") {
+        // A word (an enum) written as a list or table (`machine = []`): serde reads an enum
+        // from a one-element list or table and says only how many elements it found.
+        let shown = shown.as_deref().unwrap_or("(a list or table)");
+        match what(&root(), inner, &field) {
+            Some(w) => format!("= {shown}: must be {w}"),
+            None => format!("= {shown}: must be one word, not a list or table"),
+        }
     } else if let Some((found, _)) = wrong_type(message) {
         let what = what(&root(), inner, &field);
         match (found, what) {
@@ -394,6 +402,29 @@ mod tests {
         );
         let e = error("[[geometry]]\ncrank_length = 1.0\nsteps = 8");
         assert!(e.contains("not an array of tables ([[geometry]])"), "{e}");
+    }
+
+    /// A word written as a list or table (found by fuzzing: serde said only "wanted exactly 1
+    /// element, found 0 elements"): the field and what it must be.
+    #[test]
+    fn a_word_written_as_a_list_or_table_names_the_field_and_the_rule() {
+        for (written, shown) in [
+            ("[]", "[]"),
+            ("[\"pump\", \"engine\"]", "[\"pump\", \"engine\"]"),
+        ] {
+            let e = error(&format!(
+                "[geometry]\ncrank_length = 1.0\nsteps = 8\nmachine = {written}"
+            ));
+            assert_eq!(
+                e,
+                format!("geometry.machine = {shown}: must be a string in quotes: \"pump\" or \"engine\"")
+            );
+        }
+        let e = error("[geometry]\ncrank_length = 1.0\nsteps = 8\nmachine = {}");
+        assert!(
+            e.starts_with("geometry.machine = {}: must be a string in quotes"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -18,7 +18,7 @@ use crate::units::split_number;
 use rayon::prelude::*;
 use schemars::JsonSchema;
 use serde::Deserialize;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// One point of a sweep: its name, the value of each swept field, and its case table.
 #[derive(Debug, Clone)]
@@ -29,8 +29,14 @@ pub struct Point {
     pub table: toml::Table,
 }
 
-/// Largest number of points a sweep may have.
-pub const MAX_POINTS: usize = 100_000;
+/// Largest number of points a sweep may have (written as a table: `[output] case_folders =
+/// false`, each point made and validated when it runs).
+pub const MAX_POINTS: usize = 10_000_000;
+
+/// Largest number of points of a sweep made all at once ([`expand`]): a sweep written as case
+/// folders, a sweep run in memory (the Python package). Each point made is a case table, and
+/// each validated point a [`crate::Case`] (a few kilobytes each).
+pub const MAX_EXPANDED: usize = 100_000;
 
 fn invalid(
     file: &Path,
@@ -69,7 +75,7 @@ struct Range {
     #[schemars(schema_with = "number_or_text")]
     to: toml::Value,
     /// How many values, the ends included.
-    points: Whole<2, { MAX_POINTS as i64 }>,
+    points: Whole<2, { MAX_EXPANDED as i64 }>,
     /// "linear" (the default) or "log" (evenly spaced logarithms; positive ends).
     #[serde(default)]
     scale: Scale,
@@ -207,153 +213,319 @@ fn name_piece(v: &toml::Value) -> String {
         .collect()
 }
 
-/// The points of the sweep in `table` (a case file with a `[sweep]` table), or `None` if it
-/// has none.
-pub fn expand(
-    file: &Path,
-    mut table: toml::Table,
-) -> Result<Option<(String, Vec<Point>)>, CaseError> {
-    let Some(sweep) = table.remove("sweep") else {
-        return Ok(None);
-    };
-    let name = table
-        .get("name")
-        .and_then(|n| n.as_str())
-        .unwrap_or("")
-        .to_string();
-    let Some(sweep) = sweep.as_table().cloned() else {
-        return Err(invalid(file, &name, "sweep", &sweep, "must be a table"));
-    };
-    let zip = match sweep.get("mode").and_then(|m| m.as_str()) {
-        None | Some("grid") => false,
-        Some("zip") => true,
-        Some(other) => {
-            return Err(invalid(
-                file,
-                &name,
-                "sweep.mode",
-                &other,
-                "must be \"grid\" or \"zip\"",
-            ))
-        }
-    };
-    let mut fields: Vec<(String, Vec<toml::Value>)> = Vec::new();
-    for (path, spec) in &sweep {
-        if path == "mode" {
-            continue;
-        }
-        if path == "name" || path.starts_with("sweep") || !path.contains('.') {
-            return Err(invalid(file, &name, &format!("sweep.\"{path}\""), spec, "sweep a field by its dotted path, e.g. \"motion.initial_speed\" (not name or sweep)"));
-        }
-        fields.push((path.clone(), values_of(file, &name, path, spec)?));
-    }
-    if fields.is_empty() {
-        return Err(invalid(
-            file,
-            &name,
-            "sweep",
-            &"{}",
-            "names no field to vary",
-        ));
-    }
-    let count = if zip {
-        let n = fields[0].1.len();
-        if let Some((path, v)) = fields.iter().find(|(_, v)| v.len() != n) {
-            return Err(invalid(
-                file,
-                &name,
-                &format!("sweep.\"{path}\""),
-                &v.len(),
-                &format!("a zipped sweep needs as many values in every field ({n})"),
-            ));
-        }
-        n
-    } else {
-        fields.iter().map(|(_, v)| v.len()).product()
-    };
-    if count > MAX_POINTS {
-        return Err(invalid(
-            file,
-            &name,
-            "sweep",
-            &count,
-            &format!("at most {MAX_POINTS} points"),
-        ));
-    }
-    // The points made on every thread (each a copy of the whole table), the first failure in
-    // the points' order reported.
-    let points: Vec<Result<Point, CaseError>> = (0..count)
-        .into_par_iter()
-        .map(|k| {
-            let mut t = table.clone();
-            let mut values = Vec::new();
-            let mut point_name = name.clone();
-            let mut rest = k;
-            for (path, list) in &fields {
-                let v = if zip {
-                    list[k].clone()
-                } else {
-                    let v = list[rest % list.len()].clone();
-                    rest /= list.len();
-                    v
-                };
-                let short = path.rsplit('.').next().unwrap_or(path);
-                point_name.push_str(&format!("-{short}-{}", name_piece(&v)));
-                set(&mut t, path, v.clone()).map_err(|rule| {
-                    invalid(file, &name, &format!("sweep.\"{path}\""), &v, &rule)
-                })?;
-                values.push((
-                    path.clone(),
-                    match &v {
+/// One swept field: its dotted path, the last part of it (for point names), and its values,
+/// each with its piece of a point's name and its text as written in the point's case.
+#[derive(Debug, Clone)]
+struct Field {
+    path: String,
+    short: String,
+    values: Vec<toml::Value>,
+    pieces: Vec<String>,
+    texts: Vec<String>,
+}
+
+/// A sweep's definition, its points made on demand ([`Sweep::point`]): point `k` of a grid takes
+/// the value `k mod n₁` of the first field, `(k / n₁) mod n₂` of the second, ... (a mixed-radix
+/// index, the first field fastest); of a zipped sweep, the k-th value of every field. Holding
+/// a sweep costs its fields' values, not its points: a million points are a few kilobytes.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    /// The case file (for messages).
+    pub file: PathBuf,
+    /// The sweep's name (the case file's `name`): its output folder.
+    pub name: String,
+    /// The case table without `[sweep]`.
+    base: toml::Table,
+    fields: Vec<Field>,
+    zip: bool,
+    count: usize,
+}
+
+impl Sweep {
+    /// The sweep of `table` (a case file with a `[sweep]` table), or `None` if it has none: its
+    /// fields and values read and checked (at most [`MAX_POINTS`] points, each of a name of its
+    /// own), none of its points made or validated.
+    pub fn define(file: &Path, mut table: toml::Table) -> Result<Option<Self>, CaseError> {
+        let Some(sweep) = table.remove("sweep") else {
+            return Ok(None);
+        };
+        let name = table
+            .get("name")
+            .and_then(|n| n.as_str())
+            .unwrap_or("")
+            .to_string();
+        let Some(sweep) = sweep.as_table().cloned() else {
+            return Err(invalid(file, &name, "sweep", &sweep, "must be a table"));
+        };
+        let zip = match sweep.get("mode").and_then(|m| m.as_str()) {
+            None | Some("grid") => false,
+            Some("zip") => true,
+            Some(other) => {
+                return Err(invalid(
+                    file,
+                    &name,
+                    "sweep.mode",
+                    &other,
+                    "must be \"grid\" or \"zip\"",
+                ))
+            }
+        };
+        let mut fields: Vec<Field> = Vec::new();
+        for (path, spec) in &sweep {
+            if path == "mode" {
+                continue;
+            }
+            if path == "name" || path.starts_with("sweep") || !path.contains('.') {
+                return Err(invalid(file, &name, &format!("sweep.\"{path}\""), spec, "sweep a field by its dotted path, e.g. \"motion.initial_speed\" (not name or sweep)"));
+            }
+            let values = values_of(file, &name, path, spec)?;
+            fields.push(Field {
+                path: path.clone(),
+                short: path.rsplit('.').next().unwrap_or(path).to_string(),
+                pieces: values.iter().map(name_piece).collect(),
+                texts: values
+                    .iter()
+                    .map(|v| match v {
                         toml::Value::String(s) => s.clone(),
                         o => o.to_string(),
-                    },
-                ));
-            }
-            t.insert("name".into(), toml::Value::String(point_name.clone()));
-            Ok(Point {
-                name: point_name,
+                    })
+                    .collect(),
                 values,
-                table: t,
-            })
-        })
-        .collect();
-    let points = points
-        .into_iter()
-        .collect::<Result<Vec<Point>, CaseError>>()?;
-    // Two points of one name would share one folder (and delete each other's files).
-    let mut seen: std::collections::HashMap<&str, &Point> = std::collections::HashMap::new();
-    for p in &points {
-        if let Some(first) = seen.insert(&p.name, p) {
-            let show = |q: &Point, k: usize| format!("{:?}", q.values[k].1);
-            let (field, value) = if p.values.len() == 1 {
-                (
-                    format!("sweep.\"{}\"", p.values[0].0),
-                    format!("{} and {}", show(first, 0), show(p, 0)),
-                )
-            } else {
-                let each = |q: &Point| {
-                    (0..q.values.len())
-                        .map(|k| format!("{} = {}", q.values[k].0, show(q, k)))
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                };
-                (
-                    "sweep".to_string(),
-                    format!("({}) and ({})", each(first), each(p)),
-                )
-            };
+            });
+        }
+        if fields.is_empty() {
             return Err(invalid(
                 file,
                 &name,
-                &field,
-                &value,
-                &format!(
-                    "two points would have the one name (and folder) \"{}\": every swept value must be distinct",
-                    p.name
-                ),
+                "sweep",
+                &"{}",
+                "names no field to vary",
             ));
         }
+        let count = if zip {
+            let n = fields[0].values.len();
+            if let Some(f) = fields.iter().find(|f| f.values.len() != n) {
+                return Err(invalid(
+                    file,
+                    &name,
+                    &format!("sweep.\"{}\"", f.path),
+                    &f.values.len(),
+                    &format!("a zipped sweep needs as many values in every field ({n})"),
+                ));
+            }
+            n
+        } else {
+            fields
+                .iter()
+                .try_fold(1usize, |n, f| n.checked_mul(f.values.len()))
+                .unwrap_or(usize::MAX)
+        };
+        if count > MAX_POINTS {
+            return Err(invalid(
+                file,
+                &name,
+                "sweep",
+                &count,
+                &format!("at most {MAX_POINTS} points (a sweep of more: split it into several case files, e.g. by one field's range)"),
+            ));
+        }
+        let sweep = Self {
+            file: file.into(),
+            name,
+            base: table,
+            fields,
+            zip,
+            count,
+        };
+        // Where a swept path cannot be set (a part of it is not a table), it cannot at any
+        // point: the first point tells.
+        sweep.point(0)?;
+        sweep.check_names()?;
+        Ok(Some(sweep))
     }
-    Ok(Some((name, points)))
+
+    /// How many points the sweep has.
+    pub fn len(&self) -> usize {
+        self.count
+    }
+
+    /// Whether the sweep has no point (never: a sweep names at least one field and value).
+    pub fn is_empty(&self) -> bool {
+        self.count == 0
+    }
+
+    /// The index into each field's values of point `k`.
+    fn indices(&self, k: usize) -> impl Iterator<Item = (&Field, usize)> + '_ {
+        let mut rest = k;
+        self.fields.iter().map(move |f| {
+            if self.zip {
+                (f, k)
+            } else {
+                let i = rest % f.values.len();
+                rest /= f.values.len();
+                (f, i)
+            }
+        })
+    }
+
+    /// The name of point `k`: the sweep's name, then `-<field>-<value>` of each swept field.
+    pub fn point_name(&self, k: usize) -> String {
+        let mut name = self.name.clone();
+        for (f, i) in self.indices(k) {
+            name.push('-');
+            name.push_str(&f.short);
+            name.push('-');
+            name.push_str(&f.pieces[i]);
+        }
+        name
+    }
+
+    /// The value of each swept field at point `k`: (dotted path, value as written).
+    pub fn values(&self, k: usize) -> Vec<(String, String)> {
+        self.indices(k)
+            .map(|(f, i)| (f.path.clone(), f.texts[i].clone()))
+            .collect()
+    }
+
+    /// The sweep's definition as text: its case table (without `[sweep]`), each swept field
+    /// with its values, its mode. Two sweeps of one definition have the same points: a hash of
+    /// it stands for theirs.
+    pub fn definition(&self) -> String {
+        let fields: Vec<(&String, &Vec<toml::Value>)> =
+            self.fields.iter().map(|f| (&f.path, &f.values)).collect();
+        format!("{:?} {fields:?} zip {}", self.base, self.zip)
+    }
+
+    /// The swept fields' dotted paths, in order.
+    pub fn paths(&self) -> Vec<&str> {
+        self.fields.iter().map(|f| f.path.as_str()).collect()
+    }
+
+    /// The longest point name and the longest value text of each swept field, over the points
+    /// `points` (indices).
+    pub fn text_widths(&self, points: impl Iterator<Item = usize>) -> (usize, Vec<usize>) {
+        let mut name = 0;
+        let mut values = vec![0; self.fields.len()];
+        for k in points {
+            let mut len = self.name.len();
+            for (j, (f, i)) in self.indices(k).enumerate() {
+                len += 2 + f.short.len() + f.pieces[i].len();
+                values[j] = values[j].max(f.texts[i].len());
+            }
+            name = name.max(len);
+        }
+        (name, values)
+    }
+
+    /// Point `k` (from 0; `k < len()`): its name, values and case table.
+    pub fn point(&self, k: usize) -> Result<Point, CaseError> {
+        let mut table = self.base.clone();
+        for (f, i) in self.indices(k) {
+            let v = f.values[i].clone();
+            set(&mut table, &f.path, v.clone()).map_err(|rule| {
+                invalid(
+                    &self.file,
+                    &self.name,
+                    &format!("sweep.\"{}\"", f.path),
+                    &v,
+                    &rule,
+                )
+            })?;
+        }
+        let name = self.point_name(k);
+        table.insert("name".into(), toml::Value::String(name.clone()));
+        Ok(Point {
+            name,
+            values: self.values(k),
+            table,
+        })
+    }
+
+    /// Refuses two points of one name (they would share one folder and delete each other's
+    /// files, or one row name), naming the first point in order whose name an earlier point
+    /// has, and that earlier point. The names are hashed (16 bytes a point while checking), the
+    /// hashes sorted, and only equal hashes compared by name.
+    fn check_names(&self) -> Result<(), CaseError> {
+        use std::hash::{Hash, Hasher};
+        let hash = |k: usize| {
+            let mut h = std::hash::DefaultHasher::new();
+            self.point_name(k).hash(&mut h);
+            h.finish()
+        };
+        let mut hashes: Vec<(u64, usize)> = (0..self.count)
+            .into_par_iter()
+            .map(|k| (hash(k), k))
+            .collect();
+        hashes.par_sort_unstable();
+        // (the later point, the first point of its name), the earliest later point kept.
+        let mut clash: Option<(usize, usize)> = None;
+        for group in hashes.chunk_by(|a, b| a.0 == b.0).filter(|g| g.len() > 1) {
+            let names: Vec<(String, usize)> = group
+                .iter()
+                .map(|&(_, k)| (self.point_name(k), k))
+                .collect();
+            for (j, (name, k)) in names.iter().enumerate() {
+                if let Some((_, first)) = names[..j].iter().find(|(n, _)| n == name) {
+                    if clash.is_none_or(|(later, _)| *k < later) {
+                        clash = Some((*k, *first));
+                    }
+                }
+            }
+        }
+        let Some((later, first)) = clash else {
+            return Ok(());
+        };
+        let (first, p) = (self.values(first), self.values(later));
+        let show = |q: &[(String, String)], k: usize| format!("{:?}", q[k].1);
+        let (field, value) = if p.len() == 1 {
+            (
+                format!("sweep.\"{}\"", p[0].0),
+                format!("{} and {}", show(&first, 0), show(&p, 0)),
+            )
+        } else {
+            let each = |q: &[(String, String)]| {
+                (0..q.len())
+                    .map(|k| format!("{} = {}", q[k].0, show(q, k)))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            (
+                "sweep".to_string(),
+                format!("({}) and ({})", each(&first), each(&p)),
+            )
+        };
+        Err(invalid(
+            &self.file,
+            &self.name,
+            &field,
+            &value,
+            &format!(
+                "two points would have the one name (and folder) \"{}\": every swept value must be distinct",
+                self.point_name(later)
+            ),
+        ))
+    }
+}
+
+/// The points of the sweep in `table` (a case file with a `[sweep]` table), all made at once
+/// (at most [`MAX_EXPANDED`] of them), or `None` if it has none. A sweep of more points is
+/// made a point at a time from its [`Sweep`].
+pub fn expand(file: &Path, table: toml::Table) -> Result<Option<(String, Vec<Point>)>, CaseError> {
+    let Some(sweep) = Sweep::define(file, table)? else {
+        return Ok(None);
+    };
+    if sweep.len() > MAX_EXPANDED {
+        return Err(invalid(
+            file,
+            &sweep.name,
+            "sweep",
+            &sweep.len(),
+            &format!("at most {MAX_EXPANDED} points made at once (in memory, or each in a case folder); run a larger sweep with `cardan run` as a table (`[output] case_folders = false`)"),
+        ));
+    }
+    let points = (0..sweep.len())
+        .into_par_iter()
+        .map(|k| sweep.point(k))
+        .collect::<Result<Vec<Point>, CaseError>>()?;
+    Ok(Some((sweep.name, points)))
 }

@@ -94,7 +94,7 @@ fn a_run_killed_at_a_random_moment_and_resumed_equals_one_run() {
 
 /// `--shard` and `cardan merge` from the command line: the merge equals the single run; a
 /// shard count of 0, K above N and `--shard` with `--only` are usage errors (exit 2); a merge
-/// of an incomplete set of shards fails (exit 1).
+/// of an incomplete set of shards, or with a shard killed before its end, fails (exit 1).
 #[test]
 fn shards_from_the_command_line_merge_into_one_run() {
     let tmp = tempfile::tempdir().unwrap();
@@ -141,6 +141,26 @@ fn shards_from_the_command_line_merge_into_one_run() {
     ]);
     assert_eq!(out.status.code(), Some(1), "{out:?}");
     assert!(String::from_utf8_lossy(&out.stderr).contains("2/2"));
+    // A shard whose task was killed before its end (a Slurm task cancelled, timed out, on a
+    // failed node: its record, written last, is missing): refused, said so, nothing written.
+    std::fs::remove_file(shards[1].join("shard.json")).unwrap();
+    let m3 = tmp.path().join("m3");
+    let out = run(&[
+        "merge".as_ref(),
+        shards[0].as_os_str(),
+        shards[1].as_os_str(),
+        "--out".as_ref(),
+        m3.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        said.contains(&*shards[1].to_string_lossy())
+            && said.contains("did not finish")
+            && said.contains("--resume"),
+        "{said}"
+    );
+    assert!(!m3.exists(), "a refused merge wrote {}", m3.display());
     for bad in [
         &["--shard", "0/2"][..],
         &["--shard", "3/2"],
@@ -240,20 +260,108 @@ fn slurm_scripts_run_the_shards_and_merge_them_into_one_run() {
     assert_eq!(bad.status.code(), Some(2), "{bad:?}");
 }
 
-/// Opt-in (`CARDAN_SLURM_TEST=1`, with `sbatch` on the PATH, e.g. the one-node cluster of
-/// docs/cluster.md): the shipped configs submitted as 3 shards to the real Slurm, waited
-/// for, and the merge compared with a single run. Skipped otherwise.
+/// The output of `program args`, stdout and stderr together, or why it could not run.
+fn output_of(program: &str, args: &[&str]) -> String {
+    match Command::new(program).args(args).output() {
+        Ok(o) => format!(
+            "{}{}",
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        ),
+        Err(e) => format!("cannot run {program}: {e}"),
+    }
+}
+
+/// The jobs' state for a failure message: the queue, the node, each job's record (scontrol,
+/// or sacct where the controller has forgotten it) and every log of the jobs.
+fn slurm_state(ids: &str, dir: &Path) -> String {
+    let mut text = format!(
+        "squeue:\n{}\nsinfo:\n{}\nscontrol show job:\n{}\nsacct:\n{}\n",
+        output_of("squeue", &["-t", "all", "-j", ids, "-o", "%i %T %r %M"]),
+        output_of("sinfo", &["-N", "-l"]),
+        ids.split(',')
+            .map(|id| output_of("scontrol", &["show", "job", "-o", id]))
+            .collect::<String>(),
+        output_of(
+            "sacct",
+            &["-X", "-j", ids, "-o", "JobID,State,ExitCode", "-P"]
+        ),
+    );
+    if let Ok(entries) = std::fs::read_dir(dir.join("logs")) {
+        for entry in entries.flatten() {
+            let log = std::fs::read_to_string(entry.path()).unwrap_or_default();
+            text.push_str(&format!("--- {}:\n{log}\n", entry.path().display()));
+        }
+    }
+    text
+}
+
+/// The `JobState` and `ExitCode` of each job (each array task) of `id`, from `scontrol show
+/// job` (kept MinJobAge after the end: 300 s by default, an hour on .ci/slurm-cluster's
+/// node), else from `sacct` (a cluster with accounting); empty if neither knows the job.
+fn job_states(id: &str) -> Vec<(String, String, String)> {
+    let field = |line: &str, key: &str| {
+        line.split_whitespace()
+            .find_map(|f| f.strip_prefix(key))
+            .unwrap_or("?")
+            .to_string()
+    };
+    let shown = Command::new("scontrol")
+        .args(["show", "job", "-o", id])
+        .output();
+    if let Some(o) = shown.ok().filter(|o| o.status.success()) {
+        return String::from_utf8_lossy(&o.stdout)
+            .lines()
+            .filter(|l| l.starts_with("JobId="))
+            .map(|l| {
+                let task = field(l, "ArrayTaskId=");
+                let name = if task == "?" {
+                    id.to_string()
+                } else {
+                    format!("{id}_{task}")
+                };
+                (name, field(l, "JobState="), field(l, "ExitCode="))
+            })
+            .collect();
+    }
+    let o = output_of(
+        "sacct",
+        &["-n", "-X", "-P", "-j", id, "-o", "JobID,State,ExitCode"],
+    );
+    o.lines()
+        .filter_map(|l| {
+            let f: Vec<&str> = l.split('|').collect();
+            (f.len() == 3).then(|| (f[0].into(), f[1].into(), f[2].into()))
+        })
+        .collect()
+}
+
+/// Opt-in (`CARDAN_SLURM_TEST=1`; a cluster such as `.ci/slurm-cluster start`'s one node,
+/// docs/cluster.md): `cardan slurm configs --shards 3 --submit` on the real Slurm; waits for
+/// the job array and the dependent merge job (squeue, at most `CARDAN_SLURM_TIMEOUT` seconds,
+/// default 900), checks that every array task and the merge COMPLETED with exit code 0, and
+/// compares the merged folder with a single run byte for byte (run here, or the folder
+/// `CARDAN_SLURM_REFERENCE` names: a single run of the shipped configs). On failure: the
+/// jobs' state and logs. Skipped without the opt-in; with it, a missing `sbatch` is a failure.
 #[test]
 fn a_real_slurm_job_array_merges_into_one_run() {
-    if std::env::var("CARDAN_SLURM_TEST").as_deref() != Ok("1")
-        || Command::new("sbatch").arg("--version").output().is_err()
-    {
-        eprintln!("skipped: set CARDAN_SLURM_TEST=1 with Slurm installed (docs/cluster.md)");
+    if std::env::var("CARDAN_SLURM_TEST").as_deref() != Ok("1") {
+        eprintln!("skipped: set CARDAN_SLURM_TEST=1 with Slurm running (docs/cluster.md)");
         return;
     }
-    // Under the working folder: the compute node (this machine) must see it.
+    assert!(
+        Command::new("sbatch").arg("--version").output().is_ok(),
+        "CARDAN_SLURM_TEST=1 but no sbatch on the PATH: start a cluster (.ci/slurm-cluster start)"
+    );
+    let timeout: u64 = std::env::var("CARDAN_SLURM_TIMEOUT")
+        .ok()
+        .and_then(|t| t.parse().ok())
+        .unwrap_or(900);
+    // Under the target folder: the compute node must see it (here, this machine).
     let tmp = tempfile::tempdir_in(env!("CARGO_TARGET_TMPDIR")).unwrap();
     let out = tmp.path().join("merged");
+    let dir = tmp.path().join("merged.slurm");
+    let started = std::time::Instant::now();
     let submitted = run(&[
         "slurm".as_ref(),
         configs().as_os_str(),
@@ -263,25 +371,72 @@ fn a_real_slurm_job_array_merges_into_one_run() {
         out.as_os_str(),
         "--submit".as_ref(),
     ]);
+    let said = String::from_utf8_lossy(&submitted.stdout).to_string();
     assert!(submitted.status.success(), "{submitted:?}");
-    let started = std::time::Instant::now();
-    while !out.join("index.html").is_file() {
+    eprintln!("{said}");
+    // "job array 12 (3 shards), merge job 13"
+    let number = |after: &str| -> String {
+        let rest = &said[said
+            .find(after)
+            .unwrap_or_else(|| panic!("{after:?} not in {said:?}"))
+            + after.len()..];
+        rest.chars().take_while(char::is_ascii_digit).collect()
+    };
+    let (array, merge) = (number("job array "), number("merge job "));
+    assert!(
+        !array.is_empty() && !merge.is_empty(),
+        "job ids in {said:?}"
+    );
+    let ids = format!("{array},{merge}");
+    // Until neither job is pending or running (squeue without -t lists only those).
+    loop {
+        let queued = Command::new("squeue")
+            .args(["-h", "-j", &ids, "-o", "%i %T"])
+            .output()
+            .unwrap();
+        if String::from_utf8_lossy(&queued.stdout).trim().is_empty() {
+            break;
+        }
         assert!(
-            started.elapsed().as_secs() < 1800,
-            "no merged output after 30 min"
+            started.elapsed().as_secs() < timeout,
+            "the jobs not finished after {timeout} s (CARDAN_SLURM_TIMEOUT):\n{}",
+            slurm_state(&ids, &dir)
         );
-        std::thread::sleep(std::time::Duration::from_secs(2));
+        std::thread::sleep(std::time::Duration::from_secs(1));
     }
-    // The index is written last; give the merge a moment to exit.
-    std::thread::sleep(std::time::Duration::from_secs(2));
-    let single = tmp.path().join("single");
-    let out1 = run(&[
-        "run".as_ref(),
-        configs().as_os_str(),
-        "--out".as_ref(),
-        single.as_os_str(),
-        "--quiet".as_ref(),
-    ]);
-    assert!(out1.status.success(), "{out1:?}");
+    let elapsed = started.elapsed().as_secs_f64();
+    let (tasks, merged) = (job_states(&array), job_states(&merge));
+    eprintln!("finished in {elapsed:.0} s: {tasks:?} {merged:?}");
+    assert_eq!(
+        tasks.len(),
+        3,
+        "the array's tasks: {tasks:?}\n{}",
+        slurm_state(&ids, &dir)
+    );
+    for (job, state, code) in tasks.iter().chain(&merged) {
+        assert!(
+            state == "COMPLETED" && code == "0:0",
+            "job {job}: {state}, exit code {code}\n{}",
+            slurm_state(&ids, &dir)
+        );
+    }
+    // The single run: CARDAN_SLURM_REFERENCE's folder if given (CI: the shipped configs'
+    // folder `cargo xtask run configs` wrote, the same program in release: the outputs of the
+    // two profiles are the same bit for bit), else run here.
+    let single = match std::env::var_os("CARDAN_SLURM_REFERENCE") {
+        Some(reference) => PathBuf::from(reference),
+        None => {
+            let single = tmp.path().join("single");
+            let out1 = run(&[
+                "run".as_ref(),
+                configs().as_os_str(),
+                "--out".as_ref(),
+                single.as_os_str(),
+                "--quiet".as_ref(),
+            ]);
+            assert!(out1.status.success(), "{out1:?}");
+            single
+        }
+    };
     assert_same(&single, &out, "real slurm");
 }

@@ -65,16 +65,12 @@ fn every_toml_example_in_the_documentation_is_accepted() {
                 // without its pump's gas).
                 let table = block.lines().find(|l| l.starts_with('[')).unwrap_or("");
                 let engine = block.contains("valve_train");
-                // A solved motion takes no [friction] yet (docs/case-file.md says so).
-                let dynamic = block.contains("mode = \"dynamic\"");
                 let mut kept = String::new();
                 let mut skipping = false;
                 for l in base.lines() {
                     if l.starts_with('[') {
                         let header = l.split('#').next().unwrap().trim();
-                        skipping = header == table
-                            || (engine && header == "[gas]")
-                            || (dynamic && header == "[friction]");
+                        skipping = header == table || (engine && header == "[gas]");
                     }
                     if !skipping {
                         kept.push_str(l);

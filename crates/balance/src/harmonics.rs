@@ -66,13 +66,24 @@ pub fn orders(samples: &[C], start: f64, max_order: usize) -> Vec<Order> {
         n.div_ceil(2)
     );
     let step = TAU / n as f64;
+    // From θ₀ = 0 every order's factors are among the N of e^{i·m·2π/N}: made once, from the
+    // same arguments as below (m·step + k·0 = m·step), so the same bits.
+    let table: Vec<C> = match start == 0.0 {
+        true => (0..n)
+            .map(|m| C::from_polar(1.0, m as f64 * step))
+            .collect(),
+        false => Vec::new(),
+    };
     (0..=max_order)
         .map(|k| {
             let (mut forward, mut backward) = (C::new(0.0, 0.0), C::new(0.0, 0.0));
             for (j, v) in samples.iter().enumerate() {
                 // e^{ikθ_j} from k·θ_j reduced to one turn: exact to an ulp of 2π.
-                let turn = ((k * j) % n) as f64 * step + k as f64 * start;
-                let e = C::from_polar(1.0, turn);
+                let m = (k * j) % n;
+                let e = match table.get(m) {
+                    Some(&e) => e,
+                    None => C::from_polar(1.0, m as f64 * step + k as f64 * start),
+                };
                 forward += v * e.conj();
                 backward += v * e;
             }

@@ -148,7 +148,7 @@ impl Layout {
     /// `crank` (module note).
     pub fn sum(
         &self,
-        per_cylinder: &[Shaking],
+        per_cylinder: impl ExactSizeIterator<Item = Shaking>,
         rotors: &[Rotor],
         crank: &CrankState,
     ) -> MachineShaking {
@@ -191,7 +191,11 @@ impl Layout {
         rotors: &[Rotor],
         crank: &CrankState,
     ) -> MachineShaking {
-        self.sum(&self.cylinders_shaking(mechanism, crank), rotors, crank)
+        self.sum(
+            self.cylinders_shaking(mechanism, crank).into_iter(),
+            rotors,
+            crank,
+        )
     }
 }
 
@@ -237,10 +241,23 @@ impl Layout {
         steps: usize,
         max_order: usize,
     ) -> MachineOrders {
-        let (forces, moments): (Vec<C>, Vec<C>) = revolution(0.0, speed, steps)
+        let cranks = revolution(0.0, speed, steps);
+        // Each cylinder's states over the revolution, made a block at a time.
+        let per_cylinder: Vec<Vec<Shaking>> = (0..self.cylinders.len())
+            .map(|i| {
+                let own: Vec<CrankState> =
+                    cranks.iter().map(|c| self.cylinder_crank(i, c)).collect();
+                let t = mechanism.topology();
+                let mut out = Vec::with_capacity(own.len());
+                mechanism.each_state(&own, &mut |s| out.push(shaking(t, s)));
+                out
+            })
+            .collect();
+        let (forces, moments): (Vec<C>, Vec<C>) = cranks
             .iter()
-            .map(|crank| {
-                let s = self.shaking(mechanism, rotors, crank);
+            .enumerate()
+            .map(|(j, crank)| {
+                let s = self.sum(per_cylinder.iter().map(|c| c[j]), rotors, crank);
                 (s.force, s.moment)
             })
             .unzip();

@@ -24,6 +24,7 @@ pub mod loss;
 pub mod loss_models;
 pub mod losses;
 pub mod machine_balance;
+pub mod machine_friction;
 pub mod machine_motion;
 pub mod mesh;
 pub mod metrics;

@@ -23,7 +23,7 @@ use crate::step::StepBlock;
 use crate::summary::peaks::raise;
 use crate::summary::Integral;
 use cardan_balance::{MachineBalance, PreparedBalance};
-use cardan_mechanism::{CrankState, Loads, Mechanism, State};
+use cardan_mechanism::{CrankState, Loads, Mechanism, State, StateBlock};
 use std::any::Any;
 use std::ops::Range;
 use std::sync::Arc;
@@ -47,7 +47,9 @@ pub struct MachineStage {
     firing_delay: Arc<[f64]>,
     /// Speed of the revolution the orders are taken over, rad/s.
     order_speed: f64,
-    /// Room for another cylinder's state and loads.
+    /// Room for another cylinder's state, filled through a block of one lane (made at the
+    /// first step that needs it: some 30 kB, and a sweep holds a stage per point) and loads.
+    block: Option<Box<StateBlock>>,
     state: State,
     loads: Loads,
 }
@@ -66,6 +68,7 @@ impl MachineStage {
             balance: Arc::new(balance),
             firing_delay: machine.firing_delay.clone().into(),
             order_speed,
+            block: None,
             state: State::for_topology(t),
             loads: Loads::for_topology(t),
             mechanism,
@@ -83,9 +86,9 @@ impl MachineStage {
         let t = m.topology();
         let crank = &input.state.crank;
         let mut torque = input.total.crank_torque;
-        let layout = self.balance.layout().clone();
         for i in 1..self.cylinders() {
             // Cylinder i relative to cylinder 1, which the run's train is (module note).
+            let layout = self.balance.layout();
             let (c0, ci) = (&layout.cylinders[0], &layout.cylinders[i]);
             let lead = (ci.throw - ci.axis_angle) - (c0.throw - c0.axis_angle);
             let at = CrankState::new(
@@ -94,7 +97,11 @@ impl MachineStage {
                 crank.acceleration,
                 crank.time,
             );
-            self.state = m.state(&at);
+            let block = self
+                .block
+                .get_or_insert_with(|| Box::new(StateBlock::for_topology(t)));
+            block.fill(m, &[at]);
+            block.gather(0, &mut self.state);
             let force = input.gas.map(|g| g(crank.angle - self.firing_delay[i]).1);
             let forces = force.map_or(vec![], |f| vec![f; t.pistons.len()]);
             planar::loads(

@@ -1,12 +1,19 @@
 //! The crank's motion solved from its torques: Petrescu & Petrescu (2015) eq. (5), the
 //! Lagrange equation of a one-degree-of-freedom machine,
 //!
-//! (J*(θ) + J_f)·α + ½·dJ*/dθ·ω² = M_load(θ, ω) − M_gas(θ),
+//! (J*(θ) + J_f)·α + ½·dJ*/dθ·ω² = M_load(θ, ω) − M_gas(θ) − T_f(θ, ω, α),
 //!
 //! with J* the mechanism's reduced inertia ([`mod@crate::reduced_inertia`]), J_f a flywheel on the
-//! crankshaft, M_gas = F_gas·Σ dx/dθ the drive torque the gas asks for, and M_load the torque a
-//! load or motor applies to the crankshaft, positive in the direction of rotation
-//! (docs/validation/machine-motion.md).
+//! crankshaft, M_gas = F_gas·Σ dx/dθ the drive torque the gas asks for, M_load the torque a
+//! load or motor applies to the crankshaft, positive in the direction of rotation, and T_f the
+//! torque the friction losses take, Σ P_loss/ω ([`mod@crate::machine_friction`]; Petrescu's
+//! resisting torque M_r* holds it with the load) (docs/validation/machine-motion.md).
+//!
+//! **Friction.** The losses depend on the joint loads, and these on α (the inertial loads):
+//! the equation is implicit in α. At every evaluation α is the fixed point of
+//! α ← (M_load − M_gas − ½·J*'·ω² − T_f(θ, ω, α))/(J* + J_f), from the frictionless α, to
+//! 1e-12 of the torques (at most [`FRICTION_ITERATIONS`] iterations: the contraction factor
+//! ∂T_f/∂α / J is a friction coefficient times a bearing radius over the crank radius).
 //!
 //! **Scheme.** The independent variable is the crank angle, on the run's uniform grid of step
 //! h, and the state is e = ½·ω²: de/dθ = ω·dω/dθ = dω/dt = α(θ, ω), with no division by ω
@@ -19,7 +26,9 @@
 //! A crank that would stop or turn back (e < 0 at any stage of a step) fails the run naming the
 //! step and angle; a total inertia that is not positive fails it too. Every loop is bounded.
 
+use crate::machine_friction::{FrictionAt, MotionFriction};
 use crate::reduced_inertia::ReducedInertiaOf;
+use crate::stage::GasAt;
 use cardan_mechanism::{CrankState, Mechanism, MotionError, MotionSource};
 use std::f64::consts::TAU;
 
@@ -80,14 +89,21 @@ impl LoadTorque {
 }
 
 /// What drives and brakes a machine besides its own mechanism.
+#[derive(Clone, Copy)]
 pub struct MachineTorques<'a> {
     pub mechanism: &'a dyn Mechanism,
-    /// The gas force on every piston at a crank angle, N (towards the crankshaft).
-    pub gas: Option<&'a (dyn Fn(f64) -> f64 + Sync)>,
+    /// The cylinder's (absolute pressure, Pa; gas force on every piston, N, towards the
+    /// crankshaft) at a crank angle.
+    pub gas: Option<GasAt<'a>>,
     pub load: &'a LoadTorque,
     /// Flywheel inertia on the crankshaft, kg·m².
     pub flywheel: f64,
+    /// The friction losses, charged to the crank (`None`: no friction).
+    pub friction: Option<MotionFriction<'a>>,
 }
+
+/// The most fixed-point iterations of α under friction at one evaluation.
+pub const FRICTION_ITERATIONS: usize = 50;
 
 /// Why a solved motion cannot go on.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -107,12 +123,15 @@ pub enum SolveError {
     CannotStart(f64, f64),
     #[error("the crank speed is not finite at step {0}")]
     NonFinite(usize),
+    #[error("the friction at crank angle {angle_deg:.3}°: {message}")]
+    Friction { angle_deg: f64, message: String },
 }
 
 /// The right-hand side of the machine equation: α at (θ, ω).
 pub struct Acceleration<'a> {
     torques: &'a MachineTorques<'a>,
     inertia: ReducedInertiaOf<'a>,
+    friction: Option<FrictionAt<'a>>,
 }
 
 impl<'a> Acceleration<'a> {
@@ -120,6 +139,9 @@ impl<'a> Acceleration<'a> {
         Self {
             torques,
             inertia: ReducedInertiaOf::new(torques.mechanism),
+            friction: torques
+                .friction
+                .map(|f| FrictionAt::new(torques.mechanism, torques.gas, f)),
         }
     }
 
@@ -130,9 +152,37 @@ impl<'a> Acceleration<'a> {
         if j.is_nan() || j <= 0.0 {
             return Err(SolveError::NoInertia(j, angle.to_degrees()));
         }
-        let gas = self.torques.gas.map_or(0.0, |f| f(angle) * r.piston_lever);
+        let gas = self
+            .torques
+            .gas
+            .map_or(0.0, |f| f(angle).1 * r.piston_lever);
         let load = self.torques.load.at(angle, speed);
-        Ok(((load - gas - 0.5 * r.derivative * speed * speed) / j, j))
+        let drive = load - gas - 0.5 * r.derivative * speed * speed;
+        let Some(friction) = self.friction.as_mut() else {
+            return Ok((drive / j, j));
+        };
+        // α = (drive − T_f(α))/j by fixed-point iteration from the frictionless α.
+        let failed = |message: String| SolveError::Friction {
+            angle_deg: angle.to_degrees(),
+            message,
+        };
+        let scale = load.abs() + gas.abs() + (drive - load + gas).abs();
+        let mut alpha = drive / j;
+        for _ in 0..FRICTION_ITERATIONS {
+            let torque = friction.torque(angle, speed, alpha).map_err(&failed)?;
+            let next = (drive - torque) / j;
+            if !next.is_finite() {
+                return Err(failed(format!("its torque is not finite ({torque} N·m)")));
+            }
+            if (next - alpha).abs() * j <= 1e-12 * (scale + torque) {
+                return Ok((next, j));
+            }
+            alpha = next;
+        }
+        Err(failed(format!(
+            "the acceleration it depends on does not settle in {FRICTION_ITERATIONS} iterations \
+             (the friction's dependence on the acceleration is not small beside the inertia)"
+        )))
     }
 }
 
@@ -226,6 +276,9 @@ pub struct Cycles {
     /// The reported cycle's smallest and largest J* + J_f, kg·m².
     pub inertia_min: f64,
     pub inertia_max: f64,
+    /// The reported cycle's smallest and largest kinetic energy ½·(J* + J_f)·ω², J.
+    pub energy_min: f64,
+    pub energy_max: f64,
 }
 
 impl Cycles {
@@ -288,11 +341,14 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
         let begin = p;
         let (mut lo, mut hi) = (p.speed, p.speed);
         let (mut jlo, mut jhi) = (p.inertia, p.inertia);
+        let (mut elo, mut ehi) = (p.inertia * p.energy, p.inertia * p.energy);
         for k in 0..run.steps {
             let step = cycle * run.steps + k + 1;
             p = rk4_step(&mut f, &p, h, step)?;
             (lo, hi) = (lo.min(p.speed), hi.max(p.speed));
             (jlo, jhi) = (jlo.min(p.inertia), jhi.max(p.inertia));
+            let ke = p.inertia * p.energy;
+            (elo, ehi) = (elo.min(ke), ehi.max(ke));
         }
         // The next cycle starts exactly a span on, as the grid's last point is `end`.
         p.angle = run.start + span;
@@ -309,9 +365,17 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
                 duration: p.time - begin.time,
                 inertia_min: jlo,
                 inertia_max: jhi,
+                energy_min: elo,
+                energy_max: ehi,
             });
         }
         p.angle = run.start;
+        if f.friction.is_some() {
+            // The friction's acceleration at the grid's own angle, as the run's state is
+            // loaded (a loss may jump at a dead centre, where the previous cycle's end angle
+            // differs from it by a rounding).
+            p.acceleration = f.at(p.angle, p.speed)?.0;
+        }
     }
 }
 
@@ -319,7 +383,8 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
 /// (ω_max − ω_min)/ω_mean down to `target`, and that coefficient: 0 if the machine meets it
 /// without one. Doubling from J*'s largest value until it is met (at most 60 times: an
 /// unreachable target is an error), then bisection in the logarithm to 1e-6 of the inertia
-/// (at most 60 steps). The first estimate is the textbook's J ≈ ΔE/(Cs·ω²)'s scale.
+/// (at most 60 steps). The first estimate is the textbook's J ≈ ΔE/(Cs·ω²)'s scale; a
+/// mechanism of no inertia starts from 1e-6 kg·m².
 pub fn size_flywheel(
     torques: &MachineTorques,
     run: &SolvedRun,
@@ -328,15 +393,15 @@ pub fn size_flywheel(
     let cs = |flywheel: f64| {
         let t = MachineTorques {
             flywheel,
-            mechanism: torques.mechanism,
-            gas: torques.gas,
-            load: torques.load,
+            ..*torques
         };
         // A flywheel too small to carry the machine through its cycle (it stops) meets no
         // coefficient: infinitely far from the target.
         match solve_cycles(&t, run) {
             Ok(c) => Ok((c.fluctuation(run), c.inertia_max)),
             Err(SolveError::Stops { .. }) => Ok((f64::INFINITY, 0.0)),
+            // A mechanism of no mass without a flywheel: no inertia to carry it at all.
+            Err(SolveError::NoInertia(..)) if flywheel == 0.0 => Ok((f64::INFINITY, 0.0)),
             Err(e) => Err(e.to_string()),
         }
     };
@@ -353,6 +418,9 @@ pub fn size_flywheel(
         }
         j => j,
     };
+    // A mechanism of no inertia: doubling from a milligram-metre-squared flywheel (1e-6
+    // kg·m², far below any machine's; 60 doublings reach 1e12 kg·m²).
+    let scale = if scale > 0.0 { scale } else { 1e-6 };
     let mut hi = torques.flywheel.max(scale);
     let mut at_hi = bare;
     let mut doublings = 0;
@@ -431,7 +499,18 @@ impl MotionSource for SolvedMotion<'_> {
         } else {
             p.angle
         };
-        let state = CrankState::new(angle, p.speed, p.acceleration, p.time);
+        let mut acceleration = p.acceleration;
+        if angle != p.angle && self.f.friction.is_some() {
+            // As at a cycle's start (solve_cycles): the acceleration at the grid's last angle.
+            match self.f.at(angle, p.speed) {
+                Ok((a, _)) => acceleration = a,
+                Err(e) => {
+                    self.k = self.run.steps + 1;
+                    return Some(Err(MotionError::Solved(e.to_string())));
+                }
+            }
+        }
+        let state = CrankState::new(angle, p.speed, acceleration, p.time);
         if k < self.run.steps {
             let h = (self.run.end - self.run.start) / self.run.steps as f64;
             match rk4_step(&mut self.f, &p, h, self.offset + k + 1) {

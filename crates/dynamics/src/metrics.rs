@@ -370,6 +370,8 @@ pub const MACHINE_MOTION: &[MetricDef] = &[
     def("speed_min", "rad/s", T, K, Ne, "dynamic: smallest crank speed of the reported cycle"),
     def("speed_max", "rad/s", T, K, Ne, "dynamic: largest crank speed of the reported cycle"),
     def("speed_fluctuation_coefficient", "1", T, K, Lo, "dynamic: (speed_max − speed_min) / speed_mean"),
+    def("kinetic_energy_fluctuation", "J", T, K, Ne, "dynamic: largest minus smallest kinetic energy ½·(J* + flywheel)·ω² of the reported cycle (the textbooks' fluctuation of energy ΔE)"),
+    def("fluctuation_coefficient_linear", "1", T, K, Ne, "dynamic: the textbooks' linear approximation ΔE / (J_m·speed_mean²), J_m = (reduced_inertia_min + reduced_inertia_max)/2, beside speed_fluctuation_coefficient"),
     def("flywheel_inertia", "kg*m^2", T, K, Ne, "dynamic: the flywheel inertia the run used (given, or sized)"),
     def("flywheel_inertia_required", "kg*m^2", T, K, Lo, "dynamic, with flywheel.fluctuation_coefficient: the flywheel inertia that meets it on the solved motion (0: none needed)"),
     def("runup_time", "s", T, K, Ne, "dynamic: time from the start until the cycles' start speeds stay within 1 % of the reported cycle's (absent after one cycle or if not reached)"),

@@ -196,11 +196,12 @@ fn next_states(
     (stopped, crank.is_none())
 }
 
-/// How a run loads its steps: its families, and how their total is made.
-struct Loading<'f> {
+/// How a run loads its steps: its families, and how their total is made (also the solved
+/// motion's friction torque, `machine_friction.rs`, which loads its states as a run does).
+pub(crate) struct Loading<'f> {
     families: &'f [&'f dyn LoadFamily],
     /// Whether there are several families (one family is its own total).
-    several: bool,
+    pub(crate) several: bool,
     /// Whether the total is the solve of the families' loads together, not their sum: a joint
     /// whose reaction is not linear in the loads (an involute mesh's loaded flank) makes it so.
     together: bool,
@@ -216,7 +217,7 @@ struct Loading<'f> {
 }
 
 impl<'f> Loading<'f> {
-    fn new(families: &'f [&'f dyn LoadFamily], topology: &Topology) -> Self {
+    pub(crate) fn new(families: &'f [&'f dyn LoadFamily], topology: &Topology) -> Self {
         let several = families.len() > 1;
         let mut names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
         names.push("total");
@@ -235,7 +236,7 @@ impl<'f> Loading<'f> {
     /// Each family's loads at the block `states` into `loads` (the pistons pushed by `applied`
     /// where a family takes them), and with several families their total into `total`; each
     /// family sees the sum of those before it.
-    fn loads(
+    pub(crate) fn loads(
         &self,
         mechanism: &dyn Mechanism,
         states: &StateBlock,

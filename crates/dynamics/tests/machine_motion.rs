@@ -60,12 +60,19 @@ fn reduced_inertia_is_the_kinetic_energy_and_the_inertial_torque() {
 use cardan_dynamics::machine_motion::{
     size_flywheel, solve_cycles, LoadTorque, MachineTorques, SolvedMotion, SolvedRun, Table,
 };
+use cardan_dynamics::GasAt;
 use cardan_mechanism::{Material, MotionSource};
 use std::f64::consts::{PI, TAU};
 
 /// A gas-like piston force, N: a compression peak once a revolution.
 fn gas_force(theta: f64) -> f64 {
     100.0 * (1.0 + (theta - PI / 2.0).cos()).powi(3)
+}
+
+/// The cylinder's (pressure, Pa; piston force, N) of [`gas_force`] on the 0.12 m bore.
+fn gas_at(theta: f64) -> (f64, f64) {
+    let f = gas_force(theta);
+    (1e5 + f / (PI / 4.0 * 0.12 * 0.12), f)
 }
 
 fn run(steps: usize, cycles: usize, w0: f64) -> SolvedRun {
@@ -100,6 +107,7 @@ fn a_free_machine_keeps_its_kinetic_energy() {
             gas: None,
             load: &load,
             flywheel: 0.0,
+            friction: None,
         };
         let r = run(360, 10, 150.0);
         let c = solve_cycles(&t, &r).unwrap();
@@ -142,9 +150,10 @@ fn the_scheme_converges_at_fourth_order() {
     };
     let t = MachineTorques {
         mechanism: m.as_ref(),
-        gas: Some(&gas_force),
+        gas: Some(&gas_at),
         load: &load,
         flywheel: 0.02,
+        friction: None,
     };
     let end = |steps| {
         let c = solve_cycles(&t, &run(steps, 2, 120.0)).unwrap();
@@ -182,9 +191,10 @@ fn the_torques_work_is_the_change_of_kinetic_energy() {
     let flywheel = 0.05;
     let t = MachineTorques {
         mechanism: m.as_ref(),
-        gas: Some(&gas_force),
+        gas: Some(&gas_at),
         load: &load,
         flywheel,
+        friction: None,
     };
     let mismatch = |steps: usize| {
         let mut j = ReducedInertiaOf::new(m.as_ref());
@@ -261,12 +271,13 @@ fn the_prescribed_torque_reproduces_the_prescribed_motion() {
             }),
             ..LoadTorque::default()
         };
-        let gas: Option<&(dyn Fn(f64) -> f64 + Sync)> = m.has_cylinder().then_some(&gas_force);
+        let gas: Option<GasAt> = m.has_cylinder().then_some(&gas_at);
         let t = MachineTorques {
             mechanism: m.as_ref(),
             gas,
             load: &load,
             flywheel: 0.0,
+            friction: None,
         };
         for s in states(&t, &run(720, 1, w0)) {
             let p = prescribed.at_angle(s.angle).unwrap();
@@ -324,6 +335,7 @@ fn the_textbook_flywheel_problem_is_reproduced() {
         gas: None,
         load: &load,
         flywheel: 360.0,
+        friction: None,
     };
     let c = solve_cycles(&t, &r).unwrap();
     let de = 0.5 * 360.0 * (c.speed_max.powi(2) - c.speed_min.powi(2));
@@ -358,6 +370,7 @@ fn a_machine_that_stops_fails_with_its_step_and_angle() {
         gas: None,
         load: &brake,
         flywheel: 0.01,
+        friction: None,
     };
     let e = solve_cycles(&t, &run(360, 3, 20.0))
         .unwrap_err()
@@ -387,4 +400,108 @@ fn a_machine_that_stops_fails_with_its_step_and_angle() {
         "{:?}",
         c.runup_time()
     );
+}
+
+use cardan_dynamics::machine_friction::MotionFriction;
+use cardan_dynamics::{Friction, Gas, Inertial, LoadFamily, LossBudget, Solver};
+use cardan_mechanism::Mechanism;
+
+/// The friction torque Σ P/ω (N·m) of `budget` at the crank state `c`, computed apart from the
+/// solver: the closed-form loads of the inertia and of [`gas_at`] summed (every mechanism
+/// here superposes), the budget evaluated on them.
+fn friction_torque(m: &dyn Mechanism, budget: &mut LossBudget, c: &CrankState) -> f64 {
+    let t = m.topology();
+    let s = m.state(c);
+    let (p, f) = gas_at(c.angle);
+    let mut total = Loads::for_topology(t);
+    let mut gas = Loads::for_topology(t);
+    assert!(m.closed_form_loads(&s, true, &[], &mut total));
+    assert!(m.closed_form_loads(&s, false, &[f], &mut gas));
+    total.add(&gas);
+    let mut out = vec![0.0; budget.names().len()];
+    budget.evaluate(&s, &total, Some(p), &[], &mut out).unwrap();
+    out.iter().sum::<f64>() / c.speed
+}
+
+/// With friction (Karhula's models: ring pack, Coulomb skirt, rolling bearings, mesh loss),
+/// the work of the load, the gas and the friction torque −Σ P/ω (evaluated apart from the
+/// solver, on its states) equals the change of kinetic energy, to the scheme's order: the
+/// works by Simpson's rule on the grid.
+#[test]
+fn with_friction_the_torques_work_is_the_change_of_kinetic_energy() {
+    let inertial = Inertial(Solver::ClosedForm);
+    let gas = Gas(Solver::ClosedForm);
+    let families: [&dyn LoadFamily; 2] = [&inertial, &gas];
+    // Karhula's models; and his bearings alone (smooth: a bearing's load is a vector norm that
+    // does not pass through zero), where the scheme keeps its fourth order.
+    let mut smooth = Friction::karhula();
+    (smooth.rings, smooth.skirt, smooth.gear_mesh) = (None, None, None);
+    for (name, friction, order) in [
+        ("slider_crank", Friction::karhula(), 0.9),
+        ("cardan_gear", Friction::karhula(), 0.9),
+        ("slider_crank", smooth.clone(), 3.5),
+        ("cardan_gear", smooth, 3.5),
+    ] {
+        let m = thesis(name, Material::Steel);
+        let budget = LossBudget::new(&friction, m.as_ref(), 0.12).unwrap();
+        let load = LoadTorque {
+            constant: 40.0,
+            per_speed_squared: -0.002,
+            ..LoadTorque::default()
+        };
+        let flywheel = 0.05;
+        let t = MachineTorques {
+            mechanism: m.as_ref(),
+            gas: Some(&gas_at),
+            load: &load,
+            flywheel,
+            friction: Some(MotionFriction {
+                budget: &budget,
+                families: &families,
+            }),
+        };
+        let mismatch = |steps: usize| {
+            let mut j = ReducedInertiaOf::new(m.as_ref());
+            let mut b = budget.clone();
+            let r = run(steps, 1, 80.0);
+            let s = states(&t, &r);
+            let mut lost = 0.0;
+            let mut torque = |c: &CrankState| {
+                let f = friction_torque(m.as_ref(), &mut b, c);
+                lost += f;
+                load.at(c.angle, c.speed) - gas_force(c.angle) * j.at(c.angle).piston_lever - f
+            };
+            let h = TAU / steps as f64;
+            let work: f64 = s
+                .windows(2)
+                .step_by(2)
+                .zip(s[1..].iter().step_by(2).zip(s[2..].iter().step_by(2)))
+                .map(|(w, (mid, last))| {
+                    h / 3.0 * (torque(&w[0]) + 4.0 * torque(mid) + torque(last))
+                })
+                .sum();
+            let mut j2 = ReducedInertiaOf::new(m.as_ref());
+            let mut ke =
+                |c: &CrankState| 0.5 * (j2.at(c.angle).inertia + flywheel) * c.speed * c.speed;
+            let dke = ke(s.last().unwrap()) - ke(&s[0]);
+            let friction_work = lost * h;
+            println!("{name} {steps}: work {work} ΔKE {dke} friction ≈ {friction_work}");
+            assert!(friction_work > 0.0);
+            ((work - dke) / dke.abs().max(work.abs())).abs()
+        };
+        let (a, b, c) = (mismatch(180), mismatch(360), mismatch(720));
+        println!(
+            "{name}: {a:e} {b:e} {c:e} orders {} {}",
+            (a / b).log2(),
+            (b / c).log2()
+        );
+        assert!(b < 1e-6, "{name}: work against ΔKE: {b:e}");
+        for (x, y) in [(a, b), (b, c)] {
+            assert!(
+                (x / y).log2() > order,
+                "{name}: order {} ({x:e} → {y:e})",
+                (x / y).log2()
+            );
+        }
+    }
 }

@@ -71,7 +71,7 @@
 //! r·(δ(N_m) − δ(L_m)) (eq 15). Gas models (which assume a bounded, reciprocating x) do not
 //! apply to it.
 //!
-//! Extras: `carrier_angle_deg` (θ, paper frame, clockwise positive, in [0°, 360°)),
+//! Extras: `carrier_angle_vidinsky_deg` (θ, paper frame, clockwise positive, in [0°, 360°)),
 //! `chamber_angle_deg` (δ between links 1 and 2, eq 15), `mechanical_advantage` (eq 21).
 
 use crate::mass::{self, MassInputs, MassProperties};
@@ -350,7 +350,7 @@ impl Hypotrochoid {
             crankshaft: CRANKSHAFT,
             extras: vec![
                 Extra {
-                    name: "carrier_angle_deg",
+                    name: "carrier_angle_vidinsky_deg",
                     meaning: "carrier angle θ of Vidinsky (2021), clockwise positive, deg",
                 },
                 Extra {

@@ -163,14 +163,29 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
         true
     }
 
-    /// A new state at `crank`, with its extras (allocates a block; steppers fill blocks).
+    /// A new state at `crank`, with its extras (allocates a block: for single states; many
+    /// states go through [`Mechanism::each_state`], steppers fill blocks).
     fn state(&self, crank: &CrankState) -> State {
-        let mut block = StateBlock::for_topology(self.topology());
-        block.fill(self, std::slice::from_ref(crank));
-        let mut s = State::for_topology(self.topology());
-        block.gather(0, &mut s);
-        self.fill_extras(&mut s);
-        s
+        let mut out = None;
+        self.each_state(std::slice::from_ref(crank), &mut |s| out = Some(s.clone()));
+        out.expect("one state per crank state")
+    }
+
+    /// Calls `visit` with the state at each of `cranks` in turn, with its extras, filled a
+    /// block of [`LANES`] at a time into one block and one state (a block is some 30 kB of
+    /// columns to zero: made once for all).
+    fn each_state(&self, cranks: &[CrankState], visit: &mut dyn FnMut(&State)) {
+        let t = self.topology();
+        let mut block = StateBlock::for_topology(t);
+        let mut s = State::for_topology(t);
+        for chunk in cranks.chunks(LANES) {
+            block.fill(self, chunk);
+            for i in 0..chunk.len() {
+                block.gather(i, &mut s);
+                self.fill_extras(&mut s);
+                visit(&s);
+            }
+        }
     }
 }
 

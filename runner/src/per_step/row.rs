@@ -295,3 +295,43 @@ pub(super) fn finite_row(
         )),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cardan_mechanism::{MachineGeometry, MassInputs, Options, MECHANISMS};
+
+    /// A per-step file's columns are found by name (pandas, the NPY files): no two of a row may
+    /// share one, for any registered mechanism with every family, the gas and the balance stage.
+    #[test]
+    fn every_column_name_is_unique() {
+        let geometry = MachineGeometry {
+            crank_length: 0.06,
+            rod_length: 0.14,
+            bore: 0.12,
+            pin_offset: 0.0,
+        };
+        let balance: Vec<StageColumn> = cardan_dynamics::machine_balance::COLUMNS
+            .iter()
+            .enumerate()
+            .map(|(value, name)| StageColumn {
+                name: name.to_string(),
+                value,
+            })
+            .collect();
+        let stages = [balance];
+        for entry in MECHANISMS {
+            let m = (entry.build)(&geometry, &MassInputs::default(), &Options::new()).unwrap();
+            let run = RunLayout {
+                families: &["inertial", "gas"],
+                gas: true,
+                stages: &stages,
+            };
+            let row = Row::new(m.as_ref(), &run);
+            let mut seen = std::collections::BTreeSet::new();
+            for name in row.header() {
+                assert!(seen.insert(name), "{}: column {name} twice", entry.name);
+            }
+        }
+    }
+}

@@ -2,15 +2,15 @@
 //! worker threads, then the sweeps' `sweep.csv` and reports and the index ([`run_paths`]).
 
 use super::case_folder::{run_and_write, Written};
-use super::cases::{load_cases, matches_pattern};
+use super::cases::{load_batch, matches_pattern};
 use super::options::{Report, RunOptions};
 use super::shard;
 use super::sweeps::{sweep_targets, write_sweeps, Point, SweepTarget};
-use super::table::{run_table, take_tables};
+use super::table::{run_table, TableSweep};
 use cardan_case::case::Case;
 use cardan_report::files;
 use rayon::prelude::*;
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 
 /// The worker threads a run starts for `requested` (`--jobs`; None: one per core) on a machine of
@@ -51,17 +51,30 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
             return report;
         }
     }
-    let (mut cases, failures) = load_cases(paths);
+    let (batch, failures) = load_batch(paths);
     report.failures = failures;
-    for case in &mut cases {
+    let (mut cases, mut tables) = (batch.cases, batch.tables);
+    let overrides = |case: &mut Case| {
         case.output.csv = options.csv.unwrap_or(case.output.csv);
         case.output.npy = options.npy.unwrap_or(case.output.npy);
-    }
+    };
+    cases.iter_mut().for_each(overrides);
+    tables.iter_mut().for_each(|t| overrides(&mut t.first));
     // A shard runs its part of the cases as if they were all: its sweeps' folders hold its
     // points only, and `cardan merge` gathers them.
-    let manifest = options
-        .shard
-        .map(|(k, n)| shard::take(&mut cases, k, n, options.reports, &report.failures));
+    let manifest = options.shard.map(|shard| {
+        shard::take(
+            &mut cases,
+            &mut tables,
+            shard,
+            options.reports,
+            &report.failures,
+        )
+    });
+    if let Some(Err(why)) = manifest.as_ref().map(|_| shard::remove_record(out)) {
+        report.failures.push(why);
+        return report;
+    }
     // Every sweep's points in their order, before `--only` selects some.
     let mut all_points: HashMap<String, Vec<String>> = HashMap::new();
     for c in &cases {
@@ -74,8 +87,16 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     }
     if let Some(pattern) = &options.only {
         cases.retain(|c| matches_pattern(pattern, &c.name));
+        for t in &mut tables {
+            let sweep = &t.sweep;
+            t.selected = Some(
+                (0..sweep.len())
+                    .filter(|&k| matches_pattern(pattern, &sweep.point_name(k)))
+                    .collect(),
+            );
+        }
+        tables.retain(|t| t.points() > 0);
     }
-    let tables = take_tables(&mut cases, &all_points);
     let mut selected: HashMap<&str, usize> = HashMap::new();
     for c in &cases {
         if let Some((sweep, _)) = &c.sweep {
@@ -121,38 +142,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         }
         report.failures.extend(failures);
     }
-    let mut points: std::collections::BTreeMap<&str, Vec<Point>> = Default::default();
-    let mut failed: HashMap<&str, usize> = HashMap::new();
-    for (case, o) in cases.iter().zip(&outcomes) {
-        match o {
-            Ok(written) => {
-                let name = &case.name;
-                let dir = match &case.sweep {
-                    Some((sweep, values)) => {
-                        points
-                            .entry(sweep)
-                            .or_default()
-                            .push((name, values, &written.cells));
-                        out.join(sweep).join(name)
-                    }
-                    None => written.dir.clone(),
-                };
-                if written.reused {
-                    tracing::info!(case = %name, folder = %dir.display(), "kept (--resume)");
-                    report.reused += 1;
-                } else {
-                    tracing::info!(case = %name, folder = %dir.display(), "written");
-                }
-                report.written.push((name.clone(), dir));
-            }
-            Err(e) => {
-                if let Some((sweep, _)) = &case.sweep {
-                    *failed.entry(sweep.as_str()).or_default() += 1;
-                }
-                report.failures.push(e.clone())
-            }
-        }
-    }
+    let (points, failed) = record_outcomes(&cases, &outcomes, out, &mut report);
     write_sweeps(
         &sweeps,
         out,
@@ -186,8 +176,51 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
 /// A case's outcome: its folder and sweep row, or its failure.
 type Outcome = Result<Written, String>;
 
-/// A sweep written as a table: its name, its points that ran, its failures.
+/// A sweep written as a table: its name, how many of its points ran, its failures.
 type TableOutcome = (String, usize, Vec<String>);
+
+/// Each case's outcome into `report` (its folder written or kept, or its failure), and the
+/// points of each sweep that ran and the count of those that failed, for the sweep tables.
+fn record_outcomes<'a>(
+    cases: &'a [Case],
+    outcomes: &'a [Outcome],
+    out: &Path,
+    report: &mut Report,
+) -> (BTreeMap<&'a str, Vec<Point<'a>>>, HashMap<&'a str, usize>) {
+    let mut points: BTreeMap<&str, Vec<Point>> = Default::default();
+    let mut failed: HashMap<&str, usize> = HashMap::new();
+    for (case, o) in cases.iter().zip(outcomes) {
+        match o {
+            Ok(written) => {
+                let name = &case.name;
+                let dir = match &case.sweep {
+                    Some((sweep, values)) => {
+                        points
+                            .entry(sweep)
+                            .or_default()
+                            .push((name, values, &written.cells));
+                        out.join(sweep).join(name)
+                    }
+                    None => written.dir.clone(),
+                };
+                if written.reused {
+                    tracing::info!(case = %name, folder = %dir.display(), "kept (--resume)");
+                    report.reused += 1;
+                } else {
+                    tracing::info!(case = %name, folder = %dir.display(), "written");
+                }
+                report.written.push((name.clone(), dir));
+            }
+            Err(e) => {
+                if let Some((sweep, _)) = &case.sweep {
+                    *failed.entry(sweep.as_str()).or_default() += 1;
+                }
+                report.failures.push(e.clone())
+            }
+        }
+    }
+    (points, failed)
+}
 
 /// Runs and writes every case of `cases` into its folder under `base(case)`, then each sweep
 /// of `tables` into its table (`table.rs`), on the worker threads `options` asks for, telling
@@ -195,13 +228,13 @@ type TableOutcome = (String, usize, Vec<String>);
 /// failure in `failures`, if the threads cannot be started.
 fn run_all(
     cases: &[Case],
-    tables: &[(String, Vec<Case>)],
+    tables: &[TableSweep],
     out: &Path,
     base: &(dyn Fn(&Case) -> PathBuf + Sync),
     options: &RunOptions,
     failures: &mut Vec<String>,
 ) -> Option<(Vec<Outcome>, Vec<TableOutcome>)> {
-    let total = cases.len() + tables.iter().map(|(_, p)| p.len()).sum::<usize>();
+    let total = cases.len() + tables.iter().map(TableSweep::points).sum::<usize>();
     let done = std::sync::atomic::AtomicUsize::new(0);
     let work = || {
         let outcomes = cases
@@ -234,10 +267,9 @@ fn run_all(
             .collect::<Vec<Outcome>>();
         let tables: Vec<TableOutcome> = tables
             .iter()
-            .map(|(sweep, points)| {
-                let points: Vec<&Case> = points.iter().collect();
-                let (n, failures) = run_table(sweep, &points, out, options, &done, total);
-                (sweep.clone(), n, failures)
+            .map(|table| {
+                let (n, failures) = run_table(table, out, options, &done, total);
+                (table.sweep.name.clone(), n, failures)
             })
             .collect();
         (outcomes, tables)

@@ -1,10 +1,13 @@
 //! Finding and reading a batch's case files: every `*.toml` under the paths given, each
 //! validated, one output folder per case or sweep; and the `--only` pattern.
 
+use super::table::{case_folders, TableSweep};
 use cardan_case::case::{self, Case};
+use cardan_case::sweep::{Sweep, MAX_EXPANDED};
 use cardan_case::CaseError;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// Every `*.toml` file under `paths` (files, or folders searched recursively), sorted, and a
 /// message for each path that cannot be read.
@@ -47,32 +50,95 @@ pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
 /// Names an output folder uses itself, which no case or sweep may take.
 pub const RESERVED: &[&str] = &["index.html", "shard.json"];
 
-/// Reads and validates every case under `paths`; failures are listed, not fatal. Two cases
-/// with one name would write one folder: the second is a failure.
-pub fn load_cases(paths: &[PathBuf]) -> (Vec<Case>, Vec<String>) {
+/// A batch's cases as read: the cases run into folders of their own (single cases, and the
+/// points of sweeps written as case folders, all validated), and the sweeps written as tables
+/// (their points made and validated when they run).
+#[derive(Debug, Default)]
+pub struct Batch {
+    pub cases: Vec<Case>,
+    pub tables: Vec<TableSweep>,
+}
+
+/// What one case file holds: its cases, or a sweep written as a table.
+enum Entry {
+    Cases(Vec<Case>),
+    Table(Box<TableSweep>),
+}
+
+impl Entry {
+    /// The output folder it takes (a case's name, or its sweep's) and its file.
+    fn folder(&self) -> Option<(String, PathBuf)> {
+        match self {
+            Entry::Cases(cases) => cases.first().map(|c| {
+                let folder = c.sweep.as_ref().map_or(c.name.clone(), |(s, _)| s.clone());
+                (folder, c.file.clone())
+            }),
+            Entry::Table(t) => Some((t.sweep.name.clone(), t.sweep.file.clone())),
+        }
+    }
+}
+
+/// Reads the case file `file`: a case; a sweep's points validated, if it writes a folder per
+/// point ([`case_folders`]: at most [`MAX_EXPANDED`] of them); or a sweep written as a table,
+/// its definition and its first point validated.
+fn load_entry(file: &Path) -> Result<Entry, CaseError> {
+    let text = std::fs::read_to_string(file).map_err(|source| CaseError::Io {
+        file: file.into(),
+        source,
+    })?;
+    let table = case::toml_table(file, &text)?;
+    let Some(sweep) = Sweep::define(file, table.clone())? else {
+        return Ok(Entry::Cases(vec![case::case_of_table(file, table)?]));
+    };
+    let first = case::point_case(&sweep, 0)?;
+    let n = sweep.len();
+    if !case_folders(&first, n) {
+        return Ok(Entry::Table(Box::new(TableSweep {
+            sweep: Arc::new(sweep),
+            first,
+            selected: None,
+        })));
+    }
+    if n > MAX_EXPANDED {
+        return Err(CaseError::Invalid {
+            file: file.into(),
+            case: sweep.name.clone(),
+            field: "output.case_folders".into(),
+            value: format!("true, for a sweep of {n} points"),
+            rule: format!("a sweep writes a case folder per point up to {MAX_EXPANDED} points: write it as a table (case_folders = false)"),
+        });
+    }
+    let points: Vec<Case> = (1..n)
+        .into_par_iter()
+        .map(|k| case::point_case(&sweep, k))
+        .collect::<Result<_, _>>()?;
+    Ok(Entry::Cases(std::iter::once(first).chain(points).collect()))
+}
+
+/// Reads and validates every case under `paths`, the sweeps written as tables apart (see
+/// [`Batch`]); failures are listed, not fatal. Two cases or sweeps with one name would write
+/// one folder: the second is a failure.
+pub fn load_batch(paths: &[PathBuf]) -> (Batch, Vec<String>) {
     let (files, mut failures) = case_files(paths);
-    let loaded: Vec<Result<Vec<Case>, CaseError>> =
-        files.par_iter().map(|f| case::load_file(f)).collect();
-    let mut cases: Vec<Case> = Vec::new();
+    let loaded: Vec<Result<Entry, CaseError>> = files.par_iter().map(|f| load_entry(f)).collect();
+    let mut batch = Batch::default();
     // Output folders taken: a case's name, or a sweep's (its points go inside it).
     let mut folders: std::collections::HashMap<String, PathBuf> = std::collections::HashMap::new();
     for result in loaded {
-        let batch = match result {
-            Ok(batch) => batch,
+        let entry = match result {
+            Ok(entry) => entry,
             Err(e) => {
                 failures.push(e.to_string());
                 continue;
             }
         };
-        let Some(first) = batch.first() else { continue };
-        let folder = first
-            .sweep
-            .as_ref()
-            .map_or(first.name.clone(), |(s, _)| s.clone());
+        let Some((folder, file)) = entry.folder() else {
+            continue;
+        };
         if RESERVED.contains(&folder.as_str()) {
             failures.push(format!(
                 "{}: case \"{}\": name = \"{folder}\": is reserved: the output folder's own file of that name ({}); give the case another name",
-                first.file.display(),
+                file.display(),
                 folder,
                 RESERVED.join(", ")
             ));
@@ -81,14 +147,45 @@ pub fn load_cases(paths: &[PathBuf]) -> (Vec<Case>, Vec<String>) {
         if let Some(other) = folders.get(&folder) {
             failures.push(format!(
                 "{}: case \"{}\": name = \"{folder}\": is already the name of the case in {}; each case needs its own output folder",
-                first.file.display(),
+                file.display(),
                 folder,
                 other.display()
             ));
             continue;
         }
-        folders.insert(folder, first.file.clone());
-        cases.extend(batch);
+        folders.insert(folder, file);
+        match entry {
+            Entry::Cases(cases) => batch.cases.extend(cases),
+            Entry::Table(t) => batch.tables.push(*t),
+        }
+    }
+    (batch, failures)
+}
+
+/// Reads and validates every case under `paths`, every sweep's points made and validated
+/// (those of sweeps written as tables too, at most [`MAX_EXPANDED`] a sweep: for tests and
+/// small batches; a run reads them with [`load_batch`]); failures are listed, not fatal.
+pub fn load_cases(paths: &[PathBuf]) -> (Vec<Case>, Vec<String>) {
+    let (batch, mut failures) = load_batch(paths);
+    let mut cases = batch.cases;
+    for t in batch.tables {
+        if t.sweep.len() > MAX_EXPANDED {
+            failures.push(format!(
+                "{}: sweep \"{}\": {} points: at most {MAX_EXPANDED} made at once",
+                t.sweep.file.display(),
+                t.sweep.name,
+                t.sweep.len()
+            ));
+            continue;
+        }
+        let points: Result<Vec<Case>, CaseError> = (0..t.sweep.len())
+            .into_par_iter()
+            .map(|k| case::point_case(&t.sweep, k))
+            .collect();
+        match points {
+            Ok(points) => cases.extend(points),
+            Err(e) => failures.push(e.to_string()),
+        }
     }
     (cases, failures)
 }

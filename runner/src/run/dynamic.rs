@@ -35,9 +35,7 @@ pub(super) fn solve(
     };
     let t = MachineTorques {
         flywheel,
-        mechanism: torques.mechanism,
-        gas: torques.gas,
-        load: torques.load,
+        ..*torques
     };
     let cycles = solve_cycles(&t, &run).map_err(|e| e.to_string())?;
     let mean = cycles.speed_mean(&run);
@@ -46,11 +44,16 @@ pub(super) fn solve(
     // Petrescu eq. (1)-(2): ω = ω_m·sqrt(J*_m/J*), J*_m = (J*_max + J*_min)/2.
     let jm = 0.5 * (jlo + jhi);
     let (plo, phi) = (mean * (jm / jhi).sqrt(), mean * (jm / jlo).sqrt());
+    // The textbooks' linearisation Cs ≈ ΔE/(J·ω_m²) (validation-cases.md §9.1), J the
+    // machine's mean reduced inertia J*_m.
+    let de = cycles.energy_max - cycles.energy_min;
     metrics.extend([
         ("speed_mean", mean),
         ("speed_min", lo),
         ("speed_max", hi),
         ("speed_fluctuation_coefficient", (hi - lo) / mean),
+        ("kinetic_energy_fluctuation", de),
+        ("fluctuation_coefficient_linear", de / (jm * mean * mean)),
         ("flywheel_inertia", flywheel),
     ]);
     if let Some(t) = cycles.runup_time() {

@@ -1,11 +1,12 @@
 //! `cardan merge`: the output folders of the N shards of one batch (`--shard K/N`) gathered
-//! into what one run of the batch writes: each case's folder copied whole, each sweep's folder
+//! into what one run of the batch writes: each case's folder copied whole (its files
+//! hard-linked where the file system allows), each sweep's folder
 //! made of its points' folders with its `sweep.csv` (from the points' records, `run.json`)
 //! and report, and the index. Shards of other inputs, another program or an incomplete set
 //! are refused before anything is written.
 
 use super::options::Report;
-use super::shard::Manifest;
+use super::shard::{Manifest, MANIFEST};
 use super::stamp::{self, PROGRAM};
 use super::sweeps::{sweep_csv, Point};
 use anyhow::Context;
@@ -13,7 +14,12 @@ use cardan_report::files;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-/// Copies the folder `from` into the new folder `to`, file by file.
+/// Puts the folder `from` into the new folder `to`, file by file: each file hard-linked (the
+/// same bytes, no copy: a merge's time and disk do not grow with the per-step files' size)
+/// where `to` is on the same file system, else copied (another file system, or one without
+/// hard links). Safe because nothing changes a written file in place: every case folder is
+/// written anew and renamed onto the old one ([`files::replace_dir`]), so a later run or merge
+/// into the shards or into `out` makes new files and leaves the linked ones as they were.
 fn copy_dir(from: &Path, to: &Path) -> std::io::Result<()> {
     std::fs::create_dir_all(to)?;
     for entry in std::fs::read_dir(from)? {
@@ -21,7 +27,7 @@ fn copy_dir(from: &Path, to: &Path) -> std::io::Result<()> {
         let target = to.join(entry.file_name());
         if entry.file_type()?.is_dir() {
             copy_dir(&entry.path(), &target)?;
-        } else {
+        } else if std::fs::hard_link(entry.path(), &target).is_err() {
             std::fs::copy(entry.path(), &target)?;
         }
     }
@@ -31,6 +37,22 @@ fn copy_dir(from: &Path, to: &Path) -> std::io::Result<()> {
 /// The shards' records, checked to be the N shards, each once, of one batch run by this
 /// program; or why they cannot be merged.
 fn manifests(dirs: &[PathBuf]) -> Result<Vec<Manifest>, String> {
+    // A shard whose run was killed (time limit, node failure, cancelled) has no record yet:
+    // its record is written last. Said as such, with what to do, rather than as a bad folder.
+    let unfinished: Vec<String> = dirs
+        .iter()
+        .filter(|d| !d.join(MANIFEST).exists())
+        .map(|d| d.display().to_string())
+        .collect();
+    if !unfinished.is_empty() {
+        return Err(format!(
+            "{}: no {MANIFEST}: the shard's run did not finish (killed, time limit, node failure, \
+             cancelled), never started, or this is not a shard's output folder: run the shard \
+             again (`cardan run ... --shard K/N --resume` keeps its finished cases; on Slurm \
+             `sbatch --array=K run.sbatch`), then merge",
+            unfinished.join(", ")
+        ));
+    }
     let mut all = Vec::new();
     for dir in dirs {
         all.push(Manifest::read(dir).map_err(|e| format!("{e:#}"))?);
@@ -143,7 +165,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
     }
     for (sweep, points) in sweeps {
         let dir = out.join(sweep);
-        // A sweep written as a table: whole, by one shard.
+        // A sweep written as a table: whole, by one shard (one entry of the records).
         if let Some(from) = points
             .first()
             .map(|(_, shard)| shard.join(sweep))
@@ -158,7 +180,18 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
                     })
             });
             match copied {
-                Ok(()) => report.sweeps.push((sweep.to_string(), dir, points.len())),
+                Ok(()) => {
+                    // Its points that ran: the table's rows but the failed ones.
+                    let header: Option<serde_json::Value> =
+                        std::fs::read_to_string(dir.join("sweep.json"))
+                            .ok()
+                            .and_then(|t| serde_json::from_str(&t).ok());
+                    let ran = header.map_or(0, |h| {
+                        let rows = h["rows"].as_u64().unwrap_or(0) as usize;
+                        rows.saturating_sub(h["failed"].as_array().map_or(0, Vec::len))
+                    });
+                    report.sweeps.push((sweep.to_string(), dir, ran))
+                }
                 Err(e) => report.failures.push(format!(
                     "sweep \"{sweep}\": cannot write {}: {e:#}",
                     dir.display()

@@ -4,6 +4,7 @@
 //! run writes (`merge.rs`) and refuses shards of other inputs or another program.
 
 use super::stamp::{input_hash, Fnv, PROGRAM};
+use super::table::TableSweep;
 use anyhow::Context;
 use cardan_case::case::Case;
 use serde_json::{json, Value};
@@ -32,6 +33,13 @@ pub fn cost(case: &Case) -> u128 {
 /// one: its table is written whole by one shard. The same cases give the same parts on every
 /// machine.
 pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
+    assign(cases, &[], n).0
+}
+
+/// The shard (from 1) of each of `cases` and of each sweep of `tables` (a sweep written as a
+/// table, one unit of its points' cost: the first point's [`cost`] times its points), by
+/// [`assignment`]'s rule, the tables after the cases in the order of ties.
+pub(super) fn assign(cases: &[Case], tables: &[TableSweep], n: usize) -> (Vec<usize>, Vec<usize>) {
     let n = n.max(1);
     let mut points: std::collections::HashMap<&str, usize> = Default::default();
     for c in cases {
@@ -60,9 +68,13 @@ pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
         units[u].1.push(i);
         units[u].2 += cost(c);
     }
+    for (t, table) in tables.iter().enumerate() {
+        let i = cases.len() + t;
+        units.push((i, vec![i], cost(&table.first) * table.points() as u128));
+    }
     units.sort_by_key(|(first, _, cost)| (std::cmp::Reverse(*cost), *first));
     let mut load = vec![0u128; n];
-    let mut shard_of = vec![0; cases.len()];
+    let mut shard_of = vec![0; cases.len() + tables.len()];
     for (_, members, cost) in units {
         let k = (0..n).min_by_key(|&k| (load[k], k)).unwrap_or(0);
         load[k] += cost;
@@ -70,7 +82,8 @@ pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
             shard_of[i] = k + 1;
         }
     }
-    shard_of
+    let tables_of = shard_of.split_off(cases.len());
+    (shard_of, tables_of)
 }
 
 /// Whether each of `cases` is in the K-th of `n` shards ([`assignment`]).
@@ -78,21 +91,26 @@ pub fn part(cases: &[Case], k: usize, n: usize) -> Vec<bool> {
     assignment(cases, n).into_iter().map(|s| s == k).collect()
 }
 
-/// Keeps in `cases` only the K-th of `n` parts ([`part`]), and returns the shard's record of
-/// the whole batch ([`Manifest::new`]).
-pub fn take(
+/// Keeps in `cases` and `tables` only the K-th of `n` parts ([`assign`]), and returns the
+/// shard's record of the whole batch ([`Manifest::new`]).
+pub(super) fn take(
     cases: &mut Vec<Case>,
-    k: usize,
-    n: usize,
+    tables: &mut Vec<TableSweep>,
+    (k, n): (usize, usize),
     reports: bool,
     failures: &[String],
 ) -> Manifest {
-    let manifest = Manifest::new(cases, k, n, reports, failures);
-    let mine = part(cases, k, n);
+    let manifest = Manifest::new(cases, tables, (k, n), reports, failures);
+    let (mine, tables_mine) = assign(cases, tables, n);
     let mut index = 0;
     cases.retain(|_| {
         index += 1;
-        mine[index - 1]
+        mine[index - 1] == k
+    });
+    let mut index = 0;
+    tables.retain(|_| {
+        index += 1;
+        tables_mine[index - 1] == k
     });
     manifest
 }
@@ -107,18 +125,26 @@ pub struct Manifest {
     /// (K, N).
     pub shard: (usize, usize),
     pub reports: bool,
-    /// (case name, its sweep, the shard that runs it) of every case of the batch.
+    /// (case name, its sweep, the shard that runs it) of every case of the batch; a sweep
+    /// written as a table is one entry, named as its sweep.
     pub cases: Vec<(String, Option<String>, usize)>,
     /// The failures this shard met (the batch's unreadable case files, its failed cases).
     pub failures: Vec<String>,
 }
 
 impl Manifest {
-    /// The record of shard `k` of `n` of the batch `cases` (as they run: after the command
-    /// line's overrides); `failures` so far are the case files that could not be read, which
-    /// change the inputs as much as the cases do.
-    pub fn new(cases: &[Case], k: usize, n: usize, reports: bool, failures: &[String]) -> Self {
-        let shards = assignment(cases, n);
+    /// The record of shard `k` of `n` of the batch `cases` and `tables` (as they run: after
+    /// the command line's overrides); `failures` so far are the case files that could not be
+    /// read, which change the inputs as much as the cases do. A sweep written as a table is
+    /// one entry (its name, as case and sweep), hashed by its definition and its first point.
+    pub fn new(
+        cases: &[Case],
+        tables: &[TableSweep],
+        (k, n): (usize, usize),
+        reports: bool,
+        failures: &[String],
+    ) -> Self {
+        let (shards, table_shards) = assign(cases, tables, n);
         let mut hash = Fnv::default();
         hash.update(format!("{n} shards, reports {reports}").as_bytes());
         for f in failures {
@@ -128,16 +154,29 @@ impl Manifest {
             hash.update(case.name.as_bytes())
                 .update(input_hash(case, reports && case.sweep.is_none()).as_bytes());
         }
+        for t in tables {
+            hash.update(t.sweep.name.as_bytes())
+                .update(input_hash(&t.first, false).as_bytes())
+                .update(t.sweep.definition().as_bytes())
+                .update(format!("{} points", t.points()).as_bytes());
+        }
+        let mut entries: Vec<(String, Option<String>, usize)> = cases
+            .iter()
+            .zip(shards)
+            .map(|(c, s)| (c.name.clone(), c.sweep.as_ref().map(|(s, _)| s.clone()), s))
+            .collect();
+        entries.extend(
+            tables
+                .iter()
+                .zip(table_shards)
+                .map(|(t, s)| (t.sweep.name.clone(), Some(t.sweep.name.clone()), s)),
+        );
         Self {
             program: PROGRAM.to_string(),
             inputs_hash: hash.hex(),
             shard: (k, n),
             reports,
-            cases: cases
-                .iter()
-                .zip(shards)
-                .map(|(c, s)| (c.name.clone(), c.sweep.as_ref().map(|(s, _)| s.clone()), s))
-                .collect(),
+            cases: entries,
             failures: Vec::new(),
         }
     }
@@ -213,6 +252,19 @@ pub fn parse_shard(text: &str) -> Result<(usize, usize), String> {
         return Err(err());
     }
     Ok((k, n))
+}
+
+/// Removes the record of an earlier run of the shard from its output folder `out`, before
+/// anything is written: a run killed now leaves a shard that `cardan merge` refuses as
+/// unfinished, not one whose old record vouches for folders of other inputs.
+pub fn remove_record(out: &Path) -> Result<(), String> {
+    let old = out.join(MANIFEST);
+    match std::fs::remove_file(&old) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+            Err(format!("remove {}: {e}: nothing was run", old.display()))
+        }
+        _ => Ok(()),
+    }
 }
 
 #[cfg(test)]

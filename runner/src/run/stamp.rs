@@ -52,11 +52,15 @@ impl Fnv {
 
 /// The hash of `case`'s validated input as it runs (after the command line's overrides of its
 /// `[output]`), and whether its folder holds a report: its whole validated form, except the
-/// path of its file (a case moved or run from another folder is the same case). The form is
-/// the program's own (`Debug`), which is why the program's version is recorded beside it.
+/// path of its file (a case moved or run from another folder is the same case) and its
+/// setups (made from the rest: their form holds scratch room for the run). The form is the
+/// program's own (`Debug`), which is why the program's version is recorded beside it.
 pub fn input_hash(case: &Case, report: bool) -> String {
-    let mut case = case.clone();
-    case.file = PathBuf::new();
+    let case = Case {
+        file: PathBuf::new(),
+        setups: Vec::new(),
+        ..case.clone()
+    };
     Fnv::default()
         .update(format!("{case:?}").as_bytes())
         .update(if report { b"report" } else { b"no report" })

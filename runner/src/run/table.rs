@@ -14,7 +14,9 @@ use super::options::RunOptions;
 use super::train::{run_trains, StepsTo};
 use crate::output::MechanismResult;
 use anyhow::Context;
-use cardan_case::case::Case;
+use cardan_case::case::{point_case, Case};
+use cardan_case::sweep::Sweep;
+use cardan_case::CaseError;
 use cardan_report::files;
 use rayon::prelude::*;
 use serde_json::json;
@@ -22,6 +24,7 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
 
 /// The most points a sweep writes as case folders by default; above it, only its table.
 pub const CASE_FOLDERS_UP_TO: usize = 10_000;
@@ -36,28 +39,50 @@ pub fn case_folders(case: &Case, points: usize) -> bool {
         .unwrap_or(points <= CASE_FOLDERS_UP_TO)
 }
 
-/// Takes out of `cases` the points of the sweeps written as tables ([`case_folders`]; a
-/// sweep's number of points is that of `all_points`): each such sweep's points, in order.
-pub(super) fn take_tables(
-    cases: &mut Vec<Case>,
-    all_points: &std::collections::HashMap<String, Vec<String>>,
-) -> Vec<(String, Vec<Case>)> {
-    let mut tables: Vec<(String, Vec<Case>)> = Vec::new();
-    let mut rest = Vec::with_capacity(cases.len());
-    for case in cases.drain(..) {
-        match &case.sweep {
-            Some((sweep, _)) if !case_folders(&case, all_points[sweep].len()) => {
-                match tables.iter_mut().find(|(s, _)| s == sweep) {
-                    Some((_, points)) => points.push(case),
-                    None => tables.push((sweep.clone(), vec![case])),
-                }
-            }
-            _ => rest.push(case),
-        }
-    }
-    *cases = rest;
-    tables
+/// A sweep written as a table: its definition, its first point validated (the options and
+/// expected cost of every point), and the points a run of it writes.
+#[derive(Debug, Clone)]
+pub struct TableSweep {
+    pub sweep: Arc<Sweep>,
+    /// Point 0, validated (with the command line's overrides of its `[output]`).
+    pub first: Case,
+    /// The points run, by index in increasing order (`--only`); None: every point.
+    pub selected: Option<Vec<usize>>,
 }
+
+impl TableSweep {
+    /// How many points a run of it writes.
+    pub fn points(&self) -> usize {
+        self.selected.as_ref().map_or(self.sweep.len(), Vec::len)
+    }
+
+    /// The index in the sweep of the j-th point a run of it writes.
+    pub fn index(&self, j: usize) -> usize {
+        self.selected.as_ref().map_or(j, |s| s[j])
+    }
+
+    /// Validates every point of the sweep as a run would before stepping it, 4096 (`CHECK_CHUNK`)
+    /// points at a time on the worker threads (none kept): the first point in order that fails,
+    /// or how many points are valid.
+    pub fn check(&self) -> Result<usize, CaseError> {
+        let n = self.sweep.len();
+        for start in (0..n).step_by(CHECK_CHUNK) {
+            let end = (start + CHECK_CHUNK).min(n);
+            let first_error = (start..end)
+                .into_par_iter()
+                .map(|k| point_case(&self.sweep, k).err())
+                .find_first(Option::is_some)
+                .flatten();
+            if let Some(e) = first_error {
+                return Err(e);
+            }
+        }
+        Ok(n)
+    }
+}
+
+/// Points validated at once by [`TableSweep::check`].
+const CHECK_CHUNK: usize = 4096;
 
 /// The NPY 1.0 preamble of a one-dimensional array of `rows` values of type `descr` (NumPy's
 /// `numpy.lib.format`: magic, version, header length, the header dictionary padded with
@@ -124,13 +149,13 @@ struct Table<'a> {
 impl Table<'_> {
     fn row(
         &mut self,
-        case: &Case,
+        name: &str,
+        values: &[(String, String)],
         result: Result<Vec<MechanismResult>, String>,
     ) -> anyhow::Result<()> {
         let row = self.next;
         self.next += 1;
-        self.text[0].text(&case.name)?;
-        let values = case.sweep.as_ref().map_or(&[][..], |(_, v)| &v[..]);
+        self.text[0].text(name)?;
         for (column, (_, value)) in self.text[1..].iter_mut().zip(values) {
             column.text(value)?;
         }
@@ -138,7 +163,7 @@ impl Table<'_> {
             Ok(results) => results,
             Err(e) => {
                 self.failed
-                    .push(json!({"case": case.name, "error": e, "row": row}));
+                    .push(json!({"case": name, "error": e, "row": row}));
                 return self.nan_row();
             }
         };
@@ -170,7 +195,7 @@ impl Table<'_> {
                     }
                     Some(_) => {}
                     None if !self.warned => {
-                        tracing::warn!(case = %case.name, "metric {name} is not a column of the sweep table (the first point's): left out");
+                        tracing::warn!(case = %name, "metric {name} is not a column of the sweep table (the first point's): left out");
                         self.warned = true;
                     }
                     None => {}
@@ -223,28 +248,35 @@ impl Table<'_> {
     }
 }
 
-/// Runs the sweep `sweep`'s `points` (in their order) into its table in `out/<sweep>/`,
+/// Point `k` of `table` validated and run to its summaries (a panic is its failure).
+fn run_point(table: &TableSweep, k: usize) -> Result<Vec<MechanismResult>, String> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        let case = point_case(&table.sweep, k).map_err(|e| e.to_string())?;
+        run_trains(&case, StepsTo::Summary)
+    }))
+    .unwrap_or_else(|_| {
+        Err(format!(
+            "{}: case \"{}\": internal error (a bug, please report it)",
+            table.sweep.file.display(),
+            table.sweep.point_name(k)
+        ))
+    })
+    .map(|trains| trains.into_iter().map(|(r, _)| r).collect())
+}
+
+/// Runs the points of the sweep `table` (in their order) into its table in `out/<sweep>/`,
 /// replaced whole; `done` counts the points for `options.progress` out of `total`. Returns
 /// how many points ran, and each point's failure (a failed point's row is NaN).
 pub(super) fn run_table(
-    sweep: &str,
-    points: &[&Case],
+    table: &TableSweep,
     out: &Path,
     options: &RunOptions,
     done: &AtomicUsize,
     total: usize,
 ) -> (usize, Vec<String>) {
+    let sweep = table.sweep.name.as_str();
     let dir = out.join(sweep);
     let mut failures = Vec::new();
-    // Each text column's width: the longest name, the longest value of each swept field.
-    let width =
-        |text: &dyn Fn(&Case) -> usize| points.iter().map(|c| text(c)).max().unwrap_or(0).max(1);
-    let value_len = |c: &Case, k: usize| {
-        c.sweep
-            .as_ref()
-            .and_then(|(_, v)| v.get(k))
-            .map_or(0, |(_, x)| x.len())
-    };
     let tmp = match files::temporary_dir(&dir) {
         Ok(tmp) => tmp,
         Err(e) => {
@@ -255,26 +287,18 @@ pub(super) fn run_table(
             return (0, failures);
         }
     };
+    let rows = table.points();
     let written = (|| -> anyhow::Result<usize> {
         std::fs::create_dir(tmp.join("columns"))?;
-        let swept: Vec<&str> = points
-            .first()
-            .and_then(|c| c.sweep.as_ref())
-            .map(|(_, v)| v.iter().map(|(p, _)| p.as_str()).collect())
-            .unwrap_or_default();
-        let mut text = vec![Column::create(
-            &tmp,
-            "case",
-            Some(width(&|c| c.name.len())),
-            points.len(),
-        )?];
-        for (k, path) in swept.iter().enumerate() {
-            let w = width(&|c| value_len(c, k));
-            text.push(Column::create(&tmp, path, Some(w), points.len())?);
+        // Each text column's width: the longest name, the longest value of each swept field.
+        let (name_width, value_widths) = table.sweep.text_widths((0..rows).map(|j| table.index(j)));
+        let mut text = vec![Column::create(&tmp, "case", Some(name_width.max(1)), rows)?];
+        for (path, w) in table.sweep.paths().into_iter().zip(value_widths) {
+            text.push(Column::create(&tmp, path, Some(w.max(1)), rows)?);
         }
-        let mut table = Table {
+        let mut out = Table {
             dir: &tmp,
-            rows: points.len(),
+            rows,
             text,
             metrics: Vec::new(),
             pending: 0,
@@ -283,41 +307,33 @@ pub(super) fn run_table(
             warned: false,
         };
         let mut ran = 0;
-        for chunk in points.chunks(CHUNK) {
-            let results: Vec<Result<Vec<MechanismResult>, String>> = chunk
-                .par_iter()
-                .map(|case| {
-                    let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                        run_trains(case, StepsTo::Summary)
-                    }))
-                    .unwrap_or_else(|_| {
-                        Err(format!(
-                            "{}: case \"{}\": internal error (a bug, please report it)",
-                            case.file.display(),
-                            case.name
-                        ))
-                    })
-                    .map(|trains| trains.into_iter().map(|(r, _)| r).collect());
+        for start in (0..rows).step_by(CHUNK) {
+            let results: Vec<Result<Vec<MechanismResult>, String>> = (start
+                ..(start + CHUNK).min(rows))
+                .into_par_iter()
+                .map(|j| {
+                    let r = run_point(table, table.index(j));
                     if let Some(progress) = &options.progress {
                         progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
                     }
                     r
                 })
                 .collect();
-            for (case, result) in chunk.iter().zip(results) {
+            for (j, result) in (start..).zip(results) {
                 if let Err(e) = &result {
                     failures.push(e.clone());
                 } else {
                     ran += 1;
                 }
-                table.row(case, result)?;
+                let k = table.index(j);
+                out.row(&table.sweep.point_name(k), &table.sweep.values(k), result)?;
             }
         }
         if ran == 0 {
             // Every point failed: the earlier folder, if any, stays.
             return Ok(0);
         }
-        table.finish(sweep)?;
+        out.finish(sweep)?;
         files::replace_dir(&tmp, &dir)?;
         Ok(ran)
     })();

@@ -8,6 +8,7 @@ use crate::per_step::{ChartSink, ColumnSink, PerStepSink, RunLayout, StepColumns
 use cardan_case::case::Case;
 use cardan_case::machine_motion::Dynamics;
 use cardan_case::setup::Setup;
+use cardan_dynamics::machine_friction::MotionFriction;
 use cardan_dynamics::machine_motion::{MachineTorques, SolvedMotion, SolvedRun};
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
@@ -59,14 +60,15 @@ pub(crate) struct TrainRows {
     pub columns: Option<StepColumns>,
 }
 
-/// A crank train on the solved motion of `d` (`[motion] mode = "dynamic"`): its cycles before
+/// A crank train on the solved motion of `case.dynamics` (`[motion] mode = "dynamic"`): its cycles before
 /// the reported one (and the flywheel, if sized) solved first (`dynamic.rs`), then the
-/// reported cycle stepped one state at a time into `sinks`; returns the motion's metrics.
+/// reported cycle stepped one state at a time into `sinks`; the friction torque of the
+/// `setup`'s loss budget (with `[friction]`) among the motion's torques; returns the motion's
+/// metrics.
 #[allow(clippy::too_many_arguments)]
 fn run_solved(
     case: &Case,
-    d: &Dynamics,
-    mechanism: &dyn Mechanism,
+    (mechanism, setup): (&dyn Mechanism, &Setup),
     shift: f64,
     families: &[&dyn LoadFamily],
     gas: Option<GasAt>,
@@ -75,12 +77,16 @@ fn run_solved(
 ) -> Result<Vec<(&'static str, f64)>, String> {
     // The solved motion: its states depend on the run's torques, so one thread takes them one
     // at a time.
-    let force = |theta: f64| gas.map_or(0.0, |g| g(theta).1);
+    let d: &Dynamics = case.dynamics.as_ref().ok_or("not a solved motion")?;
     let torques = MachineTorques {
         mechanism,
-        gas: gas.map(|_| &force as &(dyn Fn(f64) -> f64 + Sync)),
+        gas,
         load: &d.load,
         flywheel: d.flywheel,
+        friction: setup
+            .losses
+            .as_ref()
+            .map(|budget| MotionFriction { budget, families }),
     };
     let run_spec = SolvedRun {
         start: case.motion.start_angle + shift,
@@ -179,7 +185,7 @@ fn run_mechanism(
     let mut shifted = Vec::new();
     let mut solved_metrics = Vec::new();
     let mut steps = |gas: Option<GasAt>| {
-        if let Some(d) = &case.dynamics {
+        if case.dynamics.is_some() {
             let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0];
             if let Some(p) = per_step.as_mut() {
                 list.push(p);
@@ -190,8 +196,15 @@ fn run_mechanism(
             if let Some(c) = columns.as_mut() {
                 list.push(c);
             }
-            solved_metrics =
-                run_solved(case, d, mechanism, shift, &families, gas, &mut stages, list)?;
+            solved_metrics = run_solved(
+                case,
+                (mechanism, setup),
+                shift,
+                &families,
+                gas,
+                &mut stages,
+                list,
+            )?;
             return Ok(());
         }
         let motion = CrankMotion {
@@ -243,7 +256,7 @@ fn run_mechanism(
     };
     let gas_metrics = with_gas(case, mechanism, shift, &mut steps)?;
     let (summary, chart_rows) = sinks;
-    let mut summary = finish_summary(case, mechanism, &summary, gas_metrics)?;
+    let mut summary = finish_summary(case, mechanism, &summary, gas_metrics, &solved_metrics)?;
     push_solved(&mut summary, solved_metrics)?;
     let charts = match per_step {
         Some(p) => p
@@ -303,13 +316,16 @@ fn push_solved(summary: &mut Summary, metrics: Vec<(&'static str, f64)>) -> Resu
 }
 
 /// The summary of `mechanism`'s run in `case` from its sink, with the gas model's metrics and,
-/// with `[friction]`, the engine's; refused if a metric is not finite.
+/// with `[friction]`, the engine's (its correlation at the case's prescribed motion, or at the
+/// `speed_mean` of a solved one's metrics `solved`); refused if a metric is not finite.
 fn finish_summary(
     case: &Case,
     mechanism: &dyn Mechanism,
     sink: &SummarySink,
     gas_metrics: Vec<GasMetric>,
+    solved: &[(&'static str, f64)],
 ) -> Result<Summary, String> {
+    let solved_speed = solved.iter().find(|m| m.0 == "speed_mean").map(|m| m.1);
     let mut summary = sink.finish(mechanism)?;
     for m in gas_metrics {
         if !m.value.is_finite() {
@@ -321,12 +337,21 @@ fn finish_summary(
         summary.push(m.name, m.value);
     }
     if let Some(f) = &case.friction {
-        // An engine's fmep and the whole-engine correlation beside it.
+        // An engine's fmep and the whole-engine correlation beside it; PNH's correlation of a
+        // solved motion at its mean speed (a steady run's speed).
+        let motion = match solved_speed {
+            Some(speed) => CrankMotion {
+                initial_speed: speed,
+                angular_acceleration: 0.0,
+                ..case.motion
+            },
+            None => case.motion,
+        };
         for (name, value) in cardan_dynamics::engine_metrics(
             f,
             mechanism,
             case.geometry.bore,
-            &case.motion,
+            &motion,
             case.end_angle,
             &summary,
         ) {
