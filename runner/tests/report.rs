@@ -650,7 +650,11 @@ fn a_long_run_is_charted_in_bounded_points_with_its_peaks() {
             .filter(|n| n.attribute("class") == Some("series"))
         {
             let n: usize = s.attribute("data-n").unwrap().parse().unwrap();
-            assert!((MAX_POINTS / 2..=MAX_POINTS).contains(&n), "{file}: {n}");
+            // A locus keeps a bucket's extremes of x and y, which coincide in pairs where both
+            // coordinates are monotone over the bucket (report/src/locus.rs): only its upper
+            // bound is fixed; a series against the crank angle keeps at least half its budget.
+            let least = if file.contains("locus") { 2 } else { MAX_POINTS / 2 };
+            assert!((least..=MAX_POINTS).contains(&n), "{file}: {n}");
         }
     }
     let doc = roxmltree::Document::parse(&plots["torque_total.svg"]).unwrap();
