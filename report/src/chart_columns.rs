@@ -27,8 +27,11 @@ pub(crate) const BALANCE_COLUMNS: [&str; 5] = [
 
 /// The loci the charts draw (`locus.rs`): per chart its file name, the x column and the y
 /// column (the shaking force's F_y against F_x, issue 24's polar plot).
-pub(crate) const LOCI: [(&str, &str, &str); 1] =
-    [("shaking_force_locus", "shaking_force_x_n", "shaking_force_y_n")];
+pub(crate) const LOCI: [(&str, &str, &str); 1] = [(
+    "shaking_force_locus",
+    "shaking_force_x_n",
+    "shaking_force_y_n",
+)];
 
 /// The key of the locus of `y` against `x`: `locus:x:y` (no column name starts with `locus:`).
 pub(crate) fn locus_key(x: &str, y: &str) -> String {

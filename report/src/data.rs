@@ -167,7 +167,9 @@ fn layout_words(layout: &Value) -> String {
     let n = layout.get("cylinders").and_then(Value::as_u64).unwrap_or(0);
     let mut devices = Vec::new();
     if let Some(c) = layout.get("counterweight").and_then(Value::as_f64) {
-        devices.push(format!("crank counterweight ({c} of the reciprocating mass)"));
+        devices.push(format!(
+            "crank counterweight ({c} of the reciprocating mass)"
+        ));
     }
     if layout.get("balance_shafts").and_then(Value::as_str) == Some("lanchester") {
         devices.push("Lanchester shafts".to_string());

@@ -200,7 +200,9 @@ impl ChartRecorder {
             .collect();
         let loci = loci(header)
             .into_iter()
-            .filter_map(|(key, x, y)| Some((key, [index(&x)?, index(&y)?], Locus::new(taken, budget))))
+            .filter_map(|(key, x, y)| {
+                Some((key, [index(&x)?, index(&y)?], Locus::new(taken, budget)))
+            })
             .collect();
         Self {
             header: header.to_vec(),

@@ -247,7 +247,11 @@ pub fn locus_chart(chart: &LocusChart) -> String {
             esc(&s.source),
             esc(x_column),
         );
-        if let Some((a, b)) = s.x.iter().zip(&s.y).find(|(a, b)| a.is_finite() && b.is_finite()) {
+        if let Some((a, b)) =
+            s.x.iter()
+                .zip(&s.y)
+                .find(|(a, b)| a.is_finite() && b.is_finite())
+        {
             let _ = writeln!(
                 o,
                 "<circle class=\"start\" cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{colour}\"/>",
@@ -304,7 +308,10 @@ mod tests {
         for n in [3usize, 1000, 1001, 7201, 100_003] {
             let t: Vec<f64> = (0..n).map(|k| k as f64 * 1e-3).collect();
             let x: Vec<f64> = t.iter().map(|t| (t * 3.1).cos() * (1.0 + t)).collect();
-            let y: Vec<f64> = t.iter().map(|t| (t * 3.1).sin() + 0.3 * (t * 11.0).sin()).collect();
+            let y: Vec<f64> = t
+                .iter()
+                .map(|t| (t * 3.1).sin() + 0.3 * (t * 11.0).sin())
+                .collect();
             let (tx, ty) = thin(&x, &y, 1000);
             assert!(tx.len() <= 1000);
             if n <= 1000 {
@@ -321,7 +328,9 @@ mod tests {
             // Each kept point is a row of the path, and the rows are in order.
             let mut from = 0;
             for (a, b) in tx.iter().zip(&ty) {
-                let k = (from..n).find(|&k| x[k] == *a && y[k] == *b).expect("a row");
+                let k = (from..n)
+                    .find(|&k| x[k] == *a && y[k] == *b)
+                    .expect("a row");
                 from = k + 1;
             }
         }

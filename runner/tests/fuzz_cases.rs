@@ -165,11 +165,9 @@ fn finite(v: &Value) -> bool {
         Value::Null => false,
         Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
         Value::Array(a) => a.iter().all(finite),
-        Value::Object(o) => o
-            .iter()
-            .all(|(k, v)| {
-                k == "gas_model" || k == "counterweight" || finite(v) || v.is_string() || v.is_boolean()
-            }),
+        Value::Object(o) => o.iter().all(|(k, v)| {
+            k == "gas_model" || k == "counterweight" || finite(v) || v.is_string() || v.is_boolean()
+        }),
         _ => true,
     }
 }

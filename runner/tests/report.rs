@@ -178,7 +178,7 @@ fn check_locus(file: &Path, axes: &Axes, node: roxmltree::Node, x: &[f64], y: &[
     if rows.len() <= MAX_POINTS {
         assert_eq!(n, rows.len(), "{label}: every row");
     } else {
-        assert!(n <= MAX_POINTS && n >= 4, "{label}: {n} points");
+        assert!((4..=MAX_POINTS).contains(&n), "{label}: {n} points");
     }
     let near = |p: (f64, f64), r: (f64, f64)| {
         (p.0 - axes.px(r.0)).abs() <= 0.06 && (p.1 - axes.py(r.1)).abs() <= 0.06
@@ -191,8 +191,13 @@ fn check_locus(file: &Path, axes: &Axes, node: roxmltree::Node, x: &[f64], y: &[
         next = row + 1;
     }
     assert!(near(pts[0], rows[0]), "{label}: the first row first");
-    assert!(near(pts[n - 1], rows[rows.len() - 1]), "{label}: the last row last");
-    let extreme = |pick: fn(&(f64, f64)) -> f64, px: &dyn Fn(f64) -> f64, of_point: fn(&(f64, f64)) -> f64| {
+    assert!(
+        near(pts[n - 1], rows[rows.len() - 1]),
+        "{label}: the last row last"
+    );
+    let extreme = |pick: fn(&(f64, f64)) -> f64,
+                   px: &dyn Fn(f64) -> f64,
+                   of_point: fn(&(f64, f64)) -> f64| {
         let hi = rows.iter().map(pick).fold(f64::MIN, f64::max);
         let lo = rows.iter().map(pick).fold(f64::MAX, f64::min);
         for v in [hi, lo] {
@@ -201,7 +206,10 @@ fn check_locus(file: &Path, axes: &Axes, node: roxmltree::Node, x: &[f64], y: &[
                 "{label}: the extreme {v} drawn"
             );
         }
-        assert!(axes.x.0 <= lo && axes.x.1 >= hi, "{label}: the axes cover {lo}..{hi}");
+        assert!(
+            axes.x.0 <= lo && axes.x.1 >= hi,
+            "{label}: the axes cover {lo}..{hi}"
+        );
     };
     extreme(|r| r.0, &|v| axes.px(v), |p| p.0);
     extreme(|r| r.1, &|v| axes.py(v), |p| p.1);
@@ -248,7 +256,11 @@ fn the_shaking_force_locus_is_charted_per_mechanism() {
         expected.sort();
         assert_eq!(sources, expected, "{}", case.display());
         let md = std::fs::read_to_string(case.join("report.md")).unwrap();
-        assert!(md.contains("plots/shaking_force_locus.svg"), "{}", case.display());
+        assert!(
+            md.contains("plots/shaking_force_locus.svg"),
+            "{}",
+            case.display()
+        );
         charted += 1;
     }
     assert!(charted >= 10, "{charted} cases with a locus");
@@ -653,7 +665,11 @@ fn a_long_run_is_charted_in_bounded_points_with_its_peaks() {
             // A locus keeps a bucket's extremes of x and y, which coincide in pairs where both
             // coordinates are monotone over the bucket (report/src/locus.rs): only its upper
             // bound is fixed; a series against the crank angle keeps at least half its budget.
-            let least = if file.contains("locus") { 2 } else { MAX_POINTS / 2 };
+            let least = if file.contains("locus") {
+                2
+            } else {
+                MAX_POINTS / 2
+            };
             assert!((least..=MAX_POINTS).contains(&n), "{file}: {n}");
         }
     }
