@@ -51,8 +51,9 @@ pub enum LayoutKind {
     /// Cylinders in a row, one throw each.
     #[default]
     Inline,
-    /// Two banks `bank_angle` apart, a pair of cylinders (one per bank, side by side) on each
-    /// crank pin; cylinders 1, 3, 5, ... on the first bank.
+    /// Two banks `bank_angle` apart, a pair of cylinders (one per bank) on each crank pin, the
+    /// pair in one plane (no axial offset: docs/validation/balance.md; an offset pair is a
+    /// "custom" layout); cylinders 1, 3, 5, ... on the first bank.
     Vee,
     /// Opposed cylinders (axes 180° apart, cylinders 1, 3, ... on the first side), each on its
     /// own throw, each opposed pair at its top dead centres together, the pairs' throws evenly
@@ -63,6 +64,19 @@ pub enum LayoutKind {
     Radial,
     /// Each cylinder's axis and axial position given.
     Custom,
+}
+
+impl LayoutKind {
+    /// Its word in case files.
+    pub fn name(self) -> &'static str {
+        match self {
+            LayoutKind::Inline => "inline",
+            LayoutKind::Vee => "vee",
+            LayoutKind::Boxer => "boxer",
+            LayoutKind::Radial => "radial",
+            LayoutKind::Custom => "custom",
+        }
+    }
 }
 
 /// The engine's cycle, for the firing intervals.
@@ -328,6 +342,7 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
     };
     let firing_delay = firing_delays(&layout, firing.as_deref(), t.cycle, interval);
     Ok(MachineBalance {
+        kind: kind.name(),
         layout,
         firing_delay,
         ..MachineBalance::default()

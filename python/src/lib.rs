@@ -104,8 +104,14 @@ fn run<'py>(
     }
     let mut cases = cases(py, g)?;
     let case = cases.pop().expect("a case without [sweep] is one case");
+    // The runner catches a panic of the run (`run_in_memory`); this catches anything else.
     let run = py
-        .detach(|| run_in_memory(&case, steps))
+        .detach(|| {
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_in_memory(&case, steps)))
+                .unwrap_or_else(|_| {
+                    Err("internal error running the case (a bug, please report it)".into())
+                })
+        })
         .map_err(RunError::new_err)?;
     let summary = convert::to_python(py, &run.summary)?;
     let trains = PyList::empty(py);
@@ -217,5 +223,12 @@ fn _cardan(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep, m)?)?;
     m.add_function(wrap_pyfunction!(gear, m)?)?;
     m.add_function(wrap_pyfunction!(columns, m)?)?;
+    // Whether this build has the runner's test hook (feature `test-hooks`, .ci/run's wheel).
+    m.add("TEST_HOOKS", cfg!(feature = "test-hooks"))?;
+    #[cfg(feature = "test-hooks")]
+    m.add(
+        "TEST_PANIC_CASE",
+        cardan_runner::run::test_hooks::TEST_PANIC_CASE,
+    )?;
     Ok(())
 }

@@ -235,3 +235,22 @@ def test_the_messages_are_the_command_lines():
     with pytest.raises(cardan.CaseError) as from_text:
         cardan.run(text)
     assert str(from_dict.value).split(": ", 1)[1] == str(from_text.value).split(": ", 1)[1]
+
+
+def test_a_panic_in_a_run_is_a_run_error_and_the_interpreter_goes_on():
+    # A real panic inside a crank train's run (a rayon worker): the runner's test hook,
+    # compiled only with the package's `test-hooks` feature, which .ci/run's wheel enables
+    # (CARDAN_TEST_HOOKS=1 there: the test must not skip).
+    from cardan import _cardan
+
+    if not _cardan.TEST_HOOKS:
+        assert not os.environ.get("CARDAN_TEST_HOOKS"), "the wheel was built without test-hooks"
+        pytest.skip("a wheel built without the feature test-hooks")
+    case = case_dict(CASE)
+    case["name"] = _cardan.TEST_PANIC_CASE
+    with pytest.raises(cardan.RunError, match="internal error .*deliberate panic"):
+        cardan.run(case, steps=False)
+    # Twice, and the interpreter and the package still work.
+    with pytest.raises(cardan.RunError):
+        cardan.run(case)
+    assert cardan.run(CASE, steps=False).summary_json["case"] == case_dict(CASE)["name"]

@@ -5,9 +5,10 @@
 //! draws are kept ([`traces`]), thinned as the run makes them (`envelope.rs`) or read from
 //! the CSV.
 
-use crate::chart_columns::{load_family, loss_columns, sum_key};
+use crate::chart_columns::{load_family, locus_key, loss_columns, sum_key, LOCI};
 use crate::data::{family_rank, CaseSummary};
 use crate::envelope::ChartData;
+use crate::locus::{locus_chart, LocusChart};
 use crate::svg::{self, LineChart, Series};
 
 /// One chart over crank angle: the file name, title, y quantity and unit, and per mechanism
@@ -359,6 +360,56 @@ pub(super) fn charts(
             format!("{}.svg", spec.file),
             svg::line_chart(&chart),
             format!("{}: every mechanism over crank angle", spec.title),
+        ));
+    }
+    out
+}
+
+/// The locus charts (`locus.rs`): the shaking force's F_y against F_x over the run, every
+/// mechanism whose rows have both (issue 24's polar plot), each the thinned locus its run
+/// recorded.
+pub(super) fn locus_charts(
+    s: &CaseSummary,
+    data: &[Option<ChartData>],
+) -> Vec<(String, String, String)> {
+    let mut out = Vec::new();
+    for (file, x_column, y_column) in LOCI {
+        let mut chart = LocusChart {
+            title: "Shaking force on the frame: F_y against F_x".into(),
+            x_label: "F_x".into(),
+            y_label: "F_y".into(),
+            unit: "N".into(),
+            ..LocusChart::default()
+        };
+        for (k, m) in s.mechanisms.iter().enumerate() {
+            let Some(d) = &data[k] else { continue };
+            let Some(t) = d.traces.get(&locus_key(x_column, y_column)) else {
+                continue;
+            };
+            if t.x.is_empty() {
+                continue;
+            }
+            chart.series.push(Series {
+                label: m.name.clone(),
+                source: format!("{}:{y_column}", d.file),
+                x: t.x.clone(),
+                y: t.y.clone(),
+                colour: k,
+                dash: 0,
+                markers: false,
+            });
+            chart.x_columns.push(x_column.to_string());
+        }
+        if chart.series.is_empty() {
+            continue;
+        }
+        out.push((
+            format!("{file}.svg"),
+            locus_chart(&chart),
+            "Shaking force on the frame, the tip of its vector over the run (the crank axis at \
+             the origin, the cylinder along +y; equal scales; a dot at the first step): every \
+             mechanism"
+                .into(),
         ));
     }
     out

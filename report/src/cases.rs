@@ -2,7 +2,7 @@
 //! "which is better" summary, the loss budget; the charts over crank angle are drawn by
 //! `case_plots.rs`.
 
-use crate::case_plots::{charts, plot_specs};
+use crate::case_plots::{charts, locus_charts, plot_specs};
 use crate::chart_columns::wanted_columns;
 use crate::data::{self, family_rank, CaseSummary, MechanismSummary};
 use crate::doc::{write_report, Align, Block, Doc};
@@ -415,7 +415,8 @@ pub(super) fn case_report(
         .map(|c| c.as_ref().map(|c| c.header.clone()))
         .collect();
     let specs = plot_specs(&s, &headers);
-    let plots = charts(&s, &specs, &data);
+    let mut plots = charts(&s, &specs, &data);
+    plots.extend(locus_charts(&s, &data));
 
     let mut doc = Doc {
         title: format!("Case report: {}", s.case),
@@ -426,8 +427,12 @@ pub(super) fn case_report(
         .iter()
         .map(|m| format!("`{}`", m.name))
         .collect();
+    let layout = s
+        .layout
+        .as_ref()
+        .map_or(String::new(), |l| format!("; layout: **{l}**"));
     doc.push(Block::Paragraph(format!(
-        "Machine: **{}**; gas model: **{}**; mechanisms: {}. Reference: `{reference}`.",
+        "Machine: **{}**{layout}; gas model: **{}**; mechanisms: {}. Reference: `{reference}`.",
         s.machine,
         s.gas_model.as_deref().unwrap_or("none"),
         names.join(", ")

@@ -25,6 +25,29 @@ pub(crate) const BALANCE_COLUMNS: [&str; 5] = [
     "machine_torque_nm",
 ];
 
+/// The loci the charts draw (`locus.rs`): per chart its file name, the x column and the y
+/// column (the shaking force's F_y against F_x, issue 24's polar plot).
+pub(crate) const LOCI: [(&str, &str, &str); 1] = [(
+    "shaking_force_locus",
+    "shaking_force_x_n",
+    "shaking_force_y_n",
+)];
+
+/// The key of the locus of `y` against `x`: `locus:x:y` (no column name starts with `locus:`).
+pub(crate) fn locus_key(x: &str, y: &str) -> String {
+    format!("locus:{x}:{y}")
+}
+
+/// The loci of the header `h`: (key, x column, y column) of each of [`LOCI`] whose columns it
+/// has.
+pub(crate) fn loci(h: &[String]) -> Vec<(String, String, String)> {
+    let has = |c: &str| h.iter().any(|x| x == c);
+    LOCI.iter()
+        .filter(|(_, x, y)| has(x) && has(y))
+        .map(|(_, x, y)| (locus_key(x, y), x.to_string(), y.to_string()))
+        .collect()
+}
+
 /// The power-loss columns of a header (`power_loss_<component>_w`): each one's chart, and
 /// their sum's (the total loss).
 pub(crate) fn loss_columns(h: &[String]) -> Vec<String> {

@@ -35,6 +35,9 @@ pub struct CaseSummary {
     pub case: String,
     pub machine: String,
     pub gas_model: Option<String>,
+    /// The machine the balance metrics are of (`summary.json`'s `layout`), in words: its kind,
+    /// cylinders and balancing devices; `None` in a summary without it.
+    pub layout: Option<String>,
     pub mechanisms: Vec<MechanismSummary>,
     /// The run's warnings (`summary.json`'s `warnings`), e.g. a grid too coarse for its peaks.
     pub warnings: Vec<String>,
@@ -140,6 +143,7 @@ pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(Cas
             case: string("case").unwrap_or_default(),
             machine: string("machine").unwrap_or_default(),
             gas_model: string("gas_model"),
+            layout: json.get("layout").map(layout_words),
             mechanisms,
             warnings: json
                 .get("warnings")
@@ -154,6 +158,32 @@ pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(Cas
         },
         reference,
     ))
+}
+
+/// `summary.json`'s `layout` in words: "inline, 4 cylinders; counterweight 0.5 of the
+/// reciprocating mass, Lanchester shafts" (no devices: "no balancing device").
+fn layout_words(layout: &Value) -> String {
+    let kind = layout.get("kind").and_then(Value::as_str).unwrap_or("?");
+    let n = layout.get("cylinders").and_then(Value::as_u64).unwrap_or(0);
+    let mut devices = Vec::new();
+    if let Some(c) = layout.get("counterweight").and_then(Value::as_f64) {
+        devices.push(format!(
+            "crank counterweight ({c} of the reciprocating mass)"
+        ));
+    }
+    if layout.get("balance_shafts").and_then(Value::as_str) == Some("lanchester") {
+        devices.push("Lanchester shafts".to_string());
+    }
+    if layout.get("cardan_counterweights").and_then(Value::as_bool) == Some(true) {
+        devices.push("cardan counterweight pair".to_string());
+    }
+    let devices = if devices.is_empty() {
+        "no balancing device".to_string()
+    } else {
+        devices.join(", ")
+    };
+    let cylinders = if n == 1 { "cylinder" } else { "cylinders" };
+    format!("{kind}, {n} {cylinders}; {devices}")
 }
 
 /// Some columns of a per-step CSV.

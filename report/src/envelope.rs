@@ -19,7 +19,8 @@
 //! the exact peaks), and a summary-only run of millions of steps does not pay the charts' per-row
 //! cost at every step. Reading the rows back from a CSV takes the same rows.
 
-use crate::chart_columns::traces;
+use crate::chart_columns::{loci, traces};
+use crate::locus::Locus;
 use crate::rows::{row_count, ChartRows};
 use std::collections::BTreeMap;
 
@@ -156,7 +157,8 @@ pub struct ChartData {
     /// Where the rows are, for each series' `data-source` (`<label>.csv`, `<label>.npy`, or the
     /// label alone when the run wrote no per-step file).
     pub file: String,
-    /// Per series: a column's name, or the names of the columns summed joined by `+`.
+    /// Per series: a column's name, or the names of the columns summed joined by `+`; a locus
+    /// (`locus:x:y`, its trace's x and y the two columns at the same rows).
     pub traces: BTreeMap<String, Trace>,
 }
 
@@ -172,6 +174,8 @@ pub struct ChartRecorder {
     x: Option<usize>,
     /// Per series: its key, the row indices it sums (one for a plain column), its envelope.
     series: Vec<(String, Vec<usize>, Envelope)>,
+    /// Per locus (`locus.rs`): its key, the row indices of its x and y, its thinning.
+    loci: Vec<(String, [usize; 2], Locus)>,
 }
 
 impl ChartRecorder {
@@ -194,6 +198,12 @@ impl ChartRecorder {
                 (key, at, Envelope::new(taken, budget))
             })
             .collect();
+        let loci = loci(header)
+            .into_iter()
+            .filter_map(|(key, x, y)| {
+                Some((key, [index(&x)?, index(&y)?], Locus::new(taken, budget)))
+            })
+            .collect();
         Self {
             header: header.to_vec(),
             file,
@@ -201,12 +211,15 @@ impl ChartRecorder {
             next: 0,
             x: index("crank_angle_deg"),
             series,
+            loci,
         }
     }
 
     /// Whether a series reads the row's column `k` (the others may be left unfilled).
     pub fn reads(&self, k: usize) -> bool {
-        self.x == Some(k) || self.series.iter().any(|(_, at, _)| at.contains(&k))
+        self.x == Some(k)
+            || self.series.iter().any(|(_, at, _)| at.contains(&k))
+            || self.loci.iter().any(|(_, at, _)| at.contains(&k))
     }
 
     /// Whether the next row is one the series take (every `stride`-th and the last).
@@ -245,6 +258,9 @@ impl ChartRecorder {
             };
             envelope.push(x, y);
         }
+        for (_, [x, y], locus) in &mut self.loci {
+            locus.push(row[*x], row[*y]);
+        }
     }
 
     /// The thinned series.
@@ -256,6 +272,10 @@ impl ChartRecorder {
                 let (x, y) = envelope.finish();
                 (key, Trace { x, y })
             })
+            .chain(self.loci.into_iter().map(|(key, _, locus)| {
+                let (x, y) = locus.finish();
+                (key, Trace { x, y })
+            }))
             .collect();
         ChartData {
             header: self.header,

@@ -44,6 +44,7 @@ mod envelope;
 pub mod files;
 mod heatmap;
 mod index;
+mod locus;
 mod numbers;
 mod rows;
 mod svg;

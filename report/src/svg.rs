@@ -15,7 +15,7 @@ use std::fmt::Write as _;
 pub const MAX_POINTS: usize = 1000;
 
 /// Colour-blind-safe series colours (Okabe-Ito), by mechanism order.
-const PALETTE: [&str; 8] = [
+pub(super) const PALETTE: [&str; 8] = [
     "#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#000000", "#f0e442",
 ];
 /// Dash patterns for the series sharing a colour (several pistons, several metrics).
@@ -172,7 +172,7 @@ pub fn nice_range(min: f64, max: f64, target: f64) -> (f64, f64, f64) {
 }
 
 /// The SI prefix that keeps tick labels short: (factor to divide by, prefix).
-fn prefix(max_abs: f64, unit: &str) -> (f64, &'static str) {
+pub(super) fn prefix(max_abs: f64, unit: &str) -> (f64, &'static str) {
     if unit.is_empty() || unit == "1" || unit == "%" || unit == "deg" || unit.starts_with("rpm") {
         return (1.0, "");
     }
@@ -209,7 +209,7 @@ pub(super) fn text_width(s: &str, size: f64) -> f64 {
 }
 
 /// Legend entries flowed into rows under the plot: (x, y) of each and the height used.
-fn legend_layout(labels: &[String], top: f64) -> (Vec<(f64, f64)>, f64) {
+pub(super) fn legend_layout(labels: &[String], top: f64) -> (Vec<(f64, f64)>, f64) {
     let mut pos = Vec::new();
     let (mut x, mut y) = (LEFT, top);
     for l in labels {
@@ -452,7 +452,7 @@ fn series_lines(
 }
 
 /// Writes the legend's line and label of each series, at the places `legend` laid out.
-fn legend_lines(o: &mut String, series: &[Series], legend: &[(f64, f64)]) {
+pub(super) fn legend_lines(o: &mut String, series: &[Series], legend: &[(f64, f64)]) {
     o.push_str("<g class=\"legend-lines\">\n");
     for (s, (x, y)) in series.iter().zip(legend) {
         let colour = PALETTE[s.colour % PALETTE.len()];
@@ -484,7 +484,7 @@ pub fn pretty_unit(unit: &str) -> String {
     }
 }
 
-fn pretty_unit_prefixed(prefix: &str, unit: &str) -> String {
+pub(super) fn pretty_unit_prefixed(prefix: &str, unit: &str) -> String {
     let u = pretty_unit(unit);
     if prefix.is_empty() || u.is_empty() {
         u

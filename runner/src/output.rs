@@ -26,6 +26,21 @@ pub struct MechanismResult {
 /// Version of the layout of `summary.json`; raised when a name or the shape changes.
 pub const SCHEMA_VERSION: u32 = 2;
 
+/// The machine the balance metrics are of (`[layout]`, `[balance]`; docs/results.md): its
+/// layout's kind and number of cylinders, and the balancing devices, named as in case files
+/// (`counterweight`: the fraction of the reciprocating mass balanced, `null` without a
+/// counterweight).
+fn layout_json(case: &Case) -> Value {
+    let machine = &case.balance;
+    json!({
+        "kind": machine.kind,
+        "cylinders": machine.layout.cylinders.len(),
+        "counterweight": machine.counterweight,
+        "balance_shafts": if machine.lanchester { "lanchester" } else { "none" },
+        "cardan_counterweights": machine.cardan_counterweights,
+    })
+}
+
 /// The summary of a case as JSON (see docs/results.md).
 pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
     let mut mechanisms = Map::new();
@@ -105,6 +120,7 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
         "case": case.name,
         "machine": case.machine.name(),
         "gas_model": case.gas.as_ref().map(|g| g.name()),
+        "layout": layout_json(case),
     });
     summary["mechanisms"] = Value::Object(mechanisms);
     let warnings: Vec<String> = results

@@ -31,4 +31,6 @@ pub use options::{Progress, Report, RunOptions};
 pub use size::{estimated_bytes, human_bytes, DEFAULT_MAX_BYTES};
 pub use table::{case_folders, TableSweep, CASE_FOLDERS_UP_TO};
 pub use train::run_case;
+#[cfg(feature = "test-hooks")]
+pub use train::test_hooks;
 pub(crate) use train::{run_trains, StepsTo};

@@ -410,3 +410,32 @@ fn bad_layouts_and_balance_are_refused_naming_the_field() {
     // The pair on a slider-crank says which mechanism cannot form it.
     assert!(with("[balance]\ncardan_counterweights = true").contains("slider_crank"));
 }
+
+/// `summary.json` names the machine its balance metrics are of: the layout's kind, cylinders
+/// and devices as the case file gives them (a case without `[layout]`: one inline cylinder, no
+/// device, `counterweight` null).
+#[test]
+fn the_summary_names_the_machine_the_balance_metrics_are_of() {
+    let layout = |tables: &str| {
+        let c = case(&text("\"slider_crank\"", 36, tables));
+        let results = run_case(&c, None).unwrap_or_else(|e| panic!("{e}"));
+        cardan_runner::output::summary_json(&c, &results)["layout"].clone()
+    };
+    assert_eq!(
+        layout(""),
+        serde_json::json!({"kind": "inline", "cylinders": 1, "counterweight": null,
+            "balance_shafts": "none", "cardan_counterweights": false})
+    );
+    assert_eq!(
+        layout(
+            "[layout]\nkind = \"vee\"\ncylinders = 4\nbank_angle = \"60 deg\"\n\
+             [balance]\ncounterweight = 0.5\nbalance_shafts = \"lanchester\""
+        ),
+        serde_json::json!({"kind": "vee", "cylinders": 4, "counterweight": 0.5,
+            "balance_shafts": "lanchester", "cardan_counterweights": false})
+    );
+    assert_eq!(
+        layout("[layout]\nkind = \"radial\"\ncylinders = 5")["kind"],
+        "radial"
+    );
+}

@@ -158,15 +158,16 @@ fn document(fields: &[(String, Vec<String>)], changes: &[Change]) -> String {
     toml::to_string(&doc).unwrap_or_else(|_| BASE.to_string())
 }
 
-/// Whether every number in a summary is finite (JSON has no NaN: `null` is one).
+/// Whether every number in a summary is finite (JSON has no NaN: `null` is one; the two
+/// entries whose `null` means "none" are not numbers: `gas_model`, `layout.counterweight`).
 fn finite(v: &Value) -> bool {
     match v {
         Value::Null => false,
         Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
         Value::Array(a) => a.iter().all(finite),
-        Value::Object(o) => o
-            .iter()
-            .all(|(k, v)| k == "gas_model" || finite(v) || v.is_string() || v.is_boolean()),
+        Value::Object(o) => o.iter().all(|(k, v)| {
+            k == "gas_model" || k == "counterweight" || finite(v) || v.is_string() || v.is_boolean()
+        }),
         _ => true,
     }
 }

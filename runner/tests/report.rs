@@ -125,6 +125,11 @@ fn case_charts_are_well_formed_and_draw_their_columns() {
                 let data = csvs
                     .entry(csv_name.to_string())
                     .or_insert_with(|| read_csv(&case.join(csv_name)));
+                if let Some(x_column) = s.attribute("data-x-column") {
+                    check_locus(&file, &axes, s, &data[x_column], &data[column]);
+                    charts += 1;
+                    continue;
+                }
                 let x = &data["crank_angle_deg"];
                 let y: Vec<f64> = if column.contains('+') {
                     let parts: Vec<&Vec<f64>> = column.split('+').map(|c| &data[c]).collect();
@@ -147,6 +152,118 @@ fn case_charts_are_well_formed_and_draw_their_columns() {
         with_csv >= 10 && charts > 200,
         "{with_csv} cases, {charts} series"
     );
+}
+
+/// A locus chart's series (`data-x-column`: the shaking force's F_y against F_x) against the
+/// CSV's columns `x` and `y`: equal axes symmetric about 0 on a square plot; every point drawn
+/// is a row of the CSV, x and y of the same row, the rows in order (to the drawing's 0.1 px);
+/// all the rows when they fit the budget, else at most the budget, with both coordinates'
+/// extremes drawn; the first row first and the last row last.
+#[track_caller]
+fn check_locus(file: &Path, axes: &Axes, node: roxmltree::Node, x: &[f64], y: &[f64]) {
+    let label = format!("{}: {:?}", file.display(), node.attribute("data-source"));
+    assert_eq!(axes.x, axes.y, "{label}: equal axes");
+    assert_eq!(axes.x.0, -axes.x.1, "{label}: symmetric about 0");
+    assert_eq!(axes.width, axes.height, "{label}: a square plot");
+    let pts = points(node);
+    let n: usize = node.attribute("data-n").unwrap().parse().unwrap();
+    assert_eq!(pts.len(), n, "{label}");
+    let rows: Vec<(f64, f64)> = x
+        .iter()
+        .zip(y)
+        .filter(|(a, b)| a.is_finite() && b.is_finite())
+        .map(|(a, b)| (*a, *b))
+        .collect();
+    assert!(!rows.is_empty(), "{label}");
+    if rows.len() <= MAX_POINTS {
+        assert_eq!(n, rows.len(), "{label}: every row");
+    } else {
+        assert!((4..=MAX_POINTS).contains(&n), "{label}: {n} points");
+    }
+    let near = |p: (f64, f64), r: (f64, f64)| {
+        (p.0 - axes.px(r.0)).abs() <= 0.06 && (p.1 - axes.py(r.1)).abs() <= 0.06
+    };
+    let mut next = 0;
+    for (k, p) in pts.iter().enumerate() {
+        let row = (next..rows.len())
+            .find(|&r| near(*p, rows[r]))
+            .unwrap_or_else(|| panic!("{label}: point {k} {p:?} is no row after row {next}"));
+        next = row + 1;
+    }
+    assert!(near(pts[0], rows[0]), "{label}: the first row first");
+    assert!(
+        near(pts[n - 1], rows[rows.len() - 1]),
+        "{label}: the last row last"
+    );
+    let extreme = |pick: fn(&(f64, f64)) -> f64,
+                   px: &dyn Fn(f64) -> f64,
+                   of_point: fn(&(f64, f64)) -> f64| {
+        let hi = rows.iter().map(pick).fold(f64::MIN, f64::max);
+        let lo = rows.iter().map(pick).fold(f64::MAX, f64::min);
+        for v in [hi, lo] {
+            assert!(
+                pts.iter().any(|p| (of_point(p) - px(v)).abs() <= 0.06),
+                "{label}: the extreme {v} drawn"
+            );
+        }
+        assert!(
+            axes.x.0 <= lo && axes.x.1 >= hi,
+            "{label}: the axes cover {lo}..{hi}"
+        );
+    };
+    extreme(|r| r.0, &|v| axes.px(v), |p| p.0);
+    extreme(|r| r.1, &|v| axes.py(v), |p| p.1);
+}
+
+/// Every case whose rows hold the shaking force has its locus chart (issue 24's polar plot),
+/// one series per mechanism, each drawing that mechanism's columns (`check_locus`, through
+/// `case_charts_are_well_formed_and_draw_their_columns`).
+#[test]
+fn the_shaking_force_locus_is_charted_per_mechanism() {
+    let out = shipped();
+    let mut charted = 0;
+    for case in cases(out) {
+        let csvs: Vec<PathBuf> = std::fs::read_dir(&case)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|x| x == "csv"))
+            .collect();
+        let with_force: Vec<String> = csvs
+            .iter()
+            .filter(|p| read_csv(p).contains_key("shaking_force_x_n"))
+            .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
+            .collect();
+        let file = case.join("plots/shaking_force_locus.svg");
+        if with_force.is_empty() {
+            assert!(!file.exists(), "{}", file.display());
+            continue;
+        }
+        let text = std::fs::read_to_string(&file).unwrap();
+        let doc = roxmltree::Document::parse(&text).unwrap();
+        let mut sources: Vec<String> = doc
+            .descendants()
+            .filter(|n| n.attribute("class") == Some("series"))
+            .map(|s| {
+                assert_eq!(s.attribute("data-x-column"), Some("shaking_force_x_n"));
+                s.attribute("data-source").unwrap().to_string()
+            })
+            .collect();
+        sources.sort();
+        let mut expected: Vec<String> = with_force
+            .iter()
+            .map(|f| format!("{f}:shaking_force_y_n"))
+            .collect();
+        expected.sort();
+        assert_eq!(sources, expected, "{}", case.display());
+        let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+        assert!(
+            md.contains("plots/shaking_force_locus.svg"),
+            "{}",
+            case.display()
+        );
+        charted += 1;
+    }
+    assert!(charted >= 10, "{charted} cases with a locus");
 }
 
 /// The slider-crank and cardan-gear air pump at 30π rad/s: the report's row of the peak total
@@ -545,7 +662,15 @@ fn a_long_run_is_charted_in_bounded_points_with_its_peaks() {
             .filter(|n| n.attribute("class") == Some("series"))
         {
             let n: usize = s.attribute("data-n").unwrap().parse().unwrap();
-            assert!((MAX_POINTS / 2..=MAX_POINTS).contains(&n), "{file}: {n}");
+            // A locus keeps a bucket's extremes of x and y, which coincide in pairs where both
+            // coordinates are monotone over the bucket (report/src/locus.rs): only its upper
+            // bound is fixed; a series against the crank angle keeps at least half its budget.
+            let least = if file.contains("locus") {
+                2
+            } else {
+                MAX_POINTS / 2
+            };
+            assert!((least..=MAX_POINTS).contains(&n), "{file}: {n}");
         }
     }
     let doc = roxmltree::Document::parse(&plots["torque_total.svg"]).unwrap();

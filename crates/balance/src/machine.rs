@@ -31,6 +31,10 @@ pub const MAX_ORDER: usize = 4;
 /// What a case says about its machine's balance (issue 24's `[layout]` and `[balance]`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct MachineBalance {
+    /// The layout's kind as case files name it (`[layout] kind`: "inline", "vee", "boxer",
+    /// "radial", "custom"), for the outputs to say what machine they are of; "inline" for one
+    /// cylinder without a `[layout]`.
+    pub kind: &'static str,
     /// The cylinders on the crankshaft.
     pub layout: Layout,
     /// Each cylinder's firing delay after cylinder 1, rad of crank angle (0 for cylinder 1): the
@@ -50,6 +54,7 @@ impl Default for MachineBalance {
     /// One cylinder, no balancing device: every case before issue 24.
     fn default() -> Self {
         Self {
+            kind: "inline",
             layout: Layout::single(),
             firing_delay: vec![0.0],
             counterweight: None,

@@ -382,6 +382,23 @@ pub fn run_case(case: &Case, dir: Option<&Path>) -> Result<Vec<MechanismResult>,
     Ok(trains.into_iter().map(|(r, _)| r).collect())
 }
 
+/// A deliberate panic, for tests of what catches one (built with the feature `test-hooks`
+/// only, which no user build enables: python/Cargo.toml's `test-hooks`, .ci/run's wheel).
+#[cfg(feature = "test-hooks")]
+pub mod test_hooks {
+    use cardan_case::case::Case;
+
+    /// The case name that makes a run panic inside a crank train (a rayon worker).
+    pub const TEST_PANIC_CASE: &str = "cardan-test-hook-panic";
+
+    /// Panics if `case` is named [`TEST_PANIC_CASE`].
+    pub(crate) fn panic_if_asked(case: &Case) {
+        if case.name == TEST_PANIC_CASE {
+            panic!("a deliberate panic of the test hook (feature test-hooks)");
+        }
+    }
+}
+
 /// [`run_case`], each crank train's per-step rows where `to` says, with its [`TrainRows`].
 pub(crate) fn run_trains(
     case: &Case,
@@ -398,6 +415,8 @@ pub(crate) fn run_trains(
     let results: Vec<Result<(MechanismResult, TrainRows), String>> = trains
         .par_iter()
         .map(|(m, setup, shift, label)| {
+            #[cfg(feature = "test-hooks")]
+            test_hooks::panic_if_asked(case);
             let (summary, warnings, rows) =
                 run_mechanism(case, m.as_ref(), setup, *shift, label, to).map_err(|e| {
                     format!(

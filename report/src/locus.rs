@@ -1,0 +1,338 @@
+//! The locus of a planar vector over the run: one column against another at the same rows (the
+//! shaking force's F_y against its F_x, issue 24's polar plot), thinned while it is made
+//! ([`Locus`]) and drawn on equal axes through the origin ([`locus_chart`]).
+//!
+//! A locus is a path, not a function of the crank angle: its points are kept in row order, so
+//! that the polyline follows the vector's tip. Of a run of more rows than the budget it keeps
+//! the first and the last row and, per bucket of consecutive rows, the rows of the smallest and
+//! largest x and y (in their order): the extent of the path in both directions survives, as the
+//! envelope keeps a series' peaks (`envelope.rs`); the buckets are as the envelope's, a
+//! function of the rows announced, so a run and its CSV read back draw the same points.
+
+use crate::svg::{
+    attr_num, c, esc, legend_layout, legend_lines, nice_range, open_svg, pretty_unit_prefixed,
+    push_coord, tick_label, Series, LEFT, PALETTE, PLOT_HEIGHT, TOP,
+};
+use std::fmt::Write as _;
+
+/// The running thinning of a locus (module note).
+#[derive(Debug, Clone)]
+pub struct Locus {
+    /// Rows announced; buckets (0: every point kept) and the row where the current one ends.
+    rows: usize,
+    buckets: usize,
+    bucket: usize,
+    bucket_end: usize,
+    /// The next row's index.
+    row: usize,
+    /// The current bucket's points: (row, x, y) of the smallest x, largest x, smallest y,
+    /// largest y.
+    extremes: [Option<(usize, f64, f64)>; 4],
+    /// The last finite point so far, and the row of the last point kept.
+    last: Option<(usize, f64, f64)>,
+    kept_row: Option<usize>,
+    x: Vec<f64>,
+    y: Vec<f64>,
+}
+
+impl Locus {
+    /// A locus of `rows` rows keeping at most `budget` points (at least 6: the two ends and one
+    /// bucket's four extremes).
+    pub fn new(rows: usize, budget: usize) -> Self {
+        let budget = budget.max(6);
+        let buckets = if rows <= budget { 0 } else { (budget - 2) / 4 };
+        Self {
+            rows,
+            buckets,
+            bucket: 0,
+            bucket_end: rows.checked_div(buckets).unwrap_or(usize::MAX),
+            row: 0,
+            extremes: [None; 4],
+            last: None,
+            kept_row: None,
+            x: Vec::with_capacity(rows.min(budget)),
+            y: Vec::with_capacity(rows.min(budget)),
+        }
+    }
+
+    fn keep(&mut self, (row, x, y): (usize, f64, f64)) {
+        if self.kept_row.is_none_or(|k| k < row) {
+            self.kept_row = Some(row);
+            self.x.push(x);
+            self.y.push(y);
+        }
+    }
+
+    /// Keeps the current bucket's extremes in row order.
+    fn close_bucket(&mut self) {
+        let mut points: Vec<(usize, f64, f64)> =
+            self.extremes.iter_mut().filter_map(Option::take).collect();
+        points.sort_by_key(|p| p.0);
+        for p in points {
+            self.keep(p);
+        }
+    }
+
+    /// Takes the next row's point (x, y); a point with a NaN or infinite part is a gap.
+    pub fn push(&mut self, x: f64, y: f64) {
+        let row = self.row;
+        self.row += 1;
+        if !(x.is_finite() && y.is_finite()) {
+            return;
+        }
+        let point = (row, x, y);
+        if self.buckets == 0 {
+            self.keep(point);
+            return;
+        }
+        while row >= self.bucket_end && self.bucket + 1 < self.buckets {
+            self.close_bucket();
+            self.bucket += 1;
+            self.bucket_end = (self.bucket + 1) * self.rows / self.buckets;
+        }
+        if self.last.is_none() {
+            self.keep(point);
+        }
+        self.last = Some(point);
+        // Strict comparisons: the first row of an extreme value.
+        let [lo_x, hi_x, lo_y, hi_y] = &mut self.extremes;
+        if lo_x.is_none_or(|p| x < p.1) {
+            *lo_x = Some(point);
+        }
+        if hi_x.is_none_or(|p| x > p.1) {
+            *hi_x = Some(point);
+        }
+        if lo_y.is_none_or(|p| y < p.2) {
+            *lo_y = Some(point);
+        }
+        if hi_y.is_none_or(|p| y > p.2) {
+            *hi_y = Some(point);
+        }
+    }
+
+    /// Points held so far (never more than the budget).
+    #[cfg(test)]
+    pub fn len(&self) -> usize {
+        self.x.len()
+    }
+
+    /// The kept points in row order: (x, y).
+    pub fn finish(mut self) -> (Vec<f64>, Vec<f64>) {
+        self.close_bucket();
+        if let Some(last) = self.last {
+            self.keep(last);
+        }
+        (self.x, self.y)
+    }
+}
+
+/// A locus chart: every series' y against its x on equal axes.
+#[derive(Debug, Clone, Default)]
+pub struct LocusChart {
+    pub title: String,
+    /// The axes' titles (quantity names; the unit with its prefix is appended).
+    pub x_label: String,
+    pub y_label: String,
+    /// SI unit of both axes.
+    pub unit: String,
+    /// Each series' `x` and `y` are the locus's (already thinned: [`Locus`]); `source` names
+    /// its y column (`file:column`).
+    pub series: Vec<Series>,
+    /// Per series, the column of its x (in the file of its `source`).
+    pub x_columns: Vec<String>,
+}
+
+/// The locus chart as an SVG document: a square plot, both axes over the same range
+/// symmetric about 0 (lengths and angles true, the origin at the centre), the axes through the
+/// origin, each series a polyline from its first row (marked with a dot) to its last. The plot
+/// group and series carry the line chart's data attributes (`svg.rs`; `data-source` names the
+/// y column), and each series its x column in `data-x-column`.
+pub fn locus_chart(chart: &LocusChart) -> String {
+    let reach = chart
+        .series
+        .iter()
+        .flat_map(|s| s.x.iter().chain(&s.y))
+        .filter(|v| v.is_finite())
+        .fold(0.0_f64, |m, v| m.max(v.abs()));
+    let (lo, hi, step) = nice_range(-reach, reach, 6.0);
+    let side = PLOT_HEIGHT;
+    let (scale, pre) = crate::svg::prefix(lo.abs().max(hi.abs()), &chart.unit);
+    let px = |v: f64| LEFT + (v - lo) / (hi - lo) * side;
+    let py = |v: f64| TOP + (hi - v) / (hi - lo) * side;
+    let labels: Vec<String> = chart.series.iter().map(|s| s.label.clone()).collect();
+    let legend_top = TOP + side + 50.0;
+    let (legend, legend_h) = legend_layout(&labels, legend_top);
+    let height = legend_top + legend_h + 6.0;
+    let mut o = String::with_capacity(16 * 1024);
+    open_svg(&mut o, height);
+    let _ = writeln!(o, "<title>{}</title>", esc(&chart.title));
+    let _ = writeln!(o, "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>");
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>",
+        c(LEFT),
+        esc(&chart.title)
+    );
+    let _ = writeln!(
+        o,
+        "<g class=\"plot\" data-area=\"{} {} {} {}\" data-x-min=\"{}\" data-x-max=\"{}\" data-y-min=\"{}\" data-y-max=\"{}\">",
+        c(LEFT),
+        c(TOP),
+        c(side),
+        c(side),
+        attr_num(lo),
+        attr_num(hi),
+        attr_num(lo),
+        attr_num(hi)
+    );
+    let _ = writeln!(
+        o,
+        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>",
+        c(LEFT),
+        c(TOP),
+        c(side),
+        c(side)
+    );
+    let ticks = ((hi - lo) / step).round() as usize;
+    for k in 0..=ticks {
+        let v = lo + k as f64 * step;
+        let label = tick_label(v / scale, step / scale);
+        let _ = writeln!(
+            o,
+            "<line x1=\"{}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{}\" text-anchor=\"end\">{label}</text>",
+            c(LEFT),
+            c(LEFT + side),
+            c(LEFT - 6.0),
+            c(py(v) + 4.0),
+            y = c(py(v))
+        );
+        let _ = writeln!(
+            o,
+            "<line x1=\"{x}\" y1=\"{}\" x2=\"{x}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x}\" y=\"{}\" text-anchor=\"middle\">{label}</text>",
+            c(TOP),
+            c(TOP + side),
+            c(TOP + side + 16.0),
+            x = c(px(v))
+        );
+    }
+    let _ = writeln!(
+        o,
+        "<line class=\"zero\" x1=\"{}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"#000\" stroke-width=\"1.2\"/><line class=\"zero\" x1=\"{x}\" y1=\"{}\" x2=\"{x}\" y2=\"{}\" stroke=\"#000\" stroke-width=\"1.2\"/>",
+        c(LEFT),
+        c(LEFT + side),
+        c(TOP),
+        c(TOP + side),
+        y = c(py(0.0)),
+        x = c(px(0.0))
+    );
+    for (k, s) in chart.series.iter().enumerate() {
+        let colour = PALETTE[s.colour % PALETTE.len()];
+        let mut points = String::with_capacity(s.x.len() * 14);
+        let mut n = 0;
+        for (a, b) in s.x.iter().zip(&s.y) {
+            if a.is_finite() && b.is_finite() {
+                push_coord(&mut points, px(*a));
+                points.push(',');
+                push_coord(&mut points, py(*b));
+                points.push(' ');
+                n += 1;
+            }
+        }
+        points.pop();
+        let x_column = chart.x_columns.get(k).map_or("", String::as_str);
+        let _ = writeln!(
+            o,
+            "<polyline class=\"series\" data-label=\"{}\" data-source=\"{}\" data-x-column=\"{}\" data-n=\"{n}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.6\" points=\"{points}\"/>",
+            esc(&s.label),
+            esc(&s.source),
+            esc(x_column),
+        );
+        if let Some((a, b)) =
+            s.x.iter()
+                .zip(&s.y)
+                .find(|(a, b)| a.is_finite() && b.is_finite())
+        {
+            let _ = writeln!(
+                o,
+                "<circle class=\"start\" cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{colour}\"/>",
+                c(px(*a)),
+                c(py(*b))
+            );
+        }
+    }
+    o.push_str("</g>\n");
+    let unit = pretty_unit_prefixed(pre, &chart.unit);
+    let title = |label: &str| {
+        if unit.is_empty() {
+            label.to_string()
+        } else {
+            format!("{label}, {unit}")
+        }
+    };
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
+        c(LEFT + side / 2.0),
+        c(TOP + side + 36.0),
+        esc(&title(&chart.x_label))
+    );
+    let _ = writeln!(
+        o,
+        "<text transform=\"translate(16 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
+        c(TOP + side / 2.0),
+        esc(&title(&chart.y_label))
+    );
+    legend_lines(&mut o, &chart.series, &legend);
+    o.push_str("</g>\n</svg>\n");
+    o
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn thin(x: &[f64], y: &[f64], budget: usize) -> (Vec<f64>, Vec<f64>) {
+        let mut l = Locus::new(x.len(), budget);
+        for (a, b) in x.iter().zip(y) {
+            l.push(*a, *b);
+            assert!(l.len() <= budget);
+        }
+        l.finish()
+    }
+
+    /// A locus keeps every point under its budget; over it, at most the budget, the ends, and
+    /// the extremes of both coordinates, each a point of the path at its own row (x and y
+    /// from the same row), in row order.
+    #[test]
+    fn a_locus_keeps_the_ends_and_the_extremes_of_both_coordinates() {
+        for n in [3usize, 1000, 1001, 7201, 100_003] {
+            let t: Vec<f64> = (0..n).map(|k| k as f64 * 1e-3).collect();
+            let x: Vec<f64> = t.iter().map(|t| (t * 3.1).cos() * (1.0 + t)).collect();
+            let y: Vec<f64> = t
+                .iter()
+                .map(|t| (t * 3.1).sin() + 0.3 * (t * 11.0).sin())
+                .collect();
+            let (tx, ty) = thin(&x, &y, 1000);
+            assert!(tx.len() <= 1000);
+            if n <= 1000 {
+                assert_eq!((tx.clone(), ty.clone()), (x.clone(), y.clone()));
+            } else {
+                assert!(tx.len() >= 500, "{n}: {}", tx.len());
+            }
+            assert_eq!((tx[0], ty[0]), (x[0], y[0]));
+            assert_eq!((tx[tx.len() - 1], ty[ty.len() - 1]), (x[n - 1], y[n - 1]));
+            let max = |v: &[f64]| v.iter().cloned().fold(f64::MIN, f64::max);
+            let min = |v: &[f64]| v.iter().cloned().fold(f64::MAX, f64::min);
+            assert_eq!((max(&tx), min(&tx)), (max(&x), min(&x)), "{n}: x extremes");
+            assert_eq!((max(&ty), min(&ty)), (max(&y), min(&y)), "{n}: y extremes");
+            // Each kept point is a row of the path, and the rows are in order.
+            let mut from = 0;
+            for (a, b) in tx.iter().zip(&ty) {
+                let k = (from..n)
+                    .find(|&k| x[k] == *a && y[k] == *b)
+                    .expect("a row");
+                from = k + 1;
+            }
+        }
+    }
+}
