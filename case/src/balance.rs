@@ -22,7 +22,7 @@ pub struct BalanceTable {
     /// A counterweight on the crank of every cylinder balancing all its rotating mass and
     /// this fraction of its reciprocating mass (0 to 1; 1 = all of the first order along the
     /// cylinder); left out: no counterweight (today's balanced crankshaft, the rod's rotating
-    /// part unbalanced).
+    /// part unbalanced). It loads the main bearing with its m·ω², turning with the crank.
     pub counterweight: Option<Quantity<crate::quantity::Number>>,
     /// "none" (default) or "lanchester": two shafts at twice the crank speed cancelling the
     /// machine's second-order shaking force.

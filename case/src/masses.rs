@@ -34,8 +34,8 @@ pub struct MassTable {
     pub wheel_mass: Option<NonNegative<Mass>>,
     /// The crank's own unbalance m·e (crank pin and webs, without counterweights), kg·m,
     /// towards the crank pin; default 0: a balanced crankshaft. It shakes the frame (the
-    /// shaking metrics; `[balance]` sizes the counterweights with it); the joint loads take the
-    /// crankshaft as balanced.
+    /// shaking metrics; `[balance]` sizes the counterweights with it) and loads the main
+    /// bearing (its m·ω² turning with the crank), hence the main bearing's friction.
     pub crank_unbalance: Option<NonNegative<MassRadius>>,
     /// The rod's material for the estimation rules; default "steel".
     pub rod_material: Option<RodMaterial>,

@@ -15,7 +15,7 @@ use crate::counterweight::{
 };
 use crate::layout::{Layout, MachineOrders, MachineShaking};
 use crate::shaking::{shaking, Shaking};
-use cardan_mechanism::{CrankState, Mechanism, State};
+use cardan_mechanism::{CrankState, Mechanism, State, C};
 use std::sync::Arc;
 
 /// Steps of the revolution over which the orders are taken: orders up to 6 are asked for, and
@@ -74,7 +74,7 @@ impl MachineBalance {
     /// formed with it.
     pub fn prepare(&self, mechanism: Arc<dyn Mechanism>) -> Result<PreparedBalance, String> {
         let m = mechanism.as_ref();
-        let own = self.cylinder_rotors(m)?;
+        let (own, carried) = self.cylinder_rotors(m)?;
         let mut rotors: Vec<Rotor> = (0..self.layout.cylinders.len())
             .flat_map(|i| own.iter().map(move |r| (i, r)))
             .map(|(i, r)| self.layout.place(i, r))
@@ -87,24 +87,29 @@ impl MachineBalance {
             mechanism,
             layout: self.layout.clone(),
             rotors,
+            carried,
         })
     }
 
     /// One cylinder's rotors in its own frame: the crank's own unbalance, then its
-    /// counterweight or the cardan pair.
-    fn cylinder_rotors(&self, m: &dyn Mechanism) -> Result<Vec<Rotor>, String> {
+    /// counterweight or the cardan pair; and the Σ m·ρ of those the crankshaft carries alone
+    /// ([`PreparedBalance::crank_masses`]).
+    fn cylinder_rotors(&self, m: &dyn Mechanism) -> Result<(Vec<Rotor>, C), String> {
         let unbalance = m.masses().crank_unbalance;
         let mut own = Vec::new();
         if unbalance != 0.0 {
             own.push(Rotor::crank_unbalance(unbalance));
         }
+        let mut carried = C::new(unbalance, 0.0);
         let first = |own: &[Rotor]| Layout::single().orders(m, own, 1.0, ORDER_STEPS, 1).force[1];
         if let Some(fraction) = self.counterweight {
             if self.cardan_counterweights {
                 return Err("balance.counterweight: cannot be combined with cardan_counterweights = true (the pair already cancels the whole first order)".into());
             }
             let masses = FirstOrderMasses::from_first_order(&first(&own), 1.0);
-            own.push(crank_counterweight(&masses, fraction, 0.0));
+            let counterweight = crank_counterweight(&masses, fraction, 0.0);
+            carried += counterweight.mass_radius;
+            own.push(counterweight);
         }
         if self.cardan_counterweights {
             if !turns_backwards(m) {
@@ -127,7 +132,7 @@ impl MachineBalance {
             let pair = CardanCounterweights::for_masses(&masses, crank);
             own.extend(pair.rotors(&masses));
         }
-        Ok(own)
+        Ok((own, carried))
     }
 }
 
@@ -154,6 +159,8 @@ pub struct PreparedBalance {
     layout: Layout,
     /// Every rotor of the machine, in the machine frame.
     rotors: Vec<Rotor>,
+    /// [`PreparedBalance::crank_masses`].
+    carried: C,
 }
 
 impl PreparedBalance {
@@ -165,6 +172,24 @@ impl PreparedBalance {
     /// The rotors, in the machine frame.
     pub fn rotors(&self) -> &[Rotor] {
         &self.rotors
+    }
+
+    /// Σ m·ρ (kg·m, complex: towards where the masses are at θ = 0, in a cylinder's own frame)
+    /// of the masses each cylinder's crankshaft carries besides the mechanism's bodies and
+    /// alone: the crank's own unbalance and its counterweight (`[balance] counterweight`).
+    /// They turn with the crank about the main axis, so only the main bearing holds them: its
+    /// reaction gains their m·a (`cardan_dynamics::Inertial`). The cardan pair is not among
+    /// them: its wheel's counterweight loads the wheel, whose pin and mesh reactions only the
+    /// mechanism's own kinetostatics could share out ([`PreparedBalance::pair_outside_joints`]).
+    pub fn crank_masses(&self) -> C {
+        self.carried
+    }
+
+    /// Whether the machine has a balancing device that its joint loads leave out (the cardan
+    /// counterweight pair: [`PreparedBalance::crank_masses`]). Lanchester shafts run in
+    /// bearings of their own, not the mechanism's.
+    pub fn pair_outside_joints(&self) -> bool {
+        self.rotors.iter().any(|r| r.order == -1)
     }
 
     /// The machine's shaking at `crank`, cylinder 1's own shaking being `first` where its

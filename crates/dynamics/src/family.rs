@@ -9,7 +9,9 @@
 //! code.
 
 use crate::planar;
-use cardan_mechanism::{Column, Loads, LoadsBlock, Mechanism, State, StateBlock};
+use cardan_mechanism::{
+    Column, JointKind, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, C,
+};
 
 /// Which path computes the loads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -80,11 +82,72 @@ pub trait LoadFamily: Sync {
         before: &LoadsBlock,
         out: &mut LoadsBlock,
     );
+
+    /// Adds to `out` the loads this family puts on the joints from outside the mechanism's
+    /// topology (the crankshaft's extra masses of [`Inertial`]), which superpose on any joint
+    /// and so are added again to a total solved from the families together; its
+    /// [`LoadFamily::loads`] includes them.
+    fn add_carried(&self, _topology: &Topology, _block: &StateBlock, _out: &mut LoadsBlock) {}
 }
 
-/// The loads of the bodies' inertia (d'Alembert), with no force on the pistons (Karhula A5.2.1).
+/// The loads of the bodies' inertia (d'Alembert), with no force on the pistons (Karhula A5.2.1),
+/// and of the masses the crankshaft carries outside the mechanism's bodies.
 #[derive(Debug, Clone, Copy, Default)]
-pub struct Inertial(pub Solver);
+pub struct Inertial {
+    pub solver: Solver,
+    /// Σ m·ρ of the masses the crankshaft carries besides the mechanism's bodies (its own
+    /// unbalance, its counterweight: `cardan_balance::PreparedBalance::crank_masses`), kg·m,
+    /// complex: towards where they are at θ = 0; 0 for a balanced crankshaft, as Karhula's.
+    pub crank_masses: C,
+}
+
+impl Inertial {
+    /// The bodies' inertia through `solver`, on a balanced crankshaft.
+    pub fn new(solver: Solver) -> Self {
+        Self {
+            solver,
+            crank_masses: C::new(0.0, 0.0),
+        }
+    }
+
+    /// The same with the crankshaft carrying `mass_radius` (kg·m) besides the mechanism's
+    /// bodies ([`Inertial::crank_masses`]).
+    pub fn carrying(self, mass_radius: C) -> Self {
+        Self {
+            crank_masses: mass_radius,
+            ..self
+        }
+    }
+}
+
+/// Adds to the main bearing's reaction (the crankshaft's pin on the frame) the m·a of masses
+/// `u` (kg·m, complex, towards where they are at θ = 0) turning with the crank about the main
+/// axis, at the steps of `block`. A mass m at ρ·e^{i(θ+γ)} has m·a = u·(iα − ω²)·e^{iθ} with
+/// u = m·ρ·e^{iγ} (the rotor's shaking force −m·a, `cardan_balance::Rotor::force`, with the
+/// sign turned): the frame's reaction supplies it, and no other joint sees it, because the
+/// masses ride on the crankshaft alone, whose only other joints carry what the mechanism's
+/// bodies do. Their torque m·ρ²·α needs their polar moment, which a mass·radius does not give:
+/// it belongs to the crankshaft's inertia (`[masses] crank_inertia`), and the drive torque
+/// is left as it is.
+fn add_crank_masses(topology: &Topology, u: C, block: &StateBlock, out: &mut LoadsBlock) {
+    if u == C::new(0.0, 0.0) {
+        return;
+    }
+    let main = topology.joints.iter().position(|j| {
+        j.body == topology.crankshaft
+            && j.other.is_none()
+            && matches!(j.kind, JointKind::Revolute(_))
+    });
+    let Some(main) = main else { return };
+    let c = &block.crank;
+    let joint = &mut out.joints[main];
+    for i in 0..block.len {
+        let (w2, a) = (c.speed[i] * c.speed[i], c.acceleration[i]);
+        let z = u * C::new(-w2, a) * C::new(c.cos[i], c.sin[i]);
+        joint.fx[i] += z.re;
+        joint.fy[i] += z.im;
+    }
+}
 
 impl LoadFamily for Inertial {
     fn name(&self) -> &'static str {
@@ -100,7 +163,7 @@ impl LoadFamily for Inertial {
     }
 
     fn solver(&self) -> Solver {
-        self.0
+        self.solver
     }
 
     fn loads(
@@ -111,7 +174,12 @@ impl LoadFamily for Inertial {
         _: &LoadsBlock,
         out: &mut LoadsBlock,
     ) {
-        self.0.loads(mechanism, block, true, None, out);
+        self.solver.loads(mechanism, block, true, None, out);
+        self.add_carried(mechanism.topology(), block, out);
+    }
+
+    fn add_carried(&self, topology: &Topology, block: &StateBlock, out: &mut LoadsBlock) {
+        add_crank_masses(topology, self.crank_masses, block, out);
     }
 }
 

@@ -75,6 +75,12 @@ impl MachineStage {
         })
     }
 
+    /// The machine's balance, prepared for this stage's mechanism (its crank masses load the
+    /// main bearing: [`crate::Inertial::carrying`]).
+    pub fn balance(&self) -> &PreparedBalance {
+        &self.balance
+    }
+
     fn cylinders(&self) -> usize {
         self.firing_delay.len()
     }

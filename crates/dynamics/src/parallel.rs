@@ -170,7 +170,7 @@ pub fn run_summary(
     solver: Solver,
     keep_steps: bool,
 ) -> Result<(Vec<StepRecord>, Summary), String> {
-    let inertial = Inertial(solver);
+    let inertial = Inertial::new(solver);
     let gas_family = Gas(solver);
     let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
     if gas.is_some() {

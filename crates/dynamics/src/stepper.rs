@@ -264,6 +264,9 @@ impl<'f> Loading<'f> {
             self.families[0]
                 .solver()
                 .loads(mechanism, states, self.together_inertia, f, total);
+            for family in self.families {
+                family.add_carried(mechanism.topology(), states, total);
+            }
         }
     }
 

@@ -597,7 +597,7 @@ fn run_once(
     motion: CrankMotion,
     steps: usize,
 ) -> (Vec<cardan_dynamics::StepRecord>, cardan_dynamics::Summary) {
-    let inertial = Inertial(Solver::ClosedForm);
+    let inertial = Inertial::new(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 1] = [&inertial];
     let mut budget = LossBudget::new(friction, m, BORE).unwrap();
     let mut summary = SummarySink::new(m, &["inertial"], steps + 1).with_stages(&[&budget]);

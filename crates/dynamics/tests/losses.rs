@@ -181,7 +181,7 @@ fn losses_keep_the_energy_books() {
     // they agree to the rule's error, O(h²).
     let m = thesis("slider_crank", Material::Steel);
     let motion = accelerating_pump();
-    let inertial = Inertial(Solver::ClosedForm);
+    let inertial = Inertial::new(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
     let mut budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();

@@ -429,7 +429,7 @@ fn friction_torque(m: &dyn Mechanism, budget: &mut LossBudget, c: &CrankState) -
 /// works by Simpson's rule on the grid.
 #[test]
 fn with_friction_the_torques_work_is_the_change_of_kinetic_energy() {
-    let inertial = Inertial(Solver::ClosedForm);
+    let inertial = Inertial::new(Solver::ClosedForm);
     let gas = Gas(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas];
     // Karhula's models; and his bearings alone (smooth: a bearing's load is a vector norm that

@@ -21,7 +21,7 @@ fn summary(
     steps: usize,
     threads: usize,
 ) -> Result<Summary, String> {
-    let inertial = Inertial(Solver::ClosedForm);
+    let inertial = Inertial::new(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
     let mut budget = LossBudget::new(&Friction::karhula(), m, 0.12).unwrap();
@@ -139,7 +139,7 @@ impl cardan_dynamics::Joinable for Pieces {
 fn a_long_prescribed_run_is_split_at_chunk_starts() {
     // Each piece takes the step that starts the next one too.
     let m = thesis("cardan_gear", Material::Steel);
-    let inertial = Inertial(Solver::ClosedForm);
+    let inertial = Inertial::new(Solver::ClosedForm);
     for (steps, pieces) in [
         (MAX_CHUNK, 0),
         (MAX_CHUNK + 1, 2),

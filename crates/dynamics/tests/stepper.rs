@@ -50,7 +50,7 @@ fn run_slider_crank(
         .find(|e| e.name == "slider_crank")
         .unwrap();
     let m = (slider.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
-    let inertial = Inertial(Solver::ClosedForm);
+    let inertial = Inertial::new(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 1] = [&inertial];
     let mut kept = Steps::default();
     let mut summary = SummarySink::new(m.as_ref(), &["inertial"], motion.len());

@@ -175,8 +175,9 @@ pub struct MassProperties {
     /// balanced crankshaft (ch. 11.2). Not among [`MassProperties::fields`] (balance's input).
     pub wheel_mass: f64,
     /// The crank's own unbalance m·e (crank pin, webs, without counterweights), kg·m, towards
-    /// the crank pin. 0 by default (a balanced crankshaft). It loads the frame as a rotor
-    /// (`cardan-balance`); the topology's crankshaft keeps its centre of gravity on the axis.
+    /// the crank pin. 0 by default (a balanced crankshaft). It shakes the frame as a rotor
+    /// (`cardan-balance`) and loads the main bearing (`cardan_dynamics::Inertial`); the
+    /// topology's crankshaft keeps its centre of gravity on the axis.
     pub crank_unbalance: f64,
 }
 

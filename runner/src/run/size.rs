@@ -27,7 +27,7 @@ pub fn estimated_bytes(case: &Case) -> Result<(u64, String), String> {
         return Ok((0, "no per-step file".into()));
     }
     let rows = cardan_report::row_count(case.steps, o.decimation) as u64;
-    let mut names = vec![Inertial(Solver::ClosedForm).name()];
+    let mut names = vec![Inertial::new(Solver::ClosedForm).name()];
     if case.gas.is_some() {
         names.push(Gas(Solver::ClosedForm).name());
     }
