@@ -492,7 +492,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         }
     };
     let balance = crate::balance::build(raw.layout.as_ref(), raw.balance.as_ref(), &invalid)?;
-    check_machine(&balance, &mechanisms, pistons, dynamics.is_some(), &invalid)?;
+    check_machine(&balance, &mechanisms, pistons, &invalid)?;
     let setups = setups(
         &mechanisms,
         geometry.bore,
@@ -544,23 +544,14 @@ fn solved_friction(setups: &[Setup], invalid: &Invalid) -> Result<(), CaseError>
 
 /// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a
 /// mechanism whose pistons move in no cylinder, a balancing device the mechanism has no body
-/// for ([`cardan_balance::MachineBalance::prepare`]), several cylinders on a solved motion.
+/// for ([`cardan_balance::MachineBalance::prepare`]).
 fn check_machine(
     machine: &cardan_balance::MachineBalance,
     mechanisms: &[Arc<dyn Mechanism>],
     pistons: u32,
-    dynamic: bool,
     invalid: &Invalid,
 ) -> Result<(), CaseError> {
     let n = machine.layout.cylinders.len();
-    if n > 1 && dynamic {
-        // The solved motion's torques are one cylinder's (machine_motion::MachineTorques).
-        return Err(invalid(
-            "layout.cylinders",
-            &n,
-            "a solved motion (motion.mode = \"dynamic\") of several cylinders is not modelled yet: run one cylinder, or a prescribed motion",
-        ));
-    }
     if n > 1 && pistons == 2 {
         return Err(invalid(
             "layout.cylinders",

@@ -415,11 +415,6 @@ fn bad_layouts_and_balance_are_refused_naming_the_field() {
             "masses.cardan_gear.wheel_mass",
         ),
         ("[masses]\nwheel_mass = 1", "masses.wheel_mass"),
-        // A solved motion's torques are one cylinder's: several are refused.
-        (
-            "mode = \"dynamic\"\n[layout]\ncylinders = 2",
-            "layout.cylinders",
-        ),
     ];
     for (tables, field) in cases {
         let e = with(tables);

@@ -83,6 +83,7 @@ golden! {
     karhula_engine_dynamic_flywheel => "karhula-engine-dynamic-flywheel",
     karhula_engine_dynamic_cs001 => "karhula-engine-dynamic-cs001",
     karhula_pump_motor_dynamic => "karhula-pump-motor-dynamic",
+    karhula_pump_inline3_motor_dynamic => "karhula-pump-inline3-motor-dynamic",
     karhula_pump_motor_runup => "karhula-pump-motor-runup",
     karhula_pump_r60_l140_a0_w3pi => "karhula-pump-r60-l140-a0-w3pi",
     karhula_r60_l140_a0_w200pi_titanium => "karhula-r60-l140-a0-w200pi-titanium",

@@ -249,3 +249,57 @@ fn friction_holds_a_weak_motor_at_rest() {
     let held = message(&pump(1, weak, "[friction]\nrings = \"karhula\""));
     assert!(held.contains("cannot start from rest"), "{held}");
 }
+
+/// Several cylinders on a solved motion: the pump as an inline three, two-stroke (a cylinder
+/// fires every 120°), run up by a motor three times the single pump's. At every step of the
+/// reported cycle the machine's drive torque that the run computes apart from the solver, at
+/// the solved state (`machine_torque_nm`: each cylinder by the general planar solve at its own
+/// crank angle, speed, acceleration and gas phase, `cardan_dynamics::MachineStage`), and the
+/// flywheel's J_f·α meet the motor's torque: the solver's Σ J*_i, Σ dJ*_i/dθ and Σ gas lever of
+/// the cylinders (`machine_motion::Acceleration`) are the machine's, to 1e-9 of the torques.
+/// Three cylinders 120° apart even out the pump's torque: their speed fluctuates less than one
+/// cylinder's under a third of the motor.
+#[test]
+fn several_cylinders_are_solved_as_one_machine() {
+    let motor = "torque = \"670.2 N*m\"\ntorque_per_speed = -3.5553";
+    let layout = "[layout]\nkind = \"inline\"\ncylinders = 3\ncycle = \"two_stroke\"";
+    let text = pump(3, motor, layout);
+    let run =
+        cardan_runner::memory::run_in_memory(&case(&text), true).unwrap_or_else(|e| panic!("{e}"));
+    let single = results(&pump(3, MOTOR, ""));
+    for ((r, steps), one) in run.results.iter().zip(&run.steps).zip(&single) {
+        let column = |name: &str| steps.get(name).unwrap_or_else(|| panic!("no {name}"));
+        let (w, a) = (
+            column("crank_speed_rad_s"),
+            column("crank_acceleration_rad_s2"),
+        );
+        let machine = column("machine_torque_nm");
+        let cylinder = column("total_torque_nm");
+        let mut differs = 0.0f64;
+        for k in 0..w.len() {
+            let motor = 670.2 - 3.5553 * w[k];
+            let got = machine[k] + 2.0 * a[k];
+            let scale = motor.abs() + machine[k].abs() + (2.0 * a[k]).abs();
+            assert!(
+                (got - motor).abs() <= 1e-9 * scale,
+                "{} step {k}: {got} against the motor's {motor} N·m",
+                r.label
+            );
+            differs = differs.max((machine[k] - cylinder[k]).abs());
+        }
+        assert!(
+            differs > 1.0,
+            "{}: the other cylinders add nothing",
+            r.label
+        );
+        let (three, alone) = (
+            metric(r, "speed_fluctuation_coefficient"),
+            metric(one, "speed_fluctuation_coefficient"),
+        );
+        println!(
+            "{}: Cs {three:.5} with three cylinders, {alone:.5} with one",
+            r.label
+        );
+        assert!(three < alone, "{}: {three} against {alone}", r.label);
+    }
+}

@@ -64,7 +64,43 @@ impl Default for MachineBalance {
     }
 }
 
+/// A cylinder of a machine as its crank train sees it: the mechanism at crank angle
+/// θ + `lead`, its gas cycle cylinder 1's `firing_delay` later (θ being the crank angle of
+/// cylinder 1's train, whatever cylinder 1's own throw and axis).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Phase {
+    /// Its crank angle ψ_i ahead of cylinder 1's, (φ_i − β_i) − (φ_1 − β_1), rad
+    /// ([`Layout::cylinder_crank`]).
+    pub lead: f64,
+    /// Its firing delay after cylinder 1, rad ([`MachineBalance::firing_delay`]).
+    pub firing_delay: f64,
+}
+
+impl Phase {
+    /// Cylinder 1 of its own machine (or the one cylinder).
+    pub const FIRST: Phase = Phase {
+        lead: 0.0,
+        firing_delay: 0.0,
+    };
+}
+
 impl MachineBalance {
+    /// Every cylinder's [`Phase`], cylinder 1's first (lead and delay 0).
+    pub fn phases(&self) -> Vec<Phase> {
+        let own = |c: &crate::layout::Cylinder| c.throw - c.axis_angle;
+        let first = own(&self.layout.cylinders[0]);
+        self.layout
+            .cylinders
+            .iter()
+            .zip(&self.firing_delay)
+            .enumerate()
+            .map(|(i, (c, &firing_delay))| Phase {
+                lead: if i == 0 { 0.0 } else { own(c) - first },
+                firing_delay,
+            })
+            .collect()
+    }
+
     /// Whether the machine is one cylinder in the mechanism's own frame.
     pub fn is_single(&self) -> bool {
         self.layout.cylinders.len() == 1 && is_own_frame(&self.layout, 0)

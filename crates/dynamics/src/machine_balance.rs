@@ -22,7 +22,7 @@ use crate::stage::{Handed, RunTotals, Stage, StageColumn, StageError, StageInput
 use crate::step::StepBlock;
 use crate::summary::peaks::raise;
 use crate::summary::Integral;
-use cardan_balance::{MachineBalance, PreparedBalance};
+use cardan_balance::{MachineBalance, Phase, PreparedBalance};
 use cardan_mechanism::{CrankState, Loads, Mechanism, State, StateBlock};
 use std::any::Any;
 use std::ops::Range;
@@ -43,8 +43,8 @@ pub const COLUMNS: [&str; 5] = [
 pub struct MachineStage {
     balance: Arc<PreparedBalance>,
     mechanism: Arc<dyn Mechanism>,
-    /// Each cylinder's firing delay after cylinder 1, rad.
-    firing_delay: Arc<[f64]>,
+    /// Each cylinder's crank angle and gas phase relative to cylinder 1's.
+    phases: Arc<[Phase]>,
     /// Speed of the revolution the orders are taken over, rad/s.
     order_speed: f64,
     /// Room for another cylinder's state, filled through a block of one lane (made at the
@@ -66,7 +66,7 @@ impl MachineStage {
         let t = mechanism.topology();
         Ok(Self {
             balance: Arc::new(balance),
-            firing_delay: machine.firing_delay.clone().into(),
+            phases: machine.phases().into(),
             order_speed,
             block: None,
             state: State::for_topology(t),
@@ -82,7 +82,7 @@ impl MachineStage {
     }
 
     fn cylinders(&self) -> usize {
-        self.firing_delay.len()
+        self.phases.len()
     }
 
     /// The machine's drive torque at the step `input`: cylinder 1's total, and every other
@@ -94,11 +94,9 @@ impl MachineStage {
         let mut torque = input.total.crank_torque;
         for i in 1..self.cylinders() {
             // Cylinder i relative to cylinder 1, which the run's train is (module note).
-            let layout = self.balance.layout();
-            let (c0, ci) = (&layout.cylinders[0], &layout.cylinders[i]);
-            let lead = (ci.throw - ci.axis_angle) - (c0.throw - c0.axis_angle);
+            let phase = self.phases[i];
             let at = CrankState::new(
-                crank.angle + lead,
+                crank.angle + phase.lead,
                 crank.speed,
                 crank.acceleration,
                 crank.time,
@@ -108,7 +106,7 @@ impl MachineStage {
                 .get_or_insert_with(|| Box::new(StateBlock::for_topology(t)));
             block.fill(m, &[at]);
             block.gather(0, &mut self.state);
-            let force = input.gas.map(|g| g(crank.angle - self.firing_delay[i]).1);
+            let force = input.gas.map(|g| g(crank.angle - phase.firing_delay).1);
             let forces = force.map_or(vec![], |f| vec![f; t.pistons.len()]);
             planar::loads(
                 t,

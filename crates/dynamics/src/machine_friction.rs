@@ -80,12 +80,14 @@ impl<'a> FrictionAt<'a> {
         }
     }
 
-    /// The torque the losses take from the crank at crank angle `angle` (rad), speed `speed`
-    /// (rad/s, at least [`VANISHING_SPEED`] is used) and acceleration `acceleration` (rad/s²):
-    /// Σ P_loss / ω, N·m, not negative; `Err`: why a loss cannot be computed there.
+    /// The torque the losses take from the crank at crank angle `angle` (rad) with the gas of
+    /// crank angle `gas_angle` (a cylinder of a machine: its own crank angle and its gas phase,
+    /// `machine_motion::MachineTorques::cylinders`), speed `speed` (rad/s, at least
+    /// [`VANISHING_SPEED`] is used) and acceleration `acceleration` (rad/s²): Σ P_loss / ω, N·m,
+    /// not negative; `Err`: why a loss cannot be computed there.
     pub(crate) fn torque(
         &mut self,
-        angle: f64,
+        (angle, gas_angle): (f64, f64),
         speed: f64,
         acceleration: f64,
     ) -> Result<f64, String> {
@@ -97,7 +99,7 @@ impl<'a> FrictionAt<'a> {
             .fill(self.mechanism, std::slice::from_ref(&crank));
         let (mut force, mut pressure): (Column, Option<f64>) = ([0.0; LANES], None);
         if let Some(g) = self.gas {
-            let (p, f) = g(angle);
+            let (p, f) = g(gas_angle);
             (force[0], pressure) = (f, Some(p));
         }
         let applied = self.gas.map(|_| &force);

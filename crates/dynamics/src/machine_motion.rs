@@ -29,6 +29,7 @@
 use crate::machine_friction::{FrictionAt, MotionFriction};
 use crate::reduced_inertia::ReducedInertiaOf;
 use crate::stage::GasAt;
+use cardan_balance::Phase;
 use cardan_mechanism::{CrankState, Mechanism, MotionError, MotionSource};
 use std::f64::consts::TAU;
 
@@ -92,8 +93,13 @@ impl LoadTorque {
 #[derive(Clone, Copy)]
 pub struct MachineTorques<'a> {
     pub mechanism: &'a dyn Mechanism,
-    /// The cylinder's (absolute pressure, Pa; gas force on every piston, N, towards the
-    /// crankshaft) at a crank angle.
+    /// The machine's cylinders on the one crankshaft, each the mechanism at its own crank angle
+    /// and gas phase ([`Phase::FIRST`] alone: one cylinder). Their reduced inertias, gas torques
+    /// and friction torques add: the machine's J* is Σ J*_i(θ + lead_i) (Petrescu 2015 eq. 1
+    /// over every body of the machine, each cylinder's crankshaft body its own throw's).
+    pub cylinders: &'a [Phase],
+    /// Cylinder 1's (absolute pressure, Pa; gas force on every piston, N, towards the
+    /// crankshaft) at a crank angle; cylinder i's is this at θ − its firing delay.
     pub gas: Option<GasAt<'a>>,
     pub load: &'a LoadTorque,
     /// Flywheel inertia on the crankshaft, kg·m².
@@ -147,17 +153,23 @@ impl<'a> Acceleration<'a> {
 
     /// (α, J* + J_f) at crank angle `angle` (rad) and speed `speed` (rad/s).
     pub fn at(&mut self, angle: f64, speed: f64) -> Result<(f64, f64), SolveError> {
-        let r = self.inertia.at(angle);
-        let j = r.inertia + self.torques.flywheel;
+        // Summed from zero in the cylinders' order: one cylinder's sums are its own terms, bit
+        // for bit.
+        let (mut inertia, mut derivative, mut gas) = (0.0, 0.0, 0.0);
+        for c in self.torques.cylinders {
+            let r = self.inertia.at(angle + c.lead);
+            inertia += r.inertia;
+            derivative += r.derivative;
+            if let Some(f) = self.torques.gas {
+                gas += f(angle - c.firing_delay).1 * r.piston_lever;
+            }
+        }
+        let j = inertia + self.torques.flywheel;
         if j.is_nan() || j <= 0.0 {
             return Err(SolveError::NoInertia(j, angle.to_degrees()));
         }
-        let gas = self
-            .torques
-            .gas
-            .map_or(0.0, |f| f(angle).1 * r.piston_lever);
         let load = self.torques.load.at(angle, speed);
-        let drive = load - gas - 0.5 * r.derivative * speed * speed;
+        let drive = load - gas - 0.5 * derivative * speed * speed;
         let Some(friction) = self.friction.as_mut() else {
             return Ok((drive / j, j));
         };
@@ -169,7 +181,11 @@ impl<'a> Acceleration<'a> {
         let scale = load.abs() + gas.abs() + (drive - load + gas).abs();
         let mut alpha = drive / j;
         for _ in 0..FRICTION_ITERATIONS {
-            let torque = friction.torque(angle, speed, alpha).map_err(&failed)?;
+            let mut torque = 0.0;
+            for c in self.torques.cylinders {
+                let at = (angle + c.lead, angle - c.firing_delay);
+                torque += friction.torque(at, speed, alpha).map_err(&failed)?;
+            }
             let next = (drive - torque) / j;
             if !next.is_finite() {
                 return Err(failed(format!("its torque is not finite ({torque} N·m)")));

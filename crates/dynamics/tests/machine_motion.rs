@@ -57,6 +57,7 @@ fn reduced_inertia_is_the_kinetic_energy_and_the_inertial_torque() {
     }
 }
 
+use cardan_balance::Phase;
 use cardan_dynamics::machine_motion::{
     size_flywheel, solve_cycles, LoadTorque, MachineTorques, SolvedMotion, SolvedRun, Table,
 };
@@ -104,6 +105,7 @@ fn a_free_machine_keeps_its_kinetic_energy() {
     for (name, m) in every_machine() {
         let t = MachineTorques {
             mechanism: m.as_ref(),
+            cylinders: &[Phase::FIRST],
             gas: None,
             load: &load,
             flywheel: 0.0,
@@ -150,6 +152,7 @@ fn the_scheme_converges_at_fourth_order() {
     };
     let t = MachineTorques {
         mechanism: m.as_ref(),
+        cylinders: &[Phase::FIRST],
         gas: Some(&gas_at),
         load: &load,
         flywheel: 0.02,
@@ -191,6 +194,7 @@ fn the_torques_work_is_the_change_of_kinetic_energy() {
     let flywheel = 0.05;
     let t = MachineTorques {
         mechanism: m.as_ref(),
+        cylinders: &[Phase::FIRST],
         gas: Some(&gas_at),
         load: &load,
         flywheel,
@@ -274,6 +278,7 @@ fn the_prescribed_torque_reproduces_the_prescribed_motion() {
         let gas: Option<GasAt> = m.has_cylinder().then_some(&gas_at);
         let t = MachineTorques {
             mechanism: m.as_ref(),
+            cylinders: &[Phase::FIRST],
             gas,
             load: &load,
             flywheel: 0.0,
@@ -332,6 +337,7 @@ fn the_textbook_flywheel_problem_is_reproduced() {
     };
     let t = MachineTorques {
         mechanism: m.as_ref(),
+        cylinders: &[Phase::FIRST],
         gas: None,
         load: &load,
         flywheel: 360.0,
@@ -367,6 +373,7 @@ fn a_machine_that_stops_fails_with_its_step_and_angle() {
     };
     let t = MachineTorques {
         mechanism: m.as_ref(),
+        cylinders: &[Phase::FIRST],
         gas: None,
         load: &brake,
         flywheel: 0.01,
@@ -452,6 +459,7 @@ fn with_friction_the_torques_work_is_the_change_of_kinetic_energy() {
         let flywheel = 0.05;
         let t = MachineTorques {
             mechanism: m.as_ref(),
+            cylinders: &[Phase::FIRST],
             gas: Some(&gas_at),
             load: &load,
             flywheel,

@@ -78,8 +78,10 @@ fn run_solved(
     // The solved motion: its states depend on the run's torques, so one thread takes them one
     // at a time.
     let d: &Dynamics = case.dynamics.as_ref().ok_or("not a solved motion")?;
+    let cylinders = case.balance.phases();
     let torques = MachineTorques {
         mechanism,
+        cylinders: &cylinders,
         gas,
         load: &d.load,
         flywheel: d.flywheel,
