@@ -120,6 +120,29 @@ fn run_solved(
     Ok(solved.metrics)
 }
 
+/// A train's load families: the bodies' inertia with the masses its crankshaft carries
+/// (`PreparedBalance::crank_masses`), and the gas where the case has one.
+struct TrainFamilies {
+    inertial: Inertial,
+    gas: Option<Gas>,
+}
+
+impl TrainFamilies {
+    fn of(case: &Case, setup: &Setup) -> Self {
+        let carried = setup.balance.balance().crank_masses();
+        Self {
+            inertial: Inertial::new(Solver::ClosedForm).carrying(carried),
+            gas: case.gas.is_some().then_some(Gas(Solver::ClosedForm)),
+        }
+    }
+
+    fn list(&self) -> Vec<&dyn LoadFamily> {
+        let mut families: Vec<&dyn LoadFamily> = vec![&self.inertial];
+        families.extend(self.gas.as_ref().map(|g| g as &dyn LoadFamily));
+        families
+    }
+}
+
 /// What a train's joint loads leave out of its machine's balancing devices, said beside its
 /// results: the cardan counterweight pair (`PreparedBalance::crank_masses`).
 fn joint_loads_note(setup: &Setup) -> Option<String> {
@@ -146,13 +169,8 @@ fn run_mechanism(
     label: &str,
     to: StepsTo,
 ) -> Result<(Summary, Vec<String>, TrainRows), String> {
-    let inertial =
-        Inertial::new(Solver::ClosedForm).carrying(setup.balance.balance().crank_masses());
-    let gas_family = Gas(Solver::ClosedForm);
-    let mut families: Vec<&dyn LoadFamily> = vec![&inertial];
-    if case.gas.is_some() {
-        families.push(&gas_family);
-    }
+    let own = TrainFamilies::of(case, setup);
+    let families = own.list();
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
     let mut stages = setup.stages();
     let listed: Vec<&dyn Stage> = stages.iter().map(|s| s.as_ref()).collect();
