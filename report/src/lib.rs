@@ -49,6 +49,7 @@ mod numbers;
 mod rows;
 mod svg;
 mod sweeps;
+mod thinning;
 
 pub use envelope::{ChartData, ChartRecorder, Envelope, Trace};
 pub use rows::{row_count, ChartRows, MAX_CHART_ROWS};

@@ -1,130 +1,19 @@
 //! The locus of a planar vector over the run: one column against another at the same rows (the
 //! shaking force's F_y against its F_x, issue 24's polar plot), thinned while it is made
-//! ([`Locus`]) and drawn on equal axes through the origin ([`locus_chart`]).
+//! ([`Locus`](crate::thinning::Locus)) and drawn on equal axes through the origin ([`locus_chart`]).
 //!
 //! A locus is a path, not a function of the crank angle: its points are kept in row order, so
 //! that the polyline follows the vector's tip. Of a run of more rows than the budget it keeps
 //! the first and the last row and, per bucket of consecutive rows, the rows of the smallest and
 //! largest x and y (in their order): the extent of the path in both directions survives, as the
-//! envelope keeps a series' peaks (`envelope.rs`); the buckets are as the envelope's, a
-//! function of the rows announced, so a run and its CSV read back draw the same points.
+//! envelope keeps a series' peaks; the buckets are the envelope's (`thinning.rs`, shared by
+//! both), a function of the rows announced, so a run and its CSV read back draw the same points.
 
 use crate::svg::{
     attr_num, c, esc, legend_layout, legend_lines, nice_range, open_svg, pretty_unit_prefixed,
     push_coord, tick_label, Series, LEFT, PALETTE, PLOT_HEIGHT, TOP,
 };
 use std::fmt::Write as _;
-
-/// The running thinning of a locus (module note).
-#[derive(Debug, Clone)]
-pub struct Locus {
-    /// Rows announced; buckets (0: every point kept) and the row where the current one ends.
-    rows: usize,
-    buckets: usize,
-    bucket: usize,
-    bucket_end: usize,
-    /// The next row's index.
-    row: usize,
-    /// The current bucket's points: (row, x, y) of the smallest x, largest x, smallest y,
-    /// largest y.
-    extremes: [Option<(usize, f64, f64)>; 4],
-    /// The last finite point so far, and the row of the last point kept.
-    last: Option<(usize, f64, f64)>,
-    kept_row: Option<usize>,
-    x: Vec<f64>,
-    y: Vec<f64>,
-}
-
-impl Locus {
-    /// A locus of `rows` rows keeping at most `budget` points (at least 6: the two ends and one
-    /// bucket's four extremes).
-    pub fn new(rows: usize, budget: usize) -> Self {
-        let budget = budget.max(6);
-        let buckets = if rows <= budget { 0 } else { (budget - 2) / 4 };
-        Self {
-            rows,
-            buckets,
-            bucket: 0,
-            bucket_end: rows.checked_div(buckets).unwrap_or(usize::MAX),
-            row: 0,
-            extremes: [None; 4],
-            last: None,
-            kept_row: None,
-            x: Vec::with_capacity(rows.min(budget)),
-            y: Vec::with_capacity(rows.min(budget)),
-        }
-    }
-
-    fn keep(&mut self, (row, x, y): (usize, f64, f64)) {
-        if self.kept_row.is_none_or(|k| k < row) {
-            self.kept_row = Some(row);
-            self.x.push(x);
-            self.y.push(y);
-        }
-    }
-
-    /// Keeps the current bucket's extremes in row order.
-    fn close_bucket(&mut self) {
-        let mut points: Vec<(usize, f64, f64)> =
-            self.extremes.iter_mut().filter_map(Option::take).collect();
-        points.sort_by_key(|p| p.0);
-        for p in points {
-            self.keep(p);
-        }
-    }
-
-    /// Takes the next row's point (x, y); a point with a NaN or infinite part is a gap.
-    pub fn push(&mut self, x: f64, y: f64) {
-        let row = self.row;
-        self.row += 1;
-        if !(x.is_finite() && y.is_finite()) {
-            return;
-        }
-        let point = (row, x, y);
-        if self.buckets == 0 {
-            self.keep(point);
-            return;
-        }
-        while row >= self.bucket_end && self.bucket + 1 < self.buckets {
-            self.close_bucket();
-            self.bucket += 1;
-            self.bucket_end = (self.bucket + 1) * self.rows / self.buckets;
-        }
-        if self.last.is_none() {
-            self.keep(point);
-        }
-        self.last = Some(point);
-        // Strict comparisons: the first row of an extreme value.
-        let [lo_x, hi_x, lo_y, hi_y] = &mut self.extremes;
-        if lo_x.is_none_or(|p| x < p.1) {
-            *lo_x = Some(point);
-        }
-        if hi_x.is_none_or(|p| x > p.1) {
-            *hi_x = Some(point);
-        }
-        if lo_y.is_none_or(|p| y < p.2) {
-            *lo_y = Some(point);
-        }
-        if hi_y.is_none_or(|p| y > p.2) {
-            *hi_y = Some(point);
-        }
-    }
-
-    /// Points held so far (never more than the budget).
-    #[cfg(test)]
-    pub fn len(&self) -> usize {
-        self.x.len()
-    }
-
-    /// The kept points in row order: (x, y).
-    pub fn finish(mut self) -> (Vec<f64>, Vec<f64>) {
-        self.close_bucket();
-        if let Some(last) = self.last {
-            self.keep(last);
-        }
-        (self.x, self.y)
-    }
-}
 
 /// A locus chart: every series' y against its x on equal axes.
 #[derive(Debug, Clone, Default)]
@@ -135,7 +24,7 @@ pub struct LocusChart {
     pub y_label: String,
     /// SI unit of both axes.
     pub unit: String,
-    /// Each series' `x` and `y` are the locus's (already thinned: [`Locus`]); `source` names
+    /// Each series' `x` and `y` are the locus's (already thinned: [`Locus`](crate::thinning::Locus)); `source` names
     /// its y column (`file:column`).
     pub series: Vec<Series>,
     /// Per series, the column of its x (in the file of its `source`).
@@ -289,7 +178,7 @@ pub fn locus_chart(chart: &LocusChart) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::thinning::Locus;
 
     fn thin(x: &[f64], y: &[f64], budget: usize) -> (Vec<f64>, Vec<f64>) {
         let mut l = Locus::new(x.len(), budget);
