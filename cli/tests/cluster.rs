@@ -45,6 +45,17 @@ fn run(args: &[&std::ffi::OsStr]) -> std::process::Output {
     cardan().args(args).output().unwrap()
 }
 
+/// `cardan merge SHARDS... --out OUT`.
+fn merge(shards: &[&Path], out: &Path) -> std::process::Output {
+    cardan()
+        .arg("merge")
+        .args(shards)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
 /// A run of the shipped configs killed (SIGKILL) at a random moment, then resumed, equals a
 /// single run byte for byte; the moment is in the failure message.
 #[test]
@@ -124,34 +135,17 @@ fn shards_from_the_command_line_merge_into_one_run() {
         assert!(out.status.success(), "{out:?}");
     }
     let merged = tmp.path().join("merged");
-    let out = run(&[
-        "merge".as_ref(),
-        shards[0].as_os_str(),
-        shards[1].as_os_str(),
-        "--out".as_ref(),
-        merged.as_os_str(),
-    ]);
+    let out = merge(&[&shards[0], &shards[1]], &merged);
     assert!(out.status.success(), "{out:?}");
     assert_same(&single, &merged, "merged");
-    let out = run(&[
-        "merge".as_ref(),
-        shards[0].as_os_str(),
-        "--out".as_ref(),
-        tmp.path().join("m2").as_os_str(),
-    ]);
+    let out = merge(&[&shards[0]], &tmp.path().join("m2"));
     assert_eq!(out.status.code(), Some(1), "{out:?}");
     assert!(String::from_utf8_lossy(&out.stderr).contains("2/2"));
     // A shard whose task was killed before its end (a Slurm task cancelled, timed out, on a
     // failed node: its record, written last, is missing): refused, said so, nothing written.
     std::fs::remove_file(shards[1].join("shard.json")).unwrap();
     let m3 = tmp.path().join("m3");
-    let out = run(&[
-        "merge".as_ref(),
-        shards[0].as_os_str(),
-        shards[1].as_os_str(),
-        "--out".as_ref(),
-        m3.as_os_str(),
-    ]);
+    let out = merge(&[&shards[0], &shards[1]], &m3);
     assert_eq!(out.status.code(), Some(1), "{out:?}");
     let said = String::from_utf8_lossy(&out.stderr);
     assert!(
@@ -217,13 +211,7 @@ fn a_shard_rerun_killed_before_its_end_is_refused_by_merge() {
     );
     assert!(!record.exists(), "a killed rerun left a record");
     let merged = tmp.path().join("merged");
-    let out = run(&[
-        "merge".as_ref(),
-        shards[0].as_os_str(),
-        shards[1].as_os_str(),
-        "--out".as_ref(),
-        merged.as_os_str(),
-    ]);
+    let out = merge(&[&shards[0], &shards[1]], &merged);
     assert_eq!(out.status.code(), Some(1), "{out:?}");
     let said = String::from_utf8_lossy(&out.stderr);
     assert!(said.contains("did not finish"), "{said}");
