@@ -5,7 +5,8 @@
 //! `<g class="legend">` with `data-min`/`data-max`; the contour `<path class="contour">`.
 
 use crate::svg::{
-    attr_num, c, esc, nice_range, open_svg, text_width, tick_label, PLOT_HEIGHT, TOP, WIDTH,
+    attr_num, c, chart_heading, esc, nice_range, open_svg, text_width, tick_label, PLOT_HEIGHT,
+    TOP, WIDTH,
 };
 use std::fmt::Write as _;
 
@@ -156,14 +157,7 @@ pub fn heat_map(map: &HeatMap) -> String {
     let height = TOP + plot_h + 56.0;
     let mut o = String::with_capacity(16 * 1024);
     open_svg(&mut o, height);
-    let _ = writeln!(o, "<title>{}</title>", esc(&map.title));
-    let _ = writeln!(o, "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>");
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>",
-        c(left),
-        esc(&map.title)
-    );
+    chart_heading(&mut o, &map.title, left);
     let _ = writeln!(
         o,
         "<g class=\"heatmap\" data-area=\"{} {} {} {}\" data-nx=\"{nx}\" data-ny=\"{ny}\">",

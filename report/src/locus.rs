@@ -10,8 +10,8 @@
 //! both), a function of the rows announced, so a run and its CSV read back draw the same points.
 
 use crate::svg::{
-    attr_num, c, esc, legend_layout, legend_lines, nice_range, open_svg, pretty_unit_prefixed,
-    push_coord, tick_label, Series, LEFT, PALETTE, PLOT_HEIGHT, TOP,
+    c, chart_heading, esc, legend_layout, legend_lines, nice_range, open_plot, open_svg,
+    pretty_unit_prefixed, push_coord, tick_label, Series, LEFT, PALETTE, PLOT_HEIGHT, TOP,
 };
 use std::fmt::Write as _;
 
@@ -54,26 +54,8 @@ pub fn locus_chart(chart: &LocusChart) -> String {
     let height = legend_top + legend_h + 6.0;
     let mut o = String::with_capacity(16 * 1024);
     open_svg(&mut o, height);
-    let _ = writeln!(o, "<title>{}</title>", esc(&chart.title));
-    let _ = writeln!(o, "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>");
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>",
-        c(LEFT),
-        esc(&chart.title)
-    );
-    let _ = writeln!(
-        o,
-        "<g class=\"plot\" data-area=\"{} {} {} {}\" data-x-min=\"{}\" data-x-max=\"{}\" data-y-min=\"{}\" data-y-max=\"{}\">",
-        c(LEFT),
-        c(TOP),
-        c(side),
-        c(side),
-        attr_num(lo),
-        attr_num(hi),
-        attr_num(lo),
-        attr_num(hi)
-    );
+    chart_heading(&mut o, &chart.title, LEFT);
+    open_plot(&mut o, [LEFT, TOP, side, side], (lo, hi), (lo, hi));
     let _ = writeln!(
         o,
         "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>",

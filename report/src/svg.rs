@@ -242,6 +242,40 @@ pub(super) fn open_svg(o: &mut String, height: f64) {
 }
 
 /// The line chart as an SVG document.
+/// A chart's `<title>`, white background and bold heading at `left` (px).
+pub(crate) fn chart_heading(o: &mut String, title: &str, left: f64) {
+    let _ = writeln!(o, "<title>{}</title>", esc(title));
+    let _ = writeln!(o, "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>");
+    let _ = writeln!(
+        o,
+        "<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>",
+        c(left),
+        esc(title)
+    );
+}
+
+/// Opens a chart's plot group: its area (left, top, width, height; px) and its axes' ranges,
+/// which the tests read back (`cardan_testing::chart::Axes`).
+pub(crate) fn open_plot(
+    o: &mut String,
+    area: [f64; 4],
+    (x_lo, x_hi): (f64, f64),
+    (y_lo, y_hi): (f64, f64),
+) {
+    let _ = writeln!(
+        o,
+        "<g class=\"plot\" data-area=\"{} {} {} {}\" data-x-min=\"{}\" data-x-max=\"{}\" data-y-min=\"{}\" data-y-max=\"{}\">",
+        c(area[0]),
+        c(area[1]),
+        c(area[2]),
+        c(area[3]),
+        attr_num(x_lo),
+        attr_num(x_hi),
+        attr_num(y_lo),
+        attr_num(y_hi)
+    );
+}
+
 pub fn line_chart(chart: &LineChart) -> String {
     let decimated: Vec<(Vec<f64>, Vec<f64>)> = chart
         .series
@@ -262,25 +296,12 @@ pub fn line_chart(chart: &LineChart) -> String {
 
     let mut o = String::with_capacity(16 * 1024);
     open_svg(&mut o, height);
-    let _ = writeln!(o, "<title>{}</title>", esc(&chart.title));
-    let _ = writeln!(o, "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>");
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>",
-        c(LEFT),
-        esc(&chart.title)
-    );
-    let _ = writeln!(
-        o,
-        "<g class=\"plot\" data-area=\"{} {} {} {}\" data-x-min=\"{}\" data-x-max=\"{}\" data-y-min=\"{}\" data-y-max=\"{}\">",
-        c(LEFT),
-        c(TOP),
-        c(plot_w),
-        c(PLOT_HEIGHT),
-        attr_num(x_lo),
-        attr_num(x_hi),
-        attr_num(y_lo),
-        attr_num(y_hi)
+    chart_heading(&mut o, &chart.title, LEFT);
+    open_plot(
+        &mut o,
+        [LEFT, TOP, plot_w, PLOT_HEIGHT],
+        (x_lo, x_hi),
+        (y_lo, y_hi),
     );
     let _ = writeln!(
         o,
