@@ -351,7 +351,16 @@ impl Rated {
         };
         let name = m.name;
         let failed = |e: cardan_gears::GearError| format!("gear rating of {name}: {e}");
-        let mut r = m.set.evaluate(&step).map_err(failed)?;
+        // Rating another load than the tangential one, the set's rating and Buckingham load
+        // at the tangential load would be replaced below: only its dynamic factor is taken.
+        let tangential_rating = match m.tooth_load {
+            ToothLoad::Tangential => Some(m.set.evaluate(&step).map_err(failed)?),
+            _ => None,
+        };
+        let kv = match &tangential_rating {
+            Some(r) => r.kv,
+            None => m.set.dynamic_factor(&step).map_err(failed)?,
+        };
         let at = At {
             state,
             total,
@@ -375,34 +384,36 @@ impl Rated {
         };
         // Another rated load: the rating and Buckingham's load at it (the loss stays on the
         // tangential load).
-        if m.tooth_load != ToothLoad::Tangential {
-            r.dynamic = if m.tooth_load == ToothLoad::Thesis {
-                m.set.buckingham.saturated_dynamic_load(load)
-            } else {
+        let (dynamic, rating) = match tangential_rating {
+            Some(r) => (r.dynamic, r.rating),
+            None => (
+                if m.tooth_load == ToothLoad::Thesis {
+                    m.set.buckingham.saturated_dynamic_load(load)
+                } else {
+                    m.set
+                        .buckingham
+                        .dynamic_load(load, motion.relative_speed.abs())
+                }
+                .map_err(failed)?,
                 m.set
-                    .buckingham
-                    .dynamic_load(load, motion.relative_speed.abs())
-            }
-            .map_err(failed)?;
-            r.rating = m
-                .set
-                .rating
-                .rate(load, r.kv.kv, m.set.face_width)
-                .map_err(failed)?;
-        }
+                    .rating
+                    .rate(load, kv.kv, m.set.face_width)
+                    .map_err(failed)?,
+            ),
+        };
         let (bending_stress, bending_safety) = if m.bending {
             (
-                r.rating.bending_stress[0].max(r.rating.bending_stress[1]),
-                r.rating.bending_safety[0].min(r.rating.bending_safety[1]),
+                rating.bending_stress[0].max(rating.bending_stress[1]),
+                rating.bending_safety[0].min(rating.bending_safety[1]),
             )
         } else {
             (f64::NAN, f64::NAN)
         };
         Ok(MeshRating {
             tooth_load: load,
-            dynamic_load: r.dynamic.dynamic_load,
-            contact_stress: r.rating.contact_stress[0].max(r.rating.contact_stress[1]),
-            contact_safety: r.rating.contact_safety[0].min(r.rating.contact_safety[1]),
+            dynamic_load: dynamic.dynamic_load,
+            contact_stress: rating.contact_stress[0].max(rating.contact_stress[1]),
+            contact_safety: rating.contact_safety[0].min(rating.contact_safety[1]),
             bending_stress,
             bending_safety,
             loss,

@@ -252,6 +252,24 @@ impl RollingModel {
 
     /// [`rolling_bearing_loss`] of this bearing.
     pub fn loss(&self, load: f64, relative_speed: f64, kinematic_viscosity: f64) -> RollingLoss {
+        self.loss_kept(
+            load,
+            relative_speed,
+            kinematic_viscosity,
+            &mut KeptPower::default(),
+        )
+    }
+
+    /// [`RollingModel::loss`], the viscous term's power of the speed, (νn)^(2/3), taken from
+    /// `kept` if νn has the bits of the step before (a constant joint speed), else computed
+    /// and kept there: the same bits as [`RollingModel::loss`].
+    pub fn loss_kept(
+        &self,
+        load: f64,
+        relative_speed: f64,
+        kinematic_viscosity: f64,
+        kept: &mut KeptPower,
+    ) -> RollingLoss {
         let bearing = &self.bearing;
         let [p0, p1] = self.powers;
         let f = load.abs();
@@ -264,7 +282,7 @@ impl RollingModel {
                 let (dm, c0_power, dm3) = (bearing.pitch_diameter, p0, p1);
                 let tl = load_constant * f.powf(1.55) * c0_power * dm;
                 let tv = if nun > 2000.0 {
-                    9.79e-2 * f0 * nun.powf(2.0 / 3.0) * dm3
+                    9.79e-2 * f0 * kept.pow(nun, 2.0 / 3.0) * dm3
                 } else {
                     24.1 * f0 * dm3
                 };
@@ -274,7 +292,7 @@ impl RollingModel {
                 let dm = bearing.pitch_diameter * 1e3; // mm
                 let dm3 = p0;
                 let m0 = if nun >= 2000.0 {
-                    1e-7 * c.f0 * nun.powf(2.0 / 3.0) * dm3
+                    1e-7 * c.f0 * kept.pow(nun, 2.0 / 3.0) * dm3
                 } else {
                     160e-7 * c.f0 * dm3
                 };
@@ -301,6 +319,35 @@ impl RollingModel {
             friction_torque: total,
             power: total * w,
         }
+    }
+}
+
+/// A power x^e of one exponent kept with its argument x, so that a model evaluated step by
+/// step with an argument that does not change (a joint's speed at a constant crank speed)
+/// takes it once; the bits are `powf`'s.
+#[derive(Debug, Clone, Copy)]
+pub struct KeptPower {
+    argument: f64,
+    power: f64,
+}
+
+impl Default for KeptPower {
+    /// Nothing kept (NaN's bits are never an argument's).
+    fn default() -> Self {
+        Self {
+            argument: f64::NAN,
+            power: f64::NAN,
+        }
+    }
+}
+
+impl KeptPower {
+    /// `x.powf(e)`, `e` being the same at every call.
+    pub fn pow(&mut self, x: f64, e: f64) -> f64 {
+        if self.argument.to_bits() != x.to_bits() {
+            (self.argument, self.power) = (x, x.powf(e));
+        }
+        self.power
     }
 }
 

@@ -50,5 +50,6 @@ pub use geometry::{
     cardan_module, CheckKind, CheckReport, Diameters, GearPair, GearSpec, PairSpec, Remedy, Tip,
 };
 pub use mesh_loss::{
-    mesh_loss, mesh_loss_with, LossOptions, Lubricant, MeshGeometry, MeshLoss, MeshSpeeds, Reading,
+    mesh_loss, mesh_loss_with, LossOptions, Lubricant, MeshGeometry, MeshLoss, MeshSpeeds,
+    PreparedMeshLoss, Reading,
 };
