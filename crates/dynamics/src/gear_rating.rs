@@ -12,7 +12,7 @@
 
 use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, carburized_allowables, contact_allowable_through_hardened,
-    elastic_coefficient, Enclosure, Grade, LoadDistribution, Quality,
+    elastic_coefficient, DynamicFactor, Enclosure, Grade, LoadDistribution, Quality,
 };
 use cardan_gears::agma::{GearSetRating, MemberData, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
@@ -102,6 +102,9 @@ struct Rated {
     /// The mesh loss: the case's gear-mesh model bound to this mesh (the loss budget's own), so
     /// that the rating's loss and the budget's mesh component are one figure.
     loss: Box<dyn Loss>,
+    /// The dynamic factor at the last step's pitch-line velocity (its bits; `None` before the
+    /// first), kept while the speed does not change.
+    kv: Option<(u64, DynamicFactor)>,
 }
 
 impl GearRatings {
@@ -246,6 +249,7 @@ impl GearRatings {
                     * pitch_radius,
                 axis,
                 loss,
+                kv: None,
             });
         }
         Ok(Self { meshes })
@@ -359,7 +363,21 @@ impl Rated {
         };
         let kv = match &tangential_rating {
             Some(r) => r.kv,
-            None => m.set.dynamic_factor(&step).map_err(failed)?,
+            None => {
+                let bits = step.pitch_line_velocity.abs().to_bits();
+                match m.kv {
+                    // The same checks of the step, then the factor of the same speed.
+                    Some((kept, kv)) if kept == bits => {
+                        m.set.check_step(&step).map_err(failed)?;
+                        kv
+                    }
+                    _ => {
+                        let kv = m.set.dynamic_factor(&step).map_err(failed)?;
+                        m.kv = Some((bits, kv));
+                        kv
+                    }
+                }
+            }
         };
         let at = At {
             state,

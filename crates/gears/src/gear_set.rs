@@ -82,13 +82,19 @@ impl GearSet {
     /// The AGMA dynamic factor of [`GearSet::evaluate`] at `step`, with its checks of the
     /// step, alone: for a caller that rates another load than the step's tangential load.
     pub fn dynamic_factor(&self, step: &MeshStep) -> Result<DynamicFactor, GearError> {
+        self.check_step(step)?;
+        dynamic_factor(self.quality, step.pitch_line_velocity.abs())
+    }
+
+    /// The checks of [`GearSet::evaluate`] before the dynamic factor: the face width and the
+    /// step's load.
+    pub fn check_step(&self, step: &MeshStep) -> Result<(), GearError> {
         positive("face_width", self.face_width)?;
         require(
             step.tangential_load.is_finite(),
             "tangential_load",
             "must be finite",
             step.tangential_load,
-        )?;
-        dynamic_factor(self.quality, step.pitch_line_velocity.abs())
+        )
     }
 }
