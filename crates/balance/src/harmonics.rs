@@ -89,15 +89,20 @@ pub fn orders_on(samples: &[C], start: f64, max_order: usize, table: &[C]) -> Ve
     (0..=max_order)
         .map(|k| {
             let (mut forward, mut backward) = (C::new(0.0, 0.0), C::new(0.0, 0.0));
-            for (j, v) in samples.iter().enumerate() {
+            // m = (k·j) mod N, stepped by k (k < N/2) without a division per sample.
+            let mut m = 0;
+            for v in samples {
                 // e^{ikθ_j} from k·θ_j reduced to one turn: exact to an ulp of 2π.
-                let m = (k * j) % n;
                 let e = match table.get(m) {
                     Some(&e) => e,
                     None => C::from_polar(1.0, m as f64 * step + k as f64 * start),
                 };
                 forward += v * e.conj();
                 backward += v * e;
+                m += k;
+                if m >= n {
+                    m -= n;
+                }
             }
             let (forward, backward) = (forward / n as f64, backward / n as f64);
             if k == 0 {

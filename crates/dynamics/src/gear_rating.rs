@@ -14,7 +14,7 @@ use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, carburized_allowables, contact_allowable_through_hardened,
     elastic_coefficient, DynamicFactor, Enclosure, Grade, LoadDistribution, Quality,
 };
-use cardan_gears::agma::{GearSetRating, MemberData, SizeFactor};
+use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
 use cardan_gears::mesh_loss::Lubricant;
 use cardan_gears::{pitting_geometry_factor, GearSet, IForm, MeshStep, ShiftCase};
@@ -105,6 +105,8 @@ struct Rated {
     /// The dynamic factor at the last step's pitch-line velocity (its bits; `None` before the
     /// first), kept while the speed does not change.
     kv: Option<(u64, DynamicFactor)>,
+    /// The set's rating at its face width, prepared once.
+    rating: PreparedRating,
 }
 
 impl GearRatings {
@@ -233,6 +235,7 @@ impl GearRatings {
                 loss_reading: None,
             };
             let loss = mesh_loss(spec, mechanism, friction, k)?;
+            let prepared = PreparedRating::new(&set.rating, set.face_width);
             meshes.push(Rated {
                 joint: k,
                 body: j.body,
@@ -250,6 +253,7 @@ impl GearRatings {
                 axis,
                 loss,
                 kv: None,
+                rating: prepared,
             });
         }
         Ok(Self { meshes })
@@ -413,10 +417,7 @@ impl Rated {
                         .dynamic_load(load, motion.relative_speed.abs())
                 }
                 .map_err(failed)?,
-                m.set
-                    .rating
-                    .rate(load, kv.kv, m.set.face_width)
-                    .map_err(failed)?,
+                m.rating.rate(load, kv.kv).map_err(failed)?,
             ),
         };
         let (bending_stress, bending_safety) = if m.bending {
