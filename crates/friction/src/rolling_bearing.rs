@@ -364,4 +364,34 @@ mod tests {
         assert!((s.crank_pin.pitch_diameter - 0.045).abs() < 1e-15);
         assert!((s.main.static_load_rating - 60_000.0).abs() < 1e-9);
     }
+
+    /// The viscous term's power kept from step to step gives `loss`'s bits whether the speed
+    /// stays, changes or comes back, in every reading.
+    #[test]
+    fn a_kept_power_gives_the_same_bits() {
+        let bearing = RollingBearing::new(0.045, 45_000.0).unwrap();
+        for reading in [
+            RollingReading::Karhula {
+                f0: 2.0,
+                load_constant: KARHULA_LOAD_CONSTANT,
+            },
+            RollingReading::Palmgren(PalmgrenCoefficients::DEEP_GROOVE_BALL),
+        ] {
+            let model = RollingModel::new(bearing, reading);
+            let mut kept = KeptPower::default();
+            for (load, speed) in [
+                (1000.0, 300.0),
+                (2000.0, 300.0),
+                (2000.0, -300.0),
+                (10.0, 1.0),
+                (0.0, 0.0),
+                (1000.0, 300.0),
+            ] {
+                assert_eq!(
+                    model.loss_kept(load, speed, 5e-6, &mut kept),
+                    model.loss(load, speed, 5e-6)
+                );
+            }
+        }
+    }
 }

@@ -114,6 +114,7 @@ pub struct PreparedRating {
 }
 
 impl PreparedRating {
+    /// `rating` at face width `face_width` \[m\].
     pub fn new(rating: &GearSetRating, face_width: f64) -> Self {
         let factors = (|| {
             rating.validate()?;

@@ -254,6 +254,7 @@ pub struct PreparedMeshLoss {
 }
 
 impl PreparedMeshLoss {
+    /// The loss of the mesh `geometry` in `lubricant` under `options` (a reading's).
     pub fn new(geometry: &MeshGeometry, lubricant: &Lubricant, options: LossOptions) -> Self {
         let constants = check_inputs(geometry, lubricant)
             .and_then(|()| MeshConstants::new(geometry, lubricant, options))
