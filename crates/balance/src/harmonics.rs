@@ -59,6 +59,26 @@ impl Order {
 /// # Panics
 /// If N ≤ 2·`max_order` (the highest order asked for would alias with a lower one).
 pub fn orders(samples: &[C], start: f64, max_order: usize) -> Vec<Order> {
+    orders_on(samples, start, max_order, &factors(samples.len(), start))
+}
+
+/// The factors of [`orders_on`] for N = `n` samples from `start`: from θ₀ = 0 every order's
+/// factors are among the N of e^{i·m·2π/N}, made once (the same arguments as the sum's,
+/// m·step + k·0 = m·step, so the same bits); from another start none (each is made where
+/// used).
+pub fn factors(n: usize, start: f64) -> Vec<C> {
+    let step = TAU / n as f64;
+    match start == 0.0 {
+        true => (0..n)
+            .map(|m| C::from_polar(1.0, m as f64 * step))
+            .collect(),
+        false => Vec::new(),
+    }
+}
+
+/// [`orders`] with the factors of [`factors`]`(samples.len(), start)` made beforehand (several
+/// vectors sampled at the same angles share them).
+pub fn orders_on(samples: &[C], start: f64, max_order: usize, table: &[C]) -> Vec<Order> {
     let n = samples.len();
     assert!(
         n > 2 * max_order,
@@ -66,26 +86,23 @@ pub fn orders(samples: &[C], start: f64, max_order: usize) -> Vec<Order> {
         n.div_ceil(2)
     );
     let step = TAU / n as f64;
-    // From θ₀ = 0 every order's factors are among the N of e^{i·m·2π/N}: made once, from the
-    // same arguments as below (m·step + k·0 = m·step), so the same bits.
-    let table: Vec<C> = match start == 0.0 {
-        true => (0..n)
-            .map(|m| C::from_polar(1.0, m as f64 * step))
-            .collect(),
-        false => Vec::new(),
-    };
     (0..=max_order)
         .map(|k| {
             let (mut forward, mut backward) = (C::new(0.0, 0.0), C::new(0.0, 0.0));
-            for (j, v) in samples.iter().enumerate() {
+            // m = (k·j) mod N, stepped by k (k < N/2) without a division per sample.
+            let mut m = 0;
+            for v in samples {
                 // e^{ikθ_j} from k·θ_j reduced to one turn: exact to an ulp of 2π.
-                let m = (k * j) % n;
                 let e = match table.get(m) {
                     Some(&e) => e,
                     None => C::from_polar(1.0, m as f64 * step + k as f64 * start),
                 };
                 forward += v * e.conj();
                 backward += v * e;
+                m += k;
+                if m >= n {
+                    m -= n;
+                }
             }
             let (forward, backward) = (forward / n as f64, backward / n as f64);
             if k == 0 {

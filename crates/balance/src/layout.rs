@@ -31,7 +31,7 @@
 //! depend on it (`docs/validation/balance.md`, free moments).
 
 use crate::counterweight::Rotor;
-use crate::harmonics::{orders, revolution, Order};
+use crate::harmonics::{factors, orders_on, revolution, Order};
 use crate::shaking::{shaking, Shaking};
 use cardan_mechanism::{CrankState, Mechanism, C};
 use std::f64::consts::TAU;
@@ -152,6 +152,37 @@ impl Layout {
         rotors: &[Rotor],
         crank: &CrankState,
     ) -> MachineShaking {
+        let axis = |i: usize| C::from_polar(1.0, self.cylinders[i].axis_angle);
+        self.sum_by(axis, per_cylinder, rotors, crank)
+    }
+
+    /// Each cylinder's axis direction e^{iβ}, which [`Layout::sum`] turns its shaking by.
+    pub fn axes(&self) -> Vec<C> {
+        self.cylinders
+            .iter()
+            .map(|c| C::from_polar(1.0, c.axis_angle))
+            .collect()
+    }
+
+    /// [`Layout::sum`] with the cylinders' [`Layout::axes`] made beforehand (the same bits).
+    pub fn sum_on(
+        &self,
+        axes: &[C],
+        per_cylinder: impl ExactSizeIterator<Item = Shaking>,
+        rotors: &[Rotor],
+        crank: &CrankState,
+    ) -> MachineShaking {
+        self.sum_by(|i| axes[i], per_cylinder, rotors, crank)
+    }
+
+    /// [`Layout::sum`], cylinder i's axis direction `axis(i)`.
+    fn sum_by(
+        &self,
+        axis: impl Fn(usize) -> C,
+        per_cylinder: impl ExactSizeIterator<Item = Shaking>,
+        rotors: &[Rotor],
+        crank: &CrankState,
+    ) -> MachineShaking {
         assert_eq!(
             per_cylinder.len(),
             self.cylinders.len(),
@@ -163,8 +194,8 @@ impl Layout {
             out.force += force;
             out.moment += C::i() * (z - z0) * force;
         };
-        for (c, s) in self.cylinders.iter().zip(per_cylinder) {
-            add(C::from_polar(1.0, c.axis_angle) * s.force, c.axial_position);
+        for (i, (c, s)) in self.cylinders.iter().zip(per_cylinder).enumerate() {
+            add(axis(i) * s.force, c.axial_position);
         }
         for r in rotors {
             add(r.force(crank), r.axial_position);
@@ -253,17 +284,19 @@ impl Layout {
                 out
             })
             .collect();
+        let axes = self.axes();
         let (forces, moments): (Vec<C>, Vec<C>) = cranks
             .iter()
             .enumerate()
             .map(|(j, crank)| {
-                let s = self.sum(per_cylinder.iter().map(|c| c[j]), rotors, crank);
+                let s = self.sum_on(&axes, per_cylinder.iter().map(|c| c[j]), rotors, crank);
                 (s.force, s.moment)
             })
             .unzip();
+        let table = factors(steps, 0.0);
         MachineOrders {
-            force: orders(&forces, 0.0, max_order),
-            moment: orders(&moments, 0.0, max_order),
+            force: orders_on(&forces, 0.0, max_order, &table),
+            moment: orders_on(&moments, 0.0, max_order, &table),
         }
     }
 }

@@ -121,6 +121,7 @@ impl MachineBalance {
         }
         Ok(PreparedBalance {
             mechanism,
+            axes: self.layout.axes(),
             layout: self.layout.clone(),
             rotors,
             carried,
@@ -197,6 +198,8 @@ pub struct PreparedBalance {
     rotors: Vec<Rotor>,
     /// [`PreparedBalance::crank_masses`].
     carried: C,
+    /// The cylinders' axis directions ([`Layout::axes`]), made once.
+    axes: Vec<C>,
 }
 
 impl PreparedBalance {
@@ -239,7 +242,8 @@ impl PreparedBalance {
                 shaking(m.topology(), &state)
             }
         });
-        self.layout.sum(per_cylinder, &self.rotors, crank)
+        self.layout
+            .sum_on(&self.axes, per_cylinder, &self.rotors, crank)
     }
 
     /// [`PreparedBalance::at`] the state `state` of cylinder 1 (a whole step).

@@ -12,9 +12,9 @@
 
 use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, carburized_allowables, contact_allowable_through_hardened,
-    elastic_coefficient, Enclosure, Grade, LoadDistribution, Quality,
+    elastic_coefficient, DynamicFactor, Enclosure, Grade, LoadDistribution, Quality,
 };
-use cardan_gears::agma::{GearSetRating, MemberData, SizeFactor};
+use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
 use cardan_gears::mesh_loss::Lubricant;
 use cardan_gears::{pitting_geometry_factor, GearSet, IForm, MeshStep, ShiftCase};
@@ -102,6 +102,11 @@ struct Rated {
     /// The mesh loss: the case's gear-mesh model bound to this mesh (the loss budget's own), so
     /// that the rating's loss and the budget's mesh component are one figure.
     loss: Box<dyn Loss>,
+    /// The dynamic factor at the last step's pitch-line velocity (its bits; `None` before the
+    /// first), kept while the speed does not change.
+    kv: Option<(u64, DynamicFactor)>,
+    /// The set's rating at its face width, prepared once.
+    rating: PreparedRating,
 }
 
 impl GearRatings {
@@ -230,6 +235,7 @@ impl GearRatings {
                 loss_reading: None,
             };
             let loss = mesh_loss(spec, mechanism, friction, k)?;
+            let prepared = PreparedRating::new(&set.rating, set.face_width);
             meshes.push(Rated {
                 joint: k,
                 body: j.body,
@@ -246,6 +252,8 @@ impl GearRatings {
                     * pitch_radius,
                 axis,
                 loss,
+                kv: None,
+                rating: prepared,
             });
         }
         Ok(Self { meshes })
@@ -351,7 +359,30 @@ impl Rated {
         };
         let name = m.name;
         let failed = |e: cardan_gears::GearError| format!("gear rating of {name}: {e}");
-        let mut r = m.set.evaluate(&step).map_err(failed)?;
+        // Rating another load than the tangential one, the set's rating and Buckingham load
+        // at the tangential load would be replaced below: only its dynamic factor is taken.
+        let tangential_rating = match m.tooth_load {
+            ToothLoad::Tangential => Some(m.set.evaluate(&step).map_err(failed)?),
+            _ => None,
+        };
+        let kv = match &tangential_rating {
+            Some(r) => r.kv,
+            None => {
+                let bits = step.pitch_line_velocity.abs().to_bits();
+                match m.kv {
+                    // The same checks of the step, then the factor of the same speed.
+                    Some((kept, kv)) if kept == bits => {
+                        m.set.check_step(&step).map_err(failed)?;
+                        kv
+                    }
+                    _ => {
+                        let kv = m.set.dynamic_factor(&step).map_err(failed)?;
+                        m.kv = Some((bits, kv));
+                        kv
+                    }
+                }
+            }
+        };
         let at = At {
             state,
             total,
@@ -375,34 +406,33 @@ impl Rated {
         };
         // Another rated load: the rating and Buckingham's load at it (the loss stays on the
         // tangential load).
-        if m.tooth_load != ToothLoad::Tangential {
-            r.dynamic = if m.tooth_load == ToothLoad::Thesis {
-                m.set.buckingham.saturated_dynamic_load(load)
-            } else {
-                m.set
-                    .buckingham
-                    .dynamic_load(load, motion.relative_speed.abs())
-            }
-            .map_err(failed)?;
-            r.rating = m
-                .set
-                .rating
-                .rate(load, r.kv.kv, m.set.face_width)
-                .map_err(failed)?;
-        }
+        let (dynamic, rating) = match tangential_rating {
+            Some(r) => (r.dynamic, r.rating),
+            None => (
+                if m.tooth_load == ToothLoad::Thesis {
+                    m.set.buckingham.saturated_dynamic_load(load)
+                } else {
+                    m.set
+                        .buckingham
+                        .dynamic_load(load, motion.relative_speed.abs())
+                }
+                .map_err(failed)?,
+                m.rating.rate(load, kv.kv).map_err(failed)?,
+            ),
+        };
         let (bending_stress, bending_safety) = if m.bending {
             (
-                r.rating.bending_stress[0].max(r.rating.bending_stress[1]),
-                r.rating.bending_safety[0].min(r.rating.bending_safety[1]),
+                rating.bending_stress[0].max(rating.bending_stress[1]),
+                rating.bending_safety[0].min(rating.bending_safety[1]),
             )
         } else {
             (f64::NAN, f64::NAN)
         };
         Ok(MeshRating {
             tooth_load: load,
-            dynamic_load: r.dynamic.dynamic_load,
-            contact_stress: r.rating.contact_stress[0].max(r.rating.contact_stress[1]),
-            contact_safety: r.rating.contact_safety[0].min(r.rating.contact_safety[1]),
+            dynamic_load: dynamic.dynamic_load,
+            contact_stress: rating.contact_stress[0].max(rating.contact_stress[1]),
+            contact_safety: rating.contact_safety[0].min(rating.contact_safety[1]),
             bending_stress,
             bending_safety,
             loss,

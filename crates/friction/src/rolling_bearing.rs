@@ -252,6 +252,24 @@ impl RollingModel {
 
     /// [`rolling_bearing_loss`] of this bearing.
     pub fn loss(&self, load: f64, relative_speed: f64, kinematic_viscosity: f64) -> RollingLoss {
+        self.loss_kept(
+            load,
+            relative_speed,
+            kinematic_viscosity,
+            &mut KeptPower::default(),
+        )
+    }
+
+    /// [`RollingModel::loss`], the viscous term's power of the speed, (νn)^(2/3), taken from
+    /// `kept` if νn has the bits of the step before (a constant joint speed), else computed
+    /// and kept there: the same bits as [`RollingModel::loss`].
+    pub fn loss_kept(
+        &self,
+        load: f64,
+        relative_speed: f64,
+        kinematic_viscosity: f64,
+        kept: &mut KeptPower,
+    ) -> RollingLoss {
         let bearing = &self.bearing;
         let [p0, p1] = self.powers;
         let f = load.abs();
@@ -264,7 +282,7 @@ impl RollingModel {
                 let (dm, c0_power, dm3) = (bearing.pitch_diameter, p0, p1);
                 let tl = load_constant * f.powf(1.55) * c0_power * dm;
                 let tv = if nun > 2000.0 {
-                    9.79e-2 * f0 * nun.powf(2.0 / 3.0) * dm3
+                    9.79e-2 * f0 * kept.pow(nun, 2.0 / 3.0) * dm3
                 } else {
                     24.1 * f0 * dm3
                 };
@@ -274,7 +292,7 @@ impl RollingModel {
                 let dm = bearing.pitch_diameter * 1e3; // mm
                 let dm3 = p0;
                 let m0 = if nun >= 2000.0 {
-                    1e-7 * c.f0 * nun.powf(2.0 / 3.0) * dm3
+                    1e-7 * c.f0 * kept.pow(nun, 2.0 / 3.0) * dm3
                 } else {
                     160e-7 * c.f0 * dm3
                 };
@@ -304,6 +322,35 @@ impl RollingModel {
     }
 }
 
+/// A power x^e of one exponent kept with its argument x, so that a model evaluated step by
+/// step with an argument that does not change (a joint's speed at a constant crank speed)
+/// takes it once; the bits are `powf`'s.
+#[derive(Debug, Clone, Copy)]
+pub struct KeptPower {
+    argument: f64,
+    power: f64,
+}
+
+impl Default for KeptPower {
+    /// Nothing kept (NaN's bits are never an argument's).
+    fn default() -> Self {
+        Self {
+            argument: f64::NAN,
+            power: f64::NAN,
+        }
+    }
+}
+
+impl KeptPower {
+    /// `x.powf(e)`, `e` being the same at every call.
+    pub fn pow(&mut self, x: f64, e: f64) -> f64 {
+        if self.argument.to_bits() != x.to_bits() {
+            (self.argument, self.power) = (x, x.powf(e));
+        }
+        self.power
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -316,5 +363,35 @@ mod tests {
         assert!((s.piston_pin.static_load_rating - 30_000.0).abs() < 1e-9);
         assert!((s.crank_pin.pitch_diameter - 0.045).abs() < 1e-15);
         assert!((s.main.static_load_rating - 60_000.0).abs() < 1e-9);
+    }
+
+    /// The viscous term's power kept from step to step gives `loss`'s bits whether the speed
+    /// stays, changes or comes back, in every reading.
+    #[test]
+    fn a_kept_power_gives_the_same_bits() {
+        let bearing = RollingBearing::new(0.045, 45_000.0).unwrap();
+        for reading in [
+            RollingReading::Karhula {
+                f0: 2.0,
+                load_constant: KARHULA_LOAD_CONSTANT,
+            },
+            RollingReading::Palmgren(PalmgrenCoefficients::DEEP_GROOVE_BALL),
+        ] {
+            let model = RollingModel::new(bearing, reading);
+            let mut kept = KeptPower::default();
+            for (load, speed) in [
+                (1000.0, 300.0),
+                (2000.0, 300.0),
+                (2000.0, -300.0),
+                (10.0, 1.0),
+                (0.0, 0.0),
+                (1000.0, 300.0),
+            ] {
+                assert_eq!(
+                    model.loss_kept(load, speed, 5e-6, &mut kept),
+                    model.loss(load, speed, 5e-6)
+                );
+            }
+        }
     }
 }

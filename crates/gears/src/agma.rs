@@ -100,6 +100,50 @@ pub struct Rating {
     pub contact_safety: [f64; 2],
 }
 
+/// [`GearSetRating::rate`] at one face width, rated step after step: what depends on neither
+/// the load nor the speed (the checks of the set's data, `Km`, `Ks`) taken once. The same
+/// arithmetic as [`GearSetRating::rate`], so the same bits, and the same errors (data that
+/// fails a check is rated through [`GearSetRating::rate`], which says which).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PreparedRating {
+    rating: GearSetRating,
+    /// Face width `b` \[m\].
+    face_width: f64,
+    /// `Km` and `Ks` at this face width, if the data pass their checks.
+    factors: Option<(f64, [f64; 2])>,
+}
+
+impl PreparedRating {
+    /// `rating` at face width `face_width` \[m\].
+    pub fn new(rating: &GearSetRating, face_width: f64) -> Self {
+        let factors = (|| {
+            rating.validate()?;
+            positive("face_width", face_width)?;
+            let km = rating
+                .load_distribution
+                .factor(face_width, rating.pinion_diameter)?
+                .km;
+            Ok::<_, GearError>((km, rating.size_factors(face_width)?))
+        })()
+        .ok();
+        Self {
+            rating: *rating,
+            face_width,
+            factors,
+        }
+    }
+
+    /// [`GearSetRating::rate`] for tangential load `wt` \[N\] and dynamic factor `kv` \[-\].
+    pub fn rate(&self, wt: f64, kv: f64) -> Result<Rating, GearError> {
+        let Some((km, ks)) = self.factors else {
+            return self.rating.rate(wt, kv, self.face_width);
+        };
+        non_negative("tangential load", wt)?;
+        require(kv.is_finite() && kv >= 1.0, "kv", "must be >= 1", kv)?;
+        Ok(self.rating.stresses(wt, kv, self.face_width, km, ks))
+    }
+}
+
 /// Bending stress `σ = Wt Ko Kv Ks Km KB / (b m J)` \[Pa\] (AGMA 2001-D04 eq. 15, metric form;
 /// Shigley eq. 14-15). `wt` \[N\], `b` and `m` \[m\], factors \[-\].
 #[allow(clippy::too_many_arguments)]
@@ -183,6 +227,12 @@ impl GearSetRating {
             .factor(face_width, self.pinion_diameter)?
             .km;
         let ks = self.size_factors(face_width)?;
+        Ok(self.stresses(wt, kv, face_width, km, ks))
+    }
+
+    /// The stresses and safety factors of [`GearSetRating::rate`] once its inputs are checked
+    /// and its `Km` and `Ks` known.
+    fn stresses(&self, wt: f64, kv: f64, face_width: f64, km: f64, ks: [f64; 2]) -> Rating {
         let members = [&self.pinion, &self.gear];
         let mut out = Rating {
             km,
@@ -223,7 +273,7 @@ impl GearSetRating {
             out.bending_safety[k] = m.bending_allowable * m.yn / kt_kr / s;
             out.contact_safety[k] = m.contact_allowable * m.zn * m.ch / kt_kr / sc;
         }
-        Ok(out)
+        out
     }
 
     /// Smallest face width \[m\] meeting the required bending (`sf`) and pitting (`sh`, stress

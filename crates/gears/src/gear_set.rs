@@ -56,16 +56,9 @@ impl GearSet {
     /// an independent estimate of the dynamic tooth load (the two are alternatives, not
     /// factors of each other).
     pub fn evaluate(&self, step: &MeshStep) -> Result<StepResult, GearError> {
-        positive("face_width", self.face_width)?;
-        require(
-            step.tangential_load.is_finite(),
-            "tangential_load",
-            "must be finite",
-            step.tangential_load,
-        )?;
+        let kv = self.dynamic_factor(step)?;
         let v = step.pitch_line_velocity.abs();
         let wt = step.tangential_load.abs();
-        let kv = dynamic_factor(self.quality, v)?;
         let dynamic = self.buckingham.dynamic_load(wt, v)?;
         let rating = self.rating.rate(wt, kv.kv, self.face_width)?;
         let loss = match self.loss_reading {
@@ -84,5 +77,24 @@ impl GearSet {
             rating,
             loss,
         })
+    }
+
+    /// The AGMA dynamic factor of [`GearSet::evaluate`] at `step`, with its checks of the
+    /// step, alone: for a caller that rates another load than the step's tangential load.
+    pub fn dynamic_factor(&self, step: &MeshStep) -> Result<DynamicFactor, GearError> {
+        self.check_step(step)?;
+        dynamic_factor(self.quality, step.pitch_line_velocity.abs())
+    }
+
+    /// The checks of [`GearSet::evaluate`] before the dynamic factor: the face width and the
+    /// step's load.
+    pub fn check_step(&self, step: &MeshStep) -> Result<(), GearError> {
+        positive("face_width", self.face_width)?;
+        require(
+            step.tangential_load.is_finite(),
+            "tangential_load",
+            "must be finite",
+            step.tangential_load,
+        )
     }
 }

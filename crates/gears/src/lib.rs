@@ -42,7 +42,7 @@ pub use agma::factors::{
     Quality,
 };
 pub use agma::geometry_factors::{agma908_table, pitting_geometry_factor, IForm, ShiftCase};
-pub use agma::{FaceWidths, GearSetRating, MemberData, Rating, SizeFactor};
+pub use agma::{FaceWidths, GearSetRating, MemberData, PreparedRating, Rating, SizeFactor};
 pub use buckingham::{BuckinghamPair, DynamicLoad, ToothForm, FULL_DEPTH_20};
 pub use error::GearError;
 pub use gear_set::{GearSet, MeshStep, StepResult};
@@ -50,5 +50,6 @@ pub use geometry::{
     cardan_module, CheckKind, CheckReport, Diameters, GearPair, GearSpec, PairSpec, Remedy, Tip,
 };
 pub use mesh_loss::{
-    mesh_loss, mesh_loss_with, LossOptions, Lubricant, MeshGeometry, MeshLoss, MeshSpeeds, Reading,
+    mesh_loss, mesh_loss_with, LossOptions, Lubricant, MeshGeometry, MeshLoss, MeshSpeeds,
+    PreparedMeshLoss, Reading,
 };

@@ -203,7 +203,13 @@ pub fn mesh_loss_with(
     ft: f64,
     options: LossOptions,
 ) -> Result<MeshLoss, GearError> {
-    let g = geometry;
+    check_inputs(geometry, lubricant)?;
+    check_step(speeds, ft)?;
+    Ok(MeshConstants::new(geometry, lubricant, options)?.loss(speeds, ft, &mut PowMemo::default()))
+}
+
+/// The checks of [`mesh_loss_with`] on the geometry and lubricant that come before the step's.
+fn check_inputs(g: &MeshGeometry, lubricant: &Lubricant) -> Result<(), GearError> {
     positive("module", g.module)?;
     positive("face_width", g.face_width)?;
     positive("pinion_diameter", g.pinion_diameter)?;
@@ -215,6 +221,11 @@ pub fn mesh_loss_with(
     )?;
     positive("kinematic_viscosity", lubricant.kinematic_viscosity)?;
     positive("density", lubricant.density)?;
+    Ok(())
+}
+
+/// The checks of [`mesh_loss_with`] on a step's load and speeds.
+fn check_step(speeds: &MeshSpeeds, ft: f64) -> Result<(), GearError> {
     require(ft.is_finite(), "tangential load", "must be finite", ft)?;
     require(
         speeds.pinion_absolute.is_finite() && speeds.carrier.is_finite(),
@@ -222,107 +233,254 @@ pub fn mesh_loss_with(
         "must be finite",
         speeds.pinion_absolute,
     )?;
-    let to_rpm = 60.0 / (2.0 * PI);
-    let n_abs = speeds.pinion_absolute.abs() * to_rpm;
-    let eta_pa_s = lubricant.dynamic_viscosity();
+    Ok(())
+}
 
-    let (alpha, d1, d2, l, cr) = if options.actual_geometry {
-        let (d1, d2) = (g.pinion_working_diameter, g.gear_working_diameter);
-        positive("pinion_working_diameter", d1)?;
-        positive("gear_working_diameter", d2)?;
-        positive("path_of_contact", g.path_of_contact)?;
-        non_negative("contact_ratio", g.contact_ratio)?;
-        (
-            g.operating_pressure_angle,
+/// [`mesh_loss_with`] of one mesh, geometry, lubricant and reading, evaluated step by step:
+/// what depends on neither the load nor the speeds (the path of contact, the pressure angle's
+/// sine and cosine, `R_eq^0.464`, the windage's `(d1/2)^4.6` and viscosity term) taken once,
+/// and the speed's powers kept from the step before while the speed does not change (a
+/// constant crank speed). The same arithmetic, in the same order, as [`mesh_loss_with`]: the
+/// same bits, and the same errors.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PreparedMeshLoss {
+    geometry: MeshGeometry,
+    lubricant: Lubricant,
+    options: LossOptions,
+    /// `None` if the geometry or lubricant fails a check: every step then goes through
+    /// [`mesh_loss_with`], which says which.
+    constants: Option<MeshConstants>,
+    memo: PowMemo,
+}
+
+impl PreparedMeshLoss {
+    /// The loss of the mesh `geometry` in `lubricant` under `options` (a reading's).
+    pub fn new(geometry: &MeshGeometry, lubricant: &Lubricant, options: LossOptions) -> Self {
+        let constants = check_inputs(geometry, lubricant)
+            .and_then(|()| MeshConstants::new(geometry, lubricant, options))
+            .ok();
+        Self {
+            geometry: *geometry,
+            lubricant: *lubricant,
+            options,
+            constants,
+            memo: PowMemo::default(),
+        }
+    }
+
+    /// [`mesh_loss_with`] at this step's `speeds` and tangential load `ft` \[N\].
+    pub fn loss(&mut self, speeds: &MeshSpeeds, ft: f64) -> Result<MeshLoss, GearError> {
+        match &self.constants {
+            Some(c) => {
+                check_step(speeds, ft)?;
+                Ok(c.loss(speeds, ft, &mut self.memo))
+            }
+            None => mesh_loss_with(&self.geometry, &self.lubricant, speeds, ft, self.options),
+        }
+    }
+}
+
+/// The powers of the speed-dependent terms at the last step's arguments: `n_abs^2.8` and
+/// `(v_r η)^0.67`, recomputed only when their argument's bits change.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct PowMemo {
+    /// (argument, power) of `n_abs^2.8`.
+    windage: (f64, f64),
+    /// (argument, power) of `(v_r η)^0.67`.
+    film: (f64, f64),
+}
+
+impl Default for PowMemo {
+    fn default() -> Self {
+        // NaN's bits are never an argument's: the first step computes both.
+        Self {
+            windage: (f64::NAN, f64::NAN),
+            film: (f64::NAN, f64::NAN),
+        }
+    }
+}
+
+/// `x^e` from `memo` if `x` has the bits of its argument, else computed and kept.
+fn pow_kept(memo: &mut (f64, f64), x: f64, e: f64) -> f64 {
+    if memo.0.to_bits() != x.to_bits() {
+        *memo = (x, x.powf(e));
+    }
+    memo.1
+}
+
+/// What [`mesh_loss_with`] computes from the geometry, lubricant and reading alone.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct MeshConstants {
+    /// Pinion pitch diameter, path of contact and contact ratio of the reading.
+    d1: f64,
+    l: f64,
+    cr: f64,
+    /// [`LossOptions::mesh_kinematics`], [`LossOptions::clamp_friction`].
+    mesh_kinematics: bool,
+    clamp_friction: bool,
+    /// Sliding and rolling factors of A9.1.42-43 (or their internal-mesh forms).
+    slide_k: f64,
+    roll_k: f64,
+    /// Viscosity in the reading's unit.
+    eta: f64,
+    s: f64,
+    c: f64,
+    b: f64,
+    r_eq: f64,
+    /// `R_eq^0.464` (A9.1.51).
+    r_eq_power: f64,
+    /// `2.82e-7 (1 + 2.3 b/d1)`, `(d1/2)^4.6`, `(0.028 η + 0.019)^0.2` (A9.1.54).
+    windage: [f64; 3],
+}
+
+impl MeshConstants {
+    fn new(
+        g: &MeshGeometry,
+        lubricant: &Lubricant,
+        options: LossOptions,
+    ) -> Result<Self, GearError> {
+        let eta_pa_s = lubricant.dynamic_viscosity();
+        let (alpha, d1, d2, l, cr) = if options.actual_geometry {
+            let (d1, d2) = (g.pinion_working_diameter, g.gear_working_diameter);
+            positive("pinion_working_diameter", d1)?;
+            positive("gear_working_diameter", d2)?;
+            positive("path_of_contact", g.path_of_contact)?;
+            non_negative("contact_ratio", g.contact_ratio)?;
+            (
+                g.operating_pressure_angle,
+                d1,
+                d2,
+                g.path_of_contact,
+                g.contact_ratio,
+            )
+        } else {
+            // A9.1.40, A9.1.52
+            let (d1, d2, a) = (g.pinion_diameter, g.gear_diameter, g.pressure_angle);
+            let l = karhula_path_of_contact(d1, d2, g.module, a);
+            (a, d1, d2, l, karhula_contact_ratio(l, g.module, a))
+        };
+        let i = d2 / d1;
+        let (slide_k, roll_k) = if options.mesh_kinematics {
+            if g.internal {
+                ((i - 1.0) / i, (i + 1.0) / i)
+            } else {
+                ((i + 1.0) / i, (i - 1.0) / i)
+            }
+        } else {
+            // A9.1.42–A9.1.43: external factors.
+            ((1.0 + i) / i, (i - 1.0) / i)
+        };
+        let eta = if options.viscosity_in_centipoise {
+            eta_pa_s / CENTIPOISE
+        } else {
+            eta_pa_s
+        };
+        let (s, c) = (alpha.sin(), alpha.cos());
+        let b = g.face_width;
+        // A9.1.50
+        let a1 = d1 * s + l / 2.0;
+        let r_eq = if !options.actual_geometry {
+            a1 * (d2 * s - l / 2.0) / (2.0 * (d2 * s + l / 2.0))
+        } else if g.internal {
+            let b2 = d2 * s + l / 2.0;
+            a1 * b2 / (2.0 * (b2 - a1))
+        } else {
+            let b2 = d2 * s - l / 2.0;
+            a1 * b2 / (2.0 * (a1 + b2))
+        };
+        Ok(Self {
             d1,
-            d2,
-            g.path_of_contact,
-            g.contact_ratio,
-        )
-    } else {
-        // A9.1.40, A9.1.52
-        let (d1, d2, a) = (g.pinion_diameter, g.gear_diameter, g.pressure_angle);
-        let l = karhula_path_of_contact(d1, d2, g.module, a);
-        (a, d1, d2, l, karhula_contact_ratio(l, g.module, a))
-    };
-    let i = d2 / d1;
-    let (n_mesh, slide_k, roll_k) = if options.mesh_kinematics {
-        let n_rel = (speeds.pinion_absolute - speeds.carrier).abs() * to_rpm;
-        if g.internal {
-            (n_rel, (i - 1.0) / i, (i + 1.0) / i)
+            l,
+            cr,
+            mesh_kinematics: options.mesh_kinematics,
+            clamp_friction: options.clamp_friction,
+            slide_k,
+            roll_k,
+            eta,
+            s,
+            c,
+            b,
+            r_eq,
+            r_eq_power: r_eq.powf(0.464),
+            windage: [
+                2.82e-7 * (1.0 + 2.3 * b / d1),
+                (d1 / 2.0).powf(4.6),
+                (0.028 * eta + 0.019).powf(0.2),
+            ],
+        })
+    }
+
+    /// The loss at `speeds` under `ft` (checked finite), A9.1.41-55.
+    fn loss(&self, speeds: &MeshSpeeds, ft: f64, memo: &mut PowMemo) -> MeshLoss {
+        let Self {
+            d1,
+            l,
+            cr,
+            slide_k,
+            roll_k,
+            eta,
+            s,
+            c,
+            b,
+            r_eq,
+            ..
+        } = *self;
+        let to_rpm = 60.0 / (2.0 * PI);
+        let n_abs = speeds.pinion_absolute.abs() * to_rpm;
+        let n_mesh = if self.mesh_kinematics {
+            (speeds.pinion_absolute - speeds.carrier).abs() * to_rpm
         } else {
-            (n_rel, (i + 1.0) / i, (i - 1.0) / i)
-        }
-    } else {
-        // A9.1.41–A9.1.43: absolute wheel speed, external factors.
-        (n_abs, (1.0 + i) / i, (i - 1.0) / i)
-    };
-    let eta = if options.viscosity_in_centipoise {
-        eta_pa_s / CENTIPOISE
-    } else {
-        eta_pa_s
-    };
-    let (s, c) = (alpha.sin(), alpha.cos());
-    // A9.1.42, A9.1.43 (0.0262 ≈ 2π/60/4, 0.1047 ≈ 2π/60 as printed).
-    let v_s = 0.0262 * n_mesh * slide_k * l;
-    let v_r = (0.1047 * n_mesh * (d1 * s - l / 4.0 * roll_k)).max(0.0);
-    // A9.1.45
-    let f_n = ft.abs() / (2.0 * c);
-    let b = g.face_width;
-    // A9.1.48
-    let mut clamped = false;
-    let mu = if f_n > 0.0 && v_s > 0.0 && v_r > 0.0 {
-        let m = 0.0127 * (29.66 * f_n / (b * eta * v_s * v_r * v_r)).log10();
-        if options.clamp_friction && m < 0.0 {
-            clamped = true;
+            // A9.1.41: absolute wheel speed.
+            n_abs
+        };
+        // A9.1.42, A9.1.43 (0.0262 ≈ 2π/60/4, 0.1047 ≈ 2π/60 as printed).
+        let v_s = 0.0262 * n_mesh * slide_k * l;
+        let v_r = (0.1047 * n_mesh * (d1 * s - l / 4.0 * roll_k)).max(0.0);
+        // A9.1.45
+        let f_n = ft.abs() / (2.0 * c);
+        // A9.1.48
+        let mut clamped = false;
+        let mu = if f_n > 0.0 && v_s > 0.0 && v_r > 0.0 {
+            let m = 0.0127 * (29.66 * f_n / (b * eta * v_s * v_r * v_r)).log10();
+            if self.clamp_friction && m < 0.0 {
+                clamped = true;
+                0.0
+            } else {
+                m
+            }
+        } else {
             0.0
+        };
+        // A9.1.49 [kW] -> W
+        let p_s = 2e-3 * v_s * mu * f_n * 1e3;
+        // A9.1.51: undefined at zero load; reported as zero film and zero rolling loss.
+        let h = if f_n > 0.0 && v_r > 0.0 && r_eq > 0.0 {
+            2.051e-7
+                * pow_kept(&mut memo.film, v_r * eta, 0.67)
+                * f_n.powf(-0.067)
+                * self.r_eq_power
         } else {
-            m
+            0.0
+        };
+        // A9.1.53 [kW] -> W
+        let p_r = 9e4 * v_r * h * b * cr * 1e3;
+        // A9.1.54 [kW] -> W; pinion absolute spin speed in both readings.
+        let [w0, w1, w2] = self.windage;
+        let p_w = w0 * pow_kept(&mut memo.windage, n_abs, 2.8) * w1 * w2 * 1e3;
+        MeshLoss {
+            path_of_contact: l,
+            contact_ratio: cr,
+            sliding_velocity: v_s,
+            rolling_velocity: v_r,
+            normal_load: f_n,
+            friction_coefficient: mu,
+            equivalent_radius: r_eq,
+            film_thickness: h,
+            sliding_power: p_s,
+            rolling_power: p_r,
+            windage_power: p_w,
+            total_power: p_s + p_r + p_w,
+            friction_clamped: clamped,
         }
-    } else {
-        0.0
-    };
-    // A9.1.49 [kW] -> W
-    let p_s = 2e-3 * v_s * mu * f_n * 1e3;
-    // A9.1.50
-    let a1 = d1 * s + l / 2.0;
-    let r_eq = if !options.actual_geometry {
-        a1 * (d2 * s - l / 2.0) / (2.0 * (d2 * s + l / 2.0))
-    } else if g.internal {
-        let b2 = d2 * s + l / 2.0;
-        a1 * b2 / (2.0 * (b2 - a1))
-    } else {
-        let b2 = d2 * s - l / 2.0;
-        a1 * b2 / (2.0 * (a1 + b2))
-    };
-    // A9.1.51: undefined at zero load; reported as zero film and zero rolling loss.
-    let h = if f_n > 0.0 && v_r > 0.0 && r_eq > 0.0 {
-        2.051e-7 * (v_r * eta).powf(0.67) * f_n.powf(-0.067) * r_eq.powf(0.464)
-    } else {
-        0.0
-    };
-    // A9.1.53 [kW] -> W
-    let p_r = 9e4 * v_r * h * b * cr * 1e3;
-    // A9.1.54 [kW] -> W; pinion absolute spin speed in both readings.
-    let p_w = 2.82e-7
-        * (1.0 + 2.3 * b / d1)
-        * n_abs.powf(2.8)
-        * (d1 / 2.0).powf(4.6)
-        * (0.028 * eta + 0.019).powf(0.2)
-        * 1e3;
-    Ok(MeshLoss {
-        path_of_contact: l,
-        contact_ratio: cr,
-        sliding_velocity: v_s,
-        rolling_velocity: v_r,
-        normal_load: f_n,
-        friction_coefficient: mu,
-        equivalent_radius: r_eq,
-        film_thickness: h,
-        sliding_power: p_s,
-        rolling_power: p_r,
-        windage_power: p_w,
-        total_power: p_s + p_r + p_w,
-        friction_clamped: clamped,
-    })
+    }
 }

@@ -357,3 +357,37 @@ fn correct_internal_reading_needs_less_contact_face_width() {
     let b = nunes::contact_face_width(9368.4, 1.1, 1.25, ze, 0.026, i_int, 1300e6);
     assert!((b / a - t.i / i_int).abs() < 1e-12);
 }
+
+/// A rating prepared at one face width (Km, Ks and the data's checks taken once) gives
+/// `GearSetRating::rate`'s bits at every load, and its errors: a bad load, a bad Kv, and data
+/// failing a check (rated through `rate`, which names it).
+#[test]
+fn a_prepared_rating_is_the_rating_bit_for_bit() {
+    let (rating, wt, kv, face) = shigley_14_4();
+    let prepared = PreparedRating::new(&rating, face);
+    for load in [0.0, 1e-3, wt, 3.7 * wt, 1e6] {
+        for k in [1.0, kv, 2.5] {
+            assert_eq!(
+                prepared.rate(load, k).unwrap(),
+                rating.rate(load, k, face).unwrap()
+            );
+        }
+    }
+    for (load, k) in [(-1.0, kv), (wt, 0.5), (wt, f64::NAN)] {
+        assert_eq!(
+            prepared.rate(load, k).unwrap_err().to_string(),
+            rating.rate(load, k, face).unwrap_err().to_string()
+        );
+    }
+    let bad = GearSetRating {
+        geometry_i: 0.0,
+        ..rating
+    };
+    assert_eq!(
+        PreparedRating::new(&bad, face)
+            .rate(wt, kv)
+            .unwrap_err()
+            .to_string(),
+        bad.rate(wt, kv, face).unwrap_err().to_string()
+    );
+}

@@ -185,3 +185,50 @@ fn corrected_reading_is_finite_and_limits_hold() {
     bad.density = 0.0;
     assert!(mesh_loss(&g, &bad, &cardan_speeds(1.0), 1.0, Reading::Karhula).is_err());
 }
+
+/// The mesh loss prepared once per mesh, its speed's powers kept while the speed's bits do not
+/// change, gives `mesh_loss_with`'s bits at every step of a sequence whose speed stays, changes
+/// and comes back, in both readings; and its errors.
+#[test]
+fn a_prepared_mesh_loss_is_the_mesh_loss_bit_for_bit() {
+    let (g, lub) = setup();
+    for reading in [Reading::Karhula, Reading::Corrected] {
+        let mut prepared = PreparedMeshLoss::new(&g, &lub, reading.options());
+        for (rpm, ft) in [
+            (3000.0, 2000.0),
+            (3000.0, 1500.0),
+            (3000.0, 0.0),
+            (6000.0, -800.0),
+            (0.0, 800.0),
+            (3000.0, 2000.0),
+            (3000.0, 2000.0),
+        ] {
+            let s = cardan_speeds(rpm);
+            assert_eq!(
+                prepared.loss(&s, ft).unwrap(),
+                mesh_loss(&g, &lub, &s, ft, reading).unwrap(),
+                "{reading:?} at {rpm} rpm, {ft} N"
+            );
+        }
+        let s = cardan_speeds(3000.0);
+        assert_eq!(
+            prepared.loss(&s, f64::NAN).unwrap_err().to_string(),
+            mesh_loss(&g, &lub, &s, f64::NAN, reading)
+                .unwrap_err()
+                .to_string()
+        );
+        let bad = Lubricant {
+            density: -1.0,
+            ..lub
+        };
+        assert_eq!(
+            PreparedMeshLoss::new(&g, &bad, reading.options())
+                .loss(&s, 100.0)
+                .unwrap_err()
+                .to_string(),
+            mesh_loss(&g, &bad, &s, 100.0, reading)
+                .unwrap_err()
+                .to_string()
+        );
+    }
+}

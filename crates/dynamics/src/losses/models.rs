@@ -12,10 +12,10 @@ use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::stage::SetupError;
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
-    KarhulaRingPack, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel, RollingReading,
-    ViscousSkirt,
+    KarhulaRingPack, KeptPower, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel,
+    RollingReading, ViscousSkirt,
 };
-use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, Reading};
+use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, PreparedMeshLoss, Reading};
 use cardan_mechanism::{Bearings, JointKind};
 
 /// What a bound model is: its [`Loss`], or why it cannot be set up.
@@ -106,6 +106,7 @@ pub fn bind_rolling(site: &Site, reading: RollingReading) -> Bound {
         ),
         count: f64::from(b.count.max(1)),
         viscosity: site.oil.kinematic_viscosity,
+        kept: KeptPower::default(),
     }))
 }
 
@@ -148,15 +149,14 @@ pub fn bind_mesh(site: &Site, reading: Reading) -> Bound {
     let (pair, face_width) = mesh_pair(site.pair, ratio, pitch_radius, internal, pressure_angle)?;
     let geometry =
         MeshGeometry::from_pair(&pair, face_width).map_err(|e| failed("gear.face_width", &e))?;
+    let lubricant = Lubricant {
+        kinematic_viscosity: site.oil.kinematic_viscosity,
+        density: site.oil.density,
+    };
     Ok(Box::new(Mesh {
         joint: site.joint,
         body: j.body,
-        geometry,
-        lubricant: Lubricant {
-            kinematic_viscosity: site.oil.kinematic_viscosity,
-            density: site.oil.density,
-        },
-        reading,
+        loss: PreparedMeshLoss::new(&geometry, &lubricant, reading.options()),
         pitch_radius,
         sets: if site.pair.twin { 2.0 } else { 1.0 },
     }))
@@ -282,13 +282,18 @@ pub struct Rolling {
     pub count: f64,
     /// Kinematic viscosity, m²/s (the rolling readings' input).
     pub viscosity: f64,
+    /// The viscous term's power of the speed at the step before.
+    pub kept: KeptPower,
 }
 
 impl Loss for Rolling {
     fn power(&mut self, at: &At) -> Result<f64, String> {
         let share = at.total.joints[self.joint].force.norm() / self.count;
         let w = at.state.joints[self.joint].relative_speed;
-        Ok(self.count * self.model.loss(share, w, self.viscosity).power)
+        let loss = self
+            .model
+            .loss_kept(share, w, self.viscosity, &mut self.kept);
+        Ok(self.count * loss.power)
     }
 }
 
@@ -328,9 +333,8 @@ pub struct Mesh {
     pub joint: usize,
     /// The body carrying the pinion.
     pub body: usize,
-    pub geometry: MeshGeometry,
-    pub lubricant: Lubricant,
-    pub reading: Reading,
+    /// The model on the mesh's geometry and oil in its reading, prepared once.
+    pub loss: PreparedMeshLoss,
     pub pitch_radius: f64,
     /// Gear sets sharing the load (2 for a twin set): each carries its share and loses its
     /// own, as in the gear rating.
@@ -346,14 +350,10 @@ impl Loss for Mesh {
         let ft = tangential(at.total.joints[joint].force, &state.joints[joint]);
         let speeds = mesh_speeds(state, joint, self.body, self.pitch_radius);
         let sets = self.sets;
-        let loss = mesh_loss(
-            &self.geometry,
-            &self.lubricant,
-            &speeds,
-            ft / sets,
-            self.reading,
-        )
-        .map_err(|e| format!("gear mesh loss: {e}"))?;
+        let loss = self
+            .loss
+            .loss(&speeds, ft / sets)
+            .map_err(|e| format!("gear mesh loss: {e}"))?;
         Ok(sets * loss.total_power)
     }
 }
