@@ -6,7 +6,7 @@ use super::table::{
     BendingHigh, BendingLow, EnclosureWord, GearFileTable, GeometryFactorI, MemberTable,
     RatingTable,
 };
-use super::*;
+use super::validated::*;
 use cardan_case::quantity::{Number, Positive, Pressure};
 use cardan_case::units::{is_folder_name, short};
 use cardan_gears::agma::factors::{

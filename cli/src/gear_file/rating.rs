@@ -1,6 +1,6 @@
 //! The pair's checks and its AGMA rating, and what the verdict follows from.
 
-use super::*;
+use super::validated::*;
 use cardan_gears::{
     bending_cycle_factor, dynamic_factor, hardness_ratio_factor, pitting_cycle_factor,
     pitting_geometry_factor, CheckKind, CheckReport, GearError, GearPair, GearSetRating,

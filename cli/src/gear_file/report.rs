@@ -1,8 +1,10 @@
 //! `gear.json` and `report.md` of a rated pair.
 
-use super::*;
+use super::rating::{check_info, GearReport, Severity};
+use super::validated::*;
 use serde_json::{json, Map, Value};
 use std::f64::consts::PI;
+use std::fmt::Write as _;
 
 /// Text for a Markdown table cell: `|` escaped.
 fn cell(s: &str) -> String {
