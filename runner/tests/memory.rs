@@ -7,29 +7,10 @@ use cardan_runner::memory::{run_in_memory, run_sweep, SweepTable};
 use cardan_runner::{run_paths, RunOptions};
 use std::path::Path;
 
-const CASE: &str = r#"
-name = "memory"
-machine = "pump"
-mechanisms = ["slider_crank", "cardan_gear"]
-[geometry]
-crank_length = "60 mm"
-rod_length = "140 mm"
-bore = "120 mm"
-[motion]
-start_angle = "90 deg"
-end_angle = "810 deg"
-initial_speed = "94.24777960769379 rad/s"
-angular_acceleration = 0.0
-steps = 1441
-[gas]
-model = "karhula_pump"
-compression_ratio = 12
-polytropic_exponent = 1.4
-[friction]
-[gear]
-[output]
-decimation = 7
-"#;
+/// The loaded thesis pump, every 7th step written.
+fn case() -> String {
+    cardan_testing::cases::loaded_thesis_pump("memory") + "[output]\ndecimation = 7\n"
+}
 
 /// The batch's output folder of `text` written as `name.toml`.
 fn batch(text: &str, name: &str) -> tempfile::TempDir {
@@ -44,12 +25,12 @@ fn batch(text: &str, name: &str) -> tempfile::TempDir {
 
 #[test]
 fn a_case_in_memory_is_the_batchs_summary_and_csv() {
-    let dir = batch(CASE, "memory");
+    let dir = batch(&case(), "memory");
     let folder = dir.path().join("out/memory");
     let written: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(folder.join("summary.json")).unwrap())
             .unwrap();
-    let case = parse(Path::new("memory.toml"), CASE).unwrap();
+    let case = parse(Path::new("memory.toml"), &case()).unwrap();
     for steps in [true, false] {
         let run = run_in_memory(&case, steps).unwrap();
         assert_eq!(run.summary, written, "steps kept: {steps}");
@@ -85,7 +66,7 @@ fn a_case_in_memory_is_the_batchs_summary_and_csv() {
 
 #[test]
 fn a_sweep_in_memory_is_sweep_csv() {
-    let text = CASE.replace("steps = 1441", "steps = 360")
+    let text = case().replace("steps = 1441", "steps = 360")
         + "[sweep]\n\"motion.initial_speed\" = [\"30 rad/s\", 300.0]\n\"geometry.rod_length\" = { from = \"140 mm\", to = \"200 mm\", points = 3 }\n";
     let dir = batch(&text, "memory-sweep");
     let written = std::fs::read_to_string(dir.path().join("out/memory/sweep.csv")).unwrap();

@@ -5,27 +5,10 @@
 use cardan_runner::{run_paths, RunOptions};
 use std::path::Path;
 
-const CASE: &str = r#"
-name = "npy"
-machine = "pump"
-mechanisms = ["slider_crank", "cardan_gear"]
-[geometry]
-crank_length = "60 mm"
-rod_length = "140 mm"
-bore = "120 mm"
-[motion]
-start_angle = "90 deg"
-end_angle = "810 deg"
-initial_speed = "94.24777960769379 rad/s"
-angular_acceleration = 0.0
-steps = 1441
-[gas]
-model = "karhula_pump"
-compression_ratio = 12
-polytropic_exponent = 1.4
-[friction]
-[gear]
-"#;
+/// The loaded thesis pump.
+fn case() -> String {
+    cardan_testing::cases::loaded_thesis_pump("npy")
+}
 
 /// An NPY 1.0 file of f64 in Fortran order, as (rows, columns, values column after column).
 fn read_npy(path: &Path) -> (usize, usize, Vec<f64>) {
@@ -98,7 +81,7 @@ fn check_npy_equals_csv(case_dir: &Path, mechanism: &str, rows_expected: usize) 
 #[test]
 fn npy_holds_the_csv_numbers_column_after_column() {
     let dir = tempfile::tempdir().unwrap();
-    run(dir.path(), CASE, None);
+    run(dir.path(), &case(), None);
     for m in ["slider_crank", "cardan_gear"] {
         // More rows than one block of the writer, and not a multiple of it.
         check_npy_equals_csv(&dir.path().join("out/npy"), m, 1442);
@@ -111,7 +94,7 @@ fn npy_of_many_blocks_holds_the_csv_numbers() {
     let dir = tempfile::tempdir().unwrap();
     run(
         dir.path(),
-        &CASE.replace("steps = 1441", "steps = 9000"),
+        &case().replace("steps = 1441", "steps = 9000"),
         None,
     );
     check_npy_equals_csv(&dir.path().join("out/npy"), "cardan_gear", 9001);
@@ -122,7 +105,7 @@ fn npy_follows_decimation() {
     let dir = tempfile::tempdir().unwrap();
     run(
         dir.path(),
-        &format!("{CASE}[output]\ndecimation = 100\n"),
+        &format!("{}[output]\ndecimation = 100\n", case()),
         None,
     );
     // Steps 0, 100, ..., 1400 and the last, 1441.
@@ -134,7 +117,7 @@ fn npy_alone_without_csv() {
     let dir = tempfile::tempdir().unwrap();
     run(
         dir.path(),
-        &format!("{CASE}[output]\ncsv = false\nnpy = true\n"),
+        &format!("{}[output]\ncsv = false\nnpy = true\n", case()),
         None,
     );
     let case = dir.path().join("out/npy");
@@ -151,8 +134,8 @@ fn npy_alone_without_csv() {
 fn per_step_files_are_byte_identical_between_thread_counts() {
     let one = tempfile::tempdir().unwrap();
     let two = tempfile::tempdir().unwrap();
-    run(one.path(), CASE, Some(1));
-    run(two.path(), CASE, Some(2));
+    run(one.path(), &case(), Some(1));
+    run(two.path(), &case(), Some(2));
     for file in [
         "cardan_gear.csv",
         "cardan_gear.npy",
@@ -171,7 +154,7 @@ fn per_step_files_are_byte_identical_between_thread_counts() {
 /// files, with the report (its charts taken by the pieces) and without.
 #[test]
 fn a_shared_run_writes_the_summary_of_a_run_on_one_thread() {
-    let case = CASE.replace("steps = 1441", "steps = 9000");
+    let case = case().replace("steps = 1441", "steps = 9000");
     let mut summaries = Vec::new();
     for (jobs, files, reports) in [
         (1, true, false),

@@ -5,21 +5,7 @@
 use cardan_runner::{run_paths, RunOptions};
 use std::path::Path;
 
-const GOOD: &str = r#"
-name = "good"
-machine = "pump"
-mechanisms = ["slider_crank", "cardan_gear"]
-[geometry]
-crank_length = 0.06
-rod_length = 0.14
-bore = 0.12
-[motion]
-start_angle = 90.0
-end_angle = 810.0
-initial_speed = 628.3185307
-angular_acceleration = 0.0
-steps = 720
-"#;
+use cardan_testing::cases::THESIS_PUMP as GOOD;
 
 const PUMP_GAS: &str = r#"
 [gas]

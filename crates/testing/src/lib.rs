@@ -1,8 +1,9 @@
 //! Checks for tests: each failure message names the quantity, both values and the tolerance, so
 //! a failing validation test reads like a line of a validation report; and that a message names
 //! what it must. And [`OneThread`], a crank grid the benchmarks run on one thread; and
-//! [`chart`], the reports' SVG charts read back.
+//! [`chart`], the reports' SVG charts read back; [`cases`], case-file text several tests start from.
 
+pub mod cases;
 pub mod chart;
 
 use cardan_mechanism::{CrankColumns, CrankState, Grid, MotionError, MotionSource};
