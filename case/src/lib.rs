@@ -12,6 +12,7 @@ pub mod gear;
 pub mod json_schema;
 pub mod machine_motion;
 pub mod masses;
+mod output_metrics;
 pub mod mechanism_table;
 pub mod quantity;
 pub mod schema;

@@ -213,3 +213,91 @@ fn a_table_split_over_three_shards_merges_into_the_single_run() {
     std::fs::remove_file(shards[1].join("t/sweep.json")).unwrap();
     refused(&[&format!("points {s2}..{s3}"), "missing"]);
 }
+
+/// `[output] metrics`: a table sweep with 3 metrics writes exactly the case and swept columns
+/// and those 3 of each mechanism, in the summary's order, with the full table's values bit for
+/// bit; a folder sweep's `sweep.csv` holds the same columns; summary.json keeps every metric.
+/// A misspelled metric is refused naming the field and the nearest name, before anything runs.
+#[test]
+fn the_metrics_chosen_are_the_tables_columns() {
+    let tmp = tempfile::tempdir().unwrap();
+    let full = tmp.path().join("full");
+    let o = RunOptions::default();
+    assert!(run_paths(&[sweep_file(tmp.path(), false)], &full, o.clone())
+        .failures
+        .is_empty());
+    let chosen = ["power_loss_mean", "mechanical_efficiency", "total_crank_pin_force_max"];
+    let with_metrics = |folders: bool, list: &str| {
+        let file = sweep_file(tmp.path(), folders);
+        let text = std::fs::read_to_string(&file).unwrap().replacen(
+            "[output]",
+            &format!("[output]\nmetrics = [{list}]"),
+            1,
+        );
+        std::fs::write(&file, text).unwrap();
+        file
+    };
+    let list = chosen.map(|m| format!("\"{m}\"")).join(", ");
+    let few = tmp.path().join("few");
+    let r = run_paths(&[with_metrics(false, &list)], &few, o.clone());
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    let header = |dir: &Path| -> Value {
+        serde_json::from_str(&std::fs::read_to_string(dir.join("t/sweep.json")).unwrap()).unwrap()
+    };
+    let (all, some) = (header(&full), header(&few));
+    let names = |h: &Value| -> Vec<String> {
+        h["columns"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c["name"].as_str().unwrap().to_string())
+            .collect()
+    };
+    // The summary's order: the full table's columns that are chosen.
+    let expected: Vec<String> = all["columns"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|c| {
+            let name = c["name"].as_str().unwrap();
+            c["dtype"] != "<f8" || chosen.iter().any(|m| name.ends_with(&format!(".{m}")))
+        })
+        .map(|c| c["name"].as_str().unwrap().to_string())
+        .collect();
+    let mut wanted = vec!["case".to_string()];
+    wanted.extend(["motion.initial_speed", "geometry.rod_length"].map(String::from));
+    for mechanism in ["slider_crank", "cardan_gear"] {
+        for m in chosen {
+            assert!(expected.contains(&format!("{mechanism}.{m}")), "{expected:?}");
+        }
+    }
+    assert_eq!(expected.len(), wanted.len() + 2 * chosen.len(), "{expected:?}");
+    assert_eq!(names(&some), expected);
+    for c in &expected {
+        let file = format!("t/columns/{c}.npy");
+        let (a, b) = (read_npy(&full.join(&file)), read_npy(&few.join(&file)));
+        assert_eq!(a, b, "{c}");
+    }
+    assert_eq!(std::fs::read_dir(few.join("t/columns")).unwrap().count(), expected.len());
+    // With case folders: sweep.csv's columns are the same; each point's summary is whole.
+    let folders = tmp.path().join("folders");
+    let r = run_paths(&[with_metrics(true, &list)], &folders, o.clone());
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    let mut csv = csv::Reader::from_path(folders.join("t/sweep.csv")).unwrap();
+    let header: Vec<String> = csv.headers().unwrap().iter().map(String::from).collect();
+    assert_eq!(header, expected);
+    let point = &r.written[0].1;
+    let summary = std::fs::read_to_string(point.join("summary.json")).unwrap();
+    assert!(summary.contains("\"loss_work\""), "summary.json keeps every metric");
+
+    // Misspelled: refused, nothing run.
+    let bad = tmp.path().join("bad");
+    let r = run_paths(&[with_metrics(false, "\"mechanical_efficency\"")], &bad, o);
+    let said = r.failures.join("\n");
+    assert!(
+        said.contains("output.metrics = \"mechanical_efficency\"")
+            && said.contains("did you mean \"mechanical_efficiency\""),
+        "{said}"
+    );
+    assert!(r.sweeps.is_empty() && !bad.join("t").exists());
+}

@@ -158,6 +158,8 @@ struct Table<'a> {
     first_columns: Option<usize>,
     /// A shard's part of the table: every metric a column.
     part: bool,
+    /// The metrics written (`[output] metrics`); None: every metric.
+    only: Option<Arc<[String]>>,
     failed: Vec<serde_json::Value>,
     warned: bool,
 }
@@ -184,9 +186,11 @@ impl Table<'_> {
                 return self.nan_row();
             }
         };
+        let only = self.only.clone();
+        let wanted = |m: &&cardan_dynamics::Metric| only.as_ref().is_none_or(|o| o.contains(&m.name));
         if self.metrics.is_empty() || self.part {
             for r in &results {
-                for m in &r.summary.metrics {
+                for m in r.summary.metrics.iter().filter(wanted) {
                     let name = format!("{}.{}", r.label, m.name);
                     if self.metrics.iter().all(|c| c.name != name) {
                         let mut c = Column::create(self.dir, &name, None, self.rows)?;
@@ -204,7 +208,7 @@ impl Table<'_> {
         let mut values = vec![f64::NAN; self.metrics.len()];
         let mut filled = vec![false; self.metrics.len()];
         for r in &results {
-            for m in &r.summary.metrics {
+            for m in r.summary.metrics.iter().filter(wanted) {
                 let name = format!("{}.{}", r.label, m.name);
                 match self.metrics.iter().position(|c| c.name == name) {
                     // The first of a name, as in sweep.csv.
@@ -354,6 +358,7 @@ pub(super) fn run_table(
             next: first_row,
             first_columns: None,
             part: table.range.is_some(),
+            only: table.first.table_metrics.clone(),
             failed: Vec::new(),
             warned: false,
         };
