@@ -20,8 +20,7 @@ fn needs(def: &MetricDef, computed: &Computed) -> Option<&'static str> {
     let within = |part: &[MetricDef]| part.contains(def);
     if within(metrics::GEAR_RATING) && !computed.gear {
         Some("a gear-rating metric: needs a [gear] table")
-    } else if (within(metrics::LOSSES) || within(metrics::ENGINE_FRICTION)) && !computed.friction
-    {
+    } else if (within(metrics::LOSSES) || within(metrics::ENGINE_FRICTION)) && !computed.friction {
         Some("a loss metric: needs a [friction] table")
     } else if (within(metrics::GAS) || within(metrics::GAS_MODEL)) && !computed.gas {
         Some("a gas metric: needs a [gas] table")
@@ -64,7 +63,11 @@ pub(crate) fn build(
             return Err(invalid(FIELD, &value, &rule));
         };
         if let Some(why) = needs(def, computed) {
-            return Err(invalid(FIELD, &value, &format!("{why}: this case does not compute it")));
+            return Err(invalid(
+                FIELD,
+                &value,
+                &format!("{why}: this case does not compute it"),
+            ));
         }
         if listed[..i].contains(name) {
             return Err(invalid(FIELD, &value, "is listed twice"));
@@ -100,7 +103,11 @@ mod tests {
             gear: true,
             dynamic: false,
         };
-        let ok = ["mechanical_efficiency", "power_loss_mean", "total_crank_pin_force_max"];
+        let ok = [
+            "mechanical_efficiency",
+            "power_loss_mean",
+            "total_crank_pin_force_max",
+        ];
         assert_eq!(check(&ok, &all), Ok(3));
         let e = check(&["mechanical_efficency"], &all).unwrap_err();
         assert!(
@@ -118,7 +125,9 @@ mod tests {
         };
         let e = check(&["mechanical_efficiency"], &bare).unwrap_err();
         assert!(e.contains("[friction]"), "{e}");
-        assert!(check(&["speed_mean"], &all).unwrap_err().contains("dynamic"));
+        assert!(check(&["speed_mean"], &all)
+            .unwrap_err()
+            .contains("dynamic"));
         assert!(check(&["power_loss_mean", "power_loss_mean"], &all)
             .unwrap_err()
             .contains("twice"));

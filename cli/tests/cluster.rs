@@ -184,7 +184,11 @@ fn a_table_sweep_in_three_shards_merges_into_one_run() {
     std::fs::write(&file, bad).unwrap();
     let out = run(&["check".as_ref(), file.as_os_str()]);
     assert_eq!(out.status.code(), Some(1), "{out:?}");
-    let said = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let said = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(
         said.contains("output.metrics = \"power_loss_men\"")
             && said.contains("did you mean \"power_loss_mean\""),
@@ -238,8 +242,15 @@ fn a_table_sweep_in_three_shards_merges_into_one_run() {
     let out = merge(&shard_refs, &refused);
     assert_eq!(out.status.code(), Some(1), "{out:?}");
     let said = String::from_utf8_lossy(&out.stderr);
-    assert!(said.contains("missing") && said.contains("shard 2"), "{said}");
-    assert!(!refused.exists(), "a refused merge wrote {}", refused.display());
+    assert!(
+        said.contains("missing") && said.contains("shard 2"),
+        "{said}"
+    );
+    assert!(
+        !refused.exists(),
+        "a refused merge wrote {}",
+        refused.display()
+    );
 }
 
 /// A shard run again into its folder (a Slurm task requeued) and killed before its end: its

@@ -178,9 +178,15 @@ fn a_table_split_over_three_shards_merges_into_the_single_run() {
     for w in ranges.windows(2) {
         assert_eq!(w[0].1, w[1].0, "{ranges:?}");
     }
-    assert!(ranges.iter().all(|(a, b)| (26..=27).contains(&(b - a))), "{ranges:?}");
+    assert!(
+        ranges.iter().all(|(a, b)| (26..=27).contains(&(b - a))),
+        "{ranges:?}"
+    );
     let merged = tmp.path().join("merged");
-    let r = merge(&[shards[1].clone(), shards[2].clone(), shards[0].clone()], &merged);
+    let r = merge(
+        &[shards[1].clone(), shards[2].clone(), shards[0].clone()],
+        &merged,
+    );
     assert!(r.failures.is_empty(), "{:?}", r.failures);
     assert_eq!(r.sweeps[0].2, 80);
     let same = std::process::Command::new("diff")
@@ -223,10 +229,16 @@ fn the_metrics_chosen_are_the_tables_columns() {
     let tmp = tempfile::tempdir().unwrap();
     let full = tmp.path().join("full");
     let o = RunOptions::default();
-    assert!(run_paths(&[sweep_file(tmp.path(), false)], &full, o.clone())
-        .failures
-        .is_empty());
-    let chosen = ["power_loss_mean", "mechanical_efficiency", "total_crank_pin_force_max"];
+    assert!(
+        run_paths(&[sweep_file(tmp.path(), false)], &full, o.clone())
+            .failures
+            .is_empty()
+    );
+    let chosen = [
+        "power_loss_mean",
+        "mechanical_efficiency",
+        "total_crank_pin_force_max",
+    ];
     let with_metrics = |folders: bool, list: &str| {
         let file = sweep_file(tmp.path(), folders);
         let text = std::fs::read_to_string(&file).unwrap().replacen(
@@ -268,17 +280,27 @@ fn the_metrics_chosen_are_the_tables_columns() {
     wanted.extend(["motion.initial_speed", "geometry.rod_length"].map(String::from));
     for mechanism in ["slider_crank", "cardan_gear"] {
         for m in chosen {
-            assert!(expected.contains(&format!("{mechanism}.{m}")), "{expected:?}");
+            assert!(
+                expected.contains(&format!("{mechanism}.{m}")),
+                "{expected:?}"
+            );
         }
     }
-    assert_eq!(expected.len(), wanted.len() + 2 * chosen.len(), "{expected:?}");
+    assert_eq!(
+        expected.len(),
+        wanted.len() + 2 * chosen.len(),
+        "{expected:?}"
+    );
     assert_eq!(names(&some), expected);
     for c in &expected {
         let file = format!("t/columns/{c}.npy");
         let (a, b) = (read_npy(&full.join(&file)), read_npy(&few.join(&file)));
         assert_eq!(a, b, "{c}");
     }
-    assert_eq!(std::fs::read_dir(few.join("t/columns")).unwrap().count(), expected.len());
+    assert_eq!(
+        std::fs::read_dir(few.join("t/columns")).unwrap().count(),
+        expected.len()
+    );
     // With case folders: sweep.csv's columns are the same; each point's summary is whole.
     let folders = tmp.path().join("folders");
     let r = run_paths(&[with_metrics(true, &list)], &folders, o.clone());
@@ -288,7 +310,10 @@ fn the_metrics_chosen_are_the_tables_columns() {
     assert_eq!(header, expected);
     let point = &r.written[0].1;
     let summary = std::fs::read_to_string(point.join("summary.json")).unwrap();
-    assert!(summary.contains("\"loss_work\""), "summary.json keeps every metric");
+    assert!(
+        summary.contains("\"loss_work\""),
+        "summary.json keeps every metric"
+    );
 
     // Misspelled: refused, nothing run.
     let bad = tmp.path().join("bad");

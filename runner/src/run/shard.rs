@@ -48,7 +48,11 @@ pub type Range = (usize, usize, usize);
 /// [`assignment`]'s rule; then each larger table, in order, is split into contiguous ranges
 /// that fill the shards' costs up to one level ([`fill`]), shard 1 taking the first range,
 /// shard 2 the next, and so on (a shard already above the level takes none).
-pub(super) fn assign(cases: &[Case], tables: &[TableSweep], n: usize) -> (Vec<usize>, Vec<Vec<Range>>) {
+pub(super) fn assign(
+    cases: &[Case],
+    tables: &[TableSweep],
+    n: usize,
+) -> (Vec<usize>, Vec<Vec<Range>>) {
     let n = n.max(1);
     let mut points: std::collections::HashMap<&str, usize> = Default::default();
     for c in cases {

@@ -187,7 +187,8 @@ impl Table<'_> {
             }
         };
         let only = self.only.clone();
-        let wanted = |m: &&cardan_dynamics::Metric| only.as_ref().is_none_or(|o| o.contains(&m.name));
+        let wanted =
+            |m: &&cardan_dynamics::Metric| only.as_ref().is_none_or(|o| o.contains(&m.name));
         if self.metrics.is_empty() || self.part {
             for r in &results {
                 for m in r.summary.metrics.iter().filter(wanted) {
@@ -241,7 +242,11 @@ impl Table<'_> {
     /// Flushes the columns and writes `sweep.json`; a shard's part (`part`: its range of the
     /// sweep's `points`) also records its range and how many metric columns its first point
     /// that ran gave.
-    fn finish(self, sweep: &str, part: Option<(&std::ops::Range<usize>, usize)>) -> anyhow::Result<()> {
+    fn finish(
+        self,
+        sweep: &str,
+        part: Option<(&std::ops::Range<usize>, usize)>,
+    ) -> anyhow::Result<()> {
         let mut columns = Vec::new();
         for mut c in self.text.into_iter().chain(self.metrics) {
             c.file.flush()?;
