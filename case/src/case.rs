@@ -514,14 +514,9 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     if dynamics.is_some() {
         solved_friction(&setups, &invalid)?;
     }
-    let computed = crate::output_metrics::Computed {
-        gas: gas.is_some(),
-        friction: friction.is_some(),
-        gear: gear.is_some(),
-        dynamic: dynamics.is_some(),
-    };
-    let table_metrics =
-        crate::output_metrics::build(raw.output.metrics.as_deref(), &computed, &invalid)?;
+    let computed = crate::output_metrics::Computed::of(&gas, &friction, &gear, &dynamics);
+    let listed = raw.output.metrics.as_deref();
+    let table_metrics = crate::output_metrics::build(listed, &computed, &invalid)?;
     Ok(Case {
         file: file.into(),
         name: raw.name.0,

@@ -15,6 +15,24 @@ pub(crate) struct Computed {
     pub dynamic: bool,
 }
 
+impl Computed {
+    /// What a case with these tables (`[gas]`, `[friction]`, `[gear]`, a solved motion)
+    /// computes.
+    pub fn of<G, F, R, D>(
+        gas: &Option<G>,
+        friction: &Option<F>,
+        gear: &Option<R>,
+        dynamics: &Option<D>,
+    ) -> Self {
+        Self {
+            gas: gas.is_some(),
+            friction: friction.is_some(),
+            gear: gear.is_some(),
+            dynamic: dynamics.is_some(),
+        }
+    }
+}
+
 /// The table of the registry a metric needs, and the case-file table that makes it computed.
 fn needs(def: &MetricDef, computed: &Computed) -> Option<&'static str> {
     let within = |part: &[MetricDef]| part.contains(def);
