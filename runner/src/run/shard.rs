@@ -30,7 +30,7 @@ pub fn cost(case: &Case) -> u128 {
 /// the lowest): Graham's longest-processing-time rule (R. L. Graham, "Bounds on
 /// multiprocessing timing anomalies", SIAM J. Appl. Math. 17 (1969) 416-429: within 4/3 of the
 /// best split). The points of a sweep written as a table (no case folders) are split into
-/// contiguous ranges ([`assign`]). The same cases give the same parts on every machine.
+/// contiguous ranges (`assign`). The same cases give the same parts on every machine.
 pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
     assign(cases, &[], n).0
 }
@@ -196,7 +196,7 @@ pub struct Manifest {
     /// written as a table is in `tables`).
     pub cases: Vec<(String, Option<String>, usize)>,
     /// Every sweep written as a table: its name, its points, and the ranges of points each
-    /// shard runs ([`assign`]), in order.
+    /// shard runs (`assign`), in order.
     pub tables: Vec<(String, usize, Vec<Range>)>,
     /// The failures this shard met (the batch's unreadable case files, its failed cases).
     pub failures: Vec<String>,
