@@ -33,7 +33,12 @@ pub(super) fn parts(
 ) -> Result<Vec<Part>, String> {
     let mut parts = Vec::new();
     for &(start, end, k) in ranges {
-        let dir = shard_dirs[k - 1].join(sweep);
+        let Some(shard) = k.checked_sub(1).and_then(|i| shard_dirs.get(i)) else {
+            return Err(format!(
+                "sweep \"{sweep}\": points {start}..{end} of shard {k}?"
+            ));
+        };
+        let dir = shard.join(sweep);
         let file = dir.join("sweep.json");
         let header: Value = std::fs::read_to_string(&file)
             .ok()
