@@ -50,7 +50,7 @@ impl Default for OutputOptions {
 }
 
 /// A validated case.
-#[derive(Debug, Clone)]
+#[derive(Clone)]
 pub struct Case {
     pub file: PathBuf,
     pub name: String,
@@ -84,6 +84,9 @@ pub struct Case {
     /// `None`: the crank follows `motion`.
     pub dynamics: Option<crate::machine_motion::Dynamics>,
     pub output: OutputOptions,
+    /// `[output] metrics`: the summary metrics a sweep's table holds, each mechanism's, in the
+    /// summary's order (None: every metric); summary.json holds every metric whatever it says.
+    pub table_metrics: Option<Arc<[String]>>,
     /// The machine's layout and balancing devices (`[layout]`, `[balance]`; default: one
     /// cylinder, none).
     pub balance: cardan_balance::MachineBalance,
@@ -198,6 +201,12 @@ pub struct OutputTable {
     /// folders, no per-step files), for sweeps of many points. Default: true up to 10 000
     /// points, false above. Not read outside a sweep.
     pub case_folders: Option<bool>,
+    /// The summary metrics written as the sweep table's columns, for each mechanism (a sweep
+    /// written as a table: columns/*.npy; with case folders: sweep.csv), e.g.
+    /// ["mechanical_efficiency", "power_loss_mean"]: names of the metric table of
+    /// docs/results.md, `{joint}`, `{body}`, ... filled in ("total_crank_pin_force_max").
+    /// Default: every metric. summary.json always holds every metric.
+    pub metrics: Option<Vec<String>>,
 }
 
 fn yes() -> bool {
@@ -212,6 +221,7 @@ impl Default for OutputTable {
             decimation: None,
             significant_digits: None,
             case_folders: None,
+            metrics: None,
         }
     }
 }
@@ -504,6 +514,9 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     if dynamics.is_some() {
         solved_friction(&setups, &invalid)?;
     }
+    let computed = crate::output_metrics::Computed::of(&gas, &friction, &gear, &dynamics);
+    let listed = raw.output.metrics.as_deref();
+    let table_metrics = crate::output_metrics::build(listed, &computed, &invalid)?;
     Ok(Case {
         file: file.into(),
         name: raw.name.0,
@@ -521,9 +534,41 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         setups,
         dynamics,
         output: (&raw.output).into(),
+        table_metrics,
         balance,
         sweep: None,
     })
+}
+
+/// As derived, but `table_metrics` only where given: the runner's input hash of a case (its
+/// `Debug` text, `run.json`) is the same as before the field was added for every case without
+/// `[output] metrics`, so their folders and records do not change.
+impl std::fmt::Debug for Case {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut d = f.debug_struct("Case");
+        d.field("file", &self.file)
+            .field("name", &self.name)
+            .field("machine", &self.machine)
+            .field("geometry", &self.geometry)
+            .field("pistons", &self.pistons)
+            .field("crank_phase", &self.crank_phase)
+            .field("motion", &self.motion)
+            .field("end_angle", &self.end_angle)
+            .field("steps", &self.steps)
+            .field("mechanisms", &self.mechanisms)
+            .field("gas", &self.gas)
+            .field("friction", &self.friction)
+            .field("gear", &self.gear)
+            .field("setups", &self.setups)
+            .field("dynamics", &self.dynamics)
+            .field("output", &self.output);
+        if let Some(metrics) = &self.table_metrics {
+            d.field("table_metrics", metrics);
+        }
+        d.field("balance", &self.balance)
+            .field("sweep", &self.sweep)
+            .finish()
+    }
 }
 
 /// Refuses the loss models a solved motion cannot take among its torques: those whose loss at

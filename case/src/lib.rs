@@ -13,6 +13,7 @@ pub mod json_schema;
 pub mod machine_motion;
 pub mod masses;
 pub mod mechanism_table;
+mod output_metrics;
 pub mod quantity;
 pub mod schema;
 pub mod setup;

@@ -371,8 +371,20 @@ fn main() -> ExitCode {
         Command::Merge { dirs, out } => {
             let started = std::time::Instant::now();
             let report = cardan_runner::run::merge(&dirs, &out);
+            // The sweeps written as tables: their points are rows, not cases.
+            let tables: Vec<usize> = (report.sweeps.iter())
+                .filter(|(_, dir, _)| dir.join("sweep.json").is_file())
+                .map(|(_, _, points)| *points)
+                .collect();
+            let rows = match tables.len() {
+                0 => String::new(),
+                t => format!(
+                    " and {} point(s) of {t} sweep table(s)",
+                    tables.iter().sum::<usize>()
+                ),
+            };
             println!(
-                "{} case(s) merged into {} from {} shard(s), {} failed, in {:.2} s",
+                "{} case(s){rows} merged into {} from {} shard(s), {} failed, in {:.2} s",
                 report.written.len(),
                 out.display(),
                 dirs.len(),

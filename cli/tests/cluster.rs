@@ -166,6 +166,93 @@ fn shards_from_the_command_line_merge_into_one_run() {
     }
 }
 
+/// A sweep written as a table (`case_folders = false`) split over 3 shards from the command
+/// line, as the Slurm tasks run them (`--shard K/3 --resume`): each shard writes a range of its
+/// rows, the merge equals the single run byte for byte; a shard run again with `--resume` gives
+/// the same; a shard's part missing is refused (exit 1) naming the points, nothing written.
+/// (And `cardan check` refuses the sweep with a misspelled `[output] metrics`.)
+#[test]
+fn a_table_sweep_in_three_shards_merges_into_one_run() {
+    let tmp = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(configs().join("sweeps/karhula-pump-map-speed-rod.toml"))
+        .unwrap()
+        .replacen("[output]", "[output]\ncase_folders = false", 1);
+    assert!(text.contains("case_folders = false"));
+    let file = tmp.path().join("map.toml");
+    // `cardan check` refuses a misspelled `[output] metrics`, naming the nearest metric.
+    let bad = text.replacen("[output]", "[output]\nmetrics = [\"power_loss_men\"]", 1);
+    std::fs::write(&file, bad).unwrap();
+    let out = run(&["check".as_ref(), file.as_os_str()]);
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let said = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        said.contains("output.metrics = \"power_loss_men\"")
+            && said.contains("did you mean \"power_loss_mean\""),
+        "{said}"
+    );
+    std::fs::write(&file, text).unwrap();
+    let single = tmp.path().join("single");
+    let out = run(&[
+        "run".as_ref(),
+        file.as_os_str(),
+        "--out".as_ref(),
+        single.as_os_str(),
+        "--quiet".as_ref(),
+    ]);
+    assert!(out.status.success(), "{out:?}");
+    let shards: Vec<PathBuf> = (1..=3).map(|k| tmp.path().join(format!("s{k}"))).collect();
+    let shard_run = |k: usize| {
+        let spec = format!("{k}/3");
+        let out = run(&[
+            "run".as_ref(),
+            file.as_os_str(),
+            "--out".as_ref(),
+            shards[k - 1].as_os_str(),
+            "--quiet".as_ref(),
+            "--resume".as_ref(),
+            "--shard".as_ref(),
+            spec.as_ref(),
+        ]);
+        assert!(out.status.success(), "{out:?}");
+    };
+    for k in 1..=3 {
+        shard_run(k);
+    }
+    let sweep = "karhula-pump-map-speed-rod";
+    for s in &shards {
+        let part = std::fs::read_to_string(s.join(sweep).join("sweep.json")).unwrap();
+        assert!(part.contains("\"range\""), "{part}");
+    }
+    let shard_refs: Vec<&Path> = shards.iter().map(PathBuf::as_path).collect();
+    let merged = tmp.path().join("merged");
+    let out = merge(&shard_refs, &merged);
+    assert!(out.status.success(), "{out:?}");
+    assert_same(&single, &merged, "merged table");
+    shard_run(2);
+    let again = tmp.path().join("again");
+    let out = merge(&shard_refs, &again);
+    assert!(out.status.success(), "{out:?}");
+    assert_same(&single, &again, "merged after a shard ran again");
+    std::fs::remove_dir_all(shards[1].join(sweep)).unwrap();
+    let refused = tmp.path().join("refused");
+    let out = merge(&shard_refs, &refused);
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let said = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        said.contains("missing") && said.contains("shard 2"),
+        "{said}"
+    );
+    assert!(
+        !refused.exists(),
+        "a refused merge wrote {}",
+        refused.display()
+    );
+}
+
 /// A shard run again into its folder (a Slurm task requeued) and killed before its end: its
 /// old `shard.json` is gone before the rerun replaces anything, so `cardan merge` refuses the
 /// folder as unfinished instead of vouching for a mix of old and new outputs by the old record.

@@ -67,7 +67,8 @@ pub fn run_sweep(cases: &[Case]) -> Vec<Result<Vec<MechanismResult>, String>> {
 
 /// The table of a sweep's points, column by column: the columns of `sweep.csv` (the point's
 /// name, the value of each swept field as written, then every summary metric of every crank
-/// train, `<label>.<metric>`, in SI, in the order they first appear), a metric a point lacks NaN.
+/// train, `<label>.<metric>`, in SI, in the order they first appear; those of `[output]
+/// metrics` if given), a metric a point lacks NaN.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct SweepTable {
     /// Each point's case name.
@@ -94,8 +95,10 @@ impl SweepTable {
             for ((_, column), (_, value)) in table.swept.iter_mut().zip(values) {
                 column.push(value.clone());
             }
+            let only = case.table_metrics.as_deref();
             for r in *results {
-                for m in &r.summary.metrics {
+                let wanted = r.summary.metrics.iter();
+                for m in wanted.filter(|m| only.is_none_or(|o| o.contains(&m.name))) {
                     let k = *index
                         .entry((r.label.as_str(), m.name.as_str()))
                         .or_insert_with(|| {

@@ -22,6 +22,7 @@ mod size;
 pub mod stamp;
 mod sweeps;
 mod table;
+mod table_merge;
 mod train;
 
 pub use batch::{run_paths, worker_threads};

@@ -74,7 +74,7 @@ pub(super) fn run_and_write(
             .filter_map(|(r, s)| Some((r.label.clone(), s?)))
             .collect();
         let cells = if case.sweep.is_some() {
-            stamp::cells(&results)
+            stamp::cells(&results, case.table_metrics.as_deref())
         } else {
             Vec::new()
         };

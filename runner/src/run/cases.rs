@@ -97,6 +97,7 @@ fn load_entry(file: &Path) -> Result<Entry, CaseError> {
             sweep: Arc::new(sweep),
             first,
             selected: None,
+            range: None,
         })));
     }
     if n > MAX_EXPANDED {

@@ -2,13 +2,15 @@
 //! into what one run of the batch writes: each case's folder copied whole (its files
 //! hard-linked where the file system allows), each sweep's folder
 //! made of its points' folders with its `sweep.csv` (from the points' records, `run.json`)
-//! and report, and the index. Shards of other inputs, another program or an incomplete set
+//! and report, each sweep written as a table joined from its shards' ranges of points
+//! (`table_merge.rs`), and the index. Shards of other inputs, another program or an incomplete set
 //! are refused before anything is written.
 
 use super::options::Report;
 use super::shard::{Manifest, MANIFEST};
 use super::stamp::{self, PROGRAM};
 use super::sweeps::{sweep_csv, Point};
+use super::table_merge;
 use anyhow::Context;
 use cardan_report::files;
 use std::collections::BTreeMap;
@@ -69,7 +71,11 @@ fn manifests(dirs: &[PathBuf]) -> Result<Vec<Manifest>, String> {
                 m.program
             ));
         }
-        if m.inputs_hash != first.inputs_hash || m.shard.1 != n || m.cases != first.cases {
+        if m.inputs_hash != first.inputs_hash
+            || m.shard.1 != n
+            || m.cases != first.cases
+            || m.tables != first.tables
+        {
             return Err(format!(
                 "{} and {}: shards of different inputs (case files, options or shard count): they cannot be merged",
                 dirs[0].display(),
@@ -118,6 +124,17 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
     for (dir, m) in dirs.iter().zip(&all) {
         by_shard[m.shard.0 - 1] = dir;
     }
+    // The tables' parts, each range of points once: checked before anything is written.
+    let mut tables = Vec::new();
+    for (sweep, points, ranges) in &all[0].tables {
+        match table_merge::parts(sweep, *points, ranges, &by_shard) {
+            Ok(parts) => tables.push((sweep, parts)),
+            Err(e) => {
+                report.failures.push(format!("cannot merge: {e}"));
+                return report;
+            }
+        }
+    }
     for m in &all {
         for f in &m.failures {
             if !report.failures.contains(f) {
@@ -163,42 +180,20 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
             }
         }
     }
+    for (sweep, parts) in tables {
+        // A sweep written as a table: its shards' ranges of points joined.
+        let dir = out.join(sweep);
+        match table_merge::merge_table(sweep, &parts, &dir) {
+            Ok(0) => {}
+            Ok(ran) => report.sweeps.push((sweep.clone(), dir, ran)),
+            Err(e) => report.failures.push(format!(
+                "sweep \"{sweep}\": cannot write its table to {}: {e:#}",
+                dir.display()
+            )),
+        }
+    }
     for (sweep, points) in sweeps {
         let dir = out.join(sweep);
-        // A sweep written as a table: whole, by one shard (one entry of the records).
-        if let Some(from) = points
-            .first()
-            .map(|(_, shard)| shard.join(sweep))
-            .filter(|from| from.join("sweep.json").is_file())
-        {
-            let copied = files::temporary_dir(&dir).and_then(|tmp| {
-                copy_dir(&from, &tmp)
-                    .with_context(|| format!("copy {}", from.display()))
-                    .and_then(|()| files::replace_dir(&tmp, &dir))
-                    .inspect_err(|_| {
-                        let _ = std::fs::remove_dir_all(&tmp);
-                    })
-            });
-            match copied {
-                Ok(()) => {
-                    // Its points that ran: the table's rows but the failed ones.
-                    let header: Option<serde_json::Value> =
-                        std::fs::read_to_string(dir.join("sweep.json"))
-                            .ok()
-                            .and_then(|t| serde_json::from_str(&t).ok());
-                    let ran = header.map_or(0, |h| {
-                        let rows = h["rows"].as_u64().unwrap_or(0) as usize;
-                        rows.saturating_sub(h["failed"].as_array().map_or(0, Vec::len))
-                    });
-                    report.sweeps.push((sweep.to_string(), dir, ran))
-                }
-                Err(e) => report.failures.push(format!(
-                    "sweep \"{sweep}\": cannot write {}: {e:#}",
-                    dir.display()
-                )),
-            }
-            continue;
-        }
         match merge_sweep(sweep, &points, &dir, first.reports) {
             Ok(written) if written.is_empty() => {}
             Ok(written) => {

@@ -29,17 +29,30 @@ pub fn cost(case: &Case) -> u128 {
 /// [`cost`] (ties in their order), each given to the shard with the least cost so far (ties to
 /// the lowest): Graham's longest-processing-time rule (R. L. Graham, "Bounds on
 /// multiprocessing timing anomalies", SIAM J. Appl. Math. 17 (1969) 416-429: within 4/3 of the
-/// best split). The points of a sweep written as a table (no case folders) go together, as
-/// one: its table is written whole by one shard. The same cases give the same parts on every
-/// machine.
+/// best split). The points of a sweep written as a table (no case folders) are split into
+/// contiguous ranges (`assign`). The same cases give the same parts on every machine.
 pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
     assign(cases, &[], n).0
 }
 
-/// The shard (from 1) of each of `cases` and of each sweep of `tables` (a sweep written as a
-/// table, one unit of its points' cost: the first point's [`cost`] times its points), by
-/// [`assignment`]'s rule, the tables after the cases in the order of ties.
-pub(super) fn assign(cases: &[Case], tables: &[TableSweep], n: usize) -> (Vec<usize>, Vec<usize>) {
+/// A table sweep of fewer points goes whole to one shard (one unit of [`assignment`]'s rule):
+/// its ranges would be too small to be worth a table each.
+pub const SPLIT_FROM: usize = 64;
+
+/// The points `start..end` of a table sweep, run by shard `shard` (from 1).
+pub type Range = (usize, usize, usize);
+
+/// The shard (from 1) of each of `cases`, and the ranges of points of each sweep of `tables`
+/// (a sweep written as a table). The cases, and each table of fewer than [`SPLIT_FROM`] points
+/// (one unit of its points' cost: the first point's [`cost`] times its points), are dealt by
+/// [`assignment`]'s rule; then each larger table, in order, is split into contiguous ranges
+/// that fill the shards' costs up to one level ([`fill`]), shard 1 taking the first range,
+/// shard 2 the next, and so on (a shard already above the level takes none).
+pub(super) fn assign(
+    cases: &[Case],
+    tables: &[TableSweep],
+    n: usize,
+) -> (Vec<usize>, Vec<Vec<Range>>) {
     let n = n.max(1);
     let mut points: std::collections::HashMap<&str, usize> = Default::default();
     for c in cases {
@@ -68,7 +81,8 @@ pub(super) fn assign(cases: &[Case], tables: &[TableSweep], n: usize) -> (Vec<us
         units[u].1.push(i);
         units[u].2 += cost(c);
     }
-    for (t, table) in tables.iter().enumerate() {
+    let split = |t: &TableSweep| t.points() >= SPLIT_FROM && n > 1;
+    for (t, table) in tables.iter().enumerate().filter(|(_, t)| !split(t)) {
         let i = cases.len() + t;
         units.push((i, vec![i], cost(&table.first) * table.points() as u128));
     }
@@ -82,8 +96,57 @@ pub(super) fn assign(cases: &[Case], tables: &[TableSweep], n: usize) -> (Vec<us
             shard_of[i] = k + 1;
         }
     }
-    let tables_of = shard_of.split_off(cases.len());
-    (shard_of, tables_of)
+    let whole = shard_of.split_off(cases.len());
+    let ranges = tables
+        .iter()
+        .zip(whole)
+        .map(|(t, k)| {
+            if !split(t) {
+                return vec![(0, t.points(), k)];
+            }
+            let per_point = cost(&t.first).max(1);
+            let amounts = fill(&mut load, per_point * t.points() as u128);
+            let (mut sum, mut start) = (0u128, 0usize);
+            let mut ranges = Vec::new();
+            for (k, a) in amounts.into_iter().enumerate() {
+                sum += a;
+                // The boundary nearest the cost so far; the last is the points' count.
+                let end = ((sum + per_point / 2) / per_point).min(t.points() as u128) as usize;
+                if end > start {
+                    ranges.push((start, end, k + 1));
+                    start = end;
+                }
+            }
+            ranges
+        })
+        .collect();
+    (shard_of, ranges)
+}
+
+/// Water-filling: shares of `total` (each shard's, summing to `total`) that raise the lowest
+/// of `load` to one level (the lowest-loaded first; what does not divide evenly one unit more
+/// to the lowest-loaded), added to `load`. Integers: the same on every machine.
+fn fill(load: &mut [u128], total: u128) -> Vec<u128> {
+    let n = load.len();
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by_key(|&k| (load[k], k));
+    // The m lowest are filled: raising them to the next load would take `total` or more.
+    let (mut m, mut sum) = (0, 0u128);
+    while m < n {
+        let next = load[order[m]];
+        if m > 0 && m as u128 * next - sum >= total {
+            break;
+        }
+        sum += next;
+        m += 1;
+    }
+    let (level, extra) = ((total + sum) / m as u128, (total + sum) % m as u128);
+    let mut amounts = vec![0u128; n];
+    for (i, &k) in order[..m].iter().enumerate() {
+        amounts[k] = level - load[k] + u128::from((i as u128) < extra);
+        load[k] += amounts[k];
+    }
+    amounts
 }
 
 /// Whether each of `cases` is in the K-th of `n` shards ([`assignment`]).
@@ -101,16 +164,20 @@ pub(super) fn take(
     failures: &[String],
 ) -> Manifest {
     let manifest = Manifest::new(cases, tables, (k, n), reports, failures);
-    let (mine, tables_mine) = assign(cases, tables, n);
+    let (mine, ranges) = assign(cases, tables, n);
     let mut index = 0;
     cases.retain(|_| {
         index += 1;
         mine[index - 1] == k
     });
-    let mut index = 0;
-    tables.retain(|_| {
-        index += 1;
-        tables_mine[index - 1] == k
+    // Each table's range of this shard (at most one: the ranges are dealt in shard order).
+    let mut ranges = ranges.into_iter();
+    tables.retain_mut(|t| {
+        let range = ranges
+            .next()
+            .and_then(|r| r.into_iter().find(|&(_, _, s)| s == k));
+        t.range = range.map(|(start, end, _)| start..end);
+        t.range.is_some()
     });
     manifest
 }
@@ -125,9 +192,12 @@ pub struct Manifest {
     /// (K, N).
     pub shard: (usize, usize),
     pub reports: bool,
-    /// (case name, its sweep, the shard that runs it) of every case of the batch; a sweep
-    /// written as a table is one entry, named as its sweep.
+    /// (case name, its sweep, the shard that runs it) of every case of the batch (a sweep
+    /// written as a table is in `tables`).
     pub cases: Vec<(String, Option<String>, usize)>,
+    /// Every sweep written as a table: its name, its points, and the ranges of points each
+    /// shard runs (`assign`), in order.
+    pub tables: Vec<(String, usize, Vec<Range>)>,
     /// The failures this shard met (the batch's unreadable case files, its failed cases).
     pub failures: Vec<String>,
 }
@@ -136,7 +206,7 @@ impl Manifest {
     /// The record of shard `k` of `n` of the batch `cases` and `tables` (as they run: after
     /// the command line's overrides); `failures` so far are the case files that could not be
     /// read, which change the inputs as much as the cases do. A sweep written as a table is
-    /// one entry (its name, as case and sweep), hashed by its definition and its first point.
+    /// hashed by its definition and its first point, and listed with its ranges.
     pub fn new(
         cases: &[Case],
         tables: &[TableSweep],
@@ -144,7 +214,7 @@ impl Manifest {
         reports: bool,
         failures: &[String],
     ) -> Self {
-        let (shards, table_shards) = assign(cases, tables, n);
+        let (shards, table_ranges) = assign(cases, tables, n);
         let mut hash = Fnv::default();
         hash.update(format!("{n} shards, reports {reports}").as_bytes());
         for f in failures {
@@ -160,23 +230,23 @@ impl Manifest {
                 .update(t.sweep.definition().as_bytes())
                 .update(format!("{} points", t.points()).as_bytes());
         }
-        let mut entries: Vec<(String, Option<String>, usize)> = cases
+        let entries: Vec<(String, Option<String>, usize)> = cases
             .iter()
             .zip(shards)
             .map(|(c, s)| (c.name.clone(), c.sweep.as_ref().map(|(s, _)| s.clone()), s))
             .collect();
-        entries.extend(
-            tables
-                .iter()
-                .zip(table_shards)
-                .map(|(t, s)| (t.sweep.name.clone(), Some(t.sweep.name.clone()), s)),
-        );
+        let tables = tables
+            .iter()
+            .zip(table_ranges)
+            .map(|(t, r)| (t.sweep.name.clone(), t.points(), r))
+            .collect();
         Self {
             program: PROGRAM.to_string(),
             inputs_hash: hash.hex(),
             shard: (k, n),
             reports,
             cases: entries,
+            tables,
             failures: Vec::new(),
         }
     }
@@ -190,6 +260,11 @@ impl Manifest {
             "shard": [self.shard.0, self.shard.1],
             "reports": self.reports,
             "cases": self.cases.iter().map(|(c, s, k)| json!([c, s, k])).collect::<Vec<_>>(),
+            "tables": self.tables.iter().map(|(sweep, points, ranges)| json!({
+                "sweep": sweep,
+                "points": points,
+                "ranges": ranges.iter().map(|(a, b, k)| json!([a, b, k])).collect::<Vec<_>>(),
+            })).collect::<Vec<_>>(),
             "failures": self.failures,
         });
         let mut text = serde_json::to_string_pretty(&record)?;
@@ -224,12 +299,27 @@ impl Manifest {
                 Ok((string(&c[0])?, sweep, number(&c[2])?))
             })
             .collect::<anyhow::Result<_>>()?;
+        let tables = v["tables"]
+            .as_array()
+            .ok_or_else(bad)?
+            .iter()
+            .map(|t| {
+                let ranges = t["ranges"]
+                    .as_array()
+                    .ok_or_else(bad)?
+                    .iter()
+                    .map(|r| Ok((number(&r[0])?, number(&r[1])?, number(&r[2])?)))
+                    .collect::<anyhow::Result<_>>()?;
+                Ok((string(&t["sweep"])?, number(&t["points"])?, ranges))
+            })
+            .collect::<anyhow::Result<_>>()?;
         Ok(Self {
             program: string(&v["program"])?,
             inputs_hash: string(&v["inputs_hash"])?,
             shard: (number(&v["shard"][0])?, number(&v["shard"][1])?),
             reports: v["reports"].as_bool().ok_or_else(bad)?,
             cases,
+            tables,
             failures: v["failures"]
                 .as_array()
                 .ok_or_else(bad)?
@@ -269,7 +359,34 @@ pub fn remove_record(out: &Path) -> Result<(), String> {
 
 #[cfg(test)]
 mod tests {
-    use super::parse_shard;
+    use super::{fill, parse_shard};
+
+    /// Water-filling: the lowest loads raised to one level, the shares summing to the total,
+    /// a shard above the level given nothing.
+    #[test]
+    fn fill_raises_the_lowest_loads_to_one_level() {
+        let mut load = vec![10, 0, 5];
+        assert_eq!(fill(&mut load, 20), vec![1, 12, 7]);
+        assert_eq!(load, vec![11, 12, 12]);
+        let mut load = vec![100, 0, 0];
+        assert_eq!(fill(&mut load, 10), vec![0, 5, 5]);
+        let mut load = vec![0; 4];
+        assert_eq!(fill(&mut load, 7), vec![2, 2, 2, 1]);
+        for total in [0, 1, 99, 1_000_001] {
+            let mut load = vec![3, 1_000, 7, 7, 0];
+            let before = load.clone();
+            let shares = fill(&mut load, total);
+            assert_eq!(shares.iter().sum::<u128>(), total);
+            let level = (0..5).filter(|&k| shares[k] > 0).map(|k| load[k]);
+            let (lo, hi) = (level.clone().min(), level.max());
+            assert!(hi.zip(lo).is_none_or(|(h, l)| h - l <= 1), "{load:?}");
+            for k in 0..5 {
+                if shares[k] == 0 {
+                    assert!(before[k] >= load.iter().copied().min().unwrap());
+                }
+            }
+        }
+    }
 
     #[test]
     fn shards_are_read_as_k_of_n() {

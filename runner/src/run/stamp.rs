@@ -67,8 +67,9 @@ pub fn input_hash(case: &Case, report: bool) -> String {
         .hex()
 }
 
-/// A sweep point's row of the sweep table: every metric of every crank train, in order.
-pub fn cells(results: &[MechanismResult]) -> Vec<Cell> {
+/// A sweep point's row of the sweep table: every metric of every crank train, in order, or
+/// those of `only` (`[output] metrics`).
+pub fn cells(results: &[MechanismResult], only: Option<&[String]>) -> Vec<Cell> {
     let mut buffer = zmij::Buffer::new();
     results
         .iter()
@@ -76,6 +77,7 @@ pub fn cells(results: &[MechanismResult]) -> Vec<Cell> {
             r.summary
                 .metrics
                 .iter()
+                .filter(|m| only.is_none_or(|o| o.contains(&m.name)))
                 .map(|m| (r.label.clone(), m.name.clone(), m.value))
                 .collect::<Vec<_>>()
         })

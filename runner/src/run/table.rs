@@ -48,17 +48,27 @@ pub struct TableSweep {
     pub first: Case,
     /// The points run, by index in increasing order (`--only`); None: every point.
     pub selected: Option<Vec<usize>>,
+    /// The points `start..end` a shard runs of it (`--shard K/N`, `shard.rs`), written as a
+    /// part of the table that `cardan merge` joins with the others (`table_merge.rs`); None:
+    /// the whole table.
+    pub range: Option<std::ops::Range<usize>>,
 }
 
 impl TableSweep {
     /// How many points a run of it writes.
     pub fn points(&self) -> usize {
-        self.selected.as_ref().map_or(self.sweep.len(), Vec::len)
+        match &self.range {
+            Some(r) => r.len(),
+            None => self.selected.as_ref().map_or(self.sweep.len(), Vec::len),
+        }
     }
 
     /// The index in the sweep of the j-th point a run of it writes.
     pub fn index(&self, j: usize) -> usize {
-        self.selected.as_ref().map_or(j, |s| s[j])
+        match &self.range {
+            Some(r) => r.start + j,
+            None => self.selected.as_ref().map_or(j, |s| s[j]),
+        }
     }
 
     /// Validates every point of the sweep as a run would before stepping it, 4096 (`CHECK_CHUNK`)
@@ -87,7 +97,7 @@ const CHECK_CHUNK: usize = 4096;
 /// The NPY 1.0 preamble of a one-dimensional array of `rows` values of type `descr` (NumPy's
 /// `numpy.lib.format`: magic, version, header length, the header dictionary padded with
 /// spaces to a multiple of 64 bytes and ended by a newline).
-fn npy_header(descr: &str, rows: usize) -> Vec<u8> {
+pub(super) fn npy_header(descr: &str, rows: usize) -> Vec<u8> {
     let dict = format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': ({rows},), }}");
     let len = (10 + dict.len() + 1).div_ceil(64) * 64;
     let mut h = b"\x93NUMPY\x01\x00".to_vec();
@@ -132,16 +142,24 @@ impl Column {
 
 /// The table's files as the rows come: the text columns from the start, the metric columns
 /// from the first point that ran (every point of a sweep has its metrics; a metric another
-/// point lacks is NaN there, one it adds is left out and said in the log).
+/// point lacks is NaN there, one it adds is left out and said in the log). A shard's part
+/// (`part`) adds a column for every metric some point of it has, NaN in the rows before: the
+/// merge takes the columns of the table's first point that ran, which may be in another part.
 struct Table<'a> {
     dir: &'a Path,
     rows: usize,
     text: Vec<Column>,
     metrics: Vec<Column>,
-    /// Rows written before the metric columns were known (every point failed so far).
-    pending: usize,
+    /// The number of the table's first row (a part's first point).
+    first_row: usize,
     /// The next row's number.
     next: usize,
+    /// How many metric columns the first point that ran gave.
+    first_columns: Option<usize>,
+    /// A shard's part of the table: every metric a column.
+    part: bool,
+    /// The metrics written (`[output] metrics`); None: every metric.
+    only: Option<Arc<[String]>>,
     failed: Vec<serde_json::Value>,
     warned: bool,
 }
@@ -154,6 +172,7 @@ impl Table<'_> {
         result: Result<Vec<MechanismResult>, String>,
     ) -> anyhow::Result<()> {
         let row = self.next;
+        let written = row - self.first_row;
         self.next += 1;
         self.text[0].text(name)?;
         for (column, (_, value)) in self.text[1..].iter_mut().zip(values) {
@@ -167,25 +186,30 @@ impl Table<'_> {
                 return self.nan_row();
             }
         };
-        if self.metrics.is_empty() {
+        let only = self.only.clone();
+        let wanted =
+            |m: &&cardan_dynamics::Metric| only.as_ref().is_none_or(|o| o.contains(&m.name));
+        if self.metrics.is_empty() || self.part {
             for r in &results {
-                for m in &r.summary.metrics {
+                for m in r.summary.metrics.iter().filter(wanted) {
                     let name = format!("{}.{}", r.label, m.name);
                     if self.metrics.iter().all(|c| c.name != name) {
                         let mut c = Column::create(self.dir, &name, None, self.rows)?;
                         c.unit = m.unit;
-                        for _ in 0..self.pending {
+                        // The rows before: every point failed, or (a part) lacked the metric.
+                        for _ in 0..written {
                             c.file.write_all(&f64::NAN.to_le_bytes())?;
                         }
                         self.metrics.push(c);
                     }
                 }
             }
+            self.first_columns.get_or_insert(self.metrics.len());
         }
         let mut values = vec![f64::NAN; self.metrics.len()];
         let mut filled = vec![false; self.metrics.len()];
         for r in &results {
-            for m in &r.summary.metrics {
+            for m in r.summary.metrics.iter().filter(wanted) {
                 let name = format!("{}.{}", r.label, m.name);
                 match self.metrics.iter().position(|c| c.name == name) {
                     // The first of a name, as in sweep.csv.
@@ -209,43 +233,72 @@ impl Table<'_> {
     }
 
     fn nan_row(&mut self) -> anyhow::Result<()> {
-        if self.metrics.is_empty() {
-            self.pending += 1;
-        }
         for c in &mut self.metrics {
             c.file.write_all(&f64::NAN.to_le_bytes())?;
         }
         Ok(())
     }
 
-    /// Flushes the columns and writes `sweep.json`.
-    fn finish(self, sweep: &str) -> anyhow::Result<()> {
+    /// Flushes the columns and writes `sweep.json`; a shard's part (`part`: its range of the
+    /// sweep's `points`) also records its range and how many metric columns its first point
+    /// that ran gave.
+    fn finish(
+        self,
+        sweep: &str,
+        part: Option<(&std::ops::Range<usize>, usize)>,
+    ) -> anyhow::Result<()> {
         let mut columns = Vec::new();
         for mut c in self.text.into_iter().chain(self.metrics) {
             c.file.flush()?;
-            let mut column = json!({
-                "name": c.name,
-                "file": format!("columns/{}.npy", c.name),
-                "dtype": c.width.map_or("<f8".to_string(), |w| format!("|S{w}")),
-            });
-            if c.width.is_none() {
-                column["unit"] = json!(c.unit);
-            }
-            columns.push(column);
+            columns.push(column_json(&c.name, c.width, c.unit));
         }
-        let header = json!({
-            "format": "cardan sweep table",
-            "version": 1,
-            "program": super::stamp::PROGRAM,
-            "sweep": sweep,
-            "rows": self.rows,
-            "columns": columns,
-            "failed": self.failed,
-        });
-        let mut text = serde_json::to_string_pretty(&header)?;
-        text.push('\n');
-        files::write_file(&self.dir.join("sweep.json"), text.as_bytes())
+        let mut header = header_json(sweep, self.rows, columns, self.failed);
+        if let Some((range, points)) = part {
+            header["range"] = json!([range.start, range.end]);
+            header["points"] = json!(points);
+            header["first_columns"] = json!(self.first_columns.unwrap_or(0));
+        }
+        write_header(self.dir, &header)
     }
+}
+
+/// A column's entry in `sweep.json`: text of `width` bytes, or f64 of `unit`.
+pub(super) fn column_json(name: &str, width: Option<usize>, unit: &str) -> serde_json::Value {
+    let mut column = json!({
+        "name": name,
+        "file": format!("columns/{name}.npy"),
+        "dtype": width.map_or("<f8".to_string(), |w| format!("|S{w}")),
+    });
+    if width.is_none() {
+        column["unit"] = json!(unit);
+    }
+    column
+}
+
+/// `sweep.json` of a table of `rows` rows: its columns' entries ([`column_json`]) and its
+/// failed points (`{"case", "error", "row"}`).
+pub(super) fn header_json(
+    sweep: &str,
+    rows: usize,
+    columns: Vec<serde_json::Value>,
+    failed: Vec<serde_json::Value>,
+) -> serde_json::Value {
+    json!({
+        "format": "cardan sweep table",
+        "version": 1,
+        "program": super::stamp::PROGRAM,
+        "sweep": sweep,
+        "rows": rows,
+        "columns": columns,
+        "failed": failed,
+    })
+}
+
+/// Writes `header` as `dir/sweep.json`.
+pub(super) fn write_header(dir: &Path, header: &serde_json::Value) -> anyhow::Result<()> {
+    let mut text = serde_json::to_string_pretty(header)?;
+    text.push('\n');
+    files::write_file(&dir.join("sweep.json"), text.as_bytes())
 }
 
 /// Point `k` of `table` validated and run to its summaries (a panic is its failure).
@@ -290,19 +343,27 @@ pub(super) fn run_table(
     let rows = table.points();
     let written = (|| -> anyhow::Result<usize> {
         std::fs::create_dir(tmp.join("columns"))?;
-        // Each text column's width: the longest name, the longest value of each swept field.
-        let (name_width, value_widths) = table.sweep.text_widths((0..rows).map(|j| table.index(j)));
+        // Each text column's width: the longest name, the longest value of each swept field
+        // (of the whole sweep for a shard's part: the merged table's).
+        let (name_width, value_widths) = match &table.range {
+            Some(_) => table.sweep.text_widths(0..table.sweep.len()),
+            None => table.sweep.text_widths((0..rows).map(|j| table.index(j))),
+        };
         let mut text = vec![Column::create(&tmp, "case", Some(name_width.max(1)), rows)?];
         for (path, w) in table.sweep.paths().into_iter().zip(value_widths) {
             text.push(Column::create(&tmp, path, Some(w.max(1)), rows)?);
         }
+        let first_row = table.range.as_ref().map_or(0, |r| r.start);
         let mut out = Table {
             dir: &tmp,
             rows,
             text,
             metrics: Vec::new(),
-            pending: 0,
-            next: 0,
+            first_row,
+            next: first_row,
+            first_columns: None,
+            part: table.range.is_some(),
+            only: table.first.table_metrics.clone(),
             failed: Vec::new(),
             warned: false,
         };
@@ -329,15 +390,18 @@ pub(super) fn run_table(
                 out.row(&table.sweep.point_name(k), &table.sweep.values(k), result)?;
             }
         }
-        if ran == 0 {
-            // Every point failed: the earlier folder, if any, stays.
+        let part = table.range.as_ref().map(|r| (r, table.sweep.len()));
+        if ran == 0 && part.is_none() {
+            // Every point failed: the earlier folder, if any, stays (a shard's part is
+            // written: the merge needs its rows).
             return Ok(0);
         }
-        out.finish(sweep)?;
+        out.finish(sweep, part)?;
         files::replace_dir(&tmp, &dir)?;
         Ok(ran)
     })();
-    if !matches!(written, Ok(n) if n > 0) {
+    let kept = table.range.is_some() || matches!(written, Ok(n) if n > 0);
+    if !(kept && written.is_ok()) {
         let _ = std::fs::remove_dir_all(&tmp);
     }
     match written {

@@ -1,0 +1,154 @@
+//! `[output] metrics`: the summary metrics a sweep's table holds (the metric columns of a
+//! table sweep's `columns/*.npy`, of a folder sweep's `sweep.csv`), each of every mechanism;
+//! checked against the metric registry (`cardan_dynamics::metrics`) and against what the case
+//! computes (a gear-rating metric needs `[gear]`, a loss `[friction]`, ...).
+
+use crate::error::{CaseError, Invalid};
+use cardan_dynamics::metrics::{self, MetricDef};
+use std::sync::Arc;
+
+/// What a case computes besides the metrics every run has.
+pub(crate) struct Computed {
+    pub gas: bool,
+    pub friction: bool,
+    pub gear: bool,
+    pub dynamic: bool,
+}
+
+impl Computed {
+    /// What a case with these tables (`[gas]`, `[friction]`, `[gear]`, a solved motion)
+    /// computes.
+    pub fn of<G, F, R, D>(
+        gas: &Option<G>,
+        friction: &Option<F>,
+        gear: &Option<R>,
+        dynamics: &Option<D>,
+    ) -> Self {
+        Self {
+            gas: gas.is_some(),
+            friction: friction.is_some(),
+            gear: gear.is_some(),
+            dynamic: dynamics.is_some(),
+        }
+    }
+}
+
+/// The table of the registry a metric needs, and the case-file table that makes it computed.
+fn needs(def: &MetricDef, computed: &Computed) -> Option<&'static str> {
+    let within = |part: &[MetricDef]| part.contains(def);
+    if within(metrics::GEAR_RATING) && !computed.gear {
+        Some("a gear-rating metric: needs a [gear] table")
+    } else if (within(metrics::LOSSES) || within(metrics::ENGINE_FRICTION)) && !computed.friction {
+        Some("a loss metric: needs a [friction] table")
+    } else if (within(metrics::GAS) || within(metrics::GAS_MODEL)) && !computed.gas {
+        Some("a gas metric: needs a [gas] table")
+    } else if within(metrics::MACHINE_MOTION) && !computed.dynamic {
+        Some("a metric of the solved motion: needs [motion] mode = \"dynamic\"")
+    } else {
+        None
+    }
+}
+
+/// The metrics `listed` in `[output] metrics` (None: every metric), each a name of the registry
+/// (a fixed name, or a template's with its `{joint}`, `{body}`, ... filled in) that the case
+/// computes; refused naming the field, the value and the nearest valid name.
+pub(crate) fn build(
+    listed: Option<&[String]>,
+    computed: &Computed,
+    invalid: &Invalid,
+) -> Result<Option<Arc<[String]>>, CaseError> {
+    let Some(listed) = listed else {
+        return Ok(None);
+    };
+    const FIELD: &str = "output.metrics";
+    if listed.is_empty() {
+        return Err(invalid(
+            FIELD,
+            &"[]",
+            "must name at least one summary metric (leave it out for every metric)",
+        ));
+    }
+    let names: Vec<&str> = metrics::METRICS.iter().map(|d| d.name).collect();
+    for (i, name) in listed.iter().enumerate() {
+        let value = format!("\"{name}\"");
+        let Some(def) = metrics::find(name) else {
+            let rule = match crate::schema::nearest(name, &names) {
+                Some(near) => format!(
+                    "unknown metric: did you mean \"{near}\"? (the metrics: docs/results.md)"
+                ),
+                None => "unknown metric (the metrics: docs/results.md)".to_string(),
+            };
+            return Err(invalid(FIELD, &value, &rule));
+        };
+        if let Some(why) = needs(def, computed) {
+            return Err(invalid(
+                FIELD,
+                &value,
+                &format!("{why}: this case does not compute it"),
+            ));
+        }
+        if listed[..i].contains(name) {
+            return Err(invalid(FIELD, &value, "is listed twice"));
+        }
+    }
+    Ok(Some(listed.iter().cloned().collect()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{build, Computed};
+    use crate::error::CaseError;
+
+    fn check(listed: &[&str], computed: &Computed) -> Result<usize, String> {
+        let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
+            file: "c.toml".into(),
+            case: "c".into(),
+            field: field.into(),
+            value: value.to_string(),
+            rule: rule.into(),
+        };
+        let listed: Vec<String> = listed.iter().map(|s| s.to_string()).collect();
+        build(Some(&listed), computed, &invalid)
+            .map(|m| m.map_or(0, |m| m.len()))
+            .map_err(|e| e.to_string())
+    }
+
+    #[test]
+    fn metrics_are_the_registrys_and_computed_by_the_case() {
+        let all = Computed {
+            gas: true,
+            friction: true,
+            gear: true,
+            dynamic: false,
+        };
+        let ok = [
+            "mechanical_efficiency",
+            "power_loss_mean",
+            "total_crank_pin_force_max",
+        ];
+        assert_eq!(check(&ok, &all), Ok(3));
+        let e = check(&["mechanical_efficency"], &all).unwrap_err();
+        assert!(
+            e.contains("output.metrics = \"mechanical_efficency\"")
+                && e.contains("did you mean \"mechanical_efficiency\""),
+            "{e}"
+        );
+        let e = check(&["power_loss_men"], &all).unwrap_err();
+        assert!(e.contains("did you mean \"power_loss_mean\""), "{e}");
+        let bare = Computed {
+            gas: false,
+            friction: false,
+            gear: false,
+            dynamic: false,
+        };
+        let e = check(&["mechanical_efficiency"], &bare).unwrap_err();
+        assert!(e.contains("[friction]"), "{e}");
+        assert!(check(&["speed_mean"], &all)
+            .unwrap_err()
+            .contains("dynamic"));
+        assert!(check(&["power_loss_mean", "power_loss_mean"], &all)
+            .unwrap_err()
+            .contains("twice"));
+        assert!(check(&[], &all).unwrap_err().contains("at least one"));
+    }
+}
