@@ -544,30 +544,52 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
 /// `Debug` text, `run.json`) is the same as before the field was added for every case without
 /// `[output] metrics`, so their folders and records do not change.
 impl std::fmt::Debug for Case {
+    /// As `#[derive(Debug)]` would print it, but `table_metrics` only where a case gives it:
+    /// the text is the case's input hash (`run.json`), which a case without the field keeps.
+    /// The destructuring names every field, so a field added to `Case` must be added here.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let Case {
+            file,
+            name,
+            machine,
+            geometry,
+            pistons,
+            crank_phase,
+            motion,
+            end_angle,
+            steps,
+            mechanisms,
+            gas,
+            friction,
+            gear,
+            setups,
+            dynamics,
+            output,
+            table_metrics,
+            balance,
+            sweep,
+        } = self;
         let mut d = f.debug_struct("Case");
-        d.field("file", &self.file)
-            .field("name", &self.name)
-            .field("machine", &self.machine)
-            .field("geometry", &self.geometry)
-            .field("pistons", &self.pistons)
-            .field("crank_phase", &self.crank_phase)
-            .field("motion", &self.motion)
-            .field("end_angle", &self.end_angle)
-            .field("steps", &self.steps)
-            .field("mechanisms", &self.mechanisms)
-            .field("gas", &self.gas)
-            .field("friction", &self.friction)
-            .field("gear", &self.gear)
-            .field("setups", &self.setups)
-            .field("dynamics", &self.dynamics)
-            .field("output", &self.output);
-        if let Some(metrics) = &self.table_metrics {
+        d.field("file", file)
+            .field("name", name)
+            .field("machine", machine)
+            .field("geometry", geometry)
+            .field("pistons", pistons)
+            .field("crank_phase", crank_phase)
+            .field("motion", motion)
+            .field("end_angle", end_angle)
+            .field("steps", steps)
+            .field("mechanisms", mechanisms)
+            .field("gas", gas)
+            .field("friction", friction)
+            .field("gear", gear)
+            .field("setups", setups)
+            .field("dynamics", dynamics)
+            .field("output", output);
+        if let Some(metrics) = table_metrics {
             d.field("table_metrics", metrics);
         }
-        d.field("balance", &self.balance)
-            .field("sweep", &self.sweep)
-            .finish()
+        d.field("balance", balance).field("sweep", sweep).finish()
     }
 }
 
