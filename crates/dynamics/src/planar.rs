@@ -136,8 +136,8 @@ fn solve(
         let Moment { row, scale, about } = moments[k];
         if inertia && row != 3 * k + 2 {
             let rhs = body.mass * m.cg.acceleration;
-            b[(row, 0)] += scale
-                * (body.inertia * m.angular_acceleration + cross(m.cg.position - about, rhs));
+            b[(row, 0)] +=
+                scale * (body.inertia * m.angular_acceleration + cross(m.cg.position - about, rhs));
         }
     }
     // The gas pushes each piston along its axis towards the crankshaft, at the piston pin.

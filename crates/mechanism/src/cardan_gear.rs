@@ -31,6 +31,24 @@
 //!   inertia J_w·α_w, and a radial one |F_t|·tan α_p towards the wheel's centre. The drive
 //!   torque and the rod force are those of the `karhula` reading; the crank-pin and mesh forces
 //!   are not.
+//!
+//! A rigid mass added to the wheel ([`Mechanism::with_added_mass`]: the cardan counterweight
+//! pair's m₂ at ρ from S opposite T, placed by `cardan_balance::MachineBalance::equip`) is part
+//! of the wheel: its centre of gravity leaves S for g, and its moment of inertia about g follows
+//! from the parallel-axis theorem. The wheel's inertia force −M·a_g acts at g. Its force reaches
+//! the crank pin (and through the crankshaft the main bearing) in either reading. Its moment
+//! about S, with J_g·α_w, is M_S: what the wheel's loads must supply about S.
+//! - `involute`: the mesh's tangential force supplies M_S (the wheel's moment balance, as
+//!   for J_w alone).
+//! - `karhula`: the mesh force stays the rod's. As the thesis does with the wheel's own inertia,
+//!   the drive supplies M_S, through the wheel's speed ratio −1 (virtual power: a moment M on
+//!   the wheel turning at −ω takes −M·ω): T += −M_S. For the wheel's own J_w that rule gives
+//!   the drive's J_w·α above. It keeps the drive's work equal to the change of kinetic energy
+//!   (`crates/dynamics/tests/cross_checks.rs`). In the topology, the wheel is
+//!   [`crate::Body::lumped`] with ratio −1: the general solve adds the wheel's moment
+//!   equation about S, times −1, to the crankshaft's. That is how the general solve meets this
+//!   closed form. The added mass's polar moment and offset enter the drive torque in both
+//!   readings.
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
@@ -224,9 +242,10 @@ impl CardanGear {
         })
     }
 
-    /// The wheel's moment of inertia about its own centre of gravity in the topology: its own
-    /// J_w in the involute reading (0 in the thesis's, where the crankshaft carries it), with
-    /// the added masses' about the combined centre of gravity (parallel axes).
+    /// The same gear with `mass` (kg) added to the wheel at `offset` (m, in the wheel's frame,
+    /// from S) with its own polar moment `inertia` (kg·m²): the wheel body's mass, centre of
+    /// gravity and moment of inertia about it (its own J_w in the involute reading, 0 in the
+    /// thesis's where the crankshaft carries J_w; the added masses' by parallel axes).
     fn with_wheel_addition(mut self, mass: f64, offset: C, inertia: f64) -> Self {
         let m = &self.masses;
         let own = match self.mesh {
