@@ -44,8 +44,9 @@
 //!   the drive supplies M_S, through the wheel's speed ratio −1 (virtual power: a moment M on
 //!   the wheel turning at −ω takes −M·ω): T += −M_S. For the wheel's own J_w that rule gives
 //!   the drive's J_w·α above. It keeps the drive's work equal to the change of kinetic energy
-//!   (`crates/dynamics/tests/cross_checks.rs`). In the topology, the wheel is
-//!   [`crate::Body::lumped`] with ratio −1: the general solve adds the wheel's moment
+//!   (`crates/dynamics/tests/cross_checks.rs`). In the topology, the wheel with an added
+//!   mass is [`crate::Body::lumped`] with ratio −1 (without one the tie holds its moment
+//!   balance alone, the general solve as before): the general solve adds the wheel's moment
 //!   equation about S, times −1, to the crankshaft's. That is how the general solve meets this
 //!   closed form. The added mass's polar moment and offset enter the drive torque in both
 //!   readings.
@@ -190,11 +191,9 @@ impl CardanGear {
         let topology = Topology {
             bodies: vec![
                 Body::new("crankshaft", 0.0, crankshaft_inertia),
-                Body {
-                    // The thesis lumps the wheel with the crankshaft (module note).
-                    lumped: (mesh == MeshModel::Karhula).then_some(-1.0),
-                    ..Body::new("wheel", masses.wheel_mass, wheel_inertia)
-                },
+                // Without an added mass the thesis's tie holds the wheel's moment balance by
+                // itself; with one, the wheel is lumped (`with_wheel_addition`).
+                Body::new("wheel", masses.wheel_mass, wheel_inertia),
                 Body::new(
                     "rod",
                     masses.rod_mass + masses.piston_mass,
@@ -263,6 +262,8 @@ impl CardanGear {
             C::new(0.0, 0.0)
         };
         let wheel = &mut self.topology.bodies[WHEEL];
+        // The thesis lumps the wheel with the crankshaft (module note).
+        wheel.lumped = (self.mesh == MeshModel::Karhula).then_some(-1.0);
         wheel.mass = total;
         // I_S = J_g + M·|e|² (Beer & Johnston's parallel-axis theorem).
         wheel.inertia = own + added.polar - total * added.cg.norm_sqr();
