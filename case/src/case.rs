@@ -502,7 +502,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         }
     };
     let balance = crate::balance::build(raw.layout.as_ref(), raw.balance.as_ref(), &invalid)?;
-    check_machine(&balance, &mechanisms, pistons, &invalid)?;
+    let mechanisms = check_machine(&balance, mechanisms, pistons, &invalid)?;
     let setups = setups(
         &mechanisms,
         geometry.bore,
@@ -611,13 +611,15 @@ fn solved_friction(setups: &[Setup], invalid: &Invalid) -> Result<(), CaseError>
 
 /// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a
 /// mechanism whose pistons move in no cylinder, a balancing device the mechanism has no body
-/// for ([`cardan_balance::MachineBalance::prepare`]).
+/// for ([`cardan_balance::MachineBalance::prepare`]); returns the mechanisms equipped with what
+/// the machine puts on their bodies (the cardan pair's wheel counterweight,
+/// [`cardan_balance::MachineBalance::equip`]), which the runs take.
 fn check_machine(
     machine: &cardan_balance::MachineBalance,
-    mechanisms: &[Arc<dyn Mechanism>],
+    mechanisms: Vec<Arc<dyn Mechanism>>,
     pistons: u32,
     invalid: &Invalid,
-) -> Result<(), CaseError> {
+) -> Result<Vec<Arc<dyn Mechanism>>, CaseError> {
     let n = machine.layout.cylinders.len();
     if n > 1 && pistons == 2 {
         return Err(invalid(
@@ -626,6 +628,7 @@ fn check_machine(
             "a machine of several opposed-piston cylinders is not modelled: run one cylinder",
         ));
     }
+    let mut equipped = Vec::with_capacity(mechanisms.len());
     for m in mechanisms {
         if n > 1 && !m.has_cylinder() {
             return Err(invalid(
@@ -637,12 +640,15 @@ fn check_machine(
                 ),
             ));
         }
-        if let Err(e) = machine.prepare(Arc::clone(m)) {
-            let (field, rule) = e.split_once(": ").unwrap_or(("balance", &e));
-            return Err(invalid(field, &format!("(for the {})", m.name()), rule));
+        match machine.prepare(Arc::clone(&m)) {
+            Ok(prepared) => equipped.push(Arc::clone(prepared.mechanism())),
+            Err(e) => {
+                let (field, rule) = e.split_once(": ").unwrap_or(("balance", &e));
+                return Err(invalid(field, &format!("(for the {})", m.name()), rule));
+            }
         }
     }
-    Ok(())
+    Ok(equipped)
 }
 
 /// The case's mechanisms from the registry, each with its masses and options, checked over the

@@ -106,9 +106,59 @@ impl MachineBalance {
         self.layout.cylinders.len() == 1 && is_own_frame(&self.layout, 0)
     }
 
-    /// The machine of `mechanism`: its rotors sized (module note), or why a device cannot be
-    /// formed with it.
+    /// `mechanism` carrying what the machine puts on its bodies besides the crankshaft: with
+    /// `cardan_counterweights`, the pair's wheel counterweight, on the body that turns against
+    /// the crank at its speed ([`Mechanism::with_added_mass`]), so that the joint loads, the
+    /// drive torque and the kinetic energy have it. Without, or where the mechanism already
+    /// carries it (no backward first order left), `mechanism` itself: equipping twice is
+    /// equipping once. A run takes the equipped mechanism (`cardan_case`'s validation).
+    ///
+    /// The counterweight (sized by [`CardanCounterweights::for_masses`] from the first order,
+    /// module note of `counterweight`): a point mass m₂ = |B₁|/(ω²·r_c²) at ρ = r_c from the
+    /// body's reference point (the cardan wheel's centre S), placed in the body's frame where its
+    /// backward rotor m₂·o₀·d cancels B₁/ω² (o₀ the body's orientation at θ = 0: a point
+    /// z + o₀·e^{−iθ}·d of a body turning at −ω is a backward rotor of m·o₀·d): opposite the
+    /// wheel pin T for the cardan gear.
+    pub fn equip(&self, mechanism: Arc<dyn Mechanism>) -> Result<Arc<dyn Mechanism>, String> {
+        if !self.cardan_counterweights {
+            return Ok(mechanism);
+        }
+        let m = mechanism.as_ref();
+        let Some(body) = backward_body(m) else {
+            return Err(format!(
+                "balance.cardan_counterweights: the {} has no body turning against the crank at its speed (a cardan wheel) to carry the pair's counterweight",
+                m.name()
+            ));
+        };
+        let first = Layout::single().orders(m, &[], 1.0, ORDER_STEPS, 1).force[1];
+        let backward = first.backward;
+        if backward.norm() <= PAIR_DONE * first.forward.norm().max(backward.norm()) {
+            return Ok(mechanism);
+        }
+        let crank = m.crank_radius();
+        let masses = CardanMasses {
+            crank,
+            reciprocating: backward.norm() / crank,
+            wheel: 0.0,
+            crank_unbalance: 0.0,
+        };
+        let pair = CardanCounterweights::for_masses(&masses, crank);
+        let o0 = m.state(&CrankState::new(0.0, 1.0, 0.0, 0.0)).bodies[body].orientation;
+        let offset = -backward / (pair.wheel_mass * o0);
+        m.with_added_mass(body, pair.wheel_mass, offset, 0.0)
+            .map(Arc::from)
+            .ok_or_else(|| {
+                format!(
+                    "balance.cardan_counterweights: the {} cannot carry a counterweight on its body turning against the crank",
+                    m.name()
+                )
+            })
+    }
+
+    /// The machine of `mechanism` ([`MachineBalance::equip`]ped first, which it may already
+    /// be): its rotors sized (module note), or why a device cannot be formed with it.
     pub fn prepare(&self, mechanism: Arc<dyn Mechanism>) -> Result<PreparedBalance, String> {
+        let mechanism = self.equip(mechanism)?;
         let m = mechanism.as_ref();
         let (own, carried) = self.cylinder_rotors(m)?;
         let mut rotors: Vec<Rotor> = (0..self.layout.cylinders.len())
@@ -129,8 +179,9 @@ impl MachineBalance {
     }
 
     /// One cylinder's rotors in its own frame: the crank's own unbalance, then its
-    /// counterweight or the cardan pair; and the Σ m·ρ of those the crankshaft carries alone
-    /// ([`PreparedBalance::crank_masses`]).
+    /// counterweight or the cardan pair's crank counterweight (the wheel's is the equipped
+    /// mechanism's own mass, [`MachineBalance::equip`]); and the Σ m·ρ of those the crankshaft
+    /// carries alone ([`PreparedBalance::crank_masses`]).
     fn cylinder_rotors(&self, m: &dyn Mechanism) -> Result<(Vec<Rotor>, C), String> {
         let unbalance = m.masses().crank_unbalance;
         let mut own = Vec::new();
@@ -149,25 +200,12 @@ impl MachineBalance {
             own.push(counterweight);
         }
         if self.cardan_counterweights {
-            if !turns_backwards(m) {
-                return Err(format!(
-                    "balance.cardan_counterweights: the {} has no body turning against the crank at its speed (a cardan wheel) to carry the pair's counterweight",
-                    m.name()
-                ));
-            }
-            let first = first(&own);
-            let crank = m.crank_radius();
-            // The first order identifies the pair's masses (module note of `counterweight`):
-            // backward −m·r_c, forward (m + m_w)·r_c + m·e.
-            let reciprocating = first.backward.norm() / crank;
-            let masses = CardanMasses {
-                crank,
-                reciprocating,
-                wheel: 0.0,
-                crank_unbalance: first.forward.re - reciprocating * crank,
-            };
-            let pair = CardanCounterweights::for_masses(&masses, crank);
-            own.extend(pair.rotors(&masses));
+            // The equipped mechanism has no backward first order left (its wheel carries the
+            // counterweight): what is left turns with the crank, (m + m_w + m₂)·r_c + m·e
+            // towards S, and the pair's crank counterweight opposite S cancels it.
+            let counterweight = -first(&own).forward;
+            carried += counterweight;
+            own.push(Rotor::on_crank(counterweight, 0.0));
         }
         Ok((own, carried))
     }
@@ -180,13 +218,18 @@ fn is_own_frame(layout: &Layout, i: usize) -> bool {
     c.throw == 0.0 && c.axis_angle == 0.0
 }
 
-/// Whether a body of `m` turns at minus the crank speed (read from a state at ω = 1 rad/s).
-fn turns_backwards(m: &dyn Mechanism) -> bool {
+/// Below this fraction of the first order, a mechanism's backward first order is round-off: it
+/// carries the cardan pair's wheel counterweight already ([`MachineBalance::equip`]).
+const PAIR_DONE: f64 = 1e-9;
+
+/// The first body of `m` that turns at minus the crank speed (read from a state at
+/// ω = 1 rad/s).
+fn backward_body(m: &dyn Mechanism) -> Option<usize> {
     let state = m.state(&CrankState::new(0.3, 1.0, 0.0, 0.0));
     state
         .bodies
         .iter()
-        .any(|b| (b.angular_velocity + 1.0).abs() < 1e-12)
+        .position(|b| (b.angular_velocity + 1.0).abs() < 1e-12)
 }
 
 /// A machine's balance prepared for one mechanism.
@@ -215,20 +258,20 @@ impl PreparedBalance {
 
     /// Σ m·ρ (kg·m, complex: towards where the masses are at θ = 0, in a cylinder's own frame)
     /// of the masses each cylinder's crankshaft carries besides the mechanism's bodies and
-    /// alone: the crank's own unbalance and its counterweight (`[balance] counterweight`).
-    /// They turn with the crank about the main axis, so only the main bearing holds them: its
-    /// reaction gains their m·a (`cardan_dynamics::Inertial`). The cardan pair is not among
-    /// them: its wheel's counterweight loads the wheel, whose pin and mesh reactions only the
-    /// mechanism's own kinetostatics could share out ([`PreparedBalance::pair_outside_joints`]).
+    /// alone: the crank's own unbalance and its counterweight (`[balance] counterweight`), or
+    /// the cardan pair's crank counterweight. They turn with the crank about the main axis, so
+    /// only the main bearing holds them: its reaction gains their m·a
+    /// (`cardan_dynamics::Inertial`). The pair's wheel counterweight is not among them: it is
+    /// part of the wheel of the equipped mechanism ([`PreparedBalance::mechanism`]), whose
+    /// kinetostatics share it out to the crank pin, the mesh and the main bearing. Lanchester
+    /// shafts run in bearings of their own, not the mechanism's.
     pub fn crank_masses(&self) -> C {
         self.carried
     }
 
-    /// Whether the machine has a balancing device that its joint loads leave out (the cardan
-    /// counterweight pair: [`PreparedBalance::crank_masses`]). Lanchester shafts run in
-    /// bearings of their own, not the mechanism's.
-    pub fn pair_outside_joints(&self) -> bool {
-        self.rotors.iter().any(|r| r.order == -1)
+    /// The mechanism the machine is made of, equipped ([`MachineBalance::equip`]).
+    pub fn mechanism(&self) -> &Arc<dyn Mechanism> {
+        &self.mechanism
     }
 
     /// The machine's shaking at `crank`, cylinder 1's own shaking being `first` where its

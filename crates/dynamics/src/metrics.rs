@@ -154,7 +154,7 @@ pub const RUN: &[MetricDef] = &[
     def("mechanical_advantage_mean", "1", T, K, Hi, "the same averaged over the crank angle"),
     def("torque_per_force_stroke_max", "1", T, K, Hi, "largest drive torque per unit piston force per unit stroke, |dx/dθ|/stroke: the fair comparison at equal displacement"),
     def("kinetic_energy_change", "J", T, D, Ne, "kinetic energy of all bodies, end minus start: equals inertial_work (energy check)"),
-    def("energy_balance_error", "1", T, D, Lo, "|inertial_work − kinetic_energy_change| / ∫|T_inertial| dθ: a case fails above 1e-3"),
+    def("energy_balance_error", "1", T, D, Lo, "|inertial_work − kinetic_energy_change| / ∫|T_inertial| dθ (or 1e-12 of the kinetic energy where the drive moves less: a constant reduced inertia at constant speed): a case fails above 1e-3"),
     def("cycle_time", "s", R, K, Ne, "duration of the run"),
 ];
 

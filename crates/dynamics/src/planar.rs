@@ -8,7 +8,9 @@
 //! the tangential force of an involute mesh (its radial part |F_t|·tan α follows the sign of
 //! F_t: the system is solved for one flank, and again for the other if F_t comes out with the
 //! wrong sign); the force of a tied mesh (one extra equation ties it to its joint); the drive
-//! torque on the crankshaft. A least-squares solve accepts the identically satisfied equations
+//! torque on the crankshaft. A body lumped with the crankshaft (`Body::lumped`: Karhula's
+//! cardan wheel) has no moment equation of its own: its moments about its joint with the
+//! crankshaft, times its speed ratio, join the crankshaft's (virtual power). A least-squares solve accepts the identically satisfied equations
 //! of point-like bodies (whose moment row is empty) and reports the residual, so that a
 //! statically inconsistent model shows itself instead of passing silently.
 
@@ -115,12 +117,27 @@ fn solve(
     let equations = 3 * bodies.len() + ties.len();
     let mut a = Mat::<f64>::zeros(equations, unknowns);
     let mut b = Mat::<f64>::zeros(equations, 1);
+    let moments: Vec<Moment> = (0..bodies.len())
+        .map(|k| Moment::of(topology, state, k))
+        .collect();
     for (k, (body, m)) in bodies.iter().zip(&state.bodies).enumerate() {
         if inertia {
             let rhs = body.mass * m.cg.acceleration;
             b[(3 * k, 0)] = rhs.re;
             b[(3 * k + 1, 0)] = rhs.im;
-            b[(3 * k + 2, 0)] = body.inertia * m.angular_acceleration;
+            if moments[k].row == 3 * k + 2 {
+                b[(3 * k + 2, 0)] = body.inertia * m.angular_acceleration;
+            }
+        }
+    }
+    // The lumped bodies' moments, Σ M about the joint = J·α + (g − joint) × m·a_g, added to
+    // the rows they join (after those rows' own terms are set).
+    for (k, (body, m)) in bodies.iter().zip(&state.bodies).enumerate() {
+        let Moment { row, scale, about } = moments[k];
+        if inertia && row != 3 * k + 2 {
+            let rhs = body.mass * m.cg.acceleration;
+            b[(row, 0)] +=
+                scale * (body.inertia * m.angular_acceleration + cross(m.cg.position - about, rhs));
         }
     }
     // The gas pushes each piston along its axis towards the crankshaft, at the piston pin.
@@ -133,21 +150,23 @@ fn solve(
         let k = piston.body;
         let f = -force * piston.axis;
         let at = piston.origin + motion.position * piston.axis;
+        let Moment { row, scale, about } = moments[k];
         b[(3 * k, 0)] -= f.re;
         b[(3 * k + 1, 0)] -= f.im;
-        b[(3 * k + 2, 0)] -= cross(at - state.bodies[k].cg.position, f);
+        b[(row, 0)] -= scale * cross(at - about, f);
     }
     for (j, joint) in joints.iter().enumerate() {
         let col = columns[j];
         let at = state.joints[j].position;
         for (target, sign) in [(Some(joint.body), 1.0), (joint.other, -1.0)] {
             let Some(k) = target else { continue };
-            let arm = at - state.bodies[k].cg.position;
+            let Moment { row, scale, about } = moments[k];
+            let arm = at - about;
             // A unit force f at `at` adds f to the force rows and arm × f to the moment row.
             let mut put = |c: usize, f: C, couple: f64| {
                 a[(3 * k, c)] += sign * f.re;
                 a[(3 * k + 1, c)] += sign * f.im;
-                a[(3 * k + 2, c)] += sign * (cross(arm, f) + couple);
+                a[(row, c)] += sign * scale * (cross(arm, f) + couple);
             };
             match kinds[j] {
                 Unknowns::Pin => {
@@ -198,6 +217,42 @@ fn solve(
     }
     out.crank_torque = x[(drive, 0)];
     (residual, involute.map(|j| x[(columns[j], 0)]))
+}
+
+/// Where a body's moment equation goes: its own row, about its centre of gravity; or, for a
+/// body lumped with the crankshaft ([`cardan_mechanism::Body::lumped`]), the crankshaft's row,
+/// taken about the joint between them and times the body's speed ratio (virtual power).
+#[derive(Debug, Clone, Copy)]
+struct Moment {
+    row: usize,
+    scale: f64,
+    about: C,
+}
+
+impl Moment {
+    fn of(topology: &Topology, state: &State, k: usize) -> Self {
+        let own = Self {
+            row: 3 * k + 2,
+            scale: 1.0,
+            about: state.bodies[k].cg.position,
+        };
+        let c = topology.crankshaft;
+        let Some(ratio) = topology.bodies[k].lumped else {
+            return own;
+        };
+        let pair = |j: &cardan_mechanism::Joint| {
+            (j.body == k && j.other == Some(c)) || (j.body == c && j.other == Some(k))
+        };
+        match topology.joints.iter().position(pair) {
+            Some(j) if k != c => Self {
+                row: 3 * c + 2,
+                scale: ratio,
+                about: state.joints[j].position,
+            },
+            // Not carried by the crankshaft: its own joints hold it after all.
+            _ => own,
+        }
+    }
 }
 
 fn dot(a: C, b: C) -> f64 {

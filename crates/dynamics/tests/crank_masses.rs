@@ -125,3 +125,62 @@ fn the_crankshafts_carried_masses_load_the_main_bearing_alone() {
         }
     }
 }
+
+/// The cardan counterweight pair in the joint loads: the mechanism equipped with the wheel's
+/// counterweight (`MachineBalance::equip`), the crank's counterweight of the pair carried by the
+/// crankshaft (`PreparedBalance::crank_masses`). The frame's reactions (main bearing and ring
+/// gear) balance the machine's shaking force with every body and rotor, to 1e-9 of the peak
+/// reaction, accelerating, in both mesh readings; and since the pair cancels the shaking force
+/// at any crank acceleration (`cardan-balance`'s closed forms), the frame feels no net force:
+/// the main bearing's reaction is minus the ring gear's at every step, neither of them zero.
+#[test]
+fn the_cardan_pair_loads_the_joints_and_leaves_the_frame_unshaken() {
+    use cardan_balance::MachineBalance;
+    use std::sync::Arc;
+    let machine = MachineBalance {
+        cardan_counterweights: true,
+        ..MachineBalance::default()
+    };
+    let mut readings = 0;
+    for (name, m) in every_machine() {
+        let Ok(prepared) = machine.prepare(Arc::from(m)) else {
+            continue;
+        };
+        readings += 1;
+        let equipped = prepared.mechanism().as_ref();
+        let t = equipped.topology();
+        let carried = steps(equipped, prepared.crank_masses());
+        let frame: Vec<usize> = (0..t.joints.len())
+            .filter(|&j| t.joints[j].other.is_none())
+            .collect();
+        assert!(frame.len() >= 2, "{name}: main bearing and ring gear");
+        let peak = carried
+            .iter()
+            .flat_map(|s| frame.iter().map(|&j| s.total.joints[j].force.norm()))
+            .fold(0.0, f64::max);
+        assert!(
+            peak > 1.0,
+            "{name}: the frame's joints are loaded ({peak} N)"
+        );
+        for s in &carried {
+            let angle = s.state.crank.angle;
+            let machine_shaking = prepared.at_state(&s.state).force;
+            near(
+                &format!("{name} at {angle} rad: the pair's machine shaking"),
+                machine_shaking.norm(),
+                0.0,
+                1e-9 * peak,
+            );
+            for (label, loads) in [("inertial", &s.families[0]), ("total", &s.total)] {
+                let reactions: C = frame.iter().map(|&j| loads.joints[j].force).sum();
+                near(
+                    &format!("{name} {label} at {angle} rad: shaking + frame reactions"),
+                    (machine_shaking + reactions).norm(),
+                    0.0,
+                    1e-9 * peak,
+                );
+            }
+        }
+    }
+    assert_eq!(readings, 2, "the cardan gear in both mesh readings");
+}

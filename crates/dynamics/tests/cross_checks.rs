@@ -73,7 +73,13 @@ fn worst(pairs: &[(Loads, Loads)], get: &dyn Fn(&Loads) -> C, floor: f64) -> (f6
 /// mechanism and reading.
 #[test]
 fn closed_form_equals_general_planar_solve() {
-    for (name, mech) in closed_form_machines() {
+    let machines = closed_form_machines();
+    let added = machines.iter().filter(|(n, _)| n.contains("added mass"));
+    assert!(
+        added.count() >= 4,
+        "both cardan readings, with and without a wheel mass"
+    );
+    for (name, mech) in machines {
         for (w0, alpha, inertia, with_gas) in [
             (628.3, 0.0, true, false),
             (9.42, 314.16, true, false),

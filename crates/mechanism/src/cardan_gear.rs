@@ -31,6 +31,25 @@
 //!   inertia J_w·α_w, and a radial one |F_t|·tan α_p towards the wheel's centre. The drive
 //!   torque and the rod force are those of the `karhula` reading; the crank-pin and mesh forces
 //!   are not.
+//!
+//! A rigid mass added to the wheel ([`Mechanism::with_added_mass`]: the cardan counterweight
+//! pair's m₂ at ρ from S opposite T, placed by `cardan_balance::MachineBalance::equip`) is part
+//! of the wheel: its centre of gravity leaves S for g, and its moment of inertia about g follows
+//! from the parallel-axis theorem. The wheel's inertia force −M·a_g acts at g. Its force reaches
+//! the crank pin (and through the crankshaft the main bearing) in either reading. Its moment
+//! about S, with J_g·α_w, is M_S: what the wheel's loads must supply about S.
+//! - `involute`: the mesh's tangential force supplies M_S (the wheel's moment balance, as
+//!   for J_w alone).
+//! - `karhula`: the mesh force stays the rod's. As the thesis does with the wheel's own inertia,
+//!   the drive supplies M_S, through the wheel's speed ratio −1 (virtual power: a moment M on
+//!   the wheel turning at −ω takes −M·ω): T += −M_S. For the wheel's own J_w that rule gives
+//!   the drive's J_w·α above. It keeps the drive's work equal to the change of kinetic energy
+//!   (`crates/dynamics/tests/cross_checks.rs`). In the topology, the wheel with an added
+//!   mass is [`crate::Body::lumped`] with ratio −1 (without one the tie holds its moment
+//!   balance alone, the general solve as before): the general solve adds the wheel's moment
+//!   equation about S, times −1, to the crankshaft's. That is how the general solve meets this
+//!   closed form. The added mass's polar moment and offset enter the drive torque in both
+//!   readings.
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
@@ -72,6 +91,19 @@ pub enum MeshModel {
     Involute,
 }
 
+/// What has been added to the cardan wheel, in the wheel's frame (real axis along S→T, from
+/// its centre S): the sum of the added masses, kg, their first moment Σ m·d, kg·m (complex),
+/// and their polar moment about S, Σ (J + m·|d|²), kg·m².
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct Added {
+    mass: f64,
+    first: C,
+    polar: f64,
+    /// The wheel's centre of gravity (its own mass at S and the added ones) from S, m, in the
+    /// wheel's frame: first / (m_w + mass).
+    cg: C,
+}
+
 /// Cardan gear geometry and masses.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CardanGear {
@@ -83,6 +115,9 @@ pub struct CardanGear {
     pub mesh: MeshModel,
     pub masses: MassProperties,
     topology: Topology,
+    /// A rigid mass added to the wheel ([`Mechanism::with_added_mass`]: the wheel's
+    /// counterweight of the cardan pair); `None` without.
+    added: Option<Added>,
     /// tan of the pair's pressure angle (the involute mesh's radial force per unit tangential
     /// force), computed once: a libm call per block of steps is measurable. The angle itself
     /// is the mesh joint's (`JointKind::GearMesh`).
@@ -156,6 +191,8 @@ impl CardanGear {
         let topology = Topology {
             bodies: vec![
                 Body::new("crankshaft", 0.0, crankshaft_inertia),
+                // Without an added mass the thesis's tie holds the wheel's moment balance by
+                // itself; with one, the wheel is lumped (`with_wheel_addition`).
                 Body::new("wheel", masses.wheel_mass, wheel_inertia),
                 Body::new(
                     "rod",
@@ -199,8 +236,39 @@ impl CardanGear {
             mesh,
             masses,
             topology,
+            added: None,
             tan_pressure_angle: pressure_angle.tan(),
         })
+    }
+
+    /// The same gear with `mass` (kg) added to the wheel at `offset` (m, in the wheel's frame,
+    /// from S) with its own polar moment `inertia` (kg·m²): the wheel body's mass, centre of
+    /// gravity and moment of inertia about it (its own J_w in the involute reading, 0 in the
+    /// thesis's where the crankshaft carries J_w; the added masses' by parallel axes).
+    fn with_wheel_addition(mut self, mass: f64, offset: C, inertia: f64) -> Self {
+        let m = &self.masses;
+        let own = match self.mesh {
+            MeshModel::Karhula => 0.0,
+            MeshModel::Involute => m.wheel_inertia,
+        };
+        let mut added = self.added.unwrap_or_default();
+        added.mass += mass;
+        added.first += mass * offset;
+        added.polar += inertia + mass * offset.norm_sqr();
+        let total = m.wheel_mass + added.mass;
+        added.cg = if total > 0.0 {
+            added.first / total
+        } else {
+            C::new(0.0, 0.0)
+        };
+        let wheel = &mut self.topology.bodies[WHEEL];
+        // The thesis lumps the wheel with the crankshaft (module note).
+        wheel.lumped = (self.mesh == MeshModel::Karhula).then_some(-1.0);
+        wheel.mass = total;
+        // I_S = J_g + M·|e|² (Beer & Johnston's parallel-axis theorem).
+        wheel.inertia = own + added.polar - total * added.cg.norm_sqr();
+        self.added = Some(added);
+        self
     }
 }
 
@@ -234,6 +302,23 @@ impl Mechanism for CardanGear {
         self.rod - 2.0 * self.crank
     }
 
+    /// The cardan wheel (body 1) takes an added mass: its centre of gravity leaves S, its
+    /// inertia force reaches the crank pin, and its moment about S the mesh (involute reading)
+    /// or the drive (the thesis's, module note).
+    fn with_added_mass(
+        &self,
+        body: usize,
+        mass: f64,
+        offset: C,
+        inertia: f64,
+    ) -> Option<Box<dyn Mechanism>> {
+        let valid = mass.is_finite() && mass >= 0.0 && inertia.is_finite() && inertia >= 0.0;
+        let placed = offset.re.is_finite() && offset.im.is_finite();
+        (body == WHEEL && valid && placed).then(|| {
+            Box::new(self.clone().with_wheel_addition(mass, offset, inertia)) as Box<dyn Mechanism>
+        })
+    }
+
     /// The crank OS: the cardan wheel's centre, where the crank takes the wheel's force.
     fn crank_radius(&self) -> f64 {
         self.crank
@@ -262,6 +347,7 @@ vectorised! {
             unreachable!("the cardan gear's topology")
         };
         let r = gear.crank;
+        let added = gear.added.map(|a| a.cg);
         for i in 0..n {
             let crank = &cc.at(i);
             let (w, a) = (crank.speed, crank.acceleration);
@@ -279,7 +365,22 @@ vectorised! {
             // The wheel's centre is the crank pin; it turns at −ω (A4.2.2.66, A4.2.2.71); the
             // line S→T is at π − θ.
             let crank_pin = PointMotion::on_crank(r, crank);
-            wheel.cg.set(i, &crank_pin);
+            match added {
+                // Its centre of gravity e off S in its frame, turning at −ω: o·e, o·e·(−iω),
+                // o·e·(−iα − ω²), o = −c + i·s its orientation.
+                Some(e) => {
+                    let p = C::new(-c, s) * e;
+                    wheel.cg.set(
+                        i,
+                        &PointMotion {
+                            position: crank_pin.position + p,
+                            velocity: crank_pin.velocity + p * C::new(0.0, -w),
+                            acceleration: crank_pin.acceleration + p * C::new(-w * w, -a),
+                        },
+                    );
+                }
+                None => wheel.cg.set(i, &crank_pin),
+            }
             wheel.orientation_x[i] = -c;
             wheel.orientation_y[i] = s;
             wheel.angular_velocity[i] = -w;
@@ -348,6 +449,14 @@ vectorised! {
         };
         let (c, rod, rod_pin, pin) = (&st.crank, &st.bodies[ROD], &st.joints[2], &st.joints[1]);
         let wheel = &st.bodies[WHEEL];
+        // With an added mass the wheel's centre of gravity g leaves S: its inertia force −M·a_g
+        // has a moment about S, which with the wheel's own J_g·α_w is what the wheel's loads
+        // must supply about S, M_S (module note).
+        let body = &gear.topology.bodies[WHEEL];
+        let (wheel_mass, added) = match gear.added {
+            Some(_) if inertia => (body.mass, Some(body.inertia)),
+            _ => (wheel_mass, None),
+        };
         let gas = piston_force.unwrap_or(&ZERO);
         let tan = gear.tan_pressure_angle;
         let Some(([main, crank_pin_load, rod_pin_load, mesh_load], crank_torque)) = out.split()
@@ -359,19 +468,28 @@ vectorised! {
             let p = -mass * C::new(rod.cg.ax[i], rod.cg.ay[i]) - C::new(0.0, gas[i]);
             let alpha = c.acceleration[i];
             let s = C::new(pin.x[i], pin.y[i]);
+            let a_g = C::new(wheel.cg.ax[i], wheel.cg.ay[i]);
+            let moment_s = added.map(|j_g| {
+                let g = C::new(wheel.cg.x[i], wheel.cg.y[i]);
+                j_g * wheel.angular_acceleration[i] + cross(g - s, wheel_mass * a_g)
+            });
             let mesh = match gear.mesh {
                 MeshModel::Karhula => p, // (A5.2.1.48-51)
                 MeshModel::Involute => {
                     // Moments about S: (T − S)×P + r·F_t = J_w·α_w, with α_w = −α.
                     let t = C::new(rod_pin.x[i], rod_pin.y[i]);
-                    let f_t = (-wheel_inertia * alpha - cross(t - s, p)) / gear.crank;
+                    let f_t = match moment_s {
+                        // J_g includes J_w here: M_S is all the wheel's need.
+                        Some(m_s) => (m_s - cross(t - s, p)) / gear.crank,
+                        None => (-wheel_inertia * alpha - cross(t - s, p)) / gear.crank,
+                    };
                     let e = C::new(c.cos[i], c.sin[i]);
                     f_t * C::i() * e - f_t.abs() * tan * e
                 }
             };
-            // The wheel's own inertia force at its centre S (module note): its moment about S
-            // is zero, so the mesh force is the same in either reading.
-            let wheel_force = -wheel_mass * C::new(wheel.cg.ax[i], wheel.cg.ay[i]);
+            // The wheel's inertia force at its centre of gravity: at S without an added mass,
+            // its moment about S then zero and the mesh force the same in either reading.
+            let wheel_force = -wheel_mass * a_g;
             // 2·P in the thesis reading (A5.2.1.51), with the wheel's inertia force.
             let crank_pin = p + mesh + wheel_force;
             main.set_force(i, -crank_pin); // (A5.2.1.54)
@@ -379,6 +497,11 @@ vectorised! {
             rod_pin_load.set_force(i, -p); // (A5.2.1.49)
             mesh_load.set_force(i, mesh);
             crank_torque[i] = lumped * alpha - cross(s, crank_pin); // −T_Σi10c (A5.2.1.69)
+            if let (MeshModel::Karhula, Some(m_s)) = (gear.mesh, moment_s) {
+                // The thesis's lumping: the drive supplies M_S through the wheel's speed ratio
+                // −1 (module note; `Body::lumped`).
+                crank_torque[i] -= m_s;
+            }
         }
         true
     }

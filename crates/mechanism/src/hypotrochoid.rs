@@ -272,32 +272,38 @@ impl Hypotrochoid {
                 name: "crankshaft",
                 mass: 0.0,
                 inertia: masses.crankshaft_inertia,
+                lumped: None,
             },
             Body {
                 name: "carrier",
                 mass: 0.0,
                 inertia: 0.0,
+                lumped: None,
             },
             Body {
                 name: "planet",
                 mass: 0.0,
                 inertia: masses.wheel_inertia,
+                lumped: None,
             },
             Body {
                 name: "rotor",
                 mass: 0.0,
                 inertia: 0.0,
+                lumped: None,
             },
         ];
         bodies.extend(LINKS[..m].iter().map(|&name| Body {
             name,
             mass: masses.rod_mass,
             inertia: masses.rod_inertia,
+            lumped: None,
         }));
         bodies.extend(BLOCKS[..m].iter().map(|&name| Body {
             name,
             mass: 0.0,
             inertia: 0.0,
+            lumped: None,
         }));
         let pin = |name, radius, body, other| Joint {
             name,

@@ -118,6 +118,24 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
         Ok(())
     }
 
+    /// This mechanism with a rigid mass added to body `body` (a balancing counterweight,
+    /// `cardan_balance::MachineBalance::equip`): `mass` (kg) whose centre of gravity is at
+    /// `offset` (m, complex) from the body's reference point in the body's own frame (the point
+    /// its centre of gravity is filled at without the added mass, the frame turning with its
+    /// orientation: at position reference + orientation·offset), with the polar moment
+    /// `inertia` (kg·m²) about its own centre of gravity. The joint loads, drive torque,
+    /// shaking force and kinetic energy of the result include it. `None` where the mechanism
+    /// cannot take one on that body (the default).
+    fn with_added_mass(
+        &self,
+        _body: usize,
+        _mass: f64,
+        _offset: C,
+        _inertia: f64,
+    ) -> Option<Box<dyn Mechanism>> {
+        None
+    }
+
     /// Radius at which the crank delivers its force, m: the crank-pin radius, the radius of
     /// Vidinsky's (2021) output force F_out in his mechanical advantage MA = F_out/F_in (L225).
     /// By default half the stroke (the slider-crank's and the Scotch yoke's crank).

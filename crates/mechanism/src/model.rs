@@ -15,14 +15,24 @@ pub struct Body {
     pub mass: f64,
     /// Moment of inertia about the centre of gravity, kg·m².
     pub inertia: f64,
+    /// `Some(ratio)`: a body whose moment balance its own joints do not hold, lumped with the
+    /// crankshaft's (Karhula's reading of the cardan wheel, A5.2.1.43-46, whose mesh force is
+    /// tied to the rod's): the drive supplies the moment its loads need about the joint that
+    /// carries it on the crankshaft, through its speed `ratio` to the crank's (virtual power:
+    /// a moment M on a body turning at ratio·ω takes the power M·ratio·ω, so the drive gives
+    /// ratio·M). The general solve adds the body's moment equation about that joint, times
+    /// `ratio`, to the crankshaft's. `None`: its own joints hold it (every other body).
+    pub lumped: Option<f64>,
 }
 
 impl Body {
+    /// A body that its joints hold ([`Body::lumped`] `None`).
     pub fn new(name: &'static str, mass: f64, inertia: f64) -> Self {
         Self {
             name,
             mass,
             inertia,
+            lumped: None,
         }
     }
 }

@@ -143,18 +143,6 @@ impl TrainFamilies {
     }
 }
 
-/// What a train's joint loads leave out of its machine's balancing devices, said beside its
-/// results: the cardan counterweight pair (`PreparedBalance::crank_masses`).
-fn joint_loads_note(setup: &Setup) -> Option<String> {
-    setup.balance.balance().pair_outside_joints().then(|| {
-        "the joint loads leave out the cardan counterweight pair (its shaking forces have it): \
-         the wheel's counterweight would change the crank pin's and the mesh's reactions, which \
-         the mechanism's kinetostatics does not yet share out; the crank's own unbalance is in \
-         the main bearing"
-            .to_string()
-    })
-}
-
 /// Runs one crank train of `case`: `mechanism` (its stages copied from its `setup`, which
 /// validation built) with its crank `shift` (rad) ahead of the case's (the second train of a
 /// phased opposed-piston case; 0 otherwise), its per-step rows (named `label`) where `to` says.
@@ -299,7 +287,6 @@ fn run_mechanism(
     };
     let warnings = sampling_warning(&summary, &shifted, case.steps, per_rev)
         .into_iter()
-        .chain(joint_loads_note(setup))
         .collect();
     let rows = TrainRows {
         charts,

@@ -5,7 +5,7 @@
 use cardan_dynamics::{run_summary, Solver, StepRecord, Summary};
 use cardan_mechanism::{
     entry, CrankMotion, Grid, MachineGeometry, MassInputs, Material, Mechanism, OptionValue,
-    Options, MECHANISMS,
+    Options, C, MECHANISMS,
 };
 use std::f64::consts::PI;
 
@@ -97,7 +97,28 @@ pub fn every_machine() -> Vec<(String, Box<dyn Mechanism>)> {
             all.push((format!("{} wheel mass {k}", e.name), m));
         }
     }
+    // A rigid mass added to a body turning against the crank (the cardan pair's wheel
+    // counterweight, `cardan_balance::MachineBalance::equip`), in every reading that takes
+    // one: off the body's axis both ways, with a polar moment of its own, so that its force,
+    // its moment about the body's joint and its inertia are all exercised.
+    let equipped: Vec<_> = all
+        .iter()
+        .filter_map(|(name, m)| {
+            let body = backward_body(m.as_ref())?;
+            let added = m.with_added_mass(body, 0.9, C::new(-0.031, 0.0042), 2.0e-4)?;
+            Some((format!("{name} with an added mass"), added))
+        })
+        .collect();
+    all.extend(equipped);
     all
+}
+
+/// The first body of `m` turning at minus the crank speed.
+pub fn backward_body(m: &dyn Mechanism) -> Option<usize> {
+    let st = m.state(&cardan_mechanism::CrankState::new(0.4, 1.0, 0.0, 0.0));
+    st.bodies
+        .iter()
+        .position(|b| (b.angular_velocity + 1.0).abs() < 1e-12)
 }
 
 /// The thesis cycle at initial speed `w0` and acceleration `alpha` (rad/s, rad/s²).
