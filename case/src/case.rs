@@ -50,7 +50,7 @@ impl Default for OutputOptions {
 }
 
 /// A validated case.
-#[derive(Clone)]
+#[derive(Debug, Clone)]
 pub struct Case {
     pub file: PathBuf,
     pub name: String,
@@ -538,59 +538,6 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         balance,
         sweep: None,
     })
-}
-
-/// As derived, but `table_metrics` only where given: the runner's input hash of a case (its
-/// `Debug` text, `run.json`) is the same as before the field was added for every case without
-/// `[output] metrics`, so their folders and records do not change.
-impl std::fmt::Debug for Case {
-    /// As `#[derive(Debug)]` would print it, but `table_metrics` only where a case gives it:
-    /// the text is the case's input hash (`run.json`), which a case without the field keeps.
-    /// The destructuring names every field, so a field added to `Case` must be added here.
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let Case {
-            file,
-            name,
-            machine,
-            geometry,
-            pistons,
-            crank_phase,
-            motion,
-            end_angle,
-            steps,
-            mechanisms,
-            gas,
-            friction,
-            gear,
-            setups,
-            dynamics,
-            output,
-            table_metrics,
-            balance,
-            sweep,
-        } = self;
-        let mut d = f.debug_struct("Case");
-        d.field("file", file)
-            .field("name", name)
-            .field("machine", machine)
-            .field("geometry", geometry)
-            .field("pistons", pistons)
-            .field("crank_phase", crank_phase)
-            .field("motion", motion)
-            .field("end_angle", end_angle)
-            .field("steps", steps)
-            .field("mechanisms", mechanisms)
-            .field("gas", gas)
-            .field("friction", friction)
-            .field("gear", gear)
-            .field("setups", setups)
-            .field("dynamics", dynamics)
-            .field("output", output);
-        if let Some(metrics) = table_metrics {
-            d.field("table_metrics", metrics);
-        }
-        d.field("balance", balance).field("sweep", sweep).finish()
-    }
 }
 
 /// Refuses the loss models a solved motion cannot take among its torques: those whose loss at
