@@ -7,8 +7,7 @@
 //! gear ratings, the general solve).
 
 use crate::model::{BodyMotion, JointLoad, JointMotion, Loads, PistonMotion, PointMotion, State};
-use crate::motion::{CrankState, MotionError, MotionSource};
-use crate::{Mechanism, Topology, C};
+use crate::{CrankState, Topology, C};
 
 /// Steps in a block: the length of every column.
 pub const LANES: usize = 64;
@@ -288,30 +287,6 @@ impl StateBlock {
             (&mut self.joints[..]).try_into().ok()?,
             (&mut self.pistons[..]).try_into().ok()?,
         ))
-    }
-
-    /// Fills the block with `mechanism` at `cranks` (at most [`LANES`] of them).
-    pub fn fill<M: Mechanism + ?Sized>(&mut self, mechanism: &M, cranks: &[CrankState]) {
-        assert!(cranks.len() <= LANES, "a block holds at most {LANES} steps");
-        for (i, c) in cranks.iter().enumerate() {
-            self.crank.set(i, c);
-        }
-        self.len = cranks.len();
-        mechanism.fill_block(self);
-    }
-
-    /// Fills the block with the next states of the prescribed `motion`
-    /// ([`MotionSource::next_block`]) and `mechanism` at them; the motion's error if it stopped
-    /// short of a block.
-    pub fn fill_next(
-        &mut self,
-        mechanism: &dyn Mechanism,
-        motion: &mut dyn MotionSource,
-    ) -> Option<MotionError> {
-        let (n, error) = motion.next_block(&mut self.crank);
-        self.len = n;
-        mechanism.fill_block(self);
-        error
     }
 
     /// Lane `i` as a state (a [`State::for_topology`] of the same topology), all but its extras.

@@ -2,7 +2,7 @@
 //! fills at every step (their motion). Everything downstream (loads, gas, outputs, losses)
 //! iterates over these lists and never asks which mechanism produced them.
 
-use crate::motion::CrankState;
+use crate::CrankState;
 use crate::C;
 
 /// A rigid body of the mechanism with its mass properties.

@@ -1,6 +1,6 @@
 //! Crank motion: the prescribed law, the crank-angle grid, and the source a run steps through.
 
-use crate::{vectorised, CrankColumns, C, LANES};
+use crate::{vectorised, CrankColumns, CrankState, C, LANES};
 
 /// Grid points between exact evaluations of e^{iθ}: in between, e^{iθ} advances by complex
 /// multiplications by e^{i·CHAINS·h}, along [`CHAINS`] interleaved chains that start from the
@@ -24,33 +24,6 @@ pub struct CrankMotion {
     pub initial_speed: f64,
     /// Constant crank angular acceleration, rad/s².
     pub angular_acceleration: f64,
-}
-
-/// The crank at one instant.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct CrankState {
-    /// Crank angle θ, rad.
-    pub angle: f64,
-    /// e^{iθ} = cos θ + i·sin θ, carried so that a grid can supply it without a sine per step.
-    pub direction: C,
-    /// Crank angular velocity ω, rad/s.
-    pub speed: f64,
-    /// Crank angular acceleration α, rad/s².
-    pub acceleration: f64,
-    /// Time since the start of the motion, s.
-    pub time: f64,
-}
-
-impl CrankState {
-    pub fn new(angle: f64, speed: f64, acceleration: f64, time: f64) -> Self {
-        Self {
-            angle,
-            direction: C::from_polar(1.0, angle),
-            speed,
-            acceleration,
-            time,
-        }
-    }
 }
 
 /// Why a motion cannot reach a crank angle.
