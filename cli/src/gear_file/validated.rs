@@ -106,7 +106,7 @@ pub struct RatingInputs {
     pub load_distribution: LoadDistribution,
     pub members: [MemberInputs; 2],
     /// The smallest bending (SF) and pitting (SH) safety factor the pair must reach,
-    /// `required_safety_factor` (default 1): see [`GearReport::failures`].
+    /// `required_safety_factor` (default 1): see [`GearReport::failures`](super::GearReport::failures).
     pub required_safety_factor: f64,
 }
 

@@ -120,25 +120,8 @@ fn solve(
     let moments: Vec<Moment> = (0..bodies.len())
         .map(|k| Moment::of(topology, state, k))
         .collect();
-    for (k, (body, m)) in bodies.iter().zip(&state.bodies).enumerate() {
-        if inertia {
-            let rhs = body.mass * m.cg.acceleration;
-            b[(3 * k, 0)] = rhs.re;
-            b[(3 * k + 1, 0)] = rhs.im;
-            if moments[k].row == 3 * k + 2 {
-                b[(3 * k + 2, 0)] = body.inertia * m.angular_acceleration;
-            }
-        }
-    }
-    // The lumped bodies' moments, Σ M about the joint = J·α + (g − joint) × m·a_g, added to
-    // the rows they join (after those rows' own terms are set).
-    for (k, (body, m)) in bodies.iter().zip(&state.bodies).enumerate() {
-        let Moment { row, scale, about } = moments[k];
-        if inertia && row != 3 * k + 2 {
-            let rhs = body.mass * m.cg.acceleration;
-            b[(row, 0)] +=
-                scale * (body.inertia * m.angular_acceleration + cross(m.cg.position - about, rhs));
-        }
+    if inertia {
+        inertia_rows(topology, state, &moments, &mut b);
     }
     // The gas pushes each piston along its axis towards the crankshaft, at the piston pin.
     for ((piston, motion), &force) in topology
@@ -217,6 +200,29 @@ fn solve(
     }
     out.crank_torque = x[(drive, 0)];
     (residual, involute.map(|j| x[(columns[j], 0)]))
+}
+
+/// The bodies' inertia in the right-hand side `b`: m·a in each body's force rows, J·α in its own
+/// moment row; a lumped body's moment about its joint, J·α + (g − joint) × m·a, added to the row
+/// it joins (after that row's own terms are set).
+fn inertia_rows(topology: &Topology, state: &State, moments: &[Moment], b: &mut Mat<f64>) {
+    let bodies = &topology.bodies;
+    for (k, (body, m)) in bodies.iter().zip(&state.bodies).enumerate() {
+        let rhs = body.mass * m.cg.acceleration;
+        b[(3 * k, 0)] = rhs.re;
+        b[(3 * k + 1, 0)] = rhs.im;
+        if moments[k].row == 3 * k + 2 {
+            b[(3 * k + 2, 0)] = body.inertia * m.angular_acceleration;
+        }
+    }
+    for (k, (body, m)) in bodies.iter().zip(&state.bodies).enumerate() {
+        let Moment { row, scale, about } = moments[k];
+        if row != 3 * k + 2 {
+            let rhs = body.mass * m.cg.acceleration;
+            b[(row, 0)] +=
+                scale * (body.inertia * m.angular_acceleration + cross(m.cg.position - about, rhs));
+        }
+    }
 }
 
 /// Where a body's moment equation goes: its own row, about its centre of gravity; or, for a
