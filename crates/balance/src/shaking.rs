@@ -80,7 +80,13 @@ pub fn shaking_lane(topology: &Topology, block: &StateBlock, i: usize) -> Shakin
 /// Adds one body's inertia force −m·a and its moment about the crank axis, z × (−m·a) − J·α,
 /// to `out` (module note).
 #[inline(always)]
-fn add_body(out: &mut Shaking, body: &Body, position: C, acceleration: C, angular_acceleration: f64) {
+fn add_body(
+    out: &mut Shaking,
+    body: &Body,
+    position: C,
+    acceleration: C,
+    angular_acceleration: f64,
+) {
     let inertia_force = -body.mass * acceleration;
     out.force += inertia_force;
     out.roll += cross(position, inertia_force) - body.inertia * angular_acceleration;

@@ -8,7 +8,7 @@
 
 mod common;
 
-use cardan_balance::{CylinderScratch, Layout, MachineBalance, Cylinder};
+use cardan_balance::{Cylinder, CylinderScratch, Layout, MachineBalance};
 use cardan_mechanism::{CrankState, Mechanism, State, StateBlock, MECHANISMS, ZERO};
 use common::*;
 use std::f64::consts::PI;

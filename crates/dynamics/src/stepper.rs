@@ -60,8 +60,7 @@ pub fn run(
     let mut by_block = BlockValues::new(stages);
     // The steps one at a time, for the sinks that take them and for the stages that evaluate
     // one step at a time.
-    let one_by_one =
-        details || !by_block.takes_all() || sinks.iter().any(|s| s.wants_steps());
+    let one_by_one = details || !by_block.takes_all() || sinks.iter().any(|s| s.wants_steps());
     let pistons = if gas.is_some() {
         topology.pistons.len()
     } else {
@@ -476,7 +475,9 @@ impl BlockValues {
     fn evaluate(&mut self, stages: &mut [&mut dyn Stage], states: &StateBlock, total: &LoadsBlock) {
         for (k, stage) in stages.iter_mut().enumerate() {
             self.errors[k] = match self.by_block[k] {
-                true => stage.evaluate_block(states, total, &mut self.columns[k]).err(),
+                true => stage
+                    .evaluate_block(states, total, &mut self.columns[k])
+                    .err(),
                 false => None,
             };
         }
