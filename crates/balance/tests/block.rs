@@ -76,9 +76,9 @@ fn the_balance_of_a_block_is_the_balance_of_each_step_bit_for_bit() {
                 block.gather(i, &mut state);
                 let s = balance.at_state(&state, &mut scratch);
                 let each = [s.force.re, s.force.im, s.pitch(), s.yaw()];
-                for (k, v) in each.iter().enumerate() {
+                for (k, (column, v)) in out.iter().zip(&each).enumerate() {
                     assert_eq!(
-                        out[k][i].to_bits(),
+                        column[i].to_bits(),
                         v.to_bits(),
                         "{}, {machine:?}: lane {i}, value {k}",
                         entry.name

@@ -3,9 +3,10 @@
 //! each load family its loads' columns, the finiteness of every step is checked, and the block
 //! is handed to the sinks (the summary reads the columns; per-step files and the stages
 //! ([`Stage`]: the losses, the gear ratings) take the steps one at a time, gathered from the
-//! columns only where they are wanted; a stage that can evaluates the whole block from its
-//! columns, [`Stage::by_block`]: the machine's balance) and then forgotten. Nothing here grows with the number
-//! of steps. [`crate::run_parallel`] shares one run among threads, each piece through this loop.
+//! columns only where they are wanted; a stage that can, the machine's balance, evaluates the
+//! whole block from its columns, [`Stage::by_block`]) and then forgotten. Nothing here grows
+//! with the number of steps. [`crate::run_parallel`] shares one run among threads, each piece
+//! through this loop.
 
 use crate::energy::torque_shares;
 use crate::family::LoadFamily;
