@@ -33,5 +33,7 @@ pub use counterweight::{
 };
 pub use harmonics::{orders, revolution, Order};
 pub use layout::{throws_from_firing_order, Cylinder, Layout, MachineOrders, MachineShaking};
-pub use machine::{MachineBalance, Phase, PreparedBalance, MAX_ORDER, ORDER_STEPS};
-pub use shaking::{shaking, Shaking};
+pub use machine::{
+    CylinderScratch, MachineBalance, Phase, PreparedBalance, MAX_ORDER, ORDER_STEPS,
+};
+pub use shaking::{shaking, shaking_lane, Shaking};

@@ -14,8 +14,8 @@ use crate::counterweight::{
     Rotor,
 };
 use crate::layout::{Layout, MachineOrders, MachineShaking};
-use crate::shaking::{shaking, Shaking};
-use cardan_mechanism::{CrankState, Mechanism, State, C};
+use crate::shaking::{shaking_lane, Shaking};
+use cardan_mechanism::{Column, CrankState, Mechanism, State, StateBlock, C};
 use std::sync::Arc;
 
 /// Steps of the revolution over which the orders are taken: orders up to 6 are asked for, and
@@ -275,14 +275,22 @@ impl PreparedBalance {
     }
 
     /// The machine's shaking at `crank`, cylinder 1's own shaking being `first` where its
-    /// state is the step's (the stepper's columns; computed here otherwise).
-    pub fn at(&self, crank: &CrankState, first: Option<Shaking>) -> MachineShaking {
+    /// state is the step's (the stepper's columns; computed here otherwise, each cylinder's
+    /// state filled into `scratch`'s block of one lane: no block made per step).
+    pub fn at(
+        &self,
+        crank: &CrankState,
+        first: Option<Shaking>,
+        scratch: &mut CylinderScratch,
+    ) -> MachineShaking {
         let m = self.mechanism.as_ref();
+        let t = m.topology();
         let per_cylinder = (0..self.layout.cylinders.len()).map(|i| match first {
             Some(s) if i == 0 && is_own_frame(&self.layout, 0) => s,
             _ => {
-                let state = m.state(&self.layout.cylinder_crank(i, crank));
-                shaking(m.topology(), &state)
+                let block = scratch.block(t);
+                block.fill(m, &[self.layout.cylinder_crank(i, crank)]);
+                shaking_lane(t, block, 0)
             }
         });
         self.layout
@@ -290,9 +298,55 @@ impl PreparedBalance {
     }
 
     /// [`PreparedBalance::at`] the state `state` of cylinder 1 (a whole step).
-    pub fn at_state(&self, state: &State) -> MachineShaking {
-        let own = shaking(self.mechanism.topology(), state);
-        self.at(&state.crank, Some(own))
+    pub fn at_state(&self, state: &State, scratch: &mut CylinderScratch) -> MachineShaking {
+        let own = crate::shaking::shaking(self.mechanism.topology(), state);
+        self.at(&state.crank, Some(own), scratch)
+    }
+
+    /// Whether [`PreparedBalance::at_block`] takes the machine: one cylinder.
+    pub fn by_block(&self) -> bool {
+        self.layout.cylinders.len() == 1
+    }
+
+    /// [`PreparedBalance::at_state`] at every lane of `states` (cylinder 1's states), read from
+    /// the block's columns, into `out`'s first four columns: the shaking force's x and y, the
+    /// free moment's pitch and yaw. The same operations in the same order as at each step
+    /// (the same bits). A machine of one cylinder only ([`PreparedBalance::by_block`]); one not
+    /// in its own frame has its states filled into `scratch`'s block.
+    ///
+    /// # Panics
+    /// With several cylinders, or fewer than four columns.
+    pub fn at_block(&self, states: &StateBlock, scratch: &mut CylinderScratch, out: &mut [Column]) {
+        assert!(self.by_block(), "a block of a machine of one cylinder");
+        let m = self.mechanism.as_ref();
+        let t = m.topology();
+        let n = states.len;
+        let own: &StateBlock = if is_own_frame(&self.layout, 0) {
+            states
+        } else {
+            scratch.cranks.clear();
+            let own = (0..n).map(|i| self.layout.cylinder_crank(0, &states.crank.at(i)));
+            scratch.cranks.extend(own);
+            let block = scratch
+                .block
+                .get_or_insert_with(|| Box::new(StateBlock::for_topology(t)));
+            block.fill(m, &scratch.cranks);
+            block
+        };
+        let [fx, fy, pitch, yaw, ..] = out else {
+            panic!("four columns: the force's x and y, the moment's pitch and yaw");
+        };
+        for i in 0..n {
+            let s = shaking_lane(t, own, i);
+            let crank = states.crank.at(i);
+            let machine = self
+                .layout
+                .sum_on(&self.axes, std::iter::once(s), &self.rotors, &crank);
+            fx[i] = machine.force.re;
+            fy[i] = machine.force.im;
+            pitch[i] = machine.pitch();
+            yaw[i] = machine.yaw();
+        }
     }
 
     /// The orders 0..=[`MAX_ORDER`] of the shaking force and free moment over one revolution
@@ -305,5 +359,22 @@ impl PreparedBalance {
             ORDER_STEPS,
             MAX_ORDER,
         )
+    }
+}
+
+/// Room for the states of the cylinders [`PreparedBalance::at`] and
+/// [`PreparedBalance::at_block`] evaluate apart from the step's: a block (some 30 kB, made at
+/// its first use and kept) and its crank states.
+#[derive(Debug, Clone, Default)]
+pub struct CylinderScratch {
+    block: Option<Box<StateBlock>>,
+    cranks: Vec<CrankState>,
+}
+
+impl CylinderScratch {
+    /// The kept block, made for `topology` at its first use.
+    fn block(&mut self, topology: &cardan_mechanism::Topology) -> &mut StateBlock {
+        self.block
+            .get_or_insert_with(|| Box::new(StateBlock::for_topology(topology)))
     }
 }

@@ -19,7 +19,7 @@
 //! elsewhere (mass 0, such as a balanced crankshaft) add nothing either; their real unbalance is
 //! given explicitly as rotors ([`crate::Rotor`]).
 
-use cardan_mechanism::{cross, State, Topology, C};
+use cardan_mechanism::{cross, Body, State, StateBlock, Topology, C};
 
 /// The inertia loads one mechanism's moving masses put on the frame at one step, in the
 /// mechanism's own plane frame (origin on the crank axis, the cylinder along +y).
@@ -47,10 +47,47 @@ impl std::ops::Add for Shaking {
 pub fn shaking(topology: &Topology, state: &State) -> Shaking {
     let mut out = Shaking::default();
     for (body, motion) in topology.bodies.iter().zip(&state.bodies) {
-        let inertia_force = -body.mass * motion.cg.acceleration;
-        out.force += inertia_force;
-        out.roll +=
-            cross(motion.cg.position, inertia_force) - body.inertia * motion.angular_acceleration;
+        let cg = &motion.cg;
+        add_body(
+            &mut out,
+            body,
+            cg.position,
+            cg.acceleration,
+            motion.angular_acceleration,
+        );
     }
     out
+}
+
+/// [`shaking`] at lane `i` of `block`, read from its columns: the same operations in the same
+/// order (the same bits), without gathering the lane's whole state.
+#[inline]
+pub fn shaking_lane(topology: &Topology, block: &StateBlock, i: usize) -> Shaking {
+    let mut out = Shaking::default();
+    for (body, c) in topology.bodies.iter().zip(&block.bodies) {
+        let cg = &c.cg;
+        add_body(
+            &mut out,
+            body,
+            C::new(cg.x[i], cg.y[i]),
+            C::new(cg.ax[i], cg.ay[i]),
+            c.angular_acceleration[i],
+        );
+    }
+    out
+}
+
+/// Adds one body's inertia force −m·a and its moment about the crank axis, z × (−m·a) − J·α,
+/// to `out` (module note).
+#[inline(always)]
+fn add_body(
+    out: &mut Shaking,
+    body: &Body,
+    position: C,
+    acceleration: C,
+    angular_acceleration: f64,
+) {
+    let inertia_force = -body.mass * acceleration;
+    out.force += inertia_force;
+    out.roll += cross(position, inertia_force) - body.inertia * angular_acceleration;
 }

@@ -8,7 +8,7 @@
 
 use crate::metrics::{MetricDef, Summary};
 use crate::step::StepBlock;
-use cardan_mechanism::{Loads, State};
+use cardan_mechanism::{Column, Loads, LoadsBlock, State, StateBlock};
 use std::any::Any;
 use std::ops::Range;
 
@@ -83,8 +83,11 @@ pub struct StageColumn {
 }
 
 /// A computation run at every step on the step's state and total loads. Stages are evaluated
-/// in the run's order, one step at a time (a run with stages gathers its steps from the
-/// columns): a dynamic call per stage and step, beside models that cost far more.
+/// in the run's order, one step at a time (a run with such stages gathers its steps from the
+/// columns): a dynamic call per stage and step, beside models that cost far more. A stage that
+/// needs only the block's states and total loads may evaluate a whole block from its columns
+/// instead ([`Stage::by_block`]): a run whose stages all do so, and whose sinks want neither
+/// steps nor details, gathers no step.
 pub trait Stage: Send + Sync {
     /// The number of values it gives per step.
     fn width(&self) -> usize;
@@ -116,6 +119,30 @@ pub trait Stage: Send + Sync {
 
     /// A copy for a piece of a run shared by threads, before it takes any step.
     fn fork(&self) -> Box<dyn Stage>;
+
+    /// Whether it evaluates whole blocks ([`Stage::evaluate_block`]) rather than one step at a
+    /// time: a stage that needs only a step's state and total loads, takes nothing handed on
+    /// and hands nothing on.
+    fn by_block(&self) -> bool {
+        false
+    }
+
+    /// For a stage [`by_block`](Stage::by_block): its values at every lane of the block
+    /// `states`, whose total loads are `total`, into `out` (a column per value,
+    /// [`Stage::width`] of them), the very values [`Stage::evaluate`] gives at each step (the
+    /// same bits). An error names the first lane it fails at and why (its values from there
+    /// on are not used; every lane is evaluated, whatever its inputs, without panicking).
+    fn evaluate_block(
+        &mut self,
+        _states: &StateBlock,
+        _total: &LoadsBlock,
+        _out: &mut [Column],
+    ) -> Result<(), (usize, StageError)> {
+        Err((
+            0,
+            StageError::Failed("the stage evaluates one step at a time".into()),
+        ))
+    }
 }
 
 /// The run's totals a stage's accumulator may refer its metrics to.
@@ -140,7 +167,8 @@ impl RunTotals<'_> {
 /// chunk by chunk ([`crate::summary_chunk`]), and is joined with the accumulators of the later
 /// pieces of a shared run, bit for bit as if it had taken every step.
 pub trait StageTotals: std::fmt::Debug + Send + Sync {
-    /// Takes the stage's values (`block.steps[i].stages[stage]`) at the lanes `lanes` of `block`
+    /// Takes the stage's values (`block.steps[i].stages[stage]`, or `block.stage_columns[stage]`
+    /// for a stage evaluated [by block](Stage::by_block)) at the lanes `lanes` of `block`
     /// (none of them but the last closing a chunk); `previous` is the time of the step before
     /// them (`None` before the summary's first step).
     fn push_lanes(

@@ -43,8 +43,13 @@ pub struct StepBlock<'a> {
     /// Their sum.
     pub total: &'a LoadsBlock,
     /// The same steps one at a time, with the values of the run's stages: made only when a
-    /// sink [wants](Sink::wants_steps) them or the run has stages (empty otherwise).
+    /// sink [wants](Sink::wants_steps) them or [details](Sink::wants_details), or a stage of
+    /// the run evaluates one step at a time (empty otherwise).
     pub steps: &'a [Step<'a>],
+    /// The values of the run's stages that evaluate whole blocks ([`crate::Stage::by_block`]),
+    /// by stage in the run's order: a column per value, lane `i` step `first + i` (empty for a
+    /// stage evaluated one step at a time: its values are in [`StepBlock::steps`]).
+    pub stage_columns: &'a [Vec<Column>],
 }
 
 impl StepBlock<'_> {

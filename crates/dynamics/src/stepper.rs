@@ -3,8 +3,10 @@
 //! each load family its loads' columns, the finiteness of every step is checked, and the block
 //! is handed to the sinks (the summary reads the columns; per-step files and the stages
 //! ([`Stage`]: the losses, the gear ratings) take the steps one at a time, gathered from the
-//! columns only where they are wanted) and then forgotten. Nothing here grows with the number
-//! of steps. [`crate::run_parallel`] shares one run among threads, each piece through this loop.
+//! columns only where they are wanted; a stage that can, the machine's balance, evaluates the
+//! whole block from its columns, [`Stage::by_block`]) and then forgotten. Nothing here grows
+//! with the number of steps. [`crate::run_parallel`] shares one run among threads, each piece
+//! through this loop.
 
 use crate::energy::torque_shares;
 use crate::family::LoadFamily;
@@ -12,7 +14,7 @@ use crate::stage::{Handed, Stage, StageError, StageInput};
 use crate::step::{Sink, Step, StepBlock};
 use cardan_mechanism::{
     vectorised, Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
-    Topology, LANES,
+    Topology, LANES, ZERO,
 };
 
 /// Why a run stopped.
@@ -55,8 +57,11 @@ pub fn run(
     let mut loads = vec![LoadsBlock::for_topology(topology); families.len()];
     let mut total = LoadsBlock::for_topology(topology);
     let details = sinks.iter().any(|s| s.wants_details());
-    // The steps one at a time, for the sinks that take them and for the stages.
-    let one_by_one = details || !stages.is_empty() || sinks.iter().any(|s| s.wants_steps());
+    // The values of the stages that evaluate whole blocks.
+    let mut by_block = BlockValues::new(stages);
+    // The steps one at a time, for the sinks that take them and for the stages that evaluate
+    // one step at a time.
+    let one_by_one = details || !by_block.takes_all() || sinks.iter().any(|s| s.wants_steps());
     let pistons = if gas.is_some() {
         topology.pistons.len()
     } else {
@@ -98,6 +103,8 @@ pub fn run(
         if let Some(t) = total.crank_torque[..n].last() {
             previous_torque = Some(*t);
         }
+        by_block.evaluate(stages, &states, total);
+        let failed = by_block.failed();
         for i in 0..n {
             let step = index + i;
             if !clean {
@@ -105,7 +112,10 @@ pub fn run(
                 loading.check_lane(step, &states, i, gas, &loads, total, mechanism)?;
             }
             let Some(o) = out.get_mut(i) else {
-                if clean {
+                if let Some(e) = by_block.first_failed_at(i) {
+                    return Err(e.at(step, states.crank.angle[i]));
+                }
+                if clean && !failed {
                     break;
                 }
                 continue;
@@ -118,7 +128,12 @@ pub fn run(
                 loads: &loads,
                 total,
             };
-            o.take(&lane, &loading, mechanism, details, stages, &mut handed)
+            let staged = Staged {
+                stages: &mut *stages,
+                by_block: &mut by_block,
+                handed: &mut handed,
+            };
+            o.take(&lane, &loading, mechanism, details, staged)
                 .map_err(|e| e.at(step, o.state.crank.angle))?;
         }
         // The block's steps, in an allocation kept from block to block (emptied, it takes
@@ -146,6 +161,7 @@ pub fn run(
             families: &loads,
             total,
             steps: &steps,
+            stage_columns: &by_block.columns,
         };
         for sink in sinks.iter_mut() {
             sink.push_block(&taken)
@@ -347,15 +363,15 @@ impl StepOut {
     }
 
     /// Takes `lane` one at a time: gathers its state and loads (with the state's extras and
-    /// the torque shares if `details`), then evaluates the `stages` on them in turn.
+    /// the torque shares if `details`), then evaluates the stages on them in turn (the values
+    /// of a stage evaluated by block taken from its columns).
     fn take(
         &mut self,
         lane: &Lane,
         loading: &Loading,
         mechanism: &dyn Mechanism,
         details: bool,
-        stages: &mut [&mut dyn Stage],
-        handed: &mut Handed,
+        staged: Staged,
     ) -> Result<(), StageError> {
         let topology = mechanism.topology();
         let i = lane.i;
@@ -396,11 +412,95 @@ impl StepOut {
             pressure: lane.pressure,
             gas: loading.gas,
         };
+        let Staged {
+            stages,
+            by_block,
+            handed,
+        } = staged;
         handed.mesh_losses.clear();
-        for (stage, values) in stages.iter_mut().zip(&mut self.stages) {
-            stage.evaluate(&input, handed, values)?;
+        for (k, (stage, values)) in stages.iter_mut().zip(&mut self.stages).enumerate() {
+            if !by_block.by_block[k] {
+                stage.evaluate(&input, handed, values)?;
+                continue;
+            }
+            if let Some(e) = by_block.failed_at(k, i) {
+                return Err(e);
+            }
+            for (v, c) in values.iter_mut().zip(&by_block.columns[k]) {
+                *v = c[i];
+            }
         }
         Ok(())
+    }
+}
+
+/// The run's stages as a step takes them: the stages, the values of those evaluated by block,
+/// what each step's stages hand on to the later ones.
+struct Staged<'a, 's> {
+    stages: &'a mut [&'s mut dyn Stage],
+    by_block: &'a mut BlockValues,
+    handed: &'a mut Handed,
+}
+
+/// The values of the stages that evaluate whole blocks ([`Stage::by_block`]), a column per
+/// value (no columns for a stage evaluated one step at a time), and the first lane each failed
+/// at in the block, with why.
+struct BlockValues {
+    /// Whether each stage is evaluated by block.
+    by_block: Vec<bool>,
+    columns: Vec<Vec<Column>>,
+    errors: Vec<Option<(usize, StageError)>>,
+}
+
+impl BlockValues {
+    fn new(stages: &[&mut dyn Stage]) -> Self {
+        let by_block: Vec<bool> = stages.iter().map(|s| s.by_block()).collect();
+        let columns = stages
+            .iter()
+            .zip(&by_block)
+            .map(|(s, &b)| if b { vec![ZERO; s.width()] } else { vec![] })
+            .collect();
+        Self {
+            by_block,
+            columns,
+            errors: vec![None; stages.len()],
+        }
+    }
+
+    /// Whether every stage is evaluated by block.
+    fn takes_all(&self) -> bool {
+        self.by_block.iter().all(|&b| b)
+    }
+
+    /// Evaluates the stages by block at `states`, whose total loads are `total`.
+    fn evaluate(&mut self, stages: &mut [&mut dyn Stage], states: &StateBlock, total: &LoadsBlock) {
+        for (k, stage) in stages.iter_mut().enumerate() {
+            self.errors[k] = match self.by_block[k] {
+                true => stage
+                    .evaluate_block(states, total, &mut self.columns[k])
+                    .err(),
+                false => None,
+            };
+        }
+    }
+
+    /// Whether a stage failed at a lane of the block.
+    fn failed(&self) -> bool {
+        self.errors.iter().any(Option::is_some)
+    }
+
+    /// Why stage `k` failed at lane `i`, if it did there.
+    fn failed_at(&mut self, k: usize, i: usize) -> Option<StageError> {
+        let error = &mut self.errors[k];
+        match error {
+            Some((lane, _)) if *lane == i => error.take().map(|(_, e)| e),
+            _ => None,
+        }
+    }
+
+    /// Why the first stage in the run's order that failed at lane `i` failed there.
+    fn first_failed_at(&mut self, i: usize) -> Option<StageError> {
+        (0..self.errors.len()).find_map(|k| self.failed_at(k, i))
     }
 }
 

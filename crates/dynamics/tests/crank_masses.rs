@@ -164,7 +164,9 @@ fn the_cardan_pair_loads_the_joints_and_leaves_the_frame_unshaken() {
         );
         for s in &carried {
             let angle = s.state.crank.angle;
-            let machine_shaking = prepared.at_state(&s.state).force;
+            let machine_shaking = prepared
+                .at_state(&s.state, &mut cardan_balance::CylinderScratch::default())
+                .force;
             near(
                 &format!("{name} at {angle} rad: the pair's machine shaking"),
                 machine_shaking.norm(),

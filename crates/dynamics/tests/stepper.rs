@@ -2,13 +2,16 @@
 //! one at a time; either way every step reaches the sinks in order, and a motion that cannot
 //! go on fails at the step where it stops.
 
+use cardan_balance::{Cylinder, Layout, MachineBalance};
 use cardan_dynamics::{
-    run, Inertial, LoadFamily, RunError, Sink, Solver, Steps, Summary, SummarySink,
+    run, Handed, Inertial, LoadFamily, MachineStage, MetricDef, RunError, Sink, Solver, Stage,
+    StageColumn, StageError, StageInput, StageTotals, Steps, Summary, SummarySink,
 };
 use cardan_mechanism::{
-    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, MotionError, MotionSource, Options,
-    MECHANISMS,
+    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, Mechanism, MotionError,
+    MotionSource, Options, MECHANISMS,
 };
+use std::sync::Arc;
 
 /// The same states, handed out as a solved motion would (one at a time).
 struct OneByOne(Grid);
@@ -119,6 +122,106 @@ fn a_crank_that_stops_mid_block_fails_at_its_step() {
         match result {
             Err(RunError::Motion { step, .. }) => assert_eq!(step, 102),
             other => panic!("{other:?}"),
+        }
+    }
+}
+
+/// A stage that evaluates the machine's balance one step at a time (the stage it wraps could
+/// do whole blocks).
+struct StepByStep(MachineStage);
+
+impl Stage for StepByStep {
+    fn width(&self) -> usize {
+        self.0.width()
+    }
+    fn evaluate(
+        &mut self,
+        input: &StageInput,
+        handed: &mut Handed,
+        out: &mut [f64],
+    ) -> Result<(), StageError> {
+        self.0.evaluate(input, handed, out)
+    }
+    fn columns(&self) -> Vec<StageColumn> {
+        self.0.columns()
+    }
+    fn metrics(&self) -> &'static [MetricDef] {
+        self.0.metrics()
+    }
+    fn totals(&self) -> Box<dyn StageTotals> {
+        self.0.totals()
+    }
+    fn fork(&self) -> Box<dyn Stage> {
+        Box::new(StepByStep(self.0.clone()))
+    }
+}
+
+/// The balance of a machine of one cylinder is evaluated a block at a time from the block's
+/// columns (`Stage::by_block`): alone (no step gathered), with every step kept (its values
+/// handed to the steps from the columns) and step by step, the same summary and step values,
+/// bit for bit, for every mechanism, with rotors (a counterweight, Lanchester shafts) at an
+/// accelerating crank; in its own frame and turned.
+#[test]
+fn a_stage_by_block_gives_the_bits_of_a_stage_step_by_step() {
+    let g = MachineGeometry {
+        crank_length: 0.06,
+        rod_length: 0.14,
+        bore: 0.12,
+        pin_offset: 0.0,
+    };
+    let motion = CrankMotion {
+        start_angle: 1.0,
+        initial_speed: 100.0,
+        angular_acceleration: 500.0,
+    };
+    let turned = Layout {
+        cylinders: vec![Cylinder {
+            throw: 0.4,
+            axis_angle: 0.3,
+            axial_position: 0.0,
+        }],
+    };
+    for entry in MECHANISMS {
+        let m: Arc<dyn Mechanism> = (entry.build)(&g, &MassInputs::default(), &Options::new())
+            .unwrap()
+            .into();
+        for layout in [Layout::single(), turned.clone()] {
+            let machine = MachineBalance {
+                layout,
+                counterweight: Some(0.5),
+                lanchester: true,
+                ..MachineBalance::default()
+            };
+            let stage = MachineStage::new(&machine, Arc::clone(&m), 100.0).unwrap();
+            assert!(stage.by_block());
+            let inertial = Inertial::new(Solver::ClosedForm);
+            let families: [&dyn LoadFamily; 1] = [&inertial];
+            // (by block, keep the steps)
+            let mut runs = Vec::new();
+            for (by_block, keep) in [(true, false), (true, true), (false, true)] {
+                let mut stage_by_block = stage.clone();
+                let mut step_by_step = StepByStep(stage.clone());
+                let s: &mut dyn Stage = match by_block {
+                    true => &mut stage_by_block,
+                    false => &mut step_by_step,
+                };
+                let mut grid = Grid::new(motion, 1.0, 20.0, 2 * 128 + 11);
+                let mut summary =
+                    SummarySink::new(m.as_ref(), &["inertial"], grid.len()).with_stages(&[&*s]);
+                let mut kept = Steps::default();
+                let mut sinks: Vec<&mut dyn Sink> = vec![&mut summary];
+                if keep {
+                    sinks.push(&mut kept);
+                }
+                run(m.as_ref(), &mut grid, &families, None, &mut [s], &mut sinks).unwrap();
+                let values: Vec<Vec<u64>> = (kept.0.iter())
+                    .map(|r| r.stages[0].iter().map(|v| v.to_bits()).collect())
+                    .collect();
+                runs.push((summary.finish(m.as_ref()).unwrap(), values));
+            }
+            assert_eq!(runs[0].0, runs[2].0, "{}", entry.name);
+            assert_eq!(runs[1], runs[2], "{}", entry.name);
+            assert!(runs[2].0.get("shaking_force_max").unwrap() > 0.0);
         }
     }
 }
