@@ -112,14 +112,7 @@ fn shards_from_the_command_line_merge_into_one_run() {
     let file = configs().join("sweeps/karhula-pump-speed-sweep.toml");
     assert!(file.is_file());
     let single = tmp.path().join("single");
-    let out = run(&[
-        "run".as_ref(),
-        file.as_os_str(),
-        "--out".as_ref(),
-        single.as_os_str(),
-        "--quiet".as_ref(),
-    ]);
-    assert!(out.status.success(), "{out:?}");
+    run_single(&file, &single);
     let shards: Vec<PathBuf> = (1..=2).map(|k| tmp.path().join(format!("s{k}"))).collect();
     for (k, dir) in shards.iter().enumerate() {
         let spec = format!("{}/2", k + 1);
@@ -196,14 +189,7 @@ fn a_table_sweep_in_three_shards_merges_into_one_run() {
     );
     std::fs::write(&file, text).unwrap();
     let single = tmp.path().join("single");
-    let out = run(&[
-        "run".as_ref(),
-        file.as_os_str(),
-        "--out".as_ref(),
-        single.as_os_str(),
-        "--quiet".as_ref(),
-    ]);
-    assert!(out.status.success(), "{out:?}");
+    run_single(&file, &single);
     let shards: Vec<PathBuf> = (1..=3).map(|k| tmp.path().join(format!("s{k}"))).collect();
     let shard_run = |k: usize| {
         let spec = format!("{k}/3");
@@ -576,4 +562,16 @@ fn a_real_slurm_job_array_merges_into_one_run() {
         }
     };
     assert_same(&single, &out, "real slurm");
+}
+
+/// `cardan run FILE --out SINGLE --quiet`, which must succeed: the single run a merge must equal.
+fn run_single(file: &Path, single: &Path) {
+    let out = run(&[
+        "run".as_ref(),
+        file.as_os_str(),
+        "--out".as_ref(),
+        single.as_os_str(),
+        "--quiet".as_ref(),
+    ]);
+    assert!(out.status.success(), "{out:?}");
 }

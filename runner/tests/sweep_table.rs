@@ -110,13 +110,7 @@ fn the_table_holds_the_sweep_csv_bit_for_bit() {
     }
     let merged = tmp.path().join("merged");
     assert!(merge(&shards, &merged).failures.is_empty());
-    let same = std::process::Command::new("diff")
-        .arg("-r")
-        .arg(&single)
-        .arg(&merged)
-        .status()
-        .unwrap();
-    assert!(same.success(), "merged differs from the single run");
+    assert_same_tree(&single, &merged);
 }
 
 #[test]
@@ -189,13 +183,7 @@ fn a_table_split_over_three_shards_merges_into_the_single_run() {
     );
     assert!(r.failures.is_empty(), "{:?}", r.failures);
     assert_eq!(r.sweeps[0].2, 80);
-    let same = std::process::Command::new("diff")
-        .arg("-r")
-        .arg(&single)
-        .arg(&merged)
-        .status()
-        .unwrap();
-    assert!(same.success(), "merged differs from the single run");
+    assert_same_tree(&single, &merged);
 
     let refused = |words: &[&str]| {
         let out = tmp.path().join("refused");
@@ -325,4 +313,15 @@ fn the_metrics_chosen_are_the_tables_columns() {
         "{said}"
     );
     assert!(r.sweeps.is_empty() && !bad.join("t").exists());
+}
+
+/// Fails unless the folders `single` and `merged` hold the same files, byte for byte (`diff -r`).
+fn assert_same_tree(single: &Path, merged: &Path) {
+    let same = std::process::Command::new("diff")
+        .arg("-r")
+        .arg(single)
+        .arg(merged)
+        .status()
+        .unwrap();
+    assert!(same.success(), "merged differs from the single run");
 }
