@@ -64,8 +64,8 @@ impl StepBlock<'_> {
 
     /// Lane `i` as a step: the run's own, if it made the steps one at a time, else gathered
     /// from the columns into `scratch` (a sink that takes few of a block's steps, without
-    /// [wanting](Sink::wants_steps) them all; no stage values or details then, as a run
-    /// without stages or details has none).
+    /// [wanting](Sink::wants_steps) them all), with the values of the stages evaluated by
+    /// block; no details then, as a run without steps has none.
     pub fn step<'s>(&'s self, i: usize, scratch: &'s mut StepScratch) -> Step<'s> {
         if let Some(s) = self.steps.get(i) {
             return *s;
@@ -76,6 +76,7 @@ impl StepBlock<'_> {
             families,
             total,
             shares,
+            stages,
         } = scratch;
         self.state.gather(i, state);
         forces.clear();
@@ -88,6 +89,12 @@ impl StepBlock<'_> {
         }
         self.total.gather(i, total);
         shares.resize(self.families.len(), vec![0.0; state.bodies.len()]);
+        // Without steps, every stage of the run is evaluated by block.
+        stages.resize(self.stage_columns.len(), Vec::new());
+        for (values, columns) in stages.iter_mut().zip(self.stage_columns) {
+            values.clear();
+            values.extend(columns.iter().map(|c| c[i]));
+        }
         Step {
             index: self.first + i,
             state,
@@ -95,7 +102,7 @@ impl StepBlock<'_> {
             piston_forces: forces,
             families,
             total,
-            stages: &[],
+            stages,
             shares,
         }
     }
@@ -109,6 +116,8 @@ pub struct StepScratch {
     families: Vec<Loads>,
     total: Loads,
     shares: Vec<Vec<f64>>,
+    /// Each stage's values at the step.
+    stages: Vec<Vec<f64>>,
 }
 
 impl StepScratch {
@@ -120,6 +129,7 @@ impl StepScratch {
             families: Vec::new(),
             total: Loads::for_topology(topology),
             shares: Vec::new(),
+            stages: Vec::new(),
         }
     }
 }
