@@ -502,13 +502,13 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         }
     };
     let balance = crate::balance::build(raw.layout.as_ref(), raw.balance.as_ref(), &invalid)?;
-    let mechanisms = check_machine(&balance, mechanisms, pistons, &invalid)?;
+    let machines = check_machine(&balance, mechanisms, (pistons, machine), &invalid)?;
+    let mechanisms = machines.iter().map(|m| Arc::clone(m.mechanism())).collect();
     let setups = setups(
-        &mechanisms,
+        &machines,
         geometry.bore,
-        friction.as_ref(),
-        gear.as_ref(),
-        (&balance, motion.initial_speed),
+        (friction.as_ref(), gear.as_ref(), gas.is_some()),
+        motion.initial_speed,
         &invalid,
     )?;
     if dynamics.is_some() {
@@ -558,15 +558,16 @@ fn solved_friction(setups: &[Setup], invalid: &Invalid) -> Result<(), CaseError>
 
 /// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a
 /// mechanism whose pistons move in no cylinder, a balancing device the mechanism has no body
-/// for ([`cardan_balance::MachineBalance::prepare`]); returns the mechanisms equipped with what
-/// the machine puts on their bodies (the cardan pair's wheel counterweight,
+/// for; returns each mechanism's [`cardan_dynamics::Machine`], built here once
+/// ([`cardan_balance::MachineBalance::prepare`]), with the mechanism equipped with what the
+/// machine puts on its bodies (the cardan pair's wheel counterweight,
 /// [`cardan_balance::MachineBalance::equip`]), which the runs take.
 fn check_machine(
     machine: &cardan_balance::MachineBalance,
     mechanisms: Vec<Arc<dyn Mechanism>>,
-    pistons: u32,
+    (pistons, kind): (u32, Machine),
     invalid: &Invalid,
-) -> Result<Vec<Arc<dyn Mechanism>>, CaseError> {
+) -> Result<Vec<Arc<cardan_dynamics::Machine>>, CaseError> {
     let n = machine.layout.cylinders.len();
     if n > 1 && pistons == 2 {
         return Err(invalid(
@@ -575,7 +576,11 @@ fn check_machine(
             "a machine of several opposed-piston cylinders is not modelled: run one cylinder",
         ));
     }
-    let mut equipped = Vec::with_capacity(mechanisms.len());
+    let kind = match kind {
+        Machine::Pump => cardan_dynamics::MachineKind::Pump,
+        Machine::Engine => cardan_dynamics::MachineKind::Engine,
+    };
+    let mut machines = Vec::with_capacity(mechanisms.len());
     for m in mechanisms {
         if n > 1 && !m.has_cylinder() {
             return Err(invalid(
@@ -587,15 +592,15 @@ fn check_machine(
                 ),
             ));
         }
-        match machine.prepare(Arc::clone(&m)) {
-            Ok(prepared) => equipped.push(Arc::clone(prepared.mechanism())),
+        match cardan_dynamics::Machine::build(machine, Arc::clone(&m), kind) {
+            Ok(built) => machines.push(Arc::new(built)),
             Err(e) => {
                 let (field, rule) = e.split_once(": ").unwrap_or(("balance", &e));
                 return Err(invalid(field, &format!("(for the {})", m.name()), rule));
             }
         }
     }
-    Ok(equipped)
+    Ok(machines)
 }
 
 /// The case's mechanisms from the registry, each with its masses and options, checked over the
@@ -653,21 +658,21 @@ fn build_mechanisms(
     Ok(mechanisms)
 }
 
-/// Each mechanism's setup ([`Setup::build`]), built with the case's `friction` and `gear`;
-/// `[gear]` is refused if no mechanism has a gear mesh to rate.
+/// Each machine's setup ([`Setup::build`]), built with the case's `friction`, `gear` and gas
+/// (`tables`), its orders at `speed` (rad/s); `[gear]` is refused if no mechanism has a gear
+/// mesh to rate.
 fn setups(
-    mechanisms: &[Arc<dyn Mechanism>],
+    machines: &[Arc<cardan_dynamics::Machine>],
     bore: f64,
-    friction: Option<&Friction>,
-    gear: Option<&GearSpec>,
-    machine: (&cardan_balance::MachineBalance, f64),
+    tables: (Option<&Friction>, Option<&GearSpec>, bool),
+    speed: f64,
     invalid: &Invalid,
 ) -> Result<Vec<Setup>, CaseError> {
-    let setups = mechanisms
+    let setups = machines
         .iter()
-        .map(|m| Setup::build(m, bore, friction, gear, machine, invalid))
+        .map(|m| Setup::build((m, speed), bore, tables, invalid))
         .collect::<Result<Vec<_>, _>>()?;
-    if gear.is_some() && setups.iter().all(|s| s.gear_ratings.is_none()) {
+    if tables.1.is_some() && setups.iter().all(|s| s.gear_ratings.is_none()) {
         return Err(invalid(
             "gear",
             &"a [gear] table",
@@ -688,12 +693,23 @@ impl Case {
             value: crate::units::show(&value.to_string()),
             rule: rule.to_string(),
         };
-        let setups = setups(
-            &self.mechanisms,
-            self.geometry.bore,
+        let machines = check_machine(
+            &self.balance,
+            self.mechanisms.clone(),
+            (self.pistons, self.machine),
+            &invalid,
+        )?;
+        self.mechanisms = machines.iter().map(|m| Arc::clone(m.mechanism())).collect();
+        let tables = (
             self.friction.as_ref(),
             self.gear.as_ref(),
-            (&self.balance, self.motion.initial_speed),
+            self.gas.is_some(),
+        );
+        let setups = setups(
+            &machines,
+            self.geometry.bore,
+            tables,
+            self.motion.initial_speed,
             &invalid,
         )?;
         self.setups = setups;

@@ -5,9 +5,7 @@
 //! has its setup, and the run cannot fail setting it up.
 
 use crate::error::{CaseError, Invalid};
-use cardan_balance::MachineBalance;
-use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget, MachineStage, Stage};
-use cardan_mechanism::Mechanism;
+use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget, Machine, MachineStage, Stage};
 use std::sync::Arc;
 
 /// A mechanism's per-step stages, as validation built them.
@@ -17,23 +15,26 @@ pub struct Setup {
     pub gear_ratings: Option<GearRatings>,
     /// Its loss budget (`None` without `[friction]`).
     pub losses: Option<LossBudget>,
-    /// The machine's balance of it: shaking forces and moments, and the machine's torque.
+    /// The whole machine of it, built once at validation: every cylinder, the crank's
+    /// masses, the balancing devices.
+    pub machine: Arc<Machine>,
+    /// The machine's stage: every cylinder's loads, the machine's torque, journal and pin
+    /// loads, its shaking forces and moments.
     pub balance: MachineStage,
 }
 
 impl Setup {
-    /// The setup of `mechanism` in a cylinder of `bore` (m) under the case's `friction` and
-    /// `gear`, in the machine `machine.0` whose orders are taken at the speed `machine.1`
-    /// (rad/s); a stage that cannot be set up is the case field at fault, for this mechanism.
+    /// The setup of the machine `machine.0`'s mechanism in a cylinder of `bore` (m) under the
+    /// case's `friction` and `gear`, the machine's orders taken at the speed `machine.1`
+    /// (rad/s), `gas`: whether the case has a gas model; a stage that cannot be set up is the
+    /// case field at fault, for this mechanism.
     pub fn build(
-        shared: &Arc<dyn Mechanism>,
+        machine: (&Arc<Machine>, f64),
         bore: f64,
-        friction: Option<&Friction>,
-        gear: Option<&GearSpec>,
-        machine: (&MachineBalance, f64),
+        (friction, gear, gas): (Option<&Friction>, Option<&GearSpec>, bool),
         invalid: &Invalid,
     ) -> Result<Self, CaseError> {
-        let mechanism = shared.as_ref();
+        let mechanism = machine.0.mechanism().as_ref();
         let failed = |e: cardan_dynamics::SetupError| {
             invalid(
                 &e.field,
@@ -52,11 +53,11 @@ impl Setup {
             Some(f) => Some(LossBudget::new(f, mechanism, bore).map_err(failed)?),
             None => None,
         };
-        let balance = MachineStage::new(machine.0, Arc::clone(shared), machine.1)
-            .map_err(|e| invalid("layout", &format!("(for the {})", mechanism.name()), &e))?;
+        let balance = MachineStage::new(Arc::clone(machine.0), machine.1, gas, losses.as_ref());
         Ok(Self {
             gear_ratings,
             losses,
+            machine: Arc::clone(machine.0),
             balance,
         })
     }

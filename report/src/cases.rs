@@ -20,6 +20,8 @@ use std::path::Path;
 /// Groups of the metric tables, in report order.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
 enum Group {
+    /// The whole machine: every cylinder's torque, power, losses, journal and pin loads.
+    Machine,
     Kinematics,
     /// Loads at one joint.
     Joint(String),
@@ -36,6 +38,7 @@ enum Group {
 impl Group {
     fn title(&self) -> String {
         match self {
+            Group::Machine => "The whole machine".into(),
             Group::Kinematics => "Kinematics".into(),
             Group::Joint(j) => format!("Joint loads: `{j}`"),
             Group::Torque => "Drive torque, power and work".into(),
@@ -87,6 +90,7 @@ fn classify(metric: &str, families: &[String]) -> (Group, (usize, (usize, String
         Some(MetricGroup::GearRating) => Group::Gears,
         Some(MetricGroup::Losses) => Group::Losses,
         Some(MetricGroup::Balance) => Group::Balance,
+        Some(MetricGroup::Machine) => Group::Machine,
     };
     (group, key)
 }

@@ -64,20 +64,22 @@ impl Default for MachineBalance {
     }
 }
 
-/// A cylinder of a machine as its crank train sees it: the mechanism at crank angle
-/// θ + `lead`, its gas cycle cylinder 1's `firing_delay` later (θ being the crank angle of
-/// cylinder 1's train, whatever cylinder 1's own throw and axis).
+/// A cylinder of a machine at the machine's crank angle θ (the reference throw's, module note
+/// of `layout`): the mechanism at its own crank angle θ + `lead`, its gas the gas model's at
+/// θ − `firing_delay` (the gas model being a function of a cylinder's own crank angle).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Phase {
-    /// Its crank angle ψ_i ahead of cylinder 1's, (φ_i − β_i) − (φ_1 − β_1), rad
+    /// Its own crank angle ψ_i ahead of the machine's, φ_i − β_i, rad
     /// ([`Layout::cylinder_crank`]).
     pub lead: f64,
-    /// Its firing delay after cylinder 1, rad ([`MachineBalance::firing_delay`]).
+    /// Its gas cycle behind the machine's crank angle, rad: its firing delay after cylinder 1
+    /// ([`MachineBalance::firing_delay`]) less cylinder 1's lead, so that cylinder 1's gas is
+    /// the gas model's at its own angle ψ_1.
     pub firing_delay: f64,
 }
 
 impl Phase {
-    /// Cylinder 1 of its own machine (or the one cylinder).
+    /// The one cylinder of a machine in its own frame (or cylinder 1 of an inline machine).
     pub const FIRST: Phase = Phase {
         lead: 0.0,
         firing_delay: 0.0,
@@ -85,7 +87,9 @@ impl Phase {
 }
 
 impl MachineBalance {
-    /// Every cylinder's [`Phase`], cylinder 1's first (lead and delay 0).
+    /// Every cylinder's [`Phase`], cylinder 1's first (lead and delay 0 where its throw and
+    /// axis are the reference's: every layout but a vee, whose banks lie at ± half the bank
+    /// angle).
     pub fn phases(&self) -> Vec<Phase> {
         let own = |c: &crate::layout::Cylinder| c.throw - c.axis_angle;
         let first = own(&self.layout.cylinders[0]);
@@ -93,10 +97,9 @@ impl MachineBalance {
             .cylinders
             .iter()
             .zip(&self.firing_delay)
-            .enumerate()
-            .map(|(i, (c, &firing_delay))| Phase {
-                lead: if i == 0 { 0.0 } else { own(c) - first },
-                firing_delay,
+            .map(|(c, &delay)| Phase {
+                lead: own(c),
+                firing_delay: delay - first,
             })
             .collect()
     }
@@ -297,10 +300,27 @@ impl PreparedBalance {
             .sum_on(&self.axes, per_cylinder, &self.rotors, crank)
     }
 
+    /// The machine's shaking at `crank` from each cylinder's own (`per_cylinder[i]`, in its
+    /// frame at its own angle) and the rotors' ([`Layout::sum`]).
+    pub fn sum(
+        &self,
+        per_cylinder: impl ExactSizeIterator<Item = Shaking>,
+        crank: &CrankState,
+    ) -> MachineShaking {
+        self.layout
+            .sum_on(&self.axes, per_cylinder, &self.rotors, crank)
+    }
+
     /// [`PreparedBalance::at`] the state `state` of cylinder 1 (a whole step).
     pub fn at_state(&self, state: &State, scratch: &mut CylinderScratch) -> MachineShaking {
         let own = crate::shaking::shaking(self.mechanism.topology(), state);
         self.at(&state.crank, Some(own), scratch)
+    }
+
+    /// Whether cylinder 1 runs at the machine's own crank angle in the machine's frame (no
+    /// throw, no turn of its axis): its state is the mechanism's at the machine's angle.
+    pub fn first_in_own_frame(&self) -> bool {
+        is_own_frame(&self.layout, 0)
     }
 
     /// Whether [`PreparedBalance::at_block`] takes the machine: one cylinder.

@@ -10,7 +10,7 @@
 
 use crate::planar;
 use cardan_mechanism::{
-    Column, JointKind, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, C,
+    Column, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, C,
 };
 
 /// Which path computes the loads.
@@ -133,12 +133,9 @@ fn add_crank_masses(topology: &Topology, u: C, block: &StateBlock, out: &mut Loa
     if u == C::new(0.0, 0.0) {
         return;
     }
-    let main = topology.joints.iter().position(|j| {
-        j.body == topology.crankshaft
-            && j.other.is_none()
-            && matches!(j.kind, JointKind::Revolute(_))
-    });
-    let Some(main) = main else { return };
+    let Some(main) = crate::machine::main_bearing(topology) else {
+        return;
+    };
     let c = &block.crank;
     let joint = &mut out.joints[main];
     for i in 0..block.len {

@@ -46,11 +46,15 @@ pub enum Group {
     /// The machine's shaking force and free moments, their orders, the torque's uniformity
     /// (issue 24, `cardan-balance`).
     Balance,
+    /// The whole machine: every cylinder's drive torque, power, losses and efficiency, the
+    /// loads of its main journals and crank pins (issue 35, [`crate::Machine`]).
+    Machine,
 }
 
 impl Group {
     /// Every group, in report order.
-    pub const ALL: [Group; 7] = [
+    pub const ALL: [Group; 8] = [
+        Group::Machine,
         Group::Kinematics,
         Group::JointLoads,
         Group::DriveTorque,
@@ -69,6 +73,7 @@ impl Group {
             Group::GearRating => "gear rating",
             Group::Losses => "losses and efficiency",
             Group::Balance => "balance: shaking forces and moments",
+            Group::Machine => "the whole machine",
         }
     }
 }
@@ -347,10 +352,20 @@ pub const GAS_MODEL: &[MetricDef] = &[
     ),
 ];
 
-/// The machine's balance (issue 24): the shaking force and free moments of all its cylinders
-/// and rotors on the frame, their orders at constant speed, the summed torque's uniformity
-/// (the `machine_balance` stage, `cardan-balance`).
-pub const BALANCE: &[MetricDef] = &[
+/// The whole machine's metrics (issue 35, the [`crate::MachineStage`]): its drive torque and
+/// power, losses and efficiency, the loads of its main journals and crank pins, every cylinder
+/// at its own crank angle, axis and gas phase; and its balance (issue 24): the shaking force and
+/// free moments of all its cylinders and rotors on the frame, their orders at constant speed,
+/// the machine torque's uniformity.
+pub const MACHINE: &[MetricDef] = &[
+    def("machine_torque_max", "N*m", R, Group::Machine, Ne, "largest drive torque of the whole crankshaft, signed (positive turning it forwards): every cylinder's gas and inertia at its own crank angle and gas phase, plus with [friction] every cylinder's losses Σ P / |ω|; equal to the one cylinder's total (and friction) torque for a machine of one cylinder"),
+    def("machine_torque_min", "N*m", R, Group::Machine, Ne, "smallest drive torque of the whole crankshaft, signed (as machine_torque_max)"),
+    def("machine_torque_mean", "N*m", R, Group::Machine, Ne, "(Σ of every cylinder's drive work ∫ T dθ + with [friction] the machine's loss work) / crank-angle span: what the motor gives (positive) or the engine gives out (negative); one cylinder: total_torque_mean, or torque_need_mean, or −output_torque_mean"),
+    def("machine_power_mean", "W", R, Group::Machine, Ne, "the same work / cycle_time: a pump's or compressor's mean power need (positive), an engine's mean output with its sign turned (negative); one cylinder with friction: power_need_mean or −output_power_mean"),
+    def("machine_loss_power_mean", "W", R, Group::Machine, Lo, "with [friction]: every cylinder's friction losses, Σ ∫ P dt / cycle_time (each cylinder's loss budget at its own state and loads)"),
+    def("machine_mechanical_efficiency", "1", R, Group::Machine, Hi, "with [friction] and a gas model, one definition per machine kind whatever the run's motion: pump Σ gas work / (Σ drive work + loss work) (Karhula A9.1.72-73), engine (−Σ drive work − loss work) / −Σ drive work (A9.1.74-75), over every cylinder"),
+    def("machine_main_bearing_force_max", "N", R, Group::Machine, Lo, "largest load over the run on any main journal of the crankshaft: one journal for a one-throw machine (the mechanism's main bearing, every cylinder's sum), else one each side of every throw, each throw's main-bearing load split half to each (statically determinate, docs/results.md)"),
+    def("machine_crank_pin_force_max", "N", R, Group::Machine, Lo, "largest load over the run on any crank pin, a pin carrying every rod on it (a vee's pair, a radial's star)"),
     def("shaking_force_max", "N", R, Group::Balance, Lo, "largest magnitude over the run of the machine's shaking force on the frame, −Σ m·a of every moving body and rotor (counterweights, balance shafts) of every cylinder"),
     def("shaking_force_order_1", "N", R, Group::Balance, Lo, "amplitude of the shaking force's first order (once per revolution): the largest magnitude over a revolution of its forward and backward rotating components together, |A₁| + |B₁|, at constant speed (the case's initial speed)"),
     def("shaking_force_order_2", "N", R, Group::Balance, Lo, "the same, second order (twice per revolution)"),
@@ -358,7 +373,7 @@ pub const BALANCE: &[MetricDef] = &[
     def("shaking_moment_max", "N*m", R, Group::Balance, Lo, "largest magnitude over the run of the machine's free moment about the crank-axis point midway between its outermost cylinders (pitch and yaw; the roll reaction is not part of it)"),
     def("shaking_moment_order_1", "N*m", R, Group::Balance, Lo, "amplitude of the free moment's first order, |A₁| + |B₁|, at constant speed (the case's initial speed)"),
     def("shaking_moment_order_2", "N*m", R, Group::Balance, Lo, "the same, second order"),
-    def("torque_nonuniformity", "1", R, Group::Balance, Lo, "(T_max − T_min)/|T_mean| of the machine's total drive torque (every cylinder's), where its mean is not zero"),
+    def("torque_nonuniformity", "1", R, Group::Balance, Lo, "(machine_torque_max − machine_torque_min)/|machine_torque_mean| of the machine's drive torque (every cylinder's, with [friction] its losses), where its mean is not zero"),
 ];
 
 /// The metrics of a solved machine motion (`[motion] mode = "dynamic"`,
@@ -395,7 +410,7 @@ const PARTS: &[&[MetricDef]] = &[
     ENGINE_FRICTION,
     GAS,
     GAS_MODEL,
-    BALANCE,
+    MACHINE,
     MACHINE_MOTION,
 ];
 

@@ -26,6 +26,8 @@ pub struct StageInput<'a> {
     pub inertial: Option<&'a Loads>,
     /// Absolute cylinder pressure, Pa, if a gas model runs.
     pub pressure: Option<f64>,
+    /// The gas force on each piston, N, if a gas model runs.
+    pub force: Option<f64>,
     /// The gas at any crank angle (pressure, force on each piston), if a gas model runs: for a
     /// stage that evaluates the cylinder at other angles (a machine's other cylinders).
     pub gas: Option<GasAt<'a>>,
@@ -38,6 +40,7 @@ impl std::fmt::Debug for StageInput<'_> {
             .field("total", self.total)
             .field("inertial", &self.inertial)
             .field("pressure", &self.pressure)
+            .field("force", &self.force)
             .field("gas", &self.gas.map(|_| "a function of the crank angle"))
             .finish()
     }
@@ -49,6 +52,22 @@ pub struct Handed {
     /// The loss (W) of each gear-mesh joint a stage has rated at this step, by joint index: a
     /// later stage that charges the mesh loss takes it as it is, so that it is computed once.
     pub mesh_losses: Vec<(usize, f64)>,
+    /// The run's train's power loss at this step, W, once its loss budget has taken it: the
+    /// machine's stage charges it to cylinder 1 ([`crate::MachineStage`]).
+    pub loss_power: Option<f64>,
+}
+
+/// What a stage evaluated a block at a time ([`Stage::evaluate_block`]) takes: the block's
+/// states and total loads, and the gas where a gas model runs.
+#[derive(Clone, Copy)]
+pub struct BlockInput<'a> {
+    pub states: &'a StateBlock,
+    pub total: &'a LoadsBlock,
+    /// Absolute cylinder pressure, Pa, and the gas force on each piston, N, at each lane.
+    pub pressure: Option<&'a Column>,
+    pub force: Option<&'a Column>,
+    /// The gas at any crank angle.
+    pub gas: Option<GasAt<'a>>,
 }
 
 /// Why a stage stops the run at a step.
@@ -128,14 +147,13 @@ pub trait Stage: Send + Sync {
     }
 
     /// For a stage [`by_block`](Stage::by_block): its values at every lane of the block
-    /// `states`, whose total loads are `total`, into `out` (a column per value,
+    /// `input` into `out` (a column per value,
     /// [`Stage::width`] of them), the very values [`Stage::evaluate`] gives at each step (the
     /// same bits). An error names the first lane it fails at and why (its values from there
     /// on are not used; every lane is evaluated, whatever its inputs, without panicking).
     fn evaluate_block(
         &mut self,
-        _states: &StateBlock,
-        _total: &LoadsBlock,
+        _input: &BlockInput,
         _out: &mut [Column],
     ) -> Result<(), (usize, StageError)> {
         Err((

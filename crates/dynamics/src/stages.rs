@@ -64,6 +64,7 @@ impl Stage for LossBudget {
         if state.crank.speed != 0.0 {
             *torque = sum / state.crank.speed.abs();
         }
+        handed.loss_power = Some(sum);
         Ok(())
     }
 

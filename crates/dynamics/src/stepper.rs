@@ -10,7 +10,7 @@
 
 use crate::energy::torque_shares;
 use crate::family::LoadFamily;
-use crate::stage::{Handed, Stage, StageError, StageInput};
+use crate::stage::{BlockInput, Handed, Stage, StageError, StageInput};
 use crate::step::{Sink, Step, StepBlock};
 use cardan_mechanism::{
     vectorised, Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
@@ -103,7 +103,14 @@ pub fn run(
         if let Some(t) = total.crank_torque[..n].last() {
             previous_torque = Some(*t);
         }
-        by_block.evaluate(stages, &states, total);
+        let block_input = BlockInput {
+            states: &states,
+            total,
+            pressure: gas_pressure,
+            force: applied,
+            gas,
+        };
+        by_block.evaluate(stages, &block_input);
         let failed = by_block.failed();
         for i in 0..n {
             let step = index + i;
@@ -410,6 +417,7 @@ impl StepOut {
             },
             inertial: loading.inertial.map(|k| &self.loads[k]),
             pressure: lane.pressure,
+            force: lane.pressure.map(|_| lane.force),
             gas: loading.gas,
         };
         let Staged {
@@ -418,6 +426,7 @@ impl StepOut {
             handed,
         } = staged;
         handed.mesh_losses.clear();
+        handed.loss_power = None;
         for (k, (stage, values)) in stages.iter_mut().zip(&mut self.stages).enumerate() {
             if !by_block.by_block[k] {
                 stage.evaluate(&input, handed, values)?;
@@ -472,13 +481,11 @@ impl BlockValues {
         self.by_block.iter().all(|&b| b)
     }
 
-    /// Evaluates the stages by block at `states`, whose total loads are `total`.
-    fn evaluate(&mut self, stages: &mut [&mut dyn Stage], states: &StateBlock, total: &LoadsBlock) {
+    /// Evaluates the stages by block at `input`.
+    fn evaluate(&mut self, stages: &mut [&mut dyn Stage], input: &BlockInput) {
         for (k, stage) in stages.iter_mut().enumerate() {
             self.errors[k] = match self.by_block[k] {
-                true => stage
-                    .evaluate_block(states, total, &mut self.columns[k])
-                    .err(),
+                true => stage.evaluate_block(input, &mut self.columns[k]).err(),
                 false => None,
             };
         }

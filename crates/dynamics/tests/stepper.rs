@@ -4,7 +4,7 @@
 
 use cardan_balance::{Cylinder, Layout, MachineBalance};
 use cardan_dynamics::{
-    run, Handed, Inertial, LoadFamily, MachineStage, MetricDef, RunError, Sink, Solver, Stage,
+    run, Handed, Inertial, LoadFamily, Machine, MachineKind, MachineStage, MetricDef, RunError, Sink, Solver, Stage,
     StageColumn, StageError, StageInput, StageTotals, Steps, Summary, SummarySink,
 };
 use cardan_mechanism::{
@@ -192,7 +192,8 @@ fn a_stage_by_block_gives_the_bits_of_a_stage_step_by_step() {
                 lanchester: true,
                 ..MachineBalance::default()
             };
-            let stage = MachineStage::new(&machine, Arc::clone(&m), 100.0).unwrap();
+            let built = Machine::build(&machine, Arc::clone(&m), MachineKind::Pump).unwrap();
+            let stage = MachineStage::new(Arc::new(built), 100.0, false, None);
             assert!(stage.by_block());
             let inertial = Inertial::new(Solver::ClosedForm);
             let families: [&dyn LoadFamily; 1] = [&inertial];

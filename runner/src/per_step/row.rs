@@ -311,7 +311,7 @@ mod tests {
             bore: 0.12,
             pin_offset: 0.0,
         };
-        let balance: Vec<StageColumn> = cardan_dynamics::machine_balance::COLUMNS
+        let balance: Vec<StageColumn> = cardan_dynamics::machine_stage::COLUMNS
             .iter()
             .enumerate()
             .map(|(value, name)| StageColumn {

@@ -78,10 +78,9 @@ fn run_solved(
     // The solved motion: its states depend on the run's torques, so one thread takes them one
     // at a time.
     let d: &Dynamics = case.dynamics.as_ref().ok_or("not a solved motion")?;
-    let cylinders = case.balance.phases();
-    let torques = MachineTorques {
+        let torques = MachineTorques {
         mechanism,
-        cylinders: &cylinders,
+        cylinders: setup.machine.phases(),
         gas,
         load: &d.load,
         flywheel: d.flywheel,
@@ -129,7 +128,7 @@ struct TrainFamilies {
 
 impl TrainFamilies {
     fn of(case: &Case, setup: &Setup) -> Self {
-        let carried = setup.balance.balance().crank_masses();
+        let carried = setup.machine.crank_masses();
         Self {
             inertial: Inertial::new(Solver::ClosedForm).carrying(carried),
             gas: case.gas.is_some().then_some(Gas(Solver::ClosedForm)),
