@@ -9,9 +9,7 @@
 //! code.
 
 use crate::planar;
-use cardan_mechanism::{
-    Column, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, C,
-};
+use cardan_mechanism::{Column, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, C};
 
 /// Which path computes the loads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

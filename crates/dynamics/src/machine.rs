@@ -75,7 +75,10 @@ impl Machine {
         let cylinders = &layout.cylinders;
         let mut planes: Vec<f64> = Vec::new();
         for c in cylinders {
-            if !planes.iter().any(|&z| (z - c.axial_position).abs() <= SAME_PLANE) {
+            if !planes
+                .iter()
+                .any(|&z| (z - c.axial_position).abs() <= SAME_PLANE)
+            {
                 planes.push(c.axial_position);
             }
         }
@@ -91,8 +94,7 @@ impl Machine {
         let mut pin_of = Vec::with_capacity(cylinders.len());
         for c in cylinders {
             let same = |&(z, phi): &(f64, f64)| {
-                (z - c.axial_position).abs() <= SAME_PLANE
-                    && angle_gap(phi, c.throw) <= SAME_ANGLE
+                (z - c.axial_position).abs() <= SAME_PLANE && angle_gap(phi, c.throw) <= SAME_ANGLE
             };
             let k = pins.iter().position(same).unwrap_or_else(|| {
                 pins.push((c.axial_position, c.throw));

@@ -22,8 +22,7 @@ use crate::losses::LossBudget;
 use crate::machine::{Machine, MachineKind};
 use crate::metrics::{self, MetricDef, Summary};
 use crate::stage::{
-    BlockInput, GasAt, Handed, RunTotals, Stage, StageColumn, StageError, StageInput,
-    StageTotals,
+    BlockInput, GasAt, Handed, RunTotals, Stage, StageColumn, StageError, StageInput, StageTotals,
 };
 use crate::step::StepBlock;
 use crate::stepper::Loading;
@@ -195,9 +194,11 @@ impl MachineStage {
             let phase = self.machine.phases()[i];
             let axis = self.machine.axis(i);
             room.own.clear();
-            room.own.extend(room.cranks[..lanes].iter().map(|c| {
-                CrankState::new(c.angle + phase.lead, c.speed, c.acceleration, c.time)
-            }));
+            room.own.extend(
+                room.cranks[..lanes].iter().map(|c| {
+                    CrankState::new(c.angle + phase.lead, c.speed, c.acceleration, c.time)
+                }),
+            );
             room.block.fill(m, &room.own);
             let mut pressure = [0.0; LANES];
             if let Some(g) = gas {
@@ -497,8 +498,11 @@ impl MachineStage {
     fn not_finite(&self, k: usize, value: f64) -> StageError {
         let quantity = match self.columns().into_iter().find(|c| c.value == k) {
             Some(c) => c.name,
-            None => ["the other cylinders' drive torque", "the other cylinders' gas torque", "the other cylinders' power loss"]
-                [k - self.places.others()]
+            None => [
+                "the other cylinders' drive torque",
+                "the other cylinders' gas torque",
+                "the other cylinders' power loss",
+            ][k - self.places.others()]
             .to_string(),
         };
         StageError::NonFinite { quantity, value }
@@ -673,7 +677,13 @@ impl StageTotals for MachineTotals {
         };
         let work = total + self.work.value();
         let lost = match self.friction {
-            true => Some(if first { m.get("loss_work").unwrap_or(0.0) } else { 0.0 } + self.loss_work.value()),
+            true => Some(
+                if first {
+                    m.get("loss_work").unwrap_or(0.0)
+                } else {
+                    0.0
+                } + self.loss_work.value(),
+            ),
             false => None,
         };
         let need = work + lost.unwrap_or(0.0);

@@ -358,7 +358,7 @@ pub const GAS_MODEL: &[MetricDef] = &[
 /// free moments of all its cylinders and rotors on the frame, their orders at constant speed,
 /// the machine torque's uniformity.
 pub const MACHINE: &[MetricDef] = &[
-    def("machine_torque_max", "N*m", R, Group::Machine, Ne, "largest drive torque of the whole crankshaft, signed (positive turning it forwards): every cylinder's gas and inertia at its own crank angle and gas phase, plus with [friction] every cylinder's losses Σ P / |ω|; equal to the one cylinder's total (and friction) torque for a machine of one cylinder"),
+    def("machine_torque_max", "N*m", R, Group::Machine, Ne, "largest drive torque of the whole crankshaft, signed (positive turning it forwards): every cylinder's gas and inertia at its own crank angle and gas phase, plus with [friction] every cylinder's losses Σ P / ω; equal to the one cylinder's total (and friction) torque for a machine of one cylinder"),
     def("machine_torque_min", "N*m", R, Group::Machine, Ne, "smallest drive torque of the whole crankshaft, signed (as machine_torque_max)"),
     def("machine_torque_mean", "N*m", R, Group::Machine, Ne, "(Σ of every cylinder's drive work ∫ T dθ + with [friction] the machine's loss work) / crank-angle span: what the motor gives (positive) or the engine gives out (negative); one cylinder: total_torque_mean, or torque_need_mean, or −output_torque_mean"),
     def("machine_power_mean", "W", R, Group::Machine, Ne, "the same work / cycle_time: a pump's or compressor's mean power need (positive), an engine's mean output with its sign turned (negative); one cylinder with friction: power_need_mean or −output_power_mean"),

@@ -4,8 +4,9 @@
 
 use cardan_balance::{Cylinder, Layout, MachineBalance};
 use cardan_dynamics::{
-    run, Handed, Inertial, LoadFamily, Machine, MachineKind, MachineStage, MetricDef, RunError, Sink, Solver, Stage,
-    StageColumn, StageError, StageInput, StageTotals, Steps, Summary, SummarySink,
+    run, Handed, Inertial, LoadFamily, Machine, MachineKind, MachineStage, MetricDef, RunError,
+    Sink, Solver, Stage, StageColumn, StageError, StageInput, StageTotals, Steps, Summary,
+    SummarySink,
 };
 use cardan_mechanism::{
     CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, Mechanism, MotionError,

@@ -48,12 +48,17 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("{joint}_bending_stress_pa", "with [gear] and known J: AGMA bending stress, the larger member's"),
     ("friction_torque_nm", "with [friction]: the drive torque that covers the losses, Σ P / ω"),
     ("power_loss_{component}_w", "with [friction]: one loss component's power (rings, skirt, a slide, a revolute joint's bearings by joint name, a gear mesh by joint name)"),
-    // The machine's balance (issue 24; the `machine_balance` stage of cardan-dynamics).
+    // The whole machine (issues 24, 35; the `machine_stage` of cardan-dynamics).
     ("shaking_force_x_n", "the machine's shaking force on the frame, x: −Σ m·a of every moving body and rotor (counterweights, balance shafts) of every cylinder"),
     ("shaking_force_y_n", "the same, y"),
     ("shaking_moment_pitch_nm", "the machine's free moment about the horizontal axis across the crank axis, at the crank-axis point midway between the outermost cylinders"),
     ("shaking_moment_yaw_nm", "the same, about the vertical axis"),
-    ("machine_torque_nm", "with [layout] of several cylinders: the machine's drive torque, the sum of every cylinder's at its own throw and firing phase"),
+    ("machine_torque_nm", "the whole crankshaft's drive torque: every cylinder's gas and inertia at its own crank angle, axis and firing phase, plus with [friction] every cylinder's Σ P / ω; one cylinder: its total_torque_nm (+ friction_torque_nm)"),
+    ("main_bearing_{k}_force_x_n", "load on the crankshaft at main journal k (from 1, along the crank axis) from the frame, x in the machine frame: one journal for a one-throw machine (its cylinders' main-bearing loads summed), else one each side of every throw, each throw's load split half to each"),
+    ("main_bearing_{k}_force_y_n", "the same, y"),
+    ("cylinder_{k}_crank_pin_force_x_n", "load on the crankshaft at cylinder k's crank pin from its rod (or wheel), x in the machine frame"),
+    ("cylinder_{k}_crank_pin_force_y_n", "the same, y"),
+    ("cylinder_{k}_gas_force_n", "with a gas model: the gas force on cylinder k's piston at its own firing phase, towards the crankshaft"),
 ];
 
 /// The CSV header of `mechanism` run with the load families `families` (the run's, then

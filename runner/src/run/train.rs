@@ -78,7 +78,7 @@ fn run_solved(
     // The solved motion: its states depend on the run's torques, so one thread takes them one
     // at a time.
     let d: &Dynamics = case.dynamics.as_ref().ok_or("not a solved motion")?;
-        let torques = MachineTorques {
+    let torques = MachineTorques {
         mechanism,
         cylinders: setup.machine.phases(),
         gas,
