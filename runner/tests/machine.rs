@@ -461,3 +461,60 @@ fn the_machine_columns_are_named_once() {
         }
     }
 }
+
+/// One definition per machine kind (issue 36): a pump coasting down on its flywheel (its drive
+/// work negative: the flywheel's energy feeds the gas and the losses) is scored as a pump by
+/// every mechanism, the cylinder's metrics and the machine's alike: a need, no output, the
+/// pump's efficiency (before, the sign of the work chose the engine's formula for some).
+#[test]
+fn a_coasting_pump_is_scored_as_a_pump() {
+    let text = r#"
+name = "coasting-pump"
+machine = "pump"
+mechanisms = ["slider_crank", "cardan_gear", "scotch_yoke"]
+[geometry]
+crank_length = "60 mm"
+rod_length = "140 mm"
+bore = "120 mm"
+[motion]
+mode = "dynamic"
+start_angle = "90 deg"
+end_angle = "450 deg"
+initial_speed = "200 rad/s"
+angular_acceleration = 0.0
+steps = 360
+cycles = 1
+[gas]
+model = "karhula_pump"
+compression_ratio = 12
+polytropic_exponent = 1.4
+[friction]
+[load]
+torque = "0 N*m"
+[flywheel]
+inertia = "0.05 kg*m^2"
+"#;
+    let run = run_in_memory(&case(text), false).unwrap();
+    for r in &run.results {
+        assert!(
+            metric(r, "total_work") < 0.0,
+            "{}: the pump coasts",
+            r.label
+        );
+        assert!(
+            has(r, "power_need_mean") && !has(r, "output_power_mean"),
+            "{}",
+            r.label
+        );
+        same(
+            &r.label,
+            metric(r, "machine_mechanical_efficiency"),
+            metric(r, "mechanical_efficiency"),
+        );
+        same(
+            &r.label,
+            metric(r, "machine_power_mean"),
+            metric(r, "power_need_mean"),
+        );
+    }
+}

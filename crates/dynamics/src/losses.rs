@@ -139,9 +139,17 @@ impl Friction {
 pub struct LossBudget {
     names: Vec<String>,
     parts: Vec<Box<dyn Loss>>,
+    /// Whether the machine is an engine ([`Friction::engine`] set): its need or output and
+    /// efficiency are an engine's, whatever the sign of a run's work (issue 36).
+    engine: bool,
 }
 
 impl LossBudget {
+    /// Whether the machine is an engine (module note of [`crate::stages`]: the need or output).
+    pub fn is_engine(&self) -> bool {
+        self.engine
+    }
+
     /// The budget of `mechanism` in a cylinder of `bore` (m) under `friction`.
     pub fn new(
         friction: &Friction,
@@ -219,7 +227,11 @@ impl LossBudget {
                 }));
             }
         }
-        Ok(Self { names, parts })
+        Ok(Self {
+            names,
+            parts,
+            engine: f.engine.is_some(),
+        })
     }
 
     /// The components' names, in the order of [`LossBudget::evaluate`]'s output.

@@ -85,6 +85,7 @@ impl Stage for LossBudget {
     fn totals(&self) -> Box<dyn StageTotals> {
         let n = self.names().len();
         Box::new(LossTotals {
+            engine: self.is_engine(),
             names: self.names().to_vec(),
             work: vec![Integral::default(); n],
             previous: vec![0.0; n],
@@ -104,6 +105,8 @@ impl Stage for LossBudget {
 /// The works of the loss components and the peak friction torque.
 #[derive(Debug, Clone)]
 struct LossTotals {
+    /// Whether the machine is an engine: which need or output and efficiency it reports.
+    engine: bool,
     names: Vec<String>,
     /// ∫ P dt of each component, J (Karhula A9.1.68-71), by the trapezoidal rule in time.
     work: Vec<Integral>,
@@ -150,8 +153,9 @@ impl StageTotals for LossTotals {
 
     /// The loss metrics (Karhula A9.1.56-75): mean power loss in all and per component, the
     /// work lost, the peak friction torque, and, with a gas model, the efficiency and the
-    /// torque and power the machine needs (a pump: net work into the crank) or gives (an
-    /// engine: net work out).
+    /// torque and power the machine needs (a pump or compressor: net work into the crank) or
+    /// gives (an engine: net work out), one definition per machine kind, whatever the sign of
+    /// the run's work (a decelerating pump is still a pump; issue 36).
     fn finish(&self, run: &RunTotals, m: &mut Summary) {
         let (span, time) = (run.span, run.time);
         let lost: f64 = self.work.iter().map(Integral::value).sum();
@@ -168,18 +172,22 @@ impl StageTotals for LossTotals {
         let (Some(gas), Some(total)) = (run.work("gas"), run.work("total")) else {
             return;
         };
-        if total > 0.0 {
+        if !self.engine {
             // (A9.1.60-61, 64-65, 72-73)
             let need = total + lost;
             m.push("torque_need_mean", need / span);
             m.push("power_need_mean", need / time);
-            m.push("mechanical_efficiency", gas / need);
-        } else if total < 0.0 {
+            if need != 0.0 {
+                m.push("mechanical_efficiency", gas / need);
+            }
+        } else {
             // (A9.1.62-63, 66-67, 74-75)
             let out = -total - lost;
             m.push("output_torque_mean", out / span);
             m.push("output_power_mean", out / time);
-            m.push("mechanical_efficiency", out / -total);
+            if total != 0.0 {
+                m.push("mechanical_efficiency", out / -total);
+            }
         }
     }
 
