@@ -711,14 +711,16 @@ impl StageTotals for MachineTotals {
         if !self.places.gas {
             return;
         }
+        // Where the work the drive gives (pump) or takes (engine) is positive, as the cylinder's
+        // (`stages.rs`).
         let efficiency = match self.machine.kind {
             // (A9.1.72-73)
-            MachineKind::Pump => gas / need,
+            MachineKind::Pump => (need > 0.0).then(|| gas / need),
             // (A9.1.74-75)
-            MachineKind::Engine => -need / -work,
+            MachineKind::Engine => (work < 0.0).then(|| -need / -work),
         };
-        if efficiency.is_finite() {
-            m.push("machine_mechanical_efficiency", efficiency);
+        if let Some(e) = efficiency {
+            m.push("machine_mechanical_efficiency", e);
         }
     }
 

@@ -155,7 +155,10 @@ impl StageTotals for LossTotals {
     /// work lost, the peak friction torque, and, with a gas model, the efficiency and the
     /// torque and power the machine needs (a pump or compressor: net work into the crank) or
     /// gives (an engine: net work out), one definition per machine kind, whatever the sign of
-    /// the run's work (a decelerating pump is still a pump; issue 36).
+    /// the run's work (a decelerating pump is still a pump; issue 36); the efficiency where its
+    /// denominator, the work the drive gives (pump) or takes (engine), is positive. Karhula's
+    /// definitions are of a steady cycle: in a run-up or coast-down the drive work includes
+    /// the change of the bodies' kinetic energy.
     fn finish(&self, run: &RunTotals, m: &mut Summary) {
         let (span, time) = (run.span, run.time);
         let lost: f64 = self.work.iter().map(Integral::value).sum();
@@ -177,7 +180,7 @@ impl StageTotals for LossTotals {
             let need = total + lost;
             m.push("torque_need_mean", need / span);
             m.push("power_need_mean", need / time);
-            if need != 0.0 {
+            if need > 0.0 {
                 m.push("mechanical_efficiency", gas / need);
             }
         } else {
@@ -185,7 +188,7 @@ impl StageTotals for LossTotals {
             let out = -total - lost;
             m.push("output_torque_mean", out / span);
             m.push("output_power_mean", out / time);
-            if total != 0.0 {
+            if total < 0.0 {
                 m.push("mechanical_efficiency", out / -total);
             }
         }
