@@ -39,7 +39,18 @@ pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
         } else if p.is_file() {
             files.push(p.clone());
         } else {
-            failures.push(format!("{}: no such file or folder", p.display()));
+            match std::fs::metadata(p) {
+                // A FIFO, a device (`/dev/zero`), a socket: there, but nothing to read.
+                Ok(meta) => failures.push(format!(
+                    "{}: cannot read: not a regular file ({})",
+                    p.display(),
+                    cardan_report::files::kind_of(&meta)
+                )),
+                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                    failures.push(format!("{}: no such file or folder", p.display()))
+                }
+                Err(e) => failures.push(format!("{}: cannot read: {e}", p.display())),
+            }
         }
     }
     files.sort();
@@ -82,10 +93,7 @@ impl Entry {
 /// point ([`case_folders`]: at most [`MAX_EXPANDED`] of them); or a sweep written as a table,
 /// its definition and its first point validated.
 fn load_entry(file: &Path) -> Result<Entry, CaseError> {
-    let text = std::fs::read_to_string(file).map_err(|source| CaseError::Io {
-        file: file.into(),
-        source,
-    })?;
+    let text = case::read_case_text(file)?;
     let table = case::toml_table(file, &text)?;
     let Some(sweep) = Sweep::define(file, table.clone())? else {
         return Ok(Entry::Cases(vec![case::case_of_table(file, table)?]));
