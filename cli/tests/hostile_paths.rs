@@ -188,3 +188,46 @@ fn a_result_record_that_is_a_fifo_is_refused_by_merge() {
         "stderr: {err}"
     );
 }
+
+#[test]
+fn a_case_folder_linking_to_itself_and_its_parent_is_read_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("cases");
+    let inner = cases.join("inner");
+    std::fs::create_dir_all(&inner).unwrap();
+    std::fs::copy(
+        repo("configs/karhula-r60-l140-a0-w3pi.toml"),
+        inner.join("case.toml"),
+    )
+    .unwrap();
+    // Two links to itself (2^40 paths if followed), one to its parent, one to the top.
+    std::os::unix::fs::symlink(".", inner.join("self")).unwrap();
+    std::os::unix::fs::symlink(".", inner.join("again")).unwrap();
+    std::os::unix::fs::symlink("..", inner.join("up")).unwrap();
+    std::os::unix::fs::symlink(&cases, inner.join("top")).unwrap();
+    let (code, out, err) = cardan_in(dir.path(), &[&"check", &cases]);
+    assert_eq!(code, Some(0), "stdout: {out}\nstderr: {err}");
+    assert!(
+        out.contains("1 case(s) valid"),
+        "stdout: {out}\nstderr: {err}"
+    );
+    let (code, out, err) = cardan_in(
+        dir.path(),
+        &[
+            &"run",
+            &cases,
+            &"--out",
+            &"out",
+            &"--no-csv",
+            &"--no-report",
+            &"--quiet",
+        ],
+    );
+    assert_eq!(code, Some(0), "stdout: {out}\nstderr: {err}");
+    let folders: Vec<_> = std::fs::read_dir(dir.path().join("out"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.starts_with('.') && n != "index.html")
+        .collect();
+    assert_eq!(folders, ["karhula-r60-l140-a0-w3pi"], "stderr: {err}");
+}

@@ -11,12 +11,21 @@ use std::sync::Arc;
 
 /// Every `*.toml` file under `paths` (files, or folders searched recursively), sorted, and a
 /// message for each path that cannot be read.
+///
+/// A symbolic link to a folder found inside a folder is not followed (as `find` does not):
+/// a folder linking to itself or to a parent would otherwise be searched without end, and a
+/// link to a folder elsewhere would bring cases from outside the folder given. A link to a
+/// file is read as the file; a path given on the command line is followed whatever it is.
 pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
         for entry in std::fs::read_dir(dir)? {
-            let path = entry?.path();
-            if path.is_dir() {
+            let entry = entry?;
+            let path = entry.path();
+            let kind = entry.file_type()?;
+            if kind.is_dir() {
                 walk(&path, out)?;
+            } else if kind.is_symlink() && path.is_dir() {
+                // Not followed (see above).
             } else if path.extension().is_some_and(|e| e == "toml") {
                 out.push(path);
             }
