@@ -262,19 +262,24 @@ pub const MAX_STEPS: i64 = 100_000_000;
 
 /// Reads and validates one case file.
 pub fn load(file: &Path) -> Result<Case, CaseError> {
-    let text = std::fs::read_to_string(file).map_err(|source| CaseError::Io {
-        file: file.into(),
-        source,
-    })?;
+    let text = read_case_text(file)?;
     parse(file, &text)
+}
+
+/// The text of the case file `file`, read through the bounded reader (a regular file of at
+/// most [`cardan_report::files::CASE_FILE`]'s 16 MiB).
+pub fn read_case_text(file: &Path) -> Result<String, CaseError> {
+    cardan_report::files::read_text(file, cardan_report::files::CASE_FILE).map_err(|source| {
+        CaseError::Io {
+            file: file.into(),
+            source,
+        }
+    })
 }
 
 /// Reads one case file: one case, or every point of its `[sweep]` (see [`crate::sweep`]).
 pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
-    let text = std::fs::read_to_string(file).map_err(|source| CaseError::Io {
-        file: file.into(),
-        source,
-    })?;
+    let text = read_case_text(file)?;
     cases_of_table(file, toml_table(file, &text)?)
 }
 

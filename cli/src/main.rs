@@ -69,8 +69,12 @@ enum Command {
     /// what one run writes; shards of other inputs or another program are refused.
     Merge {
         /// The shards' output folders, one per shard.
-        #[arg(required = true)]
+        #[arg(required_unless_present = "from_list")]
         dirs: Vec<PathBuf>,
+        /// Also the folders listed in FILE, one a line (relative ones from FILE's folder):
+        /// what `cardan slurm`'s merge job passes, beyond the limit of a command line.
+        #[arg(long, value_name = "FILE")]
+        from_list: Option<PathBuf>,
         /// Output folder; each case's and sweep's folder in it is replaced as a whole.
         #[arg(long, default_value = "out")]
         out: PathBuf,
@@ -184,6 +188,10 @@ fn slurm(
     if let Err(e) = cardan::slurm::scripts(&job) {
         eprintln!("error: {e}");
         return ExitCode::from(2);
+    }
+    if let Err(e) = cardan::slurm::check_paths(&job) {
+        eprintln!("error: {e}");
+        return ExitCode::FAILURE;
     }
     let dir = match cardan::slurm::write(&job) {
         Ok(dir) => dir,
@@ -368,7 +376,20 @@ fn main() -> ExitCode {
             time,
             submit,
         } => return slurm(paths, shards, out, partition, time, submit),
-        Command::Merge { dirs, out } => {
+        Command::Merge {
+            mut dirs,
+            out,
+            from_list,
+        } => {
+            if let Some(list) = from_list {
+                match cardan::slurm::read_list(&list) {
+                    Ok(listed) => dirs.extend(listed),
+                    Err(e) => {
+                        eprintln!("error: {e}: nothing merged");
+                        return ExitCode::FAILURE;
+                    }
+                }
+            }
             let started = std::time::Instant::now();
             let report = cardan_runner::run::merge(&dirs, &out);
             // The sweeps written as tables: their points are rows, not cases.

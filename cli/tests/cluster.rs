@@ -328,10 +328,14 @@ fn slurm_scripts_run_the_shards_and_merge_them_into_one_run() {
         assert!(array.contains(line), "{line:?} not in:\n{array}");
     }
     assert!(array.contains(&*file.to_string_lossy()), "{array}");
+    // The merge reads the shards' folders from shards.txt (issue 36.13).
+    let list = read("shards.txt");
     assert!(
-        merge.contains(" merge ") && merge.contains("shard-3"),
+        merge.contains(" merge --from-list ") && merge.contains("shards.txt"),
         "{merge}"
     );
+    assert_eq!(list.lines().count(), 3, "{list}");
+    assert!(list.lines().nth(2).unwrap().ends_with("shard-3"), "{list}");
     assert!(merge.contains("#SBATCH --partition=debug"), "{merge}");
     assert!(
         submit.contains("sbatch --parsable run.sbatch")
@@ -574,4 +578,80 @@ fn run_single(file: &Path, single: &Path) {
         "--quiet".as_ref(),
     ]);
     assert!(out.status.success(), "{out:?}");
+}
+
+/// `cardan slurm` refuses what would only fail on the cluster (issue 36.13): a case path that
+/// does not exist, an `--out` that is a file or a device (exit 1, nothing written), more
+/// shards than Slurm's largest job array (exit 2); and 100 000 shards give a merge job whose
+/// command line is short (the folders in shards.txt, which `cardan merge --from-list` reads):
+/// run, it refuses the missing shards by name instead of failing with "Argument list too long".
+#[test]
+fn slurm_refuses_missing_paths_and_bad_outputs_and_merges_many_shards_from_a_list() {
+    let tmp = tempfile::tempdir().unwrap();
+    let file = configs().join("sweeps/karhula-pump-speed-sweep.toml");
+    let slurm = |path: &Path, out: &Path, shards: &str| {
+        run(&[
+            "slurm".as_ref(),
+            path.as_os_str(),
+            "--shards".as_ref(),
+            shards.as_ref(),
+            "--out".as_ref(),
+            out.as_os_str(),
+        ])
+    };
+    let stderr = |o: &std::process::Output| String::from_utf8_lossy(&o.stderr).into_owned();
+
+    let missing = tmp.path().join("no-such-cases");
+    let out = tmp.path().join("a");
+    let o = slurm(&missing, &out, "2");
+    assert_eq!(o.status.code(), Some(1), "{o:?}");
+    assert!(
+        stderr(&o).contains("no-such-cases") && stderr(&o).contains("no such file or folder"),
+        "{o:?}"
+    );
+    assert!(
+        !tmp.path().join("a.slurm").exists(),
+        "scripts written for a missing path"
+    );
+
+    let regular = tmp.path().join("results.txt");
+    std::fs::write(&regular, "not a folder").unwrap();
+    for bad_out in [regular.as_path(), Path::new("/dev/zero")] {
+        let o = slurm(&file, bad_out, "2");
+        assert_eq!(
+            o.status.code(),
+            Some(1),
+            "--out {}: {o:?}",
+            bad_out.display()
+        );
+        assert!(
+            stderr(&o).contains(&*bad_out.to_string_lossy()) && stderr(&o).contains("not a folder"),
+            "{o:?}"
+        );
+    }
+    assert!(!tmp.path().join("results.txt.slurm").exists());
+
+    let o = slurm(&file, &out, "4000001");
+    assert_eq!(o.status.code(), Some(2), "{o:?}");
+
+    let many = tmp.path().join("many");
+    let o = slurm(&file, &many, "100000");
+    assert!(o.status.success(), "{o:?}");
+    let dir = tmp.path().join("many.slurm");
+    let merge = std::fs::read_to_string(dir.join("merge.sbatch")).unwrap();
+    assert!(merge.len() < 4096, "merge.sbatch of {} bytes", merge.len());
+    let list = std::fs::read_to_string(dir.join("shards.txt")).unwrap();
+    assert_eq!(list.lines().count(), 100_000);
+    let merged = Command::new("bash")
+        .arg(dir.join("merge.sbatch"))
+        .output()
+        .unwrap();
+    let err = stderr(&merged);
+    assert_eq!(merged.status.code(), Some(1), "{err}");
+    assert!(!err.contains("Argument list too long"), "{err}");
+    assert!(
+        err.contains("shard-1") && err.contains("shard.json"),
+        "{err}"
+    );
+    assert!(!many.exists(), "a refused merge wrote {}", many.display());
 }

@@ -662,3 +662,125 @@ fn the_gear_file_schema_lists_the_fields() {
         assert!(text.contains(field), "{field}");
     }
 }
+
+/// A shipped case with a gear mesh (the cardan gear, 20/40 teeth of 3 mm: a 4.7 mm tooth),
+/// its `[gear]` table `gear`; the error of reading it as a case file, if any.
+fn case_error_of(gear: &str) -> Option<String> {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/karhula-r60-l140-a0-w3pi.toml"),
+    )
+    .unwrap();
+    let text = format!("{text}\n[gear]\nteeth = 20\n{gear}\n");
+    cardan_case::case::parse(Path::new("cases/gear.toml"), &text)
+        .err()
+        .map(|e| e.to_string())
+}
+
+/// Shigley's shipped pair (17/52 teeth, module 2.54 mm: a 3.99 mm tooth) with `from` replaced
+/// by `to`.
+fn shigley_with(from: &str, to: &str) -> String {
+    let text = std::fs::read_to_string(shipped("shigley-14-4.toml")).unwrap();
+    assert!(text.contains(from), "{from}");
+    text.replace(from, to)
+}
+
+/// Issue 36.12: J = 100 is refused by gear files as by case files, by the same reader (the
+/// case's `Ranged<GeometryFactorJ>`) with the same rule.
+#[test]
+fn a_geometry_factor_j_above_1_is_refused_by_gear_and_case_files() {
+    let rule = "bending geometry factors J must be between 0 and 1";
+    let e = error_of(&shigley_with("j = 0.30", "j = 100"));
+    mentions(&e, &["gears/bad.toml", "rating.pinion.j", "100", rule]);
+    let e = case_error_of("j = 100").expect("a case with J = 100 was accepted");
+    mentions(&e, &["cases/gear.toml", "gear.j", "100", rule]);
+}
+
+/// Issue 36.12: a tip inside the mate's root circle (a dedendum of 0 in a gear file; a ring
+/// addendum of 1.4 modules over the pinion's 1.25-module dedendum in a case file) is refused
+/// by the one check of `GearPair::new`.
+#[test]
+fn a_tip_inside_the_mates_root_circle_is_refused_by_gear_and_case_files() {
+    let rule = "the gear's tip circle reaches into the pinion's root circle";
+    let e = error_of(&shigley_with(
+        "face_width = \"1.5 in\"",
+        "face_width = \"1.5 in\"\ndedendum_coefficient = [0, 1.25]",
+    ));
+    mentions(&e, &["dedendum_coefficient", "[0, 1.25]", rule]);
+    // The pinion's tip against a gear dedendum of 0.
+    let e = error_of(&shigley_with(
+        "face_width = \"1.5 in\"",
+        "face_width = \"1.5 in\"\ndedendum_coefficient = [1.25, 0]",
+    ));
+    mentions(
+        &e,
+        &[
+            "dedendum_coefficient",
+            "the pinion's tip circle reaches into the gear's root circle",
+        ],
+    );
+    // A case file has no dedendum: its ring's tip (0.15 module past the pinion's root).
+    let e = case_error_of("ring_addendum = 1.4").expect("a ring tip in the pinion's root");
+    mentions(&e, &["cases/gear.toml", "gear", rule]);
+    // Without: the shipped pair reads (its clearance 0.25 module).
+    assert_eq!(case_error_of("ring_addendum = 0.8"), None);
+    assert!(parse(Path::new("x.toml"), &shigley_with("", "")).is_ok());
+}
+
+/// Issue 36.12: thinning a tooth by more than its thickness (5 mm on Shigley's 3.99 mm tooth,
+/// a backlash beyond the pitch) is refused; a case file has no thinning field (refused by
+/// name, the nearest fields listed).
+#[test]
+fn a_tooth_thinned_away_is_refused_by_gear_files_and_a_case_file_has_no_such_field() {
+    let e = error_of(&shigley_with(
+        "face_width = \"1.5 in\"",
+        "face_width = \"1.5 in\"\nthickness_allowance = [\"5 mm\", \"0 mm\"]",
+    ));
+    mentions(
+        &e,
+        &[
+            "thickness_allowance",
+            "5 mm",
+            "less than the tooth's thickness at the reference circle",
+        ],
+    );
+    // Just under the tooth's thickness, π m / 2 = 3.99 mm: a pair (whose backlash check fails).
+    assert!(parse(
+        Path::new("x.toml"),
+        &shigley_with(
+            "face_width = \"1.5 in\"",
+            "face_width = \"1.5 in\"\nthickness_allowance = [\"3.9 mm\", \"0 mm\"]",
+        )
+    )
+    .is_ok());
+    let e = case_error_of("thickness_allowance = \"5 mm\"").expect("an unknown field");
+    mentions(&e, &["gear.thickness_allowance", "unknown field"]);
+}
+
+/// Issue 36.12: a pinion speed of 1e300 rad/s (a pitch-line velocity of 2e298 m/s) is refused
+/// by the one speed check, `cardan_gears::check_pitch_line_velocity`; 1800 rpm reads.
+#[test]
+fn a_pinion_speed_no_gear_can_run_at_is_refused() {
+    let e = error_of(&shigley_with(
+        "pinion_speed = \"1800 rpm\"",
+        "pinion_speed = \"1e300 rad/s\"",
+    ));
+    mentions(
+        &e,
+        &[
+            "rating.pinion_speed",
+            "1e300 rad/s",
+            "must be at most 500 m/s",
+        ],
+    );
+    // 500 m/s on Shigley's 43.18 mm pinion: 23 158 rad/s; just under it reads, just over not.
+    let under = shigley_with(
+        "pinion_speed = \"1800 rpm\"",
+        "pinion_speed = \"23000 rad/s\"",
+    );
+    assert!(parse(Path::new("x.toml"), &under).is_ok());
+    let over = shigley_with(
+        "pinion_speed = \"1800 rpm\"",
+        "pinion_speed = \"23300 rad/s\"",
+    );
+    mentions(&error_of(&over), &["rating.pinion_speed", "500 m/s"]);
+}

@@ -62,8 +62,8 @@ fn given(case: &Bound<'_, PyAny>, what: &str) -> PyResult<Given> {
                         .unwrap_or_default()
                 ))
             })?;
-            let text = std::fs::read_to_string(&file)
-                .map_err(|e| CaseError::new_err(format!("{}: cannot read: {e}", file.display())))?;
+            // The command line's bounded reader: a regular file of at most 16 MiB.
+            let text = cardan_case::case::read_case_text(&file).map_err(case_error)?;
             (file, text)
         }
     };

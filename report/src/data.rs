@@ -92,7 +92,8 @@ pub fn pick_reference(names: &[String], requested: Option<&str>) -> anyhow::Resu
 /// Reads `summary.json`; mechanisms ordered by [`order_mechanisms`] around the reference
 /// chosen by [`pick_reference`]. Returns the summary and the reference's name.
 pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(CaseSummary, String)> {
-    let text = std::fs::read_to_string(path).with_context(|| format!("read {}", path.display()))?;
+    let text = crate::files::read_text(path, crate::files::RESULT_RECORD)
+        .with_context(|| format!("read {}", path.display()))?;
     let json: Value =
         serde_json::from_str(&text).with_context(|| format!("parse {}", path.display()))?;
     let string = |key: &str| json.get(key).and_then(Value::as_str).map(String::from);
@@ -208,7 +209,8 @@ pub fn read_columns(
     path: &Path,
     select: impl Fn(&[String]) -> Vec<String>,
 ) -> anyhow::Result<Columns> {
-    let bytes = std::fs::read(path).with_context(|| format!("read {}", path.display()))?;
+    let bytes = crate::files::read_limited(path, crate::files::PER_STEP_FILE)
+        .with_context(|| format!("read {}", path.display()))?;
     let text =
         std::str::from_utf8(&bytes).with_context(|| format!("{}: not UTF-8", path.display()))?;
     let header_end = text.find('\n').unwrap_or(text.len());
@@ -324,10 +326,11 @@ pub fn read_sweep(
     reference: Option<&str>,
 ) -> anyhow::Result<(SweepTable, String)> {
     let path = sweep_dir.join("sweep.csv");
+    let bytes = crate::files::read_limited(&path, crate::files::RESULT_RECORD)
+        .with_context(|| format!("read {}", path.display()))?;
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
-        .from_path(&path)
-        .with_context(|| format!("read {}", path.display()))?;
+        .from_reader(&bytes[..]);
     let header: Vec<String> = reader.headers()?.iter().map(String::from).collect();
     if header.first().map(String::as_str) != Some("case") {
         bail!("{}: the first column is not \"case\"", path.display());

@@ -76,7 +76,8 @@ impl ModelTable for PressureTraceTable {
             .unwrap_or(std::path::Path::new("."))
             .join(name);
         let shown = format!("\"{name}\"");
-        let text = std::fs::read_to_string(&path).map_err(|e| {
+        let limit = cardan_report::files::DATA_TABLE;
+        let text = cardan_report::files::read_text(&path, limit).map_err(|e| {
             cx.refuse(
                 "file",
                 &shown,

@@ -13,9 +13,10 @@ use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, contact_allowable_through_hardened, Grade,
 };
 use cardan_gears::{
-    cardan_module, dynamic_factor, elastic_coefficient, pitting_cycle_factor,
-    reliability_factor_fit, reliability_factor_table, BendingHighCycle, BendingLowCycle, Enclosure,
-    GearError, GearPair, IForm, LoadDistribution, PairSpec, Quality, Tip,
+    cardan_module, check_pitch_line_velocity, dynamic_factor, elastic_coefficient,
+    pitting_cycle_factor, reliability_factor_fit, reliability_factor_table, BendingHighCycle,
+    BendingLowCycle, Enclosure, GearError, GearPair, IForm, LoadDistribution, PairSpec, Quality,
+    Tip,
 };
 use std::path::Path;
 
@@ -145,7 +146,7 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
         spec.min_teeth_difference = d.0;
     }
     // The geometry is validated here, so that a bad pair is an input error of this file.
-    GearPair::new(spec).map_err(|e| geometry_error(e, &table, &invalid))?;
+    let pair = GearPair::new(spec).map_err(|e| geometry_error(e, &table, &invalid))?;
 
     let face_width = raw.face_width.as_ref().map(|w| w.si);
     let rating = match &raw.rating {
@@ -158,7 +159,21 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
                     "a pair with a [rating] table needs its face width",
                 ));
             }
-            Some(parse_rating(r, &invalid)?)
+            let inputs = parse_rating(r, &invalid)?;
+            // The pitch-line velocity the rating takes (rate_figures: ω1 · dw1/2).
+            let v = inputs.pinion_speed * pair.pinion.working / 2.0;
+            check_pitch_line_velocity(v).map_err(|e| {
+                let rule = match e {
+                    GearError::InvalidInput { rule, .. } => rule.to_string(),
+                    e => e.to_string(),
+                };
+                invalid(
+                    "rating.pinion_speed",
+                    &r.pinion_speed.written,
+                    &format!("the pitch-line velocity it gives, {} m/s, {rule}", short(v)),
+                )
+            })?;
+            Some(inputs)
         }
     };
     Ok(GearFile {

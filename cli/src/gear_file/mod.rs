@@ -30,10 +30,12 @@ pub use validated::*;
 
 /// Reads and validates one gear file.
 pub fn load(file: &Path) -> Result<GearFile, GearFileError> {
-    let text = std::fs::read_to_string(file).map_err(|source| GearFileError::Io {
-        file: file.into(),
-        source,
-    })?;
+    let limit = cardan_report::files::GEAR_FILE;
+    let text =
+        cardan_report::files::read_text(file, limit).map_err(|source| GearFileError::Io {
+            file: file.into(),
+            source,
+        })?;
     parse(file, &text)
 }
 

@@ -121,8 +121,9 @@ pub struct RatingTable {
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MemberTable {
-    /// AGMA bending geometry factor J; required.
-    pub j: Positive<Number>,
+    /// AGMA bending geometry factor J, between 0 and 1 (the case file's `[gear] j`, read by
+    /// the same type); required.
+    pub j: cardan_case::gear::Ranged<cardan_case::gear::GeometryFactorJ>,
     /// Rim thickness factor KB. Default 1.
     pub rim_factor: Option<Positive<Number>>,
     /// Lewis form factor Y, for the size factor Ks (Shigley eq. 14-10); both members or

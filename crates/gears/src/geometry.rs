@@ -447,6 +447,37 @@ impl GearPair {
         let dw1 = db1 / alpha_op.cos();
         let dw2 = db2 / alpha_op.cos();
 
+        // Tip-to-root clearance at the operating centre distance: each member's tip circle
+        // must stay outside the mate's root circle, c ≥ 0 (ISO 21771's bottom clearance,
+        // c = a − ra1 − rf2 for an external pair; for an internal one, in magnitudes, the
+        // pinion tip reaches a + ra1 from the ring's axis, inside its root rf2, and the ring
+        // tip ra2 must stay beyond a + rf1). A negative c is a tooth that hits the mate's
+        // root: no pair, whatever the other checks say.
+        let (ra1, rf1, ra2, rf2, a) = (
+            da1 / 2.0,
+            df1 / 2.0,
+            da2.abs() / 2.0,
+            df2.abs() / 2.0,
+            a_op.abs(),
+        );
+        let (c_pinion_tip, c_gear_tip) = if internal {
+            (rf2 - a - ra1, ra2 - a - rf1)
+        } else {
+            (a - ra1 - rf2, a - ra2 - rf1)
+        };
+        require(
+            c_pinion_tip >= -ROUNDING * m,
+            "gear.dedendum_coefficient",
+            "the pinion's tip circle reaches into the gear's root circle (tip-to-root clearance below 0): deepen the gear's dedendum or shorten the pinion's addendum",
+            spec.gear.dedendum_coefficient,
+        )?;
+        require(
+            c_gear_tip >= -ROUNDING * m,
+            "pinion.dedendum_coefficient",
+            "the gear's tip circle reaches into the pinion's root circle (tip-to-root clearance below 0): deepen the pinion's dedendum or shorten the gear's addendum",
+            spec.pinion.dedendum_coefficient,
+        )?;
+
         // Path of contact (ISO 21771); a tip inside its base circle ends contact at the base.
         let half_root = |da: f64, db: f64| 0.5 * (da * da - db * db).max(0.0).sqrt();
         let g_alpha =
@@ -456,6 +487,19 @@ impl GearPair {
 
         // Backlash: ISO tooth thickness transferred to the operating pitch circle.
         let s = |g: &GearSpec| m * (PI / 2.0 + 2.0 * g.shift * ta) - g.thickness_allowance;
+        // A tooth thinned by more than its thickness at the reference circle,
+        // s = m (π/2 + 2 x tan α) (ISO 21771), is no tooth: its "backlash" would exceed the pitch.
+        for (field, g) in [
+            ("pinion.thickness_allowance", &spec.pinion),
+            ("gear.thickness_allowance", &spec.gear),
+        ] {
+            require(
+                s(g) > 0.0,
+                field,
+                "must be less than the tooth's thickness at the reference circle, m (π/2 + 2 x tan α): the tooth would be thinned away",
+                g.thickness_allowance,
+            )?;
+        }
         let sw1 = dw1 * (s(&spec.pinion) / d1 + inv(alpha) - inv(alpha_op));
         let sw2 = dw2 * (s(&spec.gear) / d2 + inv(alpha) - inv(alpha_op));
         let jt = PI * dw1 / zf1 - sw1 - sw2;
@@ -668,6 +712,26 @@ fn tip_angle(base: f64, tip: f64) -> f64 {
     } else {
         (base / tip).acos()
     }
+}
+
+/// The fastest pitch-line velocity a steel gear can run at, 500 m/s \[m/s\]: a thin ring
+/// spinning at rim speed v carries the hoop stress σ = ρ v² (the rotating ring, e.g.
+/// Timoshenko, Strength of Materials I, the stress of a rotating ring), so a steel rim
+/// (ρ = 7850 kg/m³) at 500 m/s carries 1.96 GPa, the ultimate strength of the strongest
+/// carburized gear steels: beyond it the rim bursts whatever the teeth carry. (The fastest
+/// turbine gear units run below 200 m/s.)
+pub const MAX_PITCH_LINE_VELOCITY: f64 = 500.0;
+
+/// Refuses a pitch-line velocity `v` (m/s) that no gear pair can run at: not finite, negative,
+/// or above [`MAX_PITCH_LINE_VELOCITY`]. The one check of a pair's speed, for the gear file
+/// of `cardan gear` and any rating.
+pub fn check_pitch_line_velocity(v: f64) -> Result<(), GearError> {
+    require(
+        v.is_finite() && (0.0..=MAX_PITCH_LINE_VELOCITY).contains(&v),
+        "pitch-line velocity",
+        "must be at most 500 m/s: a steel rim bursts beyond it (hoop stress ρ v² of a rotating ring, 1.96 GPa at 500 m/s)",
+        v,
+    )
 }
 
 /// Module of the cardan gear from the cardan crank length `e` (= the pinion's pitch radius,

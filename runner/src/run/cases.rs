@@ -11,12 +11,21 @@ use std::sync::Arc;
 
 /// Every `*.toml` file under `paths` (files, or folders searched recursively), sorted, and a
 /// message for each path that cannot be read.
+///
+/// A symbolic link to a folder found inside a folder is not followed (as `find` does not):
+/// a folder linking to itself or to a parent would otherwise be searched without end, and a
+/// link to a folder elsewhere would bring cases from outside the folder given. A link to a
+/// file is read as the file; a path given on the command line is followed whatever it is.
 pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
         for entry in std::fs::read_dir(dir)? {
-            let path = entry?.path();
-            if path.is_dir() {
+            let entry = entry?;
+            let path = entry.path();
+            let kind = entry.file_type()?;
+            if kind.is_dir() {
                 walk(&path, out)?;
+            } else if kind.is_symlink() && path.is_dir() {
+                // Not followed (see above).
             } else if path.extension().is_some_and(|e| e == "toml") {
                 out.push(path);
             }
@@ -39,7 +48,18 @@ pub fn case_files(paths: &[PathBuf]) -> (Vec<PathBuf>, Vec<String>) {
         } else if p.is_file() {
             files.push(p.clone());
         } else {
-            failures.push(format!("{}: no such file or folder", p.display()));
+            match std::fs::metadata(p) {
+                // A FIFO, a device (`/dev/zero`), a socket: there, but nothing to read.
+                Ok(meta) => failures.push(format!(
+                    "{}: cannot read: not a regular file ({})",
+                    p.display(),
+                    cardan_report::files::kind_of(&meta)
+                )),
+                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                    failures.push(format!("{}: no such file or folder", p.display()))
+                }
+                Err(e) => failures.push(format!("{}: cannot read: {e}", p.display())),
+            }
         }
     }
     files.sort();
@@ -82,10 +102,7 @@ impl Entry {
 /// point ([`case_folders`]: at most [`MAX_EXPANDED`] of them); or a sweep written as a table,
 /// its definition and its first point validated.
 fn load_entry(file: &Path) -> Result<Entry, CaseError> {
-    let text = std::fs::read_to_string(file).map_err(|source| CaseError::Io {
-        file: file.into(),
-        source,
-    })?;
+    let text = case::read_case_text(file)?;
     let table = case::toml_table(file, &text)?;
     let Some(sweep) = Sweep::define(file, table.clone())? else {
         return Ok(Entry::Cases(vec![case::case_of_table(file, table)?]));

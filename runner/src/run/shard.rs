@@ -7,6 +7,7 @@ use super::stamp::{input_hash, Fnv, PROGRAM};
 use super::table::TableSweep;
 use anyhow::Context;
 use cardan_case::case::Case;
+use cardan_report::files;
 use serde_json::{json, Value};
 use std::path::Path;
 
@@ -276,7 +277,7 @@ impl Manifest {
     /// Reads the record of the shard output folder `dir`.
     pub fn read(dir: &Path) -> anyhow::Result<Self> {
         let path = dir.join(MANIFEST);
-        let text = std::fs::read_to_string(&path).with_context(|| {
+        let text = files::read_text(&path, files::RESULT_RECORD).with_context(|| {
             format!(
                 "read {}: not the output folder of a `cardan run --shard K/N`",
                 path.display()

@@ -8,6 +8,7 @@ use anyhow::Context;
 use cardan_case::case::Case;
 use cardan_report::files;
 use std::collections::{BTreeMap, HashMap};
+use std::io::Read;
 use std::path::{Path, PathBuf};
 
 /// A sweep point's row: its name, the value of each swept field (dotted path, value as
@@ -72,8 +73,9 @@ pub(super) enum SweepTarget {
 
 /// The swept fields' columns of an existing `sweep.csv` (after `case`), for `want` of them.
 fn swept_columns(csv_path: &Path, want: usize) -> anyhow::Result<Vec<String>> {
-    let mut r =
-        csv::Reader::from_path(csv_path).with_context(|| format!("read {}", csv_path.display()))?;
+    let file = files::open_regular(csv_path, files::RESULT_RECORD)
+        .with_context(|| format!("read {}", csv_path.display()))?;
+    let mut r = csv::Reader::from_reader(file.take(files::RESULT_RECORD.bytes));
     let header = r.headers()?.clone();
     Ok(header.iter().skip(1).take(want).map(String::from).collect())
 }
@@ -107,7 +109,7 @@ fn merged_sweep_csv(dir: &Path, fresh: &str, order: &[String]) -> anyhow::Result
         }
         Ok(())
     };
-    let earlier = std::fs::read(dir.join("sweep.csv"))
+    let earlier = files::read_limited(&dir.join("sweep.csv"), files::RESULT_RECORD)
         .with_context(|| format!("read {}", dir.join("sweep.csv").display()))?;
     read(&mut csv::Reader::from_reader(&earlier[..]))?;
     read(&mut csv::Reader::from_reader(fresh.as_bytes()))?;

@@ -40,7 +40,7 @@ pub(super) fn parts(
         };
         let dir = shard.join(sweep);
         let file = dir.join("sweep.json");
-        let header: Value = std::fs::read_to_string(&file)
+        let header: Value = files::read_text(&file, files::RESULT_RECORD)
             .ok()
             .and_then(|t| serde_json::from_str(&t).ok())
             .ok_or_else(|| {
@@ -181,9 +181,11 @@ fn join_column(
     for p in parts {
         let rows = rows(p).0 as u64;
         let from = p.dir.join("columns").join(format!("{name}.npy"));
-        let mut file = match File::open(&from) {
+        let mut file = match files::open_regular(&from, files::PER_STEP_FILE) {
             Ok(file) => file,
-            Err(_) if dtype == "<f8" => {
+            // A column this part has not (a metric its points lack) reads as NaN; anything
+            // else unreadable (not a regular file, say) is refused below.
+            Err(e) if dtype == "<f8" && e.kind() == std::io::ErrorKind::NotFound => {
                 for _ in 0..rows {
                     out.write_all(&f64::NAN.to_le_bytes())?;
                 }
