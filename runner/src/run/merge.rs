@@ -107,6 +107,53 @@ fn manifests(dirs: &[PathBuf]) -> Result<Vec<Manifest>, String> {
     Ok(all)
 }
 
+/// Refuses shards that lost what they ran: every case (and sweep point) a shard's record
+/// lists must have its complete folder in that shard ([`stamp::incomplete`]: present, its
+/// record readable, its files those the record lists with their sizes), unless the shard
+/// lists its failure (a case that failed has no folder). Checked before anything is written;
+/// each loss named with its case, sweep and shard.
+fn lost(all: &[Manifest], by_shard: &[&Path]) -> Result<(), String> {
+    let first = &all[0];
+    let mut losses = Vec::new();
+    for (name, sweep, k) in &first.cases {
+        let shard = by_shard[k - 1];
+        let dir = match sweep {
+            Some(s) => shard.join(s).join(name),
+            None => shard.join(name),
+        };
+        let Some(why) = stamp::incomplete(&dir) else {
+            continue;
+        };
+        let failed = format!("case \"{name}\":");
+        let listed = all.iter().filter(|m| m.shard.0 == *k);
+        if listed
+            .flat_map(|m| &m.failures)
+            .any(|f| f.contains(&failed))
+        {
+            continue;
+        }
+        let point = match sweep {
+            Some(s) => format!(" (a point of sweep \"{s}\")"),
+            None => String::new(),
+        };
+        losses.push(format!(
+            "case \"{name}\"{point} of shard {k}/{} ({}): {}: {why}",
+            first.shard.1,
+            shard.display(),
+            dir.display()
+        ));
+    }
+    if losses.is_empty() {
+        return Ok(());
+    }
+    Err(format!(
+        "{}: the shard ran the case and lists no failure of it, but its folder is not the one \
+         its run wrote (deleted, truncated or changed since): run the shard again (`cardan run \
+         ... --shard K/N --resume` runs only what is missing), then merge",
+        losses.join("; ")
+    ))
+}
+
 /// Merges the output folders `dirs` of the shards of one batch into `out`, which then holds
 /// byte for byte what one run of the batch writes. The failures of the shards are the
 /// merge's; a refusal (shards that do not belong together) writes nothing.
@@ -134,6 +181,10 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
                 return report;
             }
         }
+    }
+    if let Err(e) = lost(&all, &by_shard) {
+        report.failures.push(format!("cannot merge: {e}"));
+        return report;
     }
     for m in &all {
         for f in &m.failures {

@@ -163,6 +163,40 @@ pub fn read(dir: &Path) -> Option<Record> {
     })
 }
 
+/// Why the case folder `dir` is not complete as its record says (`None`: it is): the folder or
+/// its record missing or unreadable, or the first file that is missing, of another size
+/// (truncated) or not listed.
+pub fn incomplete(dir: &Path) -> Option<String> {
+    if !dir.is_dir() {
+        return Some("missing".into());
+    }
+    let Some(record) = read(dir) else {
+        return Some(format!("no readable {STAMP}"));
+    };
+    if record.complete {
+        return None;
+    }
+    let text = std::fs::read_to_string(dir.join(STAMP)).ok()?;
+    let v: Value = serde_json::from_str(&text).ok()?;
+    let listed = v["files"].as_object()?;
+    let present = listing(dir).unwrap_or_default();
+    for (name, size) in listed {
+        match present.iter().find(|(n, _)| n == name) {
+            None => return Some(format!("{name} missing")),
+            Some((_, s)) if Some(*s) != size.as_u64() => {
+                return Some(format!("{name} of {s} bytes, {} when written", size))
+            }
+            _ => {}
+        }
+    }
+    let extra = present.iter().find(|(n, _)| !listed.contains_key(n));
+    Some(
+        extra.map_or("its files differ from its record".into(), |(n, _)| {
+            format!("{n} not written by its run")
+        }),
+    )
+}
+
 /// The sweep row of the folder `dir` of `case`, if the folder is complete and was written by
 /// this program from this very input: `--resume` keeps it instead of running the case again.
 pub fn reusable(dir: &Path, case: &Case, report: bool) -> Option<Vec<Cell>> {
