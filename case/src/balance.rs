@@ -16,7 +16,7 @@ use std::f64::consts::{PI, TAU};
 
 /// `[balance]`: the balancing devices of every cylinder (what each cancels follows from the
 /// mechanism's masses, `cardan-balance`).
-#[derive(Debug, Default, Deserialize, JsonSchema)]
+#[derive(Debug, Default, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct BalanceTable {
     /// A counterweight on the crank of every cylinder balancing all its rotating mass and
@@ -36,7 +36,7 @@ pub struct BalanceTable {
 }
 
 /// Balance shafts.
-#[derive(Debug, Default, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[derive(Debug, Default, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum BalanceShafts {
     #[default]
@@ -45,7 +45,7 @@ pub enum BalanceShafts {
 }
 
 /// A layout's kind.
-#[derive(Debug, Default, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[derive(Debug, Default, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LayoutKind {
     /// Cylinders in a row, one throw each.
@@ -80,7 +80,7 @@ impl LayoutKind {
 }
 
 /// The engine's cycle, for the firing intervals.
-#[derive(Debug, Default, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[derive(Debug, Default, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Cycle {
     /// Cylinders fire 720°/N apart.
@@ -91,7 +91,7 @@ pub enum Cycle {
 }
 
 /// `[layout]`: the machine's cylinders (default: one cylinder).
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct LayoutTable {
     /// "inline" (default), "vee", "boxer", "radial" or "custom".

@@ -93,12 +93,17 @@ pub struct Case {
     /// The sweep this case is a point of (its results go to `out/<sweep>/<case>/`), and the
     /// value of each swept field (dotted path, value as written).
     pub sweep: Option<(String, Vec<(String, String)>)>,
+    /// The digest of the case's whole input as read ([`crate::digest`]): its typed document
+    /// ([`CaseFile`], every field, a quantity in SI), its mechanisms' own tables, and the
+    /// name and bytes of every file it read (a `[gas]` pressure trace). The runner's input
+    /// hash (`run.json`, `shard.json`) is made from it.
+    pub input_digest: String,
 }
 
 /// A case file as written: the typed schema of its top level. The mechanisms' own tables
 /// (`[cardan_gear]`, ...) and their mass tables (`[masses.cardan_gear]`) are named by the
 /// registry of `cardan-mechanism` and read apart (`mechanism_tables`).
-#[derive(Deserialize, JsonSchema)]
+#[derive(Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct CaseFile {
     /// The case's name, and its results folder: at most 200 letters, digits, '-', '_' and '.',
@@ -135,7 +140,7 @@ pub struct CaseFile {
 }
 
 /// `[geometry]`: the machine's shared dimensions.
-#[derive(Deserialize, JsonSchema)]
+#[derive(Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct GeometryTable {
     /// Crank radius r, m.
@@ -155,7 +160,7 @@ pub struct GeometryTable {
 }
 
 /// `[motion]`: the crank's prescribed motion.
-#[derive(Deserialize, JsonSchema)]
+#[derive(Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct MotionTable {
     /// Crank angle at the start of the run; a bare number is in degrees.
@@ -182,7 +187,7 @@ pub struct MotionTable {
 }
 
 /// `[output]`: what a case writes besides `summary.json`.
-#[derive(Deserialize, JsonSchema)]
+#[derive(Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct OutputTable {
     /// Write `<mechanism>.csv`, one row per step; default true.
@@ -239,7 +244,7 @@ impl From<&OutputTable> for OutputOptions {
 }
 
 /// A case's name: a folder name ([`is_folder_name`]).
-#[derive(Debug, Clone, JsonSchema)]
+#[derive(Debug, Clone, JsonSchema, serde::Serialize)]
 #[schemars(transparent)]
 pub struct FolderName(pub String);
 
@@ -385,7 +390,15 @@ fn from_table(file: &Path, mut table: toml::Table) -> Result<Case, CaseError> {
             error,
         }
     })?;
-    validate(file, raw, own)
+    let document = crate::digest::canonical(&(&raw, &own.options, &own.masses));
+    let mut case = validate(file, raw, own)?;
+    let mut digest = crate::digest::Fnv::default();
+    digest.update(&document);
+    for (name, bytes) in case.gas.iter().flat_map(|g| &g.files) {
+        digest.update(name.as_bytes()).update(bytes.as_bytes());
+    }
+    case.input_digest = digest.hex();
+    Ok(case)
 }
 
 fn mechanism_names() -> Vec<&'static str> {
@@ -542,6 +555,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         table_metrics,
         balance,
         sweep: None,
+        input_digest: String::new(),
     })
 }
 

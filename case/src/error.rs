@@ -35,7 +35,7 @@ pub enum CaseError {
 }
 
 /// Pump or engine: what the gas does (used by the gas models).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Machine {
     Pump,

@@ -29,7 +29,7 @@ use std::sync::Arc;
 /// The `[friction]` table: each model's word and parameters, the oil, per-joint bearings, and
 /// an engine's components. Every field is optional; its default is the model's
 /// ([`Parameters::default`]).
-#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionTable {
     /// Piston-ring model of every piston in a cylinder (default "karhula").
@@ -88,7 +88,7 @@ pub struct FrictionTable {
 }
 
 /// The fmep correlation of an engine's cross-check.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FmepWord {
     /// Sandoval & Heywood (2003): PNH with the oil's viscosity scaling.
@@ -161,6 +161,13 @@ impl<'de, S: Site> Deserialize<'de> for Model<S> {
     }
 }
 
+/// Its word.
+impl<S: Site> serde::Serialize for Model<S> {
+    fn serialize<Ser: serde::Serializer>(&self, serializer: Ser) -> Result<Ser::Ok, Ser::Error> {
+        serializer.serialize_str(self.word())
+    }
+}
+
 impl<S: Site> JsonSchema for Model<S> {
     fn schema_name() -> Cow<'static, str> {
         S::NAME.into()
@@ -181,11 +188,11 @@ impl<S: Site> JsonSchema for Model<S> {
 }
 
 /// `[friction.joints]`: joint name = a bearing model, or a table; in the file's order.
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, serde::Serialize)]
 pub struct Joints(pub Vec<(String, Joint)>);
 
 /// One entry of `[friction.joints]`.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize)]
 pub enum Joint {
     /// `crank_pin = "short_bearing"`.
     Model(Model<Bearings>),
@@ -194,7 +201,7 @@ pub enum Joint {
 }
 
 /// A joint's bearing model and catalogue values; what is left out keeps the sizing rules.
-#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct JointTable {
     /// The joint's bearing model (default: `bearings`).
@@ -208,7 +215,7 @@ pub struct JointTable {
 }
 
 /// A number of bearings, a whole number from 1 to 16.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 pub struct Count(pub u32);
 
 impl<'de> Deserialize<'de> for Count {

@@ -31,6 +31,8 @@ pub struct GasCase {
     name: &'static str,
     model: Arc<dyn GasModel + Send>,
     pub clearance: Clearance,
+    /// The files the model read: each as named in `[gas]` and the digest of its bytes.
+    pub files: Vec<(String, String)>,
 }
 
 impl std::fmt::Debug for GasCase {
@@ -38,6 +40,7 @@ impl std::fmt::Debug for GasCase {
         f.debug_struct("GasCase")
             .field("model", &self.name)
             .field("clearance", &self.clearance)
+            .field("files", &self.files)
             .finish()
     }
 }
@@ -81,6 +84,7 @@ pub fn parse(
         case,
         machine,
         model: "",
+        files: Default::default(),
     };
     let names: Vec<&str> = MODELS.iter().map(|m| m.name).collect();
     let listed = || {
@@ -129,6 +133,7 @@ pub fn parse(
         name: entry.name,
         model,
         clearance,
+        files: cx.files.into_inner(),
     })
 }
 

@@ -61,6 +61,13 @@ impl<'de, R: Range, D: Dim> Deserialize<'de> for Ranged<R, D> {
     }
 }
 
+/// Its SI value, as a [`Quantity`]'s.
+impl<R, D> serde::Serialize for Ranged<R, D> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_f64(self.si)
+    }
+}
+
 impl<R: Range, D: Dim> JsonSchema for Ranged<R, D> {
     fn schema_name() -> Cow<'static, str> {
         R::NAME.into()
@@ -95,7 +102,7 @@ impl<R: Range, D: Dim> JsonSchema for Ranged<R, D> {
 }
 
 /// A value given once for both members of a pair, or per member as `[pinion, gear]`.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct PerGear<T>(pub [T; 2]);
 
 impl<R: Range, D: Dim> PerGear<Ranged<R, D>> {
@@ -169,7 +176,7 @@ ranges! {
 }
 
 /// The gears' steel and its treatment, for the allowable stresses.
-#[derive(Debug, Clone, Copy, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum GearMaterialWord {
     /// Through-hardened steel: allowables from the hardness (AGMA 2001-D04 Figs. 3 and 8).
@@ -179,7 +186,7 @@ pub enum GearMaterialWord {
 }
 
 /// Which load is rated.
-#[derive(Debug, Clone, Copy, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ToothLoadWord {
     /// The mesh force along the pitch-circle tangent (Karhula A8.1.10).
@@ -192,7 +199,7 @@ pub enum ToothLoadWord {
 
 /// `[gear]`: the gear pair of every gear mesh of the case and its rating data. Every field is
 /// optional; the defaults are `cardan_dynamics::GearSpec::default`'s.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct GearTable {
     /// Teeth of the mesh's first gear (the cardan wheel), a whole number from 5 to 1000.

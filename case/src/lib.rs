@@ -5,6 +5,7 @@
 
 pub mod balance;
 pub mod case;
+pub mod digest;
 pub mod error;
 pub mod friction;
 pub mod gas;

@@ -10,7 +10,7 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 
 /// How the crank moves.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum MotionMode {
     /// The crank follows the law of `[motion]`: θ = θ0 + ω0·t + ½·α·t².
@@ -23,7 +23,7 @@ pub enum MotionMode {
 
 /// `[load]`: the torque a load or motor applies to the crankshaft, positive in the direction of
 /// rotation (a brake, a pump or a driven machine negative; a motor positive); the terms add up.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct LoadTable {
     /// A constant torque, N·m ("-200 N*m", "kN*m", "lbf*ft").
@@ -39,7 +39,7 @@ pub struct LoadTable {
 }
 
 /// `[flywheel]`: a flywheel on the crankshaft, given or sized.
-#[derive(Debug, Deserialize, JsonSchema)]
+#[derive(Debug, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct FlywheelTable {
     /// Its moment of inertia, kg·m² (a bare number above 100 is taken for g·cm²: write

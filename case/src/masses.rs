@@ -11,7 +11,7 @@ use serde::Deserialize;
 
 /// The mass fields of `[masses]`, and of a mechanism's `[masses.<mechanism>]` (which cannot
 /// set `rules`).
-#[derive(Debug, Default, Deserialize, JsonSchema)]
+#[derive(Debug, Default, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct MassTable {
     /// Crankshaft moment of inertia about the crank axis, kg·m²; default: the mass rules.
@@ -45,7 +45,7 @@ pub struct MassTable {
 }
 
 /// A rod's material.
-#[derive(Debug, Clone, Copy, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum RodMaterial {
     Steel,
@@ -53,7 +53,7 @@ pub enum RodMaterial {
 }
 
 /// The reading of the mass rules ([`MassRules`]).
-#[derive(Debug, Clone, Copy, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Rules {
     /// The section scales with the rod's centre distance l (Karhula 2008 ch. 10).

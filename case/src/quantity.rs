@@ -125,6 +125,20 @@ impl<'de, D: Dim, const RULE: u8> Deserialize<'de> for Quantity<D, RULE> {
     }
 }
 
+/// Its SI value (the case's input hash serializes the typed case: "60 mm" and 0.06 are one
+/// input).
+impl<D, const RULE: u8> serde::Serialize for Quantity<D, RULE> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_f64(self.si)
+    }
+}
+
+impl<const LOW: i64, const HIGH: i64> serde::Serialize for Whole<LOW, HIGH> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_i64(self.0)
+    }
+}
+
 impl<D: Dim, const RULE: u8> JsonSchema for Quantity<D, RULE> {
     fn schema_name() -> Cow<'static, str> {
         match RULE {

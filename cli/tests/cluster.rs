@@ -654,4 +654,55 @@ fn slurm_refuses_missing_paths_and_bad_outputs_and_merges_many_shards_from_a_lis
         "{err}"
     );
     assert!(!many.exists(), "a refused merge wrote {}", many.display());
+
+/// `cardan merge --out` that is one of its shards, inside one, or holding one (by another name
+/// of the same folder too) is refused (exit 1), naming the shard, with the shards untouched.
+#[test]
+fn a_merge_into_its_own_shards_is_refused() {
+    let tmp = tempfile::tempdir().unwrap();
+    let files = [
+        configs().join("karhula-pump-r60-l140-a0-w3pi.toml"),
+        configs().join("karhula-r60-l140-a0-w3pi.toml"),
+    ];
+    assert!(files.iter().all(|f| f.is_file()));
+    let root = tmp.path().join("shards");
+    let shards: Vec<PathBuf> = (1..=2).map(|k| root.join(format!("s{k}"))).collect();
+    for (k, dir) in shards.iter().enumerate() {
+        let spec = format!("{}/2", k + 1);
+        let out = run(&[
+            "run".as_ref(),
+            files[0].as_os_str(),
+            files[1].as_os_str(),
+            "--out".as_ref(),
+            dir.as_os_str(),
+            "--quiet".as_ref(),
+            "--no-report".as_ref(),
+            "--shard".as_ref(),
+            spec.as_ref(),
+        ]);
+        assert!(out.status.success(), "{out:?}");
+    }
+    let before: Vec<_> = shards.iter().map(|s| tree(s)).collect();
+    let other_name = root.join("s2/../s1");
+    for (out, how) in [
+        (shards[0].clone(), "is the shard"),
+        (other_name, "is the shard"),
+        (shards[1].join("merged"), "is inside the shard"),
+        (root.clone(), "contains the shard"),
+    ] {
+        let said = merge(&[&shards[0], &shards[1]], &out);
+        assert_eq!(said.status.code(), Some(1), "{}: {said:?}", out.display());
+        let stderr = String::from_utf8_lossy(&said.stderr);
+        assert!(
+            stderr.contains(how) && stderr.contains("choose an --out"),
+            "{}: {stderr}",
+            out.display()
+        );
+        let after: Vec<_> = shards.iter().map(|s| tree(s)).collect();
+        assert!(before == after, "{}: a shard changed", out.display());
+        assert!(!shards[1].join("merged").exists());
+    }
+    // Beside the shards: merged.
+    let said = merge(&[&shards[0], &shards[1]], &tmp.path().join("merged"));
+    assert!(said.status.success(), "{said:?}");
 }

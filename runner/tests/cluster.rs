@@ -245,3 +245,113 @@ fn shards_partition_the_cases_balanced_by_cost() {
         }
     }
 }
+
+/// A small batch: a case and a sweep of three points with folders, tiny runs.
+fn small_batch(dir: &Path) -> PathBuf {
+    let cases = dir.join("cases");
+    std::fs::create_dir_all(&cases).unwrap();
+    let case = |name: &str, sweep: &str| {
+        format!(
+            r#"name = "{name}"
+machine = "pump"
+mechanisms = ["slider_crank"]
+[geometry]
+crank_length = 0.06
+rod_length = 0.14
+bore = 0.12
+[motion]
+start_angle = 0.0
+end_angle = 360.0
+initial_speed = 31.4
+angular_acceleration = 0.0
+steps = 36
+{sweep}"#
+        )
+    };
+    std::fs::write(cases.join("one.toml"), case("one", "")).unwrap();
+    let sweep = "[sweep]\n\"motion.initial_speed\" = [10.0, 20.0, 30.0]\n";
+    std::fs::write(cases.join("speeds.toml"), case("speeds", sweep)).unwrap();
+    cases
+}
+
+/// The batch's two shards, run into `dir`; the folder of each holding `what` (a relative
+/// path), found.
+fn two_shards(cases: &Path, dir: &Path) -> Vec<PathBuf> {
+    (1..=2)
+        .map(|k| {
+            let out = dir.join(format!("shard{k}"));
+            let o = RunOptions {
+                shard: Some((k, 2)),
+                ..options()
+            };
+            let report = run_paths(&[cases.to_path_buf()], &out, o);
+            assert!(report.failures.is_empty(), "{:#?}", report.failures);
+            out
+        })
+        .collect()
+}
+
+/// What a shard lost after its run (a case folder, a sweep point's folder, a truncated
+/// `summary.json`) is refused by the merge, naming the case and the shard, with nothing
+/// written; the shards as they were merge.
+#[test]
+fn a_merge_refuses_what_a_shard_lost() {
+    let tmp = tempfile::tempdir().unwrap();
+    let cases = small_batch(tmp.path());
+    let shards = two_shards(&cases, &tmp.path().join("whole"));
+    let report = merge(&shards, &tmp.path().join("merged"));
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    assert_eq!(report.written.len(), 4, "{:#?}", report.written);
+    for (k, (point, damage)) in [
+        (false, "remove"),
+        (true, "remove"),
+        (false, "truncate"),
+        (true, "truncate"),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let shards = two_shards(&cases, &tmp.path().join(format!("damaged{k}")));
+        // The case "one", or the first point folder of the sweep, in the shard that ran it.
+        let (n, shard, case, folder) = shards
+            .iter()
+            .enumerate()
+            .find_map(|(n, s)| {
+                if !point {
+                    return s
+                        .join("one")
+                        .is_dir()
+                        .then(|| (n, s, "one".to_string(), s.join("one")));
+                }
+                let points = std::fs::read_dir(s.join("speeds")).ok()?;
+                let p = points.map(|e| e.unwrap().path()).find(|p| p.is_dir())?;
+                let name = p.file_name().unwrap().to_string_lossy().to_string();
+                Some((n, s, name, p))
+            })
+            .unwrap();
+        match damage {
+            "remove" => std::fs::remove_dir_all(&folder).unwrap(),
+            _ => {
+                let path = folder.join("summary.json");
+                let bytes = std::fs::read(&path).unwrap();
+                std::fs::write(&path, &bytes[..bytes.len() / 2]).unwrap();
+            }
+        }
+        let out = tmp.path().join(format!("out{k}"));
+        let report = merge(&shards, &out);
+        let said = report.failures.join("\n");
+        let what = format!("{} ({damage})", folder.display());
+        for part in [
+            "cannot merge".to_string(),
+            format!("case \"{case}\""),
+            format!("shard {}/2", n + 1),
+            shard.display().to_string(),
+        ] {
+            assert!(said.contains(&part), "{what}: {part:?} not in: {said}");
+        }
+        if damage == "truncate" {
+            assert!(said.contains("summary.json of"), "{said}");
+        }
+        assert!(!out.exists(), "a refused merge wrote {}", out.display());
+    }
+}

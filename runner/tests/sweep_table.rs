@@ -325,3 +325,80 @@ fn assert_same_tree(single: &Path, merged: &Path) {
         .unwrap();
     assert!(same.success(), "merged differs from the single run");
 }
+
+/// `--only` selecting some points of a sweep written as a table is refused, naming the sweep,
+/// the points selected and the fix, with nothing run: the table written before keeps all its
+/// rows, byte for byte. A pattern selecting every point runs the whole table.
+#[test]
+fn only_some_points_of_a_table_are_refused() {
+    let tmp = tempfile::tempdir().unwrap();
+    let file = tmp.path().join("s.toml");
+    std::fs::write(
+        &file,
+        r#"name = "s"
+machine = "pump"
+mechanisms = ["slider_crank"]
+[geometry]
+crank_length = 0.06
+rod_length = 0.14
+bore = 0.12
+[motion]
+start_angle = 0.0
+end_angle = 360.0
+initial_speed = 31.4
+angular_acceleration = 0.0
+steps = 36
+[output]
+case_folders = false
+[sweep]
+"motion.initial_speed" = [10.0, 20.0, 30.0, 40.0, 50.0, 60.0]
+"#,
+    )
+    .unwrap();
+    let out = tmp.path().join("out");
+    let r = run_paths(std::slice::from_ref(&file), &out, RunOptions::default());
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    let table = |out: &Path| -> Vec<(String, Vec<u8>)> {
+        let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(out.join("s/columns"))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .map(|p| (p.display().to_string(), std::fs::read(&p).unwrap()))
+            .collect();
+        files.push((
+            "sweep.json".into(),
+            std::fs::read(out.join("s/sweep.json")).unwrap(),
+        ));
+        files.sort();
+        files
+    };
+    let before = table(&out);
+    let text = std::fs::read_to_string(&file).unwrap();
+    let sweep = cardan_case::sweep::Sweep::define(&file, toml::from_str(&text).unwrap())
+        .unwrap()
+        .unwrap();
+    let second = sweep.point_name(1);
+    let o = RunOptions {
+        only: Some(second.clone()),
+        ..RunOptions::default()
+    };
+    let r = run_paths(std::slice::from_ref(&file), &out, o);
+    let said = r.failures.join("\n");
+    for part in [
+        "selects 1 of the 6 points of the sweep \"s\"",
+        "written as a table",
+        "case_folders = true",
+    ] {
+        assert!(said.contains(part), "{part:?} not in: {said}");
+    }
+    assert!(r.sweeps.is_empty() && r.written.is_empty(), "{r:?}");
+    assert_eq!(before, table(&out), "the table changed");
+    // Every point selected: the whole table, as without --only.
+    let o = RunOptions {
+        only: Some("s*".into()),
+        ..RunOptions::default()
+    };
+    let r = run_paths(std::slice::from_ref(&file), &out, o);
+    assert!(r.failures.is_empty(), "{:?}", r.failures);
+    assert_eq!(r.sweeps[0].2, 6);
+    assert_eq!(before, table(&out));
+}

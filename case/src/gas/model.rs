@@ -86,9 +86,21 @@ pub struct Context<'a> {
     pub machine: Machine,
     /// `gas.model`.
     pub(super) model: &'static str,
+    /// The files the model read: each as named in the table and the digest of its bytes
+    /// ([`Context::record_file`]).
+    pub(super) files: std::cell::RefCell<Vec<(String, String)>>,
 }
 
 impl Context<'_> {
+    /// Records the bytes of the file a field named (`name` as written), which the model read:
+    /// they enter the case's input digest ([`crate::case::Case::input_digest`]), so that a run
+    /// resumed or merged after the file changed runs the case again. Every model that reads a
+    /// file calls it with what it read.
+    pub fn record_file(&self, name: &str, bytes: &[u8]) {
+        let digest = crate::digest::of_bytes(bytes);
+        self.files.borrow_mut().push((name.to_string(), digest));
+    }
+
     /// A rule broken by `value` of the field `key` of `[gas]`.
     pub fn refuse(&self, key: &str, value: &dyn std::fmt::Display, rule: &str) -> CaseError {
         CaseError::Invalid {

@@ -84,6 +84,7 @@ impl ModelTable for PressureTraceTable {
                 &format!("cannot read {}: {e}", path.display()),
             )
         })?;
+        cx.record_file(name, text.as_bytes());
         let period = match cx.machine {
             Machine::Engine => 4.0 * PI,
             _ => 2.0 * PI,

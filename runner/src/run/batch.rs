@@ -86,16 +86,10 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         }
     }
     if let Some(pattern) = &options.only {
-        cases.retain(|c| matches_pattern(pattern, &c.name));
-        for t in &mut tables {
-            let sweep = &t.sweep;
-            t.selected = Some(
-                (0..sweep.len())
-                    .filter(|&k| matches_pattern(pattern, &sweep.point_name(k)))
-                    .collect(),
-            );
+        if let Err(partial) = select(pattern, &mut cases, &mut tables) {
+            report.failures.extend(partial);
+            return report;
         }
-        tables.retain(|t| t.points() > 0);
     }
     let mut selected: HashMap<&str, usize> = HashMap::new();
     for c in &cases {
@@ -290,6 +284,43 @@ fn run_all(
         None => work(),
     };
     Some(outcomes)
+}
+
+/// Keeps the cases and the points of each table sweep whose name matches `pattern`
+/// (`--only`); refused (nothing run) where it selects some of a table sweep's points but not
+/// all: a table is written whole, so some of its points alone would replace it with their rows.
+fn select(
+    pattern: &str,
+    cases: &mut Vec<Case>,
+    tables: &mut Vec<TableSweep>,
+) -> Result<(), Vec<String>> {
+    cases.retain(|c| matches_pattern(pattern, &c.name));
+    for t in tables.iter_mut() {
+        let sweep = &t.sweep;
+        t.selected = Some(
+            (0..sweep.len())
+                .filter(|&k| matches_pattern(pattern, &sweep.point_name(k)))
+                .collect(),
+        );
+    }
+    tables.retain(|t| t.points() > 0);
+    let partial: Vec<String> = tables
+        .iter()
+        .filter(|t| t.points() < t.sweep.len())
+        .map(|t| {
+            format!(
+                "--only {pattern}: selects {} of the {} points of the sweep \"{}\", written as a table ([output] case_folders = false), which is written whole: nothing was run; run the whole sweep (a pattern matching all its points, or none of them), or write its points as folders ([output] case_folders = true), whose points --only updates in place",
+                t.points(),
+                t.sweep.len(),
+                t.sweep.name
+            )
+        })
+        .collect();
+    if partial.is_empty() {
+        Ok(())
+    } else {
+        Err(partial)
+    }
 }
 
 #[cfg(test)]

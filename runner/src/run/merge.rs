@@ -107,11 +107,121 @@ fn manifests(dirs: &[PathBuf]) -> Result<Vec<Manifest>, String> {
     Ok(all)
 }
 
+/// `path` made absolute, its `.` and `..` taken lexically, and its longest existing part
+/// resolved (symbolic links followed: [`std::fs::canonicalize`]), so that two names of one
+/// folder compare equal, whether or not the rest of the path exists yet.
+fn resolved(path: &Path) -> PathBuf {
+    use std::path::Component;
+    let absolute = std::env::current_dir()
+        .map(|cwd| cwd.join(path))
+        .unwrap_or_else(|_| path.to_path_buf());
+    let mut lexical = PathBuf::new();
+    for c in absolute.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                lexical.pop();
+            }
+            c => lexical.push(c),
+        }
+    }
+    let mut existing = lexical.as_path();
+    let mut rest = Vec::new();
+    loop {
+        if let Ok(real) = std::fs::canonicalize(existing) {
+            return rest.iter().rev().fold(real, |p, c| p.join(c));
+        }
+        match (existing.parent(), existing.file_name()) {
+            (Some(parent), Some(name)) => {
+                rest.push(name.to_os_string());
+                existing = parent;
+            }
+            _ => return lexical,
+        }
+    }
+}
+
+/// Refuses an output folder `out` that is one of the shards' folders `dirs`, inside one, or
+/// holds one: the merge would write over the shards it reads.
+fn apart(dirs: &[PathBuf], out: &Path) -> Result<(), String> {
+    let o = resolved(out);
+    for dir in dirs {
+        let d = resolved(dir);
+        let how = if o == d {
+            "is"
+        } else if o.starts_with(&d) {
+            "is inside"
+        } else if d.starts_with(&o) {
+            "contains"
+        } else {
+            continue;
+        };
+        return Err(format!(
+            "--out {} {how} the shard folder {}: the merge would write over the shards it \
+             reads: choose an --out outside every shard folder",
+            out.display(),
+            dir.display()
+        ));
+    }
+    Ok(())
+}
+
+/// Refuses shards that lost what they ran: every case (and sweep point) a shard's record
+/// lists must have its complete folder in that shard ([`stamp::incomplete`]: present, its
+/// record readable, its files those the record lists with their sizes), unless the shard
+/// lists its failure (a case that failed has no folder). Checked before anything is written;
+/// each loss named with its case, sweep and shard.
+fn lost(all: &[Manifest], by_shard: &[&Path]) -> Result<(), String> {
+    let first = &all[0];
+    let mut losses = Vec::new();
+    for (name, sweep, k) in &first.cases {
+        let shard = by_shard[k - 1];
+        let dir = match sweep {
+            Some(s) => shard.join(s).join(name),
+            None => shard.join(name),
+        };
+        let Some(why) = stamp::incomplete(&dir) else {
+            continue;
+        };
+        let failed = format!("case \"{name}\":");
+        let listed = all.iter().filter(|m| m.shard.0 == *k);
+        if listed
+            .flat_map(|m| &m.failures)
+            .any(|f| f.contains(&failed))
+        {
+            continue;
+        }
+        let point = match sweep {
+            Some(s) => format!(" (a point of sweep \"{s}\")"),
+            None => String::new(),
+        };
+        losses.push(format!(
+            "case \"{name}\"{point} of shard {k}/{} ({}): {}: {why}",
+            first.shard.1,
+            shard.display(),
+            dir.display()
+        ));
+    }
+    if losses.is_empty() {
+        return Ok(());
+    }
+    Err(format!(
+        "{}: the shard ran the case and lists no failure of it, but its folder is not the one \
+         its run wrote (deleted, truncated or changed since): run the shard again (`cardan run \
+         ... --shard K/N --resume` runs only what is missing), then merge",
+        losses.join("; ")
+    ))
+}
+
 /// Merges the output folders `dirs` of the shards of one batch into `out`, which then holds
 /// byte for byte what one run of the batch writes. The failures of the shards are the
 /// merge's; a refusal (shards that do not belong together) writes nothing.
 pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
     let mut report = Report::default();
+    if let Err(e) = apart(dirs, out) {
+        report.failures.push(format!("cannot merge: {e}"));
+        return report;
+    }
     let all = match manifests(dirs) {
         Ok(all) => all,
         Err(e) => {
@@ -134,6 +244,10 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
                 return report;
             }
         }
+    }
+    if let Err(e) = lost(&all, &by_shard) {
+        report.failures.push(format!("cannot merge: {e}"));
+        return report;
     }
     for m in &all {
         for f in &m.failures {

@@ -20,41 +20,15 @@ pub const PROGRAM: &str = concat!("cardan ", env!("CARGO_PKG_VERSION"));
 /// `sweep.csv` writes it).
 pub type Cell = (String, String, String);
 
-/// FNV-1a, 128 bits (Fowler, Noll and Vo; IETF draft-eastlake-fnv, section 2 and the 128-bit
-/// offset basis and prime of section 5): a stable hash of the inputs, the same in every build
-/// and on every machine (std's hasher promises neither). It tells inputs apart, it is no
-/// protection against someone forging a collision.
-#[derive(Clone, Copy)]
-pub struct Fnv(u128);
+pub use cardan_case::digest::Fnv;
 
-impl Default for Fnv {
-    fn default() -> Self {
-        Self(0x6c62_272e_07bb_0142_62b8_2175_6295_c58d)
-    }
-}
-
-impl Fnv {
-    /// Hashes `bytes` in, then a separator, so that ("ab", "c") and ("a", "bc") differ.
-    pub fn update(&mut self, bytes: &[u8]) -> &mut Self {
-        const PRIME: u128 = 0x0000_0000_0100_0000_0000_0000_0000_013b;
-        for &b in bytes.iter().chain(&[0xff]) {
-            self.0 ^= u128::from(b);
-            self.0 = self.0.wrapping_mul(PRIME);
-        }
-        self
-    }
-
-    /// The hash as 32 hexadecimal digits.
-    pub fn hex(&self) -> String {
-        format!("{:032x}", self.0)
-    }
-}
-
-/// The hash of `case`'s validated input as it runs (after the command line's overrides of its
-/// `[output]`), and whether its folder holds a report: its whole validated form, except the
-/// path of its file (a case moved or run from another folder is the same case) and its
-/// setups (made from the rest: their form holds scratch room for the run). The form is the
-/// program's own (`Debug`), which is why the program's version is recorded beside it.
+/// The hash of `case`'s input as it runs (after the command line's overrides of its
+/// `[output]`), and whether its folder holds a report: the program and its version, the
+/// digest of the case's whole input ([`Case::input_digest`]: its typed document, serialized,
+/// and the bytes of every file it reads), and its whole validated form, except the path of its
+/// file (a case moved or run from another folder is the same case) and its setups (made from
+/// the rest: their form holds scratch room for the run). The validated form is the program's
+/// own (`Debug`); it holds the command line's overrides.
 pub fn input_hash(case: &Case, report: bool) -> String {
     let case = Case {
         file: PathBuf::new(),
@@ -62,6 +36,8 @@ pub fn input_hash(case: &Case, report: bool) -> String {
         ..case.clone()
     };
     Fnv::default()
+        .update(PROGRAM.as_bytes())
+        .update(case.input_digest.as_bytes())
         .update(format!("{case:?}").as_bytes())
         .update(if report { b"report" } else { b"no report" })
         .hex()
@@ -187,26 +163,44 @@ pub fn read(dir: &Path) -> Option<Record> {
     })
 }
 
+/// Why the case folder `dir` is not complete as its record says (`None`: it is): the folder or
+/// its record missing or unreadable, or the first file that is missing, of another size
+/// (truncated) or not listed.
+pub fn incomplete(dir: &Path) -> Option<String> {
+    if !dir.is_dir() {
+        return Some("missing".into());
+    }
+    let Some(record) = read(dir) else {
+        return Some(format!("no readable {STAMP}"));
+    };
+    if record.complete {
+        return None;
+    }
+    let text = std::fs::read_to_string(dir.join(STAMP)).ok()?;
+    let v: Value = serde_json::from_str(&text).ok()?;
+    let listed = v["files"].as_object()?;
+    let present = listing(dir).unwrap_or_default();
+    for (name, size) in listed {
+        match present.iter().find(|(n, _)| n == name) {
+            None => return Some(format!("{name} missing")),
+            Some((_, s)) if Some(*s) != size.as_u64() => {
+                return Some(format!("{name} of {s} bytes, {} when written", size))
+            }
+            _ => {}
+        }
+    }
+    let extra = present.iter().find(|(n, _)| !listed.contains_key(n));
+    Some(
+        extra.map_or("its files differ from its record".into(), |(n, _)| {
+            format!("{n} not written by its run")
+        }),
+    )
+}
+
 /// The sweep row of the folder `dir` of `case`, if the folder is complete and was written by
 /// this program from this very input: `--resume` keeps it instead of running the case again.
 pub fn reusable(dir: &Path, case: &Case, report: bool) -> Option<Vec<Cell>> {
     let record = read(dir)?;
     (record.complete && record.program == PROGRAM && record.input_hash == input_hash(case, report))
         .then_some(record.metrics)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::Fnv;
-
-    /// FNV-1a 128 of the empty string is its offset basis; of "a" (with our separator byte
-    /// after it) it differs from "a" followed by anything else.
-    #[test]
-    fn the_hash_is_stable_and_separates_parts() {
-        assert_eq!(Fnv::default().hex(), "6c62272e07bb014262b821756295c58d");
-        let ab_c = Fnv::default().update(b"ab").update(b"c").hex();
-        let a_bc = Fnv::default().update(b"a").update(b"bc").hex();
-        assert_ne!(ab_c, a_bc);
-        assert_eq!(ab_c, Fnv::default().update(b"ab").update(b"c").hex());
-    }
 }

@@ -1,0 +1,86 @@
+//! The digest of a case's whole input (`run.json`'s and `shard.json`'s input hash, through
+//! the runner): the typed case document after reading, serialized by serde (so that no field
+//! can be left out: every field of every table struct is in its serialization, a quantity as
+//! its SI value), its mechanisms' own tables, and the bytes of every file the case reads.
+
+use serde_json::Value;
+
+/// FNV-1a, 128 bits (Fowler, Noll and Vo; IETF draft-eastlake-fnv, section 2 and the 128-bit
+/// offset basis and prime of section 5): a stable hash of the inputs, the same in every build
+/// and on every machine (std's hasher promises neither). It tells inputs apart, it is no
+/// protection against someone forging a collision.
+#[derive(Clone, Copy)]
+pub struct Fnv(u128);
+
+impl Default for Fnv {
+    fn default() -> Self {
+        Self(0x6c62_272e_07bb_0142_62b8_2175_6295_c58d)
+    }
+}
+
+impl Fnv {
+    /// Hashes `bytes` in, then a separator, so that ("ab", "c") and ("a", "bc") differ.
+    pub fn update(&mut self, bytes: &[u8]) -> &mut Self {
+        const PRIME: u128 = 0x0000_0000_0100_0000_0000_0000_0000_013b;
+        for &b in bytes.iter().chain(&[0xff]) {
+            self.0 ^= u128::from(b);
+            self.0 = self.0.wrapping_mul(PRIME);
+        }
+        self
+    }
+
+    /// The hash as 32 hexadecimal digits.
+    pub fn hex(&self) -> String {
+        format!("{:032x}", self.0)
+    }
+}
+
+/// The hash of `bytes` alone (a file's content).
+pub fn of_bytes(bytes: &[u8]) -> String {
+    Fnv::default().update(bytes).hex()
+}
+
+/// The canonical bytes of `value`'s serialization: JSON with every object's keys sorted (the
+/// order a TOML table was written in does not change the input).
+pub fn canonical<T: serde::Serialize>(value: &T) -> Vec<u8> {
+    fn sorted(v: Value) -> Value {
+        match v {
+            Value::Object(map) => {
+                let mut entries: Vec<(String, Value)> = map.into_iter().collect();
+                entries.sort_by(|a, b| a.0.cmp(&b.0));
+                Value::Object(entries.into_iter().map(|(k, v)| (k, sorted(v))).collect())
+            }
+            Value::Array(items) => Value::Array(items.into_iter().map(sorted).collect()),
+            v => v,
+        }
+    }
+    // The typed case serializes into JSON whatever it holds (strings, numbers, tables).
+    let value = serde_json::to_value(value).unwrap_or_else(|e| Value::String(e.to_string()));
+    serde_json::to_vec(&sorted(value)).unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// FNV-1a 128 of the empty string is its offset basis; of "a" (with our separator byte
+    /// after it) it differs from "a" followed by anything else.
+    #[test]
+    fn the_hash_is_stable_and_separates_parts() {
+        assert_eq!(Fnv::default().hex(), "6c62272e07bb014262b821756295c58d");
+        let ab_c = Fnv::default().update(b"ab").update(b"c").hex();
+        let a_bc = Fnv::default().update(b"a").update(b"bc").hex();
+        assert_ne!(ab_c, a_bc);
+        assert_eq!(ab_c, Fnv::default().update(b"ab").update(b"c").hex());
+    }
+
+    /// A table's keys in another order are the same input.
+    #[test]
+    fn the_order_of_keys_does_not_count() {
+        let a: toml::Table = toml::from_str("x = 1\ny = { b = 2, a = 3 }").unwrap();
+        let b: toml::Table = toml::from_str("y = { a = 3, b = 2 }\nx = 1").unwrap();
+        assert_eq!(canonical(&a), canonical(&b));
+        let c: toml::Table = toml::from_str("y = { a = 3, b = 2 }\nx = 2").unwrap();
+        assert_ne!(canonical(&a), canonical(&c));
+    }
+}
