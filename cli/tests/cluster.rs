@@ -654,6 +654,7 @@ fn slurm_refuses_missing_paths_and_bad_outputs_and_merges_many_shards_from_a_lis
         "{err}"
     );
     assert!(!many.exists(), "a refused merge wrote {}", many.display());
+}
 
 /// `cardan merge --out` that is one of its shards, inside one, or holding one (by another name
 /// of the same folder too) is refused (exit 1), naming the shard, with the shards untouched.
