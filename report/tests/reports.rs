@@ -322,3 +322,192 @@ fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
         );
     }
 }
+
+/// The "which is better" items of a report.md: its `- **...` lines, in order.
+fn headline_items(md: &str) -> Vec<&str> {
+    md.lines().filter(|l| l.starts_with("- **")).collect()
+}
+
+/// A case folder with a `summary.json` written by hand: `machine`, `layout` (or none) and per
+/// mechanism its metrics (units from the metric registry).
+fn hand_case(
+    dir: &std::path::Path,
+    machine: &str,
+    layout: Option<(&str, u32)>,
+    mechanisms: &[(&str, &[(&str, f64)])],
+) -> std::path::PathBuf {
+    let case = dir.join("hand");
+    std::fs::create_dir_all(&case).unwrap();
+    let mut ms = serde_json::Map::new();
+    for (name, metrics) in mechanisms {
+        let values: serde_json::Map<String, serde_json::Value> = metrics
+            .iter()
+            .map(|(k, v)| (k.to_string(), serde_json::json!(v)))
+            .collect();
+        let units: serde_json::Map<String, serde_json::Value> = metrics
+            .iter()
+            .map(|(k, _)| {
+                let unit = cardan_dynamics::metrics::find(k).map_or("", |d| d.unit);
+                (k.to_string(), serde_json::json!(unit))
+            })
+            .collect();
+        ms.insert(
+            name.to_string(),
+            serde_json::json!({"bodies": {}, "joints": {}, "mass_properties": {},
+                "metrics": values, "units": units}),
+        );
+    }
+    let mut summary = serde_json::json!({
+        "schema_version": 2, "case": "hand", "machine": machine, "gas_model": null,
+        "mechanisms": ms,
+    });
+    if let Some((kind, n)) = layout {
+        summary["layout"] = serde_json::json!({"kind": kind, "cylinders": n,
+            "balance_shafts": "none", "cardan_counterweights": false, "counterweight": null});
+    }
+    std::fs::write(case.join("summary.json"), summary.to_string()).unwrap();
+    case_report(&case, None).unwrap();
+    case
+}
+
+/// Issue 35: a two-cylinder compressor's report said "Mean power need 1839.9 W" (cylinder 1's)
+/// for a machine that takes 3.75 kW. The machine's figures lead the "which is better" summary
+/// (its mean power need, peak torque as the larger magnitude of its signed extremes, journal
+/// and pin loads, efficiency, losses), then the cylinder's, each labelled "of cylinder 1"; the
+/// per-cylinder tables and the loss budget say whose they are.
+#[test]
+fn a_multi_cylinder_report_leads_with_the_machine_and_labels_the_cylinder() {
+    let dir = tempfile::tempdir().unwrap();
+    let mechanism = |scale: f64| -> Vec<(&'static str, f64)> {
+        vec![
+            ("machine_power_mean", 3750.0 * scale),
+            ("machine_torque_max", 120.0 * scale),
+            ("machine_torque_min", -150.0 * scale),
+            ("machine_torque_mean", 39.8 * scale),
+            ("machine_main_bearing_force_max", 9000.0 * scale),
+            ("machine_crank_pin_force_max", 8000.0 * scale),
+            ("machine_mechanical_efficiency", 0.9 + (1.0 - scale) * 0.25),
+            ("machine_loss_power_mean", 375.0 * scale),
+            ("power_need_mean", 1839.9 * scale),
+            ("mechanical_efficiency", 0.91 + (1.0 - scale) * 0.25),
+            ("power_loss_mean", 180.0 * scale),
+            ("power_loss_mean_crank_pin", 180.0 * scale),
+            ("total_torque_max", 100.0 * scale),
+            ("total_main_bearing_force_max", 7000.0 * scale),
+        ]
+    };
+    let (s, c) = (mechanism(1.0), mechanism(0.8));
+    let case = hand_case(
+        dir.path(),
+        "pump",
+        Some(("inline", 2)),
+        &[("slider_crank", &s), ("cardan_gear", &c)],
+    );
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    let items = headline_items(&md);
+    let expected_starts = [
+        "- **Mean power need of the machine** (`machine_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 3000 W vs `slider_crank` 3750 W (lower by 20.0 %: better).",
+        "- **Peak drive torque of the machine** (the larger of |`machine_torque_max`| and |`machine_torque_min`|, lower is better): best `cardan_gear`; `cardan_gear` 120 N·m vs `slider_crank` 150 N·m",
+        "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`, lower is better): best `cardan_gear`; `cardan_gear` 7200 N vs `slider_crank` 9000 N",
+        "- **Peak crank-pin load of the machine** (`machine_crank_pin_force_max`,",
+        "- **Mechanical efficiency of the machine** (`machine_mechanical_efficiency`, higher is better): best `cardan_gear`; `cardan_gear` 0.95 vs `slider_crank` 0.9",
+        "- **Mean friction power loss of the machine** (`machine_loss_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 300 W vs `slider_crank` 375 W",
+        "- **Peak drive torque of cylinder 1** (`total_torque_max`,",
+        "- **Peak main-bearing force of cylinder 1** (`total_main_bearing_force_max`,",
+        "- **Mean power loss of cylinder 1** (`power_loss_mean`,",
+        "- **Mechanical efficiency of cylinder 1** (`mechanical_efficiency`,",
+        "- **Mean power need of cylinder 1** (`power_need_mean`, lower is better): best `cardan_gear`; `cardan_gear` 1471.9 W vs `slider_crank` 1839.9 W",
+    ];
+    assert_eq!(items.len(), expected_starts.len(), "{items:#?}");
+    for (item, start) in items.iter().zip(expected_starts) {
+        assert!(
+            item.starts_with(start),
+            "{item}\nshould start with\n{start}"
+        );
+    }
+    // No figure of one cylinder under a machine's name.
+    assert!(!md.contains("**Mean power need** ("), "{md}");
+    for heading in [
+        "### The whole machine\n",
+        "### Drive torque, power and work: cylinder 1\n",
+        "### Losses and efficiency: cylinder 1\n",
+        "## Loss budget of cylinder 1\n",
+        "The machine has 2 cylinders",
+    ] {
+        assert!(md.contains(heading), "{heading:?}\n{md}");
+    }
+    assert!(md.find("### The whole machine") < md.find("### Drive torque"));
+
+    // A vee engine: its mean output is −machine_power_mean, higher is better, and its one
+    // cylinder is the mechanism at the machine's crank angle.
+    let dir = tempfile::tempdir().unwrap();
+    let engine = |scale: f64| -> Vec<(&'static str, f64)> {
+        vec![
+            ("machine_power_mean", -60000.0 * scale),
+            ("machine_torque_max", 500.0 * scale),
+            ("machine_torque_min", -2000.0 * scale),
+            ("total_torque_max", 1500.0 * scale),
+        ]
+    };
+    let (s, c) = (engine(1.0), engine(0.9));
+    let case = hand_case(
+        dir.path(),
+        "engine",
+        Some(("vee", 2)),
+        &[("slider_crank", &s), ("cardan_gear", &c)],
+    );
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    let items = headline_items(&md);
+    assert_eq!(items.len(), 3, "{items:#?}");
+    assert!(items[0].starts_with(
+        "- **Mean output power of the machine** (−`machine_power_mean`, higher is better): best `slider_crank`; `cardan_gear` 54000 W vs `slider_crank` 60000 W (lower by 10.0 %: worse)."
+    ), "{}", items[0]);
+    assert!(items[1].contains("`cardan_gear` 1800 N·m vs `slider_crank` 2000 N·m"));
+    assert!(items[2].starts_with(
+        "- **Peak drive torque of one cylinder at the machine's crank angle** (`total_torque_max`,"
+    ), "{}", items[2]);
+    assert!(md
+        .contains("### Drive torque, power and work: one cylinder at the machine's crank angle\n"));
+}
+
+/// A one-cylinder machine's report: the machine's figures are its cylinder's, said once and
+/// labelled with no cylinder; a figure the machine has no counterpart of stays.
+#[test]
+fn a_single_cylinder_report_says_each_figure_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let mechanism = |scale: f64| -> Vec<(&'static str, f64)> {
+        vec![
+            ("machine_power_mean", 1839.9 * scale),
+            ("machine_torque_max", 100.0 * scale),
+            ("machine_torque_min", -30.0 * scale),
+            ("machine_main_bearing_force_max", 7000.0 * scale),
+            ("power_need_mean", 1839.9 * scale),
+            ("total_torque_max", 100.0 * scale),
+            ("total_main_bearing_force_max", 7000.0 * scale),
+            ("friction_torque_max", 5.0 * scale),
+        ]
+    };
+    let (s, c) = (mechanism(1.0), mechanism(1.25));
+    for layout in [None, Some(("inline", 1))] {
+        let case = hand_case(
+            dir.path(),
+            "pump",
+            layout,
+            &[("slider_crank", &s), ("cardan_gear", &c)],
+        );
+        let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+        let items = headline_items(&md);
+        let starts = [
+            "- **Mean power need of the machine** (`machine_power_mean`,",
+            "- **Peak drive torque of the machine** (the larger of",
+            "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`,",
+            "- **Peak friction torque** (`friction_torque_max`,",
+        ];
+        assert_eq!(items.len(), starts.len(), "{layout:?}: {items:#?}");
+        for (item, start) in items.iter().zip(starts) {
+            assert!(item.starts_with(start), "{item}");
+        }
+        assert!(!md.contains("cylinder 1"), "{md}");
+        assert!(md.contains("### Drive torque, power and work\n"));
+    }
+}
