@@ -3,7 +3,7 @@
 //! sweeps; no difference in % of round-off, and the sign legend. The reports of the shipped
 //! configs' runs are tested with the runner (`runner/tests/report.rs`).
 
-use cardan_report::{case_report, sweep_report, MAX_POINTS};
+use cardan_report::{case_report, index, sweep_report, MAX_POINTS};
 use cardan_testing::chart::{attr_f64, check_series, data_area, Axes};
 
 /// A 10 × 10 grid sweep written by hand: a value map per mechanism, the difference map with
@@ -337,7 +337,19 @@ fn hand_case(
     mechanisms: &[(&str, &[(&str, f64)])],
 ) -> std::path::PathBuf {
     let case = dir.join("hand");
-    std::fs::create_dir_all(&case).unwrap();
+    hand_summary(&case, machine, layout, mechanisms);
+    case_report(&case, None).unwrap();
+    case
+}
+
+/// Writes `<case>/summary.json` by hand (see [`hand_case`]).
+fn hand_summary(
+    case: &std::path::Path,
+    machine: &str,
+    layout: Option<(&str, u32)>,
+    mechanisms: &[(&str, &[(&str, f64)])],
+) {
+    std::fs::create_dir_all(case).unwrap();
     let mut ms = serde_json::Map::new();
     for (name, metrics) in mechanisms {
         let values: serde_json::Map<String, serde_json::Value> = metrics
@@ -366,8 +378,6 @@ fn hand_case(
             "balance_shafts": "none", "cardan_counterweights": false, "counterweight": null});
     }
     std::fs::write(case.join("summary.json"), summary.to_string()).unwrap();
-    case_report(&case, None).unwrap();
-    case
 }
 
 /// Issue 35: a two-cylinder compressor's report said "Mean power need 1839.9 W" (cylinder 1's)
@@ -510,4 +520,129 @@ fn a_single_cylinder_report_says_each_figure_once() {
         assert!(!md.contains("cylinder 1"), "{md}");
         assert!(md.contains("### Drive torque, power and work\n"));
     }
+}
+
+/// Issue 35: the index showed the same peak torque (cylinder 1's) for an inline-3, -4 and -6.
+/// Its headline columns are the machine's (`machine_*`; the peak torque the larger of
+/// |`machine_torque_max`| and |`machine_torque_min`|), with the layout; a summary without
+/// them shows its cylinder's figures only for a machine of one cylinder.
+#[test]
+fn the_index_shows_the_machine() {
+    let dir = tempfile::tempdir().unwrap();
+    let twin: &[(&str, f64)] = &[
+        ("machine_torque_max", 120.0),
+        ("machine_torque_min", -150.0),
+        ("machine_main_bearing_force_max", 9000.0),
+        ("machine_crank_pin_force_max", 8000.0),
+        ("machine_power_mean", 3750.0),
+        ("machine_loss_power_mean", 375.0),
+        ("machine_mechanical_efficiency", 0.9),
+        ("total_torque_max", 100.0),
+        ("total_main_bearing_force_max", 7000.0),
+        ("total_crank_pin_force_max", 7000.0),
+        ("total_power_mean", 1700.0),
+        ("power_loss_mean", 180.0),
+        ("mechanical_efficiency", 0.91),
+    ];
+    let cylinder: &[(&str, f64)] = &[
+        ("total_torque_max", 100.0),
+        ("total_main_bearing_force_max", 7000.0),
+        ("total_power_mean", 1700.0),
+    ];
+    hand_summary(
+        &dir.path().join("a-twin"),
+        "pump",
+        Some(("inline", 2)),
+        &[("slider_crank", twin)],
+    );
+    hand_summary(
+        &dir.path().join("b-single"),
+        "pump",
+        None,
+        &[("slider_crank", cylinder)],
+    );
+    hand_summary(
+        &dir.path().join("c-vee-without-machine-metrics"),
+        "engine",
+        Some(("vee", 2)),
+        &[("slider_crank", cylinder)],
+    );
+    index(dir.path()).unwrap();
+    let html = std::fs::read_to_string(dir.path().join("index.html")).unwrap();
+    let rows: Vec<Vec<String>> = html
+        .split("<tr>")
+        .skip(1)
+        .map(|r| {
+            let r = r.split("</tr>").next().unwrap();
+            r.split("<t")
+                .skip(1)
+                .map(|c| {
+                    let c = &c[c.find('>').unwrap() + 1..];
+                    c.split("</t").next().unwrap().to_string()
+                })
+                .collect()
+        })
+        .collect();
+    assert_eq!(
+        rows[0],
+        [
+            "case",
+            "machine",
+            "layout",
+            "mechanism",
+            "machine: peak drive torque, N·m",
+            "machine: peak main-journal load, N",
+            "machine: peak crank-pin load, N",
+            "machine: mean drive power, W",
+            "machine: mean power loss, W",
+            "machine: mechanical efficiency",
+        ]
+    );
+    let code = "<code>slider_crank</code>";
+    assert_eq!(
+        rows[1],
+        [
+            "a-twin",
+            "pump",
+            "inline, 2 cylinders",
+            code,
+            "150",
+            "9000",
+            "8000",
+            "3750",
+            "375",
+            "0.9"
+        ]
+    );
+    assert_eq!(
+        rows[2],
+        [
+            "b-single",
+            "pump",
+            "1 cylinder",
+            code,
+            "100",
+            "7000",
+            "—",
+            "1700",
+            "—",
+            "—"
+        ]
+    );
+    assert_eq!(
+        rows[3],
+        [
+            "c-vee-without-machine-metrics",
+            "engine",
+            "vee, 2 cylinders",
+            code,
+            "—",
+            "—",
+            "—",
+            "—",
+            "—",
+            "—"
+        ]
+    );
+    assert_eq!(rows.len(), 4);
 }

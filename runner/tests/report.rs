@@ -484,18 +484,41 @@ fn index_links_every_report() {
     ] {
         assert!(html.contains(part), "the index explains the sign: {part:?}");
     }
-    // A headline row per case and mechanism: the peak torque of the table's first column.
-    let summary: serde_json::Value = serde_json::from_str(
-        &std::fs::read_to_string(out.join("karhula-pump-r60-l140-a0-w30pi/summary.json")).unwrap(),
-    )
-    .unwrap();
-    let torque = summary["mechanisms"]["cardan_gear"]["metrics"]["total_torque_max"]
-        .as_f64()
+    // A headline row per case and mechanism: the machine's peak torque in the table's first
+    // column, its cylinder's for one cylinder, not cylinder 1's for three (issue 35).
+    for (case, layout, cylinder_is_machine) in [
+        ("karhula-pump-r60-l140-a0-w30pi", "inline, 1 cylinder", true),
+        (
+            "karhula-pump-inline3-motor-dynamic",
+            "inline, 3 cylinders",
+            false,
+        ),
+    ] {
+        let summary: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(out.join(case).join("summary.json")).unwrap(),
+        )
         .unwrap();
-    let row = "<td>karhula-pump-r60-l140-a0-w30pi</td><td>pump</td><td><code>cardan_gear</code></td><td class=\"num\">";
-    let at = html.find(row).expect("the row") + row.len();
-    let cell: f64 = html[at..].split('<').next().unwrap().parse().unwrap();
-    assert!((cell / torque - 1.0).abs() < 1e-4, "{cell}");
+        let metric = |k: &str| {
+            summary["mechanisms"]["cardan_gear"]["metrics"][k]
+                .as_f64()
+                .unwrap()
+        };
+        let torque = metric("machine_torque_max")
+            .abs()
+            .max(metric("machine_torque_min").abs());
+        let row = format!(
+            "<td>{case}</td><td>pump</td><td>{layout}</td><td><code>cardan_gear</code></td><td class=\"num\">"
+        );
+        let at = html.find(&row).expect("the row") + row.len();
+        let cell: f64 = html[at..].split('<').next().unwrap().parse().unwrap();
+        assert!((cell / torque - 1.0).abs() < 1e-4, "{case}: {cell}");
+        let cylinder = metric("total_torque_max");
+        assert_eq!(
+            (cell / cylinder - 1.0).abs() < 1e-4,
+            cylinder_is_machine,
+            "{case}: {cell} against cylinder 1's {cylinder}"
+        );
+    }
     let mechanisms: usize = cases(out)
         .iter()
         .map(|c| {
