@@ -343,6 +343,11 @@ pub struct SweepTable {
     pub metrics: BTreeMap<String, Vec<f64>>,
     /// Metric → unit, from the points' summaries.
     pub units: BTreeMap<String, String>,
+    /// The cylinders of the first point's machine (its `summary.json`'s `layout`; 1 without
+    /// one, or without a point folder).
+    pub cylinders: usize,
+    /// Its layout's kind, if any.
+    pub layout_kind: Option<String>,
 }
 
 impl SweepTable {
@@ -377,12 +382,15 @@ pub fn read_sweep(
     // Mechanism names and units from the points' summaries.
     let mut names: Vec<String> = Vec::new();
     let mut units = BTreeMap::new();
+    let (mut cylinders, mut layout_kind) = (1, None);
     for row in &rows {
         let summary = sweep_dir.join(&row[0]).join("summary.json");
         if !summary.is_file() {
             continue;
         }
         let (s, _) = read_summary(&summary, None)?;
+        cylinders = s.cylinders;
+        layout_kind = s.layout_kind.clone();
         for m in &s.mechanisms {
             if !names.contains(&m.name) {
                 names.push(m.name.clone());
@@ -446,6 +454,8 @@ pub fn read_sweep(
             params: rows.iter().map(|r| r[1..first_metric].to_vec()).collect(),
             metrics,
             units,
+            cylinders,
+            layout_kind,
         },
         reference,
     ))

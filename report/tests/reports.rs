@@ -646,3 +646,77 @@ fn the_index_shows_the_machine() {
     );
     assert_eq!(rows.len(), 4);
 }
+
+/// Issue 35: a sweep of a machine of several cylinders charts the whole machine's figures
+/// first (its mean drive power, lower is better; its peak drive torque, the larger of
+/// |`machine_torque_max`| and |`machine_torque_min`| of each point), and names one
+/// cylinder's figures as cylinder 1's.
+#[test]
+fn a_multi_cylinder_sweep_reports_the_machine() {
+    let dir = tempfile::tempdir().unwrap();
+    let sweep = dir.path().join("twin");
+    let columns = [
+        "machine_power_mean",
+        "machine_torque_max",
+        "machine_torque_min",
+        "total_torque_max",
+    ];
+    let slider = [
+        [1000.0, 100.0, -50.0, 80.0],
+        [2000.0, 110.0, -200.0, 90.0],
+        [3000.0, 120.0, -60.0, 100.0],
+    ];
+    let cardan = [
+        [900.0, 90.0, -95.0, 88.0],
+        [2100.0, 150.0, -100.0, 81.0],
+        [2700.0, 130.0, -10.0, 100.0],
+    ];
+    let metrics = |row: &[f64; 4]| -> Vec<(&'static str, f64)> {
+        columns.iter().copied().zip(row.iter().copied()).collect()
+    };
+    let (s0, c0) = (metrics(&slider[0]), metrics(&cardan[0]));
+    hand_summary(
+        &sweep.join("p0"),
+        "pump",
+        Some(("inline", 2)),
+        &[("slider_crank", &s0), ("cardan_gear", &c0)],
+    );
+    let mut csv = String::from("case,motion.initial_speed");
+    for m in ["slider_crank", "cardan_gear"] {
+        for c in columns {
+            csv.push_str(&format!(",{m}.{c}"));
+        }
+    }
+    csv.push('\n');
+    for (k, speed) in ["100 rpm", "900 rpm", "3000 rpm"].iter().enumerate() {
+        csv.push_str(&format!("p{k},{speed}"));
+        for v in slider[k].iter().chain(&cardan[k]) {
+            csv.push_str(&format!(",{v}"));
+        }
+        csv.push('\n');
+    }
+    std::fs::write(sweep.join("sweep.csv"), csv).unwrap();
+    sweep_report(&sweep, "twin", None).unwrap();
+    let md = std::fs::read_to_string(sweep.join("report.md")).unwrap();
+    assert!(
+        md.contains("): `machine_power_mean`, `machine_torque_peak`, `total_torque_max`."),
+        "{md}"
+    );
+    let items: Vec<&str> = md.lines().filter(|l| l.starts_with("- `")).collect();
+    assert_eq!(
+        items,
+        [
+            "- `machine_power_mean` (lower is better): `cardan_gear` is better than `slider_crank` at 2 of 3 points; Δ from -10.0 % to +5.0 %; Δ crosses 0 between 100 rpm and 900 rpm (≈ 633.33 rpm by linear interpolation); Δ crosses 0 between 900 rpm and 3000 rpm (≈ 1600 rpm by linear interpolation).",
+            "- `machine_torque_peak` (lower is better): `cardan_gear` is better than `slider_crank` at 2 of 3 points; Δ from -25.0 % to +8.3 %; Δ crosses 0 between 900 rpm and 3000 rpm (≈ 2475 rpm by linear interpolation).",
+            "- `total_torque_max` of cylinder 1 (lower is better): `cardan_gear` is better than `slider_crank` at 1 of 3 points; Δ from -10.0 % to +10.0 %; Δ crosses 0 between 100 rpm and 900 rpm (≈ 500 rpm by linear interpolation).",
+        ],
+        "{md}"
+    );
+    assert!(md.contains("### `machine_torque_peak`, N·m\n"), "{md}");
+    assert!(md.contains("| 900 rpm | 200 | 150 | -25.0 % |"), "{md}");
+    assert!(
+        md.contains("### `total_torque_max` of cylinder 1, N·m\n"),
+        "{md}"
+    );
+    assert!(sweep.join("plots/machine_torque_peak.svg").is_file());
+}
