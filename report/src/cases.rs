@@ -300,16 +300,28 @@ fn same_figures(a: Source, b: Source, s: &CaseSummary) -> bool {
     })
 }
 
+/// Whether every mechanism's figure is 0 up to round-off (within its floor): a mean drive
+/// power of inertia alone over whole turns at constant speed, nothing to compare.
+fn all_round_off(src: Source, s: &CaseSummary) -> bool {
+    s.mechanisms.iter().all(|m| match src.value(m) {
+        Some(v) => src.floor(m).is_some_and(|f| v.abs() < f),
+        None => true,
+    })
+}
+
 /// The headline comparisons of the summary, the machine's first, then the cylinder's; for a
-/// machine of one cylinder, a cylinder figure that repeats a machine figure is said once.
+/// machine of one cylinder, a cylinder figure that repeats a machine figure is said once. A
+/// figure that is 0 up to round-off for every mechanism is left out.
 fn headlines(s: &CaseSummary) -> Vec<(Headline, Source)> {
     let machine: Vec<(Headline, Source)> = machine_headlines(s)
         .into_iter()
         .filter_map(|h| compared(&h, s).map(|src| (h, src)))
+        .filter(|(_, src)| !all_round_off(*src, s))
         .collect();
     let cylinder: Vec<(Headline, Source)> = cylinder_headlines(s)
         .into_iter()
         .filter_map(|h| compared(&h, s).map(|src| (h, src)))
+        .filter(|(_, src)| !all_round_off(*src, s))
         .filter(|(_, src)| {
             s.one_cylinder().is_some() || !machine.iter().any(|(_, m)| same_figures(*m, *src, s))
         })

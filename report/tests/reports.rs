@@ -720,3 +720,44 @@ fn a_multi_cylinder_sweep_reports_the_machine() {
     );
     assert!(sweep.join("plots/machine_torque_peak.svg").is_file());
 }
+
+/// A machine's mean drive power of inertia alone over whole turns at constant speed is 0 up to
+/// round-off for every mechanism: no "which is better" line compares two round-offs (its floor
+/// is 1e-9 of the machine's peak torque, the larger of its signed extremes, × the peak speed).
+#[test]
+fn a_round_off_machine_power_is_not_a_headline() {
+    let dir = tempfile::tempdir().unwrap();
+    let mechanism = |power: f64| -> Vec<(&'static str, f64)> {
+        vec![
+            ("machine_power_mean", power),
+            ("machine_torque_max", 10.0),
+            ("machine_torque_min", -450.0),
+            ("crankshaft_angular_velocity_max", 100.0),
+        ]
+    };
+    // 450 N·m × 100 rad/s × 1e-9 = 4.5e-5 W.
+    let (s, c) = (mechanism(2.4e-11), mechanism(-4.4e-5));
+    let case = hand_case(
+        dir.path(),
+        "pump",
+        Some(("inline", 3)),
+        &[("slider_crank", &s), ("cardan_gear", &c)],
+    );
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    let items = headline_items(&md);
+    assert_eq!(items.len(), 1, "{items:#?}");
+    assert!(items[0].starts_with("- **Peak drive torque of the machine**"));
+    // One of them above its floor: compared, as not comparable.
+    let c = mechanism(4.6e-5);
+    let case = hand_case(
+        dir.path(),
+        "pump",
+        Some(("inline", 3)),
+        &[("slider_crank", &s), ("cardan_gear", &c)],
+    );
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    assert!(
+        md.contains("(not comparable: one is 0 up to round-off)."),
+        "{md}"
+    );
+}
