@@ -84,6 +84,12 @@ pub(super) fn plot_specs(s: &CaseSummary, headers: &[Option<Vec<String>>]) -> Ve
         }
     }
     specs.extend(friction_specs(headers, n));
+    // The charts so far are of one cylinder's columns: said so when the machine has more.
+    if let Some(w) = s.one_cylinder() {
+        for spec in &mut specs {
+            spec.title = format!("{} ({w})", spec.title);
+        }
+    }
     specs.extend(balance_specs(headers, n, families.last()));
     specs
 }

@@ -36,7 +36,20 @@ enum Group {
 }
 
 impl Group {
-    fn title(&self) -> String {
+    /// The section's title; `whose` names the one cylinder the per-cylinder sections are of,
+    /// when the machine has more ([`CaseSummary::one_cylinder`]).
+    fn title(&self, whose: Option<&str>) -> String {
+        let title = self.subject();
+        match (self, whose) {
+            (Group::Machine | Group::Balance | Group::Other, _) | (_, None) => title,
+            (Group::Kinematics, Some(w)) => {
+                format!("{title}: the crank's motion; the piston and rod of {w}")
+            }
+            (_, Some(w)) => format!("{title}: {w}"),
+        }
+    }
+
+    fn subject(&self) -> String {
         match self {
             Group::Machine => "The whole machine".into(),
             Group::Kinematics => "Kinematics".into(),
@@ -110,8 +123,119 @@ fn families(s: &CaseSummary) -> Vec<String> {
     f
 }
 
-/// The headline comparisons of the summary: (what, alternatives); which way is better is the
-/// registry's.
+/// How a headline figure is read from a mechanism's metrics.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Source {
+    /// The metric as it is.
+    Metric(&'static str),
+    /// The metric with its sign turned: an engine's mean output from the machine's signed
+    /// mean power (`machine_power_mean` is negative when the machine gives power out).
+    Negated(&'static str),
+    /// The larger magnitude of a signed maximum and minimum: the peak of a signed torque
+    /// (`machine_torque_max`, `machine_torque_min`), whichever way it turns.
+    Peak(&'static str, &'static str),
+}
+
+impl Source {
+    /// The metric whose unit (and round-off floor) the figure has.
+    fn metric(self) -> &'static str {
+        match self {
+            Source::Metric(m) | Source::Negated(m) | Source::Peak(m, _) => m,
+        }
+    }
+
+    /// The figure of mechanism `m`, if it has the metrics.
+    fn value(self, m: &MechanismSummary) -> Option<f64> {
+        match self {
+            Source::Metric(k) => m.get(k),
+            Source::Negated(k) => m.get(k).map(|v| -v),
+            Source::Peak(hi, lo) => Some(m.get(hi)?.abs().max(m.get(lo)?.abs())),
+        }
+    }
+
+    /// The round-off floor of the figure (a signed mean's, [`round_off_floor`]).
+    fn floor(self, m: &MechanismSummary) -> Option<f64> {
+        match self {
+            Source::Metric(k) | Source::Negated(k) => round_off_floor(k, |x| m.get(x)),
+            Source::Peak(..) => None,
+        }
+    }
+
+    /// How the figure is made, in a report's words.
+    fn describe(self) -> String {
+        match self {
+            Source::Metric(k) => format!("`{k}`"),
+            Source::Negated(k) => format!("−`{k}`"),
+            Source::Peak(hi, lo) => format!("the larger of |`{hi}`| and |`{lo}`|"),
+        }
+    }
+}
+
+/// One headline comparison of the summary: what, the alternatives (the first that two
+/// mechanisms have is compared) and which way is better (the registry's for a plain metric).
+#[derive(Debug, Clone)]
+struct Headline {
+    what: String,
+    alternatives: Vec<Source>,
+    direction: Better,
+}
+
+/// The whole machine's headline comparisons (issue 35): its mean power need (a pump's or
+/// compressor's; an engine's mean output power, −`machine_power_mean`), its peak drive
+/// torque, the peak loads of its main journals and crank pins, its mechanical efficiency and
+/// its friction losses. Every cylinder counts, each at its own crank angle.
+fn machine_headlines(s: &CaseSummary) -> Vec<Headline> {
+    let headline = |what: &str, source: Source, direction: Better| Headline {
+        what: what.into(),
+        alternatives: vec![source],
+        direction,
+    };
+    let power = if s.is_engine() {
+        headline(
+            "Mean output power of the machine",
+            Source::Negated("machine_power_mean"),
+            Better::Higher,
+        )
+    } else {
+        headline(
+            "Mean power need of the machine",
+            Source::Metric("machine_power_mean"),
+            Better::Lower,
+        )
+    };
+    vec![
+        power,
+        headline(
+            "Peak drive torque of the machine",
+            Source::Peak("machine_torque_max", "machine_torque_min"),
+            Better::Lower,
+        ),
+        headline(
+            "Peak main-journal load of the machine",
+            Source::Metric("machine_main_bearing_force_max"),
+            Better::Lower,
+        ),
+        headline(
+            "Peak crank-pin load of the machine",
+            Source::Metric("machine_crank_pin_force_max"),
+            Better::Lower,
+        ),
+        headline(
+            "Mechanical efficiency of the machine",
+            Source::Metric("machine_mechanical_efficiency"),
+            Better::Higher,
+        ),
+        headline(
+            "Mean friction power loss of the machine",
+            Source::Metric("machine_loss_power_mean"),
+            Better::Lower,
+        ),
+    ]
+}
+
+/// The headline comparisons of one cylinder's figures (the per-joint and per-crank-train
+/// metrics: the mechanism at the machine's crank angle): (what, alternatives); which way is
+/// better is the registry's.
 const COMPARISONS: &[(&str, &[&str])] = &[
     (
         "Peak drive torque",
@@ -135,21 +259,83 @@ const COMPARISONS: &[(&str, &[&str])] = &[
     ("Peak friction torque", &["friction_torque_max"]),
 ];
 
+/// The cylinder's headline comparisons, each labelled as one cylinder's when the machine has
+/// more than one ([`CaseSummary::one_cylinder`]).
+fn cylinder_headlines(s: &CaseSummary) -> Vec<Headline> {
+    let whose = s.one_cylinder();
+    COMPARISONS
+        .iter()
+        .filter_map(|(what, alternatives)| {
+            let direction = better(alternatives[0])?;
+            Some(Headline {
+                what: match whose {
+                    Some(w) => format!("{what} of {w}"),
+                    None => what.to_string(),
+                },
+                alternatives: alternatives.iter().map(|m| Source::Metric(m)).collect(),
+                direction,
+            })
+        })
+        .collect()
+}
+
+/// The source of `h` that two mechanisms of `s` have, if any.
+fn compared(h: &Headline, s: &CaseSummary) -> Option<Source> {
+    h.alternatives.iter().copied().find(|src| {
+        s.mechanisms
+            .iter()
+            .filter(|m| src.value(m).is_some())
+            .count()
+            >= 2
+    })
+}
+
+/// Whether two sources give the same figure for every mechanism (within 1e-9, relative): a
+/// one-cylinder machine's figure and its cylinder's, said once.
+fn same_figures(a: Source, b: Source, s: &CaseSummary) -> bool {
+    s.mechanisms.iter().all(|m| match (a.value(m), b.value(m)) {
+        (Some(x), Some(y)) => (x - y).abs() <= 1e-9 * x.abs().max(y.abs()),
+        (None, None) => true,
+        _ => false,
+    })
+}
+
+/// Whether every mechanism's figure is 0 up to round-off (within its floor): a mean drive
+/// power of inertia alone over whole turns at constant speed, nothing to compare.
+fn all_round_off(src: Source, s: &CaseSummary) -> bool {
+    s.mechanisms.iter().all(|m| match src.value(m) {
+        Some(v) => src.floor(m).is_some_and(|f| v.abs() < f),
+        None => true,
+    })
+}
+
+/// The headline comparisons of the summary, the machine's first, then the cylinder's; for a
+/// machine of one cylinder, a cylinder figure that repeats a machine figure is said once. A
+/// figure that is 0 up to round-off for every mechanism is left out.
+fn headlines(s: &CaseSummary) -> Vec<(Headline, Source)> {
+    let machine: Vec<(Headline, Source)> = machine_headlines(s)
+        .into_iter()
+        .filter_map(|h| compared(&h, s).map(|src| (h, src)))
+        .filter(|(_, src)| !all_round_off(*src, s))
+        .collect();
+    let cylinder: Vec<(Headline, Source)> = cylinder_headlines(s)
+        .into_iter()
+        .filter_map(|h| compared(&h, s).map(|src| (h, src)))
+        .filter(|(_, src)| !all_round_off(*src, s))
+        .filter(|(_, src)| {
+            s.one_cylinder().is_some() || !machine.iter().any(|(_, m)| same_figures(*m, *src, s))
+        })
+        .collect();
+    machine.into_iter().chain(cylinder).collect()
+}
+
 /// One sentence per headline comparison present.
 fn summary_items(s: &CaseSummary) -> Vec<String> {
     let reference = &s.mechanisms[0];
     let mut items = Vec::new();
-    for (what, alternatives) in COMPARISONS {
-        let Some(metric) = alternatives
-            .iter()
-            .find(|m| s.mechanisms.iter().filter(|x| x.get(m).is_some()).count() >= 2)
-        else {
-            continue;
-        };
-        let Some(direction) = better(metric) else {
-            continue;
-        };
-        let unit = svg::pretty_unit(reference.unit(metric));
+    for (headline, source) in headlines(s) {
+        let direction = headline.direction;
+        let unit = svg::pretty_unit(reference.unit(source.metric()));
         let with_unit = |v: f64| {
             if unit.is_empty() {
                 fmt_num(v)
@@ -160,7 +346,7 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
         let present: Vec<(&MechanismSummary, f64)> = s
             .mechanisms
             .iter()
-            .filter_map(|m| m.get(metric).filter(|v| v.is_finite()).map(|v| (m, v)))
+            .filter_map(|m| source.value(m).filter(|v| v.is_finite()).map(|v| (m, v)))
             .collect();
         let best = present.iter().fold(None::<(&str, f64)>, |best, (m, v)| {
             let wins = best.is_none_or(|(_, b)| match direction {
@@ -174,14 +360,9 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
             }
         });
         let mut parts = Vec::new();
-        if let Some(r) = reference.get(metric).filter(|v| v.is_finite()) {
+        if let Some(r) = source.value(reference).filter(|v| v.is_finite()) {
             for (m, v) in present.iter().filter(|(m, _)| m.name != reference.name) {
-                let d = delta(
-                    *v,
-                    round_off_floor(metric, |k| m.get(k)),
-                    r,
-                    round_off_floor(metric, |k| reference.get(k)),
-                );
+                let d = delta(*v, source.floor(m), r, source.floor(reference));
                 let verdict = match d {
                     Delta::BothRoundOff => "equal: both 0 up to round-off".to_string(),
                     Delta::OneRoundOff => "not comparable: one is 0 up to round-off".to_string(),
@@ -211,7 +392,9 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
         }
         if let Some((name, _)) = best {
             items.push(format!(
-                "**{what}** (`{metric}`, {}): best `{name}`; {}.",
+                "**{}** ({}, {}): best `{name}`; {}.",
+                headline.what,
+                source.describe(),
                 phrase(direction),
                 parts.join("; ")
             ));
@@ -320,7 +503,7 @@ fn metric_tables(s: &CaseSummary) -> Vec<Block> {
     let mut blocks = Vec::new();
     for (group, mut metrics) in grouped {
         metrics.sort();
-        blocks.push(Block::Heading(3, group.title()));
+        blocks.push(Block::Heading(3, group.title(s.one_cylinder())));
         let rows = metrics
             .iter()
             .map(|(_, n)| {
@@ -462,15 +645,29 @@ pub(super) fn case_report(
         }
     }
     if let Some(budget) = loss_budget(&s) {
-        doc.push(Block::Heading(2, "Loss budget".into()));
-        doc.push(Block::Paragraph(
+        let (title, whose) = match s.one_cylinder() {
+            Some(w) => (format!("Loss budget of {w}"), format!("the total of {w}")),
+            None => (
+                "Loss budget".to_string(),
+                "the mechanism's total".to_string(),
+            ),
+        };
+        doc.push(Block::Heading(2, title));
+        doc.push(Block::Paragraph(format!(
             "Mean friction power loss by component (`power_loss_mean_<component>`), and its \
-             share of the mechanism's total (`power_loss_mean`)."
-                .into(),
-        ));
+             share of {whose} (`power_loss_mean`)."
+        )));
         doc.push(budget);
     }
     doc.push(Block::Heading(2, "Metrics".into()));
+    if let Some(w) = s.one_cylinder() {
+        doc.push(Block::Paragraph(format!(
+            "The machine has {} cylinders: \"The whole machine\" and the balance tables are \
+             the machine's (every cylinder at its own crank angle); the other tables are those \
+             of {w} only.",
+            s.cylinders
+        )));
+    }
     doc.blocks.extend(metric_tables(&s));
     doc.push(Block::Heading(2, "Charts".into()));
     if plots.is_empty() {

@@ -38,6 +38,10 @@ pub struct CaseSummary {
     /// The machine the balance metrics are of (`summary.json`'s `layout`), in words: its kind,
     /// cylinders and balancing devices; `None` in a summary without it.
     pub layout: Option<String>,
+    /// The machine's cylinders (`layout.cylinders`; 1 in a summary without a layout).
+    pub cylinders: usize,
+    /// The layout's kind (`layout.kind`: "inline", "vee", ...), if the summary has one.
+    pub layout_kind: Option<String>,
     pub mechanisms: Vec<MechanismSummary>,
     /// The run's warnings (`summary.json`'s `warnings`), e.g. a grid too coarse for its peaks.
     pub warnings: Vec<String>,
@@ -57,6 +61,28 @@ pub fn order_mechanisms(names: &mut [String], reference: &str) {
         (1, k)
     };
     names.sort_by(|a, b| rank(a).cmp(&rank(b)).then_with(|| a.cmp(b)));
+}
+
+impl CaseSummary {
+    /// Whose figures the per-joint and per-crank-train metrics are, when the machine has more
+    /// than one cylinder: the mechanism run at the machine's crank angle, cylinder 1 for every
+    /// layout but a vee (whose pair shares a pin at the machine angle); `None` for a machine of
+    /// one cylinder, whose figures they are.
+    pub fn one_cylinder(&self) -> Option<&'static str> {
+        (self.cylinders > 1).then(|| {
+            if self.layout_kind.as_deref() == Some("vee") {
+                "one cylinder at the machine's crank angle"
+            } else {
+                "cylinder 1"
+            }
+        })
+    }
+
+    /// Whether the machine is an engine (`machine = "engine"`: the gas drives the crank) rather
+    /// than a pump or compressor.
+    pub fn is_engine(&self) -> bool {
+        self.machine == "engine"
+    }
 }
 
 /// Load families in display order: the registry's (inertial, gas, total), then by name.
@@ -145,6 +171,17 @@ pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(Cas
             machine: string("machine").unwrap_or_default(),
             gas_model: string("gas_model"),
             layout: json.get("layout").map(layout_words),
+            cylinders: json
+                .get("layout")
+                .and_then(|l| l.get("cylinders"))
+                .and_then(Value::as_f64)
+                .filter(|n| n.is_finite() && *n >= 1.0)
+                .map_or(1, |n| n.round() as usize),
+            layout_kind: json
+                .get("layout")
+                .and_then(|l| l.get("kind"))
+                .and_then(Value::as_str)
+                .map(String::from),
             mechanisms,
             warnings: json
                 .get("warnings")
@@ -308,6 +345,11 @@ pub struct SweepTable {
     pub metrics: BTreeMap<String, Vec<f64>>,
     /// Metric → unit, from the points' summaries.
     pub units: BTreeMap<String, String>,
+    /// The cylinders of the first point's machine (its `summary.json`'s `layout`; 1 without
+    /// one, or without a point folder).
+    pub cylinders: usize,
+    /// Its layout's kind, if any.
+    pub layout_kind: Option<String>,
 }
 
 impl SweepTable {
@@ -343,12 +385,15 @@ pub fn read_sweep(
     // Mechanism names and units from the points' summaries.
     let mut names: Vec<String> = Vec::new();
     let mut units = BTreeMap::new();
+    let (mut cylinders, mut layout_kind) = (1, None);
     for row in &rows {
         let summary = sweep_dir.join(&row[0]).join("summary.json");
         if !summary.is_file() {
             continue;
         }
         let (s, _) = read_summary(&summary, None)?;
+        cylinders = s.cylinders;
+        layout_kind = s.layout_kind.clone();
         for m in &s.mechanisms {
             if !names.contains(&m.name) {
                 names.push(m.name.clone());
@@ -412,6 +457,8 @@ pub fn read_sweep(
             params: rows.iter().map(|r| r[1..first_metric].to_vec()).collect(),
             metrics,
             units,
+            cylinders,
+            layout_kind,
         },
         reference,
     ))

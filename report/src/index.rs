@@ -6,37 +6,113 @@ use crate::doc::{href, Align, Block, Doc};
 use crate::numbers::fmt_num;
 use std::path::Path;
 
-/// The headline columns: (title, alternatives, first present is shown).
-const HEADLINES: &[(&str, &[&str])] = &[
+/// How a headline cell is read from a mechanism's metrics.
+#[derive(Debug, Clone, Copy)]
+enum Cell {
+    /// The metric as it is.
+    Metric(&'static str),
+    /// The larger magnitude of a signed maximum and minimum (the machine's peak torque).
+    Peak(&'static str, &'static str),
+}
+
+impl Cell {
+    fn value(self, m: &data::MechanismSummary) -> Option<f64> {
+        match self {
+            Cell::Metric(k) => {
+                let v = m.get(k)?;
+                Some(if k.ends_with("_power_mean") {
+                    round_off_to_zero(v, k, m)
+                } else {
+                    v
+                })
+            }
+            Cell::Peak(hi, lo) => Some(m.get(hi)?.abs().max(m.get(lo)?.abs())),
+        }
+    }
+}
+
+/// The headline columns, the whole machine's (issue 35: every cylinder at its own crank
+/// angle): (title, the machine's figure, alternatives for a summary without it of a machine of
+/// one cylinder, whose figures are its cylinder's; the first present is shown).
+const HEADLINES: &[(&str, Cell, &[Cell])] = &[
     (
-        "peak drive torque, N·m",
-        &["total_torque_max", "inertial_torque_max"],
+        "machine: peak drive torque, N·m",
+        Cell::Peak("machine_torque_max", "machine_torque_min"),
+        &[
+            Cell::Metric("total_torque_max"),
+            Cell::Metric("inertial_torque_max"),
+        ],
     ),
     (
-        "peak crank-pin force, N",
-        &["total_crank_pin_force_max", "inertial_crank_pin_force_max"],
+        "machine: peak main-journal load, N",
+        Cell::Metric("machine_main_bearing_force_max"),
+        &[
+            Cell::Metric("total_main_bearing_force_max"),
+            Cell::Metric("inertial_main_bearing_force_max"),
+        ],
     ),
     (
-        "mean drive power, W",
-        &["total_power_mean", "inertial_power_mean"],
+        "machine: peak crank-pin load, N",
+        Cell::Metric("machine_crank_pin_force_max"),
+        &[
+            Cell::Metric("total_crank_pin_force_max"),
+            Cell::Metric("inertial_crank_pin_force_max"),
+        ],
     ),
-    ("mean power loss, W", &["power_loss_mean"]),
-    ("mechanical efficiency", &["mechanical_efficiency"]),
+    (
+        "machine: mean drive power, W",
+        Cell::Metric("machine_power_mean"),
+        &[
+            Cell::Metric("total_power_mean"),
+            Cell::Metric("inertial_power_mean"),
+        ],
+    ),
+    (
+        "machine: mean power loss, W",
+        Cell::Metric("machine_loss_power_mean"),
+        &[Cell::Metric("power_loss_mean")],
+    ),
+    (
+        "machine: mechanical efficiency",
+        Cell::Metric("machine_mechanical_efficiency"),
+        &[Cell::Metric("mechanical_efficiency")],
+    ),
 ];
 
-/// A family's mean drive power `v` (metric `metric`, `<family>_power_mean`) as 0 when it is
-/// below 1e-12 of the largest |T|·|ω| of the run (the family's peak torque times the crank's
-/// peak speed): the round-off left of a zero mean, e.g. an inertia-only run over whole cycles at
-/// constant speed, whose drive work is the kinetic energy change, 0 (a headline of
-/// "−5.6e−11 W" would read as a result). The case's own metric tables keep the raw value.
+/// A mean drive power `v` (metric `metric`, `<family>_power_mean`, the machine's
+/// `machine_power_mean` too) as 0 when it is below 1e-12 of the largest |T|·|ω| of the run
+/// (the family's peak torque, the machine's the larger of |`machine_torque_max`| and
+/// |`machine_torque_min`|, times the crank's peak speed): the round-off left of a zero mean,
+/// e.g. an inertia-only run over whole cycles at constant speed, whose drive work is the
+/// kinetic energy change, 0 (a headline of "−5.6e−11 W" would read as a result). The case's
+/// own metric tables keep the raw value.
 fn round_off_to_zero(v: f64, metric: &str, m: &data::MechanismSummary) -> f64 {
     let family = metric.trim_end_matches("_power_mean");
-    let scale = m.get(&format!("{family}_torque_max")).unwrap_or(f64::NAN)
-        * m.get("crankshaft_angular_velocity_max").unwrap_or(f64::NAN);
+    let torque = if family == "machine" {
+        Cell::Peak("machine_torque_max", "machine_torque_min")
+            .value(m)
+            .unwrap_or(f64::NAN)
+    } else {
+        m.get(&format!("{family}_torque_max")).unwrap_or(f64::NAN)
+    };
+    let scale = torque * m.get("crankshaft_angular_velocity_max").unwrap_or(f64::NAN);
     if v.abs() < 1e-12 * scale {
         0.0
     } else {
         v
+    }
+}
+
+/// The machine's layout in a few words: "inline, 3 cylinders"; "1 cylinder" without a layout.
+fn layout_cell(s: &data::CaseSummary) -> String {
+    let cylinders = if s.cylinders == 1 {
+        "1 cylinder".to_string()
+    } else {
+        format!("{} cylinders", s.cylinders)
+    };
+    match &s.layout_kind {
+        Some(kind) => format!("{kind}, {cylinders}"),
+        None => cylinders,
     }
 }
 
@@ -94,8 +170,10 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
         blocks: Vec::new(),
     };
     doc.push(Block::Paragraph(format!(
-        "{} case(s) and {} sweep(s). Headline metrics: the total loads where a gas model \
-         adds them, else the inertial ones; — where a mechanism has no such metric.",
+        "{} case(s) and {} sweep(s). Headline metrics: the whole machine's, every cylinder at \
+         its own crank angle (`machine_*`; in a summary without them, of a machine of one \
+         cylinder, its cylinder's: the total loads where a gas model adds them, else the \
+         inertial ones); — where a mechanism has no such metric.",
         cases.len(),
         sweeps.len()
     )));
@@ -110,25 +188,29 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
         let mut header = vec![
             "case".to_string(),
             "machine".to_string(),
+            "layout".to_string(),
             "mechanism".to_string(),
         ];
-        let mut align = vec![Align::Left; 3];
-        for (title, _) in HEADLINES {
+        let mut align = vec![Align::Left; 4];
+        for (title, _, _) in HEADLINES {
             header.push(title.to_string());
             align.push(Align::Right);
         }
         let mut rows = Vec::new();
         for (c, s) in cases.iter().zip(&summaries) {
             for m in &s.mechanisms {
-                let mut row = vec![c.clone(), s.machine.clone(), format!("`{}`", m.name)];
-                for (_, alternatives) in HEADLINES {
-                    let v = alternatives.iter().find_map(|a| {
-                        let v = m.get(a)?;
-                        Some(if a.ends_with("_power_mean") {
-                            round_off_to_zero(v, a, m)
-                        } else {
-                            v
-                        })
+                let mut row = vec![
+                    c.clone(),
+                    s.machine.clone(),
+                    layout_cell(s),
+                    format!("`{}`", m.name),
+                ];
+                for (_, machine, one_cylinder) in HEADLINES {
+                    let v = machine.value(m).or_else(|| {
+                        // A cylinder's figure is the machine's only for a machine of one.
+                        (s.cylinders == 1)
+                            .then(|| one_cylinder.iter().find_map(|c| c.value(m)))
+                            .flatten()
                     });
                     row.push(match v {
                         Some(v) => fmt_num(v),
@@ -148,7 +230,9 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
             "Mean drive power: of the torque the drive applies to the crankshaft, positive in \
              the direction of rotation: positive when the drive delivers power to the machine \
              (a pump's need), negative when the machine delivers it (an engine whose gas drives \
-             the crank). Peaks are magnitudes."
+             the crank). Peaks are magnitudes: the peak drive torque is the larger of \
+             |`machine_torque_max`| and |`machine_torque_min`|. A main-journal or crank-pin load \
+             is the peak over the machine's journals or pins."
                 .into(),
         ));
     }
@@ -198,6 +282,20 @@ mod tests {
         assert_eq!(round_off_to_zero(-5.6e-11, "inertial_power_mean", &m), 0.0);
         assert_eq!(round_off_to_zero(8309.0, "inertial_power_mean", &m), 8309.0);
         assert_eq!(round_off_to_zero(1e-3, "inertial_power_mean", &m), 1e-3);
+        // The machine's scale: its peak torque is the larger of its signed extremes.
+        let machine = mechanism(&[
+            ("machine_torque_max", -1.0),
+            ("machine_torque_min", -556.0),
+            ("crankshaft_angular_velocity_max", 628.3),
+        ]);
+        assert_eq!(
+            round_off_to_zero(-5.6e-11, "machine_power_mean", &machine),
+            0.0
+        );
+        assert_eq!(
+            round_off_to_zero(-1e-3, "machine_power_mean", &machine),
+            -1e-3
+        );
         // Without the scale the value stays as it is.
         let bare = mechanism(&[("inertial_torque_max", 556.0)]);
         assert_eq!(

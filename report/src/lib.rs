@@ -13,8 +13,12 @@
 //! - [`sweep_report`]: for a sweep folder (`sweep.csv`), the [`KEY_METRICS`] over one swept
 //!   field (line charts of every mechanism and of the difference in %), or over two (heat maps
 //!   of each mechanism and of the difference, with the 0 % contour: where the mechanisms swap
-//!   places).
-//! - [`index`]: `<out>/index.html`, linking every report with a few headline metrics per case.
+//!   places); a sweep of a machine of several cylinders charts the whole machine's
+//!   [`MACHINE_KEY_METRICS`] instead, one cylinder's figures named as that cylinder's.
+//!   A case report of a machine of several cylinders leads with the whole machine's figures
+//!   (`machine_*`) and names the per-joint and per-crank-train figures as one cylinder's.
+//! - [`index`]: `<out>/index.html`, linking every report with a few headline metrics per case:
+//!   the whole machine's.
 //! - [`files`]: an output folder's files, each written whole (used by the runner and the
 //!   gear calculator too).
 //!
@@ -54,7 +58,7 @@ mod thinning;
 pub use envelope::{ChartData, ChartRecorder, Envelope, Trace};
 pub use rows::{row_count, ChartRows, MAX_CHART_ROWS};
 pub use svg::MAX_POINTS;
-pub use sweeps::KEY_METRICS;
+pub use sweeps::{KEY_METRICS, MACHINE_KEY_METRICS, MACHINE_TORQUE_PEAK};
 
 use anyhow::Context;
 use std::collections::BTreeMap;

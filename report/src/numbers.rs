@@ -49,7 +49,15 @@ pub(crate) fn round_off_floor(metric: &str, get: impl Fn(&str) -> Option<f64>) -
             .iter()
             .find_map(|k| metric.strip_suffix(k).map(|f| (f, *k)))?
     };
-    let torque = get(&format!("{family}_torque_max"))?;
+    // The machine's peak torque is signed (`machine_torque_max`, `machine_torque_min`): its
+    // scale is the larger magnitude.
+    let torque = if family == "machine" {
+        get("machine_torque_max")?
+            .abs()
+            .max(get("machine_torque_min")?.abs())
+    } else {
+        get(&format!("{family}_torque_max"))?
+    };
     let speed = || get("crankshaft_angular_velocity_max");
     let scale = match kind {
         "_torque_mean" => torque,
@@ -112,11 +120,15 @@ pub(crate) const SIGN_LEGEND: &str = "Signs: a drive torque, its mean, work and 
      machine delivers them (an engine's gas work, and its total drive power when the gas drives \
      the crank). `kinetic_energy_change` is end minus start. `torque_need_mean`, \
      `power_need_mean` (pump) and `output_torque_mean`, `output_power_mean` (engine) are \
-     positive when the pump needs or the engine delivers. Maxima (`*_max`) are magnitudes.";
+     positive when the pump needs or the engine delivers. Maxima (`*_max`) are magnitudes, but \
+     for `machine_torque_max` and `machine_torque_min`, the signed extremes of the machine's \
+     drive torque.";
 
 /// Whether a metric is signed (a table holding one gets [`SIGN_LEGEND`]).
 pub(crate) fn signed(metric: &str) -> bool {
     metric == "kinetic_energy_change"
+        || metric == "machine_torque_max"
+        || metric == "machine_torque_min"
         || metric.ends_with("_need_mean")
         || metric.starts_with("output_")
         || ["_work", "_torque_mean", "_power_mean"]

@@ -27,6 +27,88 @@ pub const KEY_METRICS: &[&[&str]] = &[
     &["total_power_mean", "inertial_power_mean"],
 ];
 
+/// The key metrics of a sweep of a machine of several cylinders (issue 35), in this order, as
+/// [`KEY_METRICS`]: the whole machine's efficiency, losses, mean drive power (lower is better:
+/// a pump's smaller need, an engine's larger output, which is negative), peak drive torque
+/// ([`MACHINE_TORQUE_PEAK`]), peak main-journal and crank-pin loads; then one cylinder's peak
+/// drive torque, labelled as that cylinder's.
+pub const MACHINE_KEY_METRICS: &[&[&str]] = &[
+    &["machine_mechanical_efficiency"],
+    &["machine_loss_power_mean"],
+    &["machine_power_mean"],
+    &[MACHINE_TORQUE_PEAK],
+    &["machine_main_bearing_force_max"],
+    &["machine_crank_pin_force_max"],
+    &["total_torque_max", "inertial_torque_max"],
+];
+
+/// The peak of the machine's drive torque, which a sweep report makes of each point's
+/// `machine_torque_max` and `machine_torque_min` (signed): the larger of their magnitudes. Not
+/// a column of `sweep.csv`.
+pub const MACHINE_TORQUE_PEAK: &str = "machine_torque_peak";
+
+/// Whether a sweep is of a machine of several cylinders: its first point's, or a sweep of the
+/// layout itself (`layout.*` swept), whose points may differ.
+fn multi_cylinder(t: &SweepTable) -> bool {
+    t.cylinders > 1 || t.swept.iter().any(|f| f.starts_with("layout."))
+}
+
+/// Whose figures a sweep's metric is, for a machine of several cylinders: the machine's
+/// (`machine_*`, the balance), else one cylinder's (cylinder 1; a vee's at the machine angle).
+fn whose(t: &SweepTable, metric: &str) -> Option<&'static str> {
+    let machine = metric.starts_with("machine_")
+        || cardan_dynamics::metrics::find(metric)
+            .is_some_and(|d| d.group == cardan_dynamics::metrics::Group::Balance);
+    (multi_cylinder(t) && !machine).then(|| {
+        if t.layout_kind.as_deref() == Some("vee") {
+            "one cylinder at the machine's crank angle"
+        } else {
+            "cylinder 1"
+        }
+    })
+}
+
+/// `metric` with whose figures it is ([`whose`]), for a report's text.
+fn named(t: &SweepTable, metric: &str) -> String {
+    match whose(t, metric) {
+        Some(w) => format!("`{metric}` of {w}"),
+        None => format!("`{metric}`"),
+    }
+}
+
+/// Which way a sweep's metric is better: the registry's, but lower for the machine's mean
+/// drive power (a pump's need; an engine's output, negative: lower is more) and its peak
+/// torque ([`MACHINE_TORQUE_PEAK`]).
+fn direction(metric: &str) -> Option<Better> {
+    match metric {
+        "machine_power_mean" | MACHINE_TORQUE_PEAK => Some(Better::Lower),
+        _ => better(metric),
+    }
+}
+
+/// Adds [`MACHINE_TORQUE_PEAK`] to the table of a multi-cylinder sweep, for each mechanism
+/// with both signed extremes.
+fn add_machine_torque_peak(t: &mut SweepTable) {
+    if !multi_cylinder(t) {
+        return;
+    }
+    for m in t.mechanisms.clone() {
+        let (Some(hi), Some(lo)) = (
+            t.column(&m, "machine_torque_max"),
+            t.column(&m, "machine_torque_min"),
+        ) else {
+            continue;
+        };
+        let peak: Vec<f64> = hi
+            .iter()
+            .zip(lo)
+            .map(|(h, l)| h.abs().max(l.abs()))
+            .collect();
+        t.metrics.insert(format!("{m}.{MACHINE_TORQUE_PEAK}"), peak);
+        t.units.insert(MACHINE_TORQUE_PEAK.into(), "N*m".into());
+    }
+}
+
 /// One swept field's values as an axis.
 #[derive(Debug, Clone)]
 pub(super) struct Axis {
@@ -100,7 +182,12 @@ impl Axis {
 /// mechanism has (with a finite value), without repeats.
 pub(super) fn key_metrics(t: &SweepTable) -> Vec<String> {
     let mut chosen: Vec<String> = Vec::new();
-    for alternatives in KEY_METRICS {
+    let lists = if multi_cylinder(t) {
+        MACHINE_KEY_METRICS
+    } else {
+        KEY_METRICS
+    };
+    for alternatives in lists {
         let found = alternatives.iter().find(|m| {
             t.mechanisms.iter().any(|mech| {
                 t.column(mech, m)
@@ -190,7 +277,7 @@ fn verdicts(t: &SweepTable, keys: &[String], reference: &str, line: Option<&Axis
             let (lo, hi) = finite
                 .iter()
                 .fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(*v), b.max(*v)));
-            let mut text = match better(metric) {
+            let mut text = match direction(metric) {
                 Some(direction) => {
                     let wins = finite
                         .iter()
@@ -201,7 +288,8 @@ fn verdicts(t: &SweepTable, keys: &[String], reference: &str, line: Option<&Axis
                         })
                         .count();
                     format!(
-                        "`{metric}` ({}): `{mech}` is better than `{reference}` at {wins} of {} points; Δ from {} to {}",
+                        "{} ({}): `{mech}` is better than `{reference}` at {wins} of {} points; Δ from {} to {}",
+                        named(t, metric),
                         phrase(direction),
                         finite.len(),
                         fmt_pct(Some(lo)),
@@ -209,7 +297,8 @@ fn verdicts(t: &SweepTable, keys: &[String], reference: &str, line: Option<&Axis
                     )
                 }
                 None => format!(
-                    "`{metric}`: Δ `{mech}` to `{reference}` from {} to {}",
+                    "{}: Δ `{mech}` to `{reference}` from {} to {}",
+                    named(t, metric),
                     fmt_pct(Some(lo)),
                     fmt_pct(Some(hi))
                 ),
@@ -315,7 +404,10 @@ fn line_charts(
             .collect();
         let unit = t.units.get(metric).cloned().unwrap_or_default();
         let chart = LineChart {
-            title: format!("{metric} over {}", axis.title),
+            title: match whose(t, metric) {
+                Some(w) => format!("{metric} ({w}) over {}", axis.title),
+                None => format!("{metric} over {}", axis.title),
+            },
             x_label: axis.title.clone(),
             y_label: metric.clone(),
             y_unit: unit,
@@ -327,7 +419,11 @@ fn line_charts(
         out.push((
             format!("{metric}.svg"),
             svg::line_chart(&chart),
-            format!("`{metric}` of every mechanism over `{}`", axis.title),
+            format!(
+                "{} of every mechanism over `{}`",
+                named(t, metric),
+                axis.title
+            ),
         ));
     }
     let others: Vec<&String> = t.mechanisms.iter().filter(|m| *m != reference).collect();
@@ -403,7 +499,10 @@ fn heat_maps(
                 continue;
             };
             let map = HeatMap {
-                title: format!("{metric}: {m}"),
+                title: match whose(t, metric) {
+                    Some(w) => format!("{metric} ({w}): {m}"),
+                    None => format!("{metric}: {m}"),
+                },
                 x_label: a.title.clone(),
                 y_label: b.title.clone(),
                 x_labels: xl.clone(),
@@ -420,7 +519,7 @@ fn heat_maps(
             out.push((
                 format!("{metric}_{m}.svg"),
                 heatmap::heat_map(&map),
-                format!("`{metric}` of `{m}` over the grid"),
+                format!("{} of `{m}` over the grid", named(t, metric)),
             ));
         }
         for m in t.mechanisms.iter().filter(|m| *m != reference) {
@@ -439,7 +538,7 @@ fn heat_maps(
                 diverging: true,
                 zero_contour: true,
             };
-            let sense = match better(metric) {
+            let sense = match direction(metric) {
                 Some(Better::Lower) => format!("; blue (Δ < 0) is where `{m}` is better"),
                 Some(Better::Higher) => format!("; red (Δ > 0) is where `{m}` is better"),
                 Some(Better::Neither) | None => String::new(),
@@ -459,7 +558,8 @@ pub(super) fn sweep_report(
     name: &str,
     reference: Option<&str>,
 ) -> anyhow::Result<()> {
-    let (t, reference) = data::read_sweep(sweep_dir, reference)?;
+    let (mut t, reference) = data::read_sweep(sweep_dir, reference)?;
+    add_machine_torque_peak(&mut t);
     let keys = key_metrics(&t);
     let layout = layout(&t);
     let mut doc = Doc {
@@ -497,13 +597,27 @@ pub(super) fn sweep_report(
             .collect::<Vec<_>>()
             .join(", ")
     )));
+    let list = if multi_cylinder(&t) {
+        format!(
+            "of a machine of several cylinders: the whole machine's machine_mechanical_efficiency; \
+             machine_loss_power_mean; machine_power_mean (lower is better: a pump's smaller \
+             need, an engine's larger output, which is negative); {MACHINE_TORQUE_PEAK}, the \
+             larger of |machine_torque_max| and |machine_torque_min| of each point (made by \
+             this report); machine_main_bearing_force_max; machine_crank_pin_force_max; then \
+             {}'s total_torque_max or inertial_torque_max",
+            whose(&t, "total_torque_max").unwrap_or("one cylinder")
+        )
+    } else {
+        "mechanical_efficiency; power_loss_mean; power_need_mean or output_power_mean; \
+         total_torque_max or inertial_torque_max; inertial_torque_max; \
+         total_crank_pin_force_max or inertial_crank_pin_force_max; total_power_mean or \
+         inertial_power_mean"
+            .to_string()
+    };
     doc.push(Block::Paragraph(format!(
         "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better for \
          loads, torques, power need and losses; higher is better for efficiency and output. Key \
-         metrics (the first present of each entry of the list mechanical_efficiency; \
-         power_loss_mean; power_need_mean or output_power_mean; total_torque_max or \
-         inertial_torque_max; inertial_torque_max; total_crank_pin_force_max or \
-         inertial_crank_pin_force_max; total_power_mean or inertial_power_mean): {}. \
+         metrics (the first present of each entry of the list {list}): {}. \
          {ROUND_OFF_LEGEND}",
         keys.iter()
             .map(|k| format!("`{k}`"))
@@ -529,9 +643,9 @@ pub(super) fn sweep_report(
         doc.push(Block::Heading(
             3,
             if unit.is_empty() {
-                format!("`{metric}`")
+                named(&t, metric)
             } else {
-                format!("`{metric}`, {unit}")
+                format!("{}, {unit}", named(&t, metric))
             },
         ));
         doc.push(metric_table(&t, metric, &reference));

@@ -3,7 +3,7 @@
 //! sweeps; no difference in % of round-off, and the sign legend. The reports of the shipped
 //! configs' runs are tested with the runner (`runner/tests/report.rs`).
 
-use cardan_report::{case_report, sweep_report, MAX_POINTS};
+use cardan_report::{case_report, index, sweep_report, MAX_POINTS};
 use cardan_testing::chart::{attr_f64, check_series, data_area, Axes};
 
 /// A 10 × 10 grid sweep written by hand: a value map per mechanism, the difference map with
@@ -321,4 +321,443 @@ fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
             "the sign line under the torque table names {part:?}: {after}"
         );
     }
+}
+
+/// The "which is better" items of a report.md: its `- **...` lines, in order.
+fn headline_items(md: &str) -> Vec<&str> {
+    md.lines().filter(|l| l.starts_with("- **")).collect()
+}
+
+/// A case folder with a `summary.json` written by hand: `machine`, `layout` (or none) and per
+/// mechanism its metrics (units from the metric registry).
+fn hand_case(
+    dir: &std::path::Path,
+    machine: &str,
+    layout: Option<(&str, u32)>,
+    mechanisms: &[(&str, &[(&str, f64)])],
+) -> std::path::PathBuf {
+    let case = dir.join("hand");
+    hand_summary(&case, machine, layout, mechanisms);
+    case_report(&case, None).unwrap();
+    case
+}
+
+/// Writes `<case>/summary.json` by hand (see [`hand_case`]).
+fn hand_summary(
+    case: &std::path::Path,
+    machine: &str,
+    layout: Option<(&str, u32)>,
+    mechanisms: &[(&str, &[(&str, f64)])],
+) {
+    std::fs::create_dir_all(case).unwrap();
+    let mut ms = serde_json::Map::new();
+    for (name, metrics) in mechanisms {
+        let values: serde_json::Map<String, serde_json::Value> = metrics
+            .iter()
+            .map(|(k, v)| (k.to_string(), serde_json::json!(v)))
+            .collect();
+        let units: serde_json::Map<String, serde_json::Value> = metrics
+            .iter()
+            .map(|(k, _)| {
+                let unit = cardan_dynamics::metrics::find(k).map_or("", |d| d.unit);
+                (k.to_string(), serde_json::json!(unit))
+            })
+            .collect();
+        ms.insert(
+            name.to_string(),
+            serde_json::json!({"bodies": {}, "joints": {}, "mass_properties": {},
+                "metrics": values, "units": units}),
+        );
+    }
+    let mut summary = serde_json::json!({
+        "schema_version": 2, "case": "hand", "machine": machine, "gas_model": null,
+        "mechanisms": ms,
+    });
+    if let Some((kind, n)) = layout {
+        summary["layout"] = serde_json::json!({"kind": kind, "cylinders": n,
+            "balance_shafts": "none", "cardan_counterweights": false, "counterweight": null});
+    }
+    std::fs::write(case.join("summary.json"), summary.to_string()).unwrap();
+}
+
+/// Issue 35: a two-cylinder compressor's report said "Mean power need 1839.9 W" (cylinder 1's)
+/// for a machine that takes 3.75 kW. The machine's figures lead the "which is better" summary
+/// (its mean power need, peak torque as the larger magnitude of its signed extremes, journal
+/// and pin loads, efficiency, losses), then the cylinder's, each labelled "of cylinder 1"; the
+/// per-cylinder tables and the loss budget say whose they are.
+#[test]
+fn a_multi_cylinder_report_leads_with_the_machine_and_labels_the_cylinder() {
+    let dir = tempfile::tempdir().unwrap();
+    let mechanism = |scale: f64| -> Vec<(&'static str, f64)> {
+        vec![
+            ("machine_power_mean", 3750.0 * scale),
+            ("machine_torque_max", 120.0 * scale),
+            ("machine_torque_min", -150.0 * scale),
+            ("machine_torque_mean", 39.8 * scale),
+            ("machine_main_bearing_force_max", 9000.0 * scale),
+            ("machine_crank_pin_force_max", 8000.0 * scale),
+            ("machine_mechanical_efficiency", 0.9 + (1.0 - scale) * 0.25),
+            ("machine_loss_power_mean", 375.0 * scale),
+            ("power_need_mean", 1839.9 * scale),
+            ("mechanical_efficiency", 0.91 + (1.0 - scale) * 0.25),
+            ("power_loss_mean", 180.0 * scale),
+            ("power_loss_mean_crank_pin", 180.0 * scale),
+            ("total_torque_max", 100.0 * scale),
+            ("total_main_bearing_force_max", 7000.0 * scale),
+        ]
+    };
+    let (s, c) = (mechanism(1.0), mechanism(0.8));
+    let case = hand_case(
+        dir.path(),
+        "pump",
+        Some(("inline", 2)),
+        &[("slider_crank", &s), ("cardan_gear", &c)],
+    );
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    let items = headline_items(&md);
+    let expected_starts = [
+        "- **Mean power need of the machine** (`machine_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 3000 W vs `slider_crank` 3750 W (lower by 20.0 %: better).",
+        "- **Peak drive torque of the machine** (the larger of |`machine_torque_max`| and |`machine_torque_min`|, lower is better): best `cardan_gear`; `cardan_gear` 120 N·m vs `slider_crank` 150 N·m",
+        "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`, lower is better): best `cardan_gear`; `cardan_gear` 7200 N vs `slider_crank` 9000 N",
+        "- **Peak crank-pin load of the machine** (`machine_crank_pin_force_max`,",
+        "- **Mechanical efficiency of the machine** (`machine_mechanical_efficiency`, higher is better): best `cardan_gear`; `cardan_gear` 0.95 vs `slider_crank` 0.9",
+        "- **Mean friction power loss of the machine** (`machine_loss_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 300 W vs `slider_crank` 375 W",
+        "- **Peak drive torque of cylinder 1** (`total_torque_max`,",
+        "- **Peak main-bearing force of cylinder 1** (`total_main_bearing_force_max`,",
+        "- **Mean power loss of cylinder 1** (`power_loss_mean`,",
+        "- **Mechanical efficiency of cylinder 1** (`mechanical_efficiency`,",
+        "- **Mean power need of cylinder 1** (`power_need_mean`, lower is better): best `cardan_gear`; `cardan_gear` 1471.9 W vs `slider_crank` 1839.9 W",
+    ];
+    assert_eq!(items.len(), expected_starts.len(), "{items:#?}");
+    for (item, start) in items.iter().zip(expected_starts) {
+        assert!(
+            item.starts_with(start),
+            "{item}\nshould start with\n{start}"
+        );
+    }
+    // No figure of one cylinder under a machine's name.
+    assert!(!md.contains("**Mean power need** ("), "{md}");
+    for heading in [
+        "### The whole machine\n",
+        "### Drive torque, power and work: cylinder 1\n",
+        "### Losses and efficiency: cylinder 1\n",
+        "## Loss budget of cylinder 1\n",
+        "The machine has 2 cylinders",
+    ] {
+        assert!(md.contains(heading), "{heading:?}\n{md}");
+    }
+    assert!(md.find("### The whole machine") < md.find("### Drive torque"));
+
+    // A vee engine: its mean output is −machine_power_mean, higher is better, and its one
+    // cylinder is the mechanism at the machine's crank angle.
+    let dir = tempfile::tempdir().unwrap();
+    let engine = |scale: f64| -> Vec<(&'static str, f64)> {
+        vec![
+            ("machine_power_mean", -60000.0 * scale),
+            ("machine_torque_max", 500.0 * scale),
+            ("machine_torque_min", -2000.0 * scale),
+            ("total_torque_max", 1500.0 * scale),
+        ]
+    };
+    let (s, c) = (engine(1.0), engine(0.9));
+    let case = hand_case(
+        dir.path(),
+        "engine",
+        Some(("vee", 2)),
+        &[("slider_crank", &s), ("cardan_gear", &c)],
+    );
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    let items = headline_items(&md);
+    assert_eq!(items.len(), 3, "{items:#?}");
+    assert!(items[0].starts_with(
+        "- **Mean output power of the machine** (−`machine_power_mean`, higher is better): best `slider_crank`; `cardan_gear` 54000 W vs `slider_crank` 60000 W (lower by 10.0 %: worse)."
+    ), "{}", items[0]);
+    assert!(items[1].contains("`cardan_gear` 1800 N·m vs `slider_crank` 2000 N·m"));
+    assert!(items[2].starts_with(
+        "- **Peak drive torque of one cylinder at the machine's crank angle** (`total_torque_max`,"
+    ), "{}", items[2]);
+    assert!(md
+        .contains("### Drive torque, power and work: one cylinder at the machine's crank angle\n"));
+}
+
+/// A one-cylinder machine's report: the machine's figures are its cylinder's, said once and
+/// labelled with no cylinder; a figure the machine has no counterpart of stays.
+#[test]
+fn a_single_cylinder_report_says_each_figure_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let mechanism = |scale: f64| -> Vec<(&'static str, f64)> {
+        vec![
+            ("machine_power_mean", 1839.9 * scale),
+            ("machine_torque_max", 100.0 * scale),
+            ("machine_torque_min", -30.0 * scale),
+            ("machine_main_bearing_force_max", 7000.0 * scale),
+            ("power_need_mean", 1839.9 * scale),
+            ("total_torque_max", 100.0 * scale),
+            ("total_main_bearing_force_max", 7000.0 * scale),
+            ("friction_torque_max", 5.0 * scale),
+        ]
+    };
+    let (s, c) = (mechanism(1.0), mechanism(1.25));
+    for layout in [None, Some(("inline", 1))] {
+        let case = hand_case(
+            dir.path(),
+            "pump",
+            layout,
+            &[("slider_crank", &s), ("cardan_gear", &c)],
+        );
+        let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+        let items = headline_items(&md);
+        let starts = [
+            "- **Mean power need of the machine** (`machine_power_mean`,",
+            "- **Peak drive torque of the machine** (the larger of",
+            "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`,",
+            "- **Peak friction torque** (`friction_torque_max`,",
+        ];
+        assert_eq!(items.len(), starts.len(), "{layout:?}: {items:#?}");
+        for (item, start) in items.iter().zip(starts) {
+            assert!(item.starts_with(start), "{item}");
+        }
+        assert!(!md.contains("cylinder 1"), "{md}");
+        assert!(md.contains("### Drive torque, power and work\n"));
+    }
+}
+
+/// Issue 35: the index showed the same peak torque (cylinder 1's) for an inline-3, -4 and -6.
+/// Its headline columns are the machine's (`machine_*`; the peak torque the larger of
+/// |`machine_torque_max`| and |`machine_torque_min`|), with the layout; a summary without
+/// them shows its cylinder's figures only for a machine of one cylinder.
+#[test]
+fn the_index_shows_the_machine() {
+    let dir = tempfile::tempdir().unwrap();
+    let twin: &[(&str, f64)] = &[
+        ("machine_torque_max", 120.0),
+        ("machine_torque_min", -150.0),
+        ("machine_main_bearing_force_max", 9000.0),
+        ("machine_crank_pin_force_max", 8000.0),
+        ("machine_power_mean", 3750.0),
+        ("machine_loss_power_mean", 375.0),
+        ("machine_mechanical_efficiency", 0.9),
+        ("total_torque_max", 100.0),
+        ("total_main_bearing_force_max", 7000.0),
+        ("total_crank_pin_force_max", 7000.0),
+        ("total_power_mean", 1700.0),
+        ("power_loss_mean", 180.0),
+        ("mechanical_efficiency", 0.91),
+    ];
+    let cylinder: &[(&str, f64)] = &[
+        ("total_torque_max", 100.0),
+        ("total_main_bearing_force_max", 7000.0),
+        ("total_power_mean", 1700.0),
+    ];
+    hand_summary(
+        &dir.path().join("a-twin"),
+        "pump",
+        Some(("inline", 2)),
+        &[("slider_crank", twin)],
+    );
+    hand_summary(
+        &dir.path().join("b-single"),
+        "pump",
+        None,
+        &[("slider_crank", cylinder)],
+    );
+    hand_summary(
+        &dir.path().join("c-vee-without-machine-metrics"),
+        "engine",
+        Some(("vee", 2)),
+        &[("slider_crank", cylinder)],
+    );
+    index(dir.path()).unwrap();
+    let html = std::fs::read_to_string(dir.path().join("index.html")).unwrap();
+    let rows: Vec<Vec<String>> = html
+        .split("<tr>")
+        .skip(1)
+        .map(|r| {
+            let r = r.split("</tr>").next().unwrap();
+            r.split("<t")
+                .skip(1)
+                .map(|c| {
+                    let c = &c[c.find('>').unwrap() + 1..];
+                    c.split("</t").next().unwrap().to_string()
+                })
+                .collect()
+        })
+        .collect();
+    assert_eq!(
+        rows[0],
+        [
+            "case",
+            "machine",
+            "layout",
+            "mechanism",
+            "machine: peak drive torque, N·m",
+            "machine: peak main-journal load, N",
+            "machine: peak crank-pin load, N",
+            "machine: mean drive power, W",
+            "machine: mean power loss, W",
+            "machine: mechanical efficiency",
+        ]
+    );
+    let code = "<code>slider_crank</code>";
+    assert_eq!(
+        rows[1],
+        [
+            "a-twin",
+            "pump",
+            "inline, 2 cylinders",
+            code,
+            "150",
+            "9000",
+            "8000",
+            "3750",
+            "375",
+            "0.9"
+        ]
+    );
+    assert_eq!(
+        rows[2],
+        [
+            "b-single",
+            "pump",
+            "1 cylinder",
+            code,
+            "100",
+            "7000",
+            "—",
+            "1700",
+            "—",
+            "—"
+        ]
+    );
+    assert_eq!(
+        rows[3],
+        [
+            "c-vee-without-machine-metrics",
+            "engine",
+            "vee, 2 cylinders",
+            code,
+            "—",
+            "—",
+            "—",
+            "—",
+            "—",
+            "—"
+        ]
+    );
+    assert_eq!(rows.len(), 4);
+}
+
+/// Issue 35: a sweep of a machine of several cylinders charts the whole machine's figures
+/// first (its mean drive power, lower is better; its peak drive torque, the larger of
+/// |`machine_torque_max`| and |`machine_torque_min`| of each point), and names one
+/// cylinder's figures as cylinder 1's.
+#[test]
+fn a_multi_cylinder_sweep_reports_the_machine() {
+    let dir = tempfile::tempdir().unwrap();
+    let sweep = dir.path().join("twin");
+    let columns = [
+        "machine_power_mean",
+        "machine_torque_max",
+        "machine_torque_min",
+        "total_torque_max",
+    ];
+    let slider = [
+        [1000.0, 100.0, -50.0, 80.0],
+        [2000.0, 110.0, -200.0, 90.0],
+        [3000.0, 120.0, -60.0, 100.0],
+    ];
+    let cardan = [
+        [900.0, 90.0, -95.0, 88.0],
+        [2100.0, 150.0, -100.0, 81.0],
+        [2700.0, 130.0, -10.0, 100.0],
+    ];
+    let metrics = |row: &[f64; 4]| -> Vec<(&'static str, f64)> {
+        columns.iter().copied().zip(row.iter().copied()).collect()
+    };
+    let (s0, c0) = (metrics(&slider[0]), metrics(&cardan[0]));
+    hand_summary(
+        &sweep.join("p0"),
+        "pump",
+        Some(("inline", 2)),
+        &[("slider_crank", &s0), ("cardan_gear", &c0)],
+    );
+    let mut csv = String::from("case,motion.initial_speed");
+    for m in ["slider_crank", "cardan_gear"] {
+        for c in columns {
+            csv.push_str(&format!(",{m}.{c}"));
+        }
+    }
+    csv.push('\n');
+    for (k, speed) in ["100 rpm", "900 rpm", "3000 rpm"].iter().enumerate() {
+        csv.push_str(&format!("p{k},{speed}"));
+        for v in slider[k].iter().chain(&cardan[k]) {
+            csv.push_str(&format!(",{v}"));
+        }
+        csv.push('\n');
+    }
+    std::fs::write(sweep.join("sweep.csv"), csv).unwrap();
+    sweep_report(&sweep, "twin", None).unwrap();
+    let md = std::fs::read_to_string(sweep.join("report.md")).unwrap();
+    assert!(
+        md.contains("): `machine_power_mean`, `machine_torque_peak`, `total_torque_max`."),
+        "{md}"
+    );
+    let items: Vec<&str> = md.lines().filter(|l| l.starts_with("- `")).collect();
+    assert_eq!(
+        items,
+        [
+            "- `machine_power_mean` (lower is better): `cardan_gear` is better than `slider_crank` at 2 of 3 points; Δ from -10.0 % to +5.0 %; Δ crosses 0 between 100 rpm and 900 rpm (≈ 633.33 rpm by linear interpolation); Δ crosses 0 between 900 rpm and 3000 rpm (≈ 1600 rpm by linear interpolation).",
+            "- `machine_torque_peak` (lower is better): `cardan_gear` is better than `slider_crank` at 2 of 3 points; Δ from -25.0 % to +8.3 %; Δ crosses 0 between 900 rpm and 3000 rpm (≈ 2475 rpm by linear interpolation).",
+            "- `total_torque_max` of cylinder 1 (lower is better): `cardan_gear` is better than `slider_crank` at 1 of 3 points; Δ from -10.0 % to +10.0 %; Δ crosses 0 between 100 rpm and 900 rpm (≈ 500 rpm by linear interpolation).",
+        ],
+        "{md}"
+    );
+    assert!(md.contains("### `machine_torque_peak`, N·m\n"), "{md}");
+    assert!(md.contains("| 900 rpm | 200 | 150 | -25.0 % |"), "{md}");
+    assert!(
+        md.contains("### `total_torque_max` of cylinder 1, N·m\n"),
+        "{md}"
+    );
+    assert!(sweep.join("plots/machine_torque_peak.svg").is_file());
+}
+
+/// A machine's mean drive power of inertia alone over whole turns at constant speed is 0 up to
+/// round-off for every mechanism: no "which is better" line compares two round-offs (its floor
+/// is 1e-9 of the machine's peak torque, the larger of its signed extremes, × the peak speed).
+#[test]
+fn a_round_off_machine_power_is_not_a_headline() {
+    let dir = tempfile::tempdir().unwrap();
+    let mechanism = |power: f64| -> Vec<(&'static str, f64)> {
+        vec![
+            ("machine_power_mean", power),
+            ("machine_torque_max", 10.0),
+            ("machine_torque_min", -450.0),
+            ("crankshaft_angular_velocity_max", 100.0),
+        ]
+    };
+    // 450 N·m × 100 rad/s × 1e-9 = 4.5e-5 W.
+    let (s, c) = (mechanism(2.4e-11), mechanism(-4.4e-5));
+    let case = hand_case(
+        dir.path(),
+        "pump",
+        Some(("inline", 3)),
+        &[("slider_crank", &s), ("cardan_gear", &c)],
+    );
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    let items = headline_items(&md);
+    assert_eq!(items.len(), 1, "{items:#?}");
+    assert!(items[0].starts_with("- **Peak drive torque of the machine**"));
+    // One of them above its floor: compared, as not comparable.
+    let c = mechanism(4.6e-5);
+    let case = hand_case(
+        dir.path(),
+        "pump",
+        Some(("inline", 3)),
+        &[("slider_crank", &s), ("cardan_gear", &c)],
+    );
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    assert!(
+        md.contains("(not comparable: one is 0 up to round-off)."),
+        "{md}"
+    );
 }

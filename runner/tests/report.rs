@@ -320,9 +320,13 @@ fn report_md_tables_hold_the_differences() {
     ] {
         assert!(md.contains(heading), "{heading}");
     }
+    // One cylinder: the machine's peak torque is its cylinder's, said once.
     assert!(md.contains(
-        "**Peak drive torque** (`total_torque_max`, lower is better): best `cardan_gear`"
+        "**Peak drive torque of the machine** (the larger of |`machine_torque_max`| and \
+         |`machine_torque_min`|, lower is better): best `cardan_gear`"
     ));
+    assert!(!md.contains("(`total_torque_max`, lower is better)"));
+    assert!(!md.contains("cylinder 1"));
     // The HTML page is self-contained: no script, no outside address.
     let html = std::fs::read_to_string(case.join("report.html")).unwrap();
     assert!(!html.contains("<script"));
@@ -480,18 +484,41 @@ fn index_links_every_report() {
     ] {
         assert!(html.contains(part), "the index explains the sign: {part:?}");
     }
-    // A headline row per case and mechanism: the peak torque of the table's first column.
-    let summary: serde_json::Value = serde_json::from_str(
-        &std::fs::read_to_string(out.join("karhula-pump-r60-l140-a0-w30pi/summary.json")).unwrap(),
-    )
-    .unwrap();
-    let torque = summary["mechanisms"]["cardan_gear"]["metrics"]["total_torque_max"]
-        .as_f64()
+    // A headline row per case and mechanism: the machine's peak torque in the table's first
+    // column, its cylinder's for one cylinder, not cylinder 1's for three (issue 35).
+    for (case, layout, cylinder_is_machine) in [
+        ("karhula-pump-r60-l140-a0-w30pi", "inline, 1 cylinder", true),
+        (
+            "karhula-pump-inline3-motor-dynamic",
+            "inline, 3 cylinders",
+            false,
+        ),
+    ] {
+        let summary: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(out.join(case).join("summary.json")).unwrap(),
+        )
         .unwrap();
-    let row = "<td>karhula-pump-r60-l140-a0-w30pi</td><td>pump</td><td><code>cardan_gear</code></td><td class=\"num\">";
-    let at = html.find(row).expect("the row") + row.len();
-    let cell: f64 = html[at..].split('<').next().unwrap().parse().unwrap();
-    assert!((cell / torque - 1.0).abs() < 1e-4, "{cell}");
+        let metric = |k: &str| {
+            summary["mechanisms"]["cardan_gear"]["metrics"][k]
+                .as_f64()
+                .unwrap()
+        };
+        let torque = metric("machine_torque_max")
+            .abs()
+            .max(metric("machine_torque_min").abs());
+        let row = format!(
+            "<td>{case}</td><td>pump</td><td>{layout}</td><td><code>cardan_gear</code></td><td class=\"num\">"
+        );
+        let at = html.find(&row).expect("the row") + row.len();
+        let cell: f64 = html[at..].split('<').next().unwrap().parse().unwrap();
+        assert!((cell / torque - 1.0).abs() < 1e-4, "{case}: {cell}");
+        let cylinder = metric("total_torque_max");
+        assert_eq!(
+            (cell / cylinder - 1.0).abs() < 1e-4,
+            cylinder_is_machine,
+            "{case}: {cell} against cylinder 1's {cylinder}"
+        );
+    }
     let mechanisms: usize = cases(out)
         .iter()
         .map(|c| {
@@ -753,4 +780,123 @@ fn friction_keeps_the_force_charts_and_adds_one_friction_torque_chart() {
         );
         assert!(!with.values().any(|svg| svg.contains("friction loads")));
     }
+}
+
+/// The figure of `mechanism` in a "which is better" item: the number after its name.
+fn figure_of(item: &str, mechanism: &str) -> f64 {
+    let tag = format!("`{mechanism}` ");
+    item.match_indices(&tag)
+        .find_map(|(k, _)| {
+            item[k + tag.len()..]
+                .split(' ')
+                .next()
+                .and_then(|n| n.parse().ok())
+        })
+        .unwrap_or_else(|| panic!("no figure of {mechanism} in {item}"))
+}
+
+/// Issue 35: a three-cylinder pump (the shipped inline-3, with `[friction]`) run with its
+/// report: the "which is better" summary leads with the machine's figures from `summary.json`
+/// (its mean power need, not cylinder 1's `power_need_mean`, a third of it; its peak drive
+/// torque; its journal and pin loads; its efficiency and losses), then cylinder 1's, each
+/// labelled so, as are the per-cylinder tables and charts.
+#[test]
+fn a_multi_cylinder_report_headlines_the_machine() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = dir.path().join("cases");
+    std::fs::create_dir(&cases).unwrap();
+    let name = "karhula-pump-inline3-motor-dynamic";
+    let text = shipped_case_text(name, 720, "csv = false")
+        .replace("\n[output]\n", "\n[friction]\n\n[output]\n");
+    std::fs::write(cases.join("case.toml"), text).unwrap();
+    let out = dir.path().join("out");
+    let report = run_paths(&[cases], &out, with_reports());
+    assert!(report.failures.is_empty(), "{:#?}", report.failures);
+    let case = out.join(name);
+    let md = std::fs::read_to_string(case.join("report.md")).unwrap();
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(case.join("summary.json")).unwrap()).unwrap();
+    let metric = |m: &str, k: &str| {
+        summary["mechanisms"][m]["metrics"][k]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{m}: no {k}"))
+    };
+    let items: Vec<&str> = md.lines().filter(|l| l.starts_with("- **")).collect();
+    let item = |start: &str| -> (usize, &str) {
+        items
+            .iter()
+            .enumerate()
+            .find(|(_, i)| i.starts_with(start))
+            .map(|(k, i)| (k, *i))
+            .unwrap_or_else(|| panic!("no item {start}: {items:#?}"))
+    };
+    let close = |a: f64, b: f64| (a / b - 1.0).abs() < 1e-4;
+    let (first, need) =
+        item("- **Mean power need of the machine** (`machine_power_mean`, lower is better)");
+    assert_eq!(first, 0, "the machine's power need first: {items:#?}");
+    let (cylinder, cylinder_need) =
+        item("- **Mean power need of cylinder 1** (`power_need_mean`, lower is better)");
+    for m in ["slider_crank", "cardan_gear"] {
+        let machine = metric(m, "machine_power_mean");
+        assert!(close(figure_of(need, m), machine), "{m}: {need}");
+        // Three cylinders: the machine's need is not cylinder 1's.
+        assert!(machine > 2.0 * metric(m, "power_need_mean"), "{m}");
+        assert!(
+            close(figure_of(cylinder_need, m), metric(m, "power_need_mean")),
+            "{m}"
+        );
+    }
+    let mut machine_items = Vec::new();
+    for (start, value) in [
+        (
+            "- **Peak drive torque of the machine** (the larger of |`machine_torque_max`| and |`machine_torque_min`|, lower is better)",
+            &(|m: &str| metric(m, "machine_torque_max").abs().max(metric(m, "machine_torque_min").abs())) as &dyn Fn(&str) -> f64,
+        ),
+        (
+            "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`, lower is better)",
+            &|m: &str| metric(m, "machine_main_bearing_force_max"),
+        ),
+        (
+            "- **Peak crank-pin load of the machine** (`machine_crank_pin_force_max`, lower is better)",
+            &|m: &str| metric(m, "machine_crank_pin_force_max"),
+        ),
+        (
+            "- **Mechanical efficiency of the machine** (`machine_mechanical_efficiency`, higher is better)",
+            &|m: &str| metric(m, "machine_mechanical_efficiency"),
+        ),
+        (
+            "- **Mean friction power loss of the machine** (`machine_loss_power_mean`, lower is better)",
+            &|m: &str| metric(m, "machine_loss_power_mean"),
+        ),
+    ] {
+        let (k, text) = item(start);
+        for m in ["slider_crank", "cardan_gear"] {
+            assert!(close(figure_of(text, m), value(m)), "{m}: {text}");
+        }
+        machine_items.push(k);
+    }
+    assert!(machine_items.iter().all(|k| *k < cylinder), "{items:#?}");
+    // Every other item is the machine's or cylinder 1's, and says which.
+    for i in &items {
+        assert!(
+            i.contains(" of the machine** (") || i.contains(" of cylinder 1** ("),
+            "{i}"
+        );
+    }
+    let (_, torque) = item("- **Peak drive torque of cylinder 1** (`total_torque_max`,");
+    assert!(close(
+        figure_of(torque, "cardan_gear"),
+        metric("cardan_gear", "total_torque_max")
+    ));
+    for heading in [
+        "### Drive torque, power and work: cylinder 1\n",
+        "### Losses and efficiency: cylinder 1\n",
+        "### Joint loads: `main_bearing`: cylinder 1\n",
+        "## Loss budget of cylinder 1\n",
+    ] {
+        assert!(md.contains(heading), "{heading:?}");
+    }
+    let plots = plots_of(&case);
+    assert!(plots["torque_total.svg"].contains("Drive torque, total loads (cylinder 1)"));
+    assert!(!plots["torque_machine.svg"].contains("(cylinder 1)"));
 }
