@@ -213,13 +213,13 @@ impl MachineStage {
             } else {
                 &room.total
             };
-            for k in 0..lanes {
+            for (k, &p) in pressure[..lanes].iter().enumerate() {
                 let mut at = CylinderAt {
                     shaking: shaking_lane(t, &room.block, k),
                     torque: total.crank_torque[k],
                     gas_torque: room.loads.get(1).map_or(0.0, |g| g.crank_torque[k]),
                     gas_force: gas.map_or(0.0, |_| room.force[k]),
-                    pressure: gas.map(|_| pressure[k]),
+                    pressure: gas.map(|_| p),
                     ..CylinderAt::default()
                 };
                 if let Some(j) = self.machine.main_bearing() {
