@@ -526,3 +526,61 @@ fn the_summary_names_the_machine_the_balance_metrics_are_of() {
         "radial"
     );
 }
+
+/// Each cylinder's throw and firing delay, degrees (rounded to 1e-6°).
+fn throws_and_delays(c: &Case) -> (Vec<f64>, Vec<f64>) {
+    let deg = |x: f64| (x.to_degrees() * 1e6).round() / 1e6;
+    let b = &c.balance;
+    (
+        b.layout.cylinders.iter().map(|c| deg(c.throw)).collect(),
+        b.firing_delay.iter().map(|&d| deg(d)).collect(),
+    )
+}
+
+/// A two-stroke layout without a firing order (issue 35 §1) gets a two-stroke's crank: an inline
+/// machine's throws 360°/N apart in the usual firing order (a twin's 0° and 180°, not the
+/// four-stroke twin's 0° and 0°; a four's 0°, 90°, 270°, 180° of 1-3-4-2, not 0°, 180°, 180°,
+/// 0°), each cylinder firing at its own top dead centre (a two-stroke fires every revolution:
+/// delay = −throw mod 360°); a vee's pins those of an inline of half as many cylinders (a 90°
+/// vee four fires every 90°, not two cylinders at once). The twin is bit for bit the twin
+/// with `firing_order = [1, 2]` written out.
+#[test]
+fn a_two_stroke_layout_defaults_to_a_two_stroke_crank() {
+    let layout = |tables: &str| case(&text("\"slider_crank\", \"cardan_gear\"", 360, tables));
+    let twin = "[layout]\ncylinders = 2\ncycle = \"two_stroke\"";
+    assert_eq!(
+        throws_and_delays(&layout(twin)),
+        (vec![0.0, 180.0], vec![0.0, 180.0])
+    );
+    assert_eq!(
+        throws_and_delays(&layout("[layout]\ncylinders = 4\ncycle = \"two_stroke\"")),
+        (vec![0.0, 90.0, 270.0, 180.0], vec![0.0, 270.0, 90.0, 180.0])
+    );
+    assert_eq!(
+        throws_and_delays(&layout(
+            "[layout]\nkind = \"vee\"\ncylinders = 4\ncycle = \"two_stroke\""
+        )),
+        (vec![0.0, 0.0, 180.0, 180.0], vec![0.0, 90.0, 180.0, 270.0])
+    );
+    // The same twin with its firing order written out: the same machine, the same results.
+    let explicit = format!("{twin}\nfiring_order = [1, 2]");
+    assert_eq!(layout(twin).balance, layout(&explicit).balance);
+    let summary = |tables: &str| {
+        let c = layout(tables);
+        let r = run_case(&c, None).unwrap_or_else(|e| panic!("{e}"));
+        cardan_runner::output::summary_json(&c, &r)
+    };
+    let (default, written) = (summary(twin), summary(&explicit));
+    assert_eq!(default.to_string(), written.to_string());
+    // Throws 180° apart: the twin's first-order shaking force of the slider-crank's
+    // reciprocating masses cancels (with the four-stroke twin's throws it doubles).
+    let one = results(&text("\"slider_crank\"", 360, ""));
+    let two = results(&text("\"slider_crank\"", 360, twin));
+    let first = |r: &[MechanismResult]| metric(r, "slider_crank", "shaking_force_order_1");
+    assert!(
+        first(&two) < 1e-9 * first(&one),
+        "{} vs {}",
+        first(&two),
+        first(&one)
+    );
+}
