@@ -29,8 +29,9 @@ pub struct BalanceTable {
     #[serde(default)]
     pub balance_shafts: BalanceShafts,
     /// The counterweight pair on the crank and the cardan wheel of every cylinder that cancels
-    /// the mechanism's first-order shaking force (a mechanism with a body turning against the
-    /// crank, the cardan wheel); default false.
+    /// the mechanism's first-order shaking force; default false. It applies to the mechanisms
+    /// with a body turning against the crank (the cardan wheel); the others ignore it, with a
+    /// warning in the summary (a case of none of them is refused).
     #[serde(default)]
     pub cardan_counterweights: bool,
 }

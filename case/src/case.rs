@@ -667,6 +667,21 @@ fn setups(
         .iter()
         .map(|m| Setup::build(m, bore, friction, gear, machine, invalid))
         .collect::<Result<Vec<_>, _>>()?;
+    if machine.0.cardan_counterweights
+        && !mechanisms
+            .iter()
+            .any(|m| machine.0.cardan_pair_applies(m.as_ref()))
+    {
+        let names: Vec<&str> = mechanisms.iter().map(|m| m.name()).collect();
+        return Err(invalid(
+            "balance.cardan_counterweights",
+            &"true",
+            &format!(
+                "applies to a mechanism with a cardan wheel (a body turning against the crank at its speed), and the case has none ({})",
+                names.join(", ")
+            ),
+        ));
+    }
     if gear.is_some() && setups.iter().all(|s| s.gear_ratings.is_none()) {
         return Err(invalid(
             "gear",

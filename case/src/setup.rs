@@ -19,6 +19,10 @@ pub struct Setup {
     pub losses: Option<LossBudget>,
     /// The machine's balance of it: shaking forces and moments, and the machine's torque.
     pub balance: MachineStage,
+    /// What of the case does not apply to this mechanism and is ignored for it, one sentence
+    /// each (`[balance] cardan_counterweights` on a mechanism without a cardan wheel): the
+    /// run's warnings in `summary.json`.
+    pub notes: Vec<String>,
 }
 
 impl Setup {
@@ -54,10 +58,18 @@ impl Setup {
         };
         let balance = MachineStage::new(machine.0, Arc::clone(shared), machine.1)
             .map_err(|e| invalid("layout", &format!("(for the {})", mechanism.name()), &e))?;
+        let mut notes = Vec::new();
+        if machine.0.cardan_counterweights && !machine.0.cardan_pair_applies(mechanism) {
+            notes.push(format!(
+                "balance.cardan_counterweights = true is ignored: the {} has no cardan wheel (a body turning against the crank) to carry the pair",
+                mechanism.name()
+            ));
+        }
         Ok(Self {
             gear_ratings,
             losses,
             balance,
+            notes,
         })
     }
 

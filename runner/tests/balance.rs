@@ -477,10 +477,6 @@ fn bad_layouts_and_balance_are_refused_naming_the_field() {
             "balance.balance_shafts",
         ),
         (
-            "[balance]\ncardan_counterweights = true",
-            "balance.cardan_counterweights",
-        ),
-        (
             "[masses]\ncrank_unbalance = -0.01",
             "masses.crank_unbalance",
         ),
@@ -494,8 +490,60 @@ fn bad_layouts_and_balance_are_refused_naming_the_field() {
         let e = with(tables);
         assert!(e.contains(field), "{tables}: {e}");
     }
-    // The pair on a slider-crank says which mechanism cannot form it.
-    assert!(with("[balance]\ncardan_counterweights = true").contains("slider_crank"));
+    // The pair in a case of no mechanism with a cardan wheel says which mechanisms it has.
+    let e = refused(&text(
+        "\"slider_crank\"",
+        360,
+        "[balance]\ncardan_counterweights = true",
+    ));
+    assert!(
+        e.contains("balance.cardan_counterweights") && e.contains("slider_crank"),
+        "{e}"
+    );
+}
+
+/// `[balance] cardan_counterweights = true` in a case comparing the slider-crank with the
+/// cardan gear (issue 35 §4) applies to the mechanism with a cardan wheel, as
+/// `[masses.cardan_gear]` does: the cardan gear's results are bit for bit those of a case of
+/// the cardan gear alone with the pair (its first order cancelled: 1e-12 of the unbalanced
+/// one's, round-off), the slider-crank's those of the case without `[balance]`, with a
+/// warning in `summary.json` saying the pair is ignored for it.
+#[test]
+fn the_cardan_pair_applies_to_the_mechanisms_with_a_cardan_wheel() {
+    let masses = "[masses.cardan_gear]\nwheel_mass = 0.4\ncrank_unbalance = 0.01";
+    let pair = format!("{masses}\n[balance]\ncardan_counterweights = true");
+    let both = case(&text("\"slider_crank\", \"cardan_gear\"", 360, &pair));
+    let compared = run_case(&both, None).unwrap_or_else(|e| panic!("{e}"));
+    let bits = |r: &[MechanismResult], label: &str| -> Vec<(String, u64)> {
+        let r = r.iter().find(|r| r.label == label).expect(label);
+        r.summary
+            .metrics
+            .iter()
+            .map(|m| (m.name.clone(), m.value.to_bits()))
+            .collect()
+    };
+    let cardan = results(&text("\"cardan_gear\"", 360, &pair));
+    let slider = results(&text("\"slider_crank\"", 360, masses));
+    assert_eq!(bits(&compared, "cardan_gear"), bits(&cardan, "cardan_gear"));
+    assert_eq!(
+        bits(&compared, "slider_crank"),
+        bits(&slider, "slider_crank")
+    );
+    let bare = results(&text("\"cardan_gear\"", 360, masses));
+    let first = |r: &[MechanismResult]| metric(r, "cardan_gear", "shaking_force_order_1");
+    assert!(
+        first(&cardan) < 1e-12 * first(&bare),
+        "{} of {}",
+        first(&cardan),
+        first(&bare)
+    );
+    let summary = cardan_runner::output::summary_json(&both, &compared);
+    let warnings = summary["warnings"].as_array().expect("warnings");
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    let w = warnings[0].as_str().unwrap();
+    for part in ["slider_crank", "cardan_counterweights", "ignored"] {
+        assert!(w.contains(part), "{part}: {w}");
+    }
 }
 
 /// `summary.json` names the machine its balance metrics are of: the layout's kind, cylinders
