@@ -98,7 +98,6 @@ fn a_runs_own_pressure_column_fed_back_as_a_trace() {
         let out = dir.path().join(out);
         std::fs::create_dir_all(&out).unwrap();
         let r = cardan_runner::run_case(&case, Some(&out)).unwrap_or_else(|e| panic!("{e}"));
-        let csv = std::fs::read_to_string(out.join("slider_crank.csv")).unwrap();
         r.into_iter()
             .next()
             .unwrap()
