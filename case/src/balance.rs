@@ -123,6 +123,23 @@ pub struct LayoutTable {
     pub axial_positions: Option<Vec<Quantity<Length>>>,
 }
 
+impl Cycle {
+    /// The crank angle of one cycle, rad: every cylinder fires once in it.
+    fn angle(self) -> f64 {
+        match self {
+            Cycle::FourStroke => 2.0 * TAU,
+            Cycle::TwoStroke => TAU,
+        }
+    }
+}
+
+/// The even-firing crank of an inline machine of `count` cylinders whose cycle is
+/// `cycle_angle` (rad): the usual firing order, one firing interval of `count` cylinders
+/// (720°/count four-stroke, 360°/count two-stroke) between throws fired one after the other.
+fn inline_throws(count: usize, cycle_angle: f64) -> Vec<f64> {
+    throws_from_firing_order(&inline_firing_order(count), cycle_angle / count as f64)
+}
+
 /// The usual firing order of an inline machine of `n` cylinders (of a four-stroke; a two-stroke
 /// is given the same order, its throws 360°/n apart instead of 720°/n).
 fn inline_firing_order(n: usize) -> Vec<usize> {
@@ -265,11 +282,7 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
             Some(order)
         }
     };
-    // The crank angle of one cycle: every cylinder fires once in it.
-    let cycle_angle = match t.cycle {
-        Cycle::FourStroke => 2.0 * TAU,
-        Cycle::TwoStroke => TAU,
-    };
+    let cycle_angle = t.cycle.angle();
     let interval = cycle_angle / n as f64;
     let spacing = t.cylinder_spacing.as_ref().map_or(0.1, |s| s.si);
     let throws = per_cylinder("crank_angles", &t.crank_angles, n, |q| q.si, invalid)?;
@@ -286,26 +299,19 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
         Some(b) => b.si,
         None => PI / 2.0,
     };
-    // The even-firing crank of an inline machine of `count` cylinders of the case's cycle: the
-    // usual firing order, one firing interval of `count` cylinders (720°/count four-stroke,
-    // 360°/count two-stroke) between throws fired one after the other.
-    let inline_throws = |count: usize| {
-        let order = inline_firing_order(count);
-        throws_from_firing_order(&order, cycle_angle / count as f64)
-    };
     // Each cylinder: (default throw, axis angle, axial position).
     let cylinders: Vec<(f64, f64, f64)> = match kind {
         LayoutKind::Inline => {
             let default = match &firing {
                 Some(order) => throws_from_firing_order(order, interval),
-                None => inline_throws(n),
+                None => inline_throws(n, cycle_angle),
             };
             (0..n)
                 .map(|i| (default[i], 0.0, i as f64 * spacing))
                 .collect()
         }
         LayoutKind::Vee => {
-            let pins = inline_throws(n / 2);
+            let pins = inline_throws(n / 2, cycle_angle);
             (0..n)
                 .map(|i| {
                     let side = if i % 2 == 0 { -0.5 } else { 0.5 };
