@@ -143,9 +143,11 @@ fn the_cardan_pair_loads_the_joints_and_leaves_the_frame_unshaken() {
     };
     let mut readings = 0;
     for (name, m) in every_machine() {
-        let Ok(prepared) = machine.prepare(Arc::from(m)) else {
+        // A mechanism without a cardan wheel ignores the pair (issue 35).
+        if !machine.cardan_pair_applies(m.as_ref()) {
             continue;
-        };
+        }
+        let prepared = machine.prepare(Arc::from(m)).unwrap();
         readings += 1;
         let equipped = prepared.mechanism().as_ref();
         let t = equipped.topology();
