@@ -29,8 +29,9 @@ pub struct BalanceTable {
     #[serde(default)]
     pub balance_shafts: BalanceShafts,
     /// The counterweight pair on the crank and the cardan wheel of every cylinder that cancels
-    /// the mechanism's first-order shaking force (a mechanism with a body turning against the
-    /// crank, the cardan wheel); default false.
+    /// the mechanism's first-order shaking force; default false. It applies to the mechanisms
+    /// with a body turning against the crank (the cardan wheel); the others ignore it, with a
+    /// warning in the summary (a case of none of them is refused).
     #[serde(default)]
     pub cardan_counterweights: bool,
 }
@@ -100,7 +101,9 @@ pub struct LayoutTable {
     /// Number of cylinders, 1 to 24.
     pub cylinders: Whole<1, 24>,
     /// Each cylinder's crank throw ahead of cylinder 1's (degrees or with a unit), cylinder 1
-    /// first; default: the layout's usual even-firing crankshaft.
+    /// first; default: the layout's usual even-firing crankshaft of the `cycle` (an inline
+    /// four-stroke's throws 720°/N apart in the firing order, a two-stroke's 360°/N: 0° and
+    /// 180° for a two-stroke twin).
     pub crank_angles: Option<Vec<Quantity<Angle>>>,
     /// The cylinders in firing order, a permutation of 1..N; default: the usual order of an
     /// inline machine (1-3-4-2, 1-5-3-6-2-4, ...), else the even firing the throws allow.
@@ -120,7 +123,25 @@ pub struct LayoutTable {
     pub axial_positions: Option<Vec<Quantity<Length>>>,
 }
 
-/// The usual firing order of an inline machine of `n` cylinders (four-stroke).
+impl Cycle {
+    /// The crank angle of one cycle, rad: every cylinder fires once in it.
+    fn angle(self) -> f64 {
+        match self {
+            Cycle::FourStroke => 2.0 * TAU,
+            Cycle::TwoStroke => TAU,
+        }
+    }
+}
+
+/// The even-firing crank of an inline machine of `count` cylinders whose cycle is
+/// `cycle_angle` (rad): the usual firing order, one firing interval of `count` cylinders
+/// (720°/count four-stroke, 360°/count two-stroke) between throws fired one after the other.
+fn inline_throws(count: usize, cycle_angle: f64) -> Vec<f64> {
+    throws_from_firing_order(&inline_firing_order(count), cycle_angle / count as f64)
+}
+
+/// The usual firing order of an inline machine of `n` cylinders (of a four-stroke; a two-stroke
+/// is given the same order, its throws 360°/n apart instead of 720°/n).
 fn inline_firing_order(n: usize) -> Vec<usize> {
     match n {
         3 => vec![1, 3, 2],
@@ -261,10 +282,8 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
             Some(order)
         }
     };
-    let interval = match t.cycle {
-        Cycle::FourStroke => 2.0 * TAU / n as f64,
-        Cycle::TwoStroke => TAU / n as f64,
-    };
+    let cycle_angle = t.cycle.angle();
+    let interval = cycle_angle / n as f64;
     let spacing = t.cylinder_spacing.as_ref().map_or(0.1, |s| s.si);
     let throws = per_cylinder("crank_angles", &t.crank_angles, n, |q| q.si, invalid)?;
     let axes = per_cylinder("cylinder_axes", &t.cylinder_axes, n, |q| q.si, invalid)?;
@@ -280,23 +299,19 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
         Some(b) => b.si,
         None => PI / 2.0,
     };
-    let inline_throws = |count: usize| {
-        let order = inline_firing_order(count);
-        throws_from_firing_order(&order, 2.0 * TAU / count as f64)
-    };
     // Each cylinder: (default throw, axis angle, axial position).
     let cylinders: Vec<(f64, f64, f64)> = match kind {
         LayoutKind::Inline => {
             let default = match &firing {
                 Some(order) => throws_from_firing_order(order, interval),
-                None => inline_throws(n),
+                None => inline_throws(n, cycle_angle),
             };
             (0..n)
                 .map(|i| (default[i], 0.0, i as f64 * spacing))
                 .collect()
         }
         LayoutKind::Vee => {
-            let pins = inline_throws(n / 2);
+            let pins = inline_throws(n / 2, cycle_angle);
             (0..n)
                 .map(|i| {
                     let side = if i % 2 == 0 { -0.5 } else { 0.5 };
@@ -307,8 +322,9 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
         LayoutKind::Boxer => {
             // Opposed pairs on throws 180° apart: both pistons at their top dead centres
             // together; the pairs' throws evenly apart (360°/pairs, in the inline order of as
-            // many cylinders): the flat four's 0°, 180°, 180°, 0°, free of first-order
-            // couples, its second-order couple left (docs/validation/balance.md).
+            // many cylinders, whatever the cycle): the flat four's 0°, 180°, 180°, 0°, free of
+            // first-order couples, its second-order couple left (docs/validation/balance.md).
+            // A two-stroke boxer fires each opposed pair together, the pairs 360°/pairs apart.
             let m = n / 2;
             let pairs = throws_from_firing_order(&inline_firing_order(m), TAU / m as f64);
             (0..n)

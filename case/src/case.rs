@@ -599,6 +599,21 @@ fn check_machine(
         Machine::Pump => cardan_dynamics::MachineKind::Pump,
         Machine::Engine => cardan_dynamics::MachineKind::Engine,
     };
+    if machine.cardan_counterweights
+        && !mechanisms
+            .iter()
+            .any(|m| machine.cardan_pair_applies(m.as_ref()))
+    {
+        let names: Vec<&str> = mechanisms.iter().map(|m| m.name()).collect();
+        return Err(invalid(
+            "balance.cardan_counterweights",
+            &"true",
+            &format!(
+                "applies to a mechanism with a cardan wheel (a body turning against the crank at its speed), and the case has none ({})",
+                names.join(", ")
+            ),
+        ));
+    }
     let mut machines = Vec::with_capacity(mechanisms.len());
     for m in mechanisms {
         if n > 1 && !m.has_cylinder() {

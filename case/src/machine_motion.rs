@@ -29,8 +29,9 @@ pub struct LoadTable {
     /// A constant torque, N·m ("-200 N*m", "kN*m", "lbf*ft").
     pub torque: Option<Quantity<Torque>>,
     /// A torque over one period of crank angle: [[angle, torque], ...], angles (degrees, or with
-    /// a unit) strictly increasing, the last a period after the first with the first's torque;
-    /// linear in between and repeated every period.
+    /// a unit) strictly increasing, the last a period after the first with the first's torque
+    /// (within 1e-9 of the table's largest |torque|, then taken as the first's); linear in
+    /// between and repeated every period.
     pub torque_table: Option<Vec<(Quantity<Angle>, Quantity<Torque>)>>,
     /// k of a term k·ω, N·m·s/rad: a motor's falling characteristic (negative).
     pub torque_per_speed: Option<Quantity<Number>>,
@@ -141,8 +142,15 @@ pub(crate) fn build(
     }))
 }
 
+/// The relative tolerance of a periodic torque table's closure: its last torque (a period after
+/// the first) must equal the first's within this fraction of the table's largest |torque|, and
+/// is then taken as the first's. A table computed from a periodic function leaves round-off
+/// there (−1.7e-13 N·m where 0 was meant, against torques of kN·m); a real mismatch is far
+/// larger.
+pub const TABLE_CLOSURE: f64 = 1e-9;
+
 /// A periodic torque table: at least two points, angles strictly increasing, the last's torque
-/// the first's.
+/// the first's within [`TABLE_CLOSURE`].
 fn table(
     points: &[(Quantity<Angle>, Quantity<Torque>)],
     invalid: &Invalid,
@@ -165,19 +173,21 @@ fn table(
         }
     }
     let (first, last) = (&points[0], &points[points.len() - 1]);
-    if last.1.si != first.1.si {
+    let largest = points.iter().map(|p| p.1.si.abs()).fold(0.0, f64::max);
+    if (last.1.si - first.1.si).abs() > TABLE_CLOSURE * largest {
         return Err(invalid(
             &format!("{field}[{}]", points.len() - 1),
             &last.1.written,
             &format!(
-                "the table is periodic: its last point, a period after the first, must have the first's torque ({})",
+                "the table is periodic: its last point, a period after the first, must have the first's torque ({}) within {TABLE_CLOSURE:e} of the table's largest torque ({largest} N*m)",
                 first.1.written
             ),
         ));
     }
     let start = first.0.si;
-    Ok(Table {
-        start,
-        points: points.iter().map(|(a, t)| (a.si - start, t.si)).collect(),
-    })
+    let mut points: Vec<(f64, f64)> = points.iter().map(|(a, t)| (a.si - start, t.si)).collect();
+    // Within the tolerance the last torque is the first's: the table exactly periodic.
+    let n = points.len();
+    points[n - 1].1 = points[0].1;
+    Ok(Table { start, points })
 }

@@ -21,6 +21,10 @@ pub struct Setup {
     /// The machine's stage: every cylinder's loads, the machine's torque, journal and pin
     /// loads, its shaking forces and moments.
     pub balance: MachineStage,
+    /// What of the case does not apply to this mechanism and is ignored for it, one sentence
+    /// each (`[balance] cardan_counterweights` on a mechanism without a cardan wheel): the
+    /// run's warnings in `summary.json`.
+    pub notes: Vec<String>,
 }
 
 impl Setup {
@@ -57,6 +61,7 @@ impl Setup {
         Ok(Self {
             gear_ratings,
             losses,
+            notes: machine.0.notes.clone(),
             machine: Arc::clone(machine.0),
             balance,
         })

@@ -335,3 +335,37 @@ fn concurrent_runs_on_one_folder_all_succeed() {
         assert!(out.join("k/summary.json").is_file());
     }
 }
+
+/// `cardan check` agrees with `cardan run` on `[balance] cardan_counterweights = true`
+/// (issue 35 §4): valid in a case comparing the slider-crank with the cardan gear (the pair
+/// applies to the cardan gear, the slider-crank ignores it), refused naming the field in a
+/// case of the slider-crank alone.
+#[test]
+fn check_takes_the_cardan_pair_where_a_run_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let pair = |mechanisms: &str| {
+        let text = shipped()
+            .replace(
+                "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
+                &format!("mechanisms = [{mechanisms}]"),
+            )
+            .replace(
+                "[masses",
+                "[balance]\ncardan_counterweights = true\n\n[masses",
+            );
+        assert!(text.contains("cardan_counterweights") && text.contains(mechanisms));
+        let file = dir.path().join("pair.toml");
+        std::fs::write(&file, text).unwrap();
+        cardan(&[&"check", &file])
+    };
+    let both = pair("\"slider_crank\", \"cardan_gear\"");
+    assert_eq!(both.status.code(), Some(0), "{both:?}");
+    let alone = pair("\"slider_crank\"");
+    assert_eq!(alone.status.code(), Some(1), "{alone:?}");
+    let said = format!(
+        "{}{}",
+        String::from_utf8_lossy(&alone.stdout),
+        String::from_utf8_lossy(&alone.stderr)
+    );
+    assert!(said.contains("balance.cardan_counterweights"), "{said}");
+}

@@ -477,10 +477,6 @@ fn bad_layouts_and_balance_are_refused_naming_the_field() {
             "balance.balance_shafts",
         ),
         (
-            "[balance]\ncardan_counterweights = true",
-            "balance.cardan_counterweights",
-        ),
-        (
             "[masses]\ncrank_unbalance = -0.01",
             "masses.crank_unbalance",
         ),
@@ -494,8 +490,60 @@ fn bad_layouts_and_balance_are_refused_naming_the_field() {
         let e = with(tables);
         assert!(e.contains(field), "{tables}: {e}");
     }
-    // The pair on a slider-crank says which mechanism cannot form it.
-    assert!(with("[balance]\ncardan_counterweights = true").contains("slider_crank"));
+    // The pair in a case of no mechanism with a cardan wheel says which mechanisms it has.
+    let e = refused(&text(
+        "\"slider_crank\"",
+        360,
+        "[balance]\ncardan_counterweights = true",
+    ));
+    assert!(
+        e.contains("balance.cardan_counterweights") && e.contains("slider_crank"),
+        "{e}"
+    );
+}
+
+/// `[balance] cardan_counterweights = true` in a case comparing the slider-crank with the
+/// cardan gear (issue 35 §4) applies to the mechanism with a cardan wheel, as
+/// `[masses.cardan_gear]` does: the cardan gear's results are bit for bit those of a case of
+/// the cardan gear alone with the pair (its first order cancelled: 1e-12 of the unbalanced
+/// one's, round-off), the slider-crank's those of the case without `[balance]`, with a
+/// warning in `summary.json` saying the pair is ignored for it.
+#[test]
+fn the_cardan_pair_applies_to_the_mechanisms_with_a_cardan_wheel() {
+    let masses = "[masses.cardan_gear]\nwheel_mass = 0.4\ncrank_unbalance = 0.01";
+    let pair = format!("{masses}\n[balance]\ncardan_counterweights = true");
+    let both = case(&text("\"slider_crank\", \"cardan_gear\"", 360, &pair));
+    let compared = run_case(&both, None).unwrap_or_else(|e| panic!("{e}"));
+    let bits = |r: &[MechanismResult], label: &str| -> Vec<(String, u64)> {
+        let r = r.iter().find(|r| r.label == label).expect(label);
+        r.summary
+            .metrics
+            .iter()
+            .map(|m| (m.name.clone(), m.value.to_bits()))
+            .collect()
+    };
+    let cardan = results(&text("\"cardan_gear\"", 360, &pair));
+    let slider = results(&text("\"slider_crank\"", 360, masses));
+    assert_eq!(bits(&compared, "cardan_gear"), bits(&cardan, "cardan_gear"));
+    assert_eq!(
+        bits(&compared, "slider_crank"),
+        bits(&slider, "slider_crank")
+    );
+    let bare = results(&text("\"cardan_gear\"", 360, masses));
+    let first = |r: &[MechanismResult]| metric(r, "cardan_gear", "shaking_force_order_1");
+    assert!(
+        first(&cardan) < 1e-12 * first(&bare),
+        "{} of {}",
+        first(&cardan),
+        first(&bare)
+    );
+    let summary = cardan_runner::output::summary_json(&both, &compared);
+    let warnings = summary["warnings"].as_array().expect("warnings");
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    let w = warnings[0].as_str().unwrap();
+    for part in ["slider_crank", "cardan_counterweights", "ignored"] {
+        assert!(w.contains(part), "{part}: {w}");
+    }
 }
 
 /// `summary.json` names the machine its balance metrics are of: the layout's kind, cylinders
@@ -524,5 +572,63 @@ fn the_summary_names_the_machine_the_balance_metrics_are_of() {
     assert_eq!(
         layout("[layout]\nkind = \"radial\"\ncylinders = 5")["kind"],
         "radial"
+    );
+}
+
+/// Each cylinder's throw and firing delay, degrees (rounded to 1e-6°).
+fn throws_and_delays(c: &Case) -> (Vec<f64>, Vec<f64>) {
+    let deg = |x: f64| (x.to_degrees() * 1e6).round() / 1e6;
+    let b = &c.balance;
+    (
+        b.layout.cylinders.iter().map(|c| deg(c.throw)).collect(),
+        b.firing_delay.iter().map(|&d| deg(d)).collect(),
+    )
+}
+
+/// A two-stroke layout without a firing order (issue 35 §1) gets a two-stroke's crank: an inline
+/// machine's throws 360°/N apart in the usual firing order (a twin's 0° and 180°, not the
+/// four-stroke twin's 0° and 0°; a four's 0°, 90°, 270°, 180° of 1-3-4-2, not 0°, 180°, 180°,
+/// 0°), each cylinder firing at its own top dead centre (a two-stroke fires every revolution:
+/// delay = −throw mod 360°); a vee's pins those of an inline of half as many cylinders (a 90°
+/// vee four fires every 90°, not two cylinders at once). The twin is bit for bit the twin
+/// with `firing_order = [1, 2]` written out.
+#[test]
+fn a_two_stroke_layout_defaults_to_a_two_stroke_crank() {
+    let layout = |tables: &str| case(&text("\"slider_crank\", \"cardan_gear\"", 360, tables));
+    let twin = "[layout]\ncylinders = 2\ncycle = \"two_stroke\"";
+    assert_eq!(
+        throws_and_delays(&layout(twin)),
+        (vec![0.0, 180.0], vec![0.0, 180.0])
+    );
+    assert_eq!(
+        throws_and_delays(&layout("[layout]\ncylinders = 4\ncycle = \"two_stroke\"")),
+        (vec![0.0, 90.0, 270.0, 180.0], vec![0.0, 270.0, 90.0, 180.0])
+    );
+    assert_eq!(
+        throws_and_delays(&layout(
+            "[layout]\nkind = \"vee\"\ncylinders = 4\ncycle = \"two_stroke\""
+        )),
+        (vec![0.0, 0.0, 180.0, 180.0], vec![0.0, 90.0, 180.0, 270.0])
+    );
+    // The same twin with its firing order written out: the same machine, the same results.
+    let explicit = format!("{twin}\nfiring_order = [1, 2]");
+    assert_eq!(layout(twin).balance, layout(&explicit).balance);
+    let summary = |tables: &str| {
+        let c = layout(tables);
+        let r = run_case(&c, None).unwrap_or_else(|e| panic!("{e}"));
+        cardan_runner::output::summary_json(&c, &r)
+    };
+    let (default, written) = (summary(twin), summary(&explicit));
+    assert_eq!(default.to_string(), written.to_string());
+    // Throws 180° apart: the twin's first-order shaking force of the slider-crank's
+    // reciprocating masses cancels (with the four-stroke twin's throws it doubles).
+    let one = results(&text("\"slider_crank\"", 360, ""));
+    let two = results(&text("\"slider_crank\"", 360, twin));
+    let first = |r: &[MechanismResult]| metric(r, "slider_crank", "shaking_force_order_1");
+    assert!(
+        first(&two) < 1e-9 * first(&one),
+        "{} vs {}",
+        first(&two),
+        first(&one)
     );
 }

@@ -8,10 +8,16 @@
 //! increase and span one cycle of the machine (360° for a pump, 720° for an engine): the
 //! first row is the cycle's start, the gap from the last row back to the first, a cycle on,
 //! no wider than the widest gap between rows (so the trace covers the cycle as evenly as it
-//! samples it). Between rows the pressure is interpolated linearly, across the wrap too, and
+//! samples it). A last row at the first's angle plus the cycle (within 1e-9 of the cycle: the
+//! closed form, as a run's own CSV over one cycle ends) repeats the first: its pressure must
+//! be the first's within 1e-9 of the trace's largest pressure ([`CLOSURE`]), and it is
+//! dropped. Between rows the pressure is interpolated linearly, across the wrap too, and
 //! it repeats every cycle. The force on each piston is p·A_pis towards the crankshaft, as in
-//! Karhula's models (A6.2.1.1): a trace of gauge pressure gives the net force on a piston
-//! whose crankcase is at ambient.
+//! Karhula's models on their closed strokes (A6.2.1.1), but on every stroke: a trace of gauge
+//! pressure gives the net force on a piston whose crankcase is at ambient. The Karhula models
+//! put no force on their open strokes, where the pressure they report (a run's
+//! `cylinder_pressure_pa`) is ambient: the trace that reproduces such a run's loads is its
+//! `gas_force_n / A_pis` (docs/results.md; `runner/tests/pressure_trace.rs`).
 
 use super::model::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::error::{CaseError, Machine};
@@ -98,6 +104,13 @@ impl ModelTable for PressureTraceTable {
     }
 }
 
+/// The relative tolerance of a trace's closed form: a last row within this fraction of the
+/// cycle of the first's angle plus the cycle is the first row repeated, and its pressure must
+/// be the first's within this fraction of the trace's largest pressure (a trace written from a
+/// periodic computation, as a run's own `cylinder_pressure_pa` column over one cycle, leaves
+/// round-off there; a real mismatch is far larger).
+pub const CLOSURE: f64 = 1e-9;
+
 /// The trace of the CSV `text` over a cycle of `period` (rad), or the rule it breaks (with the
 /// line).
 fn parse(text: &str, period: f64) -> Result<PressureTrace, String> {
@@ -110,7 +123,10 @@ fn parse(text: &str, period: f64) -> Result<PressureTrace, String> {
         _ => return Err("must start with the header line crank_angle_deg,pressure_pa".into()),
     }
     let (mut angles, mut pressures) = (Vec::new(), Vec::new());
+    // The line of the last row read, for the closing row's message.
+    let mut last_line = 0;
     for (n, line) in lines {
+        last_line = n + 1;
         let cells: Vec<&str> = line.split(',').map(str::trim).collect();
         let number = |s: &str| s.parse::<f64>().ok().filter(|x| x.is_finite());
         let (Some(a), Some(p), 2) = (
@@ -141,16 +157,33 @@ fn parse(text: &str, period: f64) -> Result<PressureTrace, String> {
     if angles.len() < 2 {
         return Err("needs at least two rows".into());
     }
-    let span = angles[angles.len() - 1] - angles[0];
-    let widest = angles.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
-    let wrap = angles[0] + period - angles[angles.len() - 1];
     let cycle = period.to_degrees();
-    if wrap <= 0.0 {
+    let span = angles[angles.len() - 1] - angles[0];
+    let closing = span - period;
+    if closing.abs() <= CLOSURE * period {
+        // The closed form: the last row is the first a cycle on, with its pressure.
+        let (first, last) = (pressures[0], pressures[pressures.len() - 1]);
+        let largest = pressures.iter().fold(0.0, |a: f64, &b| a.max(b));
+        if (last - first).abs() > CLOSURE * largest {
+            return Err(format!(
+                "line {last_line}: the row at {:.6}°, the first's angle plus the machine's cycle of {cycle}°, closes the trace: its pressure ({last} Pa) must be the first row's ({first} Pa) within {CLOSURE:e} of the trace's largest ({largest} Pa)",
+                angles[angles.len() - 1].to_degrees()
+            ));
+        }
+        angles.pop();
+        pressures.pop();
+        if angles.len() < 2 {
+            return Err("needs at least two rows besides the one closing the cycle".into());
+        }
+    } else if closing > 0.0 {
         return Err(format!(
-            "spans {:.6}°, more than the machine's cycle of {cycle}°: give one cycle",
-            span.to_degrees()
+            "line {last_line}: spans {:.6}°, {:.3e}° more than the machine's cycle of {cycle}°: give one cycle (a last row at the first's angle plus the cycle, within {CLOSURE:e} of it, closes the trace)",
+            span.to_degrees(),
+            closing.to_degrees()
         ));
     }
+    let widest = angles.windows(2).map(|w| w[1] - w[0]).fold(0.0, f64::max);
+    let wrap = angles[0] + period - angles[angles.len() - 1];
     if wrap > widest * (1.0 + 1e-9) {
         return Err(format!(
             "covers {:.6}° of the machine's cycle of {cycle}°: the gap of {:.6}° back to the first row is wider than any between rows ({:.6}°)",
@@ -243,6 +276,58 @@ mod tests {
             let e = e.to_string();
             assert!(e.contains("gas.file") && e.contains(rule), "{e}");
         }
+    }
+
+    /// The closed form (issue 35 §4): a last row at the first's angle plus the cycle with the
+    /// first's pressure (to round-off: 1e-10 of it) is the open trace, the same pressure at
+    /// every angle; with another pressure it is refused naming the line, both pressures and
+    /// the tolerance; a row past the cycle says by how much, never "spans 360°, more than the
+    /// machine's cycle of 360°".
+    #[test]
+    fn a_trace_closed_by_its_first_row_a_cycle_on() {
+        let open = parse(TRACE, 2.0 * PI).unwrap();
+        let closed = parse(
+            &format!(
+                "{TRACE}360,100000.00001
+"
+            ),
+            2.0 * PI,
+        )
+        .unwrap();
+        for deg in [0.0, 45.0, 300.0, 315.0, 359.0, 360.0, -10.0] {
+            let theta = f64::to_radians(deg);
+            assert_eq!(open.pressure(theta), closed.pressure(theta), "{deg}°");
+        }
+        let e = parse(
+            &format!(
+                "{TRACE}360,1.5e5
+"
+            ),
+            2.0 * PI,
+        )
+        .unwrap_err();
+        for part in [
+            "line 6",
+            "150000 Pa",
+            "100000 Pa",
+            "1e-9",
+            "closes the trace",
+        ] {
+            assert!(e.contains(part), "{part}: {e}");
+        }
+        let e = parse(
+            &format!(
+                "{TRACE}360.001,1e5
+"
+            ),
+            2.0 * PI,
+        )
+        .unwrap_err();
+        assert!(e.contains("1.000e-3° more than"), "{e}");
+        assert!(
+            !e.contains("spans 360°") && !e.contains("spans 360.000000°"),
+            "{e}"
+        );
     }
 
     /// Refused: no header, unsorted, negative, more or less than a cycle, a bad number.

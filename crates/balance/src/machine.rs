@@ -109,8 +109,18 @@ impl MachineBalance {
         self.layout.cylinders.len() == 1 && is_own_frame(&self.layout, 0)
     }
 
+    /// Whether the cardan counterweight pair applies to `mechanism`: asked for
+    /// (`cardan_counterweights`) and the mechanism has a body turning against the crank at its
+    /// speed (a cardan wheel) to carry it. A mechanism without one ignores the pair (a case
+    /// comparing the slider-crank with the cardan gear equips the cardan gear only, as
+    /// `[masses.cardan_gear]` applies to it only).
+    pub fn cardan_pair_applies(&self, mechanism: &dyn Mechanism) -> bool {
+        self.cardan_counterweights && backward_body(mechanism).is_some()
+    }
+
     /// `mechanism` carrying what the machine puts on its bodies besides the crankshaft: with
-    /// `cardan_counterweights`, the pair's wheel counterweight, on the body that turns against
+    /// `cardan_counterweights` and a cardan wheel ([`MachineBalance::cardan_pair_applies`]),
+    /// the pair's wheel counterweight, on the body that turns against
     /// the crank at its speed ([`Mechanism::with_added_mass`]), so that the joint loads, the
     /// drive torque and the kinetic energy have it. Without, or where the mechanism already
     /// carries it (no backward first order left), `mechanism` itself: equipping twice is
@@ -128,10 +138,8 @@ impl MachineBalance {
         }
         let m = mechanism.as_ref();
         let Some(body) = backward_body(m) else {
-            return Err(format!(
-                "balance.cardan_counterweights: the {} has no body turning against the crank at its speed (a cardan wheel) to carry the pair's counterweight",
-                m.name()
-            ));
+            // No cardan wheel: the mechanism ignores the pair.
+            return Ok(mechanism);
         };
         let first = Layout::single().orders(m, &[], 1.0, ORDER_STEPS, 1).force[1];
         let backward = first.backward;
@@ -202,7 +210,7 @@ impl MachineBalance {
             carried += counterweight.mass_radius;
             own.push(counterweight);
         }
-        if self.cardan_counterweights {
+        if self.cardan_pair_applies(m) {
             // The equipped mechanism has no backward first order left (its wheel carries the
             // counterweight): what is left turns with the crank, (m + m_w + m₂)·r_c + m·e
             // towards S, and the pair's crank counterweight opposite S cancels it.

@@ -37,6 +37,10 @@ pub enum MachineKind {
 pub struct Machine {
     /// Pump or engine.
     pub kind: MachineKind,
+    /// What of the machine does not apply to this mechanism and is ignored for it, one
+    /// sentence each (`[balance] cardan_counterweights` on a mechanism without a cardan
+    /// wheel): the run's warnings in `summary.json`.
+    pub notes: Vec<String>,
     /// The layout and devices prepared for the mechanism ([`MachineBalance::prepare`], called
     /// here only): the equipped mechanism, the rotors, the crank's carried masses.
     balance: PreparedBalance,
@@ -70,6 +74,13 @@ impl Machine {
         mechanism: Arc<dyn Mechanism>,
         kind: MachineKind,
     ) -> Result<Self, String> {
+        let mut notes = Vec::new();
+        if machine.cardan_counterweights && !machine.cardan_pair_applies(mechanism.as_ref()) {
+            notes.push(format!(
+                "balance.cardan_counterweights = true is ignored: the {} has no cardan wheel (a body turning against the crank) to carry the pair",
+                mechanism.name()
+            ));
+        }
         let balance = machine.prepare(mechanism)?;
         let layout = balance.layout();
         let cylinders = &layout.cylinders;
@@ -105,6 +116,7 @@ impl Machine {
         let t = balance.mechanism().topology();
         Ok(Self {
             kind,
+            notes,
             phases: machine.phases(),
             axes: layout.axes(),
             pin_of,

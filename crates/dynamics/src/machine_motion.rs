@@ -153,6 +153,11 @@ impl<'a> Acceleration<'a> {
 
     /// (α, J* + J_f) at crank angle `angle` (rad) and speed `speed` (rad/s).
     pub fn at(&mut self, angle: f64, speed: f64) -> Result<(f64, f64), SolveError> {
+        self.at_slope(angle, speed).map(|(a, j, _)| (a, j))
+    }
+
+    /// (α, J* + J_f, dJ*/dθ) at crank angle `angle` (rad) and speed `speed` (rad/s).
+    pub fn at_slope(&mut self, angle: f64, speed: f64) -> Result<(f64, f64, f64), SolveError> {
         // Summed from zero in the cylinders' order: one cylinder's sums are its own terms, bit
         // for bit.
         let (mut inertia, mut derivative, mut gas) = (0.0, 0.0, 0.0);
@@ -171,7 +176,7 @@ impl<'a> Acceleration<'a> {
         let load = self.torques.load.at(angle, speed);
         let drive = load - gas - 0.5 * derivative * speed * speed;
         let Some(friction) = self.friction.as_mut() else {
-            return Ok((drive / j, j));
+            return Ok((drive / j, j, derivative));
         };
         // α = (drive − T_f(α))/j by fixed-point iteration from the frictionless α.
         let failed = |message: String| SolveError::Friction {
@@ -191,7 +196,7 @@ impl<'a> Acceleration<'a> {
                 return Err(failed(format!("its torque is not finite ({torque} N·m)")));
             }
             if (next - alpha).abs() * j <= 1e-12 * (scale + torque) {
-                return Ok((next, j));
+                return Ok((next, j, derivative));
             }
             alpha = next;
         }
@@ -213,6 +218,8 @@ pub struct Point {
     pub time: f64,
     /// J* + J_f there, kg·m².
     pub inertia: f64,
+    /// dJ*/dθ there, kg·m²/rad.
+    pub inertia_slope: f64,
 }
 
 /// One RK4 step of the machine equation from `p` over `h` (rad), at step `step` (for errors).
@@ -246,7 +253,7 @@ pub fn rk4_step(f: &mut Acceleration, p: &Point, h: f64, step: usize) -> Result<
             SolveError::NonFinite(step)
         });
     }
-    let (a1, j1) = f.at(t0 + h, w1)?;
+    let (a1, j1, dj1) = f.at_slope(t0 + h, w1)?;
     let dt = if p.speed > 0.0 {
         let em = 0.5 * (e0 + e1) + h * (k1 - a1) / 8.0;
         let wm = speed(t0 + 0.5 * h, em)?;
@@ -261,6 +268,7 @@ pub fn rk4_step(f: &mut Acceleration, p: &Point, h: f64, step: usize) -> Result<
         acceleration: a1,
         time: p.time + dt,
         inertia: j1,
+        inertia_slope: dj1,
     })
 }
 
@@ -285,14 +293,16 @@ pub struct Cycles {
     pub start: Point,
     /// (time, speed) at the start of every cycle run, the reported one's last.
     pub starts: Vec<(f64, f64)>,
-    /// The reported cycle's smallest and largest speed, rad/s, and its duration, s.
+    /// The reported cycle's smallest and largest speed, rad/s (between the rows too:
+    /// [`hermite_extremes`] of e = ½·ω² on each step), and its duration, s.
     pub speed_min: f64,
     pub speed_max: f64,
     pub duration: f64,
     /// The reported cycle's smallest and largest J* + J_f, kg·m².
     pub inertia_min: f64,
     pub inertia_max: f64,
-    /// The reported cycle's smallest and largest kinetic energy ½·(J* + J_f)·ω², J.
+    /// The reported cycle's smallest and largest kinetic energy ½·(J* + J_f)·ω², J (between
+    /// the rows too, as the speeds).
     pub energy_min: f64,
     pub energy_max: f64,
 }
@@ -326,10 +336,70 @@ impl Cycles {
     }
 }
 
+/// The smallest and largest values over s ∈ [0, 1] of the cubic Hermite interpolant with the
+/// values `y0`, `y1` and the slopes `m0`, `m1` (dy/ds) at its ends (the Hermite basis
+/// 2s³ − 3s² + 1, s³ − 2s² + s, −2s³ + 3s², s³ − s²: Burden & Faires, *Numerical Analysis*,
+/// §3.5): its ends, and its values where its derivative, the quadratic a·s² + b·s + c with
+/// a = 6(y0 − y1) + 3(m0 + m1), b = 6(y1 − y0) − 4·m0 − 2·m1, c = m0, vanishes inside (0, 1)
+/// (the roots by the cancellation-free form q = −(b + sign(b)·√(b² − 4ac))/2, s = q/a, c/q).
+pub fn hermite_extremes(y0: f64, y1: f64, m0: f64, m1: f64) -> (f64, f64) {
+    let y = |s: f64| {
+        let (s2, s3) = (s * s, s * s * s);
+        (2.0 * s3 - 3.0 * s2 + 1.0) * y0
+            + (s3 - 2.0 * s2 + s) * m0
+            + (-2.0 * s3 + 3.0 * s2) * y1
+            + (s3 - s2) * m1
+    };
+    let (mut lo, mut hi) = (y0.min(y1), y0.max(y1));
+    let a = 6.0 * (y0 - y1) + 3.0 * (m0 + m1);
+    let b = 6.0 * (y1 - y0) - 4.0 * m0 - 2.0 * m1;
+    let c = m0;
+    let roots = if a == 0.0 {
+        [if b != 0.0 { -c / b } else { f64::NAN }, f64::NAN]
+    } else {
+        let d = b * b - 4.0 * a * c;
+        let q = -0.5 * (b + b.signum() * d.max(0.0).sqrt());
+        if d < 0.0 || q == 0.0 {
+            [f64::NAN; 2]
+        } else {
+            [q / a, c / q]
+        }
+    };
+    for s in roots {
+        if s > 0.0 && s < 1.0 {
+            let v = y(s);
+            (lo, hi) = (lo.min(v), hi.max(v));
+        }
+    }
+    (lo, hi)
+}
+
+/// The smallest and largest crank speed over the step from `p` to `q` (of `h` rad): those of
+/// the cubic Hermite interpolant of e = ½·ω² (the integrator's state, de/dθ = α: its values and
+/// slopes h·α at both rows, O(h⁴) as the RK4 step itself; the same interpolant as the step's
+/// time), where the net torque changes sign between the rows (ω's extremum) or at the rows.
+fn speed_between(p: &Point, q: &Point, h: f64) -> (f64, f64) {
+    let (lo, hi) = hermite_extremes(p.energy, q.energy, h * p.acceleration, h * q.acceleration);
+    ((2.0 * lo.max(0.0)).sqrt(), (2.0 * hi).sqrt())
+}
+
+/// The smallest and largest kinetic energy ½·(J* + J_f)·ω² = (J* + J_f)·e over the step from
+/// `p` to `q` (of `h` rad): those of its cubic Hermite interpolant, its slope
+/// d((J* + J_f)·e)/dθ = dJ*/dθ·e + (J* + J_f)·α (the net torque on the crank) at both rows.
+fn energy_between(p: &Point, q: &Point, h: f64) -> (f64, f64) {
+    let slope = |r: &Point| h * (r.inertia_slope * r.energy + r.inertia * r.acceleration);
+    hermite_extremes(
+        p.inertia * p.energy,
+        q.inertia * q.energy,
+        slope(p),
+        slope(q),
+    )
+}
+
 /// The first point of `run` under `torques`.
 pub fn first_point(f: &mut Acceleration, run: &SolvedRun) -> Result<Point, SolveError> {
     let w = run.initial_speed;
-    let (a, j) = f.at(run.start, w)?;
+    let (a, j, dj) = f.at_slope(run.start, w)?;
     if w == 0.0 && (a.is_nan() || a <= 0.0) {
         return Err(SolveError::CannotStart(run.start.to_degrees(), a * j));
     }
@@ -340,6 +410,7 @@ pub fn first_point(f: &mut Acceleration, run: &SolvedRun) -> Result<Point, Solve
         acceleration: a,
         time: 0.0,
         inertia: j,
+        inertia_slope: dj,
     })
 }
 
@@ -360,11 +431,13 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
         let (mut elo, mut ehi) = (p.inertia * p.energy, p.inertia * p.energy);
         for k in 0..run.steps {
             let step = cycle * run.steps + k + 1;
-            p = rk4_step(&mut f, &p, h, step)?;
-            (lo, hi) = (lo.min(p.speed), hi.max(p.speed));
-            (jlo, jhi) = (jlo.min(p.inertia), jhi.max(p.inertia));
-            let ke = p.inertia * p.energy;
-            (elo, ehi) = (elo.min(ke), ehi.max(ke));
+            let q = rk4_step(&mut f, &p, h, step)?;
+            let (wlo, whi) = speed_between(&p, &q, h);
+            (lo, hi) = (lo.min(wlo), hi.max(whi));
+            (jlo, jhi) = (jlo.min(q.inertia), jhi.max(q.inertia));
+            let (klo, khi) = energy_between(&p, &q, h);
+            (elo, ehi) = (elo.min(klo), ehi.max(khi));
+            p = q;
         }
         // The next cycle starts exactly a span on, as the grid's last point is `end`.
         p.angle = run.start + span;
@@ -535,5 +608,25 @@ impl MotionSource for SolvedMotion<'_> {
             }
         }
         Some(Ok(state))
+    }
+}
+
+#[cfg(test)]
+mod hermite_tests {
+    use super::hermite_extremes;
+
+    /// The Hermite interpolant reproduces cubics: y = s·(1 − s) (values 0, 0; slopes 1, −1) has
+    /// its maximum 1/4 at s = 1/2; a cubic with its minimum inside,
+    /// y = s³ − s (values 0, 0; slopes −1, 2), minimum −2/(3√3) at s = 1/√3; a monotone one
+    /// (slopes of one sign) has its ends only.
+    #[test]
+    fn the_extremes_of_a_cubic_between_its_ends() {
+        let (lo, hi) = hermite_extremes(0.0, 0.0, 1.0, -1.0);
+        assert_eq!(lo, 0.0);
+        assert!((hi - 0.25).abs() < 1e-15, "{hi}");
+        let (lo, hi) = hermite_extremes(0.0, 0.0, -1.0, 2.0);
+        assert!((lo + 2.0 / (3.0 * 3f64.sqrt())).abs() < 1e-15, "{lo}");
+        assert_eq!(hi, 0.0);
+        assert_eq!(hermite_extremes(1.0, 2.0, 1.0, 1.0), (1.0, 2.0));
     }
 }

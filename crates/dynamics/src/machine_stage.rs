@@ -184,6 +184,9 @@ impl MachineStage {
         let room = self.room.as_mut().expect("room made");
         room.at.resize(n * LANES, CylinderAt::default());
         let first = usize::from(self.machine.train_is_first());
+        if first == n {
+            return Ok(());
+        }
         let families: Vec<&dyn LoadFamily> = match &self.gas {
             Some(g) => vec![&self.inertial, g],
             None => vec![&self.inertial],
@@ -481,6 +484,7 @@ impl Stage for MachineStage {
             gas_work: Integral::default(),
             loss_work: Integral::default(),
             previous: None,
+            others: self.machine.cylinders() > usize::from(self.machine.train_is_first()),
         })
     }
 
@@ -557,6 +561,8 @@ pub struct MachineTotals {
     /// The angle, time and other cylinders' torque, gas torque and loss power at the last step
     /// taken.
     previous: Option<[f64; 5]>,
+    /// Whether the machine has cylinders apart from the train (else their integrals stay 0).
+    others: bool,
 }
 
 impl MachineTotals {
@@ -582,6 +588,9 @@ impl MachineTotals {
             for f in &self.pins {
                 raise_norm(&mut self.pin, f.re, f.im);
             }
+        }
+        if !self.others {
+            return;
         }
         let o = p.others();
         let now = [angle, time, v[o], v[o + 1], v[o + 2]];

@@ -96,7 +96,8 @@ impl Polytropic {
 
 /// A Karhula model on its chamber: `closed(stroke, θ)` gives the pressure on the closed
 /// strokes, where the force is p·A_pis (A6.2.1.1, A6.2.1.13); the open strokes are at ambient
-/// pressure and carry no force.
+/// pressure and carry no force. So the pressure it reports is not force / A_pis on the open
+/// strokes: a pressure trace fed the reported pressure adds p_amb·A_pis there (docs/results.md).
 struct ClosedStrokes<'a, F> {
     chamber: Chamber<'a>,
     ambient: f64,

@@ -284,8 +284,12 @@ fn run_mechanism(
             .map_err(|e| format!("cannot write the per-step files: {e:#}"))?,
         None => chart_rows.and_then(ChartSink::finish),
     };
-    let warnings = sampling_warning(&summary, &shifted, case.steps, per_rev)
-        .into_iter()
+    // What of the case this mechanism ignores, then the sampling check's.
+    let warnings = setup
+        .notes
+        .iter()
+        .cloned()
+        .chain(sampling_warning(&summary, &shifted, case.steps, per_rev))
         .collect();
     let rows = TrainRows {
         charts,
