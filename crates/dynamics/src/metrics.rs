@@ -382,8 +382,8 @@ pub const MACHINE: &[MetricDef] = &[
 /// (eq. 4: D = ω/ω_m) beside the solved motion.
 pub const MACHINE_MOTION: &[MetricDef] = &[
     def("speed_mean", "rad/s", T, K, Ne, "dynamic: time mean of the crank speed over the reported cycle, crank-angle span / cycle_time"),
-    def("speed_min", "rad/s", T, K, Ne, "dynamic: smallest crank speed of the reported cycle"),
-    def("speed_max", "rad/s", T, K, Ne, "dynamic: largest crank speed of the reported cycle"),
+    def("speed_min", "rad/s", T, K, Ne, "dynamic: smallest crank speed of the reported cycle, between the rows too (the cubic Hermite interpolant of ½ω² on each step)"),
+    def("speed_max", "rad/s", T, K, Ne, "dynamic: largest crank speed of the reported cycle, between the rows too (the cubic Hermite interpolant of ½ω² on each step)"),
     def("speed_fluctuation_coefficient", "1", T, K, Lo, "dynamic: (speed_max − speed_min) / speed_mean"),
     def("kinetic_energy_fluctuation", "J", T, K, Ne, "dynamic: largest minus smallest kinetic energy ½·(J* + flywheel)·ω² of the reported cycle (the textbooks' fluctuation of energy ΔE)"),
     def("fluctuation_coefficient_linear", "1", T, K, Ne, "dynamic: the textbooks' linear approximation ΔE / (J_m·speed_mean²), J_m = (reduced_inertia_min + reduced_inertia_max)/2, beside speed_fluctuation_coefficient"),

@@ -33,7 +33,7 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("{joint}_speed_rad_s", "pins: angular velocity of the joint's first body relative to its second"),
     ("{joint}_speed_m_s", "slides: sliding velocity of the first body relative to the second along the slide; meshes: pitch-line velocity relative to the gear carrier"),
     ("{extra}", "a quantity of one mechanism (see its section)"),
-    ("cylinder_pressure_pa", "absolute cylinder pressure (empty without a gas model)"),
+    ("cylinder_pressure_pa", "absolute cylinder pressure (empty without a gas model); not always gas_force_n / piston area: the Karhula models put no force on their open strokes (docs/results.md)"),
     ("gas_force_n", "gas force on the piston, towards the crankshaft (empty without a gas model)"),
     ("{family}_{joint}_force_x_n", "force on the joint's first body from its second, x"),
     ("{family}_{joint}_force_y_n", "the same, y"),
