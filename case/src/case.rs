@@ -178,7 +178,7 @@ pub struct MotionTable {
     pub cycles: Option<Whole<1, 100_000>>,
     /// Dynamic: stop before `cycles` once a cycle ends within this fraction of its start speed
     /// (periodic steady state), from 0 to 1 (exclusive); default: run every cycle.
-    pub steady_tolerance: Option<f64>,
+    pub steady_tolerance: Option<crate::quantity::Ranged<crate::plausible::SteadyTolerance>>,
 }
 
 /// `[output]`: what a case writes besides `summary.json`.
@@ -191,8 +191,9 @@ pub struct OutputTable {
     /// Write `<mechanism>.npy` and `<mechanism>.columns.json`; default false.
     #[serde(default)]
     pub npy: bool,
-    /// Write every n-th step (and the last); default 1, every step.
-    pub decimation: Option<Whole<1, { i64::MAX }>>,
+    /// Write every n-th step (and the last), from 1 to the largest number of steps; default
+    /// 1, every step.
+    pub decimation: Option<Whole<1, MAX_STEPS>>,
     /// Significant digits of the CSV numbers, from 1 to 17; default: the shortest text that
     /// reads back to the same number.
     pub significant_digits: Option<Whole<1, 17>>,
@@ -451,7 +452,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     let dynamics = crate::machine_motion::build(
         m.mode,
         m.cycles.map(|c| c.0),
-        m.steady_tolerance,
+        m.steady_tolerance.as_ref().map(|t| t.si),
         raw.load.as_ref(),
         raw.flywheel.as_ref(),
         &invalid,
