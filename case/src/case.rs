@@ -93,6 +93,28 @@ pub struct Case {
     /// The sweep this case is a point of (its results go to `out/<sweep>/<case>/`), and the
     /// value of each swept field (dotted path, value as written).
     pub sweep: Option<(String, Vec<(String, String)>)>,
+    /// Notes on inputs taken as written that were likely meant otherwise (a bare whole
+    /// `initial_speed` of rpm's size taken as rad/s): printed by `cardan check`, and meant for
+    /// summary.json's `warnings`.
+    pub notes: Vec<String>,
+}
+
+/// Whole bare crank speeds from this many rad/s (955 rpm) up to the plausible bare limit read
+/// like rpm: issue 36.15's 980, taken as 980 rad/s (9358 rpm).
+const RPM_LIKE_SPEED: f64 = 100.0;
+
+/// The note on a bare `initial_speed` that reads like rpm, if it does.
+fn speed_note(speed: &Quantity<AngularSpeed>) -> Option<String> {
+    let x = speed.si;
+    let bare = !speed.written.starts_with('"');
+    (bare && x.fract() == 0.0 && x.abs() >= RPM_LIKE_SPEED).then(|| {
+        let rpm = x * 60.0 / std::f64::consts::TAU;
+        format!(
+            "motion.initial_speed = {0} is taken as {0} rad/s ({rpm:.0} rpm); if {0} rpm was \
+             meant, write \"{0} rpm\"; write \"{0} rad/s\" to keep it without this note",
+            speed.written
+        )
+    })
 }
 
 /// A case file as written: the typed schema of its top level. The mechanisms' own tables
@@ -538,6 +560,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         table_metrics,
         balance,
         sweep: None,
+        notes: speed_note(&m.initial_speed).into_iter().collect(),
     })
 }
 

@@ -270,3 +270,39 @@ fn absurd_values_of_every_bare_number_are_refused_naming_field_value_and_range()
     }
     assert!(checked > 100, "only {checked} values checked");
 }
+
+/// Issue 36.15: a bare whole `initial_speed` of rpm's size (980, taken as 980 rad/s, 9358 rpm)
+/// passes, with a note saying how it was taken; a value with its unit, or a fractional one,
+/// gets none.
+#[test]
+fn a_bare_speed_that_reads_like_rpm_gets_a_note() {
+    let file =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/karhula-pump-r60-l140-a0-w3pi.toml");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let line = "initial_speed = 9.42477796076938";
+    assert!(
+        text.contains(line),
+        "test set-up: {line:?} not in {}",
+        file.display()
+    );
+    let notes = |speed: &str| {
+        let case = cardan_case::case::parse(
+            &file,
+            &text.replacen(line, &format!("initial_speed = {speed}"), 1),
+        )
+        .unwrap();
+        case.notes
+    };
+    let said = notes("980").join("\n");
+    for part in [
+        "motion.initial_speed",
+        "980 rad/s",
+        "9358 rpm",
+        "\"980 rpm\"",
+    ] {
+        assert!(said.contains(part), "{part:?} not in {said:?}");
+    }
+    for quiet in ["\"980 rad/s\"", "\"980 rpm\"", "9.42477796076938", "628.3"] {
+        assert_eq!(notes(quiet), Vec::<String>::new(), "{quiet}");
+    }
+}
