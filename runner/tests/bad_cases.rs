@@ -964,3 +964,21 @@ fn a_mass_a_mechanism_lacks_names_the_tables_it_applies_to() {
         "{common}"
     );
 }
+
+/// Issue 36.15: a bare whole `initial_speed` of rpm's size passes, and summary.json's
+/// `warnings` says how it was taken.
+#[test]
+fn a_bare_speed_that_reads_like_rpm_is_a_warning_of_the_summary() {
+    let text = GOOD.replacen("initial_speed = ", "initial_speed = 980 # ", 1);
+    let case = parse(Path::new("configs/speed.toml"), &text).unwrap();
+    let summary = cardan_runner::output::summary_json(&case, &[]);
+    let warnings = summary["warnings"].to_string();
+    mentions(
+        &warnings,
+        &["motion.initial_speed = 980", "980 rad/s", "9358 rpm"],
+    );
+    let quiet = parse(Path::new("configs/speed.toml"), GOOD).unwrap();
+    assert!(cardan_runner::output::summary_json(&quiet, &[])
+        .get("warnings")
+        .is_none());
+}
