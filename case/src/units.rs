@@ -58,10 +58,10 @@ impl Dimension {
                 ("cm", 1e-2),
                 ("um", 1e-6),
                 ("µm", 1e-6),
-                // The Greek mu (U+03BC) of a keyboard, besides the micro sign (U+00B5).
-                ("μm", 1e-6),
                 ("in", INCH),
                 ("ft", FOOT),
+                // The Greek mu (U+03BC) of a keyboard, besides the micro sign (U+00B5) above.
+                ("μm", 1e-6),
             ],
             Dimension::Angle => &[("deg", PI / 180.0), ("°", PI / 180.0), ("rad", 1.0)],
             Dimension::AngularSpeed => &[
