@@ -98,6 +98,28 @@ pub struct Case {
     /// name and bytes of every file it read (a `[gas]` pressure trace). The runner's input
     /// hash (`run.json`, `shard.json`) is made from it.
     pub input_digest: String,
+    /// Notes on inputs taken as written that were likely meant otherwise (a bare whole
+    /// `initial_speed` of rpm's size taken as rad/s): printed by `cardan check`, and meant for
+    /// summary.json's `warnings`.
+    pub notes: Vec<String>,
+}
+
+/// Whole bare crank speeds from this many rad/s (955 rpm) up to the plausible bare limit read
+/// like rpm: issue 36.15's 980, taken as 980 rad/s (9358 rpm).
+const RPM_LIKE_SPEED: f64 = 100.0;
+
+/// The note on a bare `initial_speed` that reads like rpm, if it does.
+fn speed_note(speed: &Quantity<AngularSpeed>) -> Option<String> {
+    let x = speed.si;
+    let bare = !speed.written.starts_with('"');
+    (bare && x.fract() == 0.0 && x.abs() >= RPM_LIKE_SPEED).then(|| {
+        let rpm = x * 60.0 / std::f64::consts::TAU;
+        format!(
+            "motion.initial_speed = {0} is taken as {0} rad/s ({rpm:.0} rpm); if {0} rpm was \
+             meant, write \"{0} rpm\"; write \"{0} rad/s\" to keep it without this note",
+            speed.written
+        )
+    })
 }
 
 /// A case file as written: the typed schema of its top level. The mechanisms' own tables
@@ -183,7 +205,7 @@ pub struct MotionTable {
     pub cycles: Option<Whole<1, 100_000>>,
     /// Dynamic: stop before `cycles` once a cycle ends within this fraction of its start speed
     /// (periodic steady state), from 0 to 1 (exclusive); default: run every cycle.
-    pub steady_tolerance: Option<f64>,
+    pub steady_tolerance: Option<crate::quantity::Ranged<crate::plausible::SteadyTolerance>>,
 }
 
 /// `[output]`: what a case writes besides `summary.json`.
@@ -196,8 +218,9 @@ pub struct OutputTable {
     /// Write `<mechanism>.npy` and `<mechanism>.columns.json`; default false.
     #[serde(default)]
     pub npy: bool,
-    /// Write every n-th step (and the last); default 1, every step.
-    pub decimation: Option<Whole<1, { i64::MAX }>>,
+    /// Write every n-th step (and the last), from 1 to the largest number of steps; default
+    /// 1, every step.
+    pub decimation: Option<Whole<1, MAX_STEPS>>,
     /// Significant digits of the CSV numbers, from 1 to 17; default: the shortest text that
     /// reads back to the same number.
     pub significant_digits: Option<Whole<1, 17>>,
@@ -469,7 +492,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     let dynamics = crate::machine_motion::build(
         m.mode,
         m.cycles.map(|c| c.0),
-        m.steady_tolerance,
+        m.steady_tolerance.as_ref().map(|t| t.si),
         raw.load.as_ref(),
         raw.flywheel.as_ref(),
         &invalid,
@@ -556,6 +579,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         balance,
         sweep: None,
         input_digest: String::new(),
+        notes: speed_note(&m.initial_speed).into_iter().collect(),
     })
 }
 

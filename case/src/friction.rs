@@ -9,9 +9,13 @@
 
 use crate::error::{CaseError, Invalid, Machine};
 use crate::gas::{Clearance, GasCase};
+use crate::plausible::{
+    BearingLoadConstant, FrictionCoefficient, JournalClearanceRatio, JournalLengthRatio,
+    LubricationFactor,
+};
 use crate::quantity::{
-    broken, AngularSpeed, Density, Force, KinematicViscosity, Length, NonNegative, Number,
-    Positive, Pressure, Quantity,
+    broken, AngularSpeed, Density, Force, KinematicViscosity, Length, Positive, Pressure, Quantity,
+    Ranged,
 };
 use crate::units::{to_si, Dimension};
 use cardan_dynamics::loss_models::{self, words, Attachment, Bind, Parameters, NONE};
@@ -36,30 +40,30 @@ pub struct FrictionTable {
     pub rings: Option<Model<Rings>>,
     /// μ_ring of the "karhula" ring pack (default 0.07, Karhula A9.1.4 after Andersson et al.
     /// 2002).
-    pub ring_friction_coefficient: Option<NonNegative<Number>>,
+    pub ring_friction_coefficient: Option<Ranged<FrictionCoefficient>>,
     /// Crown height of the "film" rings' barrel faces, m (default 5 µm).
     pub ring_crown_height: Option<Positive<Length>>,
     /// Model of a piston's slide on the frame (default "karhula").
     pub skirt: Option<Model<Skirt>>,
     /// μ_skirt of the "karhula" skirt (default 0.09, Karhula A9.1.5).
-    pub skirt_friction_coefficient: Option<NonNegative<Number>>,
+    pub skirt_friction_coefficient: Option<Ranged<FrictionCoefficient>>,
     /// Length of the "viscous" skirt, m (default 0.6 × bore, the Thai thesis's proportions).
     pub skirt_length: Option<Positive<Length>>,
     /// Radial clearance of the "viscous" skirt, m (default 20 µm, the Thai thesis's example).
     pub skirt_clearance: Option<Positive<Length>>,
     /// Coulomb μ of every other slide, a Scotch-yoke slot (default 0.09, Karhula's skirt).
-    pub slide_friction_coefficient: Option<NonNegative<Number>>,
+    pub slide_friction_coefficient: Option<Ranged<FrictionCoefficient>>,
     /// Bearing model of every revolute joint (default "karhula").
     pub bearings: Option<Model<Bearings>>,
     /// Lubrication factor f0 of the "karhula" and "palmgren" bearings (default 2, Karhula).
-    pub lubrication_factor: Option<Positive<Number>>,
+    pub lubrication_factor: Option<Ranged<LubricationFactor>>,
     /// Constant of the "karhula" bearings' load term (default 0.0009, which reproduces the
     /// thesis's tables; 0.009 as printed in A9.1.26-27).
-    pub bearing_load_constant: Option<Positive<Number>>,
+    pub bearing_load_constant: Option<Ranged<BearingLoadConstant>>,
     /// L/D of the "petroff" and "short_bearing" journals (default 0.5).
-    pub journal_length_ratio: Option<Positive<Number>>,
+    pub journal_length_ratio: Option<Ranged<JournalLengthRatio>>,
     /// c/R of the "petroff" and "short_bearing" journals (default 0.001).
-    pub journal_clearance_ratio: Option<Positive<Number>>,
+    pub journal_clearance_ratio: Option<Ranged<JournalClearanceRatio>>,
     /// Gear-mesh loss model on the pair of `[gear]` (default "karhula").
     pub gear_mesh: Option<Model<GearMesh>>,
     /// Kinematic viscosity of the oil at running temperature, m²/s (default 5 mm²/s, Karhula).
@@ -72,7 +76,7 @@ pub struct FrictionTable {
     /// Engine only: valve-train model (default "none").
     pub valve_train: Option<Model<ValveTrainModels>>,
     /// Engine only, valve_train = "flat": μ at the cam contact (default 0.08).
-    pub cam_friction_coefficient: Option<NonNegative<Number>>,
+    pub cam_friction_coefficient: Option<Ranged<FrictionCoefficient>>,
     /// Engine only, with a valve train: crank speed the springs are sized for, rad/s (default
     /// 6000 rpm).
     pub valve_spring_speed: Option<Positive<AngularSpeed>>,
@@ -399,23 +403,33 @@ fn si_or<D, const RULE: u8>(q: &Option<Quantity<D, RULE>>, default: f64) -> f64 
     q.as_ref().map_or(default, |q| q.si)
 }
 
+fn ranged_or<R, D>(q: &Option<Ranged<R, D>>, default: f64) -> f64 {
+    q.as_ref().map_or(default, |q| q.si)
+}
+
 /// The models' parameters: the table's, else the defaults.
 fn parameters(t: &FrictionTable) -> Parameters {
     let d = Parameters::default();
     Parameters {
-        ring_friction_coefficient: si_or(&t.ring_friction_coefficient, d.ring_friction_coefficient),
+        ring_friction_coefficient: ranged_or(
+            &t.ring_friction_coefficient,
+            d.ring_friction_coefficient,
+        ),
         ring_crown_height: si_or(&t.ring_crown_height, d.ring_crown_height),
-        skirt_friction_coefficient: si_or(
+        skirt_friction_coefficient: ranged_or(
             &t.skirt_friction_coefficient,
             d.skirt_friction_coefficient,
         ),
         skirt_length: t.skirt_length.as_ref().map(|q| q.si).or(d.skirt_length),
         skirt_clearance: si_or(&t.skirt_clearance, d.skirt_clearance),
-        lubrication_factor: si_or(&t.lubrication_factor, d.lubrication_factor),
-        bearing_load_constant: si_or(&t.bearing_load_constant, d.bearing_load_constant),
-        journal_length_ratio: si_or(&t.journal_length_ratio, d.journal_length_ratio),
-        journal_clearance_ratio: si_or(&t.journal_clearance_ratio, d.journal_clearance_ratio),
-        cam_friction_coefficient: si_or(&t.cam_friction_coefficient, d.cam_friction_coefficient),
+        lubrication_factor: ranged_or(&t.lubrication_factor, d.lubrication_factor),
+        bearing_load_constant: ranged_or(&t.bearing_load_constant, d.bearing_load_constant),
+        journal_length_ratio: ranged_or(&t.journal_length_ratio, d.journal_length_ratio),
+        journal_clearance_ratio: ranged_or(&t.journal_clearance_ratio, d.journal_clearance_ratio),
+        cam_friction_coefficient: ranged_or(
+            &t.cam_friction_coefficient,
+            d.cam_friction_coefficient,
+        ),
     }
 }
 

@@ -6,100 +6,15 @@
 //! written there once. [`Ranged`] and [`PerGear`] are the number with a range and the value
 //! given once or per member, also used by the gear file of `cardan gear`.
 
-use crate::quantity::{broken, Dim, Length, NonNegative, Number, Positive, Pressure, Quantity};
+pub use crate::plausible::{
+    GeometryFactorJ, Hardness, ProfileShift, QualityNumber, RingAddendum, Teeth,
+};
+use crate::quantity::{broken, Dim, Length, NonNegative, Positive, Pressure};
+pub use crate::quantity::{Range, Ranged};
 use cardan_dynamics::{GearMaterial, GearSpec, ToothLoad};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::{de::Error as _, Deserialize, Deserializer};
 use std::borrow::Cow;
-use std::marker::PhantomData;
-
-/// A range a number must lie in, with the rule a value outside it breaks.
-pub trait Range {
-    /// The name in the JSON Schema's definitions.
-    const NAME: &'static str;
-    const MIN: f64;
-    const MAX: f64;
-    /// The ends themselves are outside.
-    const EXCLUSIVE: bool = false;
-    /// Only whole numbers.
-    const WHOLE: bool = false;
-    /// What a value outside breaks ("must be ...").
-    const RULE: &'static str;
-}
-
-/// A number of dimension `D` (SI) in the range `R`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Ranged<R, D = Number> {
-    pub si: f64,
-    /// As the file wrote it.
-    pub written: String,
-    range: PhantomData<(R, D)>,
-}
-
-impl<R: Range, D: Dim> Ranged<R, D> {
-    fn holds(x: f64) -> bool {
-        let inside = if R::EXCLUSIVE {
-            x > R::MIN && x < R::MAX
-        } else {
-            (R::MIN..=R::MAX).contains(&x)
-        };
-        inside && (!R::WHOLE || x.fract() == 0.0)
-    }
-}
-
-impl<'de, R: Range, D: Dim> Deserialize<'de> for Ranged<R, D> {
-    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
-        let q = Quantity::<D>::deserialize(deserializer)?;
-        if !Self::holds(q.si) {
-            return Err(De::Error::custom(broken(&q.written, R::RULE)));
-        }
-        Ok(Self {
-            si: q.si,
-            written: q.written,
-            range: PhantomData,
-        })
-    }
-}
-
-/// Its SI value, as a [`Quantity`]'s.
-impl<R, D> serde::Serialize for Ranged<R, D> {
-    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        serializer.serialize_f64(self.si)
-    }
-}
-
-impl<R: Range, D: Dim> JsonSchema for Ranged<R, D> {
-    fn schema_name() -> Cow<'static, str> {
-        R::NAME.into()
-    }
-
-    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
-        let mut schema = Quantity::<D>::json_schema(generator);
-        let (min, max) = match R::EXCLUSIVE {
-            true => ("exclusiveMinimum", "exclusiveMaximum"),
-            false => ("minimum", "maximum"),
-        };
-        let bounds = |n: &mut serde_json::Map<String, serde_json::Value>| {
-            n.insert(min.into(), R::MIN.into());
-            n.insert(max.into(), R::MAX.into());
-            if R::WHOLE {
-                n.insert("multipleOf".into(), 1.into());
-            }
-        };
-        // A bare number in the range (a string with a unit is checked on reading).
-        if let Some(object) = schema.as_object_mut() {
-            if object.contains_key("anyOf") {
-                if let Some(n) = object["anyOf"].get_mut(0).and_then(|n| n.as_object_mut()) {
-                    bounds(n);
-                }
-            } else {
-                bounds(object);
-            }
-        }
-        schema.insert("description".into(), R::RULE.into());
-        schema
-    }
-}
 
 /// A value given once for both members of a pair, or per member as `[pinion, gear]`.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -143,36 +58,6 @@ impl<T: JsonSchema> JsonSchema for PerGear<T> {
             "anyOf": [one, { "type": "array", "items": one, "minItems": 2, "maxItems": 2 }]
         })
     }
-}
-
-macro_rules! ranges {
-    ($($(#[$doc:meta])* $name:ident: $min:expr, $max:expr, $($flag:ident)* => $rule:literal;)*) => {$(
-        $(#[$doc])*
-        #[derive(Debug, Clone, PartialEq)]
-        pub struct $name;
-        impl Range for $name {
-            const NAME: &'static str = concat!("Gear", stringify!($name));
-            const MIN: f64 = $min;
-            const MAX: f64 = $max;
-            $(const $flag: bool = true;)*
-            const RULE: &'static str = $rule;
-        }
-    )*};
-}
-
-ranges! {
-    /// The teeth of the cardan wheel.
-    Teeth: 5.0, 1000.0, WHOLE => "must be a whole number from 5 to 1000 (the teeth of the mesh's first gear: the cardan wheel)";
-    /// A ring gear's addendum in modules.
-    RingAddendum: 0.0, 1.5, => "must be from 0 to 1.5 modules (1 is a full addendum)";
-    /// A profile shift coefficient.
-    ProfileShift: -1.0, 1.0, => "profile shift coefficients must be from -1 to 1";
-    /// An AGMA quality number.
-    QualityNumber: 5.0, 12.0, => "must be an AGMA quality number Qv from 5 to 12";
-    /// Brinell hardness of through-hardened steel.
-    Hardness: 140.0, 400.0, => "must be from 140 to 400 HB (through-hardened steel, AGMA 2001-D04 Figs. 3 and 8)";
-    /// An AGMA bending geometry factor.
-    GeometryFactorJ: 0.0, 1.0, EXCLUSIVE => "bending geometry factors J must be between 0 and 1";
 }
 
 /// The gears' steel and its treatment, for the allowable stresses.

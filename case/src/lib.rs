@@ -15,6 +15,7 @@ pub mod machine_motion;
 pub mod masses;
 pub mod mechanism_table;
 mod output_metrics;
+pub mod plausible;
 pub mod quantity;
 pub mod schema;
 pub mod setup;

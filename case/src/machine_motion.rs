@@ -4,7 +4,8 @@
 //! [`Dynamics`].
 
 use crate::error::{CaseError, Invalid};
-use crate::quantity::{Angle, Inertia, NonNegative, Number, Positive, Quantity, Torque};
+use crate::plausible::{FluctuationCoefficient, TorquePerSpeed, TorquePerSpeedSquared};
+use crate::quantity::{Angle, Inertia, NonNegative, Quantity, Ranged, Torque};
 use cardan_dynamics::machine_motion::{LoadTorque, Table};
 use schemars::JsonSchema;
 use serde::Deserialize;
@@ -34,9 +35,9 @@ pub struct LoadTable {
     /// between and repeated every period.
     pub torque_table: Option<Vec<(Quantity<Angle>, Quantity<Torque>)>>,
     /// k of a term k·ω, N·m·s/rad: a motor's falling characteristic (negative).
-    pub torque_per_speed: Option<Quantity<Number>>,
+    pub torque_per_speed: Option<Ranged<TorquePerSpeed>>,
     /// k of a term k·ω², N·m·s²/rad²: the fan, pump and propeller law (negative for a load).
-    pub torque_per_speed_squared: Option<Quantity<Number>>,
+    pub torque_per_speed_squared: Option<Ranged<TorquePerSpeedSquared>>,
 }
 
 /// `[flywheel]`: a flywheel on the crankshaft, given or sized.
@@ -48,7 +49,7 @@ pub struct FlywheelTable {
     pub inertia: Option<NonNegative<Inertia>>,
     /// The coefficient of fluctuation of speed (ω_max − ω_min)/ω_mean to meet, from 0 to 1
     /// (exclusive): the solver finds the flywheel inertia that meets it on the solved motion.
-    pub fluctuation_coefficient: Option<Positive<Number>>,
+    pub fluctuation_coefficient: Option<Ranged<FluctuationCoefficient>>,
 }
 
 /// A validated solved motion.

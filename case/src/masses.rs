@@ -105,6 +105,31 @@ pub(crate) fn own_table(value: toml::Value, mechanism: &str) -> Result<MassTable
     Ok(table)
 }
 
+/// Why a mass `field` does not apply to `entry`'s mechanism, and where it may go instead: the
+/// tables of the registered mechanisms it applies to (issue 36.15: not always
+/// `[masses.cardan_gear]`).
+fn not_applying(entry: &Entry, field: &str, own_table: bool) -> String {
+    let tables: Vec<String> = cardan_mechanism::MECHANISMS
+        .iter()
+        .filter(|m| m.name != entry.name && !m.unused_masses.contains(&field))
+        .map(|m| format!("[masses.{}]", m.name))
+        .collect();
+    let instead = match tables.as_slice() {
+        [] => "remove it".to_string(),
+        t => format!(
+            "remove it, or give it in the table of a mechanism it applies to: {}",
+            t.join(", ")
+        ),
+    };
+    match own_table {
+        true => format!(
+            "does not apply to the {} (it has no such body): {instead}",
+            entry.name
+        ),
+        false => format!("does not apply to the {}: {instead}", entry.name),
+    }
+}
+
 /// The mass inputs of one mechanism: its own table's fields, else the common table's.
 pub(crate) fn inputs(
     common: &MassTable,
@@ -119,6 +144,7 @@ pub(crate) fn inputs(
             Some(v) => Some((v, format!("masses.{}.{field}", entry.name))),
             None => common_value.map(|v| (v, format!("masses.{field}"))),
         };
+        let own_table = own_fields.as_ref().and_then(|f| f[i].1).is_some();
         let Some(((x, written), path)) = picked else {
             continue;
         };
@@ -126,10 +152,7 @@ pub(crate) fn inputs(
             return Err(invalid(
                 &path,
                 &written,
-                &format!(
-                    "does not apply to the {}: set it in the table of the mechanism it applies to, e.g. [masses.cardan_gear]",
-                    entry.name
-                ),
+                &not_applying(entry, field, own_table),
             ));
         }
         let slot = match field {

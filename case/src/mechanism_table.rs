@@ -43,7 +43,14 @@ pub(crate) fn options(table: Option<&toml::Value>, entry: &Entry) -> Result<Opti
             },
             OptionKind::Angle => Quantity::<Angle>::from_value(value).map(|q| q.si),
             OptionKind::Length => Quantity::<Length>::from_value(value).map(|q| q.si),
-            OptionKind::Number => Quantity::<Number>::from_value(value).map(|q| q.si),
+            OptionKind::Number { min, max, whole } => Quantity::<Number>::from_value(value)
+                .and_then(|q| {
+                    let inside = (min..=max).contains(&q.si) && (!whole || q.si.fract() == 0.0);
+                    inside.then_some(q.si).ok_or_else(|| {
+                        let what = if whole { "a whole number" } else { "a number" };
+                        format!("must be {what} from {min} to {max}: {}", spec.meaning)
+                    })
+                }),
         };
         let number = number.map_err(|rule| error(field, quantity::broken(value, &rule)))?;
         options.insert(key.clone(), OptionValue::Number(number));
@@ -68,7 +75,13 @@ pub fn json_schema(entry: &Entry) -> Value {
             OptionKind::Choice(words) => json!({ "type": "string", "enum": words }),
             OptionKind::Angle => json!({ "$ref": "#/$defs/Angle" }),
             OptionKind::Length => json!({ "$ref": "#/$defs/Length" }),
-            OptionKind::Number => json!({ "type": "number" }),
+            OptionKind::Number { min, max, whole } => {
+                if whole {
+                    json!({ "type": "integer", "minimum": min as i64, "maximum": max as i64 })
+                } else {
+                    json!({ "type": "number", "minimum": min, "maximum": max })
+                }
+            }
         };
         let mut schema = schema;
         schema["description"] = o.meaning.into();

@@ -180,6 +180,109 @@ impl<D: Dim, const RULE: u8> JsonSchema for Quantity<D, RULE> {
     }
 }
 
+/// A range a bare number must lie in, with the rule (the range and its reason) a value outside
+/// it breaks. Every range of the case file's bare numbers is one line of the table in
+/// [`crate::plausible`].
+pub trait Range {
+    /// The name in the JSON Schema's definitions.
+    const NAME: &'static str;
+    const MIN: f64;
+    const MAX: f64;
+    /// The lower end itself is outside.
+    const MIN_OPEN: bool = false;
+    /// The upper end itself is outside.
+    const MAX_OPEN: bool = false;
+    /// Only whole numbers.
+    const WHOLE: bool = false;
+    /// What a value outside breaks: "must be ..." with the range and its reason or source.
+    const RULE: &'static str;
+}
+
+/// A number of dimension `D` (SI) in the range `R`: read as a [`Quantity`], then checked
+/// against the range; its JSON Schema carries the range's bounds and rule.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ranged<R, D = Number> {
+    pub si: f64,
+    /// As the file wrote it.
+    pub written: String,
+    range: PhantomData<(R, D)>,
+}
+
+impl<R: Range, D: Dim> Ranged<R, D> {
+    /// Whether `x` (SI) lies in the range.
+    pub fn holds(x: f64) -> bool {
+        let above = if R::MIN_OPEN { x > R::MIN } else { x >= R::MIN };
+        let below = if R::MAX_OPEN { x < R::MAX } else { x <= R::MAX };
+        above && below && (!R::WHOLE || x.fract() == 0.0)
+    }
+
+    /// Reads a TOML value: its unit, then the range. `Err` is the rule broken.
+    pub fn from_value(value: &toml::Value) -> Result<Self, String> {
+        let q = Quantity::<D>::from_value(value)?;
+        if !Self::holds(q.si) {
+            return Err(R::RULE.to_string());
+        }
+        Ok(Self {
+            si: q.si,
+            written: q.written,
+            range: PhantomData,
+        })
+    }
+}
+
+impl<'de, R: Range, D: Dim> Deserialize<'de> for Ranged<R, D> {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        let value = toml::Value::deserialize(deserializer)?;
+        Self::from_value(&value).map_err(|rule| De::Error::custom(broken(&value, &rule)))
+    }
+}
+
+/// Its SI value, as a [`Quantity`]'s (the input digest, `crate::digest`).
+impl<R, D> serde::Serialize for Ranged<R, D> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_f64(self.si)
+    }
+}
+
+impl<R: Range, D: Dim> JsonSchema for Ranged<R, D> {
+    fn schema_name() -> Cow<'static, str> {
+        R::NAME.into()
+    }
+
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let mut schema = Quantity::<D>::json_schema(generator);
+        let bounds = |n: &mut serde_json::Map<String, serde_json::Value>| {
+            let min = if R::MIN_OPEN {
+                "exclusiveMinimum"
+            } else {
+                "minimum"
+            };
+            let max = if R::MAX_OPEN {
+                "exclusiveMaximum"
+            } else {
+                "maximum"
+            };
+            n.insert(min.into(), R::MIN.into());
+            n.insert(max.into(), R::MAX.into());
+            if R::WHOLE {
+                n.insert("multipleOf".into(), 1.into());
+            }
+        };
+        // A bare number in the range (a string with a unit is checked on reading).
+        if let Some(object) = schema.as_object_mut() {
+            if object.contains_key("anyOf") {
+                if let Some(n) = object["anyOf"].get_mut(0).and_then(|n| n.as_object_mut()) {
+                    bounds(n);
+                }
+            } else {
+                bounds(object);
+            }
+        }
+        schema.insert("description".into(), R::RULE.into());
+        schema
+    }
+}
+
 /// A whole number from `LOW` to `HIGH` (a count of steps, digits, points).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Whole<const LOW: i64, const HIGH: i64>(pub i64);

@@ -142,14 +142,15 @@ fn values_of(
     else {
         return fail("a range needs `from` and `to` (numbers, or strings with the same unit)");
     };
-    if unit != unit_to {
-        return fail("`from` and `to` must have the same unit");
-    }
+    // An end that is not finite first: its unit is no matter then.
     for (key, x, v) in [("from", from, &range.from), ("to", to, &range.to)] {
         if !x.is_finite() {
             let rule = format!("must be a finite number (it reads as {x})");
             return Err(invalid(file, case, &format!("{field}.{key}"), v, &rule));
         }
+    }
+    if unit != unit_to {
+        return fail("`from` and `to` must have the same unit");
     }
     if from == to {
         return fail("`from` and `to` are equal: every point would be the same (and share one folder); give a single value as a list, e.g. [\"3000 rpm\"]");
@@ -277,6 +278,9 @@ impl Sweep {
             }
             if path == "name" || path.starts_with("sweep") || !path.contains('.') {
                 return Err(invalid(file, &name, &format!("sweep.\"{path}\""), spec, "sweep a field by its dotted path, e.g. \"motion.initial_speed\" (not name or sweep)"));
+            }
+            if path.contains(['[', ']']) {
+                return Err(invalid(file, &name, &format!("sweep.\"{path}\""), spec, "an item of a list cannot be swept on its own: sweep the whole field by its dotted path with a list of its values, e.g. \"layout.crank_angles\" = [[0, 180], [0, 90]]"));
             }
             let values = values_of(file, &name, path, spec)?;
             fields.push(Field {

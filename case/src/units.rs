@@ -60,6 +60,8 @@ impl Dimension {
                 ("µm", 1e-6),
                 ("in", INCH),
                 ("ft", FOOT),
+                // The Greek mu (U+03BC) of a keyboard, besides the micro sign (U+00B5) above.
+                ("μm", 1e-6),
             ],
             Dimension::Angle => &[("deg", PI / 180.0), ("°", PI / 180.0), ("rad", 1.0)],
             Dimension::AngularSpeed => &[
@@ -221,12 +223,27 @@ pub fn short(x: f64) -> String {
     }
 }
 
-/// A value as the message about it shows it: a number through [`short`], the rest as written.
+/// A value as the message about it shows it: every number in it longer than 16 characters
+/// (a float's 300 digits, in a list or a string with a unit too) through [`short`], the rest as
+/// written.
 pub fn show(text: &str) -> String {
-    match text.parse::<f64>() {
-        Ok(x) if text.len() > 16 => short(x),
-        _ => text.to_string(),
+    let mut out = String::with_capacity(text.len().min(256));
+    let mut rest = text;
+    while let Some(start) = rest.find(|c: char| c.is_ascii_digit()) {
+        // A number's run: its digits, point, exponent and signs.
+        let end = rest[start..]
+            .find(|c: char| !(c.is_ascii_digit() || ".eE+-".contains(c)))
+            .map_or(rest.len(), |n| start + n);
+        let run = &rest[start..end];
+        out.push_str(&rest[..start]);
+        match run.parse::<f64>() {
+            Ok(x) if run.len() > 16 => out.push_str(&short(x)),
+            _ => out.push_str(run),
+        }
+        rest = &rest[end..];
     }
+    out.push_str(rest);
+    out
 }
 
 /// "12.5 MPa" → (12.5, "MPa"); "0.5" → (0.5, "").
@@ -333,6 +350,30 @@ mod tests {
             689_475.729_316_8,
             max_relative = 1e-12
         );
+    }
+
+    /// Issue 36.15: a number is shown in a message with at most 17 significant digits, alone,
+    /// in a list or with a unit; the rest as written.
+    #[test]
+    fn messages_show_numbers_short() {
+        let huge = toml::Value::Float(1e308).to_string();
+        assert!(huge.len() > 300, "{huge}");
+        assert_eq!(show(&huge), "1e308");
+        assert_eq!(show(&format!("[{huge}, {huge}]")), "[1e308, 1e308]");
+        assert_eq!(show(&format!("\"{huge} mm\"")), "\"1e308 mm\"");
+        assert_eq!(show("-1000000000000000000000000.0"), "-1e24");
+        for kept in ["0.06", "\"60 mm\"", "[1, 2]", "12", "abc", "\"3000 rpm\""] {
+            assert_eq!(show(kept), kept);
+        }
+    }
+
+    /// Issue 36.15: "60000 μm" with the Greek mu, as keyboards type it, is the micro sign's.
+    #[test]
+    fn both_micro_signs_are_micrometres() {
+        let v = |s: &str| toml::Value::String(s.into());
+        for text in ["60000 \u{03bc}m", "60000 \u{00b5}m", "60000 um"] {
+            assert_relative_eq!(to_si(&v(text), Dimension::Length).unwrap(), 0.06);
+        }
     }
 
     /// The gear calculator's quantities take the same table: hp, lbf·in, kpsi, √psi.

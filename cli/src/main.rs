@@ -232,6 +232,9 @@ fn check(paths: &[PathBuf]) -> (usize, Vec<String>) {
     let (batch, mut failures) = load_batch(paths);
     for c in &batch.cases {
         println!("valid   {} ({})", c.name, c.file.display());
+        for note in &c.notes {
+            eprintln!("note: {}: case \"{}\": {note}", c.file.display(), c.name);
+        }
     }
     let mut valid = batch.cases.len();
     for t in &batch.tables {

@@ -123,9 +123,13 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
         "layout": layout_json(case),
     });
     summary["mechanisms"] = Value::Object(mechanisms);
-    let warnings: Vec<String> = results
-        .iter()
-        .flat_map(|r| r.warnings.iter().map(move |w| format!("{}: {w}", r.label)))
+    // The case's notes (inputs likely meant otherwise), then each crank train's warnings.
+    let warnings: Vec<String> = (case.notes.iter().cloned())
+        .chain(
+            results
+                .iter()
+                .flat_map(|r| r.warnings.iter().map(move |w| format!("{}: {w}", r.label))),
+        )
         .collect();
     if !warnings.is_empty() {
         summary["warnings"] = json!(warnings);

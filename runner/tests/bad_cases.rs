@@ -142,7 +142,11 @@ fn each_rule_names_file_case_field_rule_and_value() {
         (
             "steps = 720",
             "steps = 720\n[masses]\nwheel_inertia = 0.001",
-            &["masses.wheel_inertia", "does not apply to the slider_crank"],
+            &[
+                "masses.wheel_inertia",
+                "does not apply to the slider_crank",
+                "[masses.cardan_gear]",
+            ],
         ),
     ];
     for (from, to, parts) in cases {
@@ -934,4 +938,47 @@ fn a_misspelling_anywhere_names_its_path_and_the_nearest_valid_name() {
         assert!(GOOD.contains(from), "test set-up: {from:?}");
         mentions(&error_of(&GOOD.replacen(from, to, 1)), parts);
     }
+}
+
+/// Issue 36.15: a mass a hypotrochoid does not have is refused naming the tables it may go in,
+/// not always `[masses.cardan_gear]`; in the hypotrochoid's own table, that it has no such body.
+#[test]
+fn a_mass_a_mechanism_lacks_names_the_tables_it_applies_to() {
+    let case = "name = \"h\"\nmachine = \"pump\"\nmechanisms = [\"hypotrochoid\"]\n[geometry]\ncrank_length = \"75 mm\"\nrod_length = \"340 mm\"\nbore = \"100 mm\"\n[motion]\nstart_angle = 90\nend_angle = 810\ninitial_speed = \"1 rad/s\"\nangular_acceleration = 0\nsteps = 7206\n";
+    let own = error_of(&format!("{case}[masses.hypotrochoid]\npiston_mass = 0.4\n"));
+    mentions(
+        &own,
+        &[
+            "masses.hypotrochoid.piston_mass",
+            "does not apply to the hypotrochoid (it has no such body)",
+            "[masses.slider_crank], [masses.cardan_gear], [masses.scotch_yoke]",
+        ],
+    );
+    let common = error_of(&format!("{case}[masses]\nwheel_mass = 0.3\n"));
+    mentions(
+        &common,
+        &["masses.wheel_mass", "does not apply to the hypotrochoid"],
+    );
+    assert!(
+        !common.contains("[masses.slider_crank]") && common.contains("[masses.cardan_gear]"),
+        "{common}"
+    );
+}
+
+/// Issue 36.15: a bare whole `initial_speed` of rpm's size passes, and summary.json's
+/// `warnings` says how it was taken.
+#[test]
+fn a_bare_speed_that_reads_like_rpm_is_a_warning_of_the_summary() {
+    let text = GOOD.replacen("initial_speed = ", "initial_speed = 980 # ", 1);
+    let case = parse(Path::new("configs/speed.toml"), &text).unwrap();
+    let summary = cardan_runner::output::summary_json(&case, &[]);
+    let warnings = summary["warnings"].to_string();
+    mentions(
+        &warnings,
+        &["motion.initial_speed = 980", "980 rad/s", "9358 rpm"],
+    );
+    let quiet = parse(Path::new("configs/speed.toml"), GOOD).unwrap();
+    assert!(cardan_runner::output::summary_json(&quiet, &[])
+        .get("warnings")
+        .is_none());
 }

@@ -63,8 +63,9 @@ fn non_finite_results_fail_the_case_with_step_and_quantity() {
             "piston_acceleration",
         ),
         (
-            format!("{GOOD}{PUMP_GAS}")
-                .replace("polytropic_exponent = 1.4", "polytropic_exponent = 400"),
+            // An exponent of 400 did this before it was refused as implausible (issue 36.5):
+            // an ambient pressure given with its unit, 12^1.4 times which overflows.
+            format!("{GOOD}{PUMP_GAS}ambient_pressure = \"1e307 Pa\"\n"),
             "cylinder_pressure",
         ),
     ] {

@@ -148,6 +148,10 @@ fn bad_sweeps_name_their_field() {
         ("[sweep]\n\"motion.initial_speed\" = []\n", &["sweep.\"motion.initial_speed\"", "non-empty"][..]),
         ("[sweep]\n\"motion.initial_speed\" = { from = 1, to = \"2 rpm\", points = 3 }\n", &["same unit"][..]),
         ("[sweep]\n\"motion.initial_speed\" = { from = 0, to = 2, points = 3, scale = \"log\" }\n", &["positive"][..]),
+        // Issue 36.15: an infinite end is said to be one, not a unit's mismatch.
+        ("[sweep]\n\"motion.initial_speed\" = { from = \"1 rpm\", to = inf, points = 3 }\n", &["sweep.\"motion.initial_speed\".to", "finite"][..]),
+        // Issue 36.15: an item of a list is not a bad case name but cannot be swept alone.
+        ("[sweep]\n\"layout.crank_angles[1]\" = [0, 90]\n", &["sweep.\"layout.crank_angles[1]\"", "item of a list cannot be swept", "\"layout.crank_angles\" = [["][..]),
         ("[sweep]\nname = [\"a\"]\n", &["dotted path"][..]),
         ("[sweep]\nmode = \"zip\"\n\"motion.initial_speed\" = [1, 2]\n\"geometry.bore\" = [0.1]\n", &["as many values"][..]),
         // A swept value is checked like any case value, naming the point.

@@ -1,5 +1,6 @@
 //! The parts of the documentation that are made from the code's registries: the metric table,
-//! the CSV column table and the mechanism list (in README.md or docs/, [`DOCUMENTS`]).
+//! the CSV column table, the mechanism list, the case file's fields and the plausible ranges of
+//! its bare numbers (in README.md or docs/, [`DOCUMENTS`]).
 //! `cargo xtask readme` writes them; a test fails when a document and the registries disagree.
 
 use cardan_mechanism::{JointKind, MachineGeometry, MassInputs, OptionKind, Options, MECHANISMS};
@@ -14,7 +15,18 @@ pub fn sections() -> Vec<(&'static str, String)> {
             "case-fields",
             fields_tables(&cardan_case::json_schema::case_schema()),
         ),
+        ("ranges", ranges_table()),
     ]
+}
+
+/// The plausible ranges of the case file's bare numbers (`cardan_case::plausible::TABLE`):
+/// each range's ends and its rule with the reason.
+fn ranges_table() -> String {
+    let mut t = String::from("| range | from | to | rule and reason |\n|---|---|---|---|\n");
+    for (name, min, max, rule) in cardan_case::plausible::TABLE {
+        t.push_str(&format!("| `{name}` | {min} | {max} | {rule} |\n"));
+    }
+    t
 }
 
 /// The field tables of a case file, one per table, from its JSON Schema: each field, what its
@@ -149,7 +161,10 @@ fn mechanisms_table() -> String {
                 let kind = match o.kind {
                     OptionKind::Angle => "angle".to_string(),
                     OptionKind::Length => "length".to_string(),
-                    OptionKind::Number => "number".to_string(),
+                    OptionKind::Number { min, max, whole } => {
+                        let what = if whole { "whole number" } else { "number" };
+                        format!("{what} from {min} to {max}")
+                    }
                     OptionKind::Choice(w) => w.join(" / "),
                 };
                 format!("`{}` ({kind}): {}", o.name, o.meaning)

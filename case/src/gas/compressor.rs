@@ -3,9 +3,8 @@
 
 use super::model::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::error::{CaseError, Machine};
-use crate::quantity::{
-    GasConstant, NonNegative, Number, Positive, Pressure, Quantity, Temperature,
-};
+use crate::plausible::{ClearanceRatio, CompressorExponent};
+use crate::quantity::{GasConstant, Positive, Pressure, Ranged, Temperature};
 use cardan_gas::compressor::{Compressor, AIR_GAS_CONSTANT};
 use schemars::JsonSchema;
 use serde::Deserialize;
@@ -27,13 +26,13 @@ pub struct CompressorTable {
     /// that the compressor delivers; Pa; required.
     pub delivery_pressure: Positive<Pressure>,
     /// Clearance ratio c = V_comp/V_stroke (zero: no clearance); required.
-    pub clearance_ratio: NonNegative<Number>,
+    pub clearance_ratio: Ranged<ClearanceRatio>,
     /// Polytropic exponent n_c of the compression, at least 1 (1 isothermal, 1.4 isentropic
     /// air); required.
-    pub compression_exponent: Quantity<Number>,
+    pub compression_exponent: Ranged<CompressorExponent>,
     /// Polytropic exponent n_e of the re-expansion of the clearance gas, at least 1. Default:
     /// `compression_exponent`.
-    pub expansion_exponent: Option<Quantity<Number>>,
+    pub expansion_exponent: Option<Ranged<CompressorExponent>>,
     /// Specific gas constant R; J/(kg·K). Default 287.05, air (`cardan_gas::compressor::AIR_GAS_CONSTANT`).
     pub gas_constant: Option<Positive<GasConstant>>,
 }

@@ -4,7 +4,8 @@
 
 use super::model::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::error::{CaseError, Machine};
-use crate::quantity::{Angle, Number, Positive, Pressure, Quantity};
+use crate::plausible::{CompressionRatio, Filling, PolytropicExponent};
+use crate::quantity::{Angle, Positive, Pressure, Quantity, Ranged};
 use cardan_gas::{EngineReading, KarhulaEngine, KarhulaPump, Polytropic};
 use schemars::JsonSchema;
 use serde::Deserialize;
@@ -27,13 +28,13 @@ pub const DEFAULT_AMBIENT_PRESSURE: f64 = 101_325.0;
 #[serde(deny_unknown_fields)]
 pub struct KarhulaPumpTable {
     /// Compression ratio ε = (V_stroke + V_comp)/V_comp, greater than 1; required.
-    pub compression_ratio: Quantity<Number>,
+    pub compression_ratio: Ranged<CompressionRatio>,
     /// Polytropic exponent n of the compression (A6.1.1.11), greater than 1 (1.3-1.4 for air,
     /// Karhula ch. 10); required.
-    pub polytropic_exponent: Quantity<Number>,
+    pub polytropic_exponent: Ranged<PolytropicExponent>,
     /// Filling factor C_fill: the intake charge as a fraction of the uncompressed volume at
     /// ambient pressure (A6.1.1.11; 1.0-1.1). Default 1.
-    pub filling: Option<Positive<Number>>,
+    pub filling: Option<Ranged<Filling>>,
     /// Ambient (intake) pressure p_atm, absolute; Pa. Default 101 325 Pa (the standard
     /// atmosphere, ISO 2533).
     pub ambient_pressure: Option<Positive<Pressure>>,
@@ -45,13 +46,13 @@ pub struct KarhulaPumpTable {
 #[serde(deny_unknown_fields)]
 pub struct KarhulaEngineTable {
     /// Compression ratio ε = (V_stroke + V_comp)/V_comp, greater than 1; required.
-    pub compression_ratio: Quantity<Number>,
+    pub compression_ratio: Ranged<CompressionRatio>,
     /// Polytropic exponent n of the compression (A6.1.1.11), greater than 1 (1.3-1.4 for air,
     /// Karhula ch. 10); required.
-    pub polytropic_exponent: Quantity<Number>,
+    pub polytropic_exponent: Ranged<PolytropicExponent>,
     /// Filling factor C_fill: the intake charge as a fraction of the uncompressed volume at
     /// ambient pressure (A6.1.1.11; 1.0-1.1). Default 1.
-    pub filling: Option<Positive<Number>>,
+    pub filling: Option<Ranged<Filling>>,
     /// Ambient (intake) pressure p_atm, absolute; Pa. Default 101 325 Pa (the standard
     /// atmosphere, ISO 2533).
     pub ambient_pressure: Option<Positive<Pressure>>,
@@ -78,8 +79,8 @@ pub enum KarhulaEngineReading {
 }
 
 fn polytropic(
-    exponent: &Quantity<Number>,
-    filling: &Option<Positive<Number>>,
+    exponent: &Ranged<PolytropicExponent>,
+    filling: &Option<Ranged<Filling>>,
     ambient: &Option<Positive<Pressure>>,
     cx: &Context,
 ) -> Result<Polytropic, CaseError> {

@@ -21,7 +21,8 @@
 
 use super::model::{entry, Clearance, Context, GasEntry, ModelTable, ReadModel};
 use crate::error::{CaseError, Machine};
-use crate::quantity::{Number, Quantity};
+use crate::plausible::CompressionRatio;
+use crate::quantity::Ranged;
 use cardan_gas::{Chamber, GasError, GasMetric, GasModel, PreparedGas};
 use schemars::JsonSchema;
 use serde::Deserialize;
@@ -45,7 +46,7 @@ pub struct PressureTraceTable {
     pub file: String,
     /// Compression ratio of the cylinder, greater than 1; it does not enter the pressure.
     /// Default 10.
-    pub compression_ratio: Option<Quantity<Number>>,
+    pub compression_ratio: Option<Ranged<CompressionRatio>>,
 }
 
 /// The trace, in SI: crank angles (rad, increasing) and absolute pressures (Pa), and the

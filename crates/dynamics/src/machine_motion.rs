@@ -116,7 +116,9 @@ pub const FRICTION_ITERATIONS: usize = 50;
 pub enum SolveError {
     #[error(
         "the machine stops or turns back at step {step} (crank angle {angle_deg:.3}°): the \
-         load and the gas take more than its kinetic energy ({speed:.4} rad/s there)"
+         load and the gas take more than its kinetic energy ({speed:.4} rad/s there); [load] \
+         torques are positive in the direction of rotation: a motor driving the crank forwards is \
+         positive, a load or brake negative"
     )]
     Stops {
         step: usize,

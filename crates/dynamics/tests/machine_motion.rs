@@ -386,6 +386,12 @@ fn a_machine_that_stops_fails_with_its_step_and_angle() {
         e.contains("stops or turns back at step") && e.contains("crank angle"),
         "{e}"
     );
+    // Issue 36.15: the sign convention, as a stop may come from a load's sign.
+    assert!(
+        e.contains("positive in the direction of rotation")
+            && e.contains("a load or brake negative"),
+        "{e}"
+    );
     let e = solve_cycles(&t, &run(360, 3, 0.0)).unwrap_err().to_string();
     assert!(e.contains("cannot start from rest"), "{e}");
     let motor = LoadTorque {

@@ -98,7 +98,11 @@ pub const ENTRY: Entry = Entry {
     options: &[
         OptionSpec {
             name: "angular_modulus",
-            kind: OptionKind::Number,
+            kind: OptionKind::Number {
+                min: 2.0,
+                max: MAX_MODULUS as f64,
+                whole: true,
+            },
             meaning: "m, an integer from 2 to 8: rotor rods and piston links; the ring gear has m+1 times the planet's radius, the crank turns m times as fast as the carrier (2 by default)",
         },
         OptionSpec {

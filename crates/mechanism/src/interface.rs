@@ -219,7 +219,13 @@ impl MachineGeometry {
 pub enum OptionKind {
     Angle,
     Length,
-    Number,
+    /// A pure number from `min` to `max` (only whole numbers if `whole`): every bare number of
+    /// a case file has a plausible range, checked on reading and written in its JSON Schema.
+    Number {
+        min: f64,
+        max: f64,
+        whole: bool,
+    },
     /// One of these words.
     Choice(&'static [&'static str]),
 }
