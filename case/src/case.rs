@@ -414,6 +414,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         bore: g.bore.si,
         pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
     };
+    check_geometry_size(g, &invalid)?;
     let pistons = if g.opposed_pistons { 2 } else { 1 };
     let crank_phase = match &g.crank_phase {
         None => 0.0,
@@ -492,6 +493,41 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
             ));
         }
     }
+    if let (Some(gas), Some(table)) = (&gas, &raw.gas) {
+        let speed = mean_speed(&motion, end_angle);
+        crate::gas::check_ready(
+            gas,
+            table,
+            (file, &case_name, machine),
+            &mechanisms,
+            (geometry.bore, pistons, crank_phase),
+            speed,
+        )
+        .map_err(|e| match e {
+            Ok(e) if e.field == "speed" => invalid(
+                "motion.initial_speed",
+                &m.initial_speed.written,
+                &format!(
+                    "gives a mean crank speed of {} rad/s, which the gas model refuses: {}",
+                    crate::units::show(&e.value.to_string()),
+                    e.rule
+                ),
+            ),
+            Ok(e) => invalid(
+                "geometry.bore",
+                &g.bore.written,
+                &format!(
+                    "with geometry.crank_length = {} the cylinder's {} is {} ({}): {}",
+                    g.crank_length.written,
+                    e.field.replace('_', " "),
+                    crate::units::show(&e.value.to_string()),
+                    if e.field == "bore" { "m" } else { "m³" },
+                    e.rule
+                ),
+            ),
+            Err(e) => e,
+        })?;
+    }
     let gear = raw.gear.as_ref().map(|table| table.spec());
     let friction = match &raw.friction {
         None => None,
@@ -538,6 +574,45 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         balance,
         sweep: None,
     })
+}
+
+/// The mean crank speed of a prescribed `motion` from its start to `end_angle` (rad/s), at which
+/// the gas models are prepared (their speed-dependent timing and heat transfer); the initial
+/// speed if the crank does not get there in a positive time.
+pub fn mean_speed(motion: &CrankMotion, end_angle: f64) -> f64 {
+    match motion.at_angle(end_angle) {
+        Ok(end) if end.time > 0.0 => (end_angle - motion.start_angle) / end.time,
+        _ => motion.initial_speed,
+    }
+}
+
+/// The smallest crank, rod and bore a case may give: 0.1 mm, m.
+pub const MIN_DIMENSION: f64 = 1e-4;
+/// The largest crank, rod and bore a case may give: 10 m, m.
+pub const MAX_DIMENSION: f64 = 10.0;
+
+/// Refuses a crank, rod or bore outside [`MIN_DIMENSION`]..=[`MAX_DIMENSION`], in the unit it was
+/// written in. The reasons: the largest reciprocating machines built (two-stroke marine diesels,
+/// about 1 m bore and 3.5 m stroke) are well inside 10 m; below 0.1 mm a crank train is a
+/// micro-mechanism whose pistons' gas seals, films and heat transfer (the models' correlations:
+/// Annand's, the ring packs') were never fitted, and the cylinder's swept volume (π/4·bore²·stroke)
+/// falls towards the floating-point noise of the chamber's volume. A value outside is a unit
+/// mistake or a typing error far more often than a machine.
+fn check_geometry_size(g: &GeometryTable, invalid: &Invalid) -> Result<(), CaseError> {
+    for (field, q) in [
+        ("geometry.crank_length", &g.crank_length),
+        ("geometry.rod_length", &g.rod_length),
+        ("geometry.bore", &g.bore),
+    ] {
+        if !(MIN_DIMENSION..=MAX_DIMENSION).contains(&q.si) {
+            return Err(invalid(
+                field,
+                &q.written,
+                "must lie from 0.1 mm to 10 m: the largest reciprocating machines built (marine two-strokes, about 1 m bore and 3.5 m stroke) fit well inside, and below 0.1 mm the gas, friction and heat-transfer correlations were never fitted (a unit mistake?)",
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Refuses the loss models a solved motion cannot take among its torques: those whose loss at

@@ -624,6 +624,73 @@ fn what_the_run_would_refuse_is_refused_on_reading() {
     assert!(e.contains("name") && e.contains("at most 200"), "{e}");
 }
 
+/// What the gas model would refuse when the run prepares it is refused on reading, naming the
+/// field the user wrote, in the unit written (issue 36.11): a bore, crank or rod far out of
+/// scale (the run blamed `gas.swept_volume`, no case field), a combustion start outside its
+/// window (refused only at run time, in radians), a compression ratio that overheats the gas
+/// by itself (blamed on the default `fuel_heating_value`).
+#[test]
+fn what_the_gas_model_would_refuse_is_refused_on_reading() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+    let engine = std::fs::read_to_string(dir.join("nunes-op-r26-l90-2000rpm.toml")).unwrap();
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "bore = \"60 mm\"",
+            "bore = \"1e-9 m\"",
+            &["geometry.bore", "\"1e-9 m\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "bore = \"60 mm\"",
+            "bore = \"1e300 m\"",
+            &["geometry.bore", "\"1e300 m\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "bore = \"60 mm\"",
+            "bore = \"0.05 mm\"",
+            &["geometry.bore", "\"0.05 mm\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "crank_length = \"26 mm\"",
+            "crank_length = \"1e-12 m\"",
+            &["geometry.crank_length", "\"1e-12 m\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "rod_length = \"90 mm\"",
+            "rod_length = \"1e300 m\"",
+            &["geometry.rod_length", "\"1e300 m\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "combustion_start = \"350.93 deg\"",
+            "combustion_start = \"700 deg\"",
+            &[
+                "gas.combustion_start",
+                "\"700 deg\"",
+                "between intake_closing and exhaust_opening",
+            ],
+        ),
+        (
+            "compression_ratio = 10 ",
+            "compression_ratio = 1e6 ",
+            &[
+                "gas.compression_ratio",
+                "1000000",
+                "compresses the gas beyond",
+            ],
+        ),
+    ];
+    for (from, to, parts) in cases {
+        assert!(engine.contains(from), "{from}");
+        let e = error_of(&engine.replace(from, to));
+        mentions(&e, parts);
+        assert!(
+            !e.contains("swept_volume") && !e.contains("fuel_heating_value"),
+            "{e}"
+        );
+    }
+    // The same case as shipped reads and its gas is prepared.
+    parse(Path::new("configs/good.toml"), &engine).unwrap();
+}
+
 /// Common mistakes of form (a table written as an array of tables, a whole number written with
 /// a decimal point, a string for a number or a number for a string, a field left out) read as
 /// a person would say them: the field's path, what it must be and the value written, not the
