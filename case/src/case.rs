@@ -457,6 +457,22 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         raw.flywheel.as_ref(),
         &invalid,
     )?;
+    if dynamics.is_some() && m.angular_acceleration.si != 0.0 {
+        return Err(invalid(
+            "motion.angular_acceleration",
+            &m.angular_acceleration.written,
+            "is not read by a dynamic motion (motion.mode = \"dynamic\": the crank's acceleration is solved from its torques): write 0",
+        ));
+    }
+    if let Some(tolerance) = m.steady_tolerance {
+        if m.cycles.as_ref().is_none_or(|c| c.0 <= 1) {
+            return Err(invalid(
+                "motion.steady_tolerance",
+                &tolerance,
+                "stops the cycles of a dynamic motion early, and this one runs a single cycle: set motion.cycles above 1 or remove it",
+            ));
+        }
+    }
     if dynamics.is_some() && (m.initial_speed.si.is_nan() || m.initial_speed.si < 0.0) {
         return Err(invalid(
             "motion.initial_speed",
@@ -527,6 +543,20 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
             ),
             Err(e) => e,
         })?;
+    }
+    let two_stroke = raw
+        .layout
+        .as_ref()
+        .is_some_and(|l| l.cycle == crate::balance::Cycle::TwoStroke);
+    if let Some(gas) = gas.as_ref().filter(|g| two_stroke && g.four_stroke()) {
+        return Err(invalid(
+            "layout.cycle",
+            &"\"two_stroke\"",
+            &format!(
+                "gas.model = \"{}\" is a four-stroke cycle (720° per cylinder): its cylinders fire 720°/N apart, not 360°/N; use cycle = \"four_stroke\"",
+                gas.name()
+            ),
+        ));
     }
     let gear = raw.gear.as_ref().map(|table| table.spec());
     let friction = match &raw.friction {
@@ -695,6 +725,7 @@ fn build_mechanisms(
             &format!("must list at least one of {}", cardan_mechanism::names()),
         ));
     }
+    refuse_ignored_tables(raw, own, invalid)?;
     let mut mechanisms: Vec<Arc<dyn Mechanism>> = Vec::new();
     for name in &raw.mechanisms {
         let Some(entry) = cardan_mechanism::entry(name) else {
@@ -730,7 +761,47 @@ fn build_mechanisms(
             .map_err(|e| invalid(&e.field, &e.value, &e.rule))?;
         mechanisms.push(Arc::from(mechanism));
     }
+    if let Some(offset) = raw.geometry.pin_offset.as_ref().filter(|p| p.si != 0.0) {
+        let readers: Vec<&str> = cardan_mechanism::MECHANISMS
+            .iter()
+            .filter(|e| e.pin_offset)
+            .map(|e| e.name)
+            .collect();
+        if !mechanisms.iter().any(|m| readers.contains(&m.name())) {
+            return Err(invalid(
+                "geometry.pin_offset",
+                &offset.written,
+                &format!(
+                    "no mechanism of the case has a piston pin to offset (only the {} does): remove it, or add a mechanism that reads it",
+                    readers.join(", the ")
+                ),
+            ));
+        }
+    }
     Ok(mechanisms)
+}
+
+/// Refuses a mechanism's own table (`[cardan_gear]`) or mass table (`[masses.cardan_gear]`) for
+/// a mechanism the case does not list: it would be read by nothing (as `[gear]` without a mesh
+/// is refused).
+fn refuse_ignored_tables(
+    raw: &CaseFile,
+    own: &MechanismTables,
+    invalid: &Invalid,
+) -> Result<(), CaseError> {
+    for (tables, prefix) in [(&own.options, ""), (&own.masses, "masses.")] {
+        if let Some(name) = tables.keys().find(|k| !raw.mechanisms.contains(k)) {
+            return Err(invalid(
+                &format!("{prefix}{name}"),
+                &format!("a [{prefix}{name}] table"),
+                &format!(
+                    "the {name} is not among the case's mechanisms ({}), so nothing would read it: list it in mechanisms or remove the table",
+                    raw.mechanisms.join(", ")
+                ),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Each machine's setup ([`Setup::build`]), built with the case's `friction`, `gear` and gas

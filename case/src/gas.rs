@@ -48,6 +48,11 @@ impl GasCase {
         self.name
     }
 
+    /// Whether its cycle takes two crank turns ([`GasEntry::four_stroke`]).
+    pub fn four_stroke(&self) -> bool {
+        MODELS.iter().any(|m| m.name == self.name && m.four_stroke)
+    }
+
     pub fn model(&self) -> &dyn GasModel {
         self.model.as_ref()
     }

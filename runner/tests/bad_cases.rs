@@ -691,6 +691,100 @@ fn what_the_gas_model_would_refuse_is_refused_on_reading() {
     parse(Path::new("configs/good.toml"), &engine).unwrap();
 }
 
+/// Inputs that nothing of the case would read are refused, naming the field and why, as
+/// `[gear]` without a mesh is (issue 36.14): a mechanism's own or mass table for a mechanism not
+/// in the case, `angular_acceleration` in a dynamic motion, `steady_tolerance` with one cycle,
+/// `pin_offset` where no mechanism has a pin to offset, a two-stroke layout with a four-stroke
+/// engine model. Where a mixed case has a mechanism that reads it, it is accepted.
+#[test]
+fn inputs_nothing_would_read_are_refused() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+    let shipped = |n: &str| std::fs::read_to_string(dir.join(format!("{n}.toml"))).unwrap();
+    let slider_only = GOOD.replace(
+        "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
+        "mechanisms = [\"slider_crank\"]",
+    );
+    let cardan_only = GOOD.replace(
+        "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
+        "mechanisms = [\"cardan_gear\"]",
+    );
+    let dynamic = shipped("karhula-pump-motor-dynamic");
+    let four_stroke = shipped("balance-inline3");
+    let cases: Vec<(String, &[&str])> = vec![
+        (
+            format!("{slider_only}[cardan_gear]\npressure_angle = \"25 deg\"\n"),
+            &[
+                "configs/bad.toml",
+                "\"good\"",
+                "cardan_gear = a [cardan_gear] table",
+                "not among the case's mechanisms (slider_crank)",
+            ],
+        ),
+        (
+            format!("{slider_only}[hypotrochoid]\nangular_modulus = 3\n"),
+            &[
+                "hypotrochoid = a [hypotrochoid] table",
+                "not among the case's mechanisms",
+            ],
+        ),
+        (
+            format!("{slider_only}[masses.scotch_yoke]\npiston_mass = 1.0\n"),
+            &[
+                "masses.scotch_yoke = a [masses.scotch_yoke] table",
+                "not among the case's mechanisms",
+            ],
+        ),
+        (
+            dynamic.replace(
+                "angular_acceleration = 0.0",
+                "angular_acceleration = \"50 rad/s^2\"",
+            ),
+            &[
+                "motion.angular_acceleration = \"50 rad/s^2\"",
+                "not read by a dynamic motion",
+            ],
+        ),
+        (
+            dynamic.replace("cycles = 5", "steady_tolerance = 0.001"),
+            &["motion.steady_tolerance = 0.001", "single cycle"],
+        ),
+        (
+            dynamic.replace("cycles = 5", "cycles = 1\nsteady_tolerance = 0.001"),
+            &["motion.steady_tolerance = 0.001", "single cycle"],
+        ),
+        (
+            cardan_only.replace("bore = 0.12", "bore = 0.12\npin_offset = \"5 mm\""),
+            &[
+                "geometry.pin_offset = \"5 mm\"",
+                "no mechanism of the case has a piston pin to offset",
+                "slider_crank",
+            ],
+        ),
+        (
+            four_stroke.replace("cylinders = 3", "cylinders = 3\ncycle = \"two_stroke\""),
+            &[
+                "layout.cycle = \"two_stroke\"",
+                "gas.model = \"karhula_engine\" is a four-stroke cycle",
+            ],
+        ),
+    ];
+    for (text, parts) in &cases {
+        mentions(&error_of(text), parts);
+    }
+    // Read by some mechanism of the case, or as shipped: accepted.
+    let accepted = [
+        GOOD.replace("bore = 0.12", "bore = 0.12\npin_offset = \"5 mm\""),
+        format!("{GOOD}[cardan_gear]\npressure_angle = \"25 deg\"\n"),
+        dynamic.replace("cycles = 5", "cycles = 5\nsteady_tolerance = 0.001"),
+        dynamic,
+        four_stroke,
+        shipped("karhula-pump-inline3-motor-dynamic"),
+    ];
+    for text in &accepted {
+        parse(Path::new("configs/good.toml"), text).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    }
+}
+
 /// Common mistakes of form (a table written as an array of tables, a whole number written with
 /// a decimal point, a string for a number or a number for a string, a field left out) read as
 /// a person would say them: the field's path, what it must be and the value written, not the
