@@ -414,26 +414,9 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         bore: g.bore.si,
         pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
     };
-    check_geometry_size(g, &invalid)?;
+    crate::unread::geometry_size([&g.crank_length, &g.rod_length, &g.bore], &invalid)?;
     let pistons = if g.opposed_pistons { 2 } else { 1 };
-    let crank_phase = match &g.crank_phase {
-        None => 0.0,
-        Some(phase) if pistons != 2 => {
-            return Err(invalid(
-                "geometry.crank_phase",
-                &phase.written,
-                "a phase between two crank trains needs opposed_pistons = true",
-            ))
-        }
-        Some(phase) if phase.si.abs() > std::f64::consts::FRAC_PI_2 => {
-            return Err(invalid(
-                "geometry.crank_phase",
-                &phase.written,
-                "must be from -90° to 90° (the second crank's lead over the first)",
-            ))
-        }
-        Some(phase) => phase.si,
-    };
+    let crank_phase = crank_phase(g, pistons, &invalid)?;
 
     let m = &raw.motion;
     let (start_angle, end_angle) = (m.start_angle.si, m.end_angle.si);
@@ -457,29 +440,13 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         raw.flywheel.as_ref(),
         &invalid,
     )?;
-    if dynamics.is_some() && m.angular_acceleration.si != 0.0 {
-        return Err(invalid(
-            "motion.angular_acceleration",
-            &m.angular_acceleration.written,
-            "is not read by a dynamic motion (motion.mode = \"dynamic\": the crank's acceleration is solved from its torques): write 0",
-        ));
-    }
-    if let Some(tolerance) = m.steady_tolerance {
-        if m.cycles.as_ref().is_none_or(|c| c.0 <= 1) {
-            return Err(invalid(
-                "motion.steady_tolerance",
-                &tolerance,
-                "stops the cycles of a dynamic motion early, and this one runs a single cycle: set motion.cycles above 1 or remove it",
-            ));
-        }
-    }
-    if dynamics.is_some() && (m.initial_speed.si.is_nan() || m.initial_speed.si < 0.0) {
-        return Err(invalid(
-            "motion.initial_speed",
-            &m.initial_speed.written,
-            "must not be negative: the crank turns forwards",
-        ));
-    }
+    let (tolerance, cycles) = (m.steady_tolerance, m.cycles.as_ref().map(|c| c.0));
+    let dynamic = (
+        dynamics.is_some(),
+        &m.angular_acceleration,
+        &m.initial_speed,
+    );
+    crate::unread::dynamic_inputs(dynamic, tolerance, cycles, &invalid)?;
     if let (None, Err(e)) = (&dynamics, motion.at_angle(end_angle)) {
         return Err(invalid(
             "motion.initial_speed",
@@ -510,53 +477,22 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         }
     }
     if let (Some(gas), Some(table)) = (&gas, &raw.gas) {
-        let speed = mean_speed(&motion, end_angle);
-        crate::gas::check_ready(
+        let written = [
+            &*g.bore.written,
+            &g.crank_length.written,
+            &m.initial_speed.written,
+        ];
+        let cylinder = (geometry.bore, pistons, crank_phase);
+        let ready = (&mechanisms[..], cylinder, mean_speed(&motion, end_angle));
+        let at = (file, case_name.as_str(), machine);
+        crate::unread::gas_ready(
             gas,
             table,
-            (file, &case_name, machine),
-            &mechanisms,
-            (geometry.bore, pistons, crank_phase),
-            speed,
-        )
-        .map_err(|e| match e {
-            Ok(e) if e.field == "speed" => invalid(
-                "motion.initial_speed",
-                &m.initial_speed.written,
-                &format!(
-                    "gives a mean crank speed of {} rad/s, which the gas model refuses: {}",
-                    crate::units::show(&e.value.to_string()),
-                    e.rule
-                ),
-            ),
-            Ok(e) => invalid(
-                "geometry.bore",
-                &g.bore.written,
-                &format!(
-                    "with geometry.crank_length = {} the cylinder's {} is {} ({}): {}",
-                    g.crank_length.written,
-                    e.field.replace('_', " "),
-                    crate::units::show(&e.value.to_string()),
-                    if e.field == "bore" { "m" } else { "m³" },
-                    e.rule
-                ),
-            ),
-            Err(e) => e,
-        })?;
-    }
-    let two_stroke = raw
-        .layout
-        .as_ref()
-        .is_some_and(|l| l.cycle == crate::balance::Cycle::TwoStroke);
-    if let Some(gas) = gas.as_ref().filter(|g| two_stroke && g.four_stroke()) {
-        return Err(invalid(
-            "layout.cycle",
-            &"\"two_stroke\"",
-            &format!(
-                "gas.model = \"{}\" is a four-stroke cycle (720° per cylinder): its cylinders fire 720°/N apart, not 360°/N; use cycle = \"four_stroke\"",
-                gas.name()
-            ),
-        ));
+            at,
+            ready,
+            (raw.layout.as_ref(), written),
+            &invalid,
+        )?;
     }
     let gear = raw.gear.as_ref().map(|table| table.spec());
     let friction = match &raw.friction {
@@ -616,33 +552,26 @@ pub fn mean_speed(motion: &CrankMotion, end_angle: f64) -> f64 {
     }
 }
 
-/// The smallest crank, rod and bore a case may give: 0.1 mm, m.
-pub const MIN_DIMENSION: f64 = 1e-4;
-/// The largest crank, rod and bore a case may give: 10 m, m.
-pub const MAX_DIMENSION: f64 = 10.0;
-
-/// Refuses a crank, rod or bore outside [`MIN_DIMENSION`]..=[`MAX_DIMENSION`], in the unit it was
-/// written in. The reasons: the largest reciprocating machines built (two-stroke marine diesels,
-/// about 1 m bore and 3.5 m stroke) are well inside 10 m; below 0.1 mm a crank train is a
-/// micro-mechanism whose pistons' gas seals, films and heat transfer (the models' correlations:
-/// Annand's, the ring packs') were never fitted, and the cylinder's swept volume (π/4·bore²·stroke)
-/// falls towards the floating-point noise of the chamber's volume. A value outside is a unit
-/// mistake or a typing error far more often than a machine.
-fn check_geometry_size(g: &GeometryTable, invalid: &Invalid) -> Result<(), CaseError> {
-    for (field, q) in [
-        ("geometry.crank_length", &g.crank_length),
-        ("geometry.rod_length", &g.rod_length),
-        ("geometry.bore", &g.bore),
-    ] {
-        if !(MIN_DIMENSION..=MAX_DIMENSION).contains(&q.si) {
+/// The second crank train's lead (rad): only with opposed pistons, from -90° to 90°; 0 without.
+fn crank_phase(g: &GeometryTable, pistons: u32, invalid: &Invalid) -> Result<f64, CaseError> {
+    Ok(match &g.crank_phase {
+        None => 0.0,
+        Some(phase) if pistons != 2 => {
             return Err(invalid(
-                field,
-                &q.written,
-                "must lie from 0.1 mm to 10 m: the largest reciprocating machines built (marine two-strokes, about 1 m bore and 3.5 m stroke) fit well inside, and below 0.1 mm the gas, friction and heat-transfer correlations were never fitted (a unit mistake?)",
-            ));
+                "geometry.crank_phase",
+                &phase.written,
+                "a phase between two crank trains needs opposed_pistons = true",
+            ))
         }
-    }
-    Ok(())
+        Some(phase) if phase.si.abs() > std::f64::consts::FRAC_PI_2 => {
+            return Err(invalid(
+                "geometry.crank_phase",
+                &phase.written,
+                "must be from -90° to 90° (the second crank's lead over the first)",
+            ))
+        }
+        Some(phase) => phase.si,
+    })
 }
 
 /// Refuses the loss models a solved motion cannot take among its torques: those whose loss at
@@ -725,7 +654,7 @@ fn build_mechanisms(
             &format!("must list at least one of {}", cardan_mechanism::names()),
         ));
     }
-    refuse_ignored_tables(raw, own, invalid)?;
+    crate::unread::tables(&raw.mechanisms, [&own.options, &own.masses], invalid)?;
     let mut mechanisms: Vec<Arc<dyn Mechanism>> = Vec::new();
     for name in &raw.mechanisms {
         let Some(entry) = cardan_mechanism::entry(name) else {
@@ -761,47 +690,13 @@ fn build_mechanisms(
             .map_err(|e| invalid(&e.field, &e.value, &e.rule))?;
         mechanisms.push(Arc::from(mechanism));
     }
-    if let Some(offset) = raw.geometry.pin_offset.as_ref().filter(|p| p.si != 0.0) {
-        let readers: Vec<&str> = cardan_mechanism::MECHANISMS
-            .iter()
-            .filter(|e| e.pin_offset)
-            .map(|e| e.name)
-            .collect();
-        if !mechanisms.iter().any(|m| readers.contains(&m.name())) {
-            return Err(invalid(
-                "geometry.pin_offset",
-                &offset.written,
-                &format!(
-                    "no mechanism of the case has a piston pin to offset (only the {} does): remove it, or add a mechanism that reads it",
-                    readers.join(", the ")
-                ),
-            ));
-        }
-    }
+    let offset = raw.geometry.pin_offset.as_ref();
+    crate::unread::pin_offset(
+        offset.map(|p| (p.si, p.written.as_str())),
+        &mechanisms,
+        invalid,
+    )?;
     Ok(mechanisms)
-}
-
-/// Refuses a mechanism's own table (`[cardan_gear]`) or mass table (`[masses.cardan_gear]`) for
-/// a mechanism the case does not list: it would be read by nothing (as `[gear]` without a mesh
-/// is refused).
-fn refuse_ignored_tables(
-    raw: &CaseFile,
-    own: &MechanismTables,
-    invalid: &Invalid,
-) -> Result<(), CaseError> {
-    for (tables, prefix) in [(&own.options, ""), (&own.masses, "masses.")] {
-        if let Some(name) = tables.keys().find(|k| !raw.mechanisms.contains(k)) {
-            return Err(invalid(
-                &format!("{prefix}{name}"),
-                &format!("a [{prefix}{name}] table"),
-                &format!(
-                    "the {name} is not among the case's mechanisms ({}), so nothing would read it: list it in mechanisms or remove the table",
-                    raw.mechanisms.join(", ")
-                ),
-            ));
-        }
-    }
-    Ok(())
 }
 
 /// Each machine's setup ([`Setup::build`]), built with the case's `friction`, `gear` and gas
