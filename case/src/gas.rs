@@ -48,7 +48,7 @@ impl GasCase {
         self.name
     }
 
-    /// Whether its cycle takes two crank turns ([`GasEntry::four_stroke`]).
+    /// Whether its cycle takes two crank turns (the entry's `four_stroke`).
     pub fn four_stroke(&self) -> bool {
         MODELS.iter().any(|m| m.name == self.name && m.four_stroke)
     }

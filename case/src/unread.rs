@@ -138,6 +138,10 @@ pub(crate) fn dynamic_inputs(
     Ok(())
 }
 
+/// The case's mechanisms, the cylinder (bore, m; pistons; the trains' lead, rad) and the mean
+/// crank speed (rad/s) the gas is prepared for.
+pub(crate) type Trains<'a> = (&'a [Arc<dyn Mechanism>], (f64, u32, f64), f64);
+
 /// The gas made ready for every crank train as the run makes it ([`crate::gas::check_ready`],
 /// at the mean crank speed `speed`), an error about the cylinder's size said in the geometry's
 /// fields as written (`bore`, `crank`, `speed_written`: `geometry.bore`, `geometry.crank_length`
@@ -147,7 +151,7 @@ pub(crate) fn gas_ready(
     gas: &GasCase,
     table: &toml::Table,
     at: (&Path, &str, Machine),
-    (mechanisms, cylinder, speed): (&[Arc<dyn Mechanism>], (f64, u32, f64), f64),
+    (mechanisms, cylinder, speed): Trains,
     (layout, [bore, crank, speed_written]): (Option<&LayoutTable>, [&str; 3]),
     invalid: &Invalid,
 ) -> Result<(), CaseError> {

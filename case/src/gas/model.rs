@@ -69,7 +69,7 @@ pub struct GasEntry {
 }
 
 impl GasEntry {
-    /// The same model, whose cycle takes two crank turns ([`GasEntry::four_stroke`]).
+    /// The same model, whose cycle takes two crank turns (the entry's `four_stroke`).
     pub const fn four_stroke(self) -> Self {
         Self {
             four_stroke: true,
