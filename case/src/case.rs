@@ -455,25 +455,9 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         bore: g.bore.si,
         pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
     };
+    crate::unread::geometry_size([&g.crank_length, &g.rod_length, &g.bore], &invalid)?;
     let pistons = if g.opposed_pistons { 2 } else { 1 };
-    let crank_phase = match &g.crank_phase {
-        None => 0.0,
-        Some(phase) if pistons != 2 => {
-            return Err(invalid(
-                "geometry.crank_phase",
-                &phase.written,
-                "a phase between two crank trains needs opposed_pistons = true",
-            ))
-        }
-        Some(phase) if phase.si.abs() > std::f64::consts::FRAC_PI_2 => {
-            return Err(invalid(
-                "geometry.crank_phase",
-                &phase.written,
-                "must be from -90° to 90° (the second crank's lead over the first)",
-            ))
-        }
-        Some(phase) => phase.si,
-    };
+    let crank_phase = crank_phase(g, pistons, &invalid)?;
 
     let m = &raw.motion;
     let (start_angle, end_angle) = (m.start_angle.si, m.end_angle.si);
@@ -497,13 +481,16 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         raw.flywheel.as_ref(),
         &invalid,
     )?;
-    if dynamics.is_some() && (m.initial_speed.si.is_nan() || m.initial_speed.si < 0.0) {
-        return Err(invalid(
-            "motion.initial_speed",
-            &m.initial_speed.written,
-            "must not be negative: the crank turns forwards",
-        ));
-    }
+    let (tolerance, cycles) = (
+        m.steady_tolerance.as_ref().map(|t| t.si),
+        m.cycles.as_ref().map(|c| c.0),
+    );
+    let dynamic = (
+        dynamics.is_some(),
+        &m.angular_acceleration,
+        &m.initial_speed,
+    );
+    crate::unread::dynamic_inputs(dynamic, tolerance, cycles, &invalid)?;
     if let (None, Err(e)) = (&dynamics, motion.at_angle(end_angle)) {
         return Err(invalid(
             "motion.initial_speed",
@@ -532,6 +519,24 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
                 ),
             ));
         }
+    }
+    if let (Some(gas), Some(table)) = (&gas, &raw.gas) {
+        let written = [
+            &*g.bore.written,
+            &g.crank_length.written,
+            &m.initial_speed.written,
+        ];
+        let cylinder = (geometry.bore, pistons, crank_phase);
+        let ready = (&mechanisms[..], cylinder, mean_speed(&motion, end_angle));
+        let at = (file, case_name.as_str(), machine);
+        crate::unread::gas_ready(
+            gas,
+            table,
+            at,
+            ready,
+            (raw.layout.as_ref(), written),
+            &invalid,
+        )?;
     }
     let gear = raw.gear.as_ref().map(|table| table.spec());
     let friction = match &raw.friction {
@@ -580,6 +585,38 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         sweep: None,
         input_digest: String::new(),
         notes: speed_note(&m.initial_speed).into_iter().collect(),
+    })
+}
+
+/// The mean crank speed of a prescribed `motion` from its start to `end_angle` (rad/s), at which
+/// the gas models are prepared (their speed-dependent timing and heat transfer); the initial
+/// speed if the crank does not get there in a positive time.
+pub fn mean_speed(motion: &CrankMotion, end_angle: f64) -> f64 {
+    match motion.at_angle(end_angle) {
+        Ok(end) if end.time > 0.0 => (end_angle - motion.start_angle) / end.time,
+        _ => motion.initial_speed,
+    }
+}
+
+/// The second crank train's lead (rad): only with opposed pistons, from -90° to 90°; 0 without.
+fn crank_phase(g: &GeometryTable, pistons: u32, invalid: &Invalid) -> Result<f64, CaseError> {
+    Ok(match &g.crank_phase {
+        None => 0.0,
+        Some(phase) if pistons != 2 => {
+            return Err(invalid(
+                "geometry.crank_phase",
+                &phase.written,
+                "a phase between two crank trains needs opposed_pistons = true",
+            ))
+        }
+        Some(phase) if phase.si.abs() > std::f64::consts::FRAC_PI_2 => {
+            return Err(invalid(
+                "geometry.crank_phase",
+                &phase.written,
+                "must be from -90° to 90° (the second crank's lead over the first)",
+            ))
+        }
+        Some(phase) => phase.si,
     })
 }
 
@@ -678,6 +715,7 @@ fn build_mechanisms(
             &format!("must list at least one of {}", cardan_mechanism::names()),
         ));
     }
+    crate::unread::tables(&raw.mechanisms, [&own.options, &own.masses], invalid)?;
     let mut mechanisms: Vec<Arc<dyn Mechanism>> = Vec::new();
     for name in &raw.mechanisms {
         let Some(entry) = cardan_mechanism::entry(name) else {
@@ -713,6 +751,12 @@ fn build_mechanisms(
             .map_err(|e| invalid(&e.field, &e.value, &e.rule))?;
         mechanisms.push(Arc::from(mechanism));
     }
+    let offset = raw.geometry.pin_offset.as_ref();
+    crate::unread::pin_offset(
+        offset.map(|p| (p.si, p.written.as_str())),
+        &mechanisms,
+        invalid,
+    )?;
     Ok(mechanisms)
 }
 

@@ -51,6 +51,11 @@ impl GasCase {
         self.name
     }
 
+    /// Whether its cycle takes two crank turns (the entry's `four_stroke`).
+    pub fn four_stroke(&self) -> bool {
+        MODELS.iter().any(|m| m.name == self.name && m.four_stroke)
+    }
+
     pub fn model(&self) -> &dyn GasModel {
         self.model.as_ref()
     }
@@ -135,6 +140,61 @@ pub fn parse(
         clearance,
         files: cx.files.into_inner(),
     })
+}
+
+/// Makes the gas ready for every crank train of a case as its run does (the cylinder of `bore`
+/// shared by `pistons` pistons of each mechanism's stroke, its chamber with the trains' lead
+/// `crank_phase`, the model prepared at the mean crank speed `speed`), so that a case `cardan
+/// check` passes is not refused by its gas before stepping. A model's error names the `[gas]`
+/// field as written (`table`); one about the cylinder's size (its bore, swept or chamber volume,
+/// which the case does not give) is returned as `Err(Ok(error))` for the caller to say in the
+/// geometry's fields.
+#[allow(clippy::too_many_arguments)]
+pub fn check_ready(
+    gas: &GasCase,
+    table: &toml::Table,
+    (file, case, machine): (&Path, &str, Machine),
+    mechanisms: &[Arc<dyn cardan_mechanism::Mechanism>],
+    (bore, pistons, crank_phase): (f64, u32, f64),
+    speed: f64,
+) -> Result<(), Result<GasError, CaseError>> {
+    let cx = Context {
+        table,
+        file,
+        case,
+        machine,
+        model: gas.name,
+        files: Default::default(),
+    };
+    for mechanism in mechanisms {
+        let ready = gas
+            .cylinder(bore, mechanism.stroke(), pistons)
+            .and_then(|cylinder| {
+                cylinder.with_phased_chamber(mechanism.as_ref(), crank_phase, |chamber| {
+                    gas.model().prepare(*chamber, speed).map(|_| ())
+                })
+            });
+        match ready {
+            Ok(()) => {}
+            Err(e) if matches!(e.field, "bore" | "swept_volume" | "volume" | "speed") => {
+                return Err(Ok(e))
+            }
+            // The compression ratio's rules, when the case gives the clearance ratio instead.
+            Err(e) if e.field == "compression_ratio" && !table.contains_key(e.field) => {
+                let field = if table.contains_key("clearance_ratio") {
+                    "clearance_ratio"
+                } else {
+                    e.field
+                };
+                let value = table
+                    .get(field)
+                    .map_or(e.value.to_string(), |v| v.to_string());
+                return Err(Err(cx.refuse(field, &value, e.rule)));
+            }
+            Err(e) => return Err(Err(cx.broken(e))),
+        }
+    }
+    Ok(())
 }
 
 /// The JSON Schema of `[gas]`: one branch per registered model, its table with `model` as a

@@ -21,6 +21,7 @@ pub mod schema;
 pub mod setup;
 pub mod sweep;
 pub mod units;
+mod unread;
 
 pub use case::Case;
 pub use error::{CaseError, Machine};

@@ -107,6 +107,10 @@ enum Command {
         /// Case files, or folders searched recursively for *.toml.
         #[arg(required = true)]
         paths: Vec<PathBuf>,
+        /// Pass cases whose per-step files would exceed the size limit, as `run --allow-large`
+        /// runs them.
+        #[arg(long)]
+        allow_large: bool,
     },
     /// Rate one spur gear pair (external or internal) from a gear file and write
     /// OUT/NAME/gear.json and report.md; exit 1 if the file is bad or the pair cannot work
@@ -226,17 +230,29 @@ fn slurm(
 
 /// `cardan check`: every case validated as `cardan run` validates it before stepping, the
 /// points of a sweep written as a table each in turn (none kept: a million points are checked
-/// in the memory of a few thousand); one line per case, one per table sweep. The cases valid,
+/// in the memory of a few thousand), and a case whose per-step files would pass the size limit
+/// refused as the run refuses it; one line per case, one per table sweep. The cases valid,
 /// and the failures.
-fn check(paths: &[PathBuf]) -> (usize, Vec<String>) {
+fn check(paths: &[PathBuf], allow_large: bool) -> (usize, Vec<String>) {
     let (batch, mut failures) = load_batch(paths);
+    // The run's own refusal of per-step files past the size limit.
+    let options = RunOptions {
+        allow_large,
+        ..RunOptions::default()
+    };
+    let mut valid = 0;
     for c in &batch.cases {
-        println!("valid   {} ({})", c.name, c.file.display());
-        for note in &c.notes {
-            eprintln!("note: {}: case \"{}\": {note}", c.file.display(), c.name);
+        match cardan_runner::run::check_size(c, &options) {
+            Ok(()) => {
+                println!("valid   {} ({})", c.name, c.file.display());
+                for note in &c.notes {
+                    eprintln!("note: {}: case \"{}\": {note}", c.file.display(), c.name);
+                }
+                valid += 1;
+            }
+            Err(e) => failures.push(e),
         }
     }
-    let mut valid = batch.cases.len();
     for t in &batch.tables {
         match t.check() {
             Ok(n) => {
@@ -417,7 +433,7 @@ fn main() -> ExitCode {
             );
             (report.written.len() + report.sweeps.len(), report.failures)
         }
-        Command::Check { paths } => check(&paths),
+        Command::Check { paths, allow_large } => check(&paths, allow_large),
     };
     let failures = if ok == 0 && failures.is_empty() {
         vec![

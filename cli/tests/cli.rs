@@ -246,6 +246,17 @@ fn a_huge_case_is_refused_unless_allowed() {
     );
     let help = cardan(&[&"run", &"--help"]);
     assert!(String::from_utf8_lossy(&help.stdout).contains("--allow-large"));
+    // `cardan check` refuses it too, with the run's own message (issue 36.11: check ≡ run), and
+    // passes it with --allow-large, as the run runs it.
+    let check = cardan(&[&"check", &case]);
+    let out = String::from_utf8_lossy(&check.stderr);
+    assert_eq!(check.status.code(), Some(1), "{out}");
+    assert!(
+        out.contains("huge.toml") && out.contains("GB") && out.contains("--allow-large"),
+        "{out}"
+    );
+    let allowed = cardan(&[&"check", &case, &"--allow-large"]);
+    assert_eq!(allowed.status.code(), Some(0));
 }
 
 /// A write past the file-size limit (`ulimit -f`) fails the case with a message and exit 1,

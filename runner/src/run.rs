@@ -29,7 +29,7 @@ pub use batch::{run_paths, worker_threads};
 pub use cases::{case_files, load_batch, load_cases, matches_pattern, Batch, RESERVED};
 pub use merge::merge;
 pub use options::{Progress, Report, RunOptions};
-pub use size::{estimated_bytes, human_bytes, DEFAULT_MAX_BYTES};
+pub use size::{check_size, estimated_bytes, human_bytes, DEFAULT_MAX_BYTES};
 pub use table::{case_folders, TableSweep, CASE_FOLDERS_UP_TO};
 pub use train::run_case;
 #[cfg(feature = "test-hooks")]

@@ -628,6 +628,167 @@ fn what_the_run_would_refuse_is_refused_on_reading() {
     assert!(e.contains("name") && e.contains("at most 200"), "{e}");
 }
 
+/// What the gas model would refuse when the run prepares it is refused on reading, naming the
+/// field the user wrote, in the unit written (issue 36.11): a bore, crank or rod far out of
+/// scale (the run blamed `gas.swept_volume`, no case field), a combustion start outside its
+/// window (refused only at run time, in radians), a compression ratio that overheats the gas
+/// by itself (blamed on the default `fuel_heating_value`).
+#[test]
+fn what_the_gas_model_would_refuse_is_refused_on_reading() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+    let engine = std::fs::read_to_string(dir.join("nunes-op-r26-l90-2000rpm.toml")).unwrap();
+    let cases: &[(&str, &str, &[&str])] = &[
+        (
+            "bore = \"60 mm\"",
+            "bore = \"1e-9 m\"",
+            &["geometry.bore", "\"1e-9 m\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "bore = \"60 mm\"",
+            "bore = \"1e300 m\"",
+            &["geometry.bore", "\"1e300 m\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "bore = \"60 mm\"",
+            "bore = \"0.05 mm\"",
+            &["geometry.bore", "\"0.05 mm\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "crank_length = \"26 mm\"",
+            "crank_length = \"1e-12 m\"",
+            &["geometry.crank_length", "\"1e-12 m\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "rod_length = \"90 mm\"",
+            "rod_length = \"1e300 m\"",
+            &["geometry.rod_length", "\"1e300 m\"", "0.1 mm to 10 m"],
+        ),
+        (
+            "combustion_start = \"350.93 deg\"",
+            "combustion_start = \"700 deg\"",
+            &[
+                "gas.combustion_start",
+                "\"700 deg\"",
+                "between intake_closing and exhaust_opening",
+            ],
+        ),
+        (
+            "compression_ratio = 10 ",
+            "compression_ratio = 1e6 ",
+            &[
+                "gas.compression_ratio",
+                "1000000",
+                "compresses the gas beyond",
+            ],
+        ),
+    ];
+    for (from, to, parts) in cases {
+        assert!(engine.contains(from), "{from}");
+        let e = error_of(&engine.replace(from, to));
+        mentions(&e, parts);
+        assert!(
+            !e.contains("swept_volume") && !e.contains("fuel_heating_value"),
+            "{e}"
+        );
+    }
+    // The same case as shipped reads and its gas is prepared.
+    parse(Path::new("configs/good.toml"), &engine).unwrap();
+}
+
+/// Inputs that nothing of the case would read are refused, naming the field and why, as
+/// `[gear]` without a mesh is (issue 36.14): a mechanism's own or mass table for a mechanism not
+/// in the case, `angular_acceleration` in a dynamic motion, `steady_tolerance` with one cycle,
+/// `pin_offset` where no mechanism has a pin to offset, a two-stroke layout with a four-stroke
+/// engine model. Where a mixed case has a mechanism that reads it, it is accepted.
+#[test]
+fn inputs_nothing_would_read_are_refused() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+    let shipped = |n: &str| std::fs::read_to_string(dir.join(format!("{n}.toml"))).unwrap();
+    let slider_only = GOOD.replace(
+        "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
+        "mechanisms = [\"slider_crank\"]",
+    );
+    let cardan_only = GOOD.replace(
+        "mechanisms = [\"slider_crank\", \"cardan_gear\"]",
+        "mechanisms = [\"cardan_gear\"]",
+    );
+    let dynamic = shipped("karhula-pump-motor-dynamic");
+    let four_stroke = shipped("balance-inline3");
+    let cases: Vec<(String, &[&str])> = vec![
+        (
+            format!("{slider_only}[cardan_gear]\npressure_angle = \"25 deg\"\n"),
+            &[
+                "configs/bad.toml",
+                "\"good\"",
+                "cardan_gear = a [cardan_gear] table",
+                "not among the case's mechanisms (slider_crank)",
+            ],
+        ),
+        (
+            format!("{slider_only}[hypotrochoid]\nangular_modulus = 3\n"),
+            &[
+                "hypotrochoid = a [hypotrochoid] table",
+                "not among the case's mechanisms",
+            ],
+        ),
+        (
+            format!("{slider_only}[masses.scotch_yoke]\npiston_mass = 1.0\n"),
+            &[
+                "masses.scotch_yoke = a [masses.scotch_yoke] table",
+                "not among the case's mechanisms",
+            ],
+        ),
+        (
+            dynamic.replace(
+                "angular_acceleration = 0.0",
+                "angular_acceleration = \"50 rad/s^2\"",
+            ),
+            &[
+                "motion.angular_acceleration = \"50 rad/s^2\"",
+                "not read by a dynamic motion",
+            ],
+        ),
+        (
+            dynamic.replace("cycles = 5", "steady_tolerance = 0.001"),
+            &["motion.steady_tolerance = 0.001", "single cycle"],
+        ),
+        (
+            dynamic.replace("cycles = 5", "cycles = 1\nsteady_tolerance = 0.001"),
+            &["motion.steady_tolerance = 0.001", "single cycle"],
+        ),
+        (
+            cardan_only.replace("bore = 0.12", "bore = 0.12\npin_offset = \"5 mm\""),
+            &[
+                "geometry.pin_offset = \"5 mm\"",
+                "no mechanism of the case has a piston pin to offset",
+                "slider_crank",
+            ],
+        ),
+        (
+            four_stroke.replace("cylinders = 3", "cylinders = 3\ncycle = \"two_stroke\""),
+            &[
+                "layout.cycle = \"two_stroke\"",
+                "gas.model = \"karhula_engine\" is a four-stroke cycle",
+            ],
+        ),
+    ];
+    for (text, parts) in &cases {
+        mentions(&error_of(text), parts);
+    }
+    // Read by some mechanism of the case, or as shipped: accepted.
+    let accepted = [
+        GOOD.replace("bore = 0.12", "bore = 0.12\npin_offset = \"5 mm\""),
+        format!("{GOOD}[cardan_gear]\npressure_angle = \"25 deg\"\n"),
+        dynamic.replace("cycles = 5", "cycles = 5\nsteady_tolerance = 0.001"),
+        dynamic,
+        four_stroke,
+        shipped("karhula-pump-inline3-motor-dynamic"),
+    ];
+    for text in &accepted {
+        parse(Path::new("configs/good.toml"), text).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    }
+}
+
 /// Common mistakes of form (a table written as an array of tables, a whole number written with
 /// a decimal point, a string for a number or a number for a string, a field left out) read as
 /// a person would say them: the field's path, what it must be and the value written, not the

@@ -18,7 +18,8 @@ use serde::Deserialize;
 use std::sync::Arc;
 
 /// The registry line.
-pub const ENTRY: GasEntry = entry::<ClosedCycleTable>("closed_cycle", Some(Machine::Engine));
+pub const ENTRY: GasEntry =
+    entry::<ClosedCycleTable>("closed_cycle", Some(Machine::Engine)).four_stroke();
 
 /// `[gas]` of `model = "closed_cycle"`: the closed cycle of Nunes (2017). Angles are from the
 /// opening top dead centre; the defaults are Nunes (2017) Table 3.2 (`ClosedCycle::nunes_2017`).

@@ -14,7 +14,8 @@ use std::sync::Arc;
 /// The registry line of the pump.
 pub const PUMP: GasEntry = entry::<KarhulaPumpTable>("karhula_pump", Some(Machine::Pump));
 /// The registry line of the engine.
-pub const ENGINE: GasEntry = entry::<KarhulaEngineTable>("karhula_engine", Some(Machine::Engine));
+pub const ENGINE: GasEntry =
+    entry::<KarhulaEngineTable>("karhula_engine", Some(Machine::Engine)).four_stroke();
 
 /// The filling factor C_fill when not given: the intake charge is the uncompressed volume at
 /// ambient pressure (Karhula A6.1.1.11 with C_fill = 1; the thesis's range is 1.0-1.1).

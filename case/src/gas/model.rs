@@ -63,6 +63,19 @@ pub struct GasEntry {
     pub(super) read: fn(toml::Value, &Context) -> Result<ReadModel, CaseError>,
     /// The JSON Schema of the model's table (inline, without `model`).
     pub schema: fn(&mut SchemaGenerator) -> Schema,
+    /// Its cycle takes two crank turns (a four-stroke engine's): a machine of it fires each
+    /// cylinder once every 720°, and a `[layout] cycle = "two_stroke"` is refused.
+    pub four_stroke: bool,
+}
+
+impl GasEntry {
+    /// The same model, whose cycle takes two crank turns (the entry's `four_stroke`).
+    pub const fn four_stroke(self) -> Self {
+        Self {
+            four_stroke: true,
+            ..self
+        }
+    }
 }
 
 /// The registry line of a model whose table is `T`.
@@ -72,6 +85,7 @@ pub const fn entry<T: ModelTable>(name: &'static str, machine: Option<Machine>) 
         machine,
         read: read_table::<T>,
         schema: T::json_schema,
+        four_stroke: false,
     }
 }
 

@@ -372,13 +372,15 @@ impl ClosedCycle {
             "combustion_start",
             start,
             start > ivc && start < evo,
-            "at this speed (eq 3.1) must lie between intake_closing and exhaust_opening",
+            "must lie between intake_closing and exhaust_opening at the mean crank speed \
+             (eq 3.1: combustion_start + combustion_start_per_speed × speed)",
         )?;
         require(
             "combustion_duration",
             duration,
             duration > 0.0,
-            "at this speed (eq 3.2) must be positive",
+            "must be positive at the mean crank speed (eq 3.2: combustion_duration + \
+             combustion_duration_per_speed × speed)",
         )?;
 
         let (r, g, p1, t1) = (
@@ -429,9 +431,22 @@ impl ClosedCycle {
             let xb2 = self.burned_fraction(a2, start, duration);
             let dq_r = eta_c * (xb2 - s.xb) * fuel * self.fuel_heating_value;
             // Heat loss (2.39) from the state at the start of the step.
-            let hc = self
-                .heat_transfer_coefficient(cyl.bore, s.p, s.t, sp)
-                .ok_or_else(|| too_hot.clone())?;
+            // Too hot where the isentropic compression from IVC alone (T·V^(γ−1) constant)
+            // would already be: the compression did it, not the fuel.
+            let compressed = t1 * (v / s.v).powf(g - 1.0);
+            let hc =
+                self.heat_transfer_coefficient(cyl.bore, s.p, s.t, sp)
+                    .ok_or_else(|| {
+                        match self.heat_transfer_coefficient(cyl.bore, s.p, compressed, sp) {
+                    Some(_) => too_hot.clone(),
+                    None => GasError {
+                        field: "compression_ratio",
+                        value: (cyl.swept_volume + cyl.clearance_volume) / cyl.clearance_volume,
+                        rule: "compresses the gas beyond the range of the Annand property fits \
+                               (eqs 2.34, 2.36) by itself, whatever the fuel's heat",
+                    },
+                }
+                    })?;
             let dq_l = hc * (s.t - self.wall_temperature) * cyl.wall_area(s.v) * dt;
             // (3.5)
             let p2 = (2.0 * (dq_r - dq_l - dq_vap) + s.p * (g6 * s.v - v2)) / (g6 * v2 - s.v);

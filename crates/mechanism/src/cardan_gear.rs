@@ -76,6 +76,7 @@ pub const ENTRY: Entry = Entry {
         },
     ],
     unused_masses: &[],
+    pin_offset: false,
     build: |g, m, o| Ok(Box::new(CardanGear::build(g, m, o)?)),
 };
 

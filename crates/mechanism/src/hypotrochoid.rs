@@ -117,6 +117,7 @@ pub const ENTRY: Entry = Entry {
         },
     ],
     unused_masses: &["piston_mass", "wheel_mass"],
+    pin_offset: false,
     build: |g, m, o| Ok(Box::new(Hypotrochoid::build(g, m, o)?)),
 };
 

@@ -262,6 +262,9 @@ pub struct Entry {
     pub options: &'static [OptionSpec],
     /// Mass fields it has no use for (an error if a case sets them for it).
     pub unused_masses: &'static [&'static str],
+    /// Whether it reads `geometry.pin_offset` (a case giving one that none of its mechanisms
+    /// reads is refused).
+    pub pin_offset: bool,
     pub build: Build,
 }
 

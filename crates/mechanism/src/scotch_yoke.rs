@@ -26,6 +26,7 @@ pub const ENTRY: Entry = Entry {
     summary: "crank pin with a block sliding in a slotted yoke: harmonic piston motion, slot and guide loads",
     options: &[],
     unused_masses: &["wheel_inertia", "wheel_mass"],
+    pin_offset: false,
     build: |g, m, o| Ok(Box::new(ScotchYoke::build(g, m, o)?)),
 };
 

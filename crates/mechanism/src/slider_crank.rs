@@ -27,6 +27,7 @@ pub const ENTRY: Entry = Entry {
         "crank, connecting rod and piston (Karhula 2008 A4.2.2, A5.2.1), with a piston-pin offset",
     options: &[],
     unused_masses: &["wheel_inertia", "wheel_mass"],
+    pin_offset: true,
     build: |g, m, o| Ok(Box::new(SliderCrank::build(g, m, o)?)),
 };
 

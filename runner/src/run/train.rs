@@ -24,10 +24,7 @@ use std::sync::Arc;
 /// The mean crank speed over the run, rad/s: the speed of a steady run, which the
 /// speed-dependent gas models use.
 fn mean_speed(case: &Case) -> f64 {
-    match case.motion.at_angle(case.end_angle) {
-        Ok(end) if end.time > 0.0 => (case.end_angle - case.motion.start_angle) / end.time,
-        _ => case.motion.initial_speed,
-    }
+    cardan_case::case::mean_speed(&case.motion, case.end_angle)
 }
 
 /// Where a crank train's per-step rows go besides its summary.
