@@ -295,13 +295,11 @@ pub fn load(file: &Path) -> Result<Case, CaseError> {
 }
 
 /// The text of the case file `file`, read through the bounded reader (a regular file of at
-/// most [`cardan_report::files::CASE_FILE`]'s 16 MiB).
+/// most [`cardan_files::CASE_FILE`]'s 16 MiB).
 pub fn read_case_text(file: &Path) -> Result<String, CaseError> {
-    cardan_report::files::read_text(file, cardan_report::files::CASE_FILE).map_err(|source| {
-        CaseError::Io {
-            file: file.into(),
-            source,
-        }
+    cardan_files::read_text(file, cardan_files::CASE_FILE).map_err(|source| CaseError::Io {
+        file: file.into(),
+        source,
     })
 }
 
@@ -548,9 +546,9 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         }
     };
     let balance = crate::balance::build(raw.layout.as_ref(), raw.balance.as_ref(), &invalid)?;
-    let machines = check_machine(&balance, mechanisms, (pistons, machine), &invalid)?;
+    let machines = crate::setup::check_machine(&balance, mechanisms, (pistons, machine), &invalid)?;
     let mechanisms = machines.iter().map(|m| Arc::clone(m.mechanism())).collect();
-    let setups = setups(
+    let setups = crate::setup::setups(
         &machines,
         geometry.bore,
         (friction.as_ref(), gear.as_ref(), gas.is_some()),
@@ -636,68 +634,6 @@ fn solved_friction(setups: &[Setup], invalid: &Invalid) -> Result<(), CaseError>
     Ok(())
 }
 
-/// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a
-/// mechanism whose pistons move in no cylinder, a balancing device the mechanism has no body
-/// for; returns each mechanism's [`cardan_dynamics::Machine`], built here once
-/// ([`cardan_balance::MachineBalance::prepare`]), with the mechanism equipped with what the
-/// machine puts on its bodies (the cardan pair's wheel counterweight,
-/// [`cardan_balance::MachineBalance::equip`]), which the runs take.
-fn check_machine(
-    machine: &cardan_balance::MachineBalance,
-    mechanisms: Vec<Arc<dyn Mechanism>>,
-    (pistons, kind): (u32, Machine),
-    invalid: &Invalid,
-) -> Result<Vec<Arc<cardan_dynamics::Machine>>, CaseError> {
-    let n = machine.layout.cylinders.len();
-    if n > 1 && pistons == 2 {
-        return Err(invalid(
-            "layout.cylinders",
-            &n,
-            "a machine of several opposed-piston cylinders is not modelled: run one cylinder",
-        ));
-    }
-    let kind = match kind {
-        Machine::Pump => cardan_dynamics::MachineKind::Pump,
-        Machine::Engine => cardan_dynamics::MachineKind::Engine,
-    };
-    if machine.cardan_counterweights
-        && !mechanisms
-            .iter()
-            .any(|m| machine.cardan_pair_applies(m.as_ref()))
-    {
-        let names: Vec<&str> = mechanisms.iter().map(|m| m.name()).collect();
-        return Err(invalid(
-            "balance.cardan_counterweights",
-            &"true",
-            &format!(
-                "applies to a mechanism with a cardan wheel (a body turning against the crank at its speed), and the case has none ({})",
-                names.join(", ")
-            ),
-        ));
-    }
-    let mut machines = Vec::with_capacity(mechanisms.len());
-    for m in mechanisms {
-        if n > 1 && !m.has_cylinder() {
-            return Err(invalid(
-                "layout.cylinders",
-                &n,
-                &format!(
-                    "the {}'s pistons move in no cylinder: it cannot form a machine of several cylinders",
-                    m.name()
-                ),
-            ));
-        }
-        match cardan_dynamics::Machine::build(machine, Arc::clone(&m), kind) {
-            Ok(built) => machines.push(Arc::new(built)),
-            Err(e) => {
-                let (field, rule) = e.split_once(": ").unwrap_or(("balance", &e));
-                return Err(invalid(field, &format!("(for the {})", m.name()), rule));
-            }
-        }
-    }
-    Ok(machines)
-}
-
 /// The case's mechanisms from the registry, each with its masses and options, checked over the
 /// run's angles (`start`, `step`, `steps`).
 fn build_mechanisms(
@@ -760,30 +696,6 @@ fn build_mechanisms(
     Ok(mechanisms)
 }
 
-/// Each machine's setup ([`Setup::build`]), built with the case's `friction`, `gear` and gas
-/// (`tables`), its orders at `speed` (rad/s); `[gear]` is refused if no mechanism has a gear
-/// mesh to rate.
-fn setups(
-    machines: &[Arc<cardan_dynamics::Machine>],
-    bore: f64,
-    tables: (Option<&Friction>, Option<&GearSpec>, bool),
-    speed: f64,
-    invalid: &Invalid,
-) -> Result<Vec<Setup>, CaseError> {
-    let setups = machines
-        .iter()
-        .map(|m| Setup::build((m, speed), bore, tables, invalid))
-        .collect::<Result<Vec<_>, _>>()?;
-    if tables.1.is_some() && setups.iter().all(|s| s.gear_ratings.is_none()) {
-        return Err(invalid(
-            "gear",
-            &"a [gear] table",
-            "no mechanism of the case has a gear mesh to rate",
-        ));
-    }
-    Ok(setups)
-}
-
 impl Case {
     /// Builds its setups again from its mechanisms, `friction` and `gear` (after a change to
     /// them); the errors are validation's.
@@ -795,7 +707,7 @@ impl Case {
             value: crate::units::show(&value.to_string()),
             rule: rule.to_string(),
         };
-        let machines = check_machine(
+        let machines = crate::setup::check_machine(
             &self.balance,
             self.mechanisms.clone(),
             (self.pistons, self.machine),
@@ -807,7 +719,7 @@ impl Case {
             self.gear.as_ref(),
             self.gas.is_some(),
         );
-        let setups = setups(
+        let setups = crate::setup::setups(
             &machines,
             self.geometry.bore,
             tables,

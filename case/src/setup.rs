@@ -6,6 +6,7 @@
 
 use crate::error::{CaseError, Invalid};
 use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget, Machine, MachineStage, Stage};
+use cardan_mechanism::Mechanism;
 use std::sync::Arc;
 
 /// A mechanism's per-step stages, as validation built them.
@@ -77,4 +78,90 @@ impl Setup {
             .chain([self.balance.fork()])
             .collect()
     }
+}
+
+/// Refuses a machine a mechanism cannot form: several cylinders of opposed pistons or of a
+/// mechanism whose pistons move in no cylinder, a balancing device the mechanism has no body
+/// for; returns each mechanism's [`cardan_dynamics::Machine`], built here once
+/// ([`cardan_balance::MachineBalance::prepare`]), with the mechanism equipped with what the
+/// machine puts on its bodies (the cardan pair's wheel counterweight,
+/// [`cardan_balance::MachineBalance::equip`]), which the runs take.
+pub(crate) fn check_machine(
+    machine: &cardan_balance::MachineBalance,
+    mechanisms: Vec<Arc<dyn Mechanism>>,
+    (pistons, kind): (u32, crate::error::Machine),
+    invalid: &Invalid,
+) -> Result<Vec<Arc<cardan_dynamics::Machine>>, CaseError> {
+    let n = machine.layout.cylinders.len();
+    if n > 1 && pistons == 2 {
+        return Err(invalid(
+            "layout.cylinders",
+            &n,
+            "a machine of several opposed-piston cylinders is not modelled: run one cylinder",
+        ));
+    }
+    let kind = match kind {
+        crate::error::Machine::Pump => cardan_dynamics::MachineKind::Pump,
+        crate::error::Machine::Engine => cardan_dynamics::MachineKind::Engine,
+    };
+    if machine.cardan_counterweights
+        && !mechanisms
+            .iter()
+            .any(|m| machine.cardan_pair_applies(m.as_ref()))
+    {
+        let names: Vec<&str> = mechanisms.iter().map(|m| m.name()).collect();
+        return Err(invalid(
+            "balance.cardan_counterweights",
+            &"true",
+            &format!(
+                "applies to a mechanism with a cardan wheel (a body turning against the crank at its speed), and the case has none ({})",
+                names.join(", ")
+            ),
+        ));
+    }
+    let mut machines = Vec::with_capacity(mechanisms.len());
+    for m in mechanisms {
+        if n > 1 && !m.has_cylinder() {
+            return Err(invalid(
+                "layout.cylinders",
+                &n,
+                &format!(
+                    "the {}'s pistons move in no cylinder: it cannot form a machine of several cylinders",
+                    m.name()
+                ),
+            ));
+        }
+        match cardan_dynamics::Machine::build(machine, Arc::clone(&m), kind) {
+            Ok(built) => machines.push(Arc::new(built)),
+            Err(e) => {
+                let (field, rule) = e.split_once(": ").unwrap_or(("balance", &e));
+                return Err(invalid(field, &format!("(for the {})", m.name()), rule));
+            }
+        }
+    }
+    Ok(machines)
+}
+
+/// Each machine's setup ([`Setup::build`]), built with the case's `friction`, `gear` and gas
+/// (`tables`), its orders at `speed` (rad/s); `[gear]` is refused if no mechanism has a gear
+/// mesh to rate.
+pub(crate) fn setups(
+    machines: &[Arc<cardan_dynamics::Machine>],
+    bore: f64,
+    tables: (Option<&Friction>, Option<&GearSpec>, bool),
+    speed: f64,
+    invalid: &Invalid,
+) -> Result<Vec<Setup>, CaseError> {
+    let setups = machines
+        .iter()
+        .map(|m| Setup::build((m, speed), bore, tables, invalid))
+        .collect::<Result<Vec<_>, _>>()?;
+    if tables.1.is_some() && setups.iter().all(|s| s.gear_ratings.is_none()) {
+        return Err(invalid(
+            "gear",
+            &"a [gear] table",
+            "no mechanism of the case has a gear mesh to rate",
+        ));
+    }
+    Ok(setups)
 }

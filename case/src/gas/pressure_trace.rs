@@ -83,8 +83,8 @@ impl ModelTable for PressureTraceTable {
             .unwrap_or(std::path::Path::new("."))
             .join(name);
         let shown = format!("\"{name}\"");
-        let limit = cardan_report::files::DATA_TABLE;
-        let text = cardan_report::files::read_text(&path, limit).map_err(|e| {
+        let limit = cardan_files::DATA_TABLE;
+        let text = cardan_files::read_text(&path, limit).map_err(|e| {
             cx.refuse(
                 "file",
                 &shown,
