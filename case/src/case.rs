@@ -507,16 +507,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         .map(|table| crate::gas::parse(table, file, &case_name, machine))
         .transpose()?;
     if gas.is_some() {
-        if let Some(m) = mechanisms.iter().find(|m| !m.has_cylinder()) {
-            return Err(invalid(
-                "gas",
-                &format!("a [gas] table with the {}", m.name()),
-                &format!(
-                    "the {}'s pistons do not move in a cylinder, and the gas models need a cylinder volume: run it without [gas]",
-                    m.name()
-                ),
-            ));
-        }
+        crate::unread::gas_cylinders(&mechanisms, &invalid)?;
     }
     if let (Some(gas), Some(table)) = (&gas, &raw.gas) {
         let written = [

@@ -192,3 +192,22 @@ pub(crate) fn gas_ready(
     })?;
     Ok(())
 }
+
+/// Refuses a `[gas]` table with a mechanism whose pistons move in no cylinder: the gas models
+/// need a cylinder volume.
+pub(crate) fn gas_cylinders(
+    mechanisms: &[Arc<dyn Mechanism>],
+    invalid: &Invalid,
+) -> Result<(), CaseError> {
+    match mechanisms.iter().find(|m| !m.has_cylinder()) {
+        Some(m) => Err(invalid(
+            "gas",
+            &format!("a [gas] table with the {}", m.name()),
+            &format!(
+                "the {}'s pistons do not move in a cylinder, and the gas models need a cylinder volume: run it without [gas]",
+                m.name()
+            ),
+        )),
+        None => Ok(()),
+    }
+}

@@ -293,6 +293,48 @@ fn progress_bar(quiet: bool) -> indicatif::ProgressBar {
     bar
 }
 
+/// `cardan merge`: the shards' folders `dirs` (and those listed in `from_list`) into `out`;
+/// the cases and sweeps written and the failures, or the exit code of a list that cannot be
+/// read.
+fn merge(
+    mut dirs: Vec<PathBuf>,
+    out: &std::path::Path,
+    from_list: Option<PathBuf>,
+) -> Result<(usize, Vec<String>), ExitCode> {
+    if let Some(list) = from_list {
+        match cardan::slurm::read_list(&list) {
+            Ok(listed) => dirs.extend(listed),
+            Err(e) => {
+                eprintln!("error: {e}: nothing merged");
+                return Err(ExitCode::FAILURE);
+            }
+        }
+    }
+    let started = std::time::Instant::now();
+    let report = cardan_runner::run::merge(&dirs, out);
+    // The sweeps written as tables: their points are rows, not cases.
+    let tables: Vec<usize> = (report.sweeps.iter())
+        .filter(|(_, dir, _)| dir.join("sweep.json").is_file())
+        .map(|(_, _, points)| *points)
+        .collect();
+    let rows = match tables.len() {
+        0 => String::new(),
+        t => format!(
+            " and {} point(s) of {t} sweep table(s)",
+            tables.iter().sum::<usize>()
+        ),
+    };
+    println!(
+        "{} case(s){rows} merged into {} from {} shard(s), {} failed, in {:.2} s",
+        report.written.len(),
+        out.display(),
+        dirs.len(),
+        report.failures.len(),
+        started.elapsed().as_secs_f64()
+    );
+    Ok((report.written.len() + report.sweeps.len(), report.failures))
+}
+
 fn main() -> ExitCode {
     tracing_subscriber::fmt()
         .with_env_filter(
@@ -396,43 +438,13 @@ fn main() -> ExitCode {
             submit,
         } => return slurm(paths, shards, out, partition, time, submit),
         Command::Merge {
-            mut dirs,
+            dirs,
             out,
             from_list,
-        } => {
-            if let Some(list) = from_list {
-                match cardan::slurm::read_list(&list) {
-                    Ok(listed) => dirs.extend(listed),
-                    Err(e) => {
-                        eprintln!("error: {e}: nothing merged");
-                        return ExitCode::FAILURE;
-                    }
-                }
-            }
-            let started = std::time::Instant::now();
-            let report = cardan_runner::run::merge(&dirs, &out);
-            // The sweeps written as tables: their points are rows, not cases.
-            let tables: Vec<usize> = (report.sweeps.iter())
-                .filter(|(_, dir, _)| dir.join("sweep.json").is_file())
-                .map(|(_, _, points)| *points)
-                .collect();
-            let rows = match tables.len() {
-                0 => String::new(),
-                t => format!(
-                    " and {} point(s) of {t} sweep table(s)",
-                    tables.iter().sum::<usize>()
-                ),
-            };
-            println!(
-                "{} case(s){rows} merged into {} from {} shard(s), {} failed, in {:.2} s",
-                report.written.len(),
-                out.display(),
-                dirs.len(),
-                report.failures.len(),
-                started.elapsed().as_secs_f64()
-            );
-            (report.written.len() + report.sweeps.len(), report.failures)
-        }
+        } => match merge(dirs, &out, from_list) {
+            Ok(done) => done,
+            Err(code) => return code,
+        },
         Command::Check { paths, allow_large } => check(&paths, allow_large),
     };
     let failures = if ok == 0 && failures.is_empty() {

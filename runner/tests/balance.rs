@@ -523,7 +523,8 @@ fn the_cardan_pair_applies_to_the_mechanisms_with_a_cardan_wheel() {
             .collect()
     };
     let cardan = results(&text("\"cardan_gear\"", 360, &pair));
-    let slider = results(&text("\"slider_crank\"", 360, masses));
+    // The slider-crank alone without the cardan gear's table (nothing would read it: refused).
+    let slider = results(&text("\"slider_crank\"", 360, ""));
     assert_eq!(bits(&compared, "cardan_gear"), bits(&cardan, "cardan_gear"));
     assert_eq!(
         bits(&compared, "slider_crank"),

@@ -120,6 +120,17 @@ const UNMUTABLE: &[(&str, &str)] = &[
     ),
 ];
 
+/// Fields of the shared `[masses.<mechanism>]` schema for a body the mechanism lacks: refused on
+/// reading (issue 36.15, the tables they apply to named), so no valid case holds them.
+const NO_SUCH_BODY: &[&str] = &[
+    "masses.hypotrochoid.piston_mass",
+    "masses.hypotrochoid.wheel_mass",
+    "masses.scotch_yoke.wheel_inertia",
+    "masses.scotch_yoke.wheel_mass",
+    "masses.slider_crank.wheel_inertia",
+    "masses.slider_crank.wheel_mass",
+];
+
 /// The shipped cases (one case each; not the sweeps) and a case with `[friction.joints]`.
 fn bases() -> Vec<(PathBuf, toml::Table)> {
     let mut files: Vec<PathBuf> = std::fs::read_dir(configs())
@@ -370,6 +381,7 @@ fn every_field_of_the_schema_changes_the_input_hash() {
         if UNMUTABLE
             .iter()
             .any(|(f, _)| leaf.path.join(".") == *f || leaf.path[0] == *f)
+            || NO_SUCH_BODY.contains(&leaf.path.join(".").as_str())
         {
             continue;
         }

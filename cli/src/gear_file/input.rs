@@ -149,8 +149,28 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
     let pair = GearPair::new(spec).map_err(|e| geometry_error(e, &table, &invalid))?;
 
     let face_width = raw.face_width.as_ref().map(|w| w.si);
-    let rating = match &raw.rating {
-        None => None,
+    let rating = rating_of(&raw, face_width, &pair, &invalid)?;
+    Ok(GearFile {
+        file: file.into(),
+        name: raw.name,
+        spec,
+        cardan_crank_length: crank,
+        face_width,
+        rating,
+        given,
+    })
+}
+
+/// The `[rating]` table's inputs, checked against the pair (its pitch-line velocity), if the
+/// file has one.
+fn rating_of(
+    raw: &GearFileTable,
+    face_width: Option<f64>,
+    pair: &GearPair,
+    invalid: &Invalid,
+) -> Result<Option<RatingInputs>, GearFileError> {
+    match &raw.rating {
+        None => Ok(None),
         Some(r) => {
             if face_width.is_none() {
                 return Err(invalid(
@@ -159,7 +179,7 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
                     "a pair with a [rating] table needs its face width",
                 ));
             }
-            let inputs = parse_rating(r, &invalid)?;
+            let inputs = parse_rating(r, invalid)?;
             // The pitch-line velocity the rating takes (rate_figures: ω1 · dw1/2).
             let v = inputs.pinion_speed * pair.pinion.working / 2.0;
             check_pitch_line_velocity(v).map_err(|e| {
@@ -173,18 +193,9 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
                     &format!("the pitch-line velocity it gives, {} m/s, {rule}", short(v)),
                 )
             })?;
-            Some(inputs)
+            Ok(Some(inputs))
         }
-    };
-    Ok(GearFile {
-        file: file.into(),
-        name: raw.name,
-        spec,
-        cardan_crank_length: crank,
-        face_width,
-        rating,
-        given,
-    })
+    }
 }
 
 /// Names the file's field behind an input error of the geometry.

@@ -447,36 +447,7 @@ impl GearPair {
         let dw1 = db1 / alpha_op.cos();
         let dw2 = db2 / alpha_op.cos();
 
-        // Tip-to-root clearance at the operating centre distance: each member's tip circle
-        // must stay outside the mate's root circle, c ≥ 0 (ISO 21771's bottom clearance,
-        // c = a − ra1 − rf2 for an external pair; for an internal one, in magnitudes, the
-        // pinion tip reaches a + ra1 from the ring's axis, inside its root rf2, and the ring
-        // tip ra2 must stay beyond a + rf1). A negative c is a tooth that hits the mate's
-        // root: no pair, whatever the other checks say.
-        let (ra1, rf1, ra2, rf2, a) = (
-            da1 / 2.0,
-            df1 / 2.0,
-            da2.abs() / 2.0,
-            df2.abs() / 2.0,
-            a_op.abs(),
-        );
-        let (c_pinion_tip, c_gear_tip) = if internal {
-            (rf2 - a - ra1, ra2 - a - rf1)
-        } else {
-            (a - ra1 - rf2, a - ra2 - rf1)
-        };
-        require(
-            c_pinion_tip >= -ROUNDING * m,
-            "gear.dedendum_coefficient",
-            "the pinion's tip circle reaches into the gear's root circle (tip-to-root clearance below 0): deepen the gear's dedendum or shorten the pinion's addendum",
-            spec.gear.dedendum_coefficient,
-        )?;
-        require(
-            c_gear_tip >= -ROUNDING * m,
-            "pinion.dedendum_coefficient",
-            "the gear's tip circle reaches into the pinion's root circle (tip-to-root clearance below 0): deepen the pinion's dedendum or shorten the gear's addendum",
-            spec.pinion.dedendum_coefficient,
-        )?;
+        tip_to_root_clearance(&spec, internal, [da1, df1, da2, df2], a_op)?;
 
         // Path of contact (ISO 21771); a tip inside its base circle ends contact at the base.
         let half_root = |da: f64, db: f64| 0.5 * (da * da - db * db).max(0.0).sqrt();
@@ -762,74 +733,47 @@ pub fn karhula_contact_ratio(path_of_contact: f64, m: f64, alpha: f64) -> f64 {
     39.37 * path_of_contact * (25.4 / (m * 1e3)) / (PI * alpha.cos())
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn pair(z1: i32, z2: i32) -> GearPair {
-        GearPair::new(PairSpec::standard(
-            1e-3,
-            z1,
-            z2,
-            20f64.to_radians(),
-            0.0,
-            0.0,
-        ))
-        .unwrap()
-    }
-
-    #[test]
-    fn invalid_inputs_are_errors_not_panics() {
-        let base = PairSpec::standard(3e-3, 20, -40, 20f64.to_radians(), 0.0, 0.0);
-        let mut s = base;
-        s.module = -1.0;
-        assert!(matches!(
-            GearPair::new(s),
-            Err(GearError::InvalidInput {
-                field: "module",
-                ..
-            })
-        ));
-        let mut s = base;
-        s.gear.teeth = -15;
-        assert!(matches!(
-            GearPair::new(s),
-            Err(GearError::InvalidInput {
-                field: "gear.teeth",
-                ..
-            })
-        ));
-        let mut s = base;
-        s.pressure_angle = f64::NAN;
-        assert!(GearPair::new(s).is_err());
-        let mut s = base;
-        s.centre_distance = Some(1e-3);
-        assert!(GearPair::new(s).is_err());
-        let mut s = base;
-        s.gear.tip = Tip::Diameter(1.0);
-        assert!(GearPair::new(s).is_err());
-    }
-
-    #[test]
-    fn zero_backlash_at_working_centre_distance() {
-        // By construction of the involute inversion; 1e-15 m is rounding.
-        for (z2, x2) in [(40, 0.3), (-40, -0.4), (-24, -0.516)] {
-            let p = GearPair::new(PairSpec::standard(
-                3e-3,
-                16,
-                z2,
-                20f64.to_radians(),
-                0.2,
-                x2,
-            ))
-            .unwrap();
-            assert!(p.backlash_circumferential.abs() < 1e-15, "{z2}");
-        }
-    }
-
-    #[test]
-    fn checks_list_matches_pair_type() {
-        assert_eq!(pair(20, 40).checks().len(), 5);
-        assert_eq!(pair(25, -50).checks().len(), 7);
-    }
+/// Tip-to-root clearance at the operating centre distance: each member's tip circle
+/// must stay outside the mate's root circle, c ≥ 0 (ISO 21771's bottom clearance,
+/// c = a − ra1 − rf2 for an external pair; for an internal one, in magnitudes, the
+/// pinion tip reaches a + ra1 from the ring's axis, inside its root rf2, and the ring
+/// tip ra2 must stay beyond a + rf1). A negative c is a tooth that hits the mate's
+/// root: no pair, whatever the other checks say.
+/// (`diameters`: the pinion's tip and root, the gear's tip and root, signed as ISO 21771's;
+/// `a_op`: the operating centre distance, signed.)
+fn tip_to_root_clearance(
+    spec: &PairSpec,
+    internal: bool,
+    [da1, df1, da2, df2]: [f64; 4],
+    a_op: f64,
+) -> Result<(), GearError> {
+    let m = spec.module;
+    let (ra1, rf1, ra2, rf2, a) = (
+        da1 / 2.0,
+        df1 / 2.0,
+        da2.abs() / 2.0,
+        df2.abs() / 2.0,
+        a_op.abs(),
+    );
+    let (c_pinion_tip, c_gear_tip) = if internal {
+        (rf2 - a - ra1, ra2 - a - rf1)
+    } else {
+        (a - ra1 - rf2, a - ra2 - rf1)
+    };
+    require(
+        c_pinion_tip >= -ROUNDING * m,
+        "gear.dedendum_coefficient",
+        "the pinion's tip circle reaches into the gear's root circle (tip-to-root clearance below 0): deepen the gear's dedendum or shorten the pinion's addendum",
+        spec.gear.dedendum_coefficient,
+    )?;
+    require(
+        c_gear_tip >= -ROUNDING * m,
+        "pinion.dedendum_coefficient",
+        "the gear's tip circle reaches into the pinion's root circle (tip-to-root clearance below 0): deepen the pinion's dedendum or shorten the gear's addendum",
+        spec.pinion.dedendum_coefficient,
+    )?;
+    Ok(())
 }
+
+#[cfg(test)]
+mod tests;
