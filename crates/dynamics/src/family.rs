@@ -9,7 +9,9 @@
 //! code.
 
 use crate::planar;
-use cardan_mechanism::{Column, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, C};
+use cardan_mechanism::{
+    Column, JointKind, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, C,
+};
 
 /// Which path computes the loads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -118,6 +120,14 @@ impl Inertial {
     }
 }
 
+/// The crankshaft's pin on the frame: the main bearing (which the crank's carried masses load
+/// and the machine's journals take, `machine.rs`).
+pub fn main_bearing(t: &Topology) -> Option<usize> {
+    t.joints.iter().position(|j| {
+        j.body == t.crankshaft && j.other.is_none() && matches!(j.kind, JointKind::Revolute(_))
+    })
+}
+
 /// Adds to the main bearing's reaction (the crankshaft's pin on the frame) the m·a of masses
 /// `u` (kg·m, complex, towards where they are at θ = 0) turning with the crank about the main
 /// axis, at the steps of `block`. A mass m at ρ·e^{i(θ+γ)} has m·a = u·(iα − ω²)·e^{iθ} with
@@ -131,7 +141,7 @@ fn add_crank_masses(topology: &Topology, u: C, block: &StateBlock, out: &mut Loa
     if u == C::new(0.0, 0.0) {
         return;
     }
-    let Some(main) = crate::machine::main_bearing(topology) else {
+    let Some(main) = main_bearing(topology) else {
         return;
     };
     let c = &block.crank;

@@ -22,6 +22,7 @@ pub mod models;
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
 use crate::loss::{failed, At, Loss, Oil, Parameters, Site};
 use crate::loss_models::{default_model, Attachment, LossModel};
+use crate::machine::MachineKind;
 use crate::mesh::GearSpec;
 use crate::stage::SetupError;
 use cardan_friction::KARHULA_SKIRT_MU;
@@ -139,15 +140,15 @@ impl Friction {
 pub struct LossBudget {
     names: Vec<String>,
     parts: Vec<Box<dyn Loss>>,
-    /// Whether the machine is an engine ([`Friction::engine`] set): its need or output and
-    /// efficiency are an engine's, whatever the sign of a run's work (issue 36).
-    engine: bool,
+    /// Pump, or engine ([`Friction::engine`] set): its need or output and efficiency are the
+    /// kind's, whatever the sign of a run's work (issue 36).
+    kind: MachineKind,
 }
 
 impl LossBudget {
-    /// Whether the machine is an engine (module note of [`crate::stages`]: the need or output).
-    pub fn is_engine(&self) -> bool {
-        self.engine
+    /// Pump or engine (module note of [`crate::stages`]: the need or output).
+    pub fn kind(&self) -> MachineKind {
+        self.kind
     }
 
     /// The budget of `mechanism` in a cylinder of `bore` (m) under `friction`.
@@ -230,7 +231,10 @@ impl LossBudget {
         Ok(Self {
             names,
             parts,
-            engine: f.engine.is_some(),
+            kind: match f.engine {
+                Some(_) => MachineKind::Engine,
+                None => MachineKind::Pump,
+            },
         })
     }
 

@@ -18,6 +18,7 @@
 //! journals being midway. The usual first approximation of engine-dynamics texts; a
 //! continuous beam on elastic journals shares the loads otherwise (`docs/results.md`).
 
+use crate::family::{main_bearing, Gas, Inertial, Solver};
 use cardan_balance::{MachineBalance, Phase, PreparedBalance};
 use cardan_mechanism::{JointKind, Mechanism, Topology, C};
 use std::sync::Arc;
@@ -30,6 +31,22 @@ pub enum MachineKind {
     Pump,
     /// An engine: the gas drives the crank.
     Engine,
+}
+
+impl MachineKind {
+    /// The mechanical efficiency of a run of `gas` work and drive work `work` (J, ∫ T dθ of
+    /// gas and inertia) with `lost` J of friction, by the machine's kind whatever the works'
+    /// signs: a pump gas / (work + lost) (Karhula 2008 A9.1.72-73), an engine
+    /// (−work − lost) / −work (A9.1.74-75); `None` where its denominator, the work the drive
+    /// gives (pump) or takes (engine), is not positive (Karhula's definitions are of a steady
+    /// cycle). The cylinder's (`stages.rs`) and the machine's (`machine_stage.rs`).
+    pub fn efficiency(self, gas: f64, work: f64, lost: f64) -> Option<f64> {
+        let need = work + lost;
+        match self {
+            MachineKind::Pump => (need > 0.0).then(|| gas / need),
+            MachineKind::Engine => (work < 0.0).then(|| -need / -work),
+        }
+    }
 }
 
 /// A machine of one mechanism, built once (module note).
@@ -144,6 +161,14 @@ impl Machine {
         self.balance.crank_masses()
     }
 
+    /// A cylinder's load families as every run of the machine takes them: the bodies' inertia
+    /// with the crank's carried masses, and the gas where the case has one (`gas`), both by the
+    /// mechanism's closed forms. The run's train and the machine's stage take the same.
+    pub fn load_families(&self, gas: bool) -> (Inertial, Option<Gas>) {
+        let inertial = Inertial::new(Solver::ClosedForm).carrying(self.crank_masses());
+        (inertial, gas.then_some(Gas(Solver::ClosedForm)))
+    }
+
     /// Every cylinder's crank angle and gas phase at the machine's crank angle.
     pub fn phases(&self) -> &[Phase] {
         &self.phases
@@ -209,14 +234,6 @@ impl Machine {
 fn angle_gap(a: f64, b: f64) -> f64 {
     let d = (a - b).rem_euclid(std::f64::consts::TAU);
     d.min(std::f64::consts::TAU - d)
-}
-
-/// The crankshaft's pin on the frame: the main bearing (as the crank's carried masses load
-/// it, `family.rs`).
-pub fn main_bearing(t: &Topology) -> Option<usize> {
-    t.joints.iter().position(|j| {
-        j.body == t.crankshaft && j.other.is_none() && matches!(j.kind, JointKind::Revolute(_))
-    })
 }
 
 /// The crankshaft's first pin on another body: the crank pin.

@@ -17,9 +17,9 @@
 //! own (the case's friction at that cylinder's state and loads; a rated mesh's loss computed
 //! by the budget, the same figure as the rating's).
 
-use crate::family::{Gas, Inertial, LoadFamily, Solver};
+use crate::family::{Gas, Inertial, LoadFamily};
 use crate::losses::LossBudget;
-use crate::machine::{Machine, MachineKind};
+use crate::machine::Machine;
 use crate::metrics::{self, MetricDef, Summary};
 use crate::stage::{
     BlockInput, GasAt, Handed, RunTotals, Stage, StageColumn, StageError, StageInput, StageTotals,
@@ -157,9 +157,10 @@ impl MachineStage {
             pins: machine.crank_pin().is_some() && machine.main_bearing().is_some(),
             gas,
         };
+        let (inertial, gas_family) = machine.load_families(gas);
         Self {
-            inertial: Inertial::new(Solver::ClosedForm).carrying(machine.crank_masses()),
-            gas: gas.then_some(Gas(Solver::ClosedForm)),
+            inertial,
+            gas: gas_family,
             losses: losses.map_or(vec![], |l| vec![l.clone(); own]),
             friction: losses.is_some(),
             places,
@@ -720,14 +721,7 @@ impl StageTotals for MachineTotals {
         if !self.places.gas {
             return;
         }
-        // Where the work the drive gives (pump) or takes (engine) is positive, as the cylinder's
-        // (`stages.rs`).
-        let efficiency = match self.machine.kind {
-            // (A9.1.72-73)
-            MachineKind::Pump => (need > 0.0).then(|| gas / need),
-            // (A9.1.74-75)
-            MachineKind::Engine => (work < 0.0).then(|| -need / -work),
-        };
+        let efficiency = self.machine.kind.efficiency(gas, work, lost);
         if let Some(e) = efficiency {
             m.push("machine_mechanical_efficiency", e);
         }

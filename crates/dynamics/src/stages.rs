@@ -5,6 +5,7 @@
 
 use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
+use crate::machine::MachineKind;
 use crate::metrics::{self, MetricDef, Summary};
 use crate::stage::{Handed, RunTotals, Stage, StageColumn, StageError, StageInput, StageTotals};
 use crate::step::StepBlock;
@@ -85,7 +86,7 @@ impl Stage for LossBudget {
     fn totals(&self) -> Box<dyn StageTotals> {
         let n = self.names().len();
         Box::new(LossTotals {
-            engine: self.is_engine(),
+            kind: self.kind(),
             names: self.names().to_vec(),
             work: vec![Integral::default(); n],
             previous: vec![0.0; n],
@@ -105,8 +106,8 @@ impl Stage for LossBudget {
 /// The works of the loss components and the peak friction torque.
 #[derive(Debug, Clone)]
 struct LossTotals {
-    /// Whether the machine is an engine: which need or output and efficiency it reports.
-    engine: bool,
+    /// Pump or engine: which need or output and efficiency it reports.
+    kind: MachineKind,
     names: Vec<String>,
     /// ∫ P dt of each component, J (Karhula A9.1.68-71), by the trapezoidal rule in time.
     work: Vec<Integral>,
@@ -175,22 +176,22 @@ impl StageTotals for LossTotals {
         let (Some(gas), Some(total)) = (run.work("gas"), run.work("total")) else {
             return;
         };
-        if !self.engine {
-            // (A9.1.60-61, 64-65, 72-73)
-            let need = total + lost;
-            m.push("torque_need_mean", need / span);
-            m.push("power_need_mean", need / time);
-            if need > 0.0 {
-                m.push("mechanical_efficiency", gas / need);
+        match self.kind {
+            // (A9.1.60-61, 64-65)
+            MachineKind::Pump => {
+                let need = total + lost;
+                m.push("torque_need_mean", need / span);
+                m.push("power_need_mean", need / time);
             }
-        } else {
-            // (A9.1.62-63, 66-67, 74-75)
-            let out = -total - lost;
-            m.push("output_torque_mean", out / span);
-            m.push("output_power_mean", out / time);
-            if total < 0.0 {
-                m.push("mechanical_efficiency", out / -total);
+            // (A9.1.62-63, 66-67)
+            MachineKind::Engine => {
+                let out = -total - lost;
+                m.push("output_torque_mean", out / span);
+                m.push("output_power_mean", out / time);
             }
+        }
+        if let Some(e) = self.kind.efficiency(gas, total, lost) {
+            m.push("mechanical_efficiency", e);
         }
     }
 

@@ -12,7 +12,7 @@ use cardan_dynamics::machine_friction::MotionFriction;
 use cardan_dynamics::machine_motion::{MachineTorques, SolvedMotion, SolvedRun};
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, run_parallel, Gas, Inertial, LoadFamily, Sink, Solver, Stage, Summary, SummarySink,
+    run, run_parallel, Gas, Inertial, LoadFamily, Sink, Stage, Summary, SummarySink,
 };
 use cardan_gas::GasMetric;
 use cardan_mechanism::{CrankMotion, Grid, Mechanism};
@@ -125,11 +125,8 @@ struct TrainFamilies {
 
 impl TrainFamilies {
     fn of(case: &Case, setup: &Setup) -> Self {
-        let carried = setup.machine.crank_masses();
-        Self {
-            inertial: Inertial::new(Solver::ClosedForm).carrying(carried),
-            gas: case.gas.is_some().then_some(Gas(Solver::ClosedForm)),
-        }
+        let (inertial, gas) = setup.machine.load_families(case.gas.is_some());
+        Self { inertial, gas }
     }
 
     fn list(&self) -> Vec<&dyn LoadFamily> {
