@@ -10,6 +10,7 @@ use crate::masses::MassTable;
 use crate::quantity::{
     Angle, AngularAcceleration, AngularSpeed, Length, Positive, Quantity, Whole,
 };
+use crate::read_once::ReadOnce;
 use crate::setup::Setup;
 use crate::units::is_folder_name;
 use cardan_dynamics::{Friction, GearSpec};
@@ -314,15 +315,16 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
 /// messages. The same reader as [`load_file`]'s, so the same errors.
 pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, CaseError> {
     match crate::sweep::expand(file, table.clone())? {
-        None => Ok(vec![from_table(file, table)?]),
+        None => Ok(vec![from_table(file, table, &ReadOnce::default())?]),
         Some((sweep, points)) => {
+            let read_once = ReadOnce::default();
             // Each point's table read as it is (written out as TOML text and parsed again, it
             // took most of the time of reading a sweep of 10 000 points), the points on every
             // thread, the first failure in the points' order reported.
             let cases: Vec<Result<Case, CaseError>> = points
                 .into_par_iter()
                 .map(|p| {
-                    let mut case = from_table(file, p.table)?;
+                    let mut case = from_table(file, p.table, &read_once)?;
                     case.sweep = Some((sweep.clone(), p.values));
                     Ok(case)
                 })
@@ -336,7 +338,7 @@ pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, Case
 /// swept values; the errors are those of a case file of that point's table.
 pub fn point_case(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseError> {
     let point = sweep.point(k)?;
-    let mut case = from_table(&sweep.file, point.table)?;
+    let mut case = from_table(&sweep.file, point.table, sweep.read_once())?;
     case.sweep = Some((sweep.name.clone(), point.values));
     Ok(case)
 }
@@ -345,12 +347,12 @@ pub fn point_case(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseErr
 /// [`crate::sweep::Sweep::define`]'s caller, or read by [`toml_table`]); `file` is only for the
 /// messages.
 pub fn case_of_table(file: &Path, table: toml::Table) -> Result<Case, CaseError> {
-    from_table(file, table)
+    from_table(file, table, &ReadOnce::default())
 }
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
-    from_table(file, toml_table(file, text)?)
+    from_table(file, toml_table(file, text)?, &ReadOnce::default())
 }
 
 /// The TOML of a case file; a syntax error as the TOML reader says it, with line and column.
@@ -392,8 +394,13 @@ fn mechanism_tables(table: &mut toml::Table) -> MechanismTables {
     own
 }
 
-/// Reads a case's table (a file's, or a sweep point's) into the schema, then validates it.
-fn from_table(file: &Path, mut table: toml::Table) -> Result<Case, CaseError> {
+/// Reads a case's table (a file's, or a sweep point's) into the schema, then validates it; the
+/// files it reads are read once for every case sharing `read_once`.
+fn from_table(
+    file: &Path,
+    mut table: toml::Table,
+    read_once: &ReadOnce,
+) -> Result<Case, CaseError> {
     let name = match table.get("name") {
         Some(toml::Value::String(name)) => name.clone(),
         _ => "(unnamed)".to_string(),
@@ -412,7 +419,7 @@ fn from_table(file: &Path, mut table: toml::Table) -> Result<Case, CaseError> {
         }
     })?;
     let document = crate::digest::canonical(&(&raw, &own.options, &own.masses));
-    let mut case = validate(file, raw, own)?;
+    let mut case = validate(file, raw, own, read_once)?;
     let mut digest = crate::digest::Fnv::default();
     digest.update(&document);
     for (name, bytes) in case.gas.iter().flat_map(|g| &g.files) {
@@ -431,7 +438,12 @@ fn mechanism_names() -> Vec<&'static str> {
 
 /// Validates a case read from `file` (only for the messages): the rules between fields, and
 /// the mechanisms built from the registry.
-fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, CaseError> {
+fn validate(
+    file: &Path,
+    raw: CaseFile,
+    own: MechanismTables,
+    read_once: &ReadOnce,
+) -> Result<Case, CaseError> {
     let case_name = raw.name.0.clone();
     let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
         file: file.into(),
@@ -504,7 +516,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     let gas = raw
         .gas
         .as_ref()
-        .map(|table| crate::gas::parse(table, file, &case_name, machine))
+        .map(|table| crate::gas::parse(table, file, &case_name, (machine, read_once)))
         .transpose()?;
     if gas.is_some() {
         crate::unread::gas_cylinders(&mechanisms, &invalid)?;

@@ -17,6 +17,7 @@ pub mod mechanism_table;
 mod output_metrics;
 pub mod plausible;
 pub mod quantity;
+pub mod read_once;
 pub mod schema;
 pub mod setup;
 pub mod sweep;

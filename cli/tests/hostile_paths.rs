@@ -195,9 +195,14 @@ fn a_run_record_that_is_a_fifo_is_run_again_by_resume_not_waited_on() {
     // runs the case again (the folder is replaced) instead of blocking on the read.
     let dir = tempfile::tempdir().unwrap();
     let case = repo("configs/karhula-pump-r60-l140-a0-w3pi.toml");
-    let (code, _, err) = cardan_in(dir.path(), &[&"run", &case, &"--out", &"out", &"--no-report"]);
+    let (code, _, err) = cardan_in(
+        dir.path(),
+        &[&"run", &case, &"--out", &"out", &"--no-report"],
+    );
     assert_eq!(code, Some(0), "stderr: {err}");
-    let record = dir.path().join("out/karhula-pump-r60-l140-a0-w3pi/run.json");
+    let record = dir
+        .path()
+        .join("out/karhula-pump-r60-l140-a0-w3pi/run.json");
     std::fs::remove_file(&record).unwrap();
     mkfifo(&record);
     let (code, _, err) = cardan_in(
