@@ -202,7 +202,7 @@ pub struct MotionTable {
     #[serde(default)]
     pub mode: crate::machine_motion::MotionMode,
     /// Dynamic: cycles of start_angle..end_angle run from the initial state, the last reported;
-    /// default 1.
+    /// default 1; cycles × steps at most 20 million integration steps.
     pub cycles: Option<Whole<1, 100_000>>,
     /// Dynamic: stop before `cycles` once a cycle ends within this fraction of its start speed
     /// (periodic steady state), from 0 to 1 (exclusive); default: run every cycle.
@@ -288,6 +288,11 @@ impl<'de> Deserialize<'de> for FolderName {
 
 /// Largest accepted number of steps.
 pub const MAX_STEPS: i64 = 100_000_000;
+
+/// Largest accepted number of integration steps of a dynamic run's cycles (`cycles × steps`):
+/// 20 million, a run-up of 27 000 cycles of 720 steps, some minutes a mechanism with every
+/// loss model (issue 36.10: 100 000 cycles were accepted and took about 13 hours).
+pub const MAX_SOLVED_STEPS: i64 = 20_000_000;
 
 /// Reads and validates one case file.
 pub fn load(file: &Path) -> Result<Case, CaseError> {
@@ -501,6 +506,19 @@ fn validate(
         &m.initial_speed,
     );
     crate::unread::dynamic_inputs(dynamic, tolerance, cycles, &invalid)?;
+    if let Some(cycles) = cycles.filter(|&c| c.saturating_mul(m.steps.0) > MAX_SOLVED_STEPS) {
+        return Err(invalid(
+            "motion.cycles",
+            &cycles,
+            &format!(
+                "with motion.steps = {} is {} integration steps, more than {MAX_SOLVED_STEPS} \
+                 (hours of solving, more with a sized flywheel): set motion.steady_tolerance to \
+                 stop at the periodic steady state, or take fewer steps per cycle",
+                m.steps.0,
+                cycles * m.steps.0
+            ),
+        ));
+    }
     if let (None, Err(e)) = (&dynamics, motion.at_angle(end_angle)) {
         return Err(invalid(
             "motion.initial_speed",

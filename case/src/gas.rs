@@ -262,7 +262,7 @@ mod tests {
                 Some("engine") => Machine::Engine,
                 _ => Machine::Pump,
             };
-            let case = parse(gas, &file, "shipped", machine)
+            let case = parse(gas, &file, "shipped", (machine, &ReadOnce::default()))
                 .unwrap_or_else(|e| panic!("{}: {e}", file.display()));
             assert_eq!(Some(case.name()), gas.get("model").and_then(|m| m.as_str()));
             read += 1;
@@ -272,9 +272,14 @@ mod tests {
 
     fn error(machine: Machine, text: &str) -> String {
         let table: toml::Table = toml::from_str(text).unwrap();
-        parse(&table, Path::new("c.toml"), "c", machine)
-            .unwrap_err()
-            .to_string()
+        parse(
+            &table,
+            Path::new("c.toml"),
+            "c",
+            (machine, &ReadOnce::default()),
+        )
+        .unwrap_err()
+        .to_string()
     }
 
     /// A misspelled field of each model's table names its path, the nearest field and the

@@ -755,6 +755,15 @@ fn inputs_nothing_would_read_are_refused() {
             &["motion.steady_tolerance = 0.001", "single cycle"],
         ),
         (
+            // Issue 36.10: 100 000 cycles took about 13 hours.
+            dynamic.replace("cycles = 5", "cycles = 100000"),
+            &[
+                "motion.cycles = 100000",
+                "integration steps, more than 20000000",
+                "steady_tolerance",
+            ],
+        ),
+        (
             cardan_only.replace("bore = 0.12", "bore = 0.12\npin_offset = \"5 mm\""),
             &[
                 "geometry.pin_offset = \"5 mm\"",

@@ -18,6 +18,7 @@
 pub mod energy;
 pub mod engine_losses;
 pub mod family;
+pub mod flywheel_sizing;
 pub mod fmep;
 pub mod gear_rating;
 pub mod loss;
