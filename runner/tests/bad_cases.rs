@@ -755,6 +755,11 @@ fn inputs_nothing_would_read_are_refused() {
             &["motion.steady_tolerance = 0.001", "single cycle"],
         ),
         (
+            // Issue 36.3: the solved speed of 1e15 kg·m² does not move in double precision.
+            dynamic.replace("inertia = \"0.2 kg*m^2\"", "inertia = \"1e15 kg*m^2\""),
+            &["flywheel.inertia = \"1e15 kg*m^2\"", "at most 1e6 kg*m^2"],
+        ),
+        (
             // Issue 36.10: 100 000 cycles took about 13 hours.
             dynamic.replace("cycles = 5", "cycles = 100000"),
             &[
