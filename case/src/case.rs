@@ -558,6 +558,28 @@ fn validate(
         )?;
     }
     let gear = raw.gear.as_ref().map(|table| table.spec());
+    if gear.is_some() {
+        // The run's fastest crank speed: an end of a prescribed ramp (ω² is linear in the
+        // angle), a solved motion's start (its later speeds are checked at each step).
+        let end = motion
+            .at_angle(end_angle)
+            .ok()
+            .filter(|_| dynamics.is_none());
+        let blame = match end.filter(|e| e.speed.abs() > motion.initial_speed.abs()) {
+            Some(e) => (
+                e.speed,
+                (
+                    "motion.angular_acceleration",
+                    &*m.angular_acceleration.written,
+                ),
+            ),
+            None => (
+                motion.initial_speed,
+                ("motion.initial_speed", &*m.initial_speed.written),
+            ),
+        };
+        crate::gear_speed::check(&mechanisms, blame.0.abs(), blame.1, &invalid)?;
+    }
     let friction = match &raw.friction {
         None => None,
         Some(table) => {

@@ -1,0 +1,60 @@
+//! The pitch-line velocity a case's gear meshes reach, checked at validation as `cardan gear`
+//! checks a gear file's (issue 36.12: one rule, [`cardan_gears::check_pitch_line_velocity`]):
+//! a pair no gear can run at is refused by `cardan check`, in the case's own speed field,
+//! instead of being rated. A prescribed motion's fastest crank speed is known before stepping;
+//! a solved motion's is not, and the gear stage refuses a step beyond the limit.
+
+use crate::error::{CaseError, Invalid};
+use cardan_mechanism::{CrankState, JointKind, Mechanism};
+use std::sync::Arc;
+
+/// Crank angles a turn is sampled at for the meshes' fastest pitch-line velocity: a mesh's
+/// relative speed varies at most with a few orders of the crank angle (constant for the
+/// cardan pair), which 360 points resolve far inside the rule's margin.
+const SAMPLES: usize = 360;
+
+/// Refuses `mechanisms` whose gear meshes, at the crank speed `speed` (rad/s, the run's fastest,
+/// given as the field `field` = `written`), run faster at the pitch line than a gear can.
+pub(crate) fn check(
+    mechanisms: &[Arc<dyn Mechanism>],
+    speed: f64,
+    (field, written): (&str, &str),
+    invalid: &Invalid,
+) -> Result<(), CaseError> {
+    for m in mechanisms {
+        let meshes: Vec<(usize, &str)> = m
+            .topology()
+            .joints
+            .iter()
+            .enumerate()
+            .filter(|(_, j)| matches!(j.kind, JointKind::GearMesh { .. }))
+            .map(|(k, j)| (k, j.name))
+            .collect();
+        if meshes.is_empty() {
+            continue;
+        }
+        for s in 0..SAMPLES {
+            let angle = std::f64::consts::TAU * s as f64 / SAMPLES as f64;
+            let state = m.state(&CrankState::new(angle, speed, 0.0, 0.0));
+            for &(k, name) in &meshes {
+                let v = state.joints[k].relative_speed.abs();
+                if let Err(e) = cardan_gears::check_pitch_line_velocity(v) {
+                    let rule = match e {
+                        cardan_gears::GearError::InvalidInput { rule, .. } => rule.to_string(),
+                        e => e.to_string(),
+                    };
+                    return Err(invalid(
+                        field,
+                        &written,
+                        &format!(
+                            "the {}'s gear mesh {name} then runs at {} m/s at the pitch line, which {rule}",
+                            m.name(),
+                            crate::units::short(v)
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
