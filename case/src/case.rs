@@ -441,39 +441,12 @@ fn mechanism_names() -> Vec<&'static str> {
         .collect()
 }
 
-/// Validates a case read from `file` (only for the messages): the rules between fields, and
-/// the mechanisms built from the registry.
-fn validate(
-    file: &Path,
-    raw: CaseFile,
-    own: MechanismTables,
-    read_once: &ReadOnce,
-) -> Result<Case, CaseError> {
-    let case_name = raw.name.0.clone();
-    let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
-        file: file.into(),
-        case: case_name.clone(),
-        field: field.to_string(),
-        value: crate::units::show(&value.to_string()),
-        rule: rule.to_string(),
-    };
-    let field_error = |error| CaseError::Field {
-        file: file.into(),
-        case: case_name.clone(),
-        error,
-    };
-    let machine = raw.machine;
-    let g = &raw.geometry;
-    let geometry = MachineGeometry {
-        crank_length: g.crank_length.si,
-        rod_length: g.rod_length.si,
-        bore: g.bore.si,
-        pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
-    };
-    crate::unread::geometry_size([&g.crank_length, &g.rod_length, &g.bore], &invalid)?;
-    let pistons = if g.opposed_pistons { 2 } else { 1 };
-    let crank_phase = crank_phase(g, pistons, &invalid)?;
-
+/// The crank's motion of a case (`[motion]`, `[load]`, `[flywheel]`): the prescribed law, the
+/// end angle (rad) and the solved motion's tables, with their rules.
+fn motion_of(
+    raw: &CaseFile,
+    invalid: &Invalid,
+) -> Result<(CrankMotion, f64, Option<crate::machine_motion::Dynamics>), CaseError> {
     let m = &raw.motion;
     let (start_angle, end_angle) = (m.start_angle.si, m.end_angle.si);
     if end_angle <= start_angle {
@@ -526,6 +499,45 @@ fn validate(
             &e.to_string(),
         ));
     }
+    Ok((motion, end_angle, dynamics))
+}
+
+/// Validates a case read from `file` (only for the messages): the rules between fields, and
+/// the mechanisms built from the registry.
+fn validate(
+    file: &Path,
+    raw: CaseFile,
+    own: MechanismTables,
+    read_once: &ReadOnce,
+) -> Result<Case, CaseError> {
+    let case_name = raw.name.0.clone();
+    let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
+        file: file.into(),
+        case: case_name.clone(),
+        field: field.to_string(),
+        value: crate::units::show(&value.to_string()),
+        rule: rule.to_string(),
+    };
+    let field_error = |error| CaseError::Field {
+        file: file.into(),
+        case: case_name.clone(),
+        error,
+    };
+    let machine = raw.machine;
+    let g = &raw.geometry;
+    let geometry = MachineGeometry {
+        crank_length: g.crank_length.si,
+        rod_length: g.rod_length.si,
+        bore: g.bore.si,
+        pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
+    };
+    crate::unread::geometry_size([&g.crank_length, &g.rod_length, &g.bore], &invalid)?;
+    let pistons = if g.opposed_pistons { 2 } else { 1 };
+    let crank_phase = crank_phase(g, pistons, &invalid)?;
+
+    let m = &raw.motion;
+    let (motion, end_angle, dynamics) = motion_of(&raw, &invalid)?;
+    let start_angle = motion.start_angle;
     let steps = m.steps.0 as usize;
 
     let step = (end_angle - start_angle) / steps as f64;
