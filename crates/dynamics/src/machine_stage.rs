@@ -404,6 +404,10 @@ impl Stage for MachineStage {
         out: &mut [Column],
     ) -> Result<(), (usize, StageError)> {
         let n = input.states.len;
+        if self.machine.cylinders() == 1 && self.machine.train_is_first() {
+            self.one_cylinder_block(input, out);
+            return self.check_block(n, out);
+        }
         let room = self.room();
         room.cranks.clear();
         room.cranks.extend((0..n).map(|i| input.states.crank.at(i)));
@@ -422,18 +426,7 @@ impl Stage for MachineStage {
             }
         }
         self.row = row;
-        // One sum of every value first: a NaN or an infinity makes it so (as the stepper's
-        // `all_finite`); only then, or when finite values overflow it, the lanes one by one.
-        let sum: f64 = out.iter().map(|c| c[..n].iter().sum::<f64>()).sum();
-        if sum.is_finite() {
-            return Ok(());
-        }
-        for i in 0..n {
-            if let Some(k) = out.iter().position(|c| !c[i].is_finite()) {
-                return Err((i, self.not_finite(k, out[k][i])));
-            }
-        }
-        Ok(())
+        self.check_block(n, out)
     }
 
     fn columns(&self) -> Vec<StageColumn> {
@@ -499,6 +492,84 @@ impl Stage for MachineStage {
 }
 
 impl MachineStage {
+    /// A block of a machine of one cylinder, the run's train (module note): its values from the
+    /// train's columns a column at a time, with the operations of [`MachineStage::values`] in
+    /// its order (the same bits) but without gathering each lane's cylinder and row.
+    fn one_cylinder_block(&self, input: &BlockInput, out: &mut [Column]) {
+        let n = input.states.len;
+        let p = self.places;
+        let m = &*self.machine;
+        let t = m.mechanism().topology();
+        let total = input.total;
+        let joint =
+            |j: usize, i: usize| m.axis(0) * C::new(total.joints[j].fx[i], total.joints[j].fy[i]);
+        for i in 0..n {
+            let crank = input.states.crank.at(i);
+            let s = m
+                .balance()
+                .sum(std::iter::once(shaking_lane(t, input.states, i)), &crank);
+            out[0][i] = s.force.re;
+            out[1][i] = s.force.im;
+            out[2][i] = s.pitch();
+            out[3][i] = s.yaw();
+        }
+        let others = p.others();
+        for c in &mut out[others..others + 3] {
+            c[..n].fill(0.0);
+        }
+        for i in 0..n {
+            out[Places::TORQUE][i] = 0.0 + total.crank_torque[i];
+        }
+        for j in 0..p.journals {
+            out[p.journal(j)][..n].fill(0.0);
+            out[p.journal(j) + 1][..n].fill(0.0);
+        }
+        if let Some(b) = m.main_bearing() {
+            for (j, share) in m.journals_of(0) {
+                for i in 0..n {
+                    let main = joint(b, i);
+                    out[p.journal(j)][i] += share * main.re;
+                    out[p.journal(j) + 1][i] += share * main.im;
+                }
+            }
+        } else {
+            for (j, share) in m.journals_of(0) {
+                for i in 0..n {
+                    out[p.journal(j)][i] += share * 0.0;
+                    out[p.journal(j) + 1][i] += share * 0.0;
+                }
+            }
+        }
+        if p.pins {
+            for i in 0..n {
+                let pin = m.crank_pin().map_or(C::new(0.0, 0.0), |j| joint(j, i));
+                out[p.pin(0)][i] = pin.re;
+                out[p.pin(0) + 1][i] = pin.im;
+            }
+        }
+        if p.gas {
+            for i in 0..n {
+                out[p.gas(0)][i] = input.force.map_or(0.0, |f| f[i]);
+            }
+        }
+    }
+
+    /// Checks a block's `n` lanes of values `out`: the error of the first value not finite.
+    fn check_block(&self, n: usize, out: &[Column]) -> Result<(), (usize, StageError)> {
+        // One sum of every value first: a NaN or an infinity makes it so (as the stepper's
+        // `all_finite`); only then, or when finite values overflow it, the lanes one by one.
+        let sum: f64 = out.iter().map(|c| c[..n].iter().sum::<f64>()).sum();
+        if sum.is_finite() {
+            return Ok(());
+        }
+        for i in 0..n {
+            if let Some(k) = out.iter().position(|c| !c[i].is_finite()) {
+                return Err((i, self.not_finite(k, out[k][i])));
+            }
+        }
+        Ok(())
+    }
+
     /// The error of the stage's value `k` not finite, `value`.
     fn not_finite(&self, k: usize, value: f64) -> StageError {
         let quantity = match self.columns().into_iter().find(|c| c.value == k) {
