@@ -638,40 +638,61 @@ pub struct MachineTotals {
 }
 
 impl MachineTotals {
-    /// Takes the stage's values `v` at step `k`, crank angle `angle` (rad), time `time` (s).
+    /// Takes the stage's values at the steps `steps` (step number, crank angle in rad, time in
+    /// s, in the steps' order), `value(i, place)` the value at `place` of the `i`-th of them.
+    /// The peaks a value at a time over the steps (a peak is the same whatever the order), the
+    /// integrals step by step in order.
     #[inline]
-    fn take(&mut self, k: usize, angle: f64, time: f64, v: &[f64]) {
+    fn take(&mut self, steps: &[(usize, f64, f64)], value: impl Fn(usize, usize) -> f64) {
         let p = self.places;
-        raise_norm(&mut self.force, v[0], v[1]);
-        raise_norm(&mut self.moment, v[2], v[3]);
-        let torque = v[Places::TORQUE];
-        self.torque = Some(match self.torque {
-            None => (torque, torque),
-            Some((lo, hi)) => (lo.min(torque), hi.max(torque)),
-        });
+        let lanes = 0..steps.len();
+        for i in lanes.clone() {
+            raise_norm(&mut self.force, value(i, 0), value(i, 1));
+        }
+        for i in lanes.clone() {
+            raise_norm(&mut self.moment, value(i, 2), value(i, 3));
+        }
+        for i in lanes.clone() {
+            let torque = value(i, Places::TORQUE);
+            self.torque = Some(match self.torque {
+                None => (torque, torque),
+                Some((lo, hi)) => (lo.min(torque), hi.max(torque)),
+            });
+        }
         for j in 0..p.journals {
-            raise_norm(&mut self.journal, v[p.journal(j)], v[p.journal(j) + 1]);
+            for i in lanes.clone() {
+                raise_norm(
+                    &mut self.journal,
+                    value(i, p.journal(j)),
+                    value(i, p.journal(j) + 1),
+                );
+            }
         }
         if p.pins {
-            self.pins.fill(C::new(0.0, 0.0));
-            for i in 0..p.cylinders {
-                self.pins[self.machine.pin_of(i)] += C::new(v[p.pin(i)], v[p.pin(i) + 1]);
-            }
-            for f in &self.pins {
-                raise_norm(&mut self.pin, f.re, f.im);
+            for i in lanes.clone() {
+                self.pins.fill(C::new(0.0, 0.0));
+                for k in 0..p.cylinders {
+                    let pin = C::new(value(i, p.pin(k)), value(i, p.pin(k) + 1));
+                    self.pins[self.machine.pin_of(k)] += pin;
+                }
+                for f in &self.pins {
+                    raise_norm(&mut self.pin, f.re, f.im);
+                }
             }
         }
         if !self.others {
             return;
         }
         let o = p.others();
-        let now = [angle, time, v[o], v[o + 1], v[o + 2]];
-        if let Some([a0, t0, w0, g0, l0]) = self.previous {
-            self.work.add(k, 0.5 * (angle - a0) * (now[2] + w0));
-            self.gas_work.add(k, 0.5 * (angle - a0) * (now[3] + g0));
-            self.loss_work.add(k, 0.5 * (time - t0) * (now[4] + l0));
+        for (i, &(k, angle, time)) in steps.iter().enumerate() {
+            let now = [angle, time, value(i, o), value(i, o + 1), value(i, o + 2)];
+            if let Some([a0, t0, w0, g0, l0]) = self.previous {
+                self.work.add(k, 0.5 * (angle - a0) * (now[2] + w0));
+                self.gas_work.add(k, 0.5 * (angle - a0) * (now[3] + g0));
+                self.loss_work.add(k, 0.5 * (time - t0) * (now[4] + l0));
+            }
+            self.previous = Some(now);
         }
-        self.previous = Some(now);
     }
 }
 
@@ -685,20 +706,20 @@ impl StageTotals for MachineTotals {
     ) {
         let columns = block.stage_columns.get(stage).filter(|c| !c.is_empty());
         if let Some(c) = columns {
-            let mut v = vec![0.0; c.len()];
-            for (k, j) in (block.first + lanes.start..).zip(lanes) {
-                for (x, col) in v.iter_mut().zip(c) {
-                    *x = col[j];
-                }
-                let crank = &block.state.crank;
-                self.take(k, crank.angle[j], crank.time[j], &v);
+            let crank = &block.state.crank;
+            let mut steps = [(0, 0.0, 0.0); LANES];
+            for (i, j) in lanes.clone().enumerate() {
+                steps[i] = (block.first + j, crank.angle[j], crank.time[j]);
             }
+            let start = lanes.start;
+            self.take(&steps[..lanes.len()], |i, place| c[place][start + i]);
             return;
         }
         let steps = block.steps.get(lanes.clone()).unwrap_or_default();
         for (k, s) in (block.first + lanes.start..).zip(steps) {
             let crank = &s.state.crank;
-            self.take(k, crank.angle, crank.time, &s.stages[stage]);
+            let v = &s.stages[stage];
+            self.take(&[(k, crank.angle, crank.time)], |_, place| v[place]);
         }
     }
 
