@@ -639,40 +639,33 @@ pub struct MachineTotals {
 
 impl MachineTotals {
     /// Takes the stage's values at the steps `steps` (step number, crank angle in rad, time in
-    /// s, in the steps' order), `value(i, place)` the value at `place` of the `i`-th of them.
-    /// The peaks a value at a time over the steps (a peak is the same whatever the order), the
-    /// integrals step by step in order.
+    /// s, in the steps' order), `column(place)` the values at `place` of those steps. The peaks
+    /// a value at a time over the steps (each accumulator sees its values in the steps' order),
+    /// the integrals step by step.
     #[inline]
-    fn take(&mut self, steps: &[(usize, f64, f64)], value: impl Fn(usize, usize) -> f64) {
+    fn take<'v>(&mut self, steps: &[(usize, f64, f64)], column: impl Fn(usize) -> &'v [f64]) {
         let p = self.places;
-        let lanes = 0..steps.len();
-        for i in lanes.clone() {
-            raise_norm(&mut self.force, value(i, 0), value(i, 1));
+        let norms = |peak: &mut f64, x: usize| {
+            for (&a, &b) in column(x).iter().zip(column(x + 1)) {
+                raise_norm(peak, a, b);
+            }
+        };
+        norms(&mut self.force, 0);
+        norms(&mut self.moment, 2);
+        for j in 0..p.journals {
+            norms(&mut self.journal, p.journal(j));
         }
-        for i in lanes.clone() {
-            raise_norm(&mut self.moment, value(i, 2), value(i, 3));
-        }
-        for i in lanes.clone() {
-            let torque = value(i, Places::TORQUE);
+        for &torque in column(Places::TORQUE) {
             self.torque = Some(match self.torque {
                 None => (torque, torque),
                 Some((lo, hi)) => (lo.min(torque), hi.max(torque)),
             });
         }
-        for j in 0..p.journals {
-            for i in lanes.clone() {
-                raise_norm(
-                    &mut self.journal,
-                    value(i, p.journal(j)),
-                    value(i, p.journal(j) + 1),
-                );
-            }
-        }
         if p.pins {
-            for i in lanes.clone() {
+            for i in 0..steps.len() {
                 self.pins.fill(C::new(0.0, 0.0));
                 for k in 0..p.cylinders {
-                    let pin = C::new(value(i, p.pin(k)), value(i, p.pin(k) + 1));
+                    let pin = C::new(column(p.pin(k))[i], column(p.pin(k) + 1)[i]);
                     self.pins[self.machine.pin_of(k)] += pin;
                 }
                 for f in &self.pins {
@@ -684,8 +677,9 @@ impl MachineTotals {
             return;
         }
         let o = p.others();
+        let (w, g, l) = (column(o), column(o + 1), column(o + 2));
         for (i, &(k, angle, time)) in steps.iter().enumerate() {
-            let now = [angle, time, value(i, o), value(i, o + 1), value(i, o + 2)];
+            let now = [angle, time, w[i], g[i], l[i]];
             if let Some([a0, t0, w0, g0, l0]) = self.previous {
                 self.work.add(k, 0.5 * (angle - a0) * (now[2] + w0));
                 self.gas_work.add(k, 0.5 * (angle - a0) * (now[3] + g0));
@@ -711,15 +705,16 @@ impl StageTotals for MachineTotals {
             for (i, j) in lanes.clone().enumerate() {
                 steps[i] = (block.first + j, crank.angle[j], crank.time[j]);
             }
-            let start = lanes.start;
-            self.take(&steps[..lanes.len()], |i, place| c[place][start + i]);
+            self.take(&steps[..lanes.len()], |place| &c[place][lanes.clone()]);
             return;
         }
         let steps = block.steps.get(lanes.clone()).unwrap_or_default();
         for (k, s) in (block.first + lanes.start..).zip(steps) {
             let crank = &s.state.crank;
             let v = &s.stages[stage];
-            self.take(&[(k, crank.angle, crank.time)], |_, place| v[place]);
+            self.take(&[(k, crank.angle, crank.time)], |place| {
+                &v[place..place + 1]
+            });
         }
     }
 
