@@ -175,8 +175,10 @@ fn units_of(
     metrics: &[(String, Vec<f64>)],
     ran: &[(&Case, &[MechanismResult])],
 ) -> Vec<(String, &'static str)> {
-    let mut wanted: HashMap<&str, Option<&'static str>> =
-        metrics.iter().map(|(name, _)| (name.as_str(), None)).collect();
+    let mut wanted: HashMap<&str, Option<&'static str>> = metrics
+        .iter()
+        .map(|(name, _)| (name.as_str(), None))
+        .collect();
     let mut missing = wanted.len();
     'points: for (_, results) in ran {
         for r in *results {

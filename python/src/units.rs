@@ -40,7 +40,8 @@ pub fn quantity(value: &Bound<'_, PyAny>, unit: &str) -> PyResult<(f64, String)>
         .into_iter()
         .find(|d| !unit.is_empty() && d.default_unit() == unit)
         .ok_or_else(|| PyValueError::new_err(format!("no quantity has the unit {unit:?}")))?;
-    let value = convert::to_toml(value, "value").map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let value =
+        convert::to_toml(value, "value").map_err(|e| PyValueError::new_err(e.to_string()))?;
     let si = to_si(&value, dim).map_err(PyValueError::new_err)?;
     Ok((si, si_unit(dim)))
 }

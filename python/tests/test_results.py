@@ -74,7 +74,8 @@ def test_no_steps_no_cylinders():
 
 
 def lines(fig):
-    return [line for ax in fig.axes for line in ax.get_lines()]
+    """The figure's data lines (not the zero line, whose label matplotlib starts with "_")."""
+    return [l for ax in fig.axes for l in ax.get_lines() if not l.get_label().startswith("_")]
 
 
 def test_plots_draw_the_runs_columns(pump):

@@ -62,7 +62,7 @@ def test_swept_values_with_units_are_numbers_in_si():
     assert table.written["motion.initial_speed"] == ["600 rpm", "600 rpm", "100.0", "100.0"]
     # The metrics' units are the summary's.
     assert table.units["cardan_gear.piston_velocity_max"] == "m/s"
-    assert table.units["slider_crank.mechanical_efficiency"] == "1"
+    assert table.units["slider_crank.piston_stroke"] == "m"
     # A point is the run of its case written in SI.
     summary = run_point(small_case(), **{"geometry.rod_length": 0.2, "motion.initial_speed": 100.0})
     assert table["slider_crank.piston_velocity_max"][3] == summary["slider_crank"]["piston_velocity_max"]
@@ -72,7 +72,7 @@ def test_angles_pressures_and_words():
     case = small_case()
     table = cardan.sweep(
         case,
-        {"motion.start_angle": [90.0, "1.5 rad"], "machine": ["pump", "pump"]},
+        {"motion.start_angle": [90.0, "1.5 rad"], "motion.mode": ["prescribed", "prescribed"]},
         mode="zip",
         as_pandas=False,
     )
@@ -80,7 +80,7 @@ def test_angles_pressures_and_words():
     np.testing.assert_allclose(table["motion.start_angle"], [math.pi / 2, 1.5], rtol=1e-15)
     assert table.units["motion.start_angle"] == "rad"
     # A word stays as written, with no unit.
-    assert list(table["machine"]) == ["pump", "pump"] and "machine" not in table.units
+    assert list(table["motion.mode"]) == ["prescribed"] * 2 and "motion.mode" not in table.units
 
 
 def test_units_in_the_frames_attributes():
