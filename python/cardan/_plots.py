@@ -84,6 +84,7 @@ def main_bearing(result):
         for k, force in by_k.items():
             fx, fy = force["force_x_n"], force["force_y_n"]
             ax.plot(np.arctan2(fy, fx), np.hypot(fx, fy) / 1e3, label=f"journal {k}")
+        ax.tick_params(axis="y", labelsize="x-small")
         ax.set_title(f"{label}: main bearing load (kN)", fontsize="medium")
         if len(by_k) > 1:
             ax.legend(fontsize="small")

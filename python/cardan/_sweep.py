@@ -14,8 +14,12 @@ class SweepTable(dict):
     ``sweep.csv``'s columns, with ``units`` ({column: SI unit}) and ``written`` ({swept field:
     its values as written}): what a DataFrame's ``attrs`` hold."""
 
-    units = {}
-    written = {}
+    def __init__(self, *args, units=None, written=None, **columns):
+        super().__init__(*args, **columns)
+        #: {column: unit}: every swept field of a unit (SI) and every metric.
+        self.units = dict(units or {})
+        #: {swept field: [value as written]}, as ``sweep.csv`` holds them.
+        self.written = dict(written or {})
 
 
 @functools.lru_cache(maxsize=1)
@@ -130,7 +134,6 @@ def sweep(case, fields=None, mode="grid", as_pandas=None, errors="raise"):
     if failed and errors == "raise":
         raise RunError(f"{len(failed)} of {len(names)} points failed:\n  " + "\n  ".join(failed))
     table = SweepTable(case=np.array(names, dtype=object))
-    table.units, table.written = {}, {}
     for path, written in swept:
         table.written[path] = list(written)
         column = si_column(path, written)
