@@ -141,3 +141,24 @@ def test_the_notebook_shows_the_summary_table(pump):
     assert f"<th>piston_stroke</th><td>{value:.6g}</td>" in page
     for label in pump.labels:
         assert f"<th>{label}</th>" in page
+
+
+@pytest.mark.parametrize("case", [PUMP, os.path.join(CONFIGS, "balance-inline3.toml"), INLINE3])
+def test_the_machine_peaks_are_the_peaks_of_the_cylinders_and_journals(case):
+    # docs/results.md: machine_crank_pin_force_max is the largest load over the run on any
+    # crank pin (one rod to a pin in these inline machines), machine_main_bearing_force_max
+    # the largest on any main journal: the peaks of the per-step columns, every step being a
+    # row here (no decimation). 1e-12 relative: numpy's hypot against Rust's, a few ulps.
+    result = cardan.run(case)
+    for label in result.labels:
+        pins = max(
+            np.hypot(c["crank_pin_force_x_n"], c["crank_pin_force_y_n"]).max()
+            for c in result.cylinders[label].values()
+        )
+        journals = max(
+            np.hypot(j["force_x_n"], j["force_y_n"]).max()
+            for j in result.main_bearings[label].values()
+        )
+        machine = result.machine[label]
+        assert pins == pytest.approx(machine["machine_crank_pin_force_max"], rel=1e-12)
+        assert journals == pytest.approx(machine["machine_main_bearing_force_max"], rel=1e-12)
