@@ -2,25 +2,53 @@
 cardan gear and their relatives) from Python.
 
 A case is what ``cardan run`` reads: a path to a case file, its TOML text, or a dict in the same
-schema (``docs/configuration.md``; the dict read by the same typed reader, so its errors are the
+schema (``docs/case-file.md``; the dict read by the same typed reader, so its errors are the
 file's). Everything runs in memory, in the Rust core, with the GIL released.
 
 - ``run(case)`` -> ``Result``: ``summary`` ({train: {metric: value}}, SI), ``units``,
-  ``steps(train)`` (per-step columns as numpy arrays), ``to_pandas()``.
+  ``steps(train)`` (per-step columns as numpy arrays), ``machine`` (the whole machine's
+  metrics), ``cylinders`` and ``main_bearings`` (their per-step loads), ``plot()`` (matplotlib
+  figures), ``to_pandas()``; shown in a notebook as its summary table.
 - ``sweep(case, {"motion.initial_speed": [...], ...})`` -> the sweep table (a pandas DataFrame
-  when pandas is installed, else a dict of numpy arrays).
+  when pandas is installed, else a dict of numpy arrays), swept fields in SI, units in
+  ``attrs["units"]`` (``.units`` of the dict).
 - ``gear(pair)`` -> the gear-pair rating of ``cardan gear`` (its ``gear.json`` as a dict).
 
 Bad input raises ``CaseError`` naming the field; a run that fails raises ``RunError``.
 """
 
+import html
+import re
+
 from ._cardan import CaseError, RunError
 from . import _cardan
+from ._plots import plot as _plot
+from ._sweep import SweepTable, sweep
 
-__all__ = ["run", "sweep", "gear", "Result", "CaseError", "RunError", "COLUMNS"]
+__all__ = ["run", "sweep", "gear", "Result", "SweepTable", "CaseError", "RunError", "COLUMNS"]
+
+#: The package's version (the crate's, python/Cargo.toml).
+__version__ = _cardan.__version__
 
 #: The per-step column templates and their meanings (the per-step files' columns).
 COLUMNS = dict(_cardan.columns())
+
+
+_CYLINDER = re.compile(r"cylinder_(\d+)_(.+)")
+_MAIN_BEARING = re.compile(r"main_bearing_(\d+)_(.+)")
+
+
+def _metric_units(units):
+    """{metric: unit} over every crank train, in the summary's order."""
+    merged = {}
+    for per_train in units.values():
+        for metric, unit in per_train.items():
+            merged.setdefault(metric, unit)
+    return merged
+
+
+def _number(value):
+    return "" if value is None else html.escape(f"{value:.6g}")
 
 
 class Result:
@@ -64,12 +92,83 @@ class Result:
         if label is not None:
             return pd.DataFrame(self.steps(label))
         frame = pd.DataFrame(self.summary)
-        units = {}
-        for per_train in self.units.values():
-            for metric, unit in per_train.items():
-                units.setdefault(metric, unit)
-        frame["unit"] = pd.Series(units)
+        frame["unit"] = pd.Series(_metric_units(self.units))
         return frame
+
+    @property
+    def machine(self):
+        """The whole machine's metrics (docs/results.md, "The whole machine": the names starting
+        with ``machine_``: its drive torque, power, losses, efficiency, main-journal and
+        crank-pin peaks over every cylinder of ``[layout]``) by crank train: {train: {metric:
+        value}}, SI (units in ``units``). ``layout`` names the machine they are of."""
+        return {
+            label: {k: v for k, v in metrics.items() if k.startswith("machine_")}
+            for label, metrics in self.summary.items()
+        }
+
+    @property
+    def layout(self):
+        """The machine the whole-machine and balance metrics are of (``summary.json``'s
+        ``layout``: kind, cylinders, counterweight, balance shafts)."""
+        return dict(self.summary_json.get("layout") or {})
+
+    def _numbered(self, pattern):
+        """{train: {k: {quantity: array}}} of the per-step columns ``pattern`` matches (its
+        groups: the number k, the quantity), k from 1 as in the column names."""
+        found = {}
+        for label in self.labels:
+            by_k = {}
+            for column, values in self.steps(label).items():
+                match = pattern.fullmatch(column)
+                if match:
+                    by_k.setdefault(int(match.group(1)), {})[match.group(2)] = values
+            found[label] = dict(sorted(by_k.items()))
+        return found
+
+    @property
+    def cylinders(self):
+        """Each cylinder's per-step loads, by crank train: {train: {k: {quantity: array}}}, k
+        from 1 as in ``[layout]``, the quantities those of the columns
+        ``cylinder_<k>_<quantity>`` (``crank_pin_force_x_n``, ``crank_pin_force_y_n``: its rod's
+        load on its crank pin in the machine frame; ``gas_force_n`` with a gas model: the gas
+        force on its piston at its own firing phase), rows as ``steps(train)``'s."""
+        return self._numbered(_CYLINDER)
+
+    @property
+    def main_bearings(self):
+        """Each main journal's per-step load on the crankshaft from the frame, by crank train:
+        {train: {k: {"force_x_n": array, "force_y_n": array}}}, k from 1 along the crank axis
+        (the columns ``main_bearing_<k>_force_x_n``/``_y_n``, machine frame)."""
+        return self._numbered(_MAIN_BEARING)
+
+    def plot(self):
+        """The engineer's charts of what the run holds, as matplotlib figures by name (not
+        shown; ``fig.savefig(...)`` or a notebook shows them): ``"torque"`` (each crank train's
+        drive torque over crank angle, and the whole machine's where it has several cylinders),
+        ``"pv"`` with a gas model (cylinder pressure over piston travel from top dead centre,
+        the pv diagram's shape: V = V_c + A·travel), ``"main_bearing"`` (the polar load diagram
+        of each main journal), ``"crank_speed"`` for a solved (dynamic) motion. Needs the
+        per-step columns (``run(case, steps=True)``) and matplotlib."""
+        return _plot(self)
+
+    def _repr_html_(self):
+        """The summary table: a row per metric, a column per crank train, and the unit."""
+        rows = []
+        for metric, unit in _metric_units(self.units).items():
+            cells = "".join(
+                f"<td>{_number(self.summary[label].get(metric))}</td>" for label in self.labels
+            )
+            rows.append(
+                f"<tr><th>{html.escape(metric)}</th>{cells}<td>{html.escape(unit)}</td></tr>"
+            )
+        head = "".join(f"<th>{html.escape(label)}</th>" for label in self.labels)
+        warnings = "".join(f"<li>{html.escape(w)}</li>" for w in self.warnings)
+        return (
+            f"<div><b>{html.escape(str(self.summary_json.get('case')))}</b>"
+            + (f"<ul>{warnings}</ul>" if warnings else "")
+            + f"<table><thead><tr><th>metric</th>{head}<th>unit</th></tr></thead>"
+            + f"<tbody>{''.join(rows)}</tbody></table></div>"
+        )
 
     def __repr__(self):
         return f"<cardan.Result {self.summary_json.get('case')!r}: {', '.join(self.labels)}>"
@@ -81,50 +180,6 @@ def run(case, steps=True):
     steps among the threads, and its memory does not grow with them)."""
     summary_json, trains = _cardan.run(case, steps)
     return Result(summary_json, trains)
-
-
-def _pandas_or_none():
-    try:
-        import pandas
-    except ImportError:
-        return None
-    return pandas
-
-
-def sweep(case, fields=None, mode="grid", as_pandas=None, errors="raise"):
-    """Runs ``case`` at every point of ``fields`` ({dotted path: list of values, or {"from",
-    "to", "points", "scale"}}, as a case file's ``[sweep]``; values may carry units, "120 mm")
-    in ``mode`` "grid" (every combination) or "zip", the points in parallel; without
-    ``fields``, the case's own ``[sweep]``.
-
-    Returns the table of ``sweep.csv``: ``case`` (each point's name), each swept field (the
-    values as numbers where they were given as numbers, else as written), then
-    ``<train>.<metric>`` for every metric. A DataFrame when ``as_pandas`` (default: when pandas
-    is installed), else a dict of numpy arrays. A point that fails raises ``RunError`` naming
-    it (``errors="raise"``) or, with ``errors="nan"``, has NaN metrics and its message in an
-    ``error`` column.
-    """
-    import numpy as np
-
-    names, swept, metrics, failures = _cardan.sweep(case, fields, mode)
-    failed = [f for f in failures if f is not None]
-    if failed and errors == "raise":
-        raise RunError(f"{len(failed)} of {len(names)} points failed:\n  " + "\n  ".join(failed))
-    table = {"case": np.array(names, dtype=object)}
-    for path, values in swept.items():
-        try:
-            table[path] = np.array([float(v) for v in values])
-        except ValueError:
-            table[path] = np.array(values, dtype=object)
-    table.update(metrics)
-    if failed:
-        table["error"] = np.array([f or "" for f in failures], dtype=object)
-    pandas = _pandas_or_none() if as_pandas is None else None
-    if as_pandas or (as_pandas is None and pandas is not None):
-        import pandas as pd
-
-        return pd.DataFrame(table)
-    return table
 
 
 def gear(pair):

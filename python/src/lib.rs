@@ -8,8 +8,10 @@
 //! `RunError`, never aborting the interpreter.
 
 mod convert;
+mod sweep;
+mod units;
 
-use cardan_runner::memory::{run_in_memory, run_sweep, SweepTable};
+use cardan_runner::memory::run_in_memory;
 use numpy::PyArray1;
 use pyo3::create_exception;
 use pyo3::exceptions::PyException;
@@ -125,66 +127,6 @@ fn run<'py>(
     Ok((summary, trains))
 }
 
-/// Runs a sweep: `case` with `fields` (`{dotted path: list or {from, to, points, scale}}`, as a
-/// case file's `[sweep]`; none: the case's own `[sweep]`) in `mode` ("grid" or "zip"), the
-/// points in parallel, the GIL released. Returns `(case names, {swept path: [value as
-/// written]}, {"<label>.<metric>": array}, [error or None per point])`.
-#[pyfunction]
-#[pyo3(signature = (case, fields = None, mode = "grid"))]
-#[allow(clippy::type_complexity)]
-fn sweep<'py>(
-    py: Python<'py>,
-    case: &Bound<'py, PyAny>,
-    fields: Option<&Bound<'py, PyDict>>,
-    mode: &str,
-) -> PyResult<(
-    Vec<String>,
-    Bound<'py, PyDict>,
-    Bound<'py, PyDict>,
-    Vec<Option<String>>,
-)> {
-    let mut g = given(case, "case")?;
-    if let Some(fields) = fields {
-        let mut table = toml::Table::new();
-        table.insert("mode".into(), toml::Value::String(mode.into()));
-        for (k, v) in fields.iter() {
-            let path: String = k.extract().map_err(|_| {
-                CaseError::new_err("a swept field is named by its dotted path, a str")
-            })?;
-            let values = convert::to_toml(&v, &format!("sweep.\"{path}\""))?;
-            table.insert(path, values);
-        }
-        g.table.insert("sweep".into(), toml::Value::Table(table));
-    } else if !g.table.contains_key("sweep") {
-        return Err(CaseError::new_err(format!(
-            "{}: no fields to sweep and no [sweep] in the case",
-            g.file.display()
-        )));
-    }
-    let cases = cases(py, g)?;
-    let (table, errors) = py.detach(|| {
-        let outcomes = run_sweep(&cases);
-        let errors: Vec<Option<String>> =
-            outcomes.iter().map(|o| o.as_ref().err().cloned()).collect();
-        let empty = Vec::new();
-        let points: Vec<_> = cases
-            .iter()
-            .zip(&outcomes)
-            .map(|(c, o)| (c, o.as_ref().map_or(&empty[..], Vec::as_slice)))
-            .collect();
-        (SweepTable::new(&points), errors)
-    });
-    let swept = PyDict::new(py);
-    for (path, values) in table.swept {
-        swept.set_item(path, values)?;
-    }
-    let metrics = PyDict::new(py);
-    for (name, values) in table.metrics {
-        metrics.set_item(name, PyArray1::from_vec(py, values))?;
-    }
-    Ok((table.case, swept, metrics, errors))
-}
-
 /// Rates a gear pair given as `cardan gear`'s gear file (a path, TOML text or a dict): its
 /// `gear.json` as a dict, with `failures` and `warnings` (the reasons the pair cannot work, the
 /// rules of thumb it breaks; the command exits 1 on a failure, this returns them).
@@ -220,7 +162,11 @@ fn _cardan(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CaseError", m.py().get_type::<CaseError>())?;
     m.add("RunError", m.py().get_type::<RunError>())?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(units::quantity, m)?)?;
+    m.add_function(wrap_pyfunction!(units::case_schema, m)?)?;
+    // The package's version: the crate's (pyproject.toml takes it from Cargo.toml).
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(gear, m)?)?;
     m.add_function(wrap_pyfunction!(columns, m)?)?;
     // Whether this build has the runner's test hook (feature `test-hooks`, .ci/run's wheel).

@@ -2,8 +2,12 @@
 ``summary.json`` that ``cardan run`` wrote, bit for bit; the per-step columns equal the CSV's;
 a sweep's table equals ``sweep.csv``; bad input raises ``CaseError`` naming the field.
 
-The command line's outputs are read from ``$CARDAN_CLI_OUT`` (.ci/run sets it to the folder of
-``cargo xtask run configs``); the tests that need it fail, not skip, without it.
+The command line's outputs: ``$CARDAN_CLI_OUT`` where it is set (.ci/run sets it to the folder of
+``cargo xtask run configs``; a case missing there fails the test), else the tests make them
+with the ``cardan`` binary (``$CARDAN_BIN``, else ``target/release/cardan`` or
+``target/debug/cardan`` of this checkout, else ``cardan`` on the PATH; it must be built from this
+checkout), running each case they compare into a temporary folder; without either they skip,
+saying so. The package's own behaviour is tested with no command line at all.
 """
 
 import csv
@@ -11,6 +15,8 @@ import glob
 import json
 import math
 import os
+import shutil
+import subprocess
 import sys
 
 import numpy as np
@@ -28,13 +34,51 @@ else:  # pragma: no cover
     tomllib = None
 
 
-def cli_out():
+def cardan_binary():
+    """The command line to compare with: $CARDAN_BIN, this checkout's built binary, or PATH's."""
+    given = os.environ.get("CARDAN_BIN")
+    if given:
+        return given
+    target = os.environ.get("CARGO_TARGET_DIR") or os.path.join(ROOT, "target")
+    for profile in ("release", "debug"):
+        path = os.path.join(target, profile, "cardan")
+        if os.path.isfile(path) and os.access(path, os.X_OK):
+            return path
+    return shutil.which("cardan")
+
+
+@pytest.fixture(scope="session")
+def cli_out(tmp_path_factory):
+    """``cli_out(case_file)``: the output folder holding the command line's results of
+    ``case_file`` (``<folder>/<case name>/``)."""
     out = os.environ.get("CARDAN_CLI_OUT")
-    assert out and os.path.isdir(out), (
-        "CARDAN_CLI_OUT must name the output folder of `cargo xtask run configs` "
-        f"(got {out!r})"
-    )
-    return out
+    if out:
+        assert os.path.isdir(out), (
+            f"CARDAN_CLI_OUT={out!r} must name the output folder of `cargo xtask run configs`"
+        )
+        return lambda path: out
+    binary = cardan_binary()
+    if binary is None:
+        pytest.skip(
+            "no command-line outputs to compare with: set CARDAN_CLI_OUT to the output folder of "
+            "`cargo xtask run configs`, or build the command line (`cargo build --release -p "
+            "cardan`, or set CARDAN_BIN)"
+        )
+    folder = tmp_path_factory.mktemp("cli-out")
+    made = set()
+
+    def make(path):
+        if path not in made:
+            run = subprocess.run(
+                [binary, "run", path, "--out", str(folder), "--quiet", "--no-report"],
+                capture_output=True,
+                text=True,
+            )
+            assert run.returncode == 0, f"{binary} run {path}: {run.stderr}"
+            made.add(path)
+        return str(folder)
+
+    return make
 
 
 def shipped_cases():
@@ -51,9 +95,9 @@ def case_dict(path):
 
 
 @pytest.mark.parametrize("path", shipped_cases(), ids=os.path.basename)
-def test_summary_is_the_command_lines_bit_for_bit(path):
+def test_summary_is_the_command_lines_bit_for_bit(path, cli_out):
     name = case_dict(path)["name"]
-    with open(os.path.join(cli_out(), name, "summary.json")) as f:
+    with open(os.path.join(cli_out(path), name, "summary.json")) as f:
         expected = json.load(f)
     # Summaries only: the run shared by the threads.
     result = cardan.run(path, steps=False)
@@ -73,12 +117,12 @@ def test_a_dict_a_toml_text_and_a_path_give_the_same_run():
     assert cardan.run(case_dict(CASE), steps=False).summary_json == by_path
 
 
-def test_steps_are_the_csv_columns_bit_for_bit():
+def test_steps_are_the_csv_columns_bit_for_bit(cli_out):
     result = cardan.run(CASE)
     name = case_dict(CASE)["name"]
     for label in result.labels:
         steps = result.steps(label)
-        with open(os.path.join(cli_out(), name, f"{label}.csv")) as f:
+        with open(os.path.join(cli_out(CASE), name, f"{label}.csv")) as f:
             rows = list(csv.reader(f))
         header, body = rows[0], rows[1:]
         assert list(steps) == header
@@ -106,18 +150,23 @@ def test_units_and_pandas():
 
 
 @pytest.mark.parametrize("path", shipped_sweeps(), ids=os.path.basename)
-def test_sweep_table_is_sweep_csv(path):
+def test_sweep_table_is_sweep_csv(path, cli_out):
     name = case_dict(path)["name"]
-    with open(os.path.join(cli_out(), name, "sweep.csv")) as f:
+    with open(os.path.join(cli_out(path), name, "sweep.csv")) as f:
         rows = list(csv.reader(f))
     header, body = rows[0], rows[1:]
     table = cardan.sweep(path, as_pandas=False)
     assert list(table) == header
     assert list(table["case"]) == [r[0] for r in body]
+    swept = list(case_dict(path)["sweep"])
     for k, column in enumerate(header[1:], start=1):
         written = [r[k] for r in body]
         got = table[column]
-        if got.dtype == object:
+        if column in swept:
+            # The values as written, and the column in SI (tested in test_sweep.py).
+            assert table.written[column] == written, column
+            assert got.dtype == np.float64 and column in table.units, column
+        elif got.dtype == object:
             assert list(got) == written, column
         else:
             expected = np.array([float(v) if v else np.nan for v in written])
