@@ -12,8 +12,8 @@
 //!   with its US-unit constant converted exactly; the simplified `K3 v` form.
 //! * [`agma`] — AGMA 2001-D04 bending and contact stresses and safety factors with the full
 //!   factor set ([`agma::factors`]), AGMA 908 geometry factors ([`agma::geometry_factors`]:
-//!   `I` by formula for external and internal pairs, `J` from the AGMA 908 tables reproduced by
-//!   Nunes 2017), face-width sizing for single and twin sets, and Nunes 2017's own reading of
+//!   `I` by formula for external and internal pairs, the AGMA 908 tables reproduced by Nunes
+//!   2017), face-width sizing for single and twin sets, and Nunes 2017's own reading of
 //!   the internal pair ([`agma::nunes`]).
 //! * [`agma908`] — AGMA 908-B89's `J` of external gears computed from the generated tooth
 //!   form (Lewis parabola in the trochoid fillet, load at HPSTC, `K_f`); for an internal ring
