@@ -394,7 +394,10 @@ mod tests {
     /// Issue 39.1: "AGMA bending geometry factor J" was said "aGMA bending …".
     #[test]
     fn an_acronym_keeps_its_capitals() {
-        assert_eq!(lower_first("AGMA bending geometry factor J"), "AGMA bending geometry factor J");
+        assert_eq!(
+            lower_first("AGMA bending geometry factor J"),
+            "AGMA bending geometry factor J"
+        );
         assert_eq!(lower_first("ISO 21771 signs"), "ISO 21771 signs");
         assert_eq!(lower_first("Module m"), "module m");
         assert_eq!(lower_first(""), "");

@@ -800,10 +800,9 @@ fn j_is_computed_when_not_given_and_the_report_says_how() {
     let file = dir.path().join("computed.toml");
     std::fs::write(&file, &text).unwrap();
     let written = run(&file, dir.path()).unwrap();
-    let json: Value = serde_json::from_str(
-        &std::fs::read_to_string(written.dir.join("gear.json")).unwrap(),
-    )
-    .unwrap();
+    let json: Value =
+        serde_json::from_str(&std::fs::read_to_string(written.dir.join("gear.json")).unwrap())
+            .unwrap();
     let r = &json["rating"];
     for (member, read) in [("pinion", 0.30), ("gear", 0.40)] {
         assert_eq!(r[member]["j_method"], "AGMA 908-B89", "{member}");

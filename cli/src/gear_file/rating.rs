@@ -2,9 +2,9 @@
 
 use super::validated::*;
 use cardan_gears::{
-    bending_cycle_factor, bending_geometry_factor, BendingJ, JMethod, Member, Which, dynamic_factor, hardness_ratio_factor, pitting_cycle_factor,
-    pitting_geometry_factor, CheckKind, CheckReport, GearError, GearPair, GearSetRating,
-    HardnessPairing, MemberData, SizeFactor,
+    bending_cycle_factor, bending_geometry_factor, dynamic_factor, hardness_ratio_factor,
+    pitting_cycle_factor, pitting_geometry_factor, BendingJ, CheckKind, CheckReport, GearError,
+    GearPair, GearSetRating, HardnessPairing, JMethod, Member, MemberData, SizeFactor, Which,
 };
 
 /// Whether a failed check makes the pair unusable (`Error`) or only breaks a rule of thumb

@@ -67,7 +67,8 @@ fn the_dynamic_tooth_load_is_buckingham_on_the_tangential_load() {
         // Issue 39.1: J not given is computed from the tooth form (AGMA 908-B89 for the
         // pinion, ISO 6336-3 method B for the ring): the rating equals one with those J given.
         assert!(r.bending_stress > 0.0 && r.bending_safety.is_finite());
-        let mut karhula = cardan_gears::PairSpec::standard(3e-3, 20, -40, 20f64.to_radians(), 0.0, 0.0);
+        let mut karhula =
+            cardan_gears::PairSpec::standard(3e-3, 20, -40, 20f64.to_radians(), 0.0, 0.0);
         karhula.gear = karhula.gear.with_addendum(0.8);
         let pair = cardan_gears::GearPair::new(karhula).unwrap();
         let j = |which| {

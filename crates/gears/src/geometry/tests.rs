@@ -76,8 +76,15 @@ fn a_margin_rounding_to_zero_has_no_sign() {
     assert_eq!(fixed(-0.000004, 5), "0.00000");
     assert_eq!(fixed(-0.00001, 5), "-0.00001");
     assert_eq!(fixed(0.0, 5), "0.00000");
-    let pair = GearPair::new(PairSpec::standard(1e-3, 20, 50, 20f64.to_radians(), 0.0, 0.0))
-        .unwrap();
+    let pair = GearPair::new(PairSpec::standard(
+        1e-3,
+        20,
+        50,
+        20f64.to_radians(),
+        0.0,
+        0.0,
+    ))
+    .unwrap();
     let backlash = pair
         .checks()
         .into_iter()
