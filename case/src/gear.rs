@@ -106,9 +106,9 @@ pub struct GearTable {
     /// Brinell hardness of through-hardened steel, from 140 to 400 HB; one for both, or
     /// [pinion, gear]. Default 300 HB (this project's).
     pub hardness: Option<PerGear<Ranged<Hardness>>>,
-    /// AGMA bending geometry factors J, between 0 and 1; one for both, or [pinion, gear].
-    /// Default: the AGMA 908 25° table proxy for an internal pair at 25°, no bending rating
-    /// otherwise.
+    /// AGMA bending geometry factors J, between 0 and 1; one for both, or [pinion, gear]: given,
+    /// they replace the computed ones. Default computed from the tooth form (AGMA 908-B89 for an
+    /// external member, ISO 6336-3 method B for an internal ring; docs/gear-calculator.md).
     pub j: Option<PerGear<Ranged<GeometryFactorJ>>>,
     /// Buckingham's effective profile error (backlash); m. Default 0.005 in = 0.127 mm
     /// (Karhula).

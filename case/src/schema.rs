@@ -290,9 +290,14 @@ pub fn value_kind(root: &Value, node: &Value, shown: &str) -> Option<String> {
     })
 }
 
+/// `s` with its first letter in lower case, unless the first word is an acronym ("AGMA",
+/// "ISO", "KHK"): "Module m" → "module m", "AGMA bending …" stays.
 fn lower_first(s: &str) -> String {
     let mut c = s.chars();
     match c.next() {
+        Some(f) if c.clone().next().is_some_and(char::is_uppercase) => {
+            std::iter::once(f).chain(c).collect()
+        }
         Some(f) => f.to_lowercase().chain(c).collect(),
         None => String::new(),
     }
@@ -384,6 +389,18 @@ mod tests {
             e.starts_with("geometry.machine: unknown word \"pmup\": did you mean \"pump\"?"),
             "{e}"
         );
+    }
+
+    /// Issue 39.1: "AGMA bending geometry factor J" was said "aGMA bending …".
+    #[test]
+    fn an_acronym_keeps_its_capitals() {
+        assert_eq!(
+            lower_first("AGMA bending geometry factor J"),
+            "AGMA bending geometry factor J"
+        );
+        assert_eq!(lower_first("ISO 21771 signs"), "ISO 21771 signs");
+        assert_eq!(lower_first("Module m"), "module m");
+        assert_eq!(lower_first(""), "");
     }
 
     #[test]

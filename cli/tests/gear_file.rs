@@ -784,3 +784,83 @@ fn a_pinion_speed_no_gear_can_run_at_is_refused() {
     );
     mentions(&error_of(&over), &["rating.pinion_speed", "500 m/s"]);
 }
+
+/// Issue 39.1: without `j`, the gear file computes J from the tooth form (AGMA 908-B89 for
+/// the external Shigley pair; the ISO 6336-3 rack of the ring of an internal pair) and says so;
+/// a J given stays an override. The computed J of Shigley's 17/52 pair with the default rack
+/// (dedendum 1.25 m, tip radius 0.25 m) lies within 0.03 of the 0.30 / 0.40 Shigley read from
+/// his Fig. 14-6 (crates/gears/tests/tooth_root.rs: the rack the chart was drawn for is not
+/// stated; across the AGMA full-depth racks J spans ±0.02).
+#[test]
+fn j_is_computed_when_not_given_and_the_report_says_how() {
+    let text = shigley_with("j = 0.30\n", "").replace("j = 0.40\n", "");
+    let input = parse(Path::new("gears/test.toml"), &text).unwrap();
+    assert!(input.rating.as_ref().unwrap().members[0].j.is_none());
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("computed.toml");
+    std::fs::write(&file, &text).unwrap();
+    let written = run(&file, dir.path()).unwrap();
+    let json: Value =
+        serde_json::from_str(&std::fs::read_to_string(written.dir.join("gear.json")).unwrap())
+            .unwrap();
+    let r = &json["rating"];
+    for (member, read) in [("pinion", 0.30), ("gear", 0.40)] {
+        assert_eq!(r[member]["j_method"], "AGMA 908-B89", "{member}");
+        let j = num(&r[member]["j"]);
+        assert!((j - read).abs() < 0.03, "{member}: {j}");
+        assert!(num(&r[member]["j_section"]["stress_correction_kf"]) > 1.0);
+    }
+    let md = std::fs::read_to_string(written.dir.join("report.md")).unwrap();
+    mentions(
+        &md,
+        &[
+            "| J obtained by | AGMA 908-B89 | AGMA 908-B89 | - |",
+            "J of the pinion computed from the tooth form by AGMA 908-B89",
+        ],
+    );
+    // Bending stress ∝ 1/J: the computed J rates the pair by the same AGMA equation.
+    let given = report_of(&std::fs::read_to_string(shipped("shigley-14-4.toml")).unwrap());
+    let computed = report_of(&text);
+    let (g, c) = (
+        given.rating.unwrap().unwrap(),
+        computed.rating.unwrap().unwrap(),
+    );
+    assert_eq!(g.j, [0.30, 0.40]);
+    assert!(matches!(g.j_source[0], cardan::gear_file::JSource::Given));
+    for k in 0..2 {
+        let ratio = c.bending_stress[k] / g.bending_stress[k];
+        assert!((ratio - g.j[k] / c.j[k]).abs() < 1e-12, "{ratio}");
+    }
+
+    // An internal pair: the ring's J by ISO 6336-3 method B, the pinion's by AGMA 908.
+    let internal = shigley_with("teeth = [17, 52]", "teeth = [17, -52]")
+        .replace("j = 0.30\n", "")
+        .replace("j = 0.40\n", "");
+    let r = report_of(&internal).rating.unwrap().unwrap();
+    assert_eq!(r.j_source[0].word(), "AGMA 908-B89");
+    assert_eq!(r.j_source[1].word(), "ISO 6336-3 method B");
+    assert!(r.j[1] > 0.2 && r.j[1] < 0.6, "{}", r.j[1]);
+}
+
+/// Issue 39.1: a rack tip radius that does not fit the rack tooth (0.38 m at 25°) is refused
+/// when J has to be computed, naming the field and the remedy; with J given it is not needed.
+#[test]
+fn a_rack_tip_radius_that_does_not_fit_is_refused_when_j_is_computed() {
+    let text = shigley_with("j = 0.30\n", "")
+        .replace("pressure_angle = \"20 deg\"", "pressure_angle = \"25 deg\"")
+        .replace(
+            "face_width = \"1.5 in\"",
+            "face_width = \"1.5 in\"\nrack_tip_radius_coefficient = [0.38, 0.38]",
+        );
+    let e = error_of(&text);
+    mentions(
+        &e,
+        &[
+            "rack_tip_radius_coefficient",
+            "[0.38, 0.38]",
+            "J cannot be computed",
+            "does not fit",
+            "give rating.pinion.j",
+        ],
+    );
+}

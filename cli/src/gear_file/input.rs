@@ -148,17 +148,77 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
     // The geometry is validated here, so that a bad pair is an input error of this file.
     let pair = GearPair::new(spec).map_err(|e| geometry_error(e, &table, &invalid))?;
 
+    let rack_tip_radius = rack_tip_radius(&raw, &table, module, &invalid)?;
     let face_width = raw.face_width.as_ref().map(|w| w.si);
     let rating = rating_of(&raw, face_width, &pair, &invalid)?;
+    if let Some(r) = &rating {
+        computable_j(r, &pair, rack_tip_radius, &table, &invalid)?;
+    }
     Ok(GearFile {
         file: file.into(),
         name: raw.name,
         spec,
         cardan_crank_length: crank,
         face_width,
+        rack_tip_radius,
         rating,
         given,
     })
+}
+
+/// A J not given must be computable from the tooth form (`super::rating::member_j`): else
+/// the file is refused here, so that `cardan check` refuses what `cardan gear` cannot rate.
+fn computable_j(
+    r: &RatingInputs,
+    pair: &GearPair,
+    tips: [Option<f64>; 2],
+    table: &toml::Table,
+    invalid: &Invalid,
+) -> Result<(), GearFileError> {
+    for (k, which) in ["pinion", "gear"].into_iter().enumerate() {
+        if r.members[k].j.is_some() {
+            continue;
+        }
+        if let Err(e) = super::rating::member_j(pair, k, tips[k]) {
+            let (field, shown) = match table.get("rack_tip_radius_coefficient") {
+                Some(v) => ("rack_tip_radius_coefficient".to_string(), v.to_string()),
+                None => (format!("rating.{which}.j"), "(missing)".to_string()),
+            };
+            return Err(invalid(
+                &field,
+                &shown,
+                &format!("the {which}'s bending geometry factor J cannot be computed from the tooth form: {e}; give rating.{which}.j, or a smaller rack_tip_radius_coefficient"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The generating rack's tip radii in m from `rack_tip_radius_coefficient` (modules); whether
+/// they fit the rack tooth is checked where J is computed ([`computable_j`]).
+fn rack_tip_radius(
+    raw: &GearFileTable,
+    table: &toml::Table,
+    module: f64,
+    invalid: &Invalid,
+) -> Result<[Option<f64>; 2], GearFileError> {
+    let Some(c) = &raw.rack_tip_radius_coefficient else {
+        return Ok([None, None]);
+    };
+    let c = c.si();
+    for (k, v) in c.iter().enumerate() {
+        if !(v.is_finite() && *v > 0.0) {
+            return Err(invalid(
+                "rack_tip_radius_coefficient",
+                &table["rack_tip_radius_coefficient"],
+                &format!(
+                    "the {} value must be a positive number of modules (ISO 53: 0.25 to 0.38)",
+                    ["pinion", "gear"][k]
+                ),
+            ));
+        }
+    }
+    Ok([Some(c[0] * module), Some(c[1] * module)])
 }
 
 /// The `[rating]` table's inputs, checked against the pair (its pitch-line velocity), if the
@@ -422,8 +482,8 @@ fn elastic(r: &RatingTable, invalid: &Invalid) -> Result<f64, GearFileError> {
                     .pinion
                     .youngs_modulus
                     .as_ref()
-                    .map_or(&r.pinion.j.written, |y| &y.written);
-                invalid("rating.pinion.youngs_modulus", shown, &e.to_string())
+                    .map_or("(missing)", |y| y.written.as_str());
+                invalid("rating.pinion.youngs_modulus", &shown, &e.to_string())
             })?
         }
     })
@@ -459,7 +519,7 @@ fn member(which: &str, m: &MemberTable, invalid: &Invalid) -> Result<MemberInput
         }
     };
     Ok(MemberInputs {
-        j: m.j.si,
+        j: m.j.as_ref().map(|j| j.si),
         rim_factor: m.rim_factor.as_ref().map_or(1.0, |k| k.si),
         lewis_y: m.lewis_y.as_ref().map(|y| y.si),
         size_factor: m.size_factor.as_ref().map(|k| k.si),

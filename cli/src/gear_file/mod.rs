@@ -24,7 +24,7 @@ mod report;
 mod table;
 mod validated;
 pub use input::parse;
-pub use rating::{check_info, evaluate, GearReport, RatingResult, Severity};
+pub use rating::{check_info, evaluate, GearReport, JSource, RatingResult, Severity};
 pub use table::gear_file_schema;
 pub use validated::*;
 

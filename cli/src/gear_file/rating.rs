@@ -2,9 +2,9 @@
 
 use super::validated::*;
 use cardan_gears::{
-    bending_cycle_factor, dynamic_factor, hardness_ratio_factor, pitting_cycle_factor,
-    pitting_geometry_factor, CheckKind, CheckReport, GearError, GearPair, GearSetRating,
-    HardnessPairing, MemberData, SizeFactor,
+    bending_cycle_factor, bending_geometry_factor, dynamic_factor, hardness_ratio_factor,
+    pitting_cycle_factor, pitting_geometry_factor, BendingJ, CheckKind, CheckReport, GearError,
+    GearPair, GearSetRating, HardnessPairing, JMethod, Member, MemberData, SizeFactor, Which,
 };
 
 /// Whether a failed check makes the pair unusable (`Error`) or only breaks a rule of thumb
@@ -61,9 +61,49 @@ pub fn check_info(kind: CheckKind) -> (&'static str, Severity, &'static str) {
     }
 }
 
+/// How a member's bending geometry factor J was obtained.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum JSource {
+    /// Given in `[rating.<member>] j`.
+    Given,
+    /// Computed from the tooth form (`cardan_gears::agma908`).
+    Computed(BendingJ),
+}
+
+impl JSource {
+    /// `"given"`, `"AGMA 908-B89"` or `"ISO 6336-3 method B"`.
+    pub fn word(&self) -> &'static str {
+        match self {
+            JSource::Given => "given",
+            JSource::Computed(b) => match b.method {
+                JMethod::Agma908 => "AGMA 908-B89",
+                JMethod::Iso6336MethodB => "ISO 6336-3 method B",
+            },
+        }
+    }
+}
+
+/// J of member `k` (0 pinion, 1 gear) from the tooth form, the generating rack's tip radius
+/// `tip` \[m\] (`None`: the default): AGMA 908-B89 for an external member, ISO 6336-3 method
+/// B for an internal ring.
+pub fn member_j(pair: &GearPair, k: usize, tip: Option<f64>) -> Result<BendingJ, GearError> {
+    let which = if k == 0 { Which::Pinion } else { Which::Gear };
+    bending_geometry_factor(
+        pair,
+        Member {
+            which,
+            rack_tip_radius: tip,
+        },
+    )
+}
+
 /// Stresses, factors and safety factors of a rated pair; arrays are `[pinion, gear]`, SI.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RatingResult {
+    /// The bending geometry factors used.
+    pub j: [f64; 2],
+    /// How each was obtained.
+    pub j_source: [JSource; 2],
     pub power: f64,
     pub pinion_torque: f64,
     pub pitch_line_velocity: f64,
@@ -273,24 +313,10 @@ fn sig4(x: f64, up: bool) -> String {
     format!("{y:.decimals$}")
 }
 
+/// The check's outcome in the words of the case files' geometry errors
+/// ([`CheckReport::verdict`]: one text for both).
 fn remedy_text(c: &CheckReport) -> String {
-    let mut s = format!("margin {:.5}", c.margin);
-    if c.passed {
-        s.push_str(", ok");
-    } else {
-        s.push_str(", FAILED");
-        if !c.remedies.is_empty() {
-            s.push_str("; remedy: ");
-            s.push_str(
-                &c.remedies
-                    .iter()
-                    .map(|r| r.to_string())
-                    .collect::<Vec<_>>()
-                    .join(", or "),
-            );
-        }
-    }
-    s
+    c.verdict()
 }
 
 /// Computes the geometry, the checks and the rating of a validated gear file.
@@ -304,7 +330,7 @@ pub fn evaluate(input: &GearFile) -> Result<GearReport, GearFileError> {
     })?;
     let checks = pair.checks();
     let rating = match (&input.rating, input.face_width) {
-        (Some(r), Some(b)) => Some(rate(&pair, r, b)),
+        (Some(r), Some(b)) => Some(rate(&pair, r, b, input.rack_tip_radius)),
         _ => None,
     };
     Ok(GearReport {
@@ -316,8 +342,27 @@ pub fn evaluate(input: &GearFile) -> Result<GearReport, GearFileError> {
 }
 
 /// Rates the pair; an error names the quantity that could not be computed or is not finite.
-fn rate(pair: &GearPair, r: &RatingInputs, face_width: f64) -> Result<RatingResult, String> {
-    let mut result = rate_figures(pair, r, face_width).map_err(|e| e.to_string())?;
+fn rate(
+    pair: &GearPair,
+    r: &RatingInputs,
+    face_width: f64,
+    tips: [Option<f64>; 2],
+) -> Result<RatingResult, String> {
+    let mut j = [0.0; 2];
+    let mut j_source = [JSource::Given; 2];
+    for (k, member) in ["pinion", "gear"].into_iter().enumerate() {
+        (j[k], j_source[k]) = match r.members[k].j {
+            Some(given) => (given, JSource::Given),
+            None => {
+                let b = member_j(pair, k, tips[k]).map_err(|e| {
+                    format!("the {member}'s bending geometry factor J cannot be computed from the tooth form: {e}; give rating.{member}.j")
+                })?;
+                (b.j, JSource::Computed(b))
+            }
+        };
+    }
+    let mut result = rate_figures(pair, r, face_width, j).map_err(|e| e.to_string())?;
+    result.j_source = j_source;
     let figures = rating_figures(&result);
     if let Some((quantity, value, unit)) = figures.iter().find(|(_, v, _)| !v.is_finite()) {
         return Err(format!(
@@ -351,6 +396,8 @@ fn rating_figures(r: &RatingResult) -> Vec<(String, f64, &'static str)> {
         ("dynamic factor Kv".into(), r.kv, ""),
         ("load distribution factor Km".into(), r.km, ""),
         ("pitting geometry factor I".into(), r.i, ""),
+        ("bending geometry factor J of the pinion".into(), r.j[0], ""),
+        ("bending geometry factor J of the gear".into(), r.j[1], ""),
     ];
     if let Some(x) = r.kv_velocity_limit {
         v.push(("velocity limit of Kv".into(), x, "m/s"));
@@ -378,6 +425,7 @@ fn rating_figures(r: &RatingResult) -> Vec<(String, f64, &'static str)> {
 fn gear_set(
     pair: &GearPair,
     r: &RatingInputs,
+    j: [f64; 2],
     i: f64,
     yn: [f64; 2],
     zn: [f64; 2],
@@ -386,7 +434,7 @@ fn gear_set(
     let d1 = pair.pinion.working;
     let m = pair.spec.module;
     let member = |k: usize| MemberData {
-        j: r.members[k].j,
+        j: j[k],
         rim: r.members[k].rim_factor,
         bending_allowable: r.members[k].bending_allowable,
         contact_allowable: r.members[k].contact_allowable,
@@ -419,13 +467,14 @@ fn gear_set(
 
 /// [`gear_set`] of a computed rating.
 fn rating_set(pair: &GearPair, r: &RatingInputs, result: &RatingResult) -> GearSetRating {
-    gear_set(pair, r, result.i, result.yn, result.zn, result.ch)
+    gear_set(pair, r, result.j, result.i, result.yn, result.zn, result.ch)
 }
 
 fn rate_figures(
     pair: &GearPair,
     r: &RatingInputs,
     face_width: f64,
+    j: [f64; 2],
 ) -> Result<RatingResult, GearError> {
     let mut warnings = Vec::new();
     let u = pair.ratio;
@@ -483,7 +532,7 @@ fn rate_figures(
         _ => 1.0,
     };
     let ch = [1.0, ch_gear];
-    let set = gear_set(pair, r, i, yn, zn, ch);
+    let set = gear_set(pair, r, j, i, yn, zn, ch);
     let km = r.load_distribution.factor(face_width, d1)?;
     if !km.within_validity {
         warnings.push(format!(
@@ -493,6 +542,8 @@ fn rate_figures(
     }
     let out = set.rate(wt, kv, face_width)?;
     Ok(RatingResult {
+        j,
+        j_source: [JSource::Given; 2],
         power,
         pinion_torque: torque,
         pitch_line_velocity: v,

@@ -1,6 +1,6 @@
 //! `gear.json` and `report.md` of a rated pair.
 
-use super::rating::{check_info, GearReport, Severity};
+use super::rating::{check_info, GearReport, JSource, Severity};
 use super::validated::*;
 use serde_json::{json, Map, Value};
 use std::f64::consts::PI;
@@ -9,6 +9,34 @@ use std::fmt::Write as _;
 /// Text for a Markdown table cell: `|` escaped.
 fn cell(s: &str) -> String {
     s.replace('|', "\\|")
+}
+
+/// How a J was obtained, with the critical section it was computed at (SI, angles in degrees).
+fn j_json(source: &JSource) -> Value {
+    let JSource::Computed(b) = source else {
+        return Value::Null;
+    };
+    match (b.agma, b.iso) {
+        (Some(a), _) => json!({
+            "chord_s_f": a.chord,
+            "height_h_f": a.height,
+            "fillet_radius_rho_f": a.fillet_radius,
+            "load_angle_deg": a.load_angle.to_degrees(),
+            "load_radius": a.load_radius,
+            "form_factor_y": a.form_factor,
+            "stress_correction_kf": a.stress_correction,
+        }),
+        (None, Some(f)) => json!({
+            "chord_s_fn": f.section.chord,
+            "moment_arm_h_fe": f.section.moment_arm,
+            "fillet_radius_rho_f": f.section.fillet_radius,
+            "load_angle_alpha_fen_deg": f.section.load_angle.to_degrees(),
+            "load_diameter_d_en": f.section.load_diameter,
+            "form_factor_y_f": f.form_factor,
+            "stress_correction_y_s": f.stress_correction,
+        }),
+        _ => Value::Null,
+    }
 }
 
 fn diameters_json(d: &cardan_gears::Diameters) -> Value {
@@ -52,7 +80,9 @@ impl GearReport {
                     let mi = &inputs.members[k];
                     json!({
                         "cycles": r.cycles[k],
-                        "j": mi.j,
+                        "j": r.j[k],
+                        "j_method": r.j_source[k].word(),
+                        "j_section": j_json(&r.j_source[k]),
                         "kb": mi.rim_factor,
                         "ks": r.ks[k],
                         "yn": r.yn[k],
@@ -285,12 +315,12 @@ impl GearReport {
             let (name, severity, meaning) = check_info(c.kind);
             let _ = writeln!(
                 o,
-                "| {name} | {} | {:.5} | {} | {} | {} |",
+                "| {name} | {} | {} | {} | {} | {} |",
                 match severity {
                     Severity::Error => "blocking",
                     Severity::Warning => "rule of thumb",
                 },
-                c.margin,
+                c.margin_text(),
                 if c.passed { "ok" } else { "**FAILED**" },
                 cell(meaning),
                 cell(
@@ -369,7 +399,12 @@ impl GearReport {
                 let mpa = |x: f64| format!("{:.2}", x / 1e6);
                 let cyc = |x: f64| format!("{x:.4e}");
                 pair_row("load cycles", r.cycles, &cyc, "-");
-                pair_row("bending geometry factor J", [mi[0].j, mi[1].j], &f4, "-");
+                pair_row("bending geometry factor J", r.j, &f4, "-");
+                let words = [r.j_source[0].word(), r.j_source[1].word()];
+                let _ = writeln!(o, "| J obtained by | {} | {} | - |", words[0], words[1]);
+                let mut pair_row = |q: &str, a: [f64; 2], fmt: &dyn Fn(f64) -> String, u: &str| {
+                    let _ = writeln!(o, "| {q} | {} | {} | {u} |", fmt(a[0]), fmt(a[1]));
+                };
                 pair_row(
                     "rim thickness factor KB",
                     [mi[0].rim_factor, mi[1].rim_factor],
@@ -406,6 +441,15 @@ impl GearReport {
                     "\nRequired safety factor (`required_safety_factor`, both SF and SH): {}",
                     inputs.required_safety_factor
                 );
+                for (k, member) in ["pinion", "gear"].into_iter().enumerate() {
+                    if let JSource::Computed(b) = &r.j_source[k] {
+                        let _ = writeln!(
+                            o,
+                            "\nJ of the {member} computed from the tooth form by {} (docs/gear-calculator.md).",
+                            b.method.name()
+                        );
+                    }
+                }
             }
         }
     }

@@ -41,6 +41,10 @@ pub struct GearFileTable {
     pub addendum_coefficient: Option<Pair<Quantity<Number>>>,
     /// Dedendum coefficients [hf1, hf2], in modules. Default [1.25, 1.25] (ISO 53).
     pub dedendum_coefficient: Option<Pair<Quantity<Number>>>,
+    /// Tip radius of the generating rack (a ring's: of the pinion-type cutter) [ρ1, ρ2], in
+    /// modules, for the computed bending geometry factor J. Default [0.25, 0.25] (ISO 53
+    /// profile C, the smallest ISO 53 tip radius).
+    pub rack_tip_radius_coefficient: Option<Pair<Quantity<Number>>>,
     /// Tooth thinning [j1, j2] at the reference circle; m. Default [0, 0].
     pub thickness_allowance: Option<Pair<Quantity<Length>>>,
     /// Face width; m. Needed with `[rating]`.
@@ -122,8 +126,10 @@ pub struct RatingTable {
 #[serde(deny_unknown_fields)]
 pub struct MemberTable {
     /// AGMA bending geometry factor J, between 0 and 1 (the case file's `[gear] j`, read by
-    /// the same type); required.
-    pub j: cardan_case::gear::Ranged<cardan_case::gear::GeometryFactorJ>,
+    /// the same type), given: it replaces the computed one. Default computed from the tooth
+    /// form: AGMA 908-B89 for an external member, ISO 6336-3 method B for an internal ring
+    /// (docs/gear-calculator.md).
+    pub j: Option<cardan_case::gear::Ranged<cardan_case::gear::GeometryFactorJ>>,
     /// Rim thickness factor KB. Default 1.
     pub rim_factor: Option<Positive<Number>>,
     /// Lewis form factor Y, for the size factor Ks (Shigley eq. 14-10); both members or

@@ -75,7 +75,8 @@ pub enum IInput {
 /// Validated rating inputs of one member; stresses in Pa.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct MemberInputs {
-    pub j: f64,
+    /// J as given (`None`: computed from the tooth form).
+    pub j: Option<f64>,
     pub rim_factor: f64,
     pub lewis_y: Option<f64>,
     pub size_factor: Option<f64>,
@@ -120,6 +121,9 @@ pub struct GearFile {
     pub cardan_crank_length: Option<f64>,
     /// Face width, m.
     pub face_width: Option<f64>,
+    /// Tip radius of the generating rack (cutter) [pinion, gear], m (`None`: the default
+    /// 0.25 m of `cardan_gears::tooth_root::DEFAULT_RACK_TIP_RADIUS`).
+    pub rack_tip_radius: [Option<f64>; 2],
     pub rating: Option<RatingInputs>,
     /// The fields as written in the file (dotted name, TOML text), for the report.
     pub given: Vec<(String, String)>,

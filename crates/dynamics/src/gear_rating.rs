@@ -17,7 +17,10 @@ use cardan_gears::agma::factors::{
 use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
 use cardan_gears::mesh_loss::Lubricant;
-use cardan_gears::{pitting_geometry_factor, GearSet, IForm, MeshStep, ShiftCase};
+use cardan_gears::{
+    bending_geometry_factor, pitting_geometry_factor, GearPair, GearSet, IForm, Member, MeshStep,
+    Which,
+};
 use cardan_mechanism::{JointKind, Loads, Material, Mechanism, MeshForce, State, C};
 
 use crate::loss::{failed, At, Loss, Site};
@@ -25,6 +28,28 @@ use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
 use crate::mesh::{mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, ToothLoad};
 use crate::stage::SetupError;
+
+/// The bending geometry factors `[pinion, gear]` of a mesh whose `[gear] j` is not given,
+/// computed from the tooth form with the default generating rack (ISO 53, tip radius 0.25 m):
+/// AGMA 908-B89 for an external member, ISO 6336-3 method B for an internal ring
+/// ([`cardan_gears::agma908`]).
+fn computed_j(pair: &GearPair) -> Result<[f64; 2], SetupError> {
+    let mut j = [0.0; 2];
+    for (k, (which, name)) in [(Which::Pinion, "pinion"), (Which::Gear, "gear")]
+        .into_iter()
+        .enumerate()
+    {
+        j[k] = bending_geometry_factor(pair, Member::new(which))
+            .map_err(|e| SetupError {
+                field: "gear.j".into(),
+                rule: format!(
+                    "the {name}'s bending geometry factor J cannot be computed from the tooth form ({e}): give [gear] j"
+                ),
+            })?
+            .j;
+    }
+    Ok(j)
+}
 
 /// One mesh's rating at one step.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -157,16 +182,10 @@ impl GearRatings {
             // a wider face is refused here, before any step, not at the first step's rating.
             cardan_gears::agma::factors::pinion_proportion_factor(face_width, pair.pinion.working)
                 .map_err(|e| failed("gear.face_width", &e))?;
-            let table_j = (internal && (pressure_angle.to_degrees() - 25.0).abs() < 1e-9)
-                .then(|| {
-                    cardan_gears::agma::geometry_factors::internal_j_conservative(
-                        ShiftCase::Zero,
-                        spec.teeth,
-                    )
-                    .ok()
-                })
-                .flatten();
-            let j_factors = spec.j.or(table_j.map(|(a, b)| [a, b]));
+            let j_factors = match spec.j {
+                Some(j) => j,
+                None => computed_j(&pair)?,
+            };
             let member = |m: usize| -> Result<MemberData, SetupError> {
                 let (bending_allowable, contact_allowable) = match spec.material {
                     GearMaterial::ThroughHardened => (
@@ -178,7 +197,7 @@ impl GearRatings {
                     GearMaterial::Carburized => carburized_allowables(Grade::Two),
                 };
                 Ok(MemberData {
-                    j: j_factors.map_or(1.0, |j| j[m]),
+                    j: j_factors[m],
                     rim: 1.0,
                     bending_allowable,
                     contact_allowable,
@@ -243,7 +262,9 @@ impl GearRatings {
                 set,
                 pitch_radius,
                 sets: if spec.twin { 2.0 } else { 1.0 },
-                bending: j_factors.is_some(),
+                // J is given or computed for every mesh (a J that cannot be computed is a
+                // setup error), so every mesh has a bending rating.
+                bending: true,
                 tooth_load: spec.tooth_load,
                 disc_mass: Material::Steel.density()
                     * face_width

@@ -79,8 +79,9 @@ pub struct GearSpec {
     /// Brinell hardness of [pinion, gear] of through-hardened steel (this project's default
     /// 300 HB).
     pub hardness: [f64; 2],
-    /// AGMA bending geometry factors [pinion, gear]; `None`: the AGMA 908 25° table proxy for an
-    /// internal pair at 25°, no bending rating otherwise (AGMA 908 tabulates no 20° internal J).
+    /// AGMA bending geometry factors [pinion, gear]; `None`: computed from the tooth form (AGMA
+    /// 908-B89 for an external member, ISO 6336-3 method B for an internal ring,
+    /// `cardan_gears::agma908`).
     pub j: Option<[f64; 2]>,
     /// Buckingham's effective profile error (backlash), m (Karhula: 0.005 in = 0.127 mm).
     pub error: f64,

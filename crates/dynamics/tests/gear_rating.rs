@@ -64,8 +64,25 @@ fn the_dynamic_tooth_load_is_buckingham_on_the_tangential_load() {
         );
         assert!(r.dynamic_load > r.tooth_load);
         assert!(r.contact_stress > 0.0 && r.contact_safety.is_finite());
-        // AGMA 908 tabulates no 20° internal J: no bending rating unless J is given.
-        assert!(r.bending_stress.is_nan());
+        // Issue 39.1: J not given is computed from the tooth form (AGMA 908-B89 for the
+        // pinion, ISO 6336-3 method B for the ring): the rating equals one with those J given.
+        assert!(r.bending_stress > 0.0 && r.bending_safety.is_finite());
+        let mut karhula =
+            cardan_gears::PairSpec::standard(3e-3, 20, -40, 20f64.to_radians(), 0.0, 0.0);
+        karhula.gear = karhula.gear.with_addendum(0.8);
+        let pair = cardan_gears::GearPair::new(karhula).unwrap();
+        let j = |which| {
+            cardan_gears::bending_geometry_factor(&pair, cardan_gears::Member::new(which))
+                .unwrap()
+                .j
+        };
+        let given = GearSpec {
+            j: Some([j(cardan_gears::Which::Pinion), j(cardan_gears::Which::Gear)]),
+            ..GearSpec::default()
+        };
+        let (g, _) = rate(&given, w, C::new(8000.0, 3000.0));
+        assert_eq!(g.bending_stress, r.bending_stress);
+        assert_eq!(g.bending_safety, r.bending_safety);
     }
 }
 

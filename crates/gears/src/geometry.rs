@@ -275,25 +275,44 @@ pub struct CheckReport {
     pub remedies: Vec<Remedy>,
 }
 
-impl fmt::Display for CheckReport {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{:?}: margin {:.5} ({})",
-            self.kind,
-            self.margin,
-            if self.passed { "ok" } else { "FAILED" }
-        )?;
-        if !self.remedies.is_empty() {
-            write!(f, "; remedy: ")?;
-            for (k, r) in self.remedies.iter().enumerate() {
-                if k > 0 {
-                    write!(f, ", or ")?;
-                }
-                write!(f, "{r}")?;
+impl CheckReport {
+    /// The margin to 5 decimals, a value that rounds to zero written `0.00000` whatever its sign
+    /// (a zero-backlash pair computes `jt ≈ −1e-17 m`, which is no negative margin).
+    pub fn margin_text(&self) -> String {
+        fixed(self.margin, 5)
+    }
+
+    /// "margin M, ok" or "margin M, FAILED; remedy: R1, or R2": the one text of a check's
+    /// outcome, for the case files' geometry errors ([`GearPair::verify`]) and the gear file's
+    /// report alike.
+    pub fn verdict(&self) -> String {
+        let mut s = format!("margin {}", self.margin_text());
+        if self.passed {
+            s.push_str(", ok");
+        } else {
+            s.push_str(", FAILED");
+            if !self.remedies.is_empty() {
+                s.push_str("; remedy: ");
+                let remedies: Vec<String> = self.remedies.iter().map(|r| r.to_string()).collect();
+                s.push_str(&remedies.join(", or "));
             }
         }
-        Ok(())
+        s
+    }
+}
+
+/// `x` with `decimals` decimals, and `0.000…` (no sign) for a value that rounds to zero.
+pub fn fixed(x: f64, decimals: usize) -> String {
+    let s = format!("{x:.decimals$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
+impl fmt::Display for CheckReport {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{:?}: {}", self.kind, self.verdict())
     }
 }
 

@@ -12,9 +12,14 @@
 //!   with its US-unit constant converted exactly; the simplified `K3 v` form.
 //! * [`agma`] — AGMA 2001-D04 bending and contact stresses and safety factors with the full
 //!   factor set ([`agma::factors`]), AGMA 908 geometry factors ([`agma::geometry_factors`]:
-//!   `I` by formula for external and internal pairs, `J` from the AGMA 908 tables reproduced by
-//!   Nunes 2017), face-width sizing for single and twin sets, and Nunes 2017's own reading of
+//!   `I` by formula for external and internal pairs, the AGMA 908 tables reproduced by Nunes
+//!   2017), face-width sizing for single and twin sets, and Nunes 2017's own reading of
 //!   the internal pair ([`agma::nunes`]).
+//! * [`agma908`] — AGMA 908-B89's `J` of external gears computed from the generated tooth
+//!   form (Lewis parabola in the trochoid fillet, load at HPSTC, `K_f`); for an internal ring
+//!   `J` from ISO 6336-3 method B.
+//! * [`tooth_root`] — the generated fillet and ISO 6336-3 method B's `Y_F`, `Y_S` and critical
+//!   section (`s_Fn`, `h_Fe`, `ρ_F`, `α_Fen`), external and internal.
 //! * [`mod@mesh_loss`] — Anderson & Loewenthal mesh power loss (sliding with Benedict & Kelley,
 //!   rolling with the EHD film, windage) in Karhula's printed reading and a corrected reading
 //!   ([`mesh_loss::Reading`]).
@@ -27,12 +32,14 @@
 //! errors are [`GearError`].
 
 pub mod agma;
+pub mod agma908;
 pub mod buckingham;
 pub mod error;
 pub mod gear_set;
 pub mod geometry;
 pub mod involute;
 pub mod mesh_loss;
+pub mod tooth_root;
 pub mod units;
 
 pub use agma::factors::{
@@ -43,6 +50,7 @@ pub use agma::factors::{
 };
 pub use agma::geometry_factors::{agma908_table, pitting_geometry_factor, IForm, ShiftCase};
 pub use agma::{FaceWidths, GearSetRating, MemberData, PreparedRating, Rating, SizeFactor};
+pub use agma908::{bending_geometry_factor, BendingJ, JMethod};
 pub use buckingham::{BuckinghamPair, DynamicLoad, ToothForm, FULL_DEPTH_20};
 pub use error::GearError;
 pub use gear_set::{GearSet, MeshStep, StepResult};
@@ -54,3 +62,4 @@ pub use mesh_loss::{
     mesh_loss, mesh_loss_with, LossOptions, Lubricant, MeshGeometry, MeshLoss, MeshSpeeds,
     PreparedMeshLoss, Reading,
 };
+pub use tooth_root::{iso6336_method_b, Member, RootFactors, RootSection, Which};

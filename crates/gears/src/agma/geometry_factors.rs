@@ -14,11 +14,13 @@
 //! # J
 //!
 //! The full AGMA 908 J (Lewis parabola inscribed in the generated trochoid fillet, load at the
-//! highest point of single tooth contact) is not implemented. J is obtained from the AGMA
-//! 908-B89 tables as reproduced in Nunes 2017 Annex A.2–A.4 (φ = 25°, whole depth 2.35,
-//! tool edge radius 0.27, tooth thinning 0.024, HPSTC, x = 0, ±0.25, ±0.5) with the bilinear
-//! interpolation in tooth counts that Nunes used (which AGMA itself advises against). AGMA 908
-//! has no J for internal gears; [`internal_j_conservative`] documents the proxy used here.
+//! highest point of single tooth contact) is computed by [`crate::agma908`]. The tables here
+//! are the AGMA 908-B89 tables as reproduced in Nunes 2017 Annex A.2–A.4 (φ = 25°, whole depth
+//! 2.35, tool edge radius 0.27, tooth thinning 0.024, HPSTC, x = 0, ±0.25, ±0.5) with the
+//! bilinear interpolation in tooth counts that Nunes used (which AGMA itself advises against):
+//! the published values the computation is tested against, and Nunes's reading. AGMA 908 has
+//! no J for internal gears; [`internal_j_conservative`] documents the proxy Nunes-style
+//! readings use (a case file's default J is computed instead).
 
 use crate::error::{require, GearError};
 use crate::geometry::GearPair;

@@ -66,3 +66,31 @@ fn checks_list_matches_pair_type() {
     assert_eq!(pair(20, 40).checks().len(), 5);
     assert_eq!(pair(25, -50).checks().len(), 7);
 }
+
+/// Issue 39.5: a margin that rounds to zero prints as `0.00000`, never `-0.00000` (a
+/// zero-backlash pair computes jt ≈ −1e-17 m), in the one text both the case files and the
+/// gear file use.
+#[test]
+fn a_margin_rounding_to_zero_has_no_sign() {
+    assert_eq!(fixed(-1e-17, 5), "0.00000");
+    assert_eq!(fixed(-0.000004, 5), "0.00000");
+    assert_eq!(fixed(-0.00001, 5), "-0.00001");
+    assert_eq!(fixed(0.0, 5), "0.00000");
+    let pair = GearPair::new(PairSpec::standard(
+        1e-3,
+        20,
+        50,
+        20f64.to_radians(),
+        0.0,
+        0.0,
+    ))
+    .unwrap();
+    let backlash = pair
+        .checks()
+        .into_iter()
+        .find(|c| c.kind == CheckKind::Backlash)
+        .unwrap();
+    let text = backlash.to_string();
+    assert!(!text.contains("-0.0000"), "{text}");
+    assert!(text.ends_with("margin 0.00000, ok"), "{text}");
+}
