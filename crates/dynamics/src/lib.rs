@@ -28,6 +28,7 @@ pub mod machine;
 pub mod machine_friction;
 pub mod machine_motion;
 pub mod machine_stage;
+pub mod machine_totals;
 pub mod mesh;
 /// The metric registry, its own crate (the reports read it without the physics).
 pub use cardan_metrics as metrics;
