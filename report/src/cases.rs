@@ -602,7 +602,11 @@ pub(super) fn case_report(
         .map(|c| c.as_ref().map(|c| c.header.clone()))
         .collect();
     let specs = plot_specs(&s, &headers);
-    let mut plots = charts(&s, &specs, &data);
+    // The charts engineers read first (issue 38), then the rest.
+    let mut plots = crate::indicator::indicator_charts(&s, &data);
+    plots.extend(crate::crank_speed::crank_speed_charts(&s, &data));
+    plots.extend(crate::bearing_polar::polar_charts(&s, &data));
+    plots.extend(charts(&s, &specs, &data));
     plots.extend(locus_charts(&s, &data));
 
     let mut doc = Doc {

@@ -39,16 +39,20 @@
 //! [`ChartRecorder`], or writes them to the CSV this crate reads back; which rows are taken is
 //! [`row_count`] and [`ChartRows`]. It does not depend on the runner.
 
+mod bearing_polar;
 mod case_plots;
 mod cases;
 mod chart_columns;
+mod crank_speed;
 mod data;
 mod doc;
 mod envelope;
 pub mod files;
 mod heatmap;
+mod indicator;
 mod index;
 mod locus;
+mod log_chart;
 mod numbers;
 mod rows;
 mod svg;

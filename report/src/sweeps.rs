@@ -397,8 +397,10 @@ fn line_charts(
                     x: xs.clone(),
                     y: pick(c),
                     colour: k,
-                    dash: 0,
+                    // Told apart in black and white too (issue 38).
+                    dash: k,
                     markers: true,
+                    x_column: None,
                 })
             })
             .collect();
@@ -415,6 +417,7 @@ fn line_charts(
             zero_line: true,
             x_categories: categories.clone(),
             angle_axis: false,
+            ..LineChart::default()
         };
         out.push((
             format!("{metric}.svg"),
@@ -428,7 +431,7 @@ fn line_charts(
     }
     let others: Vec<&String> = t.mechanisms.iter().filter(|m| *m != reference).collect();
     let mut series = Vec::new();
-    for (a, m) in others.iter().enumerate() {
+    for m in &others {
         for (b, metric) in keys.iter().enumerate() {
             let d = differences(t, metric, m, reference);
             if !d.iter().any(|v| v.is_finite()) {
@@ -444,8 +447,10 @@ fn line_charts(
                 x: xs.clone(),
                 y: pick(&d),
                 colour: b,
-                dash: a,
+                // Every series its own dash (issue 38): told apart in black and white.
+                dash: series.len(),
                 markers: true,
+                x_column: None,
             });
         }
     }
@@ -460,6 +465,7 @@ fn line_charts(
             zero_line: true,
             x_categories: categories,
             angle_axis: false,
+            ..LineChart::default()
         };
         out.push((
             "difference.svg".into(),
