@@ -352,7 +352,10 @@ pub(super) fn charts(
                 });
             }
         }
-        if series.is_empty() {
+        // No chart without data (issue 38): a quantity zero throughout in every mechanism
+        // (the free moment of one cylinder) says nothing a chart could show.
+        let zero = |s: &Series| s.y.iter().all(|v| !v.is_finite() || *v == 0.0);
+        if series.iter().all(zero) {
             continue;
         }
         let chart = LineChart {

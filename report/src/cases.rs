@@ -8,7 +8,7 @@ use crate::data::{self, family_rank, CaseSummary, MechanismSummary};
 use crate::doc::{write_report, Align, Block, Doc};
 use crate::envelope::{ChartData, ChartRecorder};
 use crate::numbers::{
-    better, delta, fmt_delta, fmt_num, phrase, round_off_floor, signed, Better, Delta,
+    better, delta, engineering, fmt_delta, fmt_num, phrase, round_off_floor, signed, Better, Delta,
     ROUND_OFF_LEGEND, SIGN_LEGEND,
 };
 use crate::svg::{self, MAX_POINTS};
@@ -514,11 +514,14 @@ fn metric_tables(s: &CaseSummary) -> Vec<Block> {
                     .find(|u| !u.is_empty())
                     .unwrap_or("");
                 let mut row = vec![format!("`{n}`"), svg::pretty_unit(unit)];
-                row.extend(
-                    s.mechanisms
-                        .iter()
-                        .map(|m| fmt_num(m.get(n).unwrap_or(f64::NAN))),
-                );
+                // The SI value, and beside it the engineer's unit where there is one.
+                row.extend(s.mechanisms.iter().map(|m| {
+                    let v = m.get(n).unwrap_or(f64::NAN);
+                    match engineering(v, unit) {
+                        Some(e) => format!("{} ({e})", fmt_num(v)),
+                        None => fmt_num(v),
+                    }
+                }));
                 let r = reference.get(n);
                 let r_floor = round_off_floor(n, |k| reference.get(k));
                 for m in &s.mechanisms[1..] {
@@ -631,12 +634,6 @@ pub(super) fn case_report(
     for w in &s.warnings {
         doc.push(Block::Paragraph(format!("**Warning:** {w}.")));
     }
-    doc.push(Block::Paragraph(format!(
-        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
-         for loads, torques, power need and losses; higher is better for efficiency and output. \
-         Values in SI units as in `summary.json`; — where a mechanism has no such metric. \
-         {ROUND_OFF_LEGEND}"
-    )));
     if s.mechanisms.len() > 1 {
         doc.push(Block::Heading(2, "Which is better".into()));
         let items = summary_items(&s);
@@ -648,6 +645,14 @@ pub(super) fn case_report(
             doc.push(Block::List(items));
         }
     }
+    // The method after the results (issue 38): what Δ is and which way is better.
+    doc.push(Block::Paragraph(format!(
+        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
+         for loads, torques, power need and losses; higher is better for efficiency and output. \
+         Values in SI units as in `summary.json` (rpm, bar, kN and kW beside them in brackets); \
+         — where a mechanism has no such metric. \
+         {ROUND_OFF_LEGEND}"
+    )));
     if let Some(budget) = loss_budget(&s) {
         let (title, whose) = match s.one_cylinder() {
             Some(w) => (format!("Loss budget of {w}"), format!("the total of {w}")),

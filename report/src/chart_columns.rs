@@ -84,7 +84,14 @@ pub(crate) fn loci(h: &[String]) -> Vec<(String, String, String, Frame)> {
     let mut out: Vec<(String, String, String, Frame)> = LOCI
         .iter()
         .filter(|(_, x, y)| has(x) && has(y))
-        .map(|(_, x, y)| (locus_key(x, y), x.to_string(), y.to_string(), Frame::Machine))
+        .map(|(_, x, y)| {
+            (
+                locus_key(x, y),
+                x.to_string(),
+                y.to_string(),
+                Frame::Machine,
+            )
+        })
         .collect();
     for p in bearing_loads(h) {
         let (x, y) = (format!("{p}_force_x_n"), format!("{p}_force_y_n"));
@@ -146,9 +153,7 @@ pub(crate) fn wanted_columns(h: &[String], joints: &[String]) -> Vec<String> {
     let traced = trace_columns(h, joints);
     let loci = loci(h);
     h.iter()
-        .filter(|c| {
-            traced.contains(c) || loci.iter().any(|(_, x, y, _)| x == *c || y == *c)
-        })
+        .filter(|c| traced.contains(c) || loci.iter().any(|(_, x, y, _)| x == *c || y == *c))
         .cloned()
         .collect()
 }

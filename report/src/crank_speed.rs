@@ -39,11 +39,7 @@ pub(super) fn crank_speed_charts(
             .map_or(String::new(), |v| format!(", δ = {:.3} %", v * 100.0));
         let dash = series.len();
         series.push(Series {
-            label: format!(
-                "{} (mean {:.1} rpm{delta})",
-                m.name,
-                mean * RPM_PER_RAD_S
-            ),
+            label: format!("{} (mean {:.1} rpm{delta})", m.name, mean * RPM_PER_RAD_S),
             source: format!("{}:crank_speed_rad_s", d.file),
             x: t.x.clone(),
             y: t.y.iter().map(|v| v * RPM_PER_RAD_S).collect(),

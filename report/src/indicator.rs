@@ -32,13 +32,12 @@ pub(super) fn indicator_charts(
         let Some(t) = d.traces.get(&locus_key(&x_column, "cylinder_pressure_pa")) else {
             continue;
         };
-        let (x, y): (Vec<f64>, Vec<f64>) = t
-            .x
-            .iter()
-            .zip(&t.y)
-            .filter(|(x, p)| x.is_finite() && p.is_finite())
-            .map(|(x, p)| (chamber.volume(*x) * CM3_PER_M3, p * BAR_PER_PA))
-            .unzip();
+        let (x, y): (Vec<f64>, Vec<f64>) =
+            t.x.iter()
+                .zip(&t.y)
+                .filter(|(x, p)| x.is_finite() && p.is_finite())
+                .map(|(x, p)| (chamber.volume(*x) * CM3_PER_M3, p * BAR_PER_PA))
+                .unzip();
         if x.is_empty() {
             continue;
         }

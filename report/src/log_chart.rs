@@ -17,7 +17,9 @@ fn log_range(lo: f64, hi: f64) -> (f64, f64) {
     let down = |v: f64| {
         let d = v.log10().floor();
         let m = v / 10f64.powf(d);
-        let f = [5.0, 2.0, 1.0].into_iter().find(|f| *f <= m * (1.0 + 1e-12));
+        let f = [5.0, 2.0, 1.0]
+            .into_iter()
+            .find(|f| *f <= m * (1.0 + 1e-12));
         d + f.unwrap_or(1.0).log10()
     };
     let up = |v: f64| {
@@ -42,7 +44,11 @@ fn log_range(lo: f64, hi: f64) -> (f64, f64) {
 /// The ticks of a log axis from `lo` to `hi` (log₁₀): 1, 2, 5 of each decade, or the decades
 /// alone over more than three.
 fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
-    let factors: &[f64] = if hi - lo > 3.0 { &[1.0] } else { &[1.0, 2.0, 5.0] };
+    let factors: &[f64] = if hi - lo > 3.0 {
+        &[1.0]
+    } else {
+        &[1.0, 2.0, 5.0]
+    };
     let mut ticks = Vec::new();
     let mut d = lo.floor() as i32;
     while f64::from(d) <= hi + 1e-9 {

@@ -153,6 +153,21 @@ pub(crate) fn fmt_pct(d: Option<f64>) -> String {
 
 /// A value with 5 significant digits (trailing zeros dropped), scientific outside
 /// [1e-3, 1e6); `—` for a missing value.
+/// A value of the SI `unit` in the unit engineers think in (issue 38), written after the SI
+/// value: rad/s in rpm (× 60/2π), Pa in bar (10⁵ Pa, ISO 80000-4), N in kN, W in kW; `None`
+/// for other units or a value not finite.
+pub(crate) fn engineering(v: f64, unit: &str) -> Option<String> {
+    let (factor, name) = match unit {
+        "rad/s" => (60.0 / (2.0 * std::f64::consts::PI), "rpm"),
+        "Pa" => (1e-5, "bar"),
+        "N" => (1e-3, "kN"),
+        "W" => (1e-3, "kW"),
+        _ => return None,
+    };
+    v.is_finite()
+        .then(|| format!("{} {name}", fmt_num(v * factor)))
+}
+
 pub(crate) fn fmt_num(v: f64) -> String {
     if !v.is_finite() {
         return "—".into();

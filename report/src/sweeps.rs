@@ -199,7 +199,9 @@ pub(crate) fn readable(values: &[f64]) -> Vec<String> {
             s.trim_end_matches('0').trim_end_matches('.').to_string()
         } else {
             // Beyond the significant figures: round the integer part too.
-            let scale = 10f64.powi(v.abs().log10().floor() as i32 + 1 - sig).max(1.0);
+            let scale = 10f64
+                .powi(v.abs().log10().floor() as i32 + 1 - sig)
+                .max(1.0);
             format!("{}", (v / scale).round() * scale)
         };
         if s == "-0" {
@@ -752,7 +754,10 @@ mod tests {
         );
         assert_eq!(readable(&[140.0, 150.0, 160.0]), ["140", "150", "160"]);
         assert_eq!(readable(&[0.0125, 0.05, 1.0]), ["0.0125", "0.05", "1"]);
-        assert_eq!(readable(&[1000.0, 1001.0, 1002.5]), ["1000", "1001", "1002.5"]);
+        assert_eq!(
+            readable(&[1000.0, 1001.0, 1002.5]),
+            ["1000", "1001", "1002.5"]
+        );
         assert_eq!(readable(&[-3.0, 0.0, 2.5]), ["-3", "0", "2.5"]);
     }
 }

@@ -117,7 +117,10 @@ fn check_path(
         next = row + 1;
     }
     assert!(near(pts[0], rows[0]), "{label}: the first row first");
-    assert!(near(pts[n - 1], rows[rows.len() - 1]), "{label}: the last row last");
+    assert!(
+        near(pts[n - 1], rows[rows.len() - 1]),
+        "{label}: the last row last"
+    );
     let (xs, ys): (Vec<f64>, Vec<f64>) = rows.iter().copied().unzip();
     for (v, on) in [(&xs, 0), (&ys, 1)] {
         let hi = v.iter().copied().fold(f64::MIN, f64::max);
@@ -262,7 +265,9 @@ fn the_crank_speed_of_a_dynamic_run_is_drawn_with_its_band() {
             // The bands are in the series' order, each labelled with its mechanism.
             let (node, band) = (&nodes[k], &bands[k]);
             assert!(
-                band.attribute("data-label").unwrap().starts_with(&format!("{m}:")),
+                band.attribute("data-label")
+                    .unwrap()
+                    .starts_with(&format!("{m}:")),
                 "{label}"
             );
             assert_eq!(attr_f64(*band, "data-from"), lo * fy, "{label}");
@@ -326,7 +331,11 @@ fn the_polar_load_diagrams_draw_the_bearing_loads() {
                 let source = node.attribute("data-source").unwrap();
                 let (csv, y_column) = source.split_once(':').unwrap();
                 let label = format!("{case} {file} {source}");
-                assert_eq!(node.attribute("data-frame") == Some("crank"), crank, "{label}");
+                assert_eq!(
+                    node.attribute("data-frame") == Some("crank"),
+                    crank,
+                    "{label}"
+                );
                 let data = read_csv(&out().join(case).join(csv));
                 let p = y_column.strip_suffix("_force_y_n").unwrap();
                 assert_eq!(
@@ -334,8 +343,14 @@ fn the_polar_load_diagrams_draw_the_bearing_loads() {
                     Some(format!("{p}_force_x_n").as_str())
                 );
                 let peak = |p: &str| {
-                    let (x, y) = (&data[&format!("{p}_force_x_n")], &data[&format!("{p}_force_y_n")]);
-                    x.iter().zip(y).map(|(a, b)| a.hypot(*b)).fold(0.0, f64::max)
+                    let (x, y) = (
+                        &data[&format!("{p}_force_x_n")],
+                        &data[&format!("{p}_force_y_n")],
+                    );
+                    x.iter()
+                        .zip(y)
+                        .map(|(a, b)| a.hypot(*b))
+                        .fold(0.0, f64::max)
                 };
                 let all = bearings(&data, prefix);
                 assert!(all.iter().any(|b| b == p), "{label}");
@@ -365,7 +380,10 @@ fn the_polar_load_diagrams_draw_the_bearing_loads() {
                         "{label}: the frames agree at top dead centre, row {r}"
                     );
                 }
-                assert!(!tdc.is_empty() || csv.contains("crank2"), "{label}: a TDC row");
+                assert!(
+                    !tdc.is_empty() || csv.contains("crank2"),
+                    "{label}: a TDC row"
+                );
                 check_path(&label, node, &rows, &|v| axes.px(v), &|v| axes.py(v));
                 drawn += 1;
             }
@@ -398,4 +416,20 @@ fn every_series_of_a_chart_has_its_own_dash() {
         }
     }
     assert!(charts > 50, "{charts}");
+}
+
+/// No chart without data (issue 38): a machine of one cylinder has no free moment, so no
+/// chart of it; the three-cylinder machine's free moment is drawn.
+#[test]
+fn a_quantity_zero_throughout_has_no_chart() {
+    for case in ["example-compressor", "karhula-engine-dynamic-flywheel"] {
+        let data = read_csv(&out().join(case).join("slider_crank.csv"));
+        assert!(data["shaking_moment_pitch_nm"]
+            .iter()
+            .chain(&data["shaking_moment_yaw_nm"])
+            .all(|v| *v == 0.0));
+        assert!(chart(case, "shaking_moment.svg").is_none(), "{case}");
+        assert!(chart(case, "shaking_force.svg").is_some(), "{case}");
+    }
+    assert!(chart("balance-inline3", "shaking_moment.svg").is_some());
 }
