@@ -155,17 +155,17 @@ pub(crate) fn fmt_pct(d: Option<f64>) -> String {
 /// [1e-3, 1e6); `—` for a missing value.
 /// A value of the SI `unit` in the unit engineers think in (issue 38), written after the SI
 /// value: rad/s in rpm (× 60/2π), Pa in bar (10⁵ Pa, ISO 80000-4), N in kN, W in kW; `None`
-/// for other units or a value not finite.
+/// for other units, a value not finite, or one too small for the unit to help (below 0.1 rad/s,
+/// 1000 Pa, N or W: a round-off remainder stays in SI alone).
 pub(crate) fn engineering(v: f64, unit: &str) -> Option<String> {
-    let (factor, name) = match unit {
-        "rad/s" => (60.0 / (2.0 * std::f64::consts::PI), "rpm"),
-        "Pa" => (1e-5, "bar"),
-        "N" => (1e-3, "kN"),
-        "W" => (1e-3, "kW"),
+    let (factor, name, from) = match unit {
+        "rad/s" => (60.0 / (2.0 * std::f64::consts::PI), "rpm", 0.1),
+        "Pa" => (1e-5, "bar", 1e3),
+        "N" => (1e-3, "kN", 1e3),
+        "W" => (1e-3, "kW", 1e3),
         _ => return None,
     };
-    v.is_finite()
-        .then(|| format!("{} {name}", fmt_num(v * factor)))
+    (v.is_finite() && v.abs() >= from).then(|| format!("{} {name}", fmt_num(v * factor)))
 }
 
 pub(crate) fn fmt_num(v: f64) -> String {

@@ -304,6 +304,16 @@ fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
     assert!(md.contains("| `inertial_power_mean` | W | 0.001 | 1e-10 | — |"));
     // Above the floor: the Δ as ever, (1.25 − 1) / 1.
     assert!(md.contains("| `total_work` | J | 1 | 1.25 | +25.0 % |"));
+    // The engineer's unit beside SI (issue 38): 9.42 rad/s is 89.95 rpm (× 60/2π).
+    assert!(md.contains(
+        "| `crankshaft_angular_velocity_max` | rad/s | 9.42 (89.954 rpm) | 9.42 (89.954 rpm) |"
+    ));
+    // The results ("Which is better") before the paragraph on how Δ is made.
+    let (results, method) = (
+        md.find("## Which is better").unwrap(),
+        md.find("Δ = (mechanism − reference)").unwrap(),
+    );
+    assert!(results < method, "{md}");
     assert!(
         md.contains("round-off"),
         "the legend explains the floor: {md}"
