@@ -207,6 +207,26 @@ mod tests {
         e.finish()
     }
 
+    /// The crank's frame: a load along the crank points along +y at every crank angle, one in
+    /// the direction of rotation (+θ) along −x, and the frames agree at top dead centre.
+    #[test]
+    fn the_crank_frame_turns_the_crank_onto_plus_y() {
+        for theta in [0.0_f64, 37.0, 90.0, 180.0, 271.5, 450.0, 719.0] {
+            let (s, c) = theta.to_radians().sin_cos();
+            let along = crank_frame(theta, 3.0 * c, 3.0 * s);
+            assert!(
+                (along.0).abs() < 1e-12 && (along.1 - 3.0).abs() < 1e-12,
+                "{theta}"
+            );
+            let ahead = crank_frame(theta, -2.0 * s, 2.0 * c);
+            assert!(
+                (ahead.0 + 2.0).abs() < 1e-12 && ahead.1.abs() < 1e-12,
+                "{theta}"
+            );
+        }
+        assert_eq!(crank_frame(90.0, 1.5, -4.0), (1.5, -4.0));
+    }
+
     #[test]
     fn the_envelope_keeps_the_extremes_and_the_ends() {
         for n in [2usize, 999, 1000, 1001, 7201, 100_003] {

@@ -11,6 +11,7 @@
 use crate::chart_columns::locus_key;
 use crate::data::CaseSummary;
 use crate::envelope::ChartData;
+use crate::log_chart::log_chart;
 use crate::svg::{self, LineChart, Series};
 
 /// Pa to bar (ISO 80000-4: 1 bar = 10⁵ Pa).
@@ -55,20 +56,19 @@ pub(super) fn indicator_charts(
     if series.is_empty() {
         return Vec::new();
     }
-    let chart = |log_axes: bool| LineChart {
+    let chart = LineChart {
         title: "Indicator diagram: cylinder pressure over volume".into(),
         x_label: "cylinder volume V, cm³".into(),
         y_label: "pressure (absolute)".into(),
         y_unit: "bar".into(),
-        series: series.clone(),
-        log_axes,
+        series,
         factors: Some((CM3_PER_M3, BAR_PER_PA)),
         ..LineChart::default()
     };
     vec![
         (
             "pv_diagram.svg".into(),
-            svg::line_chart(&chart(false)),
+            svg::line_chart(&chart),
             "Indicator diagram (p–V): absolute cylinder pressure over the chamber's volume \
              V = V_comp + A·(x_TDC − x), every mechanism; the area enclosed is the indicated \
              work per cycle"
@@ -76,7 +76,7 @@ pub(super) fn indicator_charts(
         ),
         (
             "pv_diagram_log.svg".into(),
-            svg::line_chart(&chart(true)),
+            log_chart(&chart),
             "Indicator diagram on log-log axes: a polytropic change p·Vⁿ = const is a \
              straight line of slope −n"
                 .into(),

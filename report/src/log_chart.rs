@@ -70,7 +70,7 @@ fn log_label(log: f64) -> String {
     format!("{v:.decimals$}")
 }
 
-/// The chart of `chart` on log-log axes (its `log_axes`), the series in their own units
+/// The chart of `chart` on log-log axes, the series in their own units
 /// (`factors`), each point with a non-positive coordinate left out.
 pub(crate) fn log_chart(chart: &LineChart) -> String {
     let logs: Vec<(Vec<f64>, Vec<f64>)> = chart

@@ -74,9 +74,6 @@ pub struct LineChart {
     pub x_categories: Option<Vec<String>>,
     /// Fixed x ticks for crank angles: multiples of 90°.
     pub angle_axis: bool,
-    /// Both axes logarithmic (the indicator diagram's log-log form); the data must be
-    /// positive (others are not drawn).
-    pub log_axes: bool,
     /// The engineering units the series are in: each series' x and y are its SI data times
     /// these factors (bar: 1e-5 per Pa), written on the plot group (`data-x-factor`,
     /// `data-y-factor`) for readers going back to SI. `None`: SI.
@@ -320,9 +317,6 @@ pub(crate) fn open_plot(
 }
 
 pub fn line_chart(chart: &LineChart) -> String {
-    if chart.log_axes {
-        return crate::log_chart::log_chart(chart);
-    }
     let decimated: Vec<(Vec<f64>, Vec<f64>)> = chart
         .series
         .iter()
