@@ -84,12 +84,12 @@ pub(crate) fn log_chart(chart: &LineChart) -> String {
                 .unzip()
         })
         .collect();
-    let ext = |pick: fn(&(Vec<f64>, Vec<f64>)) -> &Vec<f64>| {
+    let ext = |on_x: bool| {
         logs.iter()
-            .flat_map(|s| pick(s).iter())
+            .flat_map(|(x, y)| if on_x { x.iter() } else { y.iter() })
             .fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(*v), b.max(*v)))
     };
-    let ((x0, x1), (y0, y1)) = (ext(|s| &s.0), ext(|s| &s.1));
+    let ((x0, x1), (y0, y1)) = (ext(true), ext(false));
     let (x_lo, x_hi) = log_range(10f64.powf(x0), 10f64.powf(x1));
     let (y_lo, y_hi) = log_range(10f64.powf(y0), 10f64.powf(y1));
     let plot_w = WIDTH - LEFT - RIGHT;
