@@ -335,12 +335,18 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
     let mut items = Vec::new();
     for (headline, source) in headlines(s) {
         let direction = headline.direction;
-        let unit = svg::pretty_unit(reference.unit(source.metric()));
+        let si = reference.unit(source.metric());
+        let unit = svg::pretty_unit(si);
+        // The SI figure, and the engineer's unit beside it where there is one (issue 38).
         let with_unit = |v: f64| {
-            if unit.is_empty() {
+            let text = if unit.is_empty() {
                 fmt_num(v)
             } else {
                 format!("{} {unit}", fmt_num(v))
+            };
+            match engineering(v, si) {
+                Some(e) => format!("{text} ({e})"),
+                None => text,
             }
         };
         let present: Vec<(&MechanismSummary, f64)> = s

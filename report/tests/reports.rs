@@ -426,9 +426,9 @@ fn a_multi_cylinder_report_leads_with_the_machine_and_labels_the_cylinder() {
     let md = std::fs::read_to_string(case.join("report.md")).unwrap();
     let items = headline_items(&md);
     let expected_starts = [
-        "- **Mean power need of the machine** (`machine_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 3000 W vs `slider_crank` 3750 W (lower by 20.0 %: better).",
+        "- **Mean power need of the machine** (`machine_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 3000 W (3 kW) vs `slider_crank` 3750 W (3.75 kW) (lower by 20.0 %: better).",
         "- **Peak drive torque of the machine** (the larger of |`machine_torque_max`| and |`machine_torque_min`|, lower is better): best `cardan_gear`; `cardan_gear` 120 N·m vs `slider_crank` 150 N·m",
-        "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`, lower is better): best `cardan_gear`; `cardan_gear` 7200 N vs `slider_crank` 9000 N",
+        "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`, lower is better): best `cardan_gear`; `cardan_gear` 7200 N (7.2 kN) vs `slider_crank` 9000 N (9 kN)",
         "- **Peak crank-pin load of the machine** (`machine_crank_pin_force_max`,",
         "- **Mechanical efficiency of the machine** (`machine_mechanical_efficiency`, higher is better): best `cardan_gear`; `cardan_gear` 0.95 vs `slider_crank` 0.9",
         "- **Mean friction power loss of the machine** (`machine_loss_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 300 W vs `slider_crank` 375 W",
@@ -436,7 +436,7 @@ fn a_multi_cylinder_report_leads_with_the_machine_and_labels_the_cylinder() {
         "- **Peak main-bearing force of cylinder 1** (`total_main_bearing_force_max`,",
         "- **Mean power loss of cylinder 1** (`power_loss_mean`,",
         "- **Mechanical efficiency of cylinder 1** (`mechanical_efficiency`,",
-        "- **Mean power need of cylinder 1** (`power_need_mean`, lower is better): best `cardan_gear`; `cardan_gear` 1471.9 W vs `slider_crank` 1839.9 W",
+        "- **Mean power need of cylinder 1** (`power_need_mean`, lower is better): best `cardan_gear`; `cardan_gear` 1471.9 W (1.4719 kW) vs `slider_crank` 1839.9 W (1.8399 kW)",
     ];
     assert_eq!(items.len(), expected_starts.len(), "{items:#?}");
     for (item, start) in items.iter().zip(expected_starts) {
@@ -480,7 +480,7 @@ fn a_multi_cylinder_report_leads_with_the_machine_and_labels_the_cylinder() {
     let items = headline_items(&md);
     assert_eq!(items.len(), 3, "{items:#?}");
     assert!(items[0].starts_with(
-        "- **Mean output power of the machine** (−`machine_power_mean`, higher is better): best `slider_crank`; `cardan_gear` 54000 W vs `slider_crank` 60000 W (lower by 10.0 %: worse)."
+        "- **Mean output power of the machine** (−`machine_power_mean`, higher is better): best `slider_crank`; `cardan_gear` 54000 W (54 kW) vs `slider_crank` 60000 W (60 kW) (lower by 10.0 %: worse)."
     ), "{}", items[0]);
     assert!(items[1].contains("`cardan_gear` 1800 N·m vs `slider_crank` 2000 N·m"));
     assert!(items[2].starts_with(
