@@ -275,7 +275,8 @@ fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
             "metrics": {
                 "inertial_torque_max": 0.2, "crankshaft_angular_velocity_max": 9.42,
                 "cycle_time": 1.33, "inertial_work": work, "inertial_torque_mean": mean,
-                "inertial_power_mean": power, "total_torque_max": 0.4, "total_work": total
+                "inertial_power_mean": power, "total_torque_max": 0.4, "total_work": total,
+                "energy_balance_error": work.abs() * 1e-2
             },
             "units": {
                 "inertial_torque_max": "N*m", "crankshaft_angular_velocity_max": "rad/s",
@@ -302,6 +303,11 @@ fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
     assert!(md.contains("| `inertial_torque_mean` | N·m | 3e-16 | -1e-16 | ≈ 0 |"));
     // One within round-off (1e-10 W of a 1.9 W scale), the other not: no Δ either.
     assert!(md.contains("| `inertial_power_mean` | W | 0.001 | 1e-10 | — |"));
+    // A relative error of round-off (2e-17 against 4.8e-17): no Δ of it (issue 38).
+    assert!(
+        md.contains("| `energy_balance_error` |  | 2e-17 | 4.8e-17 | ≈ 0 |"),
+        "{md}"
+    );
     // Above the floor: the Δ as ever, (1.25 − 1) / 1.
     assert!(md.contains("| `total_work` | J | 1 | 1.25 | +25.0 % |"));
     // The engineer's unit beside SI (issue 38): 9.42 rad/s is 89.95 rpm (× 60/2π).
