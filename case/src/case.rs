@@ -10,6 +10,7 @@ use crate::masses::MassTable;
 use crate::quantity::{
     Angle, AngularAcceleration, AngularSpeed, Length, Positive, Quantity, Whole,
 };
+use crate::read_once::ReadOnce;
 use crate::setup::Setup;
 use crate::units::is_folder_name;
 use cardan_dynamics::{Friction, GearSpec};
@@ -201,7 +202,7 @@ pub struct MotionTable {
     #[serde(default)]
     pub mode: crate::machine_motion::MotionMode,
     /// Dynamic: cycles of start_angle..end_angle run from the initial state, the last reported;
-    /// default 1.
+    /// default 1; cycles × steps at most 20 million integration steps.
     pub cycles: Option<Whole<1, 100_000>>,
     /// Dynamic: stop before `cycles` once a cycle ends within this fraction of its start speed
     /// (periodic steady state), from 0 to 1 (exclusive); default: run every cycle.
@@ -288,6 +289,11 @@ impl<'de> Deserialize<'de> for FolderName {
 /// Largest accepted number of steps.
 pub const MAX_STEPS: i64 = 100_000_000;
 
+/// Largest accepted number of integration steps of a dynamic run's cycles (`cycles × steps`):
+/// 20 million, a run-up of 27 000 cycles of 720 steps, some minutes a mechanism with every
+/// loss model (issue 36.10: 100 000 cycles were accepted and took about 13 hours).
+pub const MAX_SOLVED_STEPS: i64 = 20_000_000;
+
 /// Reads and validates one case file.
 pub fn load(file: &Path) -> Result<Case, CaseError> {
     let text = read_case_text(file)?;
@@ -314,15 +320,16 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
 /// messages. The same reader as [`load_file`]'s, so the same errors.
 pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, CaseError> {
     match crate::sweep::expand(file, table.clone())? {
-        None => Ok(vec![from_table(file, table)?]),
+        None => Ok(vec![from_table(file, table, &ReadOnce::default())?]),
         Some((sweep, points)) => {
+            let read_once = ReadOnce::default();
             // Each point's table read as it is (written out as TOML text and parsed again, it
             // took most of the time of reading a sweep of 10 000 points), the points on every
             // thread, the first failure in the points' order reported.
             let cases: Vec<Result<Case, CaseError>> = points
                 .into_par_iter()
                 .map(|p| {
-                    let mut case = from_table(file, p.table)?;
+                    let mut case = from_table(file, p.table, &read_once)?;
                     case.sweep = Some((sweep.clone(), p.values));
                     Ok(case)
                 })
@@ -336,7 +343,7 @@ pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, Case
 /// swept values; the errors are those of a case file of that point's table.
 pub fn point_case(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseError> {
     let point = sweep.point(k)?;
-    let mut case = from_table(&sweep.file, point.table)?;
+    let mut case = from_table(&sweep.file, point.table, sweep.read_once())?;
     case.sweep = Some((sweep.name.clone(), point.values));
     Ok(case)
 }
@@ -345,12 +352,12 @@ pub fn point_case(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseErr
 /// [`crate::sweep::Sweep::define`]'s caller, or read by [`toml_table`]); `file` is only for the
 /// messages.
 pub fn case_of_table(file: &Path, table: toml::Table) -> Result<Case, CaseError> {
-    from_table(file, table)
+    from_table(file, table, &ReadOnce::default())
 }
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
-    from_table(file, toml_table(file, text)?)
+    from_table(file, toml_table(file, text)?, &ReadOnce::default())
 }
 
 /// The TOML of a case file; a syntax error as the TOML reader says it, with line and column.
@@ -392,8 +399,13 @@ fn mechanism_tables(table: &mut toml::Table) -> MechanismTables {
     own
 }
 
-/// Reads a case's table (a file's, or a sweep point's) into the schema, then validates it.
-fn from_table(file: &Path, mut table: toml::Table) -> Result<Case, CaseError> {
+/// Reads a case's table (a file's, or a sweep point's) into the schema, then validates it; the
+/// files it reads are read once for every case sharing `read_once`.
+fn from_table(
+    file: &Path,
+    mut table: toml::Table,
+    read_once: &ReadOnce,
+) -> Result<Case, CaseError> {
     let name = match table.get("name") {
         Some(toml::Value::String(name)) => name.clone(),
         _ => "(unnamed)".to_string(),
@@ -412,7 +424,7 @@ fn from_table(file: &Path, mut table: toml::Table) -> Result<Case, CaseError> {
         }
     })?;
     let document = crate::digest::canonical(&(&raw, &own.options, &own.masses));
-    let mut case = validate(file, raw, own)?;
+    let mut case = validate(file, raw, own, read_once)?;
     let mut digest = crate::digest::Fnv::default();
     digest.update(&document);
     for (name, bytes) in case.gas.iter().flat_map(|g| &g.files) {
@@ -429,34 +441,12 @@ fn mechanism_names() -> Vec<&'static str> {
         .collect()
 }
 
-/// Validates a case read from `file` (only for the messages): the rules between fields, and
-/// the mechanisms built from the registry.
-fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, CaseError> {
-    let case_name = raw.name.0.clone();
-    let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
-        file: file.into(),
-        case: case_name.clone(),
-        field: field.to_string(),
-        value: crate::units::show(&value.to_string()),
-        rule: rule.to_string(),
-    };
-    let field_error = |error| CaseError::Field {
-        file: file.into(),
-        case: case_name.clone(),
-        error,
-    };
-    let machine = raw.machine;
-    let g = &raw.geometry;
-    let geometry = MachineGeometry {
-        crank_length: g.crank_length.si,
-        rod_length: g.rod_length.si,
-        bore: g.bore.si,
-        pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
-    };
-    crate::unread::geometry_size([&g.crank_length, &g.rod_length, &g.bore], &invalid)?;
-    let pistons = if g.opposed_pistons { 2 } else { 1 };
-    let crank_phase = crank_phase(g, pistons, &invalid)?;
-
+/// The crank's motion of a case (`[motion]`, `[load]`, `[flywheel]`): the prescribed law, the
+/// end angle (rad) and the solved motion's tables, with their rules.
+fn motion_of(
+    raw: &CaseFile,
+    invalid: &Invalid,
+) -> Result<(CrankMotion, f64, Option<crate::machine_motion::Dynamics>), CaseError> {
     let m = &raw.motion;
     let (start_angle, end_angle) = (m.start_angle.si, m.end_angle.si);
     if end_angle <= start_angle {
@@ -489,6 +479,19 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         &m.initial_speed,
     );
     crate::unread::dynamic_inputs(dynamic, tolerance, cycles, &invalid)?;
+    if let Some(cycles) = cycles.filter(|&c| c.saturating_mul(m.steps.0) > MAX_SOLVED_STEPS) {
+        return Err(invalid(
+            "motion.cycles",
+            &cycles,
+            &format!(
+                "with motion.steps = {} is {} integration steps, more than {MAX_SOLVED_STEPS} \
+                 (hours of solving, more with a sized flywheel): set motion.steady_tolerance to \
+                 stop at the periodic steady state, or take fewer steps per cycle",
+                m.steps.0,
+                cycles * m.steps.0
+            ),
+        ));
+    }
     if let (None, Err(e)) = (&dynamics, motion.at_angle(end_angle)) {
         return Err(invalid(
             "motion.initial_speed",
@@ -496,6 +499,45 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
             &e.to_string(),
         ));
     }
+    Ok((motion, end_angle, dynamics))
+}
+
+/// Validates a case read from `file` (only for the messages): the rules between fields, and
+/// the mechanisms built from the registry.
+fn validate(
+    file: &Path,
+    raw: CaseFile,
+    own: MechanismTables,
+    read_once: &ReadOnce,
+) -> Result<Case, CaseError> {
+    let case_name = raw.name.0.clone();
+    let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
+        file: file.into(),
+        case: case_name.clone(),
+        field: field.to_string(),
+        value: crate::units::show(&value.to_string()),
+        rule: rule.to_string(),
+    };
+    let field_error = |error| CaseError::Field {
+        file: file.into(),
+        case: case_name.clone(),
+        error,
+    };
+    let machine = raw.machine;
+    let g = &raw.geometry;
+    let geometry = MachineGeometry {
+        crank_length: g.crank_length.si,
+        rod_length: g.rod_length.si,
+        bore: g.bore.si,
+        pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
+    };
+    crate::unread::geometry_size([&g.crank_length, &g.rod_length, &g.bore], &invalid)?;
+    let pistons = if g.opposed_pistons { 2 } else { 1 };
+    let crank_phase = crank_phase(g, pistons, &invalid)?;
+
+    let m = &raw.motion;
+    let (motion, end_angle, dynamics) = motion_of(&raw, &invalid)?;
+    let start_angle = motion.start_angle;
     let steps = m.steps.0 as usize;
 
     let step = (end_angle - start_angle) / steps as f64;
@@ -504,7 +546,7 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
     let gas = raw
         .gas
         .as_ref()
-        .map(|table| crate::gas::parse(table, file, &case_name, machine))
+        .map(|table| crate::gas::parse(table, file, &case_name, (machine, read_once)))
         .transpose()?;
     if gas.is_some() {
         crate::unread::gas_cylinders(&mechanisms, &invalid)?;
@@ -528,6 +570,28 @@ fn validate(file: &Path, raw: CaseFile, own: MechanismTables) -> Result<Case, Ca
         )?;
     }
     let gear = raw.gear.as_ref().map(|table| table.spec());
+    if gear.is_some() {
+        // The run's fastest crank speed: an end of a prescribed ramp (ω² is linear in the
+        // angle), a solved motion's start (its later speeds are checked at each step).
+        let end = motion
+            .at_angle(end_angle)
+            .ok()
+            .filter(|_| dynamics.is_none());
+        let blame = match end.filter(|e| e.speed.abs() > motion.initial_speed.abs()) {
+            Some(e) => (
+                e.speed,
+                (
+                    "motion.angular_acceleration",
+                    &*m.angular_acceleration.written,
+                ),
+            ),
+            None => (
+                motion.initial_speed,
+                ("motion.initial_speed", &*m.initial_speed.written),
+            ),
+        };
+        crate::gear_speed::check(&mechanisms, blame.0.abs(), blame.1, &invalid)?;
+    }
     let friction = match &raw.friction {
         None => None,
         Some(table) => {

@@ -7,6 +7,7 @@
 //! the rules that join fields (through the gas crate's own checks, naming the field).
 
 use crate::error::{CaseError, Machine};
+use crate::read_once::ReadOnce;
 use cardan_gas::{Cylinder, GasError, GasModel};
 use schemars::{json_schema, Schema, SchemaGenerator};
 use std::path::Path;
@@ -81,7 +82,7 @@ pub fn parse(
     table: &toml::Table,
     file: &Path,
     case: &str,
-    machine: Machine,
+    (machine, read_once): (Machine, &ReadOnce),
 ) -> Result<GasCase, CaseError> {
     let mut cx = Context {
         table,
@@ -90,6 +91,7 @@ pub fn parse(
         machine,
         model: "",
         files: Default::default(),
+        read_once,
     };
     let names: Vec<&str> = MODELS.iter().map(|m| m.name).collect();
     let listed = || {
@@ -158,6 +160,7 @@ pub fn check_ready(
     (bore, pistons, crank_phase): (f64, u32, f64),
     speed: f64,
 ) -> Result<(), Result<GasError, CaseError>> {
+    let read_once = ReadOnce::default();
     let cx = Context {
         table,
         file,
@@ -165,6 +168,7 @@ pub fn check_ready(
         machine,
         model: gas.name,
         files: Default::default(),
+        read_once: &read_once,
     };
     for mechanism in mechanisms {
         let ready = gas
@@ -258,7 +262,7 @@ mod tests {
                 Some("engine") => Machine::Engine,
                 _ => Machine::Pump,
             };
-            let case = parse(gas, &file, "shipped", machine)
+            let case = parse(gas, &file, "shipped", (machine, &ReadOnce::default()))
                 .unwrap_or_else(|e| panic!("{}: {e}", file.display()));
             assert_eq!(Some(case.name()), gas.get("model").and_then(|m| m.as_str()));
             read += 1;
@@ -268,9 +272,14 @@ mod tests {
 
     fn error(machine: Machine, text: &str) -> String {
         let table: toml::Table = toml::from_str(text).unwrap();
-        parse(&table, Path::new("c.toml"), "c", machine)
-            .unwrap_err()
-            .to_string()
+        parse(
+            &table,
+            Path::new("c.toml"),
+            "c",
+            (machine, &ReadOnce::default()),
+        )
+        .unwrap_err()
+        .to_string()
     }
 
     /// A misspelled field of each model's table names its path, the nearest field and the

@@ -44,13 +44,18 @@ pub struct LoadTable {
 #[derive(Debug, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct FlywheelTable {
-    /// Its moment of inertia, kg·m² (a bare number above 100 is taken for g·cm²: write
-    /// "360 kg*m^2").
+    /// Its moment of inertia, kg·m², at most 1e6 kg·m² (a bare number above 100 is taken for
+    /// g·cm²: write "360 kg*m^2").
     pub inertia: Option<NonNegative<Inertia>>,
     /// The coefficient of fluctuation of speed (ω_max − ω_min)/ω_mean to meet, from 0 to 1
     /// (exclusive): the solver finds the flywheel inertia that meets it on the solved motion.
     pub fluctuation_coefficient: Option<Ranged<FluctuationCoefficient>>,
 }
+
+/// The largest flywheel a case may give, kg·m²: ten times the largest built (about 1e5 kg·m²,
+/// marine diesels and flywheel energy stores). Far above it a crank's speed changes by less
+/// than double precision resolves over a cycle (issue 36.3: 1e15 kg·m² reported ΔE = 0).
+pub const MAX_FLYWHEEL: f64 = 1e6;
 
 /// A validated solved motion.
 #[derive(Debug, Clone, PartialEq)]
@@ -122,6 +127,16 @@ pub(crate) fn build(
                     "flywheel.fluctuation_coefficient",
                     &"with flywheel.inertia",
                     "give the flywheel's inertia or the coefficient it is sized for, not both",
+                ));
+            }
+            if let Some(j) = f.inertia.as_ref().filter(|j| j.si > MAX_FLYWHEEL) {
+                return Err(invalid(
+                    "flywheel.inertia",
+                    &j.written,
+                    "must be at most 1e6 kg*m^2: the largest flywheels built (marine diesels, \
+                     flywheel energy stores) are about 1e5 kg*m^2, and the solved speed of a \
+                     crank carrying more barely moves (a unit mistake? a bare number above 100 \
+                     is g*cm^2)",
                 ));
             }
             (f.inertia.as_ref().map_or(0.0, |j| j.si), target)

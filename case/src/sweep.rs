@@ -14,6 +14,7 @@
 
 use crate::error::CaseError;
 use crate::quantity::Whole;
+use crate::read_once::ReadOnce;
 use crate::units::split_number;
 use rayon::prelude::*;
 use schemars::JsonSchema;
@@ -240,9 +241,16 @@ pub struct Sweep {
     fields: Vec<Field>,
     zip: bool,
     count: usize,
+    /// The files its points read, read once for all of them (clones of the sweep share it).
+    read_once: ReadOnce,
 }
 
 impl Sweep {
+    /// The files its points read, read once for all of them.
+    pub(crate) fn read_once(&self) -> &ReadOnce {
+        &self.read_once
+    }
+
     /// The sweep of `table` (a case file with a `[sweep]` table), or `None` if it has none: its
     /// fields and values read and checked (at most [`MAX_POINTS`] points, each of a name of its
     /// own), none of its points made or validated.
@@ -340,6 +348,7 @@ impl Sweep {
             fields,
             zip,
             count,
+            read_once: ReadOnce::default(),
         };
         // Where a swept path cannot be set (a part of it is not a table), it cannot at any
         // point: the first point tells.

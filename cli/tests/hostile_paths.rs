@@ -190,6 +190,31 @@ fn a_result_record_that_is_a_fifo_is_refused_by_merge() {
 }
 
 #[test]
+fn a_run_record_that_is_a_fifo_is_run_again_by_resume_not_waited_on() {
+    // A case folder whose `run.json` is a FIFO: `--resume` cannot trust the folder, so it
+    // runs the case again (the folder is replaced) instead of blocking on the read.
+    let dir = tempfile::tempdir().unwrap();
+    let case = repo("configs/karhula-pump-r60-l140-a0-w3pi.toml");
+    let (code, _, err) = cardan_in(
+        dir.path(),
+        &[&"run", &case, &"--out", &"out", &"--no-report"],
+    );
+    assert_eq!(code, Some(0), "stderr: {err}");
+    let record = dir
+        .path()
+        .join("out/karhula-pump-r60-l140-a0-w3pi/run.json");
+    std::fs::remove_file(&record).unwrap();
+    mkfifo(&record);
+    let (code, _, err) = cardan_in(
+        dir.path(),
+        &[&"run", &case, &"--out", &"out", &"--no-report", &"--resume"],
+    );
+    assert_eq!(code, Some(0), "stderr: {err}");
+    let meta = std::fs::symlink_metadata(&record).unwrap();
+    assert!(meta.is_file(), "run.json is a regular file again");
+}
+
+#[test]
 fn a_case_folder_linking_to_itself_and_its_parent_is_read_once() {
     let dir = tempfile::tempdir().unwrap();
     let cases = dir.path().join("cases");

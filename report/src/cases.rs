@@ -12,7 +12,7 @@ use crate::numbers::{
     ROUND_OFF_LEGEND, SIGN_LEGEND,
 };
 use crate::svg::{self, MAX_POINTS};
-use cardan_dynamics::metrics::Group as MetricGroup;
+use cardan_metrics::Group as MetricGroup;
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -66,9 +66,9 @@ impl Group {
 
 /// The group of a metric and its sort key within the group.
 fn classify(metric: &str, families: &[String]) -> (Group, (usize, (usize, String), String)) {
-    let def = cardan_dynamics::metrics::find(metric);
+    let def = cardan_metrics::find(metric);
     let registry = def.map_or(usize::MAX, |d| {
-        cardan_dynamics::METRICS
+        cardan_metrics::METRICS
             .iter()
             .position(|m| m.name == d.name)
             .unwrap_or(usize::MAX)

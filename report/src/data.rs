@@ -451,8 +451,7 @@ pub fn read_sweep(
         // No point folder: the prefixes of the columns whose rest is a registered metric.
         for h in &header[1..] {
             if let Some((m, metric)) = h.split_once('.') {
-                if cardan_dynamics::metrics::find(metric).is_some() && !names.iter().any(|n| n == m)
-                {
+                if cardan_metrics::find(metric).is_some() && !names.iter().any(|n| n == m) {
                     names.push(m.to_string());
                 }
             }

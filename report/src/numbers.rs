@@ -3,7 +3,7 @@
 //! floor of a signed mean or work, the legends of the tables, and the number formats.
 
 /// Whether a larger or a smaller value of a metric is better (the registry's).
-pub(crate) use cardan_dynamics::metrics::Better;
+pub(crate) use cardan_metrics::Better;
 
 /// The phrase of a direction in a report's sentences.
 pub(crate) fn phrase(direction: Better) -> &'static str {
@@ -15,10 +15,10 @@ pub(crate) fn phrase(direction: Better) -> &'static str {
 }
 
 /// The direction of a metric, from its definition in the registry
-/// (`cardan_dynamics::metrics`): none for an unknown metric or one whose direction is neither
+/// (`cardan_metrics`): none for an unknown metric or one whose direction is neither
 /// (kinematics, mean drive power, energy checks).
 pub(crate) fn better(metric: &str) -> Option<Better> {
-    cardan_dynamics::metrics::find(metric)
+    cardan_metrics::find(metric)
         .map(|d| d.better)
         .filter(|b| *b != Better::Neither)
 }
@@ -116,7 +116,7 @@ pub(crate) const ROUND_OFF_LEGEND: &str =
      are within it (both 0 up to round-off, e.g. an inertial work over whole turns at constant \
      speed), `—` where one is; nor of an `energy_balance_error` below 1e-9.";
 
-/// The sign convention of the signed quantities (`cardan_dynamics::METRICS`, docs/results.md "Torque
+/// The sign convention of the signed quantities (`cardan_metrics::METRICS`, docs/results.md "Torque
 /// sign"), under every table that holds one.
 pub(crate) const SIGN_LEGEND: &str = "Signs: a drive torque, its mean, work and power are those \
      of the torque the drive applies to the crankshaft, positive in the direction of rotation: \

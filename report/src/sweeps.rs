@@ -57,8 +57,7 @@ fn multi_cylinder(t: &SweepTable) -> bool {
 /// (`machine_*`, the balance), else one cylinder's (cylinder 1; a vee's at the machine angle).
 fn whose(t: &SweepTable, metric: &str) -> Option<&'static str> {
     let machine = metric.starts_with("machine_")
-        || cardan_dynamics::metrics::find(metric)
-            .is_some_and(|d| d.group == cardan_dynamics::metrics::Group::Balance);
+        || cardan_metrics::find(metric).is_some_and(|d| d.group == cardan_metrics::Group::Balance);
     (multi_cylinder(t) && !machine).then(|| {
         if t.layout_kind.as_deref() == Some("vee") {
             "one cylinder at the machine's crank angle"

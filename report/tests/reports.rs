@@ -375,7 +375,7 @@ fn hand_summary(
         let units: serde_json::Map<String, serde_json::Value> = metrics
             .iter()
             .map(|(k, _)| {
-                let unit = cardan_dynamics::metrics::find(k).map_or("", |d| d.unit);
+                let unit = cardan_metrics::find(k).map_or("", |d| d.unit);
                 (k.to_string(), serde_json::json!(unit))
             })
             .collect();

@@ -755,6 +755,45 @@ fn inputs_nothing_would_read_are_refused() {
             &["motion.steady_tolerance = 0.001", "single cycle"],
         ),
         (
+            // Issue 36.12: a case file's gear meshes held to the gear file's pitch-line rule
+            // (the cardan pair of r = 26 mm: v = ω·r, 500 m/s at 19 000 rad/s).
+            shipped("nunes-op-r26-l90-2000rpm-lead10").replace(
+                "initial_speed = \"2000 rpm\"",
+                "initial_speed = \"200000 rpm\"",
+            ),
+            &[
+                "motion.initial_speed = \"200000 rpm\"",
+                "gear mesh",
+                "m/s at the pitch line",
+                "at most 500 m/s",
+            ],
+        ),
+        (
+            // The thesis pump's cardan pair (v = 2ω·e, e = 30 mm) run up to 35 000 rad/s.
+            cardan_testing::cases::loaded_thesis_pump("bad").replace(
+                "angular_acceleration = 0.0\n",
+                "angular_acceleration = \"1e8 rad/s^2\"\n",
+            ),
+            &[
+                "motion.angular_acceleration = \"1e8 rad/s^2\"",
+                "at most 500 m/s",
+            ],
+        ),
+        (
+            // Issue 36.3: the solved speed of 1e15 kg·m² does not move in double precision.
+            dynamic.replace("inertia = \"0.2 kg*m^2\"", "inertia = \"1e15 kg*m^2\""),
+            &["flywheel.inertia = \"1e15 kg*m^2\"", "at most 1e6 kg*m^2"],
+        ),
+        (
+            // Issue 36.10: 100 000 cycles took about 13 hours.
+            dynamic.replace("cycles = 5", "cycles = 100000"),
+            &[
+                "motion.cycles = 100000",
+                "integration steps, more than 20000000",
+                "steady_tolerance",
+            ],
+        ),
+        (
             cardan_only.replace("bore = 0.12", "bore = 0.12\npin_offset = \"5 mm\""),
             &[
                 "geometry.pin_offset = \"5 mm\"",

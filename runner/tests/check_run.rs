@@ -133,6 +133,7 @@ fn known_before_stepping(failure: &str) -> bool {
         "the energy check fails",
         "is not finite",
         "cannot be reached",
+        "cannot be resolved",
     ];
     if after.iter().any(|a| failure.contains(a)) {
         return false;

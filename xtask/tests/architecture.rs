@@ -27,6 +27,7 @@ fn physics_crates_do_not_depend_on_the_runner() {
         "gears",
         "friction",
         "balance",
+        "metrics",
     ] {
         let manifest =
             std::fs::read_to_string(root().join(format!("crates/{krate}/Cargo.toml"))).unwrap();
@@ -37,6 +38,17 @@ fn physics_crates_do_not_depend_on_the_runner() {
             );
         }
     }
+}
+
+/// The metric registry depends on nothing: every crate may read it.
+#[test]
+fn the_metric_registry_depends_on_nothing() {
+    let manifest = std::fs::read_to_string(root().join("crates/metrics/Cargo.toml")).unwrap();
+    let dependencies = manifest.split("[dependencies]").nth(1).unwrap_or("");
+    assert!(
+        dependencies.trim().is_empty(),
+        "crates/metrics has dependencies: {dependencies}"
+    );
 }
 
 /// The case schema is read before anything runs: its crate never depends on the runner, the
@@ -50,11 +62,21 @@ fn the_case_crate_does_not_depend_on_the_runner() {
 }
 
 /// The reports are made from an output folder: their crate never depends on the runner (which
-/// depends on it) or the command line.
+/// depends on it) or the command line, nor on the physics: the metrics' units, groups and
+/// directions come from the metric registry alone (`cardan-metrics`, issue 37).
 #[test]
 fn the_report_crate_does_not_depend_on_the_runner() {
     let manifest = std::fs::read_to_string(root().join("report/Cargo.toml")).unwrap();
-    for forbidden in ["cardan-runner", "cardan =", "\ncardan."] {
+    for forbidden in [
+        "cardan-runner",
+        "cardan =",
+        "\ncardan.",
+        "cardan-dynamics",
+        "cardan-gas",
+        "cardan-gears",
+        "cardan-friction",
+        "cardan-balance",
+    ] {
         assert!(
             !manifest.contains(forbidden),
             "report depends on {forbidden}"

@@ -101,18 +101,38 @@ pub struct Context<'a> {
     /// `gas.model`.
     pub(super) model: &'static str,
     /// The files the model read: each as named in the table and the digest of its bytes
-    /// ([`Context::record_file`]).
+    /// ([`Context::read_file`]).
     pub(super) files: std::cell::RefCell<Vec<(String, String)>>,
+    /// The files the case file's cases read so far, shared by a sweep's points.
+    pub(super) read_once: &'a crate::read_once::ReadOnce,
 }
 
 impl Context<'_> {
-    /// Records the bytes of the file a field named (`name` as written), which the model read:
-    /// they enter the case's input digest ([`crate::case::Case::input_digest`]), so that a run
-    /// resumed or merged after the file changed runs the case again. Every model that reads a
-    /// file calls it with what it read.
-    pub fn record_file(&self, name: &str, bytes: &[u8]) {
-        let digest = crate::digest::of_bytes(bytes);
+    /// The file the field `key` names (`name`, relative to the case file), read through the
+    /// bounded reader within `limit` and parsed by `parse` (a value or the rule the text
+    /// breaks) once for every case of the case file (`kind` names what the parse depends on
+    /// beyond the bytes). The digest of its bytes is recorded with its name: it enters the
+    /// case's input digest ([`crate::case::Case::input_digest`]), so that a run resumed or
+    /// merged after the file changed runs the case again. Every model that reads a file reads
+    /// it so.
+    pub fn read_file<T: std::any::Any + Send + Sync>(
+        &self,
+        key: &str,
+        name: &str,
+        (limit, kind): (cardan_files::Limit, &str),
+        parse: impl FnOnce(&str) -> Result<T, String>,
+    ) -> Result<Arc<T>, CaseError> {
+        let path = self.file.parent().unwrap_or(Path::new(".")).join(name);
+        let shown = format!("\"{name}\"");
+        let (digest, value) = self.read_once.get(&path, kind, || {
+            let text = cardan_files::read_text(&path, limit).map_err(|e| {
+                self.refuse(key, &shown, &format!("cannot read {}: {e}", path.display()))
+            })?;
+            let value = parse(&text).map_err(|rule| self.refuse(key, &shown, &rule))?;
+            Ok((crate::digest::of_bytes(text.as_bytes()), value))
+        })?;
         self.files.borrow_mut().push((name.to_string(), digest));
+        Ok(value)
     }
 
     /// A rule broken by `value` of the field `key` of `[gas]`.

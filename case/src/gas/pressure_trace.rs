@@ -27,7 +27,6 @@ use cardan_gas::{Chamber, GasError, GasMetric, GasModel, PreparedGas};
 use schemars::JsonSchema;
 use serde::Deserialize;
 use std::f64::consts::PI;
-use std::sync::Arc;
 
 /// The registry line.
 pub const ENTRY: GasEntry = entry::<PressureTraceTable>("pressure_trace", None);
@@ -76,32 +75,18 @@ impl PressureTrace {
 
 impl ModelTable for PressureTraceTable {
     fn build(self, cx: &Context) -> Result<ReadModel, CaseError> {
-        let name = &self.file;
-        let path = cx
-            .file
-            .parent()
-            .unwrap_or(std::path::Path::new("."))
-            .join(name);
-        let shown = format!("\"{name}\"");
-        let limit = cardan_files::DATA_TABLE;
-        let text = cardan_files::read_text(&path, limit).map_err(|e| {
-            cx.refuse(
-                "file",
-                &shown,
-                &format!("cannot read {}: {e}", path.display()),
-            )
-        })?;
-        cx.record_file(name, text.as_bytes());
         let period = match cx.machine {
             Machine::Engine => 4.0 * PI,
             _ => 2.0 * PI,
         };
-        let trace = parse(&text, period).map_err(|rule| cx.refuse("file", &shown, &rule))?;
+        let kind = format!("pressure trace over {period} rad");
+        let limit = (cardan_files::DATA_TABLE, kind.as_str());
+        let trace = cx.read_file("file", &self.file, limit, |text| parse(text, period))?;
         // The cylinder's clearance does not enter the pressure.
         let ratio = self
             .compression_ratio
             .map_or(DEFAULT_COMPRESSION_RATIO, |r| r.si);
-        Ok((Arc::new(trace), Clearance::CompressionRatio(ratio)))
+        Ok((trace, Clearance::CompressionRatio(ratio)))
     }
 }
 

@@ -18,6 +18,7 @@
 pub mod energy;
 pub mod engine_losses;
 pub mod family;
+pub mod flywheel_sizing;
 pub mod fmep;
 pub mod gear_rating;
 pub mod loss;
@@ -28,7 +29,8 @@ pub mod machine_friction;
 pub mod machine_motion;
 pub mod machine_stage;
 pub mod mesh;
-pub mod metrics;
+/// The metric registry, its own crate (the reports read it without the physics).
+pub use cardan_metrics as metrics;
 pub mod parallel;
 pub mod planar;
 pub mod reduced_inertia;

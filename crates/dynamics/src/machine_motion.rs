@@ -471,11 +471,10 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
 }
 
 /// The flywheel inertia (kg·m²) that brings the reported cycle's coefficient of fluctuation
-/// (ω_max − ω_min)/ω_mean down to `target`, and that coefficient: 0 if the machine meets it
-/// without one. Doubling from J*'s largest value until it is met (at most 60 times: an
-/// unreachable target is an error), then bisection in the logarithm to 1e-6 of the inertia
-/// (at most 60 steps). The first estimate is the textbook's J ≈ ΔE/(Cs·ω²)'s scale; a
-/// mechanism of no inertia starts from 1e-6 kg·m².
+/// (ω_max − ω_min)/ω_mean down to `target`, to 1e-6 of the inertia, and that coefficient: the
+/// case's own flywheel if the machine meets it with it. Found by
+/// [`crate::flywheel_sizing::inertia_for`] (the textbook law brackets it, regula falsi closes
+/// it); an unreachable target is an error.
 pub fn size_flywheel(
     torques: &MachineTorques,
     run: &SolvedRun,
@@ -496,49 +495,13 @@ pub fn size_flywheel(
             Err(e) => Err(e.to_string()),
         }
     };
-    let (bare, c) = cs(torques.flywheel)?;
-    if bare <= target {
-        return Ok((torques.flywheel, bare));
-    }
-    let mut lo = torques.flywheel;
-    let scale = match c {
-        0.0 => {
-            ReducedInertiaOf::new(torques.mechanism)
-                .at(run.start)
-                .inertia
-        }
-        j => j,
-    };
-    // A mechanism of no inertia: doubling from a milligram-metre-squared flywheel (1e-6
-    // kg·m², far below any machine's; 60 doublings reach 1e12 kg·m²).
+    // Where the solve gives no inertia (it stopped): the mechanism's at the start; a
+    // mechanism of none, a milligram-metre-squared (1e-6 kg·m², far below any machine's).
+    let scale = ReducedInertiaOf::new(torques.mechanism)
+        .at(run.start)
+        .inertia;
     let scale = if scale > 0.0 { scale } else { 1e-6 };
-    let mut hi = torques.flywheel.max(scale);
-    let mut at_hi = bare;
-    let mut doublings = 0;
-    while at_hi > target {
-        lo = hi;
-        hi *= 2.0;
-        doublings += 1;
-        if doublings > 60 {
-            return Err(format!(
-                "flywheel.fluctuation_coefficient: {target} cannot be reached (still {at_hi} with a flywheel of {hi} kg·m²)"
-            ));
-        }
-        at_hi = cs(hi)?.0;
-    }
-    for _ in 0..60 {
-        if hi - lo <= 1e-6 * hi {
-            break;
-        }
-        let mid = if lo > 0.0 { (lo * hi).sqrt() } else { 0.5 * hi };
-        let at = cs(mid)?.0;
-        if at > target {
-            lo = mid;
-        } else {
-            (hi, at_hi) = (mid, at);
-        }
-    }
-    Ok((hi, at_hi))
+    crate::flywheel_sizing::inertia_for(cs, torques.flywheel, target, scale)
 }
 
 /// The reported cycle of a solved run as a motion source: its `steps + 1` crank states, each

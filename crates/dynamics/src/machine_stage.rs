@@ -404,6 +404,10 @@ impl Stage for MachineStage {
         out: &mut [Column],
     ) -> Result<(), (usize, StageError)> {
         let n = input.states.len;
+        if self.machine.cylinders() == 1 && self.machine.train_is_first() {
+            self.one_cylinder_block(input, out);
+            return self.check_block(n, out);
+        }
         let room = self.room();
         room.cranks.clear();
         room.cranks.extend((0..n).map(|i| input.states.crank.at(i)));
@@ -422,18 +426,7 @@ impl Stage for MachineStage {
             }
         }
         self.row = row;
-        // One sum of every value first: a NaN or an infinity makes it so (as the stepper's
-        // `all_finite`); only then, or when finite values overflow it, the lanes one by one.
-        let sum: f64 = out.iter().map(|c| c[..n].iter().sum::<f64>()).sum();
-        if sum.is_finite() {
-            return Ok(());
-        }
-        for i in 0..n {
-            if let Some(k) = out.iter().position(|c| !c[i].is_finite()) {
-                return Err((i, self.not_finite(k, out[k][i])));
-            }
-        }
-        Ok(())
+        self.check_block(n, out)
     }
 
     fn columns(&self) -> Vec<StageColumn> {
@@ -499,6 +492,84 @@ impl Stage for MachineStage {
 }
 
 impl MachineStage {
+    /// A block of a machine of one cylinder, the run's train (module note): its values from the
+    /// train's columns a column at a time, with the operations of [`MachineStage::values`] in
+    /// its order (the same bits) but without gathering each lane's cylinder and row.
+    fn one_cylinder_block(&self, input: &BlockInput, out: &mut [Column]) {
+        let n = input.states.len;
+        let p = self.places;
+        let m = &*self.machine;
+        let t = m.mechanism().topology();
+        let total = input.total;
+        let joint =
+            |j: usize, i: usize| m.axis(0) * C::new(total.joints[j].fx[i], total.joints[j].fy[i]);
+        for i in 0..n {
+            let crank = input.states.crank.at(i);
+            let s = m
+                .balance()
+                .sum(std::iter::once(shaking_lane(t, input.states, i)), &crank);
+            out[0][i] = s.force.re;
+            out[1][i] = s.force.im;
+            out[2][i] = s.pitch();
+            out[3][i] = s.yaw();
+        }
+        let others = p.others();
+        for c in &mut out[others..others + 3] {
+            c[..n].fill(0.0);
+        }
+        for i in 0..n {
+            out[Places::TORQUE][i] = 0.0 + total.crank_torque[i];
+        }
+        for j in 0..p.journals {
+            out[p.journal(j)][..n].fill(0.0);
+            out[p.journal(j) + 1][..n].fill(0.0);
+        }
+        if let Some(b) = m.main_bearing() {
+            for (j, share) in m.journals_of(0) {
+                for i in 0..n {
+                    let main = joint(b, i);
+                    out[p.journal(j)][i] += share * main.re;
+                    out[p.journal(j) + 1][i] += share * main.im;
+                }
+            }
+        } else {
+            for (j, share) in m.journals_of(0) {
+                for i in 0..n {
+                    out[p.journal(j)][i] += share * 0.0;
+                    out[p.journal(j) + 1][i] += share * 0.0;
+                }
+            }
+        }
+        if p.pins {
+            for i in 0..n {
+                let pin = m.crank_pin().map_or(C::new(0.0, 0.0), |j| joint(j, i));
+                out[p.pin(0)][i] = pin.re;
+                out[p.pin(0) + 1][i] = pin.im;
+            }
+        }
+        if p.gas {
+            for i in 0..n {
+                out[p.gas(0)][i] = input.force.map_or(0.0, |f| f[i]);
+            }
+        }
+    }
+
+    /// Checks a block's `n` lanes of values `out`: the error of the first value not finite.
+    fn check_block(&self, n: usize, out: &[Column]) -> Result<(), (usize, StageError)> {
+        // One sum of every value first: a NaN or an infinity makes it so (as the stepper's
+        // `all_finite`); only then, or when finite values overflow it, the lanes one by one.
+        let sum: f64 = out.iter().map(|c| c[..n].iter().sum::<f64>()).sum();
+        if sum.is_finite() {
+            return Ok(());
+        }
+        for i in 0..n {
+            if let Some(k) = out.iter().position(|c| !c[i].is_finite()) {
+                return Err((i, self.not_finite(k, out[k][i])));
+            }
+        }
+        Ok(())
+    }
+
     /// The error of the stage's value `k` not finite, `value`.
     fn not_finite(&self, k: usize, value: f64) -> StageError {
         let quantity = match self.columns().into_iter().find(|c| c.value == k) {
@@ -567,40 +638,61 @@ pub struct MachineTotals {
 }
 
 impl MachineTotals {
-    /// Takes the stage's values `v` at step `k`, crank angle `angle` (rad), time `time` (s).
+    /// Takes the stage's values at the steps `steps` (step number, crank angle in rad, time in
+    /// s, in the steps' order), `value(i, place)` the value at `place` of the `i`-th of them.
+    /// The peaks a value at a time over the steps (a peak is the same whatever the order), the
+    /// integrals step by step in order.
     #[inline]
-    fn take(&mut self, k: usize, angle: f64, time: f64, v: &[f64]) {
+    fn take(&mut self, steps: &[(usize, f64, f64)], value: impl Fn(usize, usize) -> f64) {
         let p = self.places;
-        raise_norm(&mut self.force, v[0], v[1]);
-        raise_norm(&mut self.moment, v[2], v[3]);
-        let torque = v[Places::TORQUE];
-        self.torque = Some(match self.torque {
-            None => (torque, torque),
-            Some((lo, hi)) => (lo.min(torque), hi.max(torque)),
-        });
+        let lanes = 0..steps.len();
+        for i in lanes.clone() {
+            raise_norm(&mut self.force, value(i, 0), value(i, 1));
+        }
+        for i in lanes.clone() {
+            raise_norm(&mut self.moment, value(i, 2), value(i, 3));
+        }
+        for i in lanes.clone() {
+            let torque = value(i, Places::TORQUE);
+            self.torque = Some(match self.torque {
+                None => (torque, torque),
+                Some((lo, hi)) => (lo.min(torque), hi.max(torque)),
+            });
+        }
         for j in 0..p.journals {
-            raise_norm(&mut self.journal, v[p.journal(j)], v[p.journal(j) + 1]);
+            for i in lanes.clone() {
+                raise_norm(
+                    &mut self.journal,
+                    value(i, p.journal(j)),
+                    value(i, p.journal(j) + 1),
+                );
+            }
         }
         if p.pins {
-            self.pins.fill(C::new(0.0, 0.0));
-            for i in 0..p.cylinders {
-                self.pins[self.machine.pin_of(i)] += C::new(v[p.pin(i)], v[p.pin(i) + 1]);
-            }
-            for f in &self.pins {
-                raise_norm(&mut self.pin, f.re, f.im);
+            for i in lanes.clone() {
+                self.pins.fill(C::new(0.0, 0.0));
+                for k in 0..p.cylinders {
+                    let pin = C::new(value(i, p.pin(k)), value(i, p.pin(k) + 1));
+                    self.pins[self.machine.pin_of(k)] += pin;
+                }
+                for f in &self.pins {
+                    raise_norm(&mut self.pin, f.re, f.im);
+                }
             }
         }
         if !self.others {
             return;
         }
         let o = p.others();
-        let now = [angle, time, v[o], v[o + 1], v[o + 2]];
-        if let Some([a0, t0, w0, g0, l0]) = self.previous {
-            self.work.add(k, 0.5 * (angle - a0) * (now[2] + w0));
-            self.gas_work.add(k, 0.5 * (angle - a0) * (now[3] + g0));
-            self.loss_work.add(k, 0.5 * (time - t0) * (now[4] + l0));
+        for (i, &(k, angle, time)) in steps.iter().enumerate() {
+            let now = [angle, time, value(i, o), value(i, o + 1), value(i, o + 2)];
+            if let Some([a0, t0, w0, g0, l0]) = self.previous {
+                self.work.add(k, 0.5 * (angle - a0) * (now[2] + w0));
+                self.gas_work.add(k, 0.5 * (angle - a0) * (now[3] + g0));
+                self.loss_work.add(k, 0.5 * (time - t0) * (now[4] + l0));
+            }
+            self.previous = Some(now);
         }
-        self.previous = Some(now);
     }
 }
 
@@ -614,20 +706,20 @@ impl StageTotals for MachineTotals {
     ) {
         let columns = block.stage_columns.get(stage).filter(|c| !c.is_empty());
         if let Some(c) = columns {
-            let mut v = vec![0.0; c.len()];
-            for (k, j) in (block.first + lanes.start..).zip(lanes) {
-                for (x, col) in v.iter_mut().zip(c) {
-                    *x = col[j];
-                }
-                let crank = &block.state.crank;
-                self.take(k, crank.angle[j], crank.time[j], &v);
+            let crank = &block.state.crank;
+            let mut steps = [(0, 0.0, 0.0); LANES];
+            for (i, j) in lanes.clone().enumerate() {
+                steps[i] = (block.first + j, crank.angle[j], crank.time[j]);
             }
+            let start = lanes.start;
+            self.take(&steps[..lanes.len()], |i, place| c[place][start + i]);
             return;
         }
         let steps = block.steps.get(lanes.clone()).unwrap_or_default();
         for (k, s) in (block.first + lanes.start..).zip(steps) {
             let crank = &s.state.crank;
-            self.take(k, crank.angle, crank.time, &s.stages[stage]);
+            let v = &s.stages[stage];
+            self.take(&[(k, crank.angle, crank.time)], |_, place| v[place]);
         }
     }
 

@@ -90,6 +90,9 @@ impl GearSet {
     /// step's load.
     pub fn check_step(&self, step: &MeshStep) -> Result<(), GearError> {
         positive("face_width", self.face_width)?;
+        // A solved motion's speed is known only at its steps (case files check a prescribed
+        // one's at validation: one rule with the gear file's).
+        crate::check_pitch_line_velocity(step.pitch_line_velocity.abs())?;
         require(
             step.tangential_load.is_finite(),
             "tangential_load",

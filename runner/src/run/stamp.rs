@@ -7,6 +7,7 @@
 
 use crate::output::MechanismResult;
 use cardan_case::case::Case;
+use cardan_report::files::{read_text, RESULT_RECORD};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 
@@ -119,7 +120,7 @@ pub struct Record {
 
 /// Reads the record of the case folder `dir`; None if it has none or it cannot be read.
 pub fn read(dir: &Path) -> Option<Record> {
-    let text = std::fs::read_to_string(dir.join(STAMP)).ok()?;
+    let text = read_text(&dir.join(STAMP), RESULT_RECORD).ok()?;
     let v: Value = serde_json::from_str(&text).ok()?;
     let strings = |v: &Value| -> Option<Vec<String>> {
         v.as_array()?
@@ -176,7 +177,7 @@ pub fn incomplete(dir: &Path) -> Option<String> {
     if record.complete {
         return None;
     }
-    let text = std::fs::read_to_string(dir.join(STAMP)).ok()?;
+    let text = read_text(&dir.join(STAMP), RESULT_RECORD).ok()?;
     let v: Value = serde_json::from_str(&text).ok()?;
     let listed = v["files"].as_object()?;
     let present = listing(dir).unwrap_or_default();

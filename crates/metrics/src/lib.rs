@@ -2,7 +2,7 @@
 //! aggregates, its group and which way is better), from which `summary.json`'s units and the
 //! metric table of docs/results.md are produced; and a run's metrics ([`Summary`]). The registry
 //! is made of parts, one per producer: the summary's own, each per-step stage's
-//! ([`crate::Stage::metrics`] is its part), the engine's fmep, the gas models'.
+//! (`cardan_dynamics::Stage::metrics` is its part), the engine's fmep, the gas models'.
 //! A name may hold `{piston}`, `{body}`, `{joint}` (a name from the mechanism's topology) and
 //! `{family}` (`inertial`; with a gas model also `gas` and `total`).
 
@@ -47,7 +47,7 @@ pub enum Group {
     /// (issue 24, `cardan-balance`).
     Balance,
     /// The whole machine: every cylinder's drive torque, power, losses and efficiency, the
-    /// loads of its main journals and crank pins (issue 35, [`crate::Machine`]).
+    /// loads of its main journals and crank pins (issue 35, `cardan_dynamics::Machine`).
     Machine,
 }
 
@@ -163,7 +163,7 @@ pub const RUN: &[MetricDef] = &[
     def("cycle_time", "s", R, K, Ne, "duration of the run"),
 ];
 
-/// The metrics of the loss stage ([`crate::LossBudget`]), with friction: the losses, and the
+/// The metrics of the loss stage (`cardan_dynamics::LossBudget`), with friction: the losses, and the
 /// need or output and the efficiency that follow from them.
 pub const LOSSES: &[MetricDef] = &[
     def("loss_work", "J", T, L, Lo, "friction: energy lost over the run, Σ ∫ P dt of every loss component (Karhula A9.1.68-71)"),
@@ -177,7 +177,7 @@ pub const LOSSES: &[MetricDef] = &[
     def("mechanical_efficiency", "1", T, L, Hi, "pump: gas_work / (total_work + loss_work) (A9.1.72-73); engine: (−total_work − loss_work) / −total_work (A9.1.74-75)"),
 ];
 
-/// The metrics of the gear-rating stage ([`crate::GearRatings`]), with gear meshes rated.
+/// The metrics of the gear-rating stage (`cardan_dynamics::GearRatings`), with gear meshes rated.
 pub const GEAR_RATING: &[MetricDef] = &[
     def("contact_ratio", "1", T, GR, Hi, "gear rating: transverse contact ratio of the mesh's pair (the smallest over the meshes)"),
     def("mesh_tangential_load_max", "N", T, GR, Lo, "gear rating: largest rated tooth load per gear set: the tangential mesh force (A8.1.10), or the ring force's magnitude with gear.tooth_load = \"ring_force\", or Karhula's reading with \"thesis\""),
@@ -189,7 +189,7 @@ pub const GEAR_RATING: &[MetricDef] = &[
     def("gear_mesh_power_loss_mean", "W", T, GR, Lo, "gear rating: mean Anderson & Loewenthal mesh loss (A9.1.40-55), all gear sets"),
 ];
 
-/// The fmep metrics of an engine with friction ([`crate::engine_metrics`], after the run).
+/// The fmep metrics of an engine with friction (`cardan_dynamics::engine_metrics`, after the run).
 pub const ENGINE_FRICTION: &[MetricDef] = &[
     def("fmep", "Pa", T, L, Lo, "engine with friction: the run's friction mean effective pressure, loss_work per swept volume π/4·B²·stroke per four-stroke cycle (4π of crank angle)"),
     def("fmep_mechanical", "Pa", T, L, Lo, "engine with friction: fmep without the pumping component (the scope of fmep_pnh)"),
@@ -352,7 +352,7 @@ pub const GAS_MODEL: &[MetricDef] = &[
     ),
 ];
 
-/// The whole machine's metrics (issue 35, the [`crate::MachineStage`]): its drive torque and
+/// The whole machine's metrics (issue 35, the `cardan_dynamics::MachineStage`): its drive torque and
 /// power, losses and efficiency, the loads of its main journals and crank pins, every cylinder
 /// at its own crank angle, axis and gas phase; and its balance (issue 24): the shaking force and
 /// free moments of all its cylinders and rotors on the frame, their orders at constant speed,
@@ -377,7 +377,7 @@ pub const MACHINE: &[MetricDef] = &[
 ];
 
 /// The metrics of a solved machine motion (`[motion] mode = "dynamic"`,
-/// [`crate::machine_motion`]), over the reported cycle; Petrescu's (2015) first approximation
+/// `cardan_dynamics::machine_motion`), over the reported cycle; Petrescu's (2015) first approximation
 /// (eq. 1-2: ω = ω_m·sqrt(J*_m/J*), J*_m = (J*_max + J*_min)/2) and dynamic coefficient
 /// (eq. 4: D = ω/ω_m) beside the solved motion.
 pub const MACHINE_MOTION: &[MetricDef] = &[
@@ -536,7 +536,7 @@ impl Summary {
 
     /// Adds a metric named from the registry's `template` (its unit found by the template's
     /// exact name, without matching the filled name against every template).
-    pub(crate) fn push_as(&mut self, template: &'static str, name: String, value: f64) {
+    pub fn push_as(&mut self, template: &'static str, name: String, value: f64) {
         let unit = METRICS
             .iter()
             .find(|d| d.name == template)
