@@ -326,12 +326,14 @@ pub(super) fn charts(
                     x: t.x.clone(),
                     y: t.y.clone(),
                     colour: k,
-                    dash: 0,
+                    // Every series of a chart its own dash (issue 38): black and white prints.
+                    dash: series.len(),
                     markers: false,
+                    x_column: None,
                 });
                 continue;
             }
-            for (dash, (column, suffix)) in spec.columns[k].iter().enumerate() {
+            for (column, suffix) in &spec.columns[k] {
                 let Some(t) = d.traces.get(column) else {
                     continue;
                 };
@@ -344,12 +346,16 @@ pub(super) fn charts(
                     x: t.x.clone(),
                     y: t.y.clone(),
                     colour: k,
-                    dash,
+                    dash: series.len(),
                     markers: false,
+                    x_column: None,
                 });
             }
         }
-        if series.is_empty() {
+        // No chart without data (issue 38): a quantity zero throughout in every mechanism
+        // (the free moment of one cylinder) says nothing a chart could show.
+        let zero = |s: &Series| s.y.iter().all(|v| !v.is_finite() || *v == 0.0);
+        if series.iter().all(zero) {
             continue;
         }
         let chart = LineChart {
@@ -361,6 +367,7 @@ pub(super) fn charts(
             zero_line: spec.zero_line,
             x_categories: None,
             angle_axis: true,
+            ..LineChart::default()
         };
         out.push((
             format!("{}.svg", spec.file),
@@ -401,8 +408,9 @@ pub(super) fn locus_charts(
                 x: t.x.clone(),
                 y: t.y.clone(),
                 colour: k,
-                dash: 0,
+                dash: chart.series.len(),
                 markers: false,
+                x_column: None,
             });
             chart.x_columns.push(x_column.to_string());
         }

@@ -8,7 +8,7 @@ use crate::data::{self, family_rank, CaseSummary, MechanismSummary};
 use crate::doc::{write_report, Align, Block, Doc};
 use crate::envelope::{ChartData, ChartRecorder};
 use crate::numbers::{
-    better, delta, fmt_delta, fmt_num, phrase, round_off_floor, signed, Better, Delta,
+    better, delta, engineering, fmt_delta, fmt_num, phrase, round_off_floor, signed, Better, Delta,
     ROUND_OFF_LEGEND, SIGN_LEGEND,
 };
 use crate::svg::{self, MAX_POINTS};
@@ -335,12 +335,18 @@ fn summary_items(s: &CaseSummary) -> Vec<String> {
     let mut items = Vec::new();
     for (headline, source) in headlines(s) {
         let direction = headline.direction;
-        let unit = svg::pretty_unit(reference.unit(source.metric()));
+        let si = reference.unit(source.metric());
+        let unit = svg::pretty_unit(si);
+        // The SI figure, and the engineer's unit beside it where there is one (issue 38).
         let with_unit = |v: f64| {
-            if unit.is_empty() {
+            let text = if unit.is_empty() {
                 fmt_num(v)
             } else {
                 format!("{} {unit}", fmt_num(v))
+            };
+            match engineering(v, si) {
+                Some(e) => format!("{text} ({e})"),
+                None => text,
             }
         };
         let present: Vec<(&MechanismSummary, f64)> = s
@@ -514,11 +520,14 @@ fn metric_tables(s: &CaseSummary) -> Vec<Block> {
                     .find(|u| !u.is_empty())
                     .unwrap_or("");
                 let mut row = vec![format!("`{n}`"), svg::pretty_unit(unit)];
-                row.extend(
-                    s.mechanisms
-                        .iter()
-                        .map(|m| fmt_num(m.get(n).unwrap_or(f64::NAN))),
-                );
+                // The SI value, and beside it the engineer's unit where there is one.
+                row.extend(s.mechanisms.iter().map(|m| {
+                    let v = m.get(n).unwrap_or(f64::NAN);
+                    match engineering(v, unit) {
+                        Some(e) => format!("{} ({e})", fmt_num(v)),
+                        None => fmt_num(v),
+                    }
+                }));
                 let r = reference.get(n);
                 let r_floor = round_off_floor(n, |k| reference.get(k));
                 for m in &s.mechanisms[1..] {
@@ -602,7 +611,11 @@ pub(super) fn case_report(
         .map(|c| c.as_ref().map(|c| c.header.clone()))
         .collect();
     let specs = plot_specs(&s, &headers);
-    let mut plots = charts(&s, &specs, &data);
+    // The charts engineers read first (issue 38), then the rest.
+    let mut plots = crate::indicator::indicator_charts(&s, &data);
+    plots.extend(crate::crank_speed::crank_speed_charts(&s, &data));
+    plots.extend(crate::bearing_polar::polar_charts(&s, &data));
+    plots.extend(charts(&s, &specs, &data));
     plots.extend(locus_charts(&s, &data));
 
     let mut doc = Doc {
@@ -627,12 +640,6 @@ pub(super) fn case_report(
     for w in &s.warnings {
         doc.push(Block::Paragraph(format!("**Warning:** {w}.")));
     }
-    doc.push(Block::Paragraph(format!(
-        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
-         for loads, torques, power need and losses; higher is better for efficiency and output. \
-         Values in SI units as in `summary.json`; — where a mechanism has no such metric. \
-         {ROUND_OFF_LEGEND}"
-    )));
     if s.mechanisms.len() > 1 {
         doc.push(Block::Heading(2, "Which is better".into()));
         let items = summary_items(&s);
@@ -644,6 +651,14 @@ pub(super) fn case_report(
             doc.push(Block::List(items));
         }
     }
+    // The method after the results (issue 38): what Δ is and which way is better.
+    doc.push(Block::Paragraph(format!(
+        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
+         for loads, torques, power need and losses; higher is better for efficiency and output. \
+         Values in SI units as in `summary.json` (rpm, bar, kN and kW beside them in brackets); \
+         — where a mechanism has no such metric. \
+         {ROUND_OFF_LEGEND}"
+    )));
     if let Some(budget) = loss_budget(&s) {
         let (title, whose) = match s.one_cylinder() {
             Some(w) => (format!("Loss budget of {w}"), format!("the total of {w}")),

@@ -15,6 +15,42 @@ pub struct MechanismSummary {
     pub units: BTreeMap<String, String>,
     /// Joint names of the topology.
     pub joints: Vec<String>,
+    /// The gas chamber its piston works on (`summary.json`'s `chamber`), if the case has one.
+    pub chamber: Option<Chamber>,
+}
+
+/// The gas chamber of a crank train (`summary.json`'s `chamber`): V = V_comp + A·(x_TDC − x),
+/// x the piston's position (Karhula 2008, A6.1.1.7).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chamber {
+    /// The piston whose position column (`<piston>_position_m`) gives the volume.
+    pub piston: String,
+    /// x_TDC, m.
+    pub piston_top: f64,
+    /// The crown area of all the pistons on the chamber, m².
+    pub piston_area: f64,
+    /// V_comp, m³.
+    pub clearance_volume: f64,
+    /// V_stroke, m³.
+    pub swept_volume: f64,
+}
+
+impl Chamber {
+    /// The chamber's volume at the piston position `x` (m), m³.
+    pub fn volume(&self, x: f64) -> f64 {
+        self.clearance_volume + self.piston_area * (self.piston_top - x)
+    }
+
+    fn read(v: &Value) -> Option<Self> {
+        let num = |k: &str| v.get(k).and_then(Value::as_f64).filter(|x| x.is_finite());
+        Some(Self {
+            piston: v.get("piston")?.as_str()?.to_string(),
+            piston_top: num("piston_top_m")?,
+            piston_area: num("piston_area_m2")?,
+            clearance_volume: num("clearance_volume_m3")?,
+            swept_volume: num("swept_volume_m3")?,
+        })
+    }
 }
 
 impl MechanismSummary {
@@ -162,6 +198,7 @@ pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(Cas
                 metrics,
                 units,
                 joints,
+                chamber: m.get("chamber").and_then(Chamber::read),
             }
         })
         .collect();

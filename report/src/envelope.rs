@@ -19,7 +19,7 @@
 //! the exact peaks), and a summary-only run of millions of steps does not pay the charts' per-row
 //! cost at every step. Reading the rows back from a CSV takes the same rows.
 
-use crate::chart_columns::{loci, traces};
+use crate::chart_columns::{loci, traces, Frame};
 use crate::rows::{row_count, ChartRows};
 pub use crate::thinning::Envelope;
 use crate::thinning::Locus;
@@ -57,8 +57,9 @@ pub struct ChartRecorder {
     x: Option<usize>,
     /// Per series: its key, the row indices it sums (one for a plain column), its envelope.
     series: Vec<(String, Vec<usize>, Envelope)>,
-    /// Per locus (`locus.rs`): its key, the row indices of its x and y, its thinning.
-    loci: Vec<(String, [usize; 2], Locus)>,
+    /// Per locus (`locus.rs`): its key, the row indices of its x and y, its frame, its
+    /// thinning.
+    loci: Vec<(String, [usize; 2], Frame, Locus)>,
 }
 
 impl ChartRecorder {
@@ -83,8 +84,13 @@ impl ChartRecorder {
             .collect();
         let loci = loci(header)
             .into_iter()
-            .filter_map(|(key, x, y)| {
-                Some((key, [index(&x)?, index(&y)?], Locus::new(taken, budget)))
+            .filter_map(|(key, x, y, frame)| {
+                Some((
+                    key,
+                    [index(&x)?, index(&y)?],
+                    frame,
+                    Locus::new(taken, budget),
+                ))
             })
             .collect();
         Self {
@@ -102,7 +108,7 @@ impl ChartRecorder {
     pub fn reads(&self, k: usize) -> bool {
         self.x == Some(k)
             || self.series.iter().any(|(_, at, _)| at.contains(&k))
-            || self.loci.iter().any(|(_, at, _)| at.contains(&k))
+            || self.loci.iter().any(|(_, at, _, _)| at.contains(&k))
     }
 
     /// Whether the next row is one the series take (every `stride`-th and the last).
@@ -141,8 +147,15 @@ impl ChartRecorder {
             };
             envelope.push(x, y);
         }
-        for (_, [x, y], locus) in &mut self.loci {
-            locus.push(row[*x], row[*y]);
+        for (_, [a, b], frame, locus) in &mut self.loci {
+            let (a, b) = (row[*a], row[*b]);
+            match frame {
+                Frame::Machine => locus.push(a, b),
+                Frame::Crank => {
+                    let (u, v) = crank_frame(x, a, b);
+                    locus.push(u, v);
+                }
+            }
         }
     }
 
@@ -155,7 +168,7 @@ impl ChartRecorder {
                 let (x, y) = envelope.finish();
                 (key, Trace { x, y })
             })
-            .chain(self.loci.into_iter().map(|(key, _, locus)| {
+            .chain(self.loci.into_iter().map(|(key, _, _, locus)| {
                 let (x, y) = locus.finish();
                 (key, Trace { x, y })
             }))
@@ -166,6 +179,17 @@ impl ChartRecorder {
             traces,
         }
     }
+}
+
+/// The vector (`x`, `y`) of the machine's frame in the crank's at the crank angle `theta_deg`
+/// (degrees from +x): turned by −(θ − 90°), the plane rotation that takes the crank's direction
+/// (cos θ, sin θ) to +y, so that the crank points up as at top dead centre and the frames
+/// agree there. Its second component is then the load along the crank (positive outwards), its
+/// first the load across it (positive on the side the crank has left, −x being the direction
+/// of rotation for a crank turning counter-clockwise, the +θ direction).
+pub(crate) fn crank_frame(theta_deg: f64, x: f64, y: f64) -> (f64, f64) {
+    let (s, c) = (theta_deg - 90.0).to_radians().sin_cos();
+    (x * c + y * s, -x * s + y * c)
 }
 
 #[cfg(test)]
@@ -181,6 +205,26 @@ mod tests {
             assert!(e.len() <= budget);
         }
         e.finish()
+    }
+
+    /// The crank's frame: a load along the crank points along +y at every crank angle, one in
+    /// the direction of rotation (+θ) along −x, and the frames agree at top dead centre.
+    #[test]
+    fn the_crank_frame_turns_the_crank_onto_plus_y() {
+        for theta in [0.0_f64, 37.0, 90.0, 180.0, 271.5, 450.0, 719.0] {
+            let (s, c) = theta.to_radians().sin_cos();
+            let along = crank_frame(theta, 3.0 * c, 3.0 * s);
+            assert!(
+                (along.0).abs() < 1e-12 && (along.1 - 3.0).abs() < 1e-12,
+                "{theta}"
+            );
+            let ahead = crank_frame(theta, -2.0 * s, 2.0 * c);
+            assert!(
+                (ahead.0 + 2.0).abs() < 1e-12 && ahead.1.abs() < 1e-12,
+                "{theta}"
+            );
+        }
+        assert_eq!(crank_frame(90.0, 1.5, -4.0), (1.5, -4.0));
     }
 
     #[test]

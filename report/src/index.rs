@@ -269,6 +269,7 @@ mod tests {
             metrics: metrics.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
             units: Default::default(),
             joints: Vec::new(),
+            chamber: None,
         }
     }
 

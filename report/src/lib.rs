@@ -8,8 +8,11 @@
 //!   appendix tables),
 //!   grouped into kinematics, joint loads (per joint), torque/power/work, cylinder and gas,
 //!   and losses; a generated "which is better" summary; a loss budget when the summary holds
-//!   friction losses; and charts over crank angle (piston motion, cylinder pressure, drive
-//!   torques, joint forces, friction) in `plots/*.svg`.
+//!   friction losses; and charts in `plots/*.svg`: first those engineers read first (issue 38:
+//!   the indicator diagram `pv_diagram.svg` (`indicator.rs`), a dynamic run's `crank_speed.svg`
+//!   with its fluctuation band (`crank_speed.rs`), the bearings' polar load diagrams
+//!   `main_bearing_polar.svg` and `crank_pin_polar.svg` (`bearing_polar.rs`)), then over crank
+//!   angle (piston motion, cylinder pressure, drive torques, joint forces, friction).
 //! - [`sweep_report`]: for a sweep folder (`sweep.csv`), the [`KEY_METRICS`] over one swept
 //!   field (line charts of every mechanism and of the difference in %), or over two (heat maps
 //!   of each mechanism and of the difference, with the 0 % contour: where the mechanisms swap
@@ -39,16 +42,20 @@
 //! [`ChartRecorder`], or writes them to the CSV this crate reads back; which rows are taken is
 //! [`row_count`] and [`ChartRows`]. It does not depend on the runner.
 
+mod bearing_polar;
 mod case_plots;
 mod cases;
 mod chart_columns;
+mod crank_speed;
 mod data;
 mod doc;
 mod envelope;
 pub mod files;
 mod heatmap;
 mod index;
+mod indicator;
 mod locus;
+mod log_chart;
 mod numbers;
 mod rows;
 mod svg;

@@ -11,7 +11,7 @@
 
 use crate::svg::{
     c, chart_heading, esc, legend_layout, legend_lines, nice_range, open_plot, open_svg,
-    pretty_unit_prefixed, push_coord, tick_label, Series, LEFT, PALETTE, PLOT_HEIGHT, TOP,
+    pretty_unit_prefixed, push_coord, tick_label, Series, DASHES, LEFT, PALETTE, PLOT_HEIGHT, TOP,
 };
 use std::fmt::Write as _;
 
@@ -29,6 +29,10 @@ pub struct LocusChart {
     pub series: Vec<Series>,
     /// Per series, the column of its x (in the file of its `source`).
     pub x_columns: Vec<String>,
+    /// The vector drawn in the crank's frame, turning with it (`data-frame="crank"` on each
+    /// series): its x and y columns turned by −(θ − 90°), θ the row's crank angle, so that
+    /// the crank points along +y as at top dead centre (`bearing_polar.rs`).
+    pub crank_frame: bool,
 }
 
 /// The locus chart as an SVG document: a square plot, both axes over the same range
@@ -111,9 +115,20 @@ pub fn locus_chart(chart: &LocusChart) -> String {
         }
         points.pop();
         let x_column = chart.x_columns.get(k).map_or("", String::as_str);
+        let dash = DASHES[s.dash % DASHES.len()];
+        let dash = if dash.is_empty() {
+            String::new()
+        } else {
+            format!(" stroke-dasharray=\"{dash}\"")
+        };
+        let frame = if chart.crank_frame {
+            " data-frame=\"crank\""
+        } else {
+            ""
+        };
         let _ = writeln!(
             o,
-            "<polyline class=\"series\" data-label=\"{}\" data-source=\"{}\" data-x-column=\"{}\" data-n=\"{n}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.6\" points=\"{points}\"/>",
+            "<polyline class=\"series\" data-label=\"{}\" data-source=\"{}\" data-x-column=\"{}\"{frame} data-n=\"{n}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.6\"{dash} points=\"{points}\"/>",
             esc(&s.label),
             esc(&s.source),
             esc(x_column),

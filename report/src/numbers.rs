@@ -39,9 +39,13 @@ pub(crate) fn pct_diff(value: f64, reference: f64) -> Option<f64> {
 pub(crate) const ROUND_OFF: f64 = 1e-9;
 
 /// The value below which `metric` is round-off ([`ROUND_OFF`] of its scale), for the signed
-/// means and works; None for the others (maxima, ratios: no cancelling sum) or without the
-/// scale's metrics. `get` reads a metric of the same mechanism (and sweep point).
+/// means and works, and the energy balance's relative error; None for the others (maxima,
+/// ratios: no cancelling sum) or without the scale's metrics. `get` reads a metric of the same mechanism (and sweep point).
 pub(crate) fn round_off_floor(metric: &str, get: impl Fn(&str) -> Option<f64>) -> Option<f64> {
+    // A relative error (issue 38: no Δ of 4e-17 to 2e-16): [`ROUND_OFF`] itself.
+    if metric == "energy_balance_error" {
+        return Some(ROUND_OFF);
+    }
     let (family, kind) = if metric == "kinetic_energy_change" {
         ("inertial", "_work")
     } else {
@@ -110,7 +114,7 @@ pub(crate) const ROUND_OFF_LEGEND: &str =
      drive's peak torque of its family makes of it in the run (the torque itself, × the peak \
      crank speed for a power, × peak speed × cycle time for a work): `≈ 0` where both values \
      are within it (both 0 up to round-off, e.g. an inertial work over whole turns at constant \
-     speed), `—` where one is.";
+     speed), `—` where one is; nor of an `energy_balance_error` below 1e-9.";
 
 /// The sign convention of the signed quantities (`cardan_metrics::METRICS`, docs/results.md "Torque
 /// sign"), under every table that holds one.
@@ -153,6 +157,21 @@ pub(crate) fn fmt_pct(d: Option<f64>) -> String {
 
 /// A value with 5 significant digits (trailing zeros dropped), scientific outside
 /// [1e-3, 1e6); `—` for a missing value.
+/// A value of the SI `unit` in the unit engineers think in (issue 38), written after the SI
+/// value: rad/s in rpm (× 60/2π), Pa in bar (10⁵ Pa, ISO 80000-4), N in kN, W in kW; `None`
+/// for other units, a value not finite, or one too small for the unit to help (below 0.1 rad/s,
+/// 1000 Pa, N or W: a round-off remainder stays in SI alone).
+pub(crate) fn engineering(v: f64, unit: &str) -> Option<String> {
+    let (factor, name, from) = match unit {
+        "rad/s" => (60.0 / (2.0 * std::f64::consts::PI), "rpm", 0.1),
+        "Pa" => (1e-5, "bar", 1e3),
+        "N" => (1e-3, "kN", 1e3),
+        "W" => (1e-3, "kW", 1e3),
+        _ => return None,
+    };
+    (v.is_finite() && v.abs() >= from).then(|| format!("{} {name}", fmt_num(v * factor)))
+}
+
 pub(crate) fn fmt_num(v: f64) -> String {
     if !v.is_finite() {
         return "—".into();

@@ -18,8 +18,18 @@ pub const MAX_POINTS: usize = 1000;
 pub(super) const PALETTE: [&str; 8] = [
     "#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#000000", "#f0e442",
 ];
-/// Dash patterns for the series sharing a colour (several pistons, several metrics).
-const DASHES: [&str; 4] = ["", "6 3", "2 2", "8 3 2 3"];
+/// Dash patterns: every series of a chart its own (`dash`), so that a chart printed in black
+/// and white still tells its lines apart (issue 38).
+pub(super) const DASHES: [&str; 8] = [
+    "",
+    "6 3",
+    "2 2",
+    "8 3 2 3",
+    "12 4",
+    "4 2 1 2 1 2",
+    "1 3",
+    "10 2 2 2 2 2",
+];
 
 pub(super) const WIDTH: f64 = 760.0;
 pub(super) const LEFT: f64 = 78.0;
@@ -43,6 +53,9 @@ pub struct Series {
     pub dash: usize,
     /// Draws a marker at each point (few points: sweeps).
     pub markers: bool,
+    /// The column x is made of (`data-x-column`) when it is not the crank angle or a sweep's
+    /// field: the piston position of an indicator diagram's volume (`indicator.rs`).
+    pub x_column: Option<String>,
 }
 
 /// A chart of series over one x axis.
@@ -61,6 +74,24 @@ pub struct LineChart {
     pub x_categories: Option<Vec<String>>,
     /// Fixed x ticks for crank angles: multiples of 90°.
     pub angle_axis: bool,
+    /// The engineering units the series are in: each series' x and y are its SI data times
+    /// these factors (bar: 1e-5 per Pa), written on the plot group (`data-x-factor`,
+    /// `data-y-factor`) for readers going back to SI. `None`: SI.
+    pub factors: Option<(f64, f64)>,
+    /// Horizontal bands (y from, y to; colour; dash), in the series' units: a crank speed's
+    /// fluctuation band.
+    pub bands: Vec<Band>,
+}
+
+/// A horizontal band across a line chart (`<rect class="band">` with its edges as lines).
+#[derive(Debug, Clone)]
+pub struct Band {
+    pub from: f64,
+    pub to: f64,
+    pub colour: usize,
+    pub dash: usize,
+    /// What the band is, for readers and tests (`data-label`).
+    pub label: String,
 }
 
 /// Fixed formatting of a coordinate (one decimal).
@@ -171,9 +202,18 @@ pub fn nice_range(min: f64, max: f64, target: f64) -> (f64, f64, f64) {
     (lo, hi, step)
 }
 
+/// Units the charts print beside SI in the engineer's own (issue 38), never given an SI prefix.
+pub(super) const ENGINEERING_UNITS: [&str; 6] = ["bar", "rpm", "cm^3", "kN", "kW", "L"];
+
 /// The SI prefix that keeps tick labels short: (factor to divide by, prefix).
 pub(super) fn prefix(max_abs: f64, unit: &str) -> (f64, &'static str) {
-    if unit.is_empty() || unit == "1" || unit == "%" || unit == "deg" || unit.starts_with("rpm") {
+    if unit.is_empty()
+        || unit == "1"
+        || unit == "%"
+        || unit == "deg"
+        || ENGINEERING_UNITS.contains(&unit)
+        || unit.starts_with("rpm")
+    {
         return (1.0, "");
     }
     match max_abs {
@@ -282,7 +322,11 @@ pub fn line_chart(chart: &LineChart) -> String {
         .iter()
         .map(|s| decimate(&s.x, &s.y, MAX_POINTS))
         .collect();
-    let (x_min, x_max, y_min, y_max) = extent(&decimated);
+    let (x_min, x_max, mut y_min, mut y_max) = extent(&decimated);
+    for b in &chart.bands {
+        y_min = y_min.min(b.from.min(b.to));
+        y_max = y_max.max(b.from.max(b.to));
+    }
     let (x_lo, x_hi, x_step) = x_range(chart, x_min, x_max);
     let (y_lo, y_hi, y_step) = nice_range(y_min, y_max, 5.0);
     let (scale, pre) = prefix(y_lo.abs().max(y_hi.abs()), &chart.y_unit);
@@ -303,6 +347,7 @@ pub fn line_chart(chart: &LineChart) -> String {
         (x_lo, x_hi),
         (y_lo, y_hi),
     );
+    plot_factors(&mut o, chart.factors);
     let _ = writeln!(
         o,
         "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>",
@@ -362,6 +407,7 @@ pub fn line_chart(chart: &LineChart) -> String {
             y = c(py(0.0))
         );
     }
+    bands(&mut o, &chart.bands, (LEFT, plot_w), &py);
     series_lines(&mut o, &chart.series, &decimated, px, py);
     o.push_str("</g>\n");
     let unit = pretty_unit_prefixed(pre, &chart.y_unit);
@@ -386,6 +432,54 @@ pub fn line_chart(chart: &LineChart) -> String {
     legend_lines(&mut o, &chart.series, &legend);
     o.push_str("</g>\n</svg>\n");
     o
+}
+
+/// Writes the plot group's `factors` (`data-x-factor`, `data-y-factor`: display units per SI
+/// unit) as a `<desc>` child's attributes, when the chart is not in SI.
+pub(crate) fn plot_factors(o: &mut String, factors: Option<(f64, f64)>) {
+    if let Some((fx, fy)) = factors {
+        let _ = writeln!(
+            o,
+            "<desc class=\"factors\" data-x-factor=\"{}\" data-y-factor=\"{}\">display value = SI value × factor</desc>",
+            attr_num(fx),
+            attr_num(fy)
+        );
+    }
+}
+
+/// Writes each band as a light rectangle across the plot (`left`, `width`) between its y
+/// values (pixels by `py`), its edges in its colour and dash.
+fn bands(o: &mut String, bands: &[Band], (left, width): (f64, f64), py: &impl Fn(f64) -> f64) {
+    for b in bands {
+        let colour = PALETTE[b.colour % PALETTE.len()];
+        let dash = DASHES[b.dash % DASHES.len()];
+        let dash = if dash.is_empty() {
+            String::new()
+        } else {
+            format!(" stroke-dasharray=\"{dash}\"")
+        };
+        let (top, bottom) = (py(b.from.max(b.to)), py(b.from.min(b.to)));
+        let _ = writeln!(
+            o,
+            "<rect class=\"band\" data-label=\"{}\" data-from=\"{}\" data-to=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{colour}\" fill-opacity=\"0.12\"/>",
+            esc(&b.label),
+            attr_num(b.from),
+            attr_num(b.to),
+            c(left),
+            c(top),
+            c(width),
+            c(bottom - top)
+        );
+        for y in [top, bottom] {
+            let _ = writeln!(
+                o,
+                "<line class=\"band-edge\" x1=\"{}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"{colour}\" stroke-width=\"0.8\"{dash}/>",
+                c(left),
+                c(left + width),
+                y = c(y)
+            );
+        }
+    }
 }
 
 /// The smallest and largest finite x and y of the series drawn, (x_min, x_max, y_min, y_max);
@@ -429,7 +523,7 @@ fn x_range(chart: &LineChart, x_min: f64, x_max: f64) -> (f64, f64, f64) {
 
 /// Writes each series as a polyline of its `decimated` points (pixels by `px`, `py`), with
 /// its markers if it has them.
-fn series_lines(
+pub(crate) fn series_lines(
     o: &mut String,
     series: &[Series],
     decimated: &[(Vec<f64>, Vec<f64>)],
@@ -447,9 +541,13 @@ fn series_lines(
             points.push(' ');
         }
         points.pop();
+        let x_column = s
+            .x_column
+            .as_ref()
+            .map_or(String::new(), |c| format!(" data-x-column=\"{}\"", esc(c)));
         let _ = writeln!(
             o,
-            "<polyline class=\"series\" data-label=\"{}\" data-source=\"{}\" data-n=\"{}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.6\"{} points=\"{points}\"/>",
+            "<polyline class=\"series\" data-label=\"{}\" data-source=\"{}\"{x_column} data-n=\"{}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.6\"{} points=\"{points}\"/>",
             esc(&s.label),
             esc(&s.source),
             x.len(),

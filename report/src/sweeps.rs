@@ -170,11 +170,52 @@ impl Axis {
         if self.numbers.is_none() {
             return levels;
         }
+        let values: Vec<f64> = levels
+            .iter()
+            .filter_map(|l| parse_quantity(l).map(|(v, _)| v))
+            .collect();
+        if values.len() == levels.len() {
+            return readable(&values);
+        }
         levels
             .iter()
             .map(|l| l.split_whitespace().next().unwrap_or(l).to_string())
             .collect()
     }
+}
+
+/// Tick labels of `values` rounded to readable numbers (issue 38: "229" for a log-spaced
+/// level of 228.852 rpm): the fewest significant figures, three at least, that keep
+/// neighbouring levels apart, without trailing zeros.
+pub(crate) fn readable(values: &[f64]) -> Vec<String> {
+    let round = |v: f64, sig: i32| -> String {
+        if v == 0.0 || !v.is_finite() {
+            return format!("{v}");
+        }
+        let decimals = (sig - 1 - v.abs().log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.decimals$}");
+        let s = if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            // Beyond the significant figures: round the integer part too.
+            let scale = 10f64
+                .powi(v.abs().log10().floor() as i32 + 1 - sig)
+                .max(1.0);
+            format!("{}", (v / scale).round() * scale)
+        };
+        if s == "-0" {
+            "0".into()
+        } else {
+            s
+        }
+    };
+    for sig in 3..=12 {
+        let labels: Vec<String> = values.iter().map(|v| round(*v, sig)).collect();
+        if labels.windows(2).all(|w| w[0] != w[1]) {
+            return labels;
+        }
+    }
+    values.iter().map(|v| format!("{v}")).collect()
 }
 
 /// The key metrics present: the first alternative of each [`KEY_METRICS`] entry that some
@@ -396,8 +437,10 @@ fn line_charts(
                     x: xs.clone(),
                     y: pick(c),
                     colour: k,
-                    dash: 0,
+                    // Told apart in black and white too (issue 38).
+                    dash: k,
                     markers: true,
+                    x_column: None,
                 })
             })
             .collect();
@@ -414,6 +457,7 @@ fn line_charts(
             zero_line: true,
             x_categories: categories.clone(),
             angle_axis: false,
+            ..LineChart::default()
         };
         out.push((
             format!("{metric}.svg"),
@@ -427,7 +471,7 @@ fn line_charts(
     }
     let others: Vec<&String> = t.mechanisms.iter().filter(|m| *m != reference).collect();
     let mut series = Vec::new();
-    for (a, m) in others.iter().enumerate() {
+    for m in &others {
         for (b, metric) in keys.iter().enumerate() {
             let d = differences(t, metric, m, reference);
             if !d.iter().any(|v| v.is_finite()) {
@@ -443,8 +487,10 @@ fn line_charts(
                 x: xs.clone(),
                 y: pick(&d),
                 colour: b,
-                dash: a,
+                // Every series its own dash (issue 38): told apart in black and white.
+                dash: series.len(),
                 markers: true,
+                x_column: None,
             });
         }
     }
@@ -459,6 +505,7 @@ fn line_charts(
             zero_line: true,
             x_categories: categories,
             angle_axis: false,
+            ..LineChart::default()
         };
         out.push((
             "difference.svg".into(),
@@ -687,4 +734,29 @@ pub(super) fn sweep_report(
     }
     let files: Vec<(String, String)> = plots.into_iter().map(|(f, s, _)| (f, s)).collect();
     write_report(sweep_dir, &doc, &files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::readable;
+
+    /// A log-spaced speed sweep (90 to 6000 rpm in 10 points) is labelled in three figures,
+    /// round values stay as they are, close levels get the figures that tell them apart.
+    #[test]
+    fn sweep_levels_are_labelled_in_readable_figures() {
+        let log: Vec<f64> = (0..10)
+            .map(|k| 90.0 * (6000.0f64 / 90.0).powf(k as f64 / 9.0))
+            .collect();
+        assert_eq!(
+            readable(&log),
+            ["90", "144", "229", "365", "582", "928", "1480", "2360", "3760", "6000"]
+        );
+        assert_eq!(readable(&[140.0, 150.0, 160.0]), ["140", "150", "160"]);
+        assert_eq!(readable(&[0.0125, 0.05, 1.0]), ["0.0125", "0.05", "1"]);
+        assert_eq!(
+            readable(&[1000.0, 1001.0, 1002.5]),
+            ["1000", "1001", "1003"]
+        );
+        assert_eq!(readable(&[-3.0, 0.0, 2.5]), ["-3", "0", "2.5"]);
+    }
 }

@@ -275,7 +275,8 @@ fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
             "metrics": {
                 "inertial_torque_max": 0.2, "crankshaft_angular_velocity_max": 9.42,
                 "cycle_time": 1.33, "inertial_work": work, "inertial_torque_mean": mean,
-                "inertial_power_mean": power, "total_torque_max": 0.4, "total_work": total
+                "inertial_power_mean": power, "total_torque_max": 0.4, "total_work": total,
+                "energy_balance_error": work.abs() * 1e-2
             },
             "units": {
                 "inertial_torque_max": "N*m", "crankshaft_angular_velocity_max": "rad/s",
@@ -302,8 +303,23 @@ fn no_difference_in_percent_of_round_off_and_signs_are_explained() {
     assert!(md.contains("| `inertial_torque_mean` | N·m | 3e-16 | -1e-16 | ≈ 0 |"));
     // One within round-off (1e-10 W of a 1.9 W scale), the other not: no Δ either.
     assert!(md.contains("| `inertial_power_mean` | W | 0.001 | 1e-10 | — |"));
+    // A relative error of round-off (2e-17 against 4.8e-17): no Δ of it (issue 38).
+    assert!(
+        md.contains("| `energy_balance_error` |  | 2e-17 | 4.8e-17 | ≈ 0 |"),
+        "{md}"
+    );
     // Above the floor: the Δ as ever, (1.25 − 1) / 1.
     assert!(md.contains("| `total_work` | J | 1 | 1.25 | +25.0 % |"));
+    // The engineer's unit beside SI (issue 38): 9.42 rad/s is 89.95 rpm (× 60/2π).
+    assert!(md.contains(
+        "| `crankshaft_angular_velocity_max` | rad/s | 9.42 (89.954 rpm) | 9.42 (89.954 rpm) |"
+    ));
+    // The results ("Which is better") before the paragraph on how Δ is made.
+    let (results, method) = (
+        md.find("## Which is better").unwrap(),
+        md.find("Δ = (mechanism − reference)").unwrap(),
+    );
+    assert!(results < method, "{md}");
     assert!(
         md.contains("round-off"),
         "the legend explains the floor: {md}"
@@ -416,9 +432,9 @@ fn a_multi_cylinder_report_leads_with_the_machine_and_labels_the_cylinder() {
     let md = std::fs::read_to_string(case.join("report.md")).unwrap();
     let items = headline_items(&md);
     let expected_starts = [
-        "- **Mean power need of the machine** (`machine_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 3000 W vs `slider_crank` 3750 W (lower by 20.0 %: better).",
+        "- **Mean power need of the machine** (`machine_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 3000 W (3 kW) vs `slider_crank` 3750 W (3.75 kW) (lower by 20.0 %: better).",
         "- **Peak drive torque of the machine** (the larger of |`machine_torque_max`| and |`machine_torque_min`|, lower is better): best `cardan_gear`; `cardan_gear` 120 N·m vs `slider_crank` 150 N·m",
-        "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`, lower is better): best `cardan_gear`; `cardan_gear` 7200 N vs `slider_crank` 9000 N",
+        "- **Peak main-journal load of the machine** (`machine_main_bearing_force_max`, lower is better): best `cardan_gear`; `cardan_gear` 7200 N (7.2 kN) vs `slider_crank` 9000 N (9 kN)",
         "- **Peak crank-pin load of the machine** (`machine_crank_pin_force_max`,",
         "- **Mechanical efficiency of the machine** (`machine_mechanical_efficiency`, higher is better): best `cardan_gear`; `cardan_gear` 0.95 vs `slider_crank` 0.9",
         "- **Mean friction power loss of the machine** (`machine_loss_power_mean`, lower is better): best `cardan_gear`; `cardan_gear` 300 W vs `slider_crank` 375 W",
@@ -426,7 +442,7 @@ fn a_multi_cylinder_report_leads_with_the_machine_and_labels_the_cylinder() {
         "- **Peak main-bearing force of cylinder 1** (`total_main_bearing_force_max`,",
         "- **Mean power loss of cylinder 1** (`power_loss_mean`,",
         "- **Mechanical efficiency of cylinder 1** (`mechanical_efficiency`,",
-        "- **Mean power need of cylinder 1** (`power_need_mean`, lower is better): best `cardan_gear`; `cardan_gear` 1471.9 W vs `slider_crank` 1839.9 W",
+        "- **Mean power need of cylinder 1** (`power_need_mean`, lower is better): best `cardan_gear`; `cardan_gear` 1471.9 W (1.4719 kW) vs `slider_crank` 1839.9 W (1.8399 kW)",
     ];
     assert_eq!(items.len(), expected_starts.len(), "{items:#?}");
     for (item, start) in items.iter().zip(expected_starts) {
@@ -470,7 +486,7 @@ fn a_multi_cylinder_report_leads_with_the_machine_and_labels_the_cylinder() {
     let items = headline_items(&md);
     assert_eq!(items.len(), 3, "{items:#?}");
     assert!(items[0].starts_with(
-        "- **Mean output power of the machine** (−`machine_power_mean`, higher is better): best `slider_crank`; `cardan_gear` 54000 W vs `slider_crank` 60000 W (lower by 10.0 %: worse)."
+        "- **Mean output power of the machine** (−`machine_power_mean`, higher is better): best `slider_crank`; `cardan_gear` 54000 W (54 kW) vs `slider_crank` 60000 W (60 kW) (lower by 10.0 %: worse)."
     ), "{}", items[0]);
     assert!(items[1].contains("`cardan_gear` 1800 N·m vs `slider_crank` 2000 N·m"));
     assert!(items[2].starts_with(

@@ -41,6 +41,31 @@ fn layout_json(case: &Case) -> Value {
     })
 }
 
+/// The gas chamber `mechanism` works on, for the report's indicator diagram (`pv_diagram.svg`):
+/// the first piston's column, its top-dead-centre position, the piston area of all the pistons
+/// on the chamber and the clearance volume, so that V = V_comp + n·A_pis·(x_TDC − x) (Karhula
+/// 2008, A6.1.1.7, [`cardan_gas::Cylinder::volume_curve`]) follows from each row's piston
+/// position. `None` without a gas model, a cylinder (the hypotrochoid's chambers are angles),
+/// or where the volume is not one piston's (an opposed pair with a crank phase: the other
+/// train's piston is in the other rows).
+fn chamber_json(case: &Case, mechanism: &dyn Mechanism) -> Option<Value> {
+    let gas = case.gas.as_ref()?;
+    if !mechanism.has_cylinder() || case.crank_phase != 0.0 {
+        return None;
+    }
+    let piston = mechanism.topology().pistons.first()?.name;
+    let c = gas
+        .cylinder(case.geometry.bore, mechanism.stroke(), case.pistons)
+        .ok()?;
+    Some(json!({
+        "piston": piston,
+        "piston_top_m": mechanism.piston_top(),
+        "piston_area_m2": f64::from(c.pistons) * c.area,
+        "swept_volume_m3": c.swept_volume,
+        "clearance_volume_m3": c.clearance_volume,
+    }))
+}
+
 /// The summary of a case as JSON (see docs/results.md).
 pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
     let mut mechanisms = Map::new();
@@ -113,7 +138,11 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
         .into_iter()
         .map(|(k, v)| (k.to_string(), Value::Object(v)))
         .collect();
-        mechanisms.insert(r.label.clone(), Value::Object(mechanism));
+        let mut mechanism = Value::Object(mechanism);
+        if let Some(chamber) = chamber_json(case, m) {
+            mechanism["chamber"] = chamber;
+        }
+        mechanisms.insert(r.label.clone(), mechanism);
     }
     let mut summary = json!({
         "schema_version": SCHEMA_VERSION,
