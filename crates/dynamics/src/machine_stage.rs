@@ -439,6 +439,8 @@ impl MachineStage {
     /// A block of a machine of one cylinder, the run's train (module note): its values from the
     /// train's columns a column at a time, with the operations of [`MachineStage::values`] in
     /// its order (the same bits) but without gathering each lane's cylinder and row.
+    // A lane index runs over several columns of `out` and of the inputs at once.
+    #[allow(clippy::needless_range_loop)]
     fn one_cylinder_block(&self, input: &BlockInput, out: &mut [Column]) {
         let n = input.states.len;
         let p = self.places;
