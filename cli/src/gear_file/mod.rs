@@ -19,6 +19,8 @@ use cardan_report::files::{replace_dir, temporary_dir, write_file};
 use std::path::{Path, PathBuf};
 
 mod input;
+mod iso_input;
+mod iso_rating;
 mod rating;
 mod report;
 mod table;
