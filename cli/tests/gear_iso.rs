@@ -100,8 +100,12 @@ fn iso_safety_factors_scale_with_the_load_through_the_file() {
     let b = report_of(&base.replace("power = \"15 kW\"", "power = \"60 kW\"")).to_json();
     for m in ["pinion", "gear"] {
         let s = |j: &Value, k: &str| num(&j["rating"]["iso6336"][m][k]);
-        assert!((s(&a, "contact_safety_factor") / s(&b, "contact_safety_factor") - 2.0).abs() < 1e-9);
-        assert!((s(&a, "bending_safety_factor") / s(&b, "bending_safety_factor") - 4.0).abs() < 1e-9);
+        assert!(
+            (s(&a, "contact_safety_factor") / s(&b, "contact_safety_factor") - 2.0).abs() < 1e-9
+        );
+        assert!(
+            (s(&a, "bending_safety_factor") / s(&b, "bending_safety_factor") - 4.0).abs() < 1e-9
+        );
     }
 }
 
@@ -110,19 +114,31 @@ fn an_overloaded_pair_fails_by_its_iso_factors() {
     let text = shipped(ISO).replace("power = \"15 kW\"", "power = \"150 kW\"");
     let report = report_of(&text);
     let failures = report.failures().join("\n");
-    assert!(failures.contains("ISO pitting safety factor S_H of the pinion"), "{failures}");
-    assert!(failures.contains("remedy: rating.power at most about"), "{failures}");
+    assert!(
+        failures.contains("ISO pitting safety factor S_H of the pinion"),
+        "{failures}"
+    );
+    assert!(
+        failures.contains("remedy: rating.power at most about"),
+        "{failures}"
+    );
     // The same pair judged by AGMA names AGMA's factors instead.
     let agma = report_of(&text.replace("basis = \"iso6336\"", "basis = \"agma2001\""));
     let failures = agma.failures().join("\n");
-    assert!(failures.contains("(Shigley eq. 14-42)") && !failures.contains("ISO"), "{failures}");
+    assert!(
+        failures.contains("(Shigley eq. 14-42)") && !failures.contains("ISO"),
+        "{failures}"
+    );
 }
 
 #[test]
 fn iso_basis_without_the_tooth_form_factors_is_a_clear_error() {
     let text = shipped(ISO).replace("form_factor = 2.55", "");
     let e = error_of(&text);
-    assert!(e.contains("rating.pinion.form_factor") && e.contains("Y_F"), "{e}");
+    assert!(
+        e.contains("rating.pinion.form_factor") && e.contains("Y_F"),
+        "{e}"
+    );
     let e = error_of(&shipped(ISO).replace("stress_correction_factor = 1.75", ""));
     assert!(e.contains("rating.gear.stress_correction_factor"), "{e}");
     let e = error_of(&shipped(ISO).replace("accuracy_grade = 6", ""));
@@ -132,7 +148,10 @@ fn iso_basis_without_the_tooth_form_factors_is_a_clear_error() {
 #[test]
 fn an_unknown_material_lists_the_table() {
     let e = error_of(&shipped(ISO).replacen("steel-case-carburized", "unobtainium", 1));
-    assert!(e.contains("rating.pinion.material") && e.contains("steel-through-hardened"), "{e}");
+    assert!(
+        e.contains("rating.pinion.material") && e.contains("steel-through-hardened"),
+        "{e}"
+    );
     // Grade 3 without carburized steel, and bronze without ISO limits, are refused.
     let e = error_of(&shigley_with_material().replacen("grade = 1", "grade = 3", 1));
     assert!(e.contains("grade"), "{e}");
@@ -149,7 +168,10 @@ fn span_width_through_the_gear_file_matches_the_published_example() {
     let p = &j["measurement"]["pinion"];
     assert_eq!(p["span_teeth"], 3);
     assert!((num(&p["span_width"]) * 1e3 - 15.321).abs() < 5e-4);
-    let thin = text.replace("[measurement]", "thickness_allowance = [\"0.1 mm\", \"0 mm\"]\n[measurement]");
+    let thin = text.replace(
+        "[measurement]",
+        "thickness_allowance = [\"0.1 mm\", \"0 mm\"]\n[measurement]",
+    );
     let t = report_of(&thin).to_json();
     let dw = num(&p["span_width"]) - num(&t["measurement"]["pinion"]["span_width"]);
     assert!((dw - 0.1e-3 * 20f64.to_radians().cos()).abs() < 1e-12);

@@ -475,7 +475,10 @@ fn member(
         Some(mat) if m.bending_allowable.is_none() || m.contact_allowable.is_none() => Some(
             mat.agma_allowables(m.hardness.as_ref().map(|h| h.si), grade_number)
                 .map_err(|e| {
-                    let shown = m.hardness.as_ref().map_or("(missing)".to_string(), |h| h.written.clone());
+                    let shown = m
+                        .hardness
+                        .as_ref()
+                        .map_or("(missing)".to_string(), |h| h.written.clone());
                     invalid(&f("hardness"), &shown, &format!("{} ({e})", mat.name))
                 })?,
         ),

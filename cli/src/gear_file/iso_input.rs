@@ -22,7 +22,10 @@ pub fn member_material(
         None => Err(invalid(
             &format!("rating.{which}.material"),
             &format!("\"{name}\""),
-            &format!("is not in the materials table; use one of {}", material_names().join(", ")),
+            &format!(
+                "is not in the materials table; use one of {}",
+                material_names().join(", ")
+            ),
         )),
     }
 }
@@ -119,10 +122,15 @@ pub fn iso_rating(
         }
         return Ok(None);
     }
-    let at_least_one = |field: &str, q: &Option<cardan_case::quantity::Quantity<cardan_case::quantity::Number>>| match q {
-        Some(k) if !(k.si.is_finite() && k.si >= 1.0) => {
-            Err(invalid(&format!("rating.{field}"), &k.written, "must be a number >= 1"))
-        }
+    let at_least_one = |field: &str,
+                        q: &Option<
+        cardan_case::quantity::Quantity<cardan_case::quantity::Number>,
+    >| match q {
+        Some(k) if !(k.si.is_finite() && k.si >= 1.0) => Err(invalid(
+            &format!("rating.{field}"),
+            &k.written,
+            "must be a number >= 1",
+        )),
         Some(k) => Ok(Some(k.si)),
         None => Ok(None),
     };
@@ -155,14 +163,20 @@ pub fn iso_rating(
             return Err(invalid(
                 "rating.flank_roughness",
                 &"(missing)",
-                &format!("give it with oil_viscosity = {} (Z_L, Z_v and Z_R go together)", nu.written),
+                &format!(
+                    "give it with oil_viscosity = {} (Z_L, Z_v and Z_R go together)",
+                    nu.written
+                ),
             ))
         }
         (None, Some(rz)) => {
             return Err(invalid(
                 "rating.oil_viscosity",
                 &"(missing)",
-                &format!("give it with flank_roughness = {} (mm²/s at 40 °C, a bare number)", rz.written),
+                &format!(
+                    "give it with flank_roughness = {} (mm²/s at 40 °C, a bare number)",
+                    rz.written
+                ),
             ))
         }
     };
@@ -201,7 +215,10 @@ pub fn measurement(
                 return Err(invalid(
                     "measurement.span_teeth",
                     &format!("{k:?}"),
-                    &format!("the {} has {z} teeth: span at most z - 1", ["pinion", "gear"][i]),
+                    &format!(
+                        "the {} has {z} teeth: span at most z - 1",
+                        ["pinion", "gear"][i]
+                    ),
                 ));
             }
         }

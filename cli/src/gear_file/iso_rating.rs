@@ -130,7 +130,11 @@ pub fn iso_markdown(report: &GearReport, o: &mut String) {
     let Some(iso) = &report.iso else {
         return;
     };
-    let basis = report.input.rating.as_ref().map_or(Basis::Agma2001, |r| r.basis);
+    let basis = report
+        .input
+        .rating
+        .as_ref()
+        .map_or(Basis::Agma2001, |r| r.basis);
     let _ = writeln!(o, "\n## Rating (ISO 6336-2/-3:2019, method B)\n");
     let r = match iso {
         Err(e) => {
@@ -147,22 +151,61 @@ pub fn iso_markdown(report: &GearReport, o: &mut String) {
     let mut row = |q: &str, v: String, u: &str| {
         let _ = writeln!(o, "| {q} | {v} | {u} |");
     };
-    row("tangential load at the reference circle F_t", format!("{:.2}", r.tangential_load), "N");
+    row(
+        "tangential load at the reference circle F_t",
+        format!("{:.2}", r.tangential_load),
+        "N",
+    );
     row("application factor K_A", format!("{:.4}", r.k_a), "-");
-    row(&format!("dynamic factor K_v ({dynamic})"), format!("{:.4}", r.k_v), "-");
+    row(
+        &format!("dynamic factor K_v ({dynamic})"),
+        format!("{:.4}", r.k_v),
+        "-",
+    );
     if let Some(n) = r.resonance_ratio {
         row("resonance ratio N", format!("{n:.4}"), "-");
     }
-    row("face load factors K_Hβ / K_Fβ", format!("{:.4} / {:.4}", r.k_hbeta, r.k_fbeta), "-");
-    row("transverse load factors K_Hα / K_Fα", format!("{:.4} / {:.4}", r.k_halpha, r.k_falpha), "-");
+    row(
+        "face load factors K_Hβ / K_Fβ",
+        format!("{:.4} / {:.4}", r.k_hbeta, r.k_fbeta),
+        "-",
+    );
+    row(
+        "transverse load factors K_Hα / K_Fα",
+        format!("{:.4} / {:.4}", r.k_halpha, r.k_falpha),
+        "-",
+    );
     row("zone factor Z_H", format!("{:.4}", r.z_h), "-");
-    row("elasticity factor Z_E", format!("{:.2}", r.z_e / 1e3), "√MPa");
+    row(
+        "elasticity factor Z_E",
+        format!("{:.2}", r.z_e / 1e3),
+        "√MPa",
+    );
     row("contact ratio factor Z_ε", format!("{:.4}", r.z_eps), "-");
-    row("Z_L / Z_v / Z_R / Z_W", format!("{:.4} / {:.4} / {:.4} / {:.4}", r.z_lvr[0], r.z_lvr[1], r.z_lvr[2], r.z_w), "-");
-    row("nominal contact stress σ_H0", format!("{:.2}", r.sigma_h0 / 1e6), "MPa");
-    let _ = writeln!(o, "\n| per member | pinion | gear | unit |\n|---|---:|---:|---|");
+    row(
+        "Z_L / Z_v / Z_R / Z_W",
+        format!(
+            "{:.4} / {:.4} / {:.4} / {:.4}",
+            r.z_lvr[0], r.z_lvr[1], r.z_lvr[2], r.z_w
+        ),
+        "-",
+    );
+    row(
+        "nominal contact stress σ_H0",
+        format!("{:.2}", r.sigma_h0 / 1e6),
+        "MPa",
+    );
+    let _ = writeln!(
+        o,
+        "\n| per member | pinion | gear | unit |\n|---|---:|---:|---|"
+    );
     let mut pair_row = |q: &str, a: [f64; 2], scale: f64, u: &str| {
-        let _ = writeln!(o, "| {q} | {:.4} | {:.4} | {u} |", a[0] / scale, a[1] / scale);
+        let _ = writeln!(
+            o,
+            "| {q} | {:.4} | {:.4} | {u} |",
+            a[0] / scale,
+            a[1] / scale
+        );
     };
     pair_row("Z_B / Z_D", r.z_bd, 1.0, "-");
     pair_row("life factor Z_NT", r.z_nt, 1.0, "-");
@@ -213,11 +256,13 @@ pub fn measurements(input: &GearFile) -> Option<Result<[(Option<Span>, OverPins)
             let span = if gear.internal {
                 None
             } else {
-                Some(match m.span_teeth {
-                    Some(kk) => span_width(&gear, kk[k]),
-                    None => span_width_auto(&gear),
-                }
-                .map_err(|e| e.to_string())?)
+                Some(
+                    match m.span_teeth {
+                        Some(kk) => span_width(&gear, kk[k]),
+                        None => span_width_auto(&gear),
+                    }
+                    .map_err(|e| e.to_string())?,
+                )
             };
             let pin = match m.pin_diameter {
                 Some(p) => p[k],
@@ -255,7 +300,10 @@ pub fn measurement_markdown(input: &GearFile, o: &mut String) {
     let Some(ms) = measurements(input) else {
         return;
     };
-    let _ = writeln!(o, "\n## Tooth thickness measurements (ISO 21771 §6.3, §6.4)\n");
+    let _ = writeln!(
+        o,
+        "\n## Tooth thickness measurements (ISO 21771 §6.3, §6.4)\n"
+    );
     let ms = match ms {
         Err(e) => {
             let _ = writeln!(o, "Not computed: {e}");
@@ -265,8 +313,28 @@ pub fn measurement_markdown(input: &GearFile, o: &mut String) {
     };
     let _ = writeln!(o, "With the thinning of `thickness_allowance`. A ring's dimension is between the pins.\n\n| quantity | pinion | gear | unit |\n|---|---:|---:|---|");
     let span = |s: &Option<Span>, f: fn(&Span) -> String| s.as_ref().map_or("-".to_string(), f);
-    let _ = writeln!(o, "| teeth spanned k | {} | {} | - |", span(&ms[0].0, |s| s.teeth.to_string()), span(&ms[1].0, |s| s.teeth.to_string()));
-    let _ = writeln!(o, "| span width W_k | {} | {} | mm |", span(&ms[0].0, |s| format!("{:.4}", s.width * 1e3)), span(&ms[1].0, |s| format!("{:.4}", s.width * 1e3)));
-    let _ = writeln!(o, "| pin / ball diameter D_M | {:.4} | {:.4} | mm |", ms[0].1.pin_diameter * 1e3, ms[1].1.pin_diameter * 1e3);
-    let _ = writeln!(o, "| dimension over (between) pins M_d | {:.4} | {:.4} | mm |", ms[0].1.dimension * 1e3, ms[1].1.dimension * 1e3);
+    let _ = writeln!(
+        o,
+        "| teeth spanned k | {} | {} | - |",
+        span(&ms[0].0, |s| s.teeth.to_string()),
+        span(&ms[1].0, |s| s.teeth.to_string())
+    );
+    let _ = writeln!(
+        o,
+        "| span width W_k | {} | {} | mm |",
+        span(&ms[0].0, |s| format!("{:.4}", s.width * 1e3)),
+        span(&ms[1].0, |s| format!("{:.4}", s.width * 1e3))
+    );
+    let _ = writeln!(
+        o,
+        "| pin / ball diameter D_M | {:.4} | {:.4} | mm |",
+        ms[0].1.pin_diameter * 1e3,
+        ms[1].1.pin_diameter * 1e3
+    );
+    let _ = writeln!(
+        o,
+        "| dimension over (between) pins M_d | {:.4} | {:.4} | mm |",
+        ms[0].1.dimension * 1e3,
+        ms[1].1.dimension * 1e3
+    );
 }

@@ -128,7 +128,11 @@ impl GearReport {
                 ));
             }
         }
-        let basis = self.input.rating.as_ref().map_or(Basis::Agma2001, |r| r.basis);
+        let basis = self
+            .input
+            .rating
+            .as_ref()
+            .map_or(Basis::Agma2001, |r| r.basis);
         match (&self.rating, basis, &self.iso) {
             (None, _, _) => {}
             (Some(Err(e)), _, _) => out.push(format!("rating: {e}")),
@@ -183,7 +187,10 @@ impl GearReport {
             .fold(f64::INFINITY, f64::min);
         let load = match inputs.load {
             Load::Torque(t) => format!("rating.torque at most about {} N*m", sig4(t * f, false)),
-            Load::Power(_) => format!("rating.power at most about {} kW", sig4(r.power * f / 1e3, false)),
+            Load::Power(_) => format!(
+                "rating.power at most about {} kW",
+                sig4(r.power * f / 1e3, false)
+            ),
         };
         let remedy = format!(
             "{load} (K_v and K_Hα change with the load), or a wider face_width, or a larger module, or a stronger material (larger σ_Hlim, σ_Flim)"

@@ -363,8 +363,12 @@ pub struct SpanTeeth(pub u32);
 
 impl<'de> Deserialize<'de> for SpanTeeth {
     fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
-        whole(deserializer, 1..=100_000, "must be a whole number of teeth, at least 1")
-            .map(|i| SpanTeeth(i as u32))
+        whole(
+            deserializer,
+            1..=100_000,
+            "must be a whole number of teeth, at least 1",
+        )
+        .map(|i| SpanTeeth(i as u32))
     }
 }
 
@@ -374,7 +378,8 @@ pub struct GradeNumber(pub u8);
 
 impl<'de> Deserialize<'de> for GradeNumber {
     fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
-        whole(deserializer, 1..=3, "must be 1, 2 or 3 (AGMA 2001 grade)").map(|i| GradeNumber(i as u8))
+        whole(deserializer, 1..=3, "must be 1, 2 or 3 (AGMA 2001 grade)")
+            .map(|i| GradeNumber(i as u8))
     }
 }
 

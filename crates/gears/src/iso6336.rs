@@ -17,9 +17,8 @@ use crate::error::{positive, GearError};
 use crate::geometry::GearPair;
 use crate::iso6336_bending as bend;
 use crate::iso6336_load::{
-    dynamic_factor_b, face_load_factor_root, iso1328_deviations, mesh_stiffness,
-    resonance_ratio, running_in_allowance, running_in_tip_relief, transverse_load_factors,
-    DynamicInputs, RunningIn,
+    dynamic_factor_b, face_load_factor_root, iso1328_deviations, mesh_stiffness, resonance_ratio,
+    running_in_allowance, running_in_tip_relief, transverse_load_factors, DynamicInputs, RunningIn,
 };
 use crate::iso6336_pitting as pit;
 use crate::materials::LifeCurve;
@@ -209,7 +208,8 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
     let da = [pair.pinion.tip, pair.gear.tip];
     let db = [pair.pinion.base, pair.gear.base];
     let df = [pair.pinion.root, pair.gear.root];
-    let (zb, zd) = pit::single_pair_factors(z1, z2.abs(), da, db, alpha_wt, eps, 0.0, pair.internal);
+    let (zb, zd) =
+        pit::single_pair_factors(z1, z2.abs(), da, db, alpha_wt, eps, 0.0, pair.internal);
 
     // Stiffness, deviations and running-in (ISO 6336-1 §9, §8.3.4).
     let (c1, c_ga) = mesh_stiffness(
@@ -231,10 +231,12 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
         }
         None => None,
     };
-    let need_grade = || GearError::InvalidInput {
+    let need_grade = || {
+        GearError::InvalidInput {
         field: "accuracy_grade",
         rule: "ISO 6336-1 method B K_v and K_Hα need the ISO 1328-1 accuracy grade (or give both factors)",
         value: f64::NAN,
+    }
     };
     let y_of = |f: f64| {
         let [p, g] = inp.members;
@@ -247,7 +249,16 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
             positive("density", density)?;
             let (f_pb, f_fa) = deviations.ok_or_else(need_grade)?;
             let dm = [0.5 * (da[0] + df[0]), 0.5 * (da[1] + df[1])];
-            let n = resonance_ratio(inp.pinion_speed, z1, u, pair.internal, dm, db, density, c_ga);
+            let n = resonance_ratio(
+                inp.pinion_speed,
+                z1,
+                u,
+                pair.internal,
+                dm,
+                db,
+                density,
+                c_ga,
+            );
             let c_a = 0.5
                 * (running_in_tip_relief(inp.members[0].sigma_hlim)
                     + running_in_tip_relief(inp.members[1].sigma_hlim));
@@ -349,8 +360,13 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
         let sf = bend::root_stress(sf0, k_a, k_v, k_fb, k_fa);
         let y_nt = bend::life_factor_root(mb.life_curve, mb.cycles);
         let y_x = bend::size_factor_root(mb.life_curve, m);
-        let sfg =
-            bend::root_stress_limit(mb.sigma_flim, y_nt, mb.notch_sensitivity, mb.surface_factor, y_x);
+        let sfg = bend::root_stress_limit(
+            mb.sigma_flim,
+            y_nt,
+            mb.notch_sensitivity,
+            mb.surface_factor,
+            y_x,
+        );
         out.z_nt[k] = z_nt;
         out.z_x[k] = z_x;
         out.sigma_h[k] = sh;

@@ -377,13 +377,12 @@ impl Material {
                     h,
                 )
             }
-            MaterialGroup::Bronze => {
-                return Err(GearError::InvalidInput {
-                    field: "material",
-                    rule: "ISO 6336-5 has no endurance limits for bronze: give sigma_hlim and sigma_flim",
-                    value: f64::NAN,
-                })
-            }
+            MaterialGroup::Bronze => return Err(GearError::InvalidInput {
+                field: "material",
+                rule:
+                    "ISO 6336-5 has no endurance limits for bronze: give sigma_hlim and sigma_flim",
+                value: f64::NAN,
+            }),
         })
     }
 

@@ -39,15 +39,28 @@ fn inputs(torque: f64, dynamic: IsoDynamic, transverse: Option<f64>) -> IsoInput
 }
 
 fn pair(z2: i32) -> GearPair {
-    GearPair::new(PairSpec::standard(3e-3, 20, z2, 20f64.to_radians(), 0.0, 0.0)).unwrap()
+    GearPair::new(PairSpec::standard(
+        3e-3,
+        20,
+        z2,
+        20f64.to_radians(),
+        0.0,
+        0.0,
+    ))
+    .unwrap()
 }
 
 #[test]
 fn steel_pair_from_the_table_gives_189_8() {
     // ISO 6336-2 §7: Z_E = 189.8 √(N/mm²) for steel on steel (printed to 4 digits).
     let s = material("steel-case-carburized").unwrap();
-    let z = elasticity_factor(s.youngs_modulus, s.poisson_ratio, s.youngs_modulus, s.poisson_ratio)
-        .unwrap();
+    let z = elasticity_factor(
+        s.youngs_modulus,
+        s.poisson_ratio,
+        s.youngs_modulus,
+        s.poisson_ratio,
+    )
+    .unwrap();
     assert!((z / 1e3 - 189.8).abs() < 0.05, "{}", z / 1e3);
 }
 
@@ -57,8 +70,16 @@ fn agma_through_hardened_allowables_match_shigley_example_14_4() {
     // and 4 significant digits: ±5 and ±50 psi).
     let m = material("steel-through-hardened").unwrap();
     let a = m.agma_allowables(Some(240.0), 1).unwrap();
-    assert!((a.bending / PSI - 31_350.0).abs() <= 5.0, "{}", a.bending / PSI);
-    assert!((a.contact / PSI - 106_400.0).abs() <= 50.0, "{}", a.contact / PSI);
+    assert!(
+        (a.bending / PSI - 31_350.0).abs() <= 5.0,
+        "{}",
+        a.bending / PSI
+    );
+    assert!(
+        (a.contact / PSI - 106_400.0).abs() <= 50.0,
+        "{}",
+        a.contact / PSI
+    );
     // The brief's SI form of grade 1: s_ac = 2.22 HB + 200 MPa (AGMA 2001-D04 Fig. 8 metric),
     // equal to the psi line to its 3-digit coefficients (0.3 %).
     assert!((a.contact / 1e6 - (2.22 * 240.0 + 200.0)).abs() / a.contact * 1e6 < 3e-3);
@@ -128,7 +149,11 @@ fn internal_pair_contact_is_milder_and_has_no_z_d() {
     // (u+1)/u: external 20/40 → 1.5, internal 20/−40 → 0.5, so σ_H0 falls by √3 with the
     // same Z_H Z_E Z_ε (both unshifted: α_wt = α), and the ring's Z_D is 1 (ISO 6336-2 §6.2).
     let e = rate(&pair(40), &inputs(200.0, IsoDynamic::Given(1.1), Some(1.0))).unwrap();
-    let i = rate(&pair(-40), &inputs(200.0, IsoDynamic::Given(1.1), Some(1.0))).unwrap();
+    let i = rate(
+        &pair(-40),
+        &inputs(200.0, IsoDynamic::Given(1.1), Some(1.0)),
+    )
+    .unwrap();
     let ratio = (e.sigma_h0 / e.z_eps) / (i.sigma_h0 / i.z_eps);
     assert!((ratio - 3f64.sqrt()).abs() < 1e-9, "{ratio}");
     assert_eq!(i.z_bd[1], 1.0);
@@ -139,7 +164,13 @@ fn method_b_dynamic_factor_is_plausible_and_grows_with_speed() {
     // Method B K_v: above 1, rising with speed below resonance, and the transverse factors
     // within ISO 6336-1 §8.3.4's limits.
     let p = pair(40);
-    let mut lo = inputs(200.0, IsoDynamic::MethodB { density: STEEL_DENSITY }, None);
+    let mut lo = inputs(
+        200.0,
+        IsoDynamic::MethodB {
+            density: STEEL_DENSITY,
+        },
+        None,
+    );
     lo.pinion_speed = 500.0 * std::f64::consts::PI / 30.0;
     let mut hi = lo;
     hi.pinion_speed = 3000.0 * std::f64::consts::PI / 30.0;
@@ -147,7 +178,9 @@ fn method_b_dynamic_factor_is_plausible_and_grows_with_speed() {
     assert!(a.resonance_ratio.unwrap() < b.resonance_ratio.unwrap());
     assert!(b.resonance_ratio.unwrap() < 0.85, "{:?}", b.resonance_ratio);
     assert!(1.0 < a.k_v && a.k_v < b.k_v, "{} {}", a.k_v, b.k_v);
-    assert!(a.k_halpha >= 1.0 && a.k_halpha <= p.contact_ratio / (p.contact_ratio * a.z_eps.powi(2)));
+    assert!(
+        a.k_halpha >= 1.0 && a.k_halpha <= p.contact_ratio / (p.contact_ratio * a.z_eps.powi(2))
+    );
     // Without the accuracy grade method B cannot run: a clear error.
     let mut none = lo;
     none.accuracy_grade = None;
@@ -171,8 +204,13 @@ fn span_width_matches_the_published_example() {
     assert!((s.width * 1e3 - 15.321).abs() < 5e-4, "{}", s.width * 1e3);
     // One more tooth adds one base pitch; thinning j takes j cos α off.
     let s4 = span_width(&g, 4).unwrap();
-    assert!((s4.width - s.width - std::f64::consts::PI * 2e-3 * 20f64.to_radians().cos()).abs() < 1e-15);
-    let thin = MeasuredGear { thinning: 0.1e-3, ..g };
+    assert!(
+        (s4.width - s.width - std::f64::consts::PI * 2e-3 * 20f64.to_radians().cos()).abs() < 1e-15
+    );
+    let thin = MeasuredGear {
+        thinning: 0.1e-3,
+        ..g
+    };
     let t = span_width(&thin, 3).unwrap();
     assert!((s.width - t.width - 0.1e-3 * 20f64.to_radians().cos()).abs() < 1e-15);
 }
