@@ -237,13 +237,16 @@ pub fn iso_markdown(report: &GearReport, o: &mut String) {
     }
 }
 
+/// One member's measurements: its span (none for a ring) and the pin dimension.
+pub type Measured = (Option<Span>, OverPins);
+
 /// The measurements of `[measurement]`: for each member, the span (external gears) and the
 /// dimension over / between pins.
-pub fn measurements(input: &GearFile) -> Option<Result<[(Option<Span>, OverPins); 2], String>> {
+pub fn measurements(input: &GearFile) -> Option<Result<[Measured; 2], String>> {
     let m = input.measurement?;
     let s = &input.spec;
     Some((|| {
-        let one = |k: usize| -> Result<(Option<Span>, OverPins), String> {
+        let one = |k: usize| -> Result<Measured, String> {
             let g = [&s.pinion, &s.gear][k];
             let gear = MeasuredGear {
                 module: s.module,
@@ -280,7 +283,7 @@ pub fn measurement_json(input: &GearFile) -> Value {
         None => Value::Null,
         Some(Err(e)) => json!({ "error": e }),
         Some(Ok(ms)) => {
-            let one = |(span, pins): &(Option<Span>, OverPins)| {
+            let one = |(span, pins): &Measured| {
                 json!({
                     "span_teeth": span.map(|s| s.teeth),
                     "span_width": span.map(|s| s.width),

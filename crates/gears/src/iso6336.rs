@@ -248,14 +248,14 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
         IsoDynamic::MethodB { density } => {
             positive("density", density)?;
             let (f_pb, f_fa) = deviations.ok_or_else(need_grade)?;
-            let dm = [0.5 * (da[0] + df[0]), 0.5 * (da[1] + df[1])];
+            let dm1 = 0.5 * (da[0] + df[0]);
             let n = resonance_ratio(
                 inp.pinion_speed,
                 z1,
                 u,
                 pair.internal,
-                dm,
-                db,
+                dm1,
+                db[0],
                 density,
                 c_ga,
             );

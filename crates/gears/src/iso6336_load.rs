@@ -146,24 +146,22 @@ pub struct DynamicInputs {
 
 /// Resonance ratio `N = n1/n_E1`, `n_E1 = 30 000/(π z1) √(c_γα/m_red)` (ISO 6336-1:2019
 /// §6.5.3, eqs. in mm, kg, µm), with `m_red = π/8 (d_m1/d_b1)² d_m1² / [1/ρ1 + 1/(ρ2 u²)]`
-/// for solid blanks of density `ρ` (§6.5.9; `d_m` the mean of tip and root diameters). For an
+/// (both blanks of density `ρ`, so `m_red = m1*/(1 + 1/u²)`) for solid blanks of density `ρ` (§6.5.9; `d_m` the mean of tip and root diameters). For an
 /// internal pair the ring's term is dropped (the ring taken as rigid against the pinion).
-/// `omega1` \[rad/s\], diameters \[m\], `density` \[kg/m³\], `c_ga` \[N/(mm·µm)\].
+/// `omega1` \[rad/s\], the pinion's mean diameter `dm` and base diameter `db` \[m\], `density` \[kg/m³\], `c_ga` \[N/(mm·µm)\].
 #[allow(clippy::too_many_arguments)]
 pub fn resonance_ratio(
     omega1: f64,
     z1: f64,
     u: f64,
     internal: bool,
-    dm: [f64; 2],
-    db: [f64; 2],
+    dm: f64,
+    db: f64,
     density: f64,
     c_ga: f64,
 ) -> f64 {
-    let _ = db[1];
     let rho = density * 1e-9; // kg/mm³
-    let (dm1, db1, dm2) = (dm[0] * 1e3, db[0] * 1e3, dm[1] * 1e3);
-    let _ = dm2;
+    let (dm1, db1) = (dm * 1e3, db * 1e3);
     let m1 = PI / 8.0 * (dm1 / db1).powi(2) * dm1 * dm1 * rho;
     let m_red = if internal {
         m1

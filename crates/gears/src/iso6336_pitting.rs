@@ -70,9 +70,7 @@ pub fn single_pair_factors(
     let m1 = t / ((r1 - 2.0 * PI / z1) * (r2 - (eps_alpha - 1.0) * 2.0 * PI / z2)).sqrt();
     let m2 = t / ((r2 - 2.0 * PI / z2) * (r1 - (eps_alpha - 1.0) * 2.0 * PI / z1)).sqrt();
     let pick = |m: f64| {
-        if !m.is_finite() {
-            1.0
-        } else if eps_beta >= 1.0 {
+        if !m.is_finite() || eps_beta >= 1.0 {
             1.0
         } else {
             (m - eps_beta * (m - 1.0)).max(1.0)

@@ -184,25 +184,19 @@ fn grade_of(grade: u8) -> Grade {
     }
 }
 
-fn hardness(m: &Material, hb: Option<f64>) -> Result<f64, GearError> {
-    match hb {
-        Some(h) => Ok(h),
-        None => Err(GearError::InvalidInput {
-            field: "hardness",
-            rule: "this material's allowables depend on its Brinell hardness (core hardness of a nitrided steel): give it",
-            value: f64::NAN,
-        }),
-    }
-    .and_then(|h| {
-        require(
-            h.is_finite() && h > 0.0,
-            "hardness",
-            "must be a positive Brinell hardness",
-            h,
-        )?;
-        let _ = m;
-        Ok(h)
-    })
+fn hardness(hb: Option<f64>) -> Result<f64, GearError> {
+    let h = hb.ok_or(GearError::InvalidInput {
+        field: "hardness",
+        rule: "this material's allowables depend on its Brinell hardness (core hardness of a nitrided steel): give it",
+        value: f64::NAN,
+    })?;
+    require(
+        h.is_finite() && h > 0.0,
+        "hardness",
+        "must be a positive Brinell hardness",
+        h,
+    )?;
+    Ok(h)
 }
 
 impl Material {
@@ -257,7 +251,7 @@ impl Material {
         };
         Ok(match self.group {
             MaterialGroup::ThroughHardened => {
-                let h = hardness(self, hb)?;
+                let h = hardness(hb)?;
                 AgmaAllowables {
                     bending: bending_allowable_through_hardened(h, g)?,
                     contact: contact_allowable_through_hardened(h, g)?,
@@ -269,7 +263,7 @@ impl Material {
                 _ => ksi(75.0, 275.0),
             },
             MaterialGroup::NitridedThroughHardened => {
-                let h = hardness(self, hb)?;
+                let h = hardness(hb)?;
                 core(h)?;
                 let (st, sc) = match g {
                     Grade::One => (82.3 * h + 12_150.0, 150e3),
@@ -281,7 +275,7 @@ impl Material {
                 }
             }
             MaterialGroup::NitridingSteel => {
-                let h = hardness(self, hb)?;
+                let h = hardness(hb)?;
                 core(h)?;
                 let (st, sc) = match g {
                     Grade::One => (86.2 * h + 12_730.0, 170e3),
@@ -341,7 +335,7 @@ impl Material {
         };
         Ok(match self.group {
             MaterialGroup::ThroughHardened => {
-                let hv = vickers_from_brinell(hardness(self, hb)?);
+                let hv = vickers_from_brinell(hardness(hb)?);
                 require(
                     (200.0..=360.0).contains(&hv),
                     "hardness",
