@@ -20,6 +20,7 @@ use std::path::{Path, PathBuf};
 
 mod input;
 mod iso_input;
+mod iso_rate;
 mod iso_rating;
 mod rating;
 mod report;

@@ -173,22 +173,7 @@ fn running_in_class(c: LifeCurve) -> RunningIn {
 
 /// Rates `pair` by ISO 6336-1/-2/-3 method B (spur: `β` = 0). Errors name the input.
 pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
-    positive("pinion torque", inp.pinion_torque)?;
-    positive("pinion speed", inp.pinion_speed)?;
-    positive("face width", inp.face_width)?;
-    positive("application factor K_A", inp.application_factor)?;
-    positive("face load factor K_Hβ", inp.face_load_factor)?;
-    positive("elasticity factor Z_E", inp.elasticity_factor)?;
-    for m in &inp.members {
-        positive("sigma_hlim", m.sigma_hlim)?;
-        positive("sigma_flim", m.sigma_flim)?;
-        positive("form factor Y_F", m.form_factor)?;
-        positive("stress correction factor Y_S", m.stress_correction_factor)?;
-        positive("rim factor Y_B", m.rim_factor)?;
-        positive("notch sensitivity Y_δrelT", m.notch_sensitivity)?;
-        positive("surface factor Y_RrelT", m.surface_factor)?;
-        positive("load cycles", m.cycles)?;
-    }
+    validate(inp)?;
     let s = &pair.spec;
     let (m, alpha, b) = (s.module, s.pressure_angle, inp.face_width);
     let z1 = s.pinion.teeth as f64;
@@ -289,21 +274,7 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
     // Contact (ISO 6336-2).
     let z_e = inp.elasticity_factor;
     let sigma_h0 = pit::nominal_contact_stress(ft, d1, b, u, z_h, z_e, z_eps, z_beta);
-    let z_lvr = match inp.lubrication {
-        None => [1.0; 3],
-        Some(l) => {
-            let r1 = 0.5 * db[0] * alpha_wt.tan();
-            let r2 = 0.5 * db[1] * alpha_wt.tan();
-            // Internal: the ring's concave flank, ρ_red = ρ1 ρ2/(ρ2 − ρ1).
-            let rho_red = if pair.internal {
-                r1 * r2 / (r2 - r1)
-            } else {
-                r1 * r2 / (r1 + r2)
-            };
-            let s_lim = inp.members[0].sigma_hlim.min(inp.members[1].sigma_hlim);
-            pit::lubrication_factors(s_lim, l.viscosity_40, v, l.flank_roughness, rho_red)
-        }
-    };
+    let z_lvr = lubrication(pair, inp, v);
     let z_w = 1.0;
     let y_dt = bend::deep_tooth_factor(eps, inp.accuracy_grade);
     let mut out = IsoRating {
@@ -338,6 +309,65 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
         sigma_fg: [0.0; 2],
         s_f: [0.0; 2],
     };
+    rate_members(&mut out, inp, m, ft, b)?;
+    Ok(out)
+}
+
+/// Checks the inputs of [`rate`].
+fn validate(inp: &IsoInputs) -> Result<(), GearError> {
+    positive("pinion torque", inp.pinion_torque)?;
+    positive("pinion speed", inp.pinion_speed)?;
+    positive("face width", inp.face_width)?;
+    positive("application factor K_A", inp.application_factor)?;
+    positive("face load factor K_Hβ", inp.face_load_factor)?;
+    positive("elasticity factor Z_E", inp.elasticity_factor)?;
+    for m in &inp.members {
+        positive("sigma_hlim", m.sigma_hlim)?;
+        positive("sigma_flim", m.sigma_flim)?;
+        positive("form factor Y_F", m.form_factor)?;
+        positive("stress correction factor Y_S", m.stress_correction_factor)?;
+        positive("rim factor Y_B", m.rim_factor)?;
+        positive("notch sensitivity Y_δrelT", m.notch_sensitivity)?;
+        positive("surface factor Y_RrelT", m.surface_factor)?;
+        positive("load cycles", m.cycles)?;
+    }
+    Ok(())
+}
+
+/// `[Z_L, Z_v, Z_R]`: ISO 6336-2 §11 method B from the oil and the flank roughness, else 1
+/// (`ρ_red` at the pitch point; a ring's concave flank gives `ρ1 ρ2/(ρ2 − ρ1)`).
+fn lubrication(pair: &GearPair, inp: &IsoInputs, v: f64) -> [f64; 3] {
+    let db = [pair.pinion.base, pair.gear.base];
+    let alpha_wt = pair.operating_pressure_angle;
+    match inp.lubrication {
+        None => [1.0; 3],
+        Some(l) => {
+            let r1 = 0.5 * db[0] * alpha_wt.tan();
+            let r2 = 0.5 * db[1] * alpha_wt.tan();
+            // Internal: the ring's concave flank, ρ_red = ρ1 ρ2/(ρ2 − ρ1).
+            let rho_red = if pair.internal {
+                r1 * r2 / (r2 - r1)
+            } else {
+                r1 * r2 / (r1 + r2)
+            };
+            let s_lim = inp.members[0].sigma_hlim.min(inp.members[1].sigma_hlim);
+            pit::lubrication_factors(s_lim, l.viscosity_40, v, l.flank_roughness, rho_red)
+        }
+    }
+}
+
+/// The per-member stresses, limits and safety factors of [`rate`], once the pair's factors
+/// are in `out`.
+fn rate_members(
+    out: &mut IsoRating,
+    inp: &IsoInputs,
+    m: f64,
+    ft: f64,
+    b: f64,
+) -> Result<(), GearError> {
+    let (k_a, k_v, k_hb, k_ha) = (out.k_a, out.k_v, out.k_hbeta, out.k_halpha);
+    let (k_fb, k_fa, z_lvr, z_w) = (out.k_fbeta, out.k_falpha, out.z_lvr, out.z_w);
+    let (sigma_h0, y_dt) = (out.sigma_h0, out.y_dt);
     for k in 0..2 {
         let mb = &inp.members[k];
         let sh = pit::contact_stress(out.z_bd[k], sigma_h0, k_a, k_v, k_hb, k_ha);
@@ -379,5 +409,5 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
         out.sigma_fg[k] = sfg;
         out.s_f[k] = sfg / sf;
     }
-    Ok(out)
+    Ok(())
 }
