@@ -2,6 +2,7 @@
 //! (a misspelled field or word is named with its path and the nearest valid name), then the
 //! rules that join fields and the physics' own ranges, each value in SI and validated once.
 
+use super::iso_input;
 use super::table::{
     BendingHigh, BendingLow, EnclosureWord, GearFileTable, GeometryFactorI, MemberTable,
     RatingTable,
@@ -154,6 +155,7 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
     if let Some(r) = &rating {
         computable_j(r, &pair, rack_tip_radius, &table, &invalid)?;
     }
+    let measurement = iso_input::measurement(&raw.measurement, z, &invalid)?;
     Ok(GearFile {
         file: file.into(),
         name: raw.name,
@@ -162,6 +164,7 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
         face_width,
         rack_tip_radius,
         rating,
+        measurement,
         given,
     })
 }
@@ -352,9 +355,10 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
         GeometryFactorI::Given(x) => IInput::Given(x),
     };
 
+    let basis = iso_input::basis(r);
     let members = [
-        member("pinion", &r.pinion, invalid)?,
-        member("gear", &r.gear, invalid)?,
+        member("pinion", &r.pinion, basis, invalid)?,
+        member("gear", &r.gear, basis, invalid)?,
     ];
     if members[0].lewis_y.is_some() != members[1].lewis_y.is_some() {
         let y = r.gear.lewis_y.as_ref().map_or("(missing)", |y| &y.written);
@@ -365,7 +369,8 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
         ));
     }
 
-    let elastic = elastic(r, invalid)?;
+    let elastic = elastic(r, &members, invalid)?;
+    let iso = iso_input::iso_rating(r, &members, invalid)?;
     let required_safety_factor = match &r.required_safety_factor {
         None => 1.0,
         Some(n) if !n.si.is_finite() => {
@@ -422,6 +427,8 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
         },
         members,
         required_safety_factor,
+        basis,
+        iso,
     })
 }
 
@@ -459,7 +466,11 @@ fn kv_input(r: &RatingTable, invalid: &Invalid) -> Result<KvInput, GearFileError
 
 /// The elastic coefficient Cp, given or from both members' Young's modulus and Poisson's
 /// ratio.
-fn elastic(r: &RatingTable, invalid: &Invalid) -> Result<f64, GearFileError> {
+fn elastic(
+    r: &RatingTable,
+    members: &[MemberInputs; 2],
+    invalid: &Invalid,
+) -> Result<f64, GearFileError> {
     Ok(match &r.elastic_coefficient {
         Some(cp) => cp.si,
         None => {
@@ -468,14 +479,17 @@ fn elastic(r: &RatingTable, invalid: &Invalid) -> Result<f64, GearFileError> {
                 .iter()
                 .enumerate()
             {
-                let (Some(e), Some(nu)) = (&m.youngs_modulus, &m.poisson_ratio) else {
-                    return Err(invalid(
-                        "rating.elastic_coefficient",
-                        &"(missing)",
-                        &format!("give it (e.g. \"2300 sqrt(psi)\", \"190 sqrt(MPa)\") or youngs_modulus and poisson_ratio in [rating.{which}]"),
-                    ));
+                en[k] = match (&m.youngs_modulus, &m.poisson_ratio, members[k].material) {
+                    (Some(e), Some(nu), _) => (e.si, nu.si),
+                    (None, None, Some(mat)) => (mat.youngs_modulus, mat.poisson_ratio),
+                    _ => {
+                        return Err(invalid(
+                            "rating.elastic_coefficient",
+                            &"(missing)",
+                            &format!("give it (e.g. \"2300 sqrt(psi)\", \"190 sqrt(MPa)\"), or youngs_modulus and poisson_ratio, or a material, in [rating.{which}]"),
+                        ))
+                    }
                 };
-                en[k] = (e.si, nu.si);
             }
             elastic_coefficient(en[0].0, en[0].1, en[1].0, en[1].1).map_err(|e| {
                 let shown = r
@@ -490,7 +504,13 @@ fn elastic(r: &RatingTable, invalid: &Invalid) -> Result<f64, GearFileError> {
 }
 
 /// One member's rating inputs, `[rating.<which>]`.
-fn member(which: &str, m: &MemberTable, invalid: &Invalid) -> Result<MemberInputs, GearFileError> {
+fn member(
+    which: &str,
+    m: &MemberTable,
+    basis: Basis,
+    invalid: &Invalid,
+) -> Result<MemberInputs, GearFileError> {
+    let mat = iso_input::member_material(which, m, invalid)?;
     let f = |k: &str| format!("rating.{which}.{k}");
     if let (Some(y), Some(_)) = (&m.lewis_y, &m.size_factor) {
         return Err(invalid(
@@ -499,9 +519,30 @@ fn member(which: &str, m: &MemberTable, invalid: &Invalid) -> Result<MemberInput
             "give lewis_y (Ks from Shigley eq. 14-10) or size_factor (Ks), not both",
         ));
     }
-    let grade = match m.grade.map_or(1, |g| g.0) {
+    let grade_number = m.grade.map_or(1, |g| g.0);
+    if mat.is_none() && grade_number == 3 {
+        return Err(invalid(
+            &f("grade"),
+            &3,
+            "grade 3 exists only for case-carburized steel: name material = \"steel-case-carburized\"",
+        ));
+    }
+    let grade = match grade_number {
         2 => Grade::Two,
         _ => Grade::One,
+    };
+    let from_material = match mat {
+        Some(mat) if m.bending_allowable.is_none() || m.contact_allowable.is_none() => Some(
+            mat.agma_allowables(m.hardness.as_ref().map(|h| h.si), grade_number)
+                .map_err(|e| {
+                    let shown = m
+                        .hardness
+                        .as_ref()
+                        .map_or("(missing)".to_string(), |h| h.written.clone());
+                    invalid(&f("hardness"), &shown, &format!("{} ({e})", mat.name))
+                })?,
+        ),
+        _ => None,
     };
     let allowable = |key: &str,
                      given: &Option<Positive<Pressure>>,
@@ -509,6 +550,11 @@ fn member(which: &str, m: &MemberTable, invalid: &Invalid) -> Result<MemberInput
      -> Result<f64, GearFileError> {
         match (given, &m.hardness) {
             (Some(s), _) => Ok(s.si),
+            (None, _) if from_material.is_some() => Ok(if key == "bending_allowable" {
+                from_material.map_or(0.0, |a| a.bending)
+            } else {
+                from_material.map_or(0.0, |a| a.contact)
+            }),
             (None, Some(hb)) => chart(hb.si, grade)
                 .map_err(|e| invalid(&f("hardness"), &hb.written, &e.to_string())),
             (None, None) => Err(invalid(
@@ -534,6 +580,8 @@ fn member(which: &str, m: &MemberTable, invalid: &Invalid) -> Result<MemberInput
             &m.contact_allowable,
             contact_allowable_through_hardened,
         )?,
+        material: mat,
+        iso: iso_input::iso_member(which, m, mat, basis == Basis::Iso6336, invalid)?,
     })
 }
 

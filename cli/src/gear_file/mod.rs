@@ -19,6 +19,9 @@ use cardan_report::files::{replace_dir, temporary_dir, write_file};
 use std::path::{Path, PathBuf};
 
 mod input;
+mod iso_input;
+mod iso_rate;
+mod iso_rating;
 mod rating;
 mod report;
 mod table;

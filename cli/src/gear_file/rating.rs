@@ -136,6 +136,8 @@ pub struct GearReport {
     pub checks: Vec<CheckReport>,
     /// `None` without a `[rating]` table; `Some(Err)` when the pair cannot be rated.
     pub rating: Option<Result<RatingResult, String>>,
+    /// The ISO 6336 rating: `None` without its inputs; `Some(Err)` when it cannot be computed.
+    pub iso: Option<Result<cardan_gears::iso6336::IsoRating, String>>,
 }
 
 impl GearReport {
@@ -166,12 +168,77 @@ impl GearReport {
                 ));
             }
         }
-        match &self.rating {
-            None => {}
-            Some(Err(e)) => out.push(format!("rating: {e}")),
-            Some(Ok(r)) => out.extend(self.safety_failures(r)),
+        let basis = self
+            .input
+            .rating
+            .as_ref()
+            .map_or(Basis::Agma2001, |r| r.basis);
+        match (&self.rating, basis, &self.iso) {
+            (None, _, _) => {}
+            (Some(Err(e)), _, _) => out.push(format!("rating: {e}")),
+            (Some(Ok(r)), Basis::Agma2001, _) => out.extend(self.safety_failures(r)),
+            (Some(Ok(_)), Basis::Iso6336, Some(Err(e))) => out.push(format!("rating: {e}")),
+            (Some(Ok(r)), Basis::Iso6336, Some(Ok(iso))) => {
+                out.extend(self.iso_safety_failures(r, iso))
+            }
+            (Some(Ok(_)), Basis::Iso6336, None) => {
+                out.push("rating: the ISO 6336 rating was not computed".to_string())
+            }
         }
         out
+    }
+
+    /// The ISO 6336 safety factors below `required_safety_factor` (the verdict's basis is
+    /// ISO), each with the remedy: the load scaled by `min(S_F/n, (S_H/n)²)` (ISO 6336-3
+    /// eq. (1): `σ_F ∝ F_t`; ISO 6336-2 eq. (3): `σ_H ∝ √F_t`; approximate, since method B
+    /// `K_v` and `K_Hα` depend on the load), a wider face, a larger module or a stronger
+    /// material.
+    fn iso_safety_failures(
+        &self,
+        r: &RatingResult,
+        iso: &cardan_gears::iso6336::IsoRating,
+    ) -> Vec<String> {
+        let Some(inputs) = &self.input.rating else {
+            return Vec::new();
+        };
+        let n = inputs.required_safety_factor;
+        let mut short = Vec::new();
+        for (k, member) in ["pinion", "gear"].iter().enumerate() {
+            if iso.s_f[k] < n {
+                short.push(format!(
+                    "ISO bending safety factor S_F of the {member} = {:.4} < required_safety_factor {n} (ISO 6336-3:2019 §5.4)",
+                    iso.s_f[k]
+                ));
+            }
+        }
+        for (k, member) in ["pinion", "gear"].iter().enumerate() {
+            if iso.s_h[k] < n {
+                short.push(format!(
+                    "ISO pitting safety factor S_H of the {member} = {:.4} < required_safety_factor {n} (ISO 6336-2:2019 §5.4)",
+                    iso.s_h[k]
+                ));
+            }
+        }
+        if short.is_empty() {
+            return short;
+        }
+        let f = (0..2)
+            .map(|k| (iso.s_f[k] / n).min((iso.s_h[k] / n).powi(2)))
+            .fold(f64::INFINITY, f64::min);
+        let load = match inputs.load {
+            Load::Torque(t) => format!("rating.torque at most about {} N*m", sig4(t * f, false)),
+            Load::Power(_) => format!(
+                "rating.power at most about {} kW",
+                sig4(r.power * f / 1e3, false)
+            ),
+        };
+        let remedy = format!(
+            "{load} (K_v and K_Hα change with the load), or a wider face_width, or a larger module, or a stronger material (larger σ_Hlim, σ_Flim)"
+        );
+        short
+            .into_iter()
+            .map(|s| format!("{s}; remedy: {remedy}"))
+            .collect()
     }
 
     /// The safety factors below `required_safety_factor`, each with the pair's remedy.
@@ -333,11 +400,16 @@ pub fn evaluate(input: &GearFile) -> Result<GearReport, GearFileError> {
         (Some(r), Some(b)) => Some(rate(&pair, r, b, input.rack_tip_radius)),
         _ => None,
     };
+    let iso = match (&input.rating, input.face_width) {
+        (Some(r), Some(b)) => super::iso_rate::rate_iso(&pair, r, b),
+        _ => None,
+    };
     Ok(GearReport {
         input: input.clone(),
         pair,
         checks,
         rating,
+        iso,
     })
 }
 

@@ -113,6 +113,8 @@ impl GearReport {
                     "kr": inputs.reliability_factor,
                     "cf": inputs.surface_condition,
                     "required_safety_factor": inputs.required_safety_factor,
+                    "basis": inputs.basis.word(),
+                    "iso6336": super::iso_rating::iso_json(self),
                     "pinion": member(0),
                     "gear": member(1),
                     "warnings": r.warnings,
@@ -155,6 +157,7 @@ impl GearReport {
             "face_width": self.input.face_width,
             "checks": checks,
             "rating": rating,
+            "measurement": super::iso_rating::measurement_json(&self.input),
         })
     }
 
@@ -165,6 +168,8 @@ impl GearReport {
         self.geometry_markdown(&mut o);
         self.checks_markdown(&mut o);
         self.rating_markdown(&mut o);
+        super::iso_rating::iso_markdown(self, &mut o);
+        super::iso_rating::measurement_markdown(&self.input, &mut o);
         o
     }
 

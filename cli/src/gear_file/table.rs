@@ -52,8 +52,48 @@ pub struct GearFileTable {
     /// The smallest |z2| − z1 of an internal pair, a whole number from 0 to 1000. Default 10
     /// (AGMA 917-B97 as quoted by Nunes 2017, `cardan_gears::PairSpec::standard`).
     pub min_teeth_difference: Option<TeethDifference>,
-    /// The AGMA 2001-D04 rating; without it, the geometry only.
+    /// The AGMA 2001-D04 rating (and the ISO 6336 one beside it); without it, the geometry
+    /// only.
     pub rating: Option<RatingTable>,
+    /// Tooth thickness measurements (ISO 21771 §6.3, §6.4): span width over k teeth and the
+    /// dimension over (between, for a ring) two pins or balls, with the thinning of
+    /// `thickness_allowance`; without it, none.
+    pub measurement: Option<MeasurementTable>,
+}
+
+/// `[measurement]`: what to measure the teeth with.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MeasurementTable {
+    /// Teeth spanned [k1, k2] (external gears; a ring's entry is ignored), whole numbers
+    /// from 1 to z - 1. Default: the span touching the flanks nearest d + 2xm.
+    pub span_teeth: Option<Pair<SpanTeeth>>,
+    /// Pin or ball diameters [D1, D2]; m. Default: the pin touching the flanks on d + 2xm.
+    pub pin_diameter: Option<Pair<Positive<Length>>>,
+}
+
+/// Which standard the verdict's safety factors come from.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "kebab-case")]
+pub enum Basis {
+    /// AGMA 2001-D04 SF and SH (the default).
+    #[default]
+    Agma2001,
+    /// ISO 6336-2/-3:2019 method B S_F and S_H.
+    Iso6336,
+}
+
+/// ISO 6336-5 material quality grade.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "kebab-case")]
+pub enum QualityWord {
+    /// ML: modest demands.
+    Ml,
+    /// MQ: the usual industrial quality (default).
+    #[default]
+    Mq,
+    /// ME: high reliability.
+    Me,
 }
 
 /// `[rating]`: the load, the speed and the AGMA factors of the pair.
@@ -115,6 +155,32 @@ pub struct RatingTable {
     pub adjusted_at_assembly: Option<bool>,
     /// The smallest bending SF and pitting SH each member must reach, at least 1. Default 1.
     pub required_safety_factor: Option<Quantity<Number>>,
+    /// Which standard's safety factors decide the verdict: "agma2001" (default) or
+    /// "iso6336" (ISO 6336-2/-3 method B; needs `form_factor` and `stress_correction_factor`
+    /// of both members). The ISO rating is also computed, beside AGMA's, whenever a member
+    /// gives `form_factor`.
+    #[serde(default)]
+    pub basis: Basis,
+    /// ISO: application factor K_A. Default `overload_factor` (the same factor).
+    pub application_factor: Option<Positive<Number>>,
+    /// ISO: ISO 1328-1 accuracy grade (1-12) of both gears, for K_v and K_Hα by ISO 6336-1
+    /// method B.
+    pub accuracy_grade: Option<Quantity<Number>>,
+    /// ISO: the dynamic factor K_v itself, at least 1 (instead of method B).
+    pub iso_dynamic_factor: Option<Quantity<Number>>,
+    /// ISO: face load factor K_Hβ, at least 1. Default AGMA 2001's empirical Km for the face
+    /// width.
+    pub face_load_factor: Option<Quantity<Number>>,
+    /// ISO: transverse load factor K_Hα = K_Fα, at least 1. Default ISO 6336-1 method B.
+    pub transverse_load_factor: Option<Quantity<Number>>,
+    /// ISO: density of the gear blanks, for K_v method B; kg/m³ as a bare number. Default
+    /// 7830 (steel).
+    pub density: Option<Positive<Number>>,
+    /// ISO: oil kinematic viscosity at 40 °C in mm²/s (a bare number), for Z_L, Z_v;
+    /// with `flank_roughness`. Default: Z_L Z_v Z_R = 1.
+    pub oil_viscosity: Option<Positive<Number>>,
+    /// ISO: mean flank roughness Rz of the pair, for Z_R; m.
+    pub flank_roughness: Option<Positive<Length>>,
     /// `[rating.pinion]`.
     pub pinion: MemberTable,
     /// `[rating.gear]`.
@@ -137,10 +203,11 @@ pub struct MemberTable {
     pub lewis_y: Option<Positive<Number>>,
     /// Size factor Ks.
     pub size_factor: Option<Positive<Number>>,
-    /// Brinell hardness of a through-hardened steel, 140-400 HB: St and Sc from the AGMA
-    /// charts.
+    /// Brinell hardness (core hardness of a nitrided steel): St and Sc from the AGMA charts
+    /// (140-400 HB through-hardened steel when no `material` is named), and σ_Hlim, σ_Flim
+    /// of a through-hardened steel or grey iron.
     pub hardness: Option<Positive<Number>>,
-    /// AGMA 2001 grade of the through-hardened steel, 1 or 2. Default 1.
+    /// AGMA 2001 grade, 1 or 2 (3 for case-carburized steel). Default 1.
     pub grade: Option<GradeNumber>,
     /// Allowable bending stress number St; Pa. Default from `hardness`.
     pub bending_allowable: Option<Positive<Pressure>>,
@@ -150,6 +217,24 @@ pub struct MemberTable {
     pub youngs_modulus: Option<Quantity<Pressure>>,
     /// Poisson's ratio, for Cp.
     pub poisson_ratio: Option<Quantity<Number>>,
+    /// A material of the table (`cardan_gears::materials`): "steel-through-hardened",
+    /// "steel-case-carburized", "steel-nitrided", "nitriding-steel", "grey-cast-iron",
+    /// "tin-bronze", "aluminium-bronze". Gives E and ν (so Cp / Z_E), the AGMA allowables by
+    /// `grade` and `hardness` and the ISO 6336-5 limits by `iso_quality`; stresses given here
+    /// override it.
+    pub material: Option<String>,
+    /// ISO 6336-5 material quality "ml", "mq" (default) or "me".
+    #[serde(default)]
+    pub iso_quality: QualityWord,
+    /// ISO 6336-3 tooth form factor Y_F (method B, load at the outer point of single tooth
+    /// contact), positive; needed for the ISO rating.
+    pub form_factor: Option<Positive<Number>>,
+    /// ISO 6336-3 stress correction factor Y_S, positive; needed for the ISO rating.
+    pub stress_correction_factor: Option<Positive<Number>>,
+    /// ISO 6336-5 allowable stress number (contact) σ_Hlim; Pa. Default from `material`.
+    pub sigma_hlim: Option<Positive<Pressure>>,
+    /// ISO 6336-5 nominal stress number (bending) σ_Flim; Pa. Default from `material`.
+    pub sigma_flim: Option<Positive<Pressure>>,
 }
 
 /// YN's low-cycle curve.
@@ -278,13 +363,29 @@ impl<'de> Deserialize<'de> for TeethDifference {
     }
 }
 
-/// An AGMA 2001 grade, 1 or 2.
+/// Teeth spanned by a span measurement.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpanTeeth(pub u32);
+
+impl<'de> Deserialize<'de> for SpanTeeth {
+    fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
+        whole(
+            deserializer,
+            1..=100_000,
+            "must be a whole number of teeth, at least 1",
+        )
+        .map(|i| SpanTeeth(i as u32))
+    }
+}
+
+/// An AGMA 2001 grade, 1, 2 or 3 (3: case-carburized only).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GradeNumber(pub u8);
 
 impl<'de> Deserialize<'de> for GradeNumber {
     fn deserialize<De: Deserializer<'de>>(deserializer: De) -> Result<Self, De::Error> {
-        whole(deserializer, 1..=2, "must be 1 or 2 (AGMA 2001 grade)").map(|i| GradeNumber(i as u8))
+        whole(deserializer, 1..=3, "must be 1, 2 or 3 (AGMA 2001 grade)")
+            .map(|i| GradeNumber(i as u8))
     }
 }
 
@@ -305,7 +406,8 @@ macro_rules! whole_schema {
 whole_schema! {
     Teeth: -100_000, 100_000;
     TeethDifference: 0, 1000;
-    GradeNumber: 1, 2;
+    GradeNumber: 1, 3;
+    SpanTeeth: 1, 100_000;
 }
 
 /// Two values, [pinion, gear].

@@ -2,6 +2,8 @@
 //! [`super::rating`] and [`super::report`] read, below all three (no part imports the module
 //! that holds it).
 
+use cardan_gears::iso6336::{IsoDynamic, Lubrication};
+use cardan_gears::materials::{LifeCurve, Material};
 use cardan_gears::{BendingHighCycle, BendingLowCycle, IForm, LoadDistribution, PairSpec, Quality};
 use std::path::PathBuf;
 
@@ -83,6 +85,58 @@ pub struct MemberInputs {
     pub hardness: Option<f64>,
     pub bending_allowable: f64,
     pub contact_allowable: f64,
+    /// The named material, if any.
+    pub material: Option<&'static Material>,
+    /// The member's ISO 6336 inputs, when the ISO rating is computed.
+    pub iso: Option<IsoMemberInputs>,
+}
+
+/// One member's ISO 6336 inputs; stresses in Pa.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IsoMemberInputs {
+    pub form_factor: f64,
+    pub stress_correction_factor: f64,
+    pub sigma_hlim: f64,
+    pub sigma_flim: f64,
+    pub life_curve: LifeCurve,
+}
+
+/// Which standard's safety factors decide the verdict.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Basis {
+    Agma2001,
+    Iso6336,
+}
+
+impl Basis {
+    /// The word of the gear file and `gear.json`.
+    pub fn word(self) -> &'static str {
+        match self {
+            Basis::Agma2001 => "agma2001",
+            Basis::Iso6336 => "iso6336",
+        }
+    }
+}
+
+/// The pair's ISO 6336 inputs beside the AGMA ones.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IsoRatingInputs {
+    pub application_factor: f64,
+    pub accuracy_grade: Option<f64>,
+    pub dynamic: IsoDynamic,
+    /// `None`: AGMA's empirical Km for the face width.
+    pub face_load_factor: Option<f64>,
+    /// `None`: ISO 6336-1 method B.
+    pub transverse_load_factor: Option<f64>,
+    pub lubrication: Option<Lubrication>,
+}
+
+/// `[measurement]`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeasurementInputs {
+    pub span_teeth: Option<[u32; 2]>,
+    /// m.
+    pub pin_diameter: Option<[f64; 2]>,
 }
 
 /// Validated `[rating]` table, SI.
@@ -109,6 +163,10 @@ pub struct RatingInputs {
     /// The smallest bending (SF) and pitting (SH) safety factor the pair must reach,
     /// `required_safety_factor` (default 1): see [`GearReport::failures`](super::GearReport::failures).
     pub required_safety_factor: f64,
+    /// The verdict's basis.
+    pub basis: Basis,
+    /// ISO 6336 inputs, when a member gives `form_factor` or the basis is ISO.
+    pub iso: Option<IsoRatingInputs>,
 }
 
 /// A validated gear file.
@@ -125,6 +183,7 @@ pub struct GearFile {
     /// 0.25 m of `cardan_gears::tooth_root::DEFAULT_RACK_TIP_RADIUS`).
     pub rack_tip_radius: [Option<f64>; 2],
     pub rating: Option<RatingInputs>,
+    pub measurement: Option<MeasurementInputs>,
     /// The fields as written in the file (dotted name, TOML text), for the report.
     pub given: Vec<(String, String)>,
 }

@@ -23,6 +23,11 @@
 //! * [`mod@mesh_loss`] — Anderson & Loewenthal mesh power loss (sliding with Benedict & Kelley,
 //!   rolling with the EHD film, windage) in Karhula's printed reading and a corrected reading
 //!   ([`mesh_loss::Reading`]).
+//! * [`iso6336`] — ISO 6336-1/-2/-3:2019 method B rating (`S_H`, `S_F`) beside AGMA's, with
+//!   the factors in [`iso6336_load`], [`iso6336_pitting`], [`iso6336_bending`].
+//! * [`materials`] — named gear materials: E, ν, AGMA 2001 allowables by grade and hardness,
+//!   ISO 6336-5 `σ_Hlim`, `σ_Flim` by quality grade.
+//! * [`tooth_measurement`] — span width `W_k` and dimension over pins/balls (ISO 21771 §6).
 //! * [`gear_set`] — per crank-angle step: tangential load and speeds in, dynamic load,
 //!   stresses, safety factors and mesh loss out.
 //!
@@ -38,7 +43,13 @@ pub mod error;
 pub mod gear_set;
 pub mod geometry;
 pub mod involute;
+pub mod iso6336;
+pub mod iso6336_bending;
+pub mod iso6336_load;
+pub mod iso6336_pitting;
+pub mod materials;
 pub mod mesh_loss;
+pub mod tooth_measurement;
 pub mod tooth_root;
 pub mod units;
 
