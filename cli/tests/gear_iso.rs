@@ -132,15 +132,44 @@ fn an_overloaded_pair_fails_by_its_iso_factors() {
 }
 
 #[test]
-fn iso_basis_without_the_tooth_form_factors_is_a_clear_error() {
-    let text = shipped(ISO).replace("form_factor = 2.55", "");
-    let e = error_of(&text);
+fn iso_basis_computes_the_tooth_form_factors_unless_given() {
+    use cardan_gears::tooth_root::{iso6336_method_b, Member, Which};
+    // The shipped example gives neither Y_F nor Y_S: ISO 6336-3 method B from the tooth form.
+    let file = parse(Path::new("gears/test.toml"), &shipped(ISO)).unwrap();
+    let pair = cardan_gears::GearPair::new(file.spec.clone()).unwrap();
+    let iso = &report_of(&shipped(ISO)).to_json()["rating"]["iso6336"];
+    for (k, which) in [Which::Pinion, Which::Gear].into_iter().enumerate() {
+        let member = Member {
+            which,
+            rack_tip_radius: None,
+        };
+        let root = iso6336_method_b(&pair, member).unwrap();
+        let y_f = num(&iso[["pinion", "gear"][k]]["form_factor_y_f"]);
+        assert_eq!(y_f, root.form_factor, "member {k}");
+        // ISO 6336-3 method B's Y_F (load at the outer point of single contact) for 20 and 40
+        // teeth of a standard rack lies between 1.2 and 2.5, its Y_S between 1.5 and 2.5 (the standard's charts).
+        assert!((1.2..2.5).contains(&y_f), "Y_F {y_f}");
+        let y_s = num(&iso[["pinion", "gear"][k]]["stress_correction_y_s"]);
+        assert_eq!(y_s, root.stress_correction, "member {k}");
+        assert!((1.5..2.5).contains(&y_s), "Y_S {y_s}");
+    }
+    // Given, they override the tooth form; given alone, Y_S is refused.
+    let given = shipped(ISO).replace(
+        "iso_quality = \"mq\"\n",
+        "iso_quality = \"mq\"\nform_factor = 2.55\nstress_correction_factor = 1.70\n",
+    );
+    let iso = &report_of(&given).to_json()["rating"]["iso6336"];
+    assert_eq!(num(&iso["pinion"]["form_factor_y_f"]), 2.55);
+    let alone = shipped(ISO).replacen(
+        "iso_quality = \"mq\"\n",
+        "iso_quality = \"mq\"\nstress_correction_factor = 1.70\n",
+        1,
+    );
+    let e = error_of(&alone);
     assert!(
-        e.contains("rating.pinion.form_factor") && e.contains("Y_F"),
+        e.contains("rating.pinion.stress_correction_factor") && e.contains("form_factor"),
         "{e}"
     );
-    let e = error_of(&shipped(ISO).replace("stress_correction_factor = 1.75", ""));
-    assert!(e.contains("rating.gear.stress_correction_factor"), "{e}");
     let e = error_of(&shipped(ISO).replace("accuracy_grade = 6", ""));
     assert!(e.contains("rating.accuracy_grade"), "{e}");
 }

@@ -32,7 +32,8 @@ pub fn member_material(
 
 /// The member's ISO inputs when it gives `form_factor` (then `stress_correction_factor` and
 /// the limits, given or from its material, are required), else `None`; `required` (the
-/// verdict's basis is ISO) makes `form_factor` itself required.
+/// verdict's basis is ISO) makes the ISO inputs required, Y_F and Y_S then computed from the
+/// tooth form where not given.
 pub fn iso_member(
     which: &str,
     m: &MemberTable,
@@ -42,13 +43,15 @@ pub fn iso_member(
 ) -> Result<Option<IsoMemberInputs>, GearFileError> {
     let f = |k: &str| format!("rating.{which}.{k}");
     let (y_f, y_s) = match (&m.form_factor, &m.stress_correction_factor) {
-        (Some(yf), Some(ys)) => (yf.si, ys.si),
+        (Some(yf), Some(ys)) => (Some(yf.si), Some(ys.si)),
         (None, None) if !required => return Ok(None),
-        (None, _) => {
+        // Computed from the tooth form at rating (ISO 6336-3 method B).
+        (None, None) => (None, None),
+        (None, Some(ys)) => {
             return Err(invalid(
-                &f("form_factor"),
-                &"(missing)",
-                "the ISO 6336 rating needs each member's tooth form factor Y_F and stress correction factor Y_S (ISO 6336-3 §6, §7; e.g. form_factor = 2.6, stress_correction_factor = 1.9), until they are computed from the tooth form",
+                &f("stress_correction_factor"),
+                &ys.written,
+                "give it with form_factor (ISO 6336-3 §6 Y_F), or neither: both are then computed from the tooth form",
             ))
         }
         (Some(_), None) => {

@@ -3,6 +3,7 @@
 
 use super::validated::*;
 use cardan_gears::iso6336::{rate, IsoInputs, IsoMember, IsoRating};
+use cardan_gears::tooth_root::{iso6336_method_b, Member, Which};
 use cardan_gears::GearPair;
 
 /// The ISO rating of the pair, when its inputs are given; an error names what could not be
@@ -11,6 +12,7 @@ pub fn rate_iso(
     pair: &GearPair,
     r: &RatingInputs,
     face_width: f64,
+    rack_tip_radius: [Option<f64>; 2],
 ) -> Option<Result<IsoRating, String>> {
     let iso = r.iso?;
     Some((|| {
@@ -31,12 +33,26 @@ pub fn rate_iso(
         let cycles = [r.pinion_cycles, r.pinion_cycles / pair.ratio];
         let member = |k: usize| -> Result<IsoMember, String> {
             let m = r.members[k].iso.ok_or("ISO member inputs missing")?;
+            let (form_factor, stress_correction_factor) =
+                match (m.form_factor, m.stress_correction_factor) {
+                    (Some(y_f), Some(y_s)) => (y_f, y_s),
+                    _ => {
+                        let which = if k == 0 { Which::Pinion } else { Which::Gear };
+                        let member = Member {
+                            which,
+                            rack_tip_radius: rack_tip_radius[k],
+                        };
+                        let root = iso6336_method_b(pair, member)
+                            .map_err(|e| format!("ISO 6336-3 Y_F, Y_S from the tooth form: {e}"))?;
+                        (root.form_factor, root.stress_correction)
+                    }
+                };
             Ok(IsoMember {
                 sigma_hlim: m.sigma_hlim,
                 sigma_flim: m.sigma_flim,
                 life_curve: m.life_curve,
-                form_factor: m.form_factor,
-                stress_correction_factor: m.stress_correction_factor,
+                form_factor,
+                stress_correction_factor,
                 rim_factor: 1.0,
                 notch_sensitivity: 1.0,
                 surface_factor: 1.0,

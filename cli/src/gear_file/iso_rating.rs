@@ -26,6 +26,8 @@ pub fn iso_json(report: &GearReport) -> Value {
                     "contact_stress": o.sigma_h[k],
                     "pitting_stress_limit": o.sigma_hg[k],
                     "contact_safety_factor": o.s_h[k],
+                    "form_factor_y_f": o.y_f[k],
+                    "stress_correction_y_s": o.y_s[k],
                     "nominal_root_stress": o.sigma_f0[k],
                     "root_stress": o.sigma_f[k],
                     "root_stress_limit": o.sigma_fg[k],

@@ -401,7 +401,7 @@ pub fn evaluate(input: &GearFile) -> Result<GearReport, GearFileError> {
         _ => None,
     };
     let iso = match (&input.rating, input.face_width) {
-        (Some(r), Some(b)) => super::iso_rate::rate_iso(&pair, r, b),
+        (Some(r), Some(b)) => super::iso_rate::rate_iso(&pair, r, b, input.rack_tip_radius),
         _ => None,
     };
     Ok(GearReport {

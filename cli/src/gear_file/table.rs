@@ -156,9 +156,9 @@ pub struct RatingTable {
     /// The smallest bending SF and pitting SH each member must reach, at least 1. Default 1.
     pub required_safety_factor: Option<Quantity<Number>>,
     /// Which standard's safety factors decide the verdict: "agma2001" (default) or
-    /// "iso6336" (ISO 6336-2/-3 method B; needs `form_factor` and `stress_correction_factor`
-    /// of both members). The ISO rating is also computed, beside AGMA's, whenever a member
-    /// gives `form_factor`.
+    /// "iso6336" (ISO 6336-2/-3 method B; each member's Y_F and Y_S computed from the tooth
+    /// form unless it gives `form_factor` and `stress_correction_factor`). The ISO rating is
+    /// also computed, beside AGMA's, whenever a member gives `form_factor`.
     #[serde(default)]
     pub basis: Basis,
     /// ISO: application factor K_A. Default `overload_factor` (the same factor).

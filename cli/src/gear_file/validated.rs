@@ -94,8 +94,10 @@ pub struct MemberInputs {
 /// One member's ISO 6336 inputs; stresses in Pa.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IsoMemberInputs {
-    pub form_factor: f64,
-    pub stress_correction_factor: f64,
+    /// Y_F and Y_S as given; `None`: computed from the tooth form by ISO 6336-3 method B
+    /// (`cardan_gears::iso6336_method_b`) at rating.
+    pub form_factor: Option<f64>,
+    pub stress_correction_factor: Option<f64>,
     pub sigma_hlim: f64,
     pub sigma_flim: f64,
     pub life_curve: LifeCurve,

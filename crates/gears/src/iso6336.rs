@@ -149,6 +149,10 @@ pub struct IsoRating {
     pub y_beta: f64,
     /// Deep tooth factor.
     pub y_dt: f64,
+    /// Tooth form factors `Y_F` and stress correction factors `Y_S` taken (given, or computed
+    /// from the tooth form by the caller).
+    pub y_f: [f64; 2],
+    pub y_s: [f64; 2],
     /// Life factors (root).
     pub y_nt: [f64; 2],
     /// Size factors (root).
@@ -302,6 +306,8 @@ pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
         s_h: [0.0; 2],
         y_beta: bend::helix_angle_factor(0.0, 0.0),
         y_dt,
+        y_f: inp.members.map(|m| m.form_factor),
+        y_s: inp.members.map(|m| m.stress_correction_factor),
         y_nt: [0.0; 2],
         y_x: [0.0; 2],
         sigma_f0: [0.0; 2],
