@@ -26,7 +26,7 @@ fn as_json(text: &str) -> serde_json::Value {
 
 #[test]
 fn the_shipped_schemas_are_fresh() {
-    for (path, fresh) in xtask::schemas() {
+    for (path, fresh) in xtask_gen::schemas() {
         let shipped = std::fs::read_to_string(root().join(path)).unwrap_or_default();
         assert!(
             shipped == fresh,
