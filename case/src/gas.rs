@@ -350,7 +350,10 @@ mod tests {
         let mut generator = SchemaGenerator::default();
         let schema = gas_schema(&mut generator).to_value();
         let names: Vec<&str> = MODELS.iter().map(|m| m.name).collect();
-        assert_eq!(schema["properties"]["model"]["enum"], serde_json::json!(names));
+        assert_eq!(
+            schema["properties"]["model"]["enum"],
+            serde_json::json!(names)
+        );
         let branches = schema["allOf"].as_array().unwrap();
         assert_eq!(branches.len(), MODELS.len());
         for (branch, entry) in branches.iter().zip(MODELS) {

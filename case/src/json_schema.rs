@@ -119,8 +119,14 @@ mod tests {
                 "Default 287.05, air (`cardan_gas::compressor::AIR_GAS_CONSTANT`).",
                 "Default 287.05, air.",
             ),
-            ("The reading of the rules ([`MassRules`]).", "The reading of the rules."),
-            ("See [`Foo`] and [`Bar`](crate::bar).", "See `Foo` and `Bar`."),
+            (
+                "The reading of the rules ([`MassRules`]).",
+                "The reading of the rules.",
+            ),
+            (
+                "See [`Foo`] and [`Bar`](crate::bar).",
+                "See `Foo` and `Bar`.",
+            ),
             ("in m (`60 mm`), kept", "in m (`60 mm`), kept"),
             ("one\nline\n\nnext", "one line\n\nnext"),
         ];

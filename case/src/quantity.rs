@@ -194,7 +194,11 @@ fn bare_number(dim: Dimension, rule: u8) -> Schema {
     // The magnitudes from `low` to `high`, of the signs the rule allows; 0 besides, where the
     // rule allows it.
     let range = |from: f64, to: f64, open_from: bool| {
-        let min = if open_from { "exclusiveMinimum" } else { "minimum" };
+        let min = if open_from {
+            "exclusiveMinimum"
+        } else {
+            "minimum"
+        };
         let mut n = json_schema!({ "type": "number", "maximum": to });
         n.insert(min.into(), from.into());
         n

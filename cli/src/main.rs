@@ -296,8 +296,10 @@ fn progress_bar(quiet: bool) -> indicatif::ProgressBar {
     // Nothing is drawn before the first second: short runs stay quiet.
     let bar = indicatif::ProgressBar::hidden();
     bar.set_style(
-        indicatif::ProgressStyle::with_template("{elapsed:>4} [{wide_bar}] {pos}/{len} cases, {msg}")
-            .expect("a valid template"),
+        indicatif::ProgressStyle::with_template(
+            "{elapsed:>4} [{wide_bar}] {pos}/{len} cases, {msg}",
+        )
+        .expect("a valid template"),
     );
     let shown = bar.clone();
     let start = cardan_runner::progress::steps_run();

@@ -89,14 +89,23 @@ fn check_value(flag: &str, value: &str) -> Result<(), String> {
 /// own): `--sbatch-option` may not set them again.
 const OWN_OPTIONS: &[(&str, &str)] = &[
     ("--array", "the scripts' own (one task per shard)"),
-    ("--output", "the scripts' own (the logs go to OUT.slurm/logs)"),
+    (
+        "--output",
+        "the scripts' own (the logs go to OUT.slurm/logs)",
+    ),
     ("--job-name", "the scripts' own"),
-    ("--dependency", "submit.sh's own (the merge waits for the array)"),
+    (
+        "--dependency",
+        "submit.sh's own (the merge waits for the array)",
+    ),
     ("--partition", "use --partition"),
     ("--time", "use --time"),
     ("--account", "use --account"),
     ("--mem", "use --mem"),
-    ("--cpus-per-task", "use --cpus-per-task (the tasks' `cardan run --jobs` follows it)"),
+    (
+        "--cpus-per-task",
+        "use --cpus-per-task (the tasks' `cardan run --jobs` follows it)",
+    ),
 ];
 
 /// Refuses an `--sbatch-option` that is not one long option (`--name` or `--name=value`)
@@ -183,7 +192,10 @@ pub fn scripts(job: &Job) -> Result<Scripts, String> {
     // The array's CPUs a task, and the run's threads to match.
     let (cpus, jobs) = match job.cpus_per_task {
         Some(0) => return Err("--cpus-per-task must be at least 1".into()),
-        Some(c) => (format!("#SBATCH --cpus-per-task={c}\n"), format!(" --jobs {c}")),
+        Some(c) => (
+            format!("#SBATCH --cpus-per-task={c}\n"),
+            format!(" --jobs {c}"),
+        ),
         None => (String::new(), String::new()),
     };
     let dir = folder(&job.out);
@@ -351,7 +363,10 @@ mod tests {
 
     /// The `#SBATCH` lines of a script, in order.
     fn sbatch_lines(script: &str) -> Vec<&str> {
-        script.lines().filter(|l| l.starts_with("#SBATCH ")).collect()
+        script
+            .lines()
+            .filter(|l| l.starts_with("#SBATCH "))
+            .collect()
     }
 
     #[test]
@@ -388,7 +403,11 @@ mod tests {
         );
         // Every #SBATCH line comes before the first command (sbatch stops reading them there).
         let first_command = s.run.lines().position(|l| l == "set -eu").unwrap();
-        let last_option = s.run.lines().rposition(|l| l.starts_with("#SBATCH")).unwrap();
+        let lines: Vec<&str> = s.run.lines().collect();
+        let last_option = lines
+            .iter()
+            .rposition(|l| l.starts_with("#SBATCH"))
+            .unwrap();
         assert!(last_option < first_command, "{}", s.run);
     }
 
@@ -426,7 +445,12 @@ mod tests {
             let e = check_option(bad).unwrap_err();
             assert!(e.contains(flag), "{bad:?}: {e}");
         }
-        for good in ["--qos=high", "--exclusive", "--constraint=avx2", "--gres=gpu:1"] {
+        for good in [
+            "--qos=high",
+            "--exclusive",
+            "--constraint=avx2",
+            "--gres=gpu:1",
+        ] {
             assert_eq!(check_option(good), Ok(()), "{good}");
         }
         let with = |f: fn(&mut Job)| {

@@ -350,7 +350,11 @@ fn slurm_scripts_run_the_shards_and_merge_them_into_one_run() {
     );
     assert_eq!(list.lines().count(), 3, "{list}");
     assert!(list.lines().nth(2).unwrap().ends_with("shard-3"), "{list}");
-    for line in ["#SBATCH --partition=debug", "#SBATCH --account=proj-1", "#SBATCH --qos=normal"] {
+    for line in [
+        "#SBATCH --partition=debug",
+        "#SBATCH --account=proj-1",
+        "#SBATCH --qos=normal",
+    ] {
         assert!(merge.contains(line), "{line:?} not in:\n{merge}");
     }
     assert!(

@@ -8,7 +8,9 @@ use std::path::Path;
 
 /// The steps `file`'s case adds to the count when run (with per-step files where `files`).
 fn counted(file: &str, files: bool) -> (u64, u64) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs").join(file);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../configs")
+        .join(file);
     let text = std::fs::read_to_string(&path).unwrap();
     let case = case::parse(&path, &text).unwrap();
     let tmp = tempfile::tempdir().unwrap();
@@ -23,11 +25,17 @@ fn a_run_counts_its_steps() {
     // Summary only, the run shared by the threads in chunks (each chunk's first step is its
     // predecessor's last, taken by both: at most one step more per chunk of 4096 or so).
     let (n, steps) = counted("karhula-r60-l140-a0-w3pi.toml", false);
-    assert!(n >= steps && n <= steps + steps / 100, "{n} counted, {steps} run");
+    assert!(
+        n >= steps && n <= steps + steps / 100,
+        "{n} counted, {steps} run"
+    );
     // With per-step files: one thread, every step once.
     let (n, steps) = counted("karhula-r60-l140-a0-w3pi.toml", true);
     assert_eq!(n, steps);
     // A solved motion: its reported cycle's steps (the cycles before it are not counted).
     let (n, steps) = counted("karhula-pump-motor-dynamic.toml", false);
-    assert!(n >= steps && n <= steps + steps / 100, "{n} counted, {steps} run");
+    assert!(
+        n >= steps && n <= steps + steps / 100,
+        "{n} counted, {steps} run"
+    );
 }
