@@ -38,8 +38,9 @@ pub fn case_schema() -> Value {
 
 /// Every `description` of `schema` as an editor shows it (issue 38.5): the doc comments'
 /// links to the code dropped (`([`crate::gas::MODELS`])`, `(`ClosedCycle::nunes_2017`)`: the
-/// reader of a case file does not read the code), a link's text kept (`[`Foo`]` is `Foo`),
-/// and the lines a doc comment wraps at joined (a blank line kept).
+/// reader of a case file does not read the code), and a link's text kept (`[`Foo`]` is `Foo`).
+/// The lines stay as the doc comment wraps them (the docs' field tables take a description's
+/// first sentence up to ". " and a capital: a line break ends none).
 pub fn plain_descriptions(schema: &mut Value) {
     match schema {
         Value::Object(map) => {
@@ -55,7 +56,7 @@ pub fn plain_descriptions(schema: &mut Value) {
     }
 }
 
-/// `doc` without links to the code, its wrapped lines joined.
+/// `doc` without links to the code.
 fn plain(doc: &str) -> String {
     let mut text = doc.to_string();
     // A parenthesis holding only a link or a path of the code: dropped with its space.
@@ -74,11 +75,7 @@ fn plain(doc: &str) -> String {
         let name = text[open + 1..close + 1].to_string();
         text.replace_range(open..end, &name);
     }
-    // The doc comment's wrapped lines joined; its paragraphs kept.
-    text.split("\n\n")
-        .map(|p| p.split('\n').map(str::trim).collect::<Vec<_>>().join(" "))
-        .collect::<Vec<_>>()
-        .join("\n\n")
+    text
 }
 
 /// The first " (...)" of `text` that holds only a link to the code (`[`Foo`]`) or a path of
@@ -128,7 +125,6 @@ mod tests {
                 "See `Foo` and `Bar`.",
             ),
             ("in m (`60 mm`), kept", "in m (`60 mm`), kept"),
-            ("one\nline\n\nnext", "one line\n\nnext"),
         ];
         for (doc, plain_doc) in cases {
             assert_eq!(plain(doc), plain_doc, "{doc}");
