@@ -181,21 +181,16 @@ fn run_mechanism(
         .then(|| ColumnSink::new(mechanism, &layout, case.output.decimation, case.steps));
     // Without files, the charts take their rows on their own, so that the run can be shared;
     // the steps are counted for the progress display.
-    let mut sinks = (
-        summary,
-        (
-            (per_step.is_none() && charts).then(|| {
-                ChartSink::new(
-                    mechanism,
-                    &layout,
-                    case.output.decimation,
-                    case.steps,
-                    label,
-                )
-            }),
-            StepCounter,
-        ),
-    );
+    let chart_sink = (per_step.is_none() && charts).then(|| {
+        ChartSink::new(
+            mechanism,
+            &layout,
+            case.output.decimation,
+            case.steps,
+            label,
+        )
+    });
+    let mut sinks = (summary, (chart_sink, StepCounter));
     // A coarse grid's peaks are checked by the same run on the grid shifted by a third and by
     // two thirds of a step (summaries only).
     let revolutions = (case.end_angle - case.motion.start_angle) / std::f64::consts::TAU;
