@@ -78,25 +78,27 @@ fn plain(doc: &str) -> String {
     text
 }
 
-/// The first " (...)" of `text` that holds only a link to the code (`[`Foo`]`) or a path of
-/// it (`` `a::b` ``): its start (the space) and end.
+/// The first " (...)" (or the parenthesis after a line break) of `text` that holds only a link
+/// to the code (`[`Foo`]`) or a path of it (`` `a::b` ``): its start (the space) and end.
 fn code_parenthesis(text: &str) -> Option<(usize, usize)> {
-    let mut from = 0;
-    while let Some(i) = text[from..].find(" (").map(|i| from + i) {
-        let inner = i + 2;
-        if let Some(len) = text[inner..].find(')') {
-            let content = &text[inner..inner + len];
-            let link = content.starts_with("[`") && content.ends_with("`]");
-            let path = content.trim_start_matches('[').trim_end_matches(']');
-            let one = path.len() > 2
-                && path.starts_with('`')
-                && path.ends_with('`')
-                && !path[1..path.len() - 1].contains('`');
-            if one && (link || path.contains("::")) {
-                return Some((i, inner + len + 1));
-            }
+    for (open, _) in text.match_indices('(') {
+        if !text[..open].ends_with([' ', '\n']) {
+            continue;
         }
-        from = inner;
+        let inner = open + 1;
+        let Some(len) = text[inner..].find(')') else {
+            continue;
+        };
+        let content = &text[inner..inner + len];
+        let link = content.starts_with("[`") && content.ends_with("`]");
+        let path = content.trim_start_matches('[').trim_end_matches(']');
+        let one = path.len() > 2
+            && path.starts_with('`')
+            && path.ends_with('`')
+            && !path[1..path.len() - 1].contains('`');
+        if one && (link || path.contains("::")) {
+            return Some((open - 1, inner + len + 1));
+        }
     }
     None
 }
