@@ -111,7 +111,8 @@ const OWN_OPTIONS: &[(&str, &str)] = &[
 /// Refuses an `--sbatch-option` that is not one long option (`--name` or `--name=value`)
 /// written in the characters `sbatch` options take: no white space, line break, quote or shell
 /// metacharacter (an `#SBATCH` line is read by `sbatch`, and a line break would start a line
-/// of shell), and none of [`OWN_OPTIONS`].
+/// of shell), and none of the options the scripts or a flag of their own set (`--array`,
+/// `--output`, `--account`, ...).
 pub fn check_option(option: &str) -> Result<(), String> {
     let refuse = |why: &str| Err(format!("--sbatch-option {option:?}: {why}"));
     let (name, value) = option.split_once('=').unwrap_or((option, ""));

@@ -1,6 +1,6 @@
 //! The steps this process has run so far, for a progress display inside a long case (issue
 //! 38.1: a one-case run showed "0/1 cases" until its end). Every crank train's run takes a
-//! [`StepCounter`] among its sinks, which adds each block's steps (up to 64) to one atomic
+//! `StepCounter` among its sinks, which adds each block's steps (up to 64) to one atomic
 //! counter: one relaxed addition per block, nothing per step, so the step loop is not slowed.
 //! The count covers the steps streamed to the sinks (every prescribed-motion run, the reported
 //! cycle of a solved motion), not the solved motion's earlier cycles, the sampling check's
