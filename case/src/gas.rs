@@ -201,14 +201,17 @@ pub fn check_ready(
     Ok(())
 }
 
-/// The JSON Schema of `[gas]`: one branch per registered model, its table with `model` as a
-/// constant.
+/// The JSON Schema of `[gas]`: `model` one of the registered models' names (an `enum`, so that
+/// an editor names them at a misspelled model, issue 38.5), and for each model an `if`/`then`
+/// whose `then` is the model's table with `model` as a constant (its fields, and no other).
 pub fn gas_schema(generator: &mut SchemaGenerator) -> Schema {
+    let names: Vec<&str> = MODELS.iter().map(|entry| entry.name).collect();
     let branches: Vec<serde_json::Value> = MODELS
         .iter()
         .map(|entry| {
             let mut branch = (entry.schema)(generator);
             let machine = match entry.machine {
+                Some(Machine::Engine) => " (an engine model)".to_string(),
                 Some(m) => format!(" (a {} model)", m.name()),
                 None => String::new(),
             };
@@ -229,13 +232,26 @@ pub fn gas_schema(generator: &mut SchemaGenerator) -> Schema {
             if let Some(r) = required.as_array_mut() {
                 r.insert(0, "model".into());
             }
-            branch.to_value()
+            serde_json::json!({
+                "if": {
+                    "properties": { "model": { "const": entry.name } },
+                    "required": ["model"],
+                },
+                "then": branch.to_value(),
+            })
         })
         .collect();
     json_schema!({
         "description": "The gas that loads the pistons: `model` names one of the registered models, whose fields follow.",
         "type": "object",
-        "oneOf": branches,
+        "properties": {
+            "model": {
+                "description": format!("The gas model: {}.", names.join(", ")),
+                "enum": names,
+            }
+        },
+        "required": ["model"],
+        "allOf": branches,
     })
 }
 
@@ -336,20 +352,27 @@ mod tests {
         assert!(e.contains("did you mean \"karhula_pump\"?"), "{e}");
     }
 
-    /// The schema has a branch per model, `model` a constant in each, and every field of the
-    /// model's table.
+    /// The schema names every model in `model`'s `enum`, and has an `if`/`then` per model:
+    /// `model` a constant in each, and every field of the model's table.
     #[test]
     fn the_schema_lists_every_model() {
         let mut generator = SchemaGenerator::default();
         let schema = gas_schema(&mut generator).to_value();
-        let branches = schema["oneOf"].as_array().unwrap();
+        let names: Vec<&str> = MODELS.iter().map(|m| m.name).collect();
+        assert_eq!(
+            schema["properties"]["model"]["enum"],
+            serde_json::json!(names)
+        );
+        let branches = schema["allOf"].as_array().unwrap();
         assert_eq!(branches.len(), MODELS.len());
         for (branch, entry) in branches.iter().zip(MODELS) {
-            assert_eq!(branch["properties"]["model"]["const"], entry.name);
-            assert_eq!(branch["required"][0], "model");
-            assert_eq!(branch["additionalProperties"], false, "{}", entry.name);
+            assert_eq!(branch["if"]["properties"]["model"]["const"], entry.name);
+            let then = &branch["then"];
+            assert_eq!(then["properties"]["model"]["const"], entry.name);
+            assert_eq!(then["required"][0], "model");
+            assert_eq!(then["additionalProperties"], false, "{}", entry.name);
         }
-        let pump = &branches[0]["properties"];
+        let pump = &branches[0]["then"]["properties"];
         assert!(pump.get("polytropic_exponent").is_some(), "{pump}");
     }
 }

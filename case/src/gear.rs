@@ -83,7 +83,7 @@ pub enum ToothLoadWord {
 }
 
 /// `[gear]`: the gear pair of every gear mesh of the case and its rating data. Every field is
-/// optional; the defaults are `cardan_dynamics::GearSpec::default`'s.
+/// optional; the defaults are docs/case-file.md's ("Gear rating in runs").
 #[derive(Debug, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct GearTable {

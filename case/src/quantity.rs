@@ -151,21 +151,20 @@ impl<D: Dim, const RULE: u8> JsonSchema for Quantity<D, RULE> {
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         let dim = D::DIMENSION;
         let units: Vec<&str> = dim.unit_names().collect();
-        let mut number = json_schema!({ "type": "number" });
-        match RULE {
-            POSITIVE => {
-                number.insert("exclusiveMinimum".into(), 0.into());
-            }
-            NON_NEGATIVE => {
-                number.insert("minimum".into(), 0.into());
-            }
-            _ => {}
-        }
+        let number = bare_number(dim, RULE);
         if dim.default_unit().is_empty() {
             return number;
         }
+        let plausible = match dim.plausible() {
+            Some((low, high, unit, meant)) => format!(
+                " (a bare number must lie within {low}...{high} {default}{zero}; write \"60 {unit}\" for {meant})",
+                default = dim.default_unit(),
+                zero = if RULE == POSITIVE { "" } else { ", or be 0" },
+            ),
+            None => String::new(),
+        };
         let description = format!(
-            "A bare number in {} or a string \"NUMBER UNIT\"; units: {}",
+            "A bare number in {}{plausible} or a string \"NUMBER UNIT\"; units: {}",
             dim.default_unit(),
             units.join(", ")
         );
@@ -178,6 +177,42 @@ impl<D: Dim, const RULE: u8> JsonSchema for Quantity<D, RULE> {
             ]
         })
     }
+}
+
+/// The schema of a bare number of `dim` under the sign rule `rule`: the sign, and the range a
+/// bare number must lie in to be read (`Dimension::plausible`: 0, or a magnitude from its low
+/// to its high end), so that an editor flags `crank_length = 60` (60 m, meant "60 mm") as the
+/// reader refuses it (issue 38.5). A value with a unit is checked on reading only.
+fn bare_number(dim: Dimension, rule: u8) -> Schema {
+    let Some((low, high, _, _)) = dim.plausible() else {
+        return match rule {
+            POSITIVE => json_schema!({ "type": "number", "exclusiveMinimum": 0 }),
+            NON_NEGATIVE => json_schema!({ "type": "number", "minimum": 0 }),
+            _ => json_schema!({ "type": "number" }),
+        };
+    };
+    // The magnitudes from `low` to `high`, of the signs the rule allows; 0 besides, where the
+    // rule allows it.
+    let range = |from: f64, to: f64, open_from: bool| {
+        let min = if open_from {
+            "exclusiveMinimum"
+        } else {
+            "minimum"
+        };
+        let mut n = json_schema!({ "type": "number", "maximum": to });
+        n.insert(min.into(), from.into());
+        n
+    };
+    let positive = range(low, high, low == 0.0);
+    let mut branches = match rule {
+        POSITIVE => return positive,
+        NON_NEGATIVE if low == 0.0 => return range(0.0, high, false),
+        NON_NEGATIVE => vec![positive],
+        _ if low == 0.0 => return range(-high, high, false),
+        _ => vec![positive, range(-high, -low, false)],
+    };
+    branches.insert(0, json_schema!({ "const": 0 }));
+    json_schema!({ "type": "number", "anyOf": branches })
 }
 
 /// A range a bare number must lie in, with the rule (the range and its reason) a value outside

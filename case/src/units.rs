@@ -161,7 +161,7 @@ impl Dimension {
     /// likely meant as "60 mm". A value written with a unit is taken as written. `None`: any
     /// bare number is plausible. The bounds are far outside any machine this project models
     /// (the thesis's crank speeds reach 400π rad/s, its lengths 0.3 m).
-    fn plausible(self) -> Option<(f64, f64, &'static str, &'static str)> {
+    pub(crate) fn plausible(self) -> Option<(f64, f64, &'static str, &'static str)> {
         Some(match self {
             Dimension::Length => (0.0, 10.0, "mm", "millimetres"),
             Dimension::AngularSpeed => (0.0, 2000.0, "rpm", "revolutions per minute"),

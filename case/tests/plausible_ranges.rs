@@ -90,6 +90,10 @@ fn walk(schema: &Value, node: &Value, path: &[String], model: Option<&str>, out:
             walk(schema, branch, path, model, out);
         }
     }
+    // A `[gas]` model's table is the `then` of its `if` on `model` (issue 38.5).
+    if let Some(then) = node.get("then") {
+        walk(schema, then, path, model, out);
+    }
     if let Some(items) = node.get("items") {
         walk(schema, items, &at("[]"), model, out);
     }

@@ -82,26 +82,7 @@ enum Command {
     /// Write the Slurm job scripts that run PATHS as N shards (one job array) and merge them
     /// into OUT (a dependent job): OUT.slurm/run.sbatch, merge.sbatch, submit.sh (see
     /// docs/cluster.md); with --submit, submit them.
-    Slurm {
-        /// Case files, or folders searched recursively for *.toml.
-        #[arg(required = true)]
-        paths: Vec<PathBuf>,
-        /// The number of shards: array tasks.
-        #[arg(long)]
-        shards: usize,
-        /// The merged output folder; the scripts, shards and logs go to OUT.slurm beside it.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// The Slurm partition (#SBATCH --partition).
-        #[arg(long)]
-        partition: Option<String>,
-        /// Each job's time limit (#SBATCH --time, e.g. 30:00 or 2:00:00).
-        #[arg(long)]
-        time: Option<String>,
-        /// Submit the scripts (sbatch) once written.
-        #[arg(long)]
-        submit: bool,
-    },
+    Slurm(SlurmArgs),
     /// Read and validate every case under PATHS without running them.
     Check {
         /// Case files, or folders searched recursively for *.toml.
@@ -122,6 +103,43 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
     },
+}
+
+/// `cardan slurm`'s options.
+#[derive(clap::Args)]
+struct SlurmArgs {
+    /// Case files, or folders searched recursively for *.toml.
+    #[arg(required = true)]
+    paths: Vec<PathBuf>,
+    /// The number of shards: array tasks.
+    #[arg(long)]
+    shards: usize,
+    /// The merged output folder; the scripts, shards and logs go to OUT.slurm beside it.
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// The Slurm partition (#SBATCH --partition).
+    #[arg(long)]
+    partition: Option<String>,
+    /// Each job's time limit (#SBATCH --time, e.g. 30:00 or 2:00:00).
+    #[arg(long)]
+    time: Option<String>,
+    /// The account the jobs are charged to (#SBATCH --account).
+    #[arg(long)]
+    account: Option<String>,
+    /// Each job's memory (#SBATCH --mem, e.g. 4G or 500M; megabytes without a unit).
+    #[arg(long)]
+    mem: Option<String>,
+    /// CPUs of each array task (#SBATCH --cpus-per-task=N); each task then runs
+    /// `cardan run --jobs N`. Default: Slurm's, one CPU a task.
+    #[arg(long, value_name = "N")]
+    cpus_per_task: Option<usize>,
+    /// One more #SBATCH option of both scripts, as sbatch takes it (e.g. --qos=high);
+    /// repeatable. No spaces, quotes or shell metacharacters.
+    #[arg(long, value_name = "OPTION", allow_hyphen_values = true)]
+    sbatch_option: Vec<String>,
+    /// Submit the scripts (sbatch) once written.
+    #[arg(long)]
+    submit: bool,
 }
 
 /// `cardan gear`: 0 the pair works and was written; 1 the file is bad (nothing written) or the
@@ -172,23 +190,21 @@ fn gear(file: &std::path::Path, out: &std::path::Path) -> ExitCode {
 
 /// `cardan slurm`: 0 the scripts were written (and submitted); 1 they could not be (or
 /// `sbatch` failed); 2 a bad option.
-fn slurm(
-    paths: Vec<PathBuf>,
-    shards: usize,
-    out: PathBuf,
-    partition: Option<String>,
-    time: Option<String>,
-    submit: bool,
-) -> ExitCode {
+fn slurm(args: SlurmArgs) -> ExitCode {
     let absolute = |p: &PathBuf| std::path::absolute(p).unwrap_or_else(|_| p.clone());
     let job = cardan::slurm::Job {
         program: std::env::current_exe().unwrap_or_else(|_| "cardan".into()),
-        paths: paths.iter().map(absolute).collect(),
-        out: absolute(&out),
-        shards,
-        partition,
-        time,
+        paths: args.paths.iter().map(absolute).collect(),
+        out: absolute(&args.out),
+        shards: args.shards,
+        partition: args.partition,
+        time: args.time,
+        account: args.account,
+        mem: args.mem,
+        cpus_per_task: args.cpus_per_task,
+        sbatch_options: args.sbatch_option,
     };
+    let (shards, submit) = (job.shards, args.submit);
     if let Err(e) = cardan::slurm::scripts(&job) {
         eprintln!("error: {e}");
         return ExitCode::from(2);
@@ -270,7 +286,9 @@ fn check(paths: &[PathBuf], allow_large: bool) -> (usize, Vec<String>) {
     (valid, failures)
 }
 
-/// A progress bar on stderr, drawn only on a terminal and only once a run has lasted a second.
+/// A progress bar on stderr, drawn only on a terminal and only once a run has lasted a second:
+/// the cases finished and, for progress inside a long case, the steps run so far
+/// (`cardan_runner::progress`), read four times a second by a thread of its own.
 fn progress_bar(quiet: bool) -> indicatif::ProgressBar {
     if quiet {
         return indicatif::ProgressBar::hidden();
@@ -279,18 +297,40 @@ fn progress_bar(quiet: bool) -> indicatif::ProgressBar {
     let bar = indicatif::ProgressBar::hidden();
     bar.set_style(
         indicatif::ProgressStyle::with_template(
-            "{elapsed:>4} [{wide_bar}] {pos}/{len} cases, {eta} left",
+            "{elapsed:>4} [{wide_bar}] {pos}/{len} cases, {msg}",
         )
         .expect("a valid template"),
     );
     let shown = bar.clone();
+    let start = cardan_runner::progress::steps_run();
     std::thread::spawn(move || {
         std::thread::sleep(std::time::Duration::from_secs(1));
         if !shown.is_finished() {
             shown.set_draw_target(indicatif::ProgressDrawTarget::stderr_with_hz(4));
         }
+        while !shown.is_finished() {
+            let steps = cardan_runner::progress::steps_run() - start;
+            shown.set_message(steps_message(steps, shown.position(), shown.eta()));
+            std::thread::sleep(std::time::Duration::from_millis(250));
+        }
     });
     bar
+}
+
+/// The bar's message: the steps run, and the time left once a case has finished (before, the
+/// cases' rate is unknown).
+fn steps_message(steps: u64, cases_done: u64, eta: std::time::Duration) -> String {
+    let steps = match steps {
+        s if s >= 10_000_000 => format!("{:.0} M steps", s as f64 / 1e6),
+        s if s >= 1_000_000 => format!("{:.1} M steps", s as f64 / 1e6),
+        s if s >= 10_000 => format!("{:.0} k steps", s as f64 / 1e3),
+        s => format!("{s} steps"),
+    };
+    if cases_done == 0 {
+        steps
+    } else {
+        format!("{steps}, {} left", indicatif::HumanDuration(eta))
+    }
 }
 
 /// `cardan merge`: the shards' folders `dirs` (and those listed in `from_list`) into `out`;
@@ -429,14 +469,7 @@ fn main() -> ExitCode {
             (report.written.len() + report.sweeps.len(), report.failures)
         }
         Command::Gear { file, out } => return gear(&file, &out),
-        Command::Slurm {
-            paths,
-            shards,
-            out,
-            partition,
-            time,
-            submit,
-        } => return slurm(paths, shards, out, partition, time, submit),
+        Command::Slurm(args) => return slurm(args),
         Command::Merge {
             dirs,
             out,

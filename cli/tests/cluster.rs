@@ -314,6 +314,15 @@ fn slurm_scripts_run_the_shards_and_merge_them_into_one_run() {
         "debug".as_ref(),
         "--time".as_ref(),
         "10:00".as_ref(),
+        "--account".as_ref(),
+        "proj-1".as_ref(),
+        "--mem".as_ref(),
+        "2G".as_ref(),
+        "--cpus-per-task".as_ref(),
+        "2".as_ref(),
+        "--sbatch-option".as_ref(),
+        "--qos=normal".as_ref(),
+        "--sbatch-option=--exclusive".as_ref(),
     ]);
     assert!(written.status.success(), "{written:?}");
     let dir = tmp.path().join("merged.slurm");
@@ -323,7 +332,12 @@ fn slurm_scripts_run_the_shards_and_merge_them_into_one_run() {
         "#SBATCH --array=1-3",
         "#SBATCH --partition=debug",
         "#SBATCH --time=10:00",
-        "--shard \"$SLURM_ARRAY_TASK_ID/3\" --resume",
+        "#SBATCH --account=proj-1",
+        "#SBATCH --mem=2G",
+        "#SBATCH --cpus-per-task=2",
+        "#SBATCH --qos=normal",
+        "#SBATCH --exclusive",
+        "--shard \"$SLURM_ARRAY_TASK_ID/3\" --resume --quiet --jobs 2",
     ] {
         assert!(array.contains(line), "{line:?} not in:\n{array}");
     }
@@ -336,7 +350,13 @@ fn slurm_scripts_run_the_shards_and_merge_them_into_one_run() {
     );
     assert_eq!(list.lines().count(), 3, "{list}");
     assert!(list.lines().nth(2).unwrap().ends_with("shard-3"), "{list}");
-    assert!(merge.contains("#SBATCH --partition=debug"), "{merge}");
+    for line in [
+        "#SBATCH --partition=debug",
+        "#SBATCH --account=proj-1",
+        "#SBATCH --qos=normal",
+    ] {
+        assert!(merge.contains(line), "{line:?} not in:\n{merge}");
+    }
     assert!(
         submit.contains("sbatch --parsable run.sbatch")
             && submit.contains("--dependency=afterany:$array merge.sbatch"),
@@ -385,6 +405,22 @@ fn slurm_scripts_run_the_shards_and_merge_them_into_one_run() {
         "a\n#SBATCH --x".as_ref(),
     ]);
     assert_eq!(bad.status.code(), Some(2), "{bad:?}");
+    let bad = run(&[
+        "slurm".as_ref(),
+        file.as_os_str(),
+        "--shards".as_ref(),
+        "2".as_ref(),
+        "--out".as_ref(),
+        tmp.path().join("x").as_os_str(),
+        "--sbatch-option".as_ref(),
+        "--qos=high; rm -rf ~".as_ref(),
+    ]);
+    assert_eq!(bad.status.code(), Some(2), "{bad:?}");
+    assert!(
+        String::from_utf8_lossy(&bad.stderr).contains("--sbatch-option"),
+        "{bad:?}"
+    );
+    assert!(!tmp.path().join("x.slurm").exists());
 }
 
 /// The output of `program args`, stdout and stderr together, or why it could not run.

@@ -7,6 +7,7 @@
 pub mod memory;
 pub mod output;
 pub mod per_step;
+pub mod progress;
 pub mod run;
 
 pub use run::{run_case, run_paths, Report, RunOptions};

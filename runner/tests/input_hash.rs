@@ -55,12 +55,17 @@ fn leaves(node: &Value, root: &Value, path: &[String], gas: Option<&str>, out: &
     let default = node.get("default").filter(|d| !d.is_null()).cloned();
     let node = resolve(node, root);
     let at = |k: &str| [path, &[k.to_string()]].concat();
-    let gas_branches = node.get("oneOf").and_then(Value::as_array).filter(|b| {
-        b.iter()
-            .all(|b| b["properties"]["model"]["const"].is_string())
-    });
+    let gas_branches = node
+        .get("allOf")
+        .and_then(Value::as_array)
+        .map(|b| b.iter().map(|b| &b["then"]).collect::<Vec<&Value>>())
+        .filter(|b| {
+            !b.is_empty()
+                && b.iter()
+                    .all(|b| b["properties"]["model"]["const"].is_string())
+        });
     if let Some(branches) = gas_branches {
-        // [gas]: a branch per model, `model` its constant.
+        // [gas]: an `if`/`then` per model, `model` a constant in its `then`.
         for branch in branches {
             let model = branch["properties"]["model"]["const"].as_str().unwrap();
             for (k, v) in branch["properties"].as_object().unwrap() {

@@ -4,7 +4,7 @@
 #[test]
 fn generated_tables_match_the_registries() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    for (path, text, fresh) in xtask::regenerate_all(&root).unwrap() {
+    for (path, text, fresh) in xtask_gen::regenerate_all(&root).unwrap() {
         assert!(
             fresh == text,
             "{}'s generated tables are stale: run `cargo xtask readme`",

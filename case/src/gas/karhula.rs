@@ -68,7 +68,7 @@ pub struct KarhulaEngineTable {
     pub reading: KarhulaEngineReading,
 }
 
-/// The engine's reading of the thesis (see `cardan_gas::karhula`).
+/// The engine's reading of the thesis (docs/case-file.md, "Gas").
 #[derive(Debug, Clone, Copy, Default, Deserialize, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum KarhulaEngineReading {

@@ -5,6 +5,7 @@
 use super::sampling::{sampling_warning, shifted_peaks, SAMPLING_CHECK_STEPS_PER_REV};
 use crate::output::MechanismResult;
 use crate::per_step::{ChartSink, ColumnSink, PerStepSink, RunLayout, StepColumns};
+use crate::progress::StepCounter;
 use cardan_case::case::Case;
 use cardan_case::machine_motion::Dynamics;
 use cardan_case::setup::Setup;
@@ -178,19 +179,18 @@ fn run_mechanism(
     };
     let mut columns = matches!(to, StepsTo::Memory)
         .then(|| ColumnSink::new(mechanism, &layout, case.output.decimation, case.steps));
-    // Without files, the charts take their rows on their own, so that the run can be shared.
-    let mut sinks = (
-        summary,
-        (per_step.is_none() && charts).then(|| {
-            ChartSink::new(
-                mechanism,
-                &layout,
-                case.output.decimation,
-                case.steps,
-                label,
-            )
-        }),
-    );
+    // Without files, the charts take their rows on their own, so that the run can be shared;
+    // the steps are counted for the progress display.
+    let chart_sink = (per_step.is_none() && charts).then(|| {
+        ChartSink::new(
+            mechanism,
+            &layout,
+            case.output.decimation,
+            case.steps,
+            label,
+        )
+    });
+    let mut sinks = (summary, (chart_sink, StepCounter));
     // A coarse grid's peaks are checked by the same run on the grid shifted by a third and by
     // two thirds of a step (summaries only).
     let revolutions = (case.end_angle - case.motion.start_angle) / std::f64::consts::TAU;
@@ -200,11 +200,11 @@ fn run_mechanism(
     let mut solved_metrics = Vec::new();
     let mut steps = |gas: Option<GasAt>| {
         if case.dynamics.is_some() {
-            let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0];
+            let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0, &mut sinks.1 .1];
             if let Some(p) = per_step.as_mut() {
                 list.push(p);
             }
-            if let Some(c) = sinks.1.as_mut() {
+            if let Some(c) = sinks.1 .0.as_mut() {
                 list.push(c);
             }
             if let Some(c) = columns.as_mut() {
@@ -249,7 +249,7 @@ fn run_mechanism(
                 &families,
                 gas,
                 &mut stages,
-                &mut [&mut sinks.0, p],
+                &mut [&mut sinks.0, &mut sinks.1 .1, p],
             ),
             None => run_parallel(
                 mechanism,
@@ -269,7 +269,7 @@ fn run_mechanism(
         Ok::<(), String>(())
     };
     let gas_metrics = with_gas(case, mechanism, shift, &mut steps)?;
-    let (summary, chart_rows) = sinks;
+    let (summary, (chart_rows, _)) = sinks;
     let mut summary = finish_summary(case, mechanism, &summary, gas_metrics, &solved_metrics)?;
     push_solved(&mut summary, solved_metrics)?;
     let charts = match per_step {
