@@ -5,23 +5,15 @@
 
 use std::f64::consts::PI;
 
-use crate::error::{positive, require, GearError};
+use crate::error::{require, GearError};
 use crate::materials::LifeCurve;
 
 /// Elasticity factor `Z_E = √(1 / (π [(1 − ν1²)/E1 + (1 − ν2²)/E2]))` \[√Pa\]
-/// (ISO 6336-2:2019 §7, eq. (16)). Steel on steel (206 GPa, 0.3) gives 189.8 √(N/mm²).
+/// (ISO 6336-2:2019 §7, eq. (16)). Steel on steel (206 GPa, 0.3) gives 189.8 √(N/mm²). The
+/// same quantity as AGMA 2001's elastic coefficient `C_p`: one formula,
+/// [`crate::agma::factors::elastic_coefficient`].
 pub fn elasticity_factor(e1: f64, nu1: f64, e2: f64, nu2: f64) -> Result<f64, GearError> {
-    positive("E1", e1)?;
-    positive("E2", e2)?;
-    for (f, nu) in [("nu1", nu1), ("nu2", nu2)] {
-        require(
-            nu.is_finite() && (0.0..0.5).contains(&nu),
-            f,
-            "must lie in [0, 0.5)",
-            nu,
-        )?;
-    }
-    Ok((1.0 / (PI * ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2))).sqrt())
+    crate::agma::factors::elastic_coefficient(e1, nu1, e2, nu2)
 }
 
 /// Zone factor `Z_H = √(2 cos β_b cos α_wt / (cos² α_t sin α_wt))` (ISO 6336-2:2019 §6.1,
