@@ -5,7 +5,9 @@
 //! has its setup, and the run cannot fail setting it up.
 
 use crate::error::{CaseError, Invalid};
-use cardan_dynamics::{Friction, GearRatings, GearSpec, LossBudget, Machine, MachineStage, Stage};
+use cardan_dynamics::{
+    Friction, GearRatings, GearSpec, GearStage, LossBudget, LossStage, Machine, MachineStage, Stage,
+};
 use cardan_mechanism::Mechanism;
 use std::sync::Arc;
 
@@ -72,11 +74,12 @@ impl Setup {
     /// order: the gear ratings, then the loss budget (which takes their mesh losses), then the
     /// machine's balance.
     pub fn stages(&self) -> Vec<Box<dyn Stage>> {
-        let gears = self.gear_ratings.iter().map(|g| g.fork());
-        gears
-            .chain(self.losses.iter().map(|l| l.fork()))
-            .chain([self.balance.fork()])
-            .collect()
+        let t = self.machine.mechanism().topology();
+        let gears = (self.gear_ratings.iter())
+            .map(|g| Box::new(GearStage::new(g.clone(), t)) as Box<dyn Stage>);
+        let losses =
+            (self.losses.iter()).map(|l| Box::new(LossStage::new(l.clone(), t)) as Box<dyn Stage>);
+        gears.chain(losses).chain([self.balance.fork()]).collect()
     }
 }
 

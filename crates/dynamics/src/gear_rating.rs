@@ -21,7 +21,7 @@ use cardan_gears::{
     bending_geometry_factor, pitting_geometry_factor, GearPair, GearSet, IForm, Member, MeshStep,
     Which,
 };
-use cardan_mechanism::{JointKind, Loads, Material, Mechanism, MeshForce, State, C};
+use cardan_mechanism::{Column, JointKind, Loads, Material, Mechanism, MeshForce, State, C};
 
 use crate::loss::{failed, At, Loss, Site};
 use crate::loss_models::{find, Attachment};
@@ -87,16 +87,16 @@ impl MeshRating {
         ]
     }
 
-    /// The rating whose [values](MeshRating::values) `v` are.
-    pub fn from_values(v: &[f64]) -> Self {
+    /// The rating at lane `i` of `columns`, a column per [value](MeshRating::values).
+    pub fn at_lane(columns: &[Column], i: usize) -> Self {
         Self {
-            tooth_load: v[0],
-            dynamic_load: v[1],
-            contact_stress: v[2],
-            contact_safety: v[3],
-            bending_stress: v[4],
-            bending_safety: v[5],
-            loss: v[6],
+            tooth_load: columns[0][i],
+            dynamic_load: columns[1][i],
+            contact_stress: columns[2][i],
+            contact_safety: columns[3][i],
+            bending_stress: columns[4][i],
+            bending_safety: columns[5][i],
+            loss: columns[6][i],
         }
     }
 }

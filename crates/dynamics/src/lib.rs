@@ -59,8 +59,9 @@ pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
 pub use parallel::{run_parallel, run_summary, Joinable};
 pub use reduced_inertia::{reduced_inertia, ReducedInertia, ReducedInertiaOf};
 pub use stage::{
-    Handed, RunTotals, SetupError, Stage, StageColumn, StageError, StageInput, StageTotals,
+    Block, LaneError, PassedOn, RunTotals, SetupError, Stage, StageColumn, StageError, StageTotals,
 };
+pub use stages::{GearStage, LossStage};
 pub use step::{Sink, Step, StepBlock, StepRecord, StepScratch, Steps};
 pub use stepper::{run, GasAt, RunError};
 pub use summary::{summary_chunk, SummarySink, MAX_CHUNK};

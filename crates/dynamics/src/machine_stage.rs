@@ -10,12 +10,11 @@
 //! The run's own train is the mechanism at the machine's crank angle in its own frame: where
 //! that is cylinder 1 ([`Machine::train_is_first`]: every layout but a vee), cylinder 1's
 //! state and loads are the step's own, and its works and losses the run's (so that a machine
-//! of one cylinder has the train's figures bit for bit); every other cylinder is loaded here.
-//! Without `[friction]` the stage evaluates a block at a time from the block's columns
-//! ([`Stage::by_block`]); with it, a step at a time, after the train's loss budget, whose loss
-//! it takes from [`Handed::loss_power`], each other cylinder's losses by a loss budget of its
-//! own (the case's friction at that cylinder's state and loads; a rated mesh's loss computed
-//! by the budget, the same figure as the rating's).
+//! of one cylinder has the train's figures bit for bit); every other cylinder is loaded here,
+//! a block at a time. With `[friction]` the stage comes after the train's loss budget, whose
+//! loss it takes from [`PassedOn::loss_power`], and charges each other cylinder's losses by a
+//! loss budget of its own (the case's friction at that cylinder's state and loads; a rated
+//! mesh's loss computed by the budget, the same figure as the rating's).
 
 use crate::family::{Gas, Inertial, LoadFamily};
 use crate::losses::LossBudget;
@@ -23,10 +22,10 @@ use crate::machine::Machine;
 use crate::machine_totals::{MachineTotals, Places};
 use crate::metrics::{self, MetricDef};
 use crate::stage::{
-    BlockInput, GasAt, Handed, Stage, StageColumn, StageError, StageInput, StageTotals,
+    Block, GasAt, LaneError, PassedOn, Stage, StageColumn, StageError, StageTotals,
 };
 use crate::stepper::Loading;
-use cardan_balance::{shaking, shaking_lane, Shaking};
+use cardan_balance::{shaking_lane, Shaking};
 use cardan_mechanism::{
     Column, CrankState, Loads, LoadsBlock, Mechanism, State, StateBlock, C, LANES,
 };
@@ -136,8 +135,9 @@ impl MachineStage {
     }
 
     /// Every cylinder at the machine's crank angles `cranks` (a lane each) into `room.at`
-    /// (cylinder by cylinder), but the train's where it is cylinder 1 (the caller's).
-    fn load_cylinders(&mut self, gas: Option<GasAt>, lanes: usize) -> Result<(), StageError> {
+    /// (cylinder by cylinder), but the train's where it is cylinder 1 (the caller's); an error
+    /// names the lane of a loss budget that fails.
+    fn load_cylinders(&mut self, gas: Option<GasAt>, lanes: usize) -> Result<(), LaneError> {
         let m: &dyn Mechanism = self.machine.mechanism().as_ref();
         let t = m.topology();
         let n = self.machine.cylinders();
@@ -199,7 +199,7 @@ impl MachineStage {
                     room.parts.resize(budget.names().len(), 0.0);
                     budget
                         .evaluate(&room.state, &room.one, at.pressure, &[], &mut room.parts)
-                        .map_err(StageError::Failed)?;
+                        .map_err(|e| StageError::Failed(e).at_lane(k))?;
                     at.loss = room.parts.iter().sum();
                 }
                 room.at[i * LANES + k] = at;
@@ -283,28 +283,8 @@ impl MachineStage {
     }
 }
 
-/// The train as cylinder 1 at one step, in the machine frame (its axis is the machine's).
-fn train_at(machine: &Machine, input: &StageInput) -> CylinderAt {
-    let total = input.total;
-    let joint = |j: Option<usize>| {
-        j.map_or(C::new(0.0, 0.0), |j| {
-            let l = &total.joints[j];
-            machine.axis(0) * l.force
-        })
-    };
-    CylinderAt {
-        shaking: shaking(machine.mechanism().topology(), input.state),
-        torque: total.crank_torque,
-        main: joint(machine.main_bearing()),
-        pin: joint(machine.crank_pin()),
-        gas_force: input.force.unwrap_or(0.0),
-        pressure: input.pressure,
-        ..CylinderAt::default()
-    }
-}
-
 /// The train as cylinder 1 at lane `i` of the block `input`, from its columns.
-fn train_lane(machine: &Machine, input: &BlockInput, i: usize) -> CylinderAt {
+fn train_lane(machine: &Machine, input: &Block, i: usize) -> CylinderAt {
     let total = input.total;
     let joint = |j: Option<usize>| {
         j.map_or(C::new(0.0, 0.0), |j| {
@@ -328,58 +308,34 @@ impl Stage for MachineStage {
         self.places.width()
     }
 
+    /// Every lane of the block (module note): the train's columns as cylinder 1 where it is.
     fn evaluate(
         &mut self,
-        input: &StageInput,
-        handed: &mut Handed,
-        out: &mut [f64],
-    ) -> Result<(), StageError> {
-        let crank = input.state.crank;
-        let room = self.room();
-        room.cranks.clear();
-        room.cranks.push(crank);
-        self.load_cylinders(input.gas, 1)?;
-        let mut train_loss = 0.0;
-        if self.machine.train_is_first() {
-            let train = train_at(&self.machine, input);
-            self.room.as_mut().expect("room made").at[0] = train;
-            train_loss = handed.loss_power.unwrap_or(0.0);
-        }
-        self.values(0, &crank, train_loss, out);
-        match out.iter().position(|v| !v.is_finite()) {
-            Some(k) => Err(self.not_finite(k, out[k])),
-            None => Ok(()),
-        }
-    }
-
-    fn by_block(&self) -> bool {
-        !self.friction
-    }
-
-    /// Every lane of the block (module note): the train's columns as cylinder 1 where it is.
-    fn evaluate_block(
-        &mut self,
-        input: &BlockInput,
+        input: &Block,
+        passed: &mut PassedOn,
         out: &mut [Column],
-    ) -> Result<(), (usize, StageError)> {
-        let n = input.states.len;
+    ) -> Result<(), LaneError> {
+        let n = input.len;
+        let train_loss = passed.loss_power.as_ref();
         if self.machine.cylinders() == 1 && self.machine.train_is_first() {
-            self.one_cylinder_block(input, out);
+            self.one_cylinder_block(input, train_loss, out);
             return self.check_block(n, out);
         }
         let room = self.room();
         room.cranks.clear();
         room.cranks.extend((0..n).map(|i| input.states.crank.at(i)));
-        self.load_cylinders(input.gas, n).map_err(|e| (0, e))?;
+        self.load_cylinders(input.gas, n)?;
         let mut row = std::mem::take(&mut self.row);
         row.resize(self.width(), 0.0);
         for i in 0..n {
+            let mut loss = 0.0;
             if self.machine.train_is_first() {
                 let train = train_lane(&self.machine, input, i);
                 self.room.as_mut().expect("room made").at[i] = train;
+                loss = train_loss.map_or(0.0, |l| l[i]);
             }
             let crank = input.states.crank.at(i);
-            self.values(i, &crank, 0.0, &mut row);
+            self.values(i, &crank, loss, &mut row);
             for (c, v) in out.iter_mut().zip(&row) {
                 c[i] = *v;
             }
@@ -438,11 +394,12 @@ impl Stage for MachineStage {
 impl MachineStage {
     /// A block of a machine of one cylinder, the run's train (module note): its values from the
     /// train's columns a column at a time, with the operations of [`MachineStage::values`] in
-    /// its order (the same bits) but without gathering each lane's cylinder and row.
+    /// its order (the same bits) but without gathering each lane's cylinder and row;
+    /// `train_loss`: the train's power loss at each lane (with `[friction]`), W.
     // A lane index runs over several columns of `out` and of the inputs at once.
     #[allow(clippy::needless_range_loop)]
-    fn one_cylinder_block(&self, input: &BlockInput, out: &mut [Column]) {
-        let n = input.states.len;
+    fn one_cylinder_block(&self, input: &Block, train_loss: Option<&Column>, out: &mut [Column]) {
+        let n = input.len;
         let p = self.places;
         let m = &*self.machine;
         let t = m.mechanism().topology();
@@ -465,6 +422,15 @@ impl MachineStage {
         }
         for i in 0..n {
             out[Places::TORQUE][i] = 0.0 + total.crank_torque[i];
+        }
+        if self.friction {
+            let speed = &input.states.crank.speed;
+            for i in 0..n {
+                let loss = 0.0 + train_loss.map_or(0.0, |l| l[i]);
+                if speed[i] != 0.0 {
+                    out[Places::TORQUE][i] += loss / speed[i].abs();
+                }
+            }
         }
         for j in 0..p.journals {
             out[p.journal(j)][..n].fill(0.0);
@@ -501,7 +467,7 @@ impl MachineStage {
     }
 
     /// Checks a block's `n` lanes of values `out`: the error of the first value not finite.
-    fn check_block(&self, n: usize, out: &[Column]) -> Result<(), (usize, StageError)> {
+    fn check_block(&self, n: usize, out: &[Column]) -> Result<(), LaneError> {
         // One sum of every value first: a NaN or an infinity makes it so (as the stepper's
         // `all_finite`); only then, or when finite values overflow it, the lanes one by one.
         let sum: f64 = out.iter().map(|c| c[..n].iter().sum::<f64>()).sum();
@@ -510,7 +476,7 @@ impl MachineStage {
         }
         for i in 0..n {
             if let Some(k) = out.iter().position(|c| !c[i].is_finite()) {
-                return Err((i, self.not_finite(k, out[k][i])));
+                return Err(self.not_finite(k, out[k][i]).at_lane(i));
             }
         }
         Ok(())

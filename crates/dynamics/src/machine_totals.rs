@@ -193,24 +193,13 @@ impl StageTotals for MachineTotals {
         stage: usize,
         _previous: Option<f64>,
     ) {
-        let columns = block.stage_columns.get(stage).filter(|c| !c.is_empty());
-        if let Some(c) = columns {
-            let crank = &block.state.crank;
-            let mut steps = [(0, 0.0, 0.0); LANES];
-            for (i, j) in lanes.clone().enumerate() {
-                steps[i] = (block.first + j, crank.angle[j], crank.time[j]);
-            }
-            self.take(&steps[..lanes.len()], |place| &c[place][lanes.clone()]);
-            return;
+        let c = &block.stage_columns[stage];
+        let crank = &block.state.crank;
+        let mut steps = [(0, 0.0, 0.0); LANES];
+        for (i, j) in lanes.clone().enumerate() {
+            steps[i] = (block.first + j, crank.angle[j], crank.time[j]);
         }
-        let steps = block.steps.get(lanes.clone()).unwrap_or_default();
-        for (k, s) in (block.first + lanes.start..).zip(steps) {
-            let crank = &s.state.crank;
-            let v = &s.stages[stage];
-            self.take(&[(k, crank.angle, crank.time)], |place| {
-                &v[place..place + 1]
-            });
-        }
+        self.take(&steps[..lanes.len()], |place| &c[place][lanes.clone()]);
     }
 
     fn close_chunk(&mut self) {

@@ -1,14 +1,17 @@
-//! Per-step stages: what a step computes from its total loads besides the loads themselves
-//! (the loss budget, the gear ratings: their impls are in [`crate::stages`]), behind one trait,
-//! so that the step loop ([`crate::run`]) and the summary ([`crate::SummarySink`]) take any
-//! stage without naming it. A stage evaluates each step, one at a time, into values of its own
-//! ([`crate::Step::stages`]); declares the per-step columns it fills and the summary metrics it
-//! defines (its part of the registry, [`crate::metrics`]); and makes the accumulator that totals
-//! its values into the summary ([`StageTotals`]).
+//! The stage contract: what a run computes from a block's states and total loads besides the
+//! loads themselves (the gear ratings, the loss budget, the whole machine: their impls are in
+//! [`crate::stages`] and [`crate::machine_stage`]), behind one trait, so that the step loop
+//! ([`crate::run`]) and the summary ([`crate::SummarySink`]) take any stage without naming it.
+//! A stage evaluates a whole block at a time from the block's columns into columns of its own
+//! ([`crate::StepBlock::stage_columns`]); declares the per-step columns it fills and the
+//! summary metrics it defines (its part of the registry, [`crate::metrics`]); and makes the
+//! accumulator that totals its values into the summary ([`StageTotals`]). A model that is
+//! written for one state at a time (a loss model, a gear rating) is evaluated lane by lane
+//! inside its stage; the step loop knows one path.
 
 use crate::metrics::{MetricDef, Summary};
 use crate::step::StepBlock;
-use cardan_mechanism::{Column, Loads, LoadsBlock, State, StateBlock};
+use cardan_mechanism::{Column, LoadsBlock, StateBlock};
 use std::any::Any;
 use std::ops::Range;
 
@@ -16,27 +19,32 @@ use std::ops::Range;
 /// that the threads sharing a run ([`crate::run_parallel`]) can all ask it.
 pub type GasAt<'a> = &'a (dyn Fn(f64) -> (f64, f64) + Sync);
 
-/// What a stage evaluates at a step.
+/// A block of consecutive steps as the stages read it: lane `i` of every column is the
+/// block's step `i`. Only the first [`Block::len`] lanes are evaluated: the steps before the
+/// first whose loads are not finite (the run fails there), so that no stage sees a NaN load.
 #[derive(Clone, Copy)]
-pub struct StageInput<'a> {
-    pub state: &'a State,
-    /// The total loads of the step.
-    pub total: &'a Loads,
+pub struct Block<'a> {
+    /// The lanes to evaluate (at most `states.len`).
+    pub len: usize,
+    pub states: &'a StateBlock,
+    /// The total loads of each step.
+    pub total: &'a LoadsBlock,
     /// The inertial family's loads (`None` in a run without one).
-    pub inertial: Option<&'a Loads>,
-    /// Absolute cylinder pressure, Pa, if a gas model runs.
-    pub pressure: Option<f64>,
-    /// The gas force on each piston, N, if a gas model runs.
-    pub force: Option<f64>,
+    pub inertial: Option<&'a LoadsBlock>,
+    /// Absolute cylinder pressure, Pa, and the gas force on each piston, N, at each lane, if a
+    /// gas model runs.
+    pub pressure: Option<&'a Column>,
+    pub force: Option<&'a Column>,
     /// The gas at any crank angle (pressure, force on each piston), if a gas model runs: for a
     /// stage that evaluates the cylinder at other angles (a machine's other cylinders).
     pub gas: Option<GasAt<'a>>,
 }
 
-impl std::fmt::Debug for StageInput<'_> {
+impl std::fmt::Debug for Block<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        f.debug_struct("StageInput")
-            .field("state", self.state)
+        f.debug_struct("Block")
+            .field("len", &self.len)
+            .field("states", self.states)
             .field("total", self.total)
             .field("inertial", &self.inertial)
             .field("pressure", &self.pressure)
@@ -46,28 +54,31 @@ impl std::fmt::Debug for StageInput<'_> {
     }
 }
 
-/// What a step's stages hand on to the stages after them (emptied at every step).
+/// What a block's stages pass on to the stages after them in the run's order, a column per
+/// quantity (emptied at every block).
 #[derive(Debug, Clone, Default)]
-pub struct Handed {
-    /// The loss (W) of each gear-mesh joint a stage has rated at this step, by joint index: a
-    /// later stage that charges the mesh loss takes it as it is, so that it is computed once.
-    pub mesh_losses: Vec<(usize, f64)>,
-    /// The run's train's power loss at this step, W, once its loss budget has taken it: the
+pub struct PassedOn {
+    /// The power loss (W) of each gear-mesh joint a stage has rated, at each lane, by joint
+    /// index: a later stage that charges the mesh loss takes it as it is, so that it is
+    /// computed once.
+    pub mesh_losses: Vec<(usize, Column)>,
+    /// The run's train's power loss at each lane, W, once its loss budget has taken it: the
     /// machine's stage charges it to cylinder 1 ([`crate::MachineStage`]).
-    pub loss_power: Option<f64>,
+    pub loss_power: Option<Column>,
 }
 
-/// What a stage evaluated a block at a time ([`Stage::evaluate_block`]) takes: the block's
-/// states and total loads, and the gas where a gas model runs.
-#[derive(Clone, Copy)]
-pub struct BlockInput<'a> {
-    pub states: &'a StateBlock,
-    pub total: &'a LoadsBlock,
-    /// Absolute cylinder pressure, Pa, and the gas force on each piston, N, at each lane.
-    pub pressure: Option<&'a Column>,
-    pub force: Option<&'a Column>,
-    /// The gas at any crank angle.
-    pub gas: Option<GasAt<'a>>,
+impl PassedOn {
+    /// Empties it for the next block (keeping its allocation).
+    pub fn clear(&mut self) {
+        self.mesh_losses.clear();
+        self.loss_power = None;
+    }
+
+    /// The rated meshes' losses at lane `i` into `out`, by joint index.
+    pub fn mesh_losses_at(&self, i: usize, out: &mut Vec<(usize, f64)>) {
+        out.clear();
+        out.extend(self.mesh_losses.iter().map(|(j, c)| (*j, c[i])));
+    }
 }
 
 /// Why a stage stops the run at a step.
@@ -77,6 +88,20 @@ pub enum StageError {
     Failed(String),
     /// A value is not finite: its name and value.
     NonFinite { quantity: String, value: f64 },
+}
+
+/// A stage's error at a lane of its block: the first lane it fails at, and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LaneError {
+    pub lane: usize,
+    pub error: StageError,
+}
+
+impl StageError {
+    /// This error at lane `lane` of the block.
+    pub fn at_lane(self, lane: usize) -> LaneError {
+        LaneError { lane, error: self }
+    }
 }
 
 /// A stage that cannot be set up for a mechanism (a loss model, a gear pair): the case field at
@@ -101,24 +126,22 @@ pub struct StageColumn {
     pub value: usize,
 }
 
-/// A computation run at every step on the step's state and total loads. Stages are evaluated
-/// in the run's order, one step at a time (a run with such stages gathers its steps from the
-/// columns): a dynamic call per stage and step, beside models that cost far more. A stage that
-/// needs only the block's states and total loads may evaluate a whole block from its columns
-/// instead ([`Stage::by_block`]): a run whose stages all do so, and whose sinks want neither
-/// steps nor details, gathers no step.
+/// A computation run at every block of a run on the block's states and total loads, in the
+/// run's order.
 pub trait Stage: Send + Sync {
     /// The number of values it gives per step.
     fn width(&self) -> usize;
 
-    /// Its values at the step `input` into `out` ([`Stage::width`] of them); `handed` holds what
-    /// the stages before it handed on, and takes what it hands on.
+    /// Its values at the first [`Block::len`] lanes of `block` into `out` (a column per value,
+    /// [`Stage::width`] of them); `passed` holds what the stages before it passed on, and
+    /// takes what it passes on. An error names the first lane it fails at and why: the run
+    /// fails there, and the values from there on are not used (a stage may leave them unset).
     fn evaluate(
         &mut self,
-        input: &StageInput,
-        handed: &mut Handed,
-        out: &mut [f64],
-    ) -> Result<(), StageError>;
+        block: &Block,
+        passed: &mut PassedOn,
+        out: &mut [Column],
+    ) -> Result<(), LaneError>;
 
     /// The per-step columns it fills (the per-step files' names for its values).
     fn columns(&self) -> Vec<StageColumn>;
@@ -138,29 +161,6 @@ pub trait Stage: Send + Sync {
 
     /// A copy for a piece of a run shared by threads, before it takes any step.
     fn fork(&self) -> Box<dyn Stage>;
-
-    /// Whether it evaluates whole blocks ([`Stage::evaluate_block`]) rather than one step at a
-    /// time: a stage that needs only a step's state and total loads, takes nothing handed on
-    /// and hands nothing on.
-    fn by_block(&self) -> bool {
-        false
-    }
-
-    /// For a stage [`by_block`](Stage::by_block): its values at every lane of the block
-    /// `input` into `out` (a column per value,
-    /// [`Stage::width`] of them), the very values [`Stage::evaluate`] gives at each step (the
-    /// same bits). An error names the first lane it fails at and why (its values from there
-    /// on are not used; every lane is evaluated, whatever its inputs, without panicking).
-    fn evaluate_block(
-        &mut self,
-        _input: &BlockInput,
-        _out: &mut [Column],
-    ) -> Result<(), (usize, StageError)> {
-        Err((
-            0,
-            StageError::Failed("the stage evaluates one step at a time".into()),
-        ))
-    }
 }
 
 /// The run's totals a stage's accumulator may refer its metrics to.
@@ -185,8 +185,7 @@ impl RunTotals<'_> {
 /// chunk by chunk ([`crate::summary_chunk`]), and is joined with the accumulators of the later
 /// pieces of a shared run, bit for bit as if it had taken every step.
 pub trait StageTotals: std::fmt::Debug + Send + Sync {
-    /// Takes the stage's values (`block.steps[i].stages[stage]`, or `block.stage_columns[stage]`
-    /// for a stage evaluated [by block](Stage::by_block)) at the lanes `lanes` of `block`
+    /// Takes the stage's values (`block.stage_columns[stage]`) at the lanes `lanes` of `block`
     /// (none of them but the last closing a chunk); `previous` is the time of the step before
     /// them (`None` before the summary's first step).
     fn push_lanes(

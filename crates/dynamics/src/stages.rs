@@ -1,77 +1,131 @@
-//! The per-step stages of a run ([`Stage`]): the gear ratings ([`GearRatings`]) and the loss
-//! budget ([`LossBudget`]), each with the accumulator that totals its values into the summary.
-//! A run takes the ratings before the budget, which charges a rated mesh's loss as the rating
-//! computed it ([`Handed::mesh_losses`]).
+//! The per-step stages of a run ([`Stage`]) around the models written for one state at a time:
+//! the gear ratings ([`GearStage`]) and the loss budget ([`LossStage`]), each evaluated lane
+//! by lane from the block's columns, with the accumulator that totals its values into the
+//! summary. A run takes the ratings before the budget, which charges a rated mesh's loss as
+//! the rating computed it ([`PassedOn::mesh_losses`]).
 
 use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
 use crate::machine::MachineKind;
 use crate::metrics::{self, MetricDef, Summary};
-use crate::stage::{Handed, RunTotals, Stage, StageColumn, StageError, StageInput, StageTotals};
+use crate::stage::{
+    Block, LaneError, PassedOn, RunTotals, Stage, StageColumn, StageError, StageTotals,
+};
 use crate::step::StepBlock;
 use crate::summary::peaks::raise;
 use crate::summary::Integral;
+use cardan_mechanism::{Column, Loads, State, Topology, ZERO};
 use std::any::Any;
 use std::ops::Range;
 
-/// The steps of `block` at `lanes` (none where the run made no steps one at a time) and their
-/// indices in the run, with the values of stage `stage` at each.
-fn stage_steps<'a>(
-    block: &'a StepBlock,
-    lanes: Range<usize>,
-    stage: usize,
-) -> impl Iterator<Item = (usize, f64, &'a [f64])> + 'a {
-    let steps = block.steps.get(lanes.clone()).unwrap_or_default();
-    let indices = block.first + lanes.start..;
-    indices
-        .zip(steps)
-        .map(move |(k, s)| (k, s.state.crank.time, s.stages[stage].as_slice()))
+/// One step of a block gathered from its columns, for a model written for one state at a time.
+#[derive(Debug, Clone)]
+struct LaneRoom {
+    state: State,
+    total: Loads,
+    inertial: Loads,
+}
+
+impl LaneRoom {
+    fn for_topology(topology: &Topology) -> Self {
+        Self {
+            state: State::for_topology(topology),
+            total: Loads::for_topology(topology),
+            inertial: Loads::for_topology(topology),
+        }
+    }
+
+    /// Lane `i` of `block`: its state and total loads, and the inertial family's loads where
+    /// `inertial` (`None` in a run without them).
+    fn take(
+        &mut self,
+        block: &Block,
+        i: usize,
+        inertial: bool,
+    ) -> (&State, &Loads, Option<&Loads>) {
+        block.states.gather(i, &mut self.state);
+        block.total.gather(i, &mut self.total);
+        let family = block.inertial.filter(|_| inertial);
+        if let Some(f) = family {
+            f.gather(i, &mut self.inertial);
+        }
+        let inertial = family.map(|_| &self.inertial);
+        (&self.state, &self.total, inertial)
+    }
 }
 
 /// The loss budget as a stage. Its values at a step: the drive torque that covers the losses,
 /// Σ losses / |ω|, N·m (0 at rest, where the losses are 0 too), then the power loss of each
-/// component ([`LossBudget::names`]), W.
-impl Stage for LossBudget {
+/// component ([`LossBudget::names`]), W. It passes the sum of the losses on
+/// ([`PassedOn::loss_power`]).
+#[derive(Debug, Clone)]
+pub struct LossStage {
+    budget: LossBudget,
+    room: LaneRoom,
+    /// The rated meshes' losses at a lane, W, by joint index.
+    meshes: Vec<(usize, f64)>,
+    /// The components' losses at a lane, W.
+    parts: Vec<f64>,
+}
+
+impl LossStage {
+    /// The stage of `budget`, a loss budget of a mechanism of `topology`.
+    pub fn new(budget: LossBudget, topology: &Topology) -> Self {
+        let parts = vec![0.0; budget.names().len()];
+        Self {
+            budget,
+            room: LaneRoom::for_topology(topology),
+            meshes: Vec::new(),
+            parts,
+        }
+    }
+}
+
+impl Stage for LossStage {
     fn width(&self) -> usize {
-        1 + self.names().len()
+        1 + self.budget.names().len()
     }
 
     fn evaluate(
         &mut self,
-        input: &StageInput,
-        handed: &mut Handed,
-        out: &mut [f64],
-    ) -> Result<(), StageError> {
-        let (torque, losses) = out.split_first_mut().expect("a friction torque");
-        *torque = 0.0;
-        let state = input.state;
-        LossBudget::evaluate(
-            self,
-            state,
-            input.total,
-            input.pressure,
-            &handed.mesh_losses,
-            losses,
-        )
-        .map_err(StageError::Failed)?;
-        let sum: f64 = losses.iter().sum();
-        if !sum.is_finite() {
-            let k = losses.iter().position(|p| !p.is_finite()).unwrap_or(0);
-            return Err(StageError::NonFinite {
-                quantity: format!("power_loss_{}", self.names()[k]),
-                value: losses[k],
-            });
+        block: &Block,
+        passed: &mut PassedOn,
+        out: &mut [Column],
+    ) -> Result<(), LaneError> {
+        let mut power = ZERO;
+        for i in 0..block.len {
+            let (state, total, _) = self.room.take(block, i, false);
+            passed.mesh_losses_at(i, &mut self.meshes);
+            let pressure = block.pressure.map(|p| p[i]);
+            let parts = &mut self.parts;
+            (self.budget)
+                .evaluate(state, total, pressure, &self.meshes, parts)
+                .map_err(|e| StageError::Failed(e).at_lane(i))?;
+            let sum: f64 = parts.iter().sum();
+            if !sum.is_finite() {
+                let k = parts.iter().position(|p| !p.is_finite()).unwrap_or(0);
+                let quantity = format!("power_loss_{}", self.budget.names()[k]);
+                let value = parts[k];
+                return Err(StageError::NonFinite { quantity, value }.at_lane(i));
+            }
+            let speed = state.crank.speed;
+            out[0][i] = if speed != 0.0 { sum / speed.abs() } else { 0.0 };
+            for (c, p) in out[1..].iter_mut().zip(parts.iter()) {
+                c[i] = *p;
+            }
+            power[i] = sum;
         }
-        if state.crank.speed != 0.0 {
-            *torque = sum / state.crank.speed.abs();
-        }
-        handed.loss_power = Some(sum);
+        passed.loss_power = Some(power);
         Ok(())
     }
 
     fn columns(&self) -> Vec<StageColumn> {
         let torque = std::iter::once("friction_torque_nm".to_string());
-        let losses = self.names().iter().map(|c| format!("power_loss_{c}_w"));
+        let losses = self
+            .budget
+            .names()
+            .iter()
+            .map(|c| format!("power_loss_{c}_w"));
         torque
             .chain(losses)
             .enumerate()
@@ -84,10 +138,10 @@ impl Stage for LossBudget {
     }
 
     fn totals(&self) -> Box<dyn StageTotals> {
-        let n = self.names().len();
+        let n = self.budget.names().len();
         Box::new(LossTotals {
-            kind: self.kind(),
-            names: self.names().to_vec(),
+            kind: self.budget.kind(),
+            names: self.budget.names().to_vec(),
             work: vec![Integral::default(); n],
             previous: vec![0.0; n],
             friction_torque: 0.0,
@@ -95,7 +149,7 @@ impl Stage for LossBudget {
     }
 
     fn carries_history(&self) -> bool {
-        LossBudget::carries_history(self)
+        self.budget.carries_history()
     }
 
     fn fork(&self) -> Box<dyn Stage> {
@@ -125,16 +179,20 @@ impl StageTotals for LossTotals {
         previous: Option<f64>,
     ) {
         let (mut started, mut t0) = (previous.is_some(), previous.unwrap_or(0.0));
-        for (k, time, values) in stage_steps(block, lanes, stage) {
+        let (torque, losses) = block.stage_columns[stage]
+            .split_first()
+            .expect("a friction torque");
+        for i in lanes {
+            let (k, time) = (block.first + i, block.state.crank.time[i]);
             let dt = time - t0;
-            let (torque, losses) = values.split_first().expect("a friction torque");
-            for ((w, p0), &p) in self.work.iter_mut().zip(&mut self.previous).zip(losses) {
+            for ((w, p0), c) in self.work.iter_mut().zip(&mut self.previous).zip(losses) {
+                let p = c[i];
                 if started {
                     w.add(k, 0.5 * dt * (p + *p0));
                 }
                 *p0 = p;
             }
-            raise(&mut self.friction_torque, *torque);
+            raise(&mut self.friction_torque, torque[i]);
             (started, t0) = (true, time);
         }
     }
@@ -205,24 +263,50 @@ impl StageTotals for LossTotals {
 }
 
 /// The gear ratings as a stage. Its values at a step: each rated mesh's [`MeshRating`] as its
-/// [values](MeshRating::values); it hands each mesh's loss on to the stages after it.
-impl Stage for GearRatings {
+/// [values](MeshRating::values); it passes each mesh's loss on ([`PassedOn::mesh_losses`]).
+#[derive(Debug, Clone)]
+pub struct GearStage {
+    ratings: GearRatings,
+    room: LaneRoom,
+}
+
+impl GearStage {
+    /// The stage of `ratings`, the ratings of a mechanism of `topology`.
+    pub fn new(ratings: GearRatings, topology: &Topology) -> Self {
+        Self {
+            ratings,
+            room: LaneRoom::for_topology(topology),
+        }
+    }
+}
+
+impl Stage for GearStage {
     fn width(&self) -> usize {
-        MeshRating::WIDTH * self.joints().count()
+        MeshRating::WIDTH * self.ratings.joints().count()
     }
 
     fn evaluate(
         &mut self,
-        input: &StageInput,
-        handed: &mut Handed,
-        out: &mut [f64],
-    ) -> Result<(), StageError> {
-        let ratings = self.ratings(input.state, input.total, input.inertial);
-        let outs = out.chunks_exact_mut(MeshRating::WIDTH);
-        for ((joint, r), out) in ratings.zip(outs) {
-            let r = r.map_err(StageError::Failed)?;
-            out.copy_from_slice(&r.values());
-            handed.mesh_losses.push((joint, r.loss));
+        block: &Block,
+        passed: &mut PassedOn,
+        out: &mut [Column],
+    ) -> Result<(), LaneError> {
+        let first = passed.mesh_losses.len();
+        passed
+            .mesh_losses
+            .extend(self.ratings.joints().map(|joint| (joint, ZERO)));
+        let passed = &mut passed.mesh_losses[first..];
+        for i in 0..block.len {
+            let (state, total, inertial) = self.room.take(block, i, true);
+            let ratings = self.ratings.ratings(state, total, inertial);
+            let outs = out.chunks_exact_mut(MeshRating::WIDTH);
+            for (((_, r), out), (_, loss)) in ratings.zip(outs).zip(passed.iter_mut()) {
+                let r = r.map_err(|e| StageError::Failed(e).at_lane(i))?;
+                for (c, v) in out.iter_mut().zip(r.values()) {
+                    c[i] = v;
+                }
+                loss[i] = r.loss;
+            }
         }
         Ok(())
     }
@@ -231,7 +315,12 @@ impl Stage for GearRatings {
     /// a bending rating.
     fn columns(&self) -> Vec<StageColumn> {
         let mut c = Vec::new();
-        let meshes = self.names().into_iter().zip(self.bending()).enumerate();
+        let ratings = &self.ratings;
+        let meshes = ratings
+            .names()
+            .into_iter()
+            .zip(ratings.bending())
+            .enumerate();
         for (k, (name, bending)) in meshes {
             let at = |value: usize, what: &str| StageColumn {
                 name: format!("{name}_{what}"),
@@ -252,11 +341,9 @@ impl Stage for GearRatings {
 
     fn totals(&self) -> Box<dyn StageTotals> {
         Box::new(GearTotals {
-            contact_ratio: self
-                .contact_ratios()
-                .into_iter()
+            contact_ratio: (self.ratings.contact_ratios().into_iter())
                 .fold(f64::INFINITY, f64::min),
-            bending: self.bending().iter().all(|b| *b),
+            bending: self.ratings.bending().iter().all(|b| *b),
             tooth_load: 0.0,
             dynamic_load: 0.0,
             contact_stress: 0.0,
@@ -302,9 +389,10 @@ impl StageTotals for GearTotals {
         previous: Option<f64>,
     ) {
         let (mut started, mut t0) = (previous.is_some(), previous.unwrap_or(0.0));
-        for (k, time, values) in stage_steps(block, lanes, stage) {
-            let ratings = values.chunks_exact(MeshRating::WIDTH);
-            let ratings = ratings.map(MeshRating::from_values);
+        let meshes = block.stage_columns[stage].chunks_exact(MeshRating::WIDTH);
+        for i in lanes {
+            let (k, time) = (block.first + i, block.state.crank.time[i]);
+            let ratings = meshes.clone().map(|c| MeshRating::at_lane(c, i));
             let loss: f64 = ratings.clone().map(|r| r.loss).sum();
             if started {
                 let dt = time - t0;
@@ -393,11 +481,12 @@ mod tests {
         for entry in MECHANISMS {
             let m = (entry.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
             let mut stages: Vec<Box<dyn Stage>> = Vec::new();
+            let t = m.topology();
             if let Ok(r) = GearRatings::new(&GearSpec::default(), m.as_ref(), None) {
-                stages.push(Box::new(r));
+                stages.push(Box::new(GearStage::new(r, t)));
             }
             let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
-            stages.push(Box::new(budget));
+            stages.push(Box::new(LossStage::new(budget, t)));
             for s in &stages {
                 assert!(
                     s.columns().iter().all(|c| c.value < s.width()),

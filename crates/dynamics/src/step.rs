@@ -43,12 +43,11 @@ pub struct StepBlock<'a> {
     /// Their sum.
     pub total: &'a LoadsBlock,
     /// The same steps one at a time, with the values of the run's stages: made only when a
-    /// sink [wants](Sink::wants_steps) them or [details](Sink::wants_details), or a stage of
-    /// the run evaluates one step at a time (empty otherwise).
+    /// sink [wants](Sink::wants_steps) them or [details](Sink::wants_details) (empty
+    /// otherwise).
     pub steps: &'a [Step<'a>],
-    /// The values of the run's stages that evaluate whole blocks ([`crate::Stage::by_block`]),
-    /// by stage in the run's order: a column per value, lane `i` step `first + i` (empty for a
-    /// stage evaluated one step at a time: its values are in [`StepBlock::steps`]).
+    /// The values of the run's stages, by stage in the run's order: a column per value, lane
+    /// `i` step `first + i`.
     pub stage_columns: &'a [Vec<Column>],
 }
 
@@ -64,8 +63,8 @@ impl StepBlock<'_> {
 
     /// Lane `i` as a step: the run's own, if it made the steps one at a time, else gathered
     /// from the columns into `scratch` (a sink that takes few of a block's steps, without
-    /// [wanting](Sink::wants_steps) them all), with the values of the stages evaluated by
-    /// block; no details then, as a run without steps has none.
+    /// [wanting](Sink::wants_steps) them all), with the values of the stages; no details
+    /// then, as a run without steps has none.
     pub fn step<'s>(&'s self, i: usize, scratch: &'s mut StepScratch) -> Step<'s> {
         if let Some(s) = self.steps.get(i) {
             return *s;
@@ -89,7 +88,6 @@ impl StepBlock<'_> {
         }
         self.total.gather(i, total);
         shares.resize(self.families.len(), vec![0.0; state.bodies.len()]);
-        // Without steps, every stage of the run is evaluated by block.
         stages.resize(self.stage_columns.len(), Vec::new());
         for (values, columns) in stages.iter_mut().zip(self.stage_columns) {
             values.clear();

@@ -1,16 +1,15 @@
 //! The step loop: a motion source gives crank states (a prescribed one a block of
 //! [`LANES`] at a time, straight into the block's columns), the mechanism fills its columns,
-//! each load family its loads' columns, the finiteness of every step is checked, and the block
-//! is handed to the sinks (the summary reads the columns; per-step files and the stages
-//! ([`Stage`]: the losses, the gear ratings) take the steps one at a time, gathered from the
-//! columns only where they are wanted; a stage that can, the machine's balance, evaluates the
-//! whole block from its columns, [`Stage::by_block`]) and then forgotten. Nothing here grows
-//! with the number of steps. [`crate::run_parallel`] shares one run among threads, each piece
-//! through this loop.
+//! each load family its loads' columns, the finiteness of every step is checked, the stages
+//! ([`Stage`]: the gear ratings, the loss budget, the machine) evaluate the block from its
+//! columns into columns of their own, and the block is handed to the sinks (the summary reads
+//! the columns; per-step files take the steps one at a time, gathered from the columns only
+//! where they are wanted) and then forgotten. Nothing here grows with the number of steps.
+//! [`crate::run_parallel`] shares one run among threads, each piece through this loop.
 
 use crate::energy::torque_shares;
 use crate::family::LoadFamily;
-use crate::stage::{BlockInput, Handed, Stage, StageError, StageInput};
+use crate::stage::{Block, LaneError, PassedOn, Stage, StageError};
 use crate::step::{Sink, Step, StepBlock};
 use cardan_mechanism::{
     vectorised, Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
@@ -37,7 +36,7 @@ pub use crate::stage::GasAt;
 
 /// Runs `mechanism` through every crank state of `motion`, with the loads of `families`, the
 /// pistons pushed by `gas` if given, the `stages` evaluated in their order from the total
-/// loads at every step, every step to every sink.
+/// loads at every block, every step to every sink.
 pub fn run(
     mechanism: &dyn Mechanism,
     motion: &mut dyn MotionSource,
@@ -57,11 +56,9 @@ pub fn run(
     let mut loads = vec![LoadsBlock::for_topology(topology); families.len()];
     let mut total = LoadsBlock::for_topology(topology);
     let details = sinks.iter().any(|s| s.wants_details());
-    // The values of the stages that evaluate whole blocks.
-    let mut by_block = BlockValues::new(stages);
-    // The steps one at a time, for the sinks that take them and for the stages that evaluate
-    // one step at a time.
-    let one_by_one = details || !by_block.takes_all() || sinks.iter().any(|s| s.wants_steps());
+    let mut staged = StageValues::new(stages);
+    // The steps one at a time, for the sinks that take them.
+    let one_by_one = details || sinks.iter().any(|s| s.wants_steps());
     let pistons = if gas.is_some() {
         topology.pistons.len()
     } else {
@@ -69,8 +66,6 @@ pub fn run(
     };
     let fresh = StepOut::new(topology, families.len(), pistons, stages);
     let mut out = vec![fresh; if one_by_one { block } else { 0 }];
-    // What each step's stages hand on to the later ones.
-    let mut handed = Handed::default();
     // The allocation of the block's steps, kept from block to block.
     let mut spare: Vec<Step<'static>> = Vec::with_capacity(block);
     let mut previous_torque = None;
@@ -99,49 +94,42 @@ pub fn run(
         let gas_pressure = gas.map(|_| &pressure);
         loading.loads(mechanism, &states, applied, &mut loads, &mut total);
         let total: &LoadsBlock = if loading.several { &total } else { &loads[0] };
-        let clean = loading.all_finite(&states, gas_pressure, &loads, total);
+        // The first step whose loads are not finite, if one is: the run fails there, unless
+        // a stage fails before it.
+        let unclean = match loading.all_finite(&states, gas_pressure, &loads, total) {
+            true => None,
+            false => {
+                let gas = gas.map(|_| (&pressure, &force));
+                loading.first_not_finite(index, &states, gas, &loads, total, mechanism)
+            }
+        };
         if let Some(t) = total.crank_torque[..n].last() {
             previous_torque = Some(*t);
         }
-        let block_input = BlockInput {
+        let input = Block {
+            len: unclean.as_ref().map_or(n, |(lane, _)| *lane),
             states: &states,
             total,
+            inertial: loading.inertial.map(|k| &loads[k]),
             pressure: gas_pressure,
             force: applied,
             gas,
         };
-        by_block.evaluate(stages, &block_input);
-        let failed = by_block.failed();
-        for i in 0..n {
-            let step = index + i;
-            if !clean {
-                let gas = gas.map(|_| (pressure[i], force[i]));
-                loading.check_lane(step, &states, i, gas, &loads, total, mechanism)?;
-            }
-            let Some(o) = out.get_mut(i) else {
-                if let Some(e) = by_block.first_failed_at(i) {
-                    return Err(e.at(step, states.crank.angle[i]));
-                }
-                if clean && !failed {
-                    break;
-                }
-                continue;
-            };
+        if let Some(e) = staged.evaluate(stages, &input) {
+            return Err(e.error.at(index + e.lane, states.crank.angle[e.lane]));
+        }
+        if let Some((_, e)) = unclean {
+            return Err(e);
+        }
+        for (i, o) in out.iter_mut().take(n).enumerate() {
             let lane = Lane {
                 states: &states,
                 i,
                 force: force[i],
-                pressure: gas.map(|_| pressure[i]),
                 loads: &loads,
                 total,
             };
-            let staged = Staged {
-                stages: &mut *stages,
-                by_block: &mut by_block,
-                handed: &mut handed,
-            };
-            o.take(&lane, &loading, mechanism, details, staged)
-                .map_err(|e| e.at(step, o.state.crank.angle))?;
+            o.take(&lane, &loading, mechanism, details, &staged.columns);
         }
         // The block's steps, in an allocation kept from block to block (emptied, it takes
         // steps borrowing this block's results).
@@ -168,7 +156,7 @@ pub fn run(
             families: &loads,
             total,
             steps: &steps,
-            stage_columns: &by_block.columns,
+            stage_columns: &staged.columns,
         };
         for sink in sinks.iter_mut() {
             sink.push_block(&taken)
@@ -235,7 +223,7 @@ pub(crate) struct Loading<'f> {
     /// The families' names, then `total`.
     names: Vec<&'static str>,
     /// The gas, for a stage that evaluates the cylinder at other crank angles (the other
-    /// cylinders of a machine, [`StageInput::gas`]).
+    /// cylinders of a machine, [`Block::gas`]).
     gas: Option<GasAt<'f>>,
 }
 
@@ -306,35 +294,43 @@ impl<'f> Loading<'f> {
             && (!self.together || all_finite(states, None, std::slice::from_ref(total)))
     }
 
-    /// [`check_lane`] on the families' loads, and the total's where it is solved apart.
-    #[allow(clippy::too_many_arguments)]
-    fn check_lane(
+    /// The first lane of the block (whose first step is `first`) at which a quantity
+    /// [`check_finite`] checks is not finite, and the run's error there: [`check_lane`] on the
+    /// families' loads, and the total's where it is solved apart; `gas`: the pressure and
+    /// piston force columns.
+    fn first_not_finite(
         &self,
-        step: usize,
+        first: usize,
         states: &StateBlock,
-        i: usize,
-        gas: Option<(f64, f64)>,
+        gas: Option<(&Column, &Column)>,
         loads: &[LoadsBlock],
         total: &LoadsBlock,
         mechanism: &dyn Mechanism,
-    ) -> Result<(), RunError> {
-        check_lane(step, states, i, gas, &self.names, loads, mechanism)?;
-        if self.together {
-            let total = std::slice::from_ref(total);
-            let names = &self.names[self.families.len()..];
-            check_lane(step, states, i, None, names, total, mechanism)?;
-        }
-        Ok(())
+    ) -> Option<(usize, RunError)> {
+        (0..states.len).find_map(|i| {
+            let step = first + i;
+            let gas = gas.map(|(p, f)| (p[i], f[i]));
+            let families = check_lane(step, states, i, gas, &self.names, loads, mechanism);
+            let together = || {
+                let total = std::slice::from_ref(total);
+                let names = &self.names[self.families.len()..];
+                check_lane(step, states, i, None, names, total, mechanism)
+            };
+            match families {
+                Err(e) => Some((i, e)),
+                Ok(()) if self.together => together().err().map(|e| (i, e)),
+                Ok(()) => None,
+            }
+        })
     }
 }
 
-/// Lane `i` of a block: its states, the gas force on each piston and the pressure there (if a
-/// gas model runs), the families' loads and their total.
+/// Lane `i` of a block: its states, the gas force on each piston there (if a gas model
+/// runs), the families' loads and their total.
 struct Lane<'a> {
     states: &'a StateBlock,
     i: usize,
     force: f64,
-    pressure: Option<f64>,
     loads: &'a [LoadsBlock],
     total: &'a LoadsBlock,
 }
@@ -370,16 +366,15 @@ impl StepOut {
     }
 
     /// Takes `lane` one at a time: gathers its state and loads (with the state's extras and
-    /// the torque shares if `details`), then evaluates the stages on them in turn (the values
-    /// of a stage evaluated by block taken from its columns).
+    /// the torque shares if `details`), and the stages' values from their columns.
     fn take(
         &mut self,
         lane: &Lane,
         loading: &Loading,
         mechanism: &dyn Mechanism,
         details: bool,
-        staged: Staged,
-    ) -> Result<(), StageError> {
+        stage_columns: &[Vec<Column>],
+    ) {
         let topology = mechanism.topology();
         let i = lane.i;
         lane.states.gather(i, &mut self.state);
@@ -408,106 +403,45 @@ impl StepOut {
         if loading.several {
             lane.total.gather(i, &mut self.total);
         }
-        let input = StageInput {
-            state,
-            total: if loading.several {
-                &self.total
-            } else {
-                &self.loads[0]
-            },
-            inertial: loading.inertial.map(|k| &self.loads[k]),
-            pressure: lane.pressure,
-            force: lane.pressure.map(|_| lane.force),
-            gas: loading.gas,
-        };
-        let Staged {
-            stages,
-            by_block,
-            handed,
-        } = staged;
-        handed.mesh_losses.clear();
-        handed.loss_power = None;
-        for (k, (stage, values)) in stages.iter_mut().zip(&mut self.stages).enumerate() {
-            if !by_block.by_block[k] {
-                stage.evaluate(&input, handed, values)?;
-                continue;
-            }
-            if let Some(e) = by_block.failed_at(k, i) {
-                return Err(e);
-            }
-            for (v, c) in values.iter_mut().zip(&by_block.columns[k]) {
+        for (values, columns) in self.stages.iter_mut().zip(stage_columns) {
+            for (v, c) in values.iter_mut().zip(columns) {
                 *v = c[i];
             }
         }
-        Ok(())
     }
 }
 
-/// The run's stages as a step takes them: the stages, the values of those evaluated by block,
-/// what each step's stages hand on to the later ones.
-struct Staged<'a, 's> {
-    stages: &'a mut [&'s mut dyn Stage],
-    by_block: &'a mut BlockValues,
-    handed: &'a mut Handed,
-}
-
-/// The values of the stages that evaluate whole blocks ([`Stage::by_block`]), a column per
-/// value (no columns for a stage evaluated one step at a time), and the first lane each failed
-/// at in the block, with why.
-struct BlockValues {
-    /// Whether each stage is evaluated by block.
-    by_block: Vec<bool>,
+/// The values of the run's stages at a block, a column per value, and what they pass on.
+struct StageValues {
     columns: Vec<Vec<Column>>,
-    errors: Vec<Option<(usize, StageError)>>,
+    passed: PassedOn,
 }
 
-impl BlockValues {
+impl StageValues {
     fn new(stages: &[&mut dyn Stage]) -> Self {
-        let by_block: Vec<bool> = stages.iter().map(|s| s.by_block()).collect();
-        let columns = stages
-            .iter()
-            .zip(&by_block)
-            .map(|(s, &b)| if b { vec![ZERO; s.width()] } else { vec![] })
-            .collect();
         Self {
-            by_block,
-            columns,
-            errors: vec![None; stages.len()],
+            columns: stages.iter().map(|s| vec![ZERO; s.width()]).collect(),
+            passed: PassedOn::default(),
         }
     }
 
-    /// Whether every stage is evaluated by block.
-    fn takes_all(&self) -> bool {
-        self.by_block.iter().all(|&b| b)
-    }
-
-    /// Evaluates the stages by block at `input`.
-    fn evaluate(&mut self, stages: &mut [&mut dyn Stage], input: &BlockInput) {
-        for (k, stage) in stages.iter_mut().enumerate() {
-            self.errors[k] = match self.by_block[k] {
-                true => stage.evaluate_block(input, &mut self.columns[k]).err(),
-                false => None,
-            };
+    /// Evaluates `stages` in the run's order at `block`: the error of the first lane a stage
+    /// fails at, of the first stage in the run's order that fails there (a stage after one
+    /// that failed is evaluated only on the lanes before the failure).
+    fn evaluate(&mut self, stages: &mut [&mut dyn Stage], block: &Block) -> Option<LaneError> {
+        self.passed.clear();
+        let mut first: Option<LaneError> = None;
+        for (stage, out) in stages.iter_mut().zip(&mut self.columns) {
+            let len = first.as_ref().map_or(block.len, |e| e.lane);
+            if len == 0 {
+                break;
+            }
+            let lanes = Block { len, ..*block };
+            if let Err(e) = stage.evaluate(&lanes, &mut self.passed, out) {
+                first = Some(e);
+            }
         }
-    }
-
-    /// Whether a stage failed at a lane of the block.
-    fn failed(&self) -> bool {
-        self.errors.iter().any(Option::is_some)
-    }
-
-    /// Why stage `k` failed at lane `i`, if it did there.
-    fn failed_at(&mut self, k: usize, i: usize) -> Option<StageError> {
-        let error = &mut self.errors[k];
-        match error {
-            Some((lane, _)) if *lane == i => error.take().map(|(_, e)| e),
-            _ => None,
-        }
-    }
-
-    /// Why the first stage in the run's order that failed at lane `i` failed there.
-    fn first_failed_at(&mut self, i: usize) -> Option<StageError> {
-        (0..self.errors.len()).find_map(|k| self.failed_at(k, i))
+        first
     }
 }
 

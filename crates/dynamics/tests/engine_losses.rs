@@ -9,8 +9,8 @@ mod common;
 use cardan_dynamics::engine_losses::{displacement, AMBIENT_PRESSURE};
 use cardan_dynamics::{
     engine_metrics, fmep_breakdown, run, CircularArcCam, EngineLosses, FmepModel, FollowerContact,
-    Friction, Inertial, LoadFamily, LossBudget, Oil, Sink, Solver, Steps, SummarySink, ValveTrain,
-    ValveTrainLoss,
+    Friction, Inertial, LoadFamily, LossBudget, LossStage, Oil, Sink, Solver, Steps, SummarySink,
+    ValveTrain, ValveTrainLoss,
 };
 use cardan_friction::Valvetrain;
 use cardan_mechanism::{CrankMotion, CrankState, Grid, Loads, Material, Mechanism};
@@ -599,7 +599,7 @@ fn run_once(
 ) -> (Vec<cardan_dynamics::StepRecord>, cardan_dynamics::Summary) {
     let inertial = Inertial::new(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 1] = [&inertial];
-    let mut budget = LossBudget::new(friction, m, BORE).unwrap();
+    let mut budget = LossStage::new(LossBudget::new(friction, m, BORE).unwrap(), m.topology());
     let mut summary = SummarySink::new(m, &["inertial"], steps + 1).with_stages(&[&budget]);
     let mut records = Steps::default();
     let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, steps);

@@ -6,8 +6,8 @@
 mod common;
 
 use cardan_dynamics::{
-    run, Attachment, Friction, Gas, Inertial, LoadFamily, LossBudget, Sink, Solver, Steps,
-    SummarySink,
+    run, Attachment, Friction, Gas, Inertial, LoadFamily, LossBudget, LossStage, Sink, Solver,
+    Steps, SummarySink,
 };
 use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::{mesh_loss, Lubricant, MeshGeometry, MeshSpeeds, Reading};
@@ -184,7 +184,8 @@ fn losses_keep_the_energy_books() {
     let inertial = Inertial::new(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
-    let mut budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
+    let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
+    let mut budget = LossStage::new(budget, m.topology());
     let mut summary =
         SummarySink::new(m.as_ref(), &["inertial", "gas"], 7201).with_stages(&[&budget]);
     let mut torque = FrictionTorque::default();

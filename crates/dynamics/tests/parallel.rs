@@ -5,8 +5,8 @@
 mod common;
 
 use cardan_dynamics::{
-    run, run_parallel, Friction, Gas, GearRatings, GearSpec, Inertial, LoadFamily, LossBudget,
-    RunError, Solver, Stage, Summary, SummarySink, MAX_CHUNK,
+    run, run_parallel, Friction, Gas, GearRatings, GearSpec, GearStage, Inertial, LoadFamily,
+    LossBudget, LossStage, RunError, Solver, Stage, Summary, SummarySink, MAX_CHUNK,
 };
 use cardan_mechanism::{CrankMotion, Grid, Material, Mechanism};
 use common::{accelerating_pump, pump_gas, thesis};
@@ -24,11 +24,13 @@ fn summary(
     let inertial = Inertial::new(Solver::ClosedForm);
     let gas_family = Gas(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
-    let mut budget = LossBudget::new(&Friction::karhula(), m, 0.12).unwrap();
+    let budget = LossBudget::new(&Friction::karhula(), m, 0.12).unwrap();
     assert!(!budget.carries_history());
+    let mut budget = LossStage::new(budget, m.topology());
     let mut gears = GearRatings::new(&GearSpec::default(), m, None)
         .ok()
-        .filter(|g| !g.names().is_empty());
+        .filter(|g| !g.names().is_empty())
+        .map(|g| GearStage::new(g, m.topology()));
     // The ratings first: the budget takes their mesh losses.
     let mut stages: Vec<&mut dyn Stage> = Vec::new();
     if let Some(g) = &mut gears {
