@@ -21,6 +21,7 @@ pub mod quantity;
 pub mod read_once;
 pub mod schema;
 pub mod setup;
+pub mod stage_registry;
 pub mod sweep;
 pub mod units;
 mod unread;

@@ -1,29 +1,26 @@
 //! What validation builds for each mechanism's run, kept in the [`crate::Case`] so that the run
-//! takes it instead of building it again: the per-step stages, the gear ratings (with `[gear]`)
-//! and the loss budget (with `[friction]`), each built with the case's friction, as the run
-//! uses them, and the machine's balance (`[layout]`, `[balance]`). Building them is the check that they can be built: a case `cardan check` passes
-//! has its setup, and the run cannot fail setting it up.
+//! takes it instead of building it again: the whole machine (`[layout]`, `[balance]`), its loss
+//! budget (with `[friction]`) and the per-step stages of the registry
+//! ([`crate::stage_registry::STAGES`]), each built with the case's friction, as the run uses
+//! them. Building them is the check that they can be built: a case `cardan check` passes has
+//! its setup, and the run cannot fail setting it up.
 
 use crate::error::{CaseError, Invalid};
-use cardan_dynamics::{
-    Friction, GearRatings, GearSpec, GearStage, LossBudget, LossStage, Machine, MachineStage, Stage,
-};
+use crate::stage_registry::{StageEntry, StageInputs, STAGES};
+use cardan_dynamics::{Friction, GearSpec, LossBudget, Machine, Stage};
 use cardan_mechanism::Mechanism;
 use std::sync::Arc;
 
-/// A mechanism's per-step stages, as validation built them.
+/// A mechanism's machine and per-step stages, as validation built them.
 #[derive(Debug, Clone)]
 pub struct Setup {
-    /// The gear ratings of its meshes (`None` without `[gear]`, or without a gear mesh).
-    pub gear_ratings: Option<GearRatings>,
-    /// Its loss budget (`None` without `[friction]`).
-    pub losses: Option<LossBudget>,
     /// The whole machine of it, built once at validation: every cylinder, the crank's
     /// masses, the balancing devices.
     pub machine: Arc<Machine>,
-    /// The machine's stage: every cylinder's loads, the machine's torque, journal and pin
-    /// loads, its shaking forces and moments.
-    pub balance: MachineStage,
+    /// Its loss budget (`None` without `[friction]`): the stages' and the solved motion's.
+    pub losses: Option<LossBudget>,
+    /// The stages its runs take, each with its registry entry, in the registry's order.
+    pub stages: Vec<(&'static StageEntry, Box<dyn Stage>)>,
     /// What of the case does not apply to this mechanism and is ignored for it, one sentence
     /// each (`[balance] cardan_counterweights` on a mechanism without a cardan wheel): the
     /// run's warnings in `summary.json`.
@@ -49,37 +46,41 @@ impl Setup {
                 &e.rule,
             )
         };
-        let gear_ratings = match gear {
-            Some(spec) => {
-                let ratings = GearRatings::new(spec, mechanism, friction).map_err(failed)?;
-                (!ratings.names().is_empty()).then_some(ratings)
-            }
-            None => None,
-        };
         let losses = match friction {
             Some(f) => Some(LossBudget::new(f, mechanism, bore).map_err(failed)?),
             None => None,
         };
-        let balance = MachineStage::new(Arc::clone(machine.0), machine.1, gas, losses.as_ref());
+        let inputs = StageInputs {
+            machine: machine.0,
+            friction,
+            losses: losses.as_ref(),
+            gear,
+            gas,
+            order_speed: machine.1,
+        };
+        let mut stages = Vec::with_capacity(STAGES.len());
+        for entry in STAGES {
+            if let Some(stage) = (entry.build)(&inputs).map_err(failed)? {
+                stages.push((entry, stage));
+            }
+        }
         Ok(Self {
-            gear_ratings,
             losses,
+            stages,
             notes: machine.0.notes.clone(),
             machine: Arc::clone(machine.0),
-            balance,
         })
     }
 
     /// The stages of a run (a crank train's own copies, their history unset), in the run's
-    /// order: the gear ratings, then the loss budget (which takes their mesh losses), then the
-    /// machine's balance.
+    /// order.
     pub fn stages(&self) -> Vec<Box<dyn Stage>> {
-        let t = self.machine.mechanism().topology();
-        let gears = (self.gear_ratings.iter())
-            .map(|g| Box::new(GearStage::new(g.clone(), t)) as Box<dyn Stage>);
-        let losses =
-            (self.losses.iter()).map(|l| Box::new(LossStage::new(l.clone(), t)) as Box<dyn Stage>);
-        gears.chain(losses).chain([self.balance.fork()]).collect()
+        self.stages.iter().map(|(_, s)| s.fork()).collect()
+    }
+
+    /// Whether its runs take the stage of the registry entry `name`.
+    pub fn has_stage(&self, name: &str) -> bool {
+        self.stages.iter().any(|(e, _)| e.name == name)
     }
 }
 
@@ -159,7 +160,7 @@ pub(crate) fn setups(
         .iter()
         .map(|m| Setup::build((m, speed), bore, tables, invalid))
         .collect::<Result<Vec<_>, _>>()?;
-    if tables.1.is_some() && setups.iter().all(|s| s.gear_ratings.is_none()) {
+    if tables.1.is_some() && !setups.iter().any(|s| s.has_stage("gear_rating")) {
         return Err(invalid(
             "gear",
             &"a [gear] table",

@@ -128,7 +128,7 @@ pub struct StageColumn {
 
 /// A computation run at every block of a run on the block's states and total loads, in the
 /// run's order.
-pub trait Stage: Send + Sync {
+pub trait Stage: std::fmt::Debug + Send + Sync {
     /// The number of values it gives per step.
     fn width(&self) -> usize;
 
@@ -161,6 +161,12 @@ pub trait Stage: Send + Sync {
 
     /// A copy for a piece of a run shared by threads, before it takes any step.
     fn fork(&self) -> Box<dyn Stage>;
+}
+
+impl Clone for Box<dyn Stage> {
+    fn clone(&self) -> Self {
+        self.fork()
+    }
 }
 
 /// The run's totals a stage's accumulator may refer its metrics to.
