@@ -28,6 +28,7 @@ fn physics_crates_do_not_depend_on_the_runner() {
         "friction",
         "balance",
         "metrics",
+        "losses",
     ] {
         let manifest =
             std::fs::read_to_string(root().join(format!("crates/{krate}/Cargo.toml"))).unwrap();
@@ -76,12 +77,33 @@ fn the_report_crate_does_not_depend_on_the_runner() {
         "cardan-gears",
         "cardan-friction",
         "cardan-balance",
+        "cardan-losses",
     ] {
         assert!(
             !manifest.contains(forbidden),
             "report depends on {forbidden}"
         );
     }
+}
+
+/// The crates of `cardan-dynamics`'s jobs point one way: the losses (models, budget, engine
+/// losses, fmep) sit below the step loop and its stages, which evaluate them.
+#[test]
+fn the_loss_crate_sits_below_the_step_loop() {
+    let manifest = std::fs::read_to_string(root().join("crates/losses/Cargo.toml")).unwrap();
+    for forbidden in [
+        "cardan-dynamics",
+        "cardan-case",
+        "cardan-balance",
+        "cardan-runner",
+    ] {
+        assert!(
+            !manifest.contains(forbidden),
+            "crates/losses depends on {forbidden}"
+        );
+    }
+    let dynamics = std::fs::read_to_string(root().join("crates/dynamics/Cargo.toml")).unwrap();
+    assert!(dynamics.contains("cardan-losses"));
 }
 
 /// The lengths of the functions of a Rust file formatted by rustfmt: (name, first line,
@@ -171,6 +193,7 @@ fn no_code_outside_a_mechanism_module_names_a_mechanism() {
     let mut files = Vec::new();
     for dir in [
         "crates/dynamics/src",
+        "crates/losses/src",
         "crates/gas/src",
         "crates/balance/src",
         "case/src",

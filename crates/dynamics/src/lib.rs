@@ -16,20 +16,17 @@
 //! the bodies plus the work done on the gas.
 
 pub mod energy;
-pub mod engine_losses;
 pub mod family;
 pub mod flywheel_sizing;
-pub mod fmep;
 pub mod gear_rating;
-pub mod loss;
-pub mod loss_models;
-pub mod losses;
 pub mod machine;
 pub mod machine_friction;
 pub mod machine_motion;
 pub mod machine_stage;
 pub mod machine_totals;
-pub mod mesh;
+/// The losses, their own crate (the loss models, the budget, engine losses, fmep, the mesh
+/// joint's components): re-exported, so that their paths here stay as they were.
+pub use cardan_losses::{engine_losses, fmep, loss, loss_models, losses, mesh};
 /// The metric registry, its own crate (the reports read it without the physics).
 pub use cardan_metrics as metrics;
 pub mod parallel;
@@ -41,20 +38,17 @@ pub mod step;
 pub mod stepper;
 pub mod summary;
 
-pub use energy::{kinetic_energy, torque_shares};
-pub use engine_losses::{
-    CircularArcCam, EngineLosses, FmepModel, FollowerContact, ValveTrain, ValveTrainGeometry,
-    ValveTrainLoss,
+pub use cardan_losses::{
+    engine_metrics, fmep_breakdown, pnh_engine, radial, tangential, At, Attachment, BearingSize,
+    Bind, CircularArcCam, EngineLosses, FmepModel, FollowerContact, Friction, GearMaterial,
+    GearSpec, Loss, LossBudget, LossModel, Oil, Parameters, Site, ToothLoad, ValveTrain,
+    ValveTrainGeometry, ValveTrainLoss, LOSS_MODELS,
 };
+pub use energy::{kinetic_energy, torque_shares};
 pub use family::{Gas, Inertial, LoadFamily, Solver};
-pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
 pub use gear_rating::{GearRatings, MeshRating};
-pub use loss::{At, Loss, Oil, Parameters, Site};
-pub use loss_models::{Attachment, Bind, LossModel, LOSS_MODELS};
-pub use losses::{BearingSize, Friction, LossBudget};
 pub use machine::{Machine, MachineKind};
 pub use machine_stage::MachineStage;
-pub use mesh::{radial, tangential, GearMaterial, GearSpec, ToothLoad};
 pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
 pub use parallel::{run_parallel, run_summary, Joinable};
 pub use reduced_inertia::{reduced_inertia, ReducedInertia, ReducedInertiaOf};

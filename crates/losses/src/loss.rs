@@ -6,7 +6,7 @@
 
 use crate::engine_losses::FollowerContact;
 use crate::mesh::GearSpec;
-use crate::stage::SetupError;
+use crate::SetupError;
 use cardan_friction::{KARHULA_LOAD_CONSTANT, KARHULA_RING_MU, KARHULA_SKIRT_MU};
 use cardan_mechanism::{Bearings, Loads, Mechanism, State};
 
@@ -119,7 +119,7 @@ pub struct At<'a> {
     pub total: &'a Loads,
     /// Absolute cylinder pressure, Pa, if a gas model runs.
     pub pressure: Option<f64>,
-    /// The loss (W) of each gear-mesh joint a [`crate::GearRatings`] has rated at this step.
+    /// The loss (W) of each gear-mesh joint a `GearRatings` (`cardan-dynamics`) has rated at this step.
     pub rated_meshes: &'a [(usize, f64)],
 }
 

@@ -9,7 +9,7 @@ use crate::engine_losses::{
 };
 use crate::loss::{failed, At, Loss, Site};
 use crate::mesh::{mesh_pair, mesh_speeds, tangential};
-use crate::stage::SetupError;
+use crate::SetupError;
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
     KarhulaRingPack, KeptPower, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel,

@@ -22,9 +22,9 @@ pub mod models;
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
 use crate::loss::{failed, At, Loss, Oil, Parameters, Site};
 use crate::loss_models::{default_model, Attachment, LossModel};
-use crate::machine::MachineKind;
 use crate::mesh::GearSpec;
-use crate::stage::SetupError;
+use crate::MachineKind;
+use crate::SetupError;
 use cardan_friction::KARHULA_SKIRT_MU;
 use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
 
@@ -146,7 +146,7 @@ pub struct LossBudget {
 }
 
 impl LossBudget {
-    /// Pump or engine (module note of [`crate::stages`]: the need or output).
+    /// Pump or engine (the loss stage's totals in `cardan-dynamics`: the need or output).
     pub fn kind(&self) -> MachineKind {
         self.kind
     }
@@ -252,7 +252,7 @@ impl LossBudget {
 
     /// The power loss of each component at `state` under the `total` loads, W, into `out`
     /// (one per name). `pressure` is the absolute cylinder pressure, Pa, if a gas model runs;
-    /// `rated_meshes` the loss (W) of each gear-mesh joint a [`crate::GearRatings`] has rated
+    /// `rated_meshes` the loss (W) of each gear-mesh joint a `GearRatings` (`cardan-dynamics`) has rated
     /// at this step, taken as it is instead of being computed again.
     pub fn evaluate(
         &mut self,

@@ -3,7 +3,7 @@
 //! the gear pair built from the joint's declared pitch radius, ratio, pressure angle and
 //! internal ring with the case's [`GearSpec`] (ISO 21771 through [`cardan_gears::geometry`]).
 
-use crate::stage::SetupError;
+use crate::SetupError;
 use cardan_gears::geometry::{GearPair, PairSpec};
 use cardan_gears::mesh_loss::MeshSpeeds;
 use cardan_mechanism::{JointMotion, State, C};
@@ -165,12 +165,7 @@ pub fn mesh_pair(
 /// The speeds of a mesh joint `joint` whose pinion is on `body` with pitch radius
 /// `pitch_radius` (m): the pinion's absolute angular speed, and the carrier's from the joint's
 /// relative speed, which is the pitch-line speed relative to the carrier.
-pub(crate) fn mesh_speeds(
-    state: &State,
-    joint: usize,
-    body: usize,
-    pitch_radius: f64,
-) -> MeshSpeeds {
+pub fn mesh_speeds(state: &State, joint: usize, body: usize, pitch_radius: f64) -> MeshSpeeds {
     let pinion = state.bodies[body].angular_velocity;
     MeshSpeeds {
         pinion_absolute: pinion,

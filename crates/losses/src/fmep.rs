@@ -9,9 +9,9 @@
 use crate::engine_losses::{displacement, EngineLosses, FmepModel};
 use crate::loss::Oil;
 use crate::losses::Friction;
-use crate::metrics::Summary;
 use cardan_friction::{pnh_fmep, FmepBreakdown, Follower, PnhEngine, PnhVariant, ShaftBearings};
 use cardan_mechanism::{CrankMotion, Mechanism};
+use cardan_metrics::Summary;
 use std::f64::consts::PI;
 
 /// Reference kinematic viscosity ν₀ of the Sandoval & Heywood (2003) viscosity scaling, m²/s:
