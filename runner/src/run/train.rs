@@ -72,7 +72,7 @@ fn run_solved(
     gas: Option<GasAt>,
     stages: &mut [Box<dyn Stage>],
     mut sinks: Vec<&mut dyn Sink>,
-) -> Result<(Vec<(&'static str, f64)>, CycleStarts), String> {
+) -> Result<(Metrics, CycleStarts), String> {
     // The solved motion: its states depend on the run's torques, so one thread takes them one
     // at a time.
     let d: &Dynamics = case.dynamics.as_ref().ok_or("not a solved motion")?;
@@ -119,6 +119,9 @@ fn run_solved(
 
 /// (time s, crank speed rad/s) at the start of every cycle a solved motion ran.
 type CycleStarts = Vec<(f64, f64)>;
+
+/// A solved motion's metrics, by name (SI).
+type Metrics = Vec<(&'static str, f64)>;
 
 /// A train's load families: the bodies' inertia with the masses its crankshaft carries
 /// (`PreparedBalance::crank_masses`), and the gas where the case has one.
