@@ -147,7 +147,7 @@ struct SlurmArgs {
 /// safety factor below `required_safety_factor`, a figure that is not finite). Warnings (rules
 /// of thumb such as undercut) go to stderr whatever the verdict.
 fn gear(file: &std::path::Path, out: &std::path::Path) -> ExitCode {
-    match cardan::gear_file::run(file, out) {
+    match cardan_gear_file::run(file, out) {
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE

@@ -2,7 +2,7 @@
 //! side, `python/cardan/__init__.py`, wraps it): a case (a path, TOML text or a dict in the
 //! case-file schema) read by the case files' own reader (`cardan_case`) and run in memory by the
 //! runner ([`cardan_runner::memory`]), the GIL released while it runs; the standalone gear-pair
-//! rating of `cardan gear` (`cardan::gear_file`). Bad input raises `CaseError` with the
+//! rating of `cardan gear` (`cardan_gear_file`). Bad input raises `CaseError` with the
 //! command line's message (the field's dotted path, the rule, the value); a run that fails
 //! raises `RunError` naming the step and quantity; a panic is caught and raised as
 //! `RunError`, never aborting the interpreter.
@@ -137,8 +137,8 @@ fn gear<'py>(py: Python<'py>, pair: &Bound<'py, PyAny>) -> PyResult<Bound<'py, P
     let file: &Path = &g.file;
     let report = py.detach(|| {
         std::panic::catch_unwind(|| {
-            let input = cardan::gear_file::parse(file, &text).map_err(case_error)?;
-            let report = cardan::gear_file::evaluate(&input).map_err(case_error)?;
+            let input = cardan_gear_file::parse(file, &text).map_err(case_error)?;
+            let report = cardan_gear_file::evaluate(&input).map_err(case_error)?;
             let mut json = report.to_json();
             json["failures"] = report.failures().into();
             json["warnings"] = report.warnings().into();

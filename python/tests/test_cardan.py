@@ -199,7 +199,7 @@ def test_a_case_with_a_sweep_is_refused_by_run():
 
 def test_gear_is_the_published_example():
     # docs/validation/gears.md §2.1: Shigley's Example 14-4 (bending 6417 / 4854 psi,
-    # SF 5.62 / 6.82), as cli/tests/gear_file.rs checks the command's gear.json.
+    # SF 5.62 / 6.82), as crates/gear-file/tests/gear_file.rs checks the command's gear.json.
     path = os.path.join(ROOT, "configs-gears", "shigley-14-4.toml")
     rating = cardan.gear(path)
     assert rating["failures"] == []
@@ -210,7 +210,7 @@ def test_gear_is_the_published_example():
 
     def close(value, printed, half_unit):
         # The printed figure's rounding (half its last digit) plus 0.1 % for the example's
-        # rounded intermediate factors: cli/tests/gear_file.rs's tolerance.
+        # rounded intermediate factors: crates/gear-file/tests/gear_file.rs's tolerance.
         return abs(value - printed) <= half_unit + 1e-3 * abs(printed)
 
     for member, bending, sf in [("pinion", 6417.0, 5.62), ("gear", 4854.0, 6.82)]:

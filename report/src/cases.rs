@@ -614,6 +614,7 @@ pub(super) fn case_report(
     // The charts engineers read first (issue 38), then the rest.
     let mut plots = crate::indicator::indicator_charts(&s, &data);
     plots.extend(crate::crank_speed::crank_speed_charts(&s, &data));
+    plots.extend(crate::crank_speed::crank_speed_time_charts(&s, &data));
     plots.extend(crate::bearing_polar::polar_charts(&s, &data));
     plots.extend(charts(&s, &specs, &data));
     plots.extend(locus_charts(&s, &data));

@@ -77,8 +77,8 @@ pub(crate) fn bearing_loads(h: &[String]) -> Vec<String> {
 
 /// The loci of the header `h`: (key, x column, y column, frame) of each of [`LOCI`] whose
 /// columns it has; of the bearing loads ([`bearing_loads`]) the journals' in both frames and
-/// the crank pins' in the crank's; and each piston's position against the cylinder pressure
-/// (the indicator diagram's, `indicator.rs`).
+/// the crank pins' in the crank's; the crank speed over time; and each piston's position
+/// against the cylinder pressure (the indicator diagram's, `indicator.rs`).
 pub(crate) fn loci(h: &[String]) -> Vec<(String, String, String, Frame)> {
     let has = |c: &str| h.iter().any(|x| x == c);
     let mut out: Vec<(String, String, String, Frame)> = LOCI
@@ -99,6 +99,16 @@ pub(crate) fn loci(h: &[String]) -> Vec<(String, String, String, Frame)> {
             out.push((locus_key(&x, &y), x.clone(), y.clone(), Frame::Machine));
         }
         out.push((crank_key(&x, &y), x, y, Frame::Crank));
+    }
+    // The crank speed over time (`crank_speed.rs`'s `crank_speed_time.svg`).
+    if has("time_s") && has("crank_speed_rad_s") {
+        let key = locus_key("time_s", "crank_speed_rad_s");
+        out.push((
+            key,
+            "time_s".into(),
+            "crank_speed_rad_s".into(),
+            Frame::Machine,
+        ));
     }
     if has("cylinder_pressure_pa") {
         for p in h.iter().filter_map(|c| c.strip_suffix("_dx_dtheta_m_rad")) {

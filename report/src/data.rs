@@ -17,6 +17,9 @@ pub struct MechanismSummary {
     pub joints: Vec<String>,
     /// The gas chamber its piston works on (`summary.json`'s `chamber`), if the case has one.
     pub chamber: Option<Chamber>,
+    /// A solved motion's (time s, crank speed rad/s) at the start of every cycle it ran, the
+    /// reported one's last (`summary.json`'s `cycle_starts`); empty without.
+    pub cycle_starts: Vec<(f64, f64)>,
 }
 
 /// The gas chamber of a crank train (`summary.json`'s `chamber`): V = V_comp + A·(x_TDC − x),
@@ -50,6 +53,17 @@ impl Chamber {
             clearance_volume: num("clearance_volume_m3")?,
             swept_volume: num("swept_volume_m3")?,
         })
+    }
+}
+
+/// `summary.json`'s `cycle_starts` (`time_s` and `crank_speed_rad_s`, of one length) as
+/// (time, speed) pairs; empty where the two lists are not numbers of one length.
+fn cycle_starts(v: &Value) -> Vec<(f64, f64)> {
+    let list =
+        |k: &str| -> Option<Vec<f64>> { v.get(k)?.as_array()?.iter().map(Value::as_f64).collect() };
+    match (list("time_s"), list("crank_speed_rad_s")) {
+        (Some(t), Some(w)) if t.len() == w.len() => t.into_iter().zip(w).collect(),
+        _ => Vec::new(),
     }
 }
 
@@ -199,6 +213,7 @@ pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(Cas
                 units,
                 joints,
                 chamber: m.get("chamber").and_then(Chamber::read),
+                cycle_starts: m.get("cycle_starts").map_or_else(Vec::new, cycle_starts),
             }
         })
         .collect();

@@ -270,6 +270,7 @@ mod tests {
             units: Default::default(),
             joints: Vec::new(),
             chamber: None,
+            cycle_starts: Vec::new(),
         }
     }
 

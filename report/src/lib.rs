@@ -10,7 +10,8 @@
 //!   and losses; a generated "which is better" summary; a loss budget when the summary holds
 //!   friction losses; and charts in `plots/*.svg`: first those engineers read first (issue 38:
 //!   the indicator diagram `pv_diagram.svg` (`indicator.rs`), a dynamic run's `crank_speed.svg`
-//!   with its fluctuation band (`crank_speed.rs`), the bearings' polar load diagrams
+//!   with its fluctuation band and a run-up's `crank_speed_time.svg` over time
+//!   (`crank_speed.rs`), the bearings' polar load diagrams
 //!   `main_bearing_polar.svg` and `crank_pin_polar.svg` (`bearing_polar.rs`)), then over crank
 //!   angle (piston motion, cylinder pressure, drive torques, joint forces, friction).
 //! - [`sweep_report`]: for a sweep folder (`sweep.csv`), the [`KEY_METRICS`] over one swept

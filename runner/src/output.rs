@@ -21,6 +21,10 @@ pub struct MechanismResult {
     /// What the case should know about these results (a grid too coarse for its peaks), said
     /// on stderr and in summary.json and the report.
     pub warnings: Vec<String>,
+    /// A solved motion's (time s, crank speed rad/s) at the start of every cycle it ran, the
+    /// reported one's last (`summary.json`'s `cycle_starts`: the run-up before the reported
+    /// cycle, drawn by the report's `crank_speed_time.svg`); empty for a prescribed motion.
+    pub cycle_starts: Vec<(f64, f64)>,
 }
 
 /// Version of the layout of `summary.json`; raised when a name or the shape changes.
@@ -141,6 +145,10 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
         let mut mechanism = Value::Object(mechanism);
         if let Some(chamber) = chamber_json(case, m) {
             mechanism["chamber"] = chamber;
+        }
+        if !r.cycle_starts.is_empty() {
+            let (time, speed): (Vec<f64>, Vec<f64>) = r.cycle_starts.iter().copied().unzip();
+            mechanism["cycle_starts"] = json!({"time_s": time, "crank_speed_rad_s": speed});
         }
         mechanisms.insert(r.label.clone(), mechanism);
     }

@@ -108,8 +108,10 @@ fn case_charts_are_well_formed_and_draw_their_columns() {
             );
         }
         for name in names {
-            // The indicator diagrams' x is a volume: read back in report_charts.rs.
-            if name.starts_with("pv_diagram") {
+            // The indicator diagrams' x is a volume, and the crank speed over time draws the
+            // cycle starts of summary.json beside the CSV's rows: both read back in
+            // report_charts.rs.
+            if name.starts_with("pv_diagram") || name == "crank_speed_time.svg" {
                 continue;
             }
             let file = plots.join(&name);

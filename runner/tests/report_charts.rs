@@ -1,7 +1,8 @@
 //! The charts engineers read first (issue 38), read back from the SVG and checked against the
 //! CSV rows they claim to draw: the indicator diagram (`pv_diagram.svg`, `pv_diagram_log.svg`)
 //! of every case with a gas chamber, the crank speed with its fluctuation band
-//! (`crank_speed.svg`) of every dynamic run, the polar load diagrams (`main_bearing_polar.svg`,
+//! (`crank_speed.svg`) of every dynamic run and the crank speed over time of a run-up
+//! (`crank_speed_time.svg`), the polar load diagrams (`main_bearing_polar.svg`,
 //! `main_bearing_polar_crank.svg`, `crank_pin_polar.svg`); and every chart's lines told apart by
 //! their dash. Shipped configs of each kind, run in-process with their reports.
 
@@ -289,6 +290,124 @@ fn the_crank_speed_of_a_dynamic_run_is_drawn_with_its_band() {
         }
     }
     assert_eq!(drawn, 4, "two dynamic runs of two mechanisms");
+}
+
+/// A dynamic run that solved cycles before the reported one (`summary.json`'s `cycle_starts`
+/// lists more than one; the motor-driven pump's run-up from rest above all) has its crank speed
+/// over time (`crank_speed_time.svg`): per mechanism the speed at each cycle's start and the
+/// reported cycle's CSV rows over `time_s`, in rpm; its time axis spans the run, from its start
+/// (t = 0, the case file's initial speed) to the reported cycle's last row; a run without
+/// earlier cycles has none.
+#[test]
+fn the_crank_speed_of_a_run_up_is_drawn_over_time() {
+    let mut drawn = Vec::new();
+    for case in CONFIGS {
+        let s = summary(case);
+        let runs: Vec<(String, Vec<f64>, Vec<f64>, f64)> = s["mechanisms"]
+            .as_object()
+            .unwrap()
+            .iter()
+            .filter_map(|(m, v)| {
+                let starts = v.get("cycle_starts")?;
+                let list = |k: &str| -> Vec<f64> {
+                    let a = starts[k].as_array().unwrap();
+                    a.iter().map(|x| x.as_f64().unwrap()).collect()
+                };
+                let mean = v["metrics"]["speed_mean"].as_f64().unwrap();
+                Some((m.clone(), list("time_s"), list("crank_speed_rad_s"), mean))
+            })
+            .filter(|(_, t, _, _)| t.len() > 1)
+            .collect();
+        let Some(text) = chart(case, "crank_speed_time.svg") else {
+            assert!(runs.is_empty(), "{case}: no crank_speed_time.svg");
+            continue;
+        };
+        assert!(
+            !runs.is_empty(),
+            "{case}: a time chart without earlier cycles"
+        );
+        let doc = roxmltree::Document::parse(&text).unwrap();
+        let axes = Axes::of(&doc);
+        let (fx, fy) = factors(&doc);
+        assert_eq!(fx, 1.0, "{case}: seconds");
+        assert!((fy - 60.0 / (2.0 * PI)).abs() < 1e-15, "{case}: rpm");
+        let nodes = series(&doc);
+        assert_eq!(nodes.len(), 2 * runs.len(), "{case}");
+        let mut end = 0.0f64;
+        for (m, times, speeds, mean) in &runs {
+            let label = format!("{case} {m}");
+            let data = read_csv(&out().join(case).join(format!("{m}.csv")));
+            let (t, w) = (&data["time_s"], &data["crank_speed_rad_s"]);
+            let last = t.len() - 1;
+            // The run starts at t = 0; the reported cycle where the last cycle starts, and it
+            // lasts its crank angle over its mean speed, 4π/ω_mean (two revolutions).
+            assert_eq!(times[0], 0.0, "{label}");
+            let n = times.len();
+            assert!(
+                (t[0] - times[n - 1]).abs() <= 1e-9 * t[0],
+                "{label}: {}",
+                t[0]
+            );
+            assert!(
+                (w[0] - speeds[n - 1]).abs() <= 1e-9 * w[0],
+                "{label}: {}",
+                w[0]
+            );
+            let duration = t[last] - t[0];
+            let expected = 4.0 * PI / mean;
+            assert!(
+                (duration - expected).abs() <= 1e-6 * expected,
+                "{label}: {duration} s"
+            );
+            if case == "karhula-pump-motor-runup" {
+                // From rest: the case file's `initial_speed = 0.0`.
+                assert_eq!(speeds[0], 0.0, "{label}");
+                let runup = s["mechanisms"][m]["metrics"]["runup_time"]
+                    .as_f64()
+                    .unwrap();
+                assert!(
+                    runup > 0.0 && runup < t[last],
+                    "{label}: run-up time {runup} s"
+                );
+            }
+            end = end.max(t[last]);
+            let find = |source: &str| {
+                let node = nodes
+                    .iter()
+                    .find(|n| n.attribute("data-source") == Some(source));
+                let node = *node.unwrap_or_else(|| panic!("{label}: no series of {source}"));
+                assert_eq!(node.attribute("data-x-column"), Some("time_s"), "{label}");
+                node
+            };
+            let starts: Vec<(f64, f64)> = times
+                .iter()
+                .zip(speeds)
+                .map(|(a, b)| (*a, b * fy))
+                .collect();
+            let node = find(&format!("summary.json:{m}:cycle_starts"));
+            check_path(&label, node, &starts, &|v| axes.px(v), &|v| axes.py(v));
+            let rows: Vec<(f64, f64)> = t.iter().zip(w).map(|(a, b)| (*a, b * fy)).collect();
+            let node = find(&format!("{m}.csv:crank_speed_rad_s"));
+            check_path(&label, node, &rows, &|v| axes.px(v), &|v| axes.py(v));
+            drawn.push(label);
+        }
+        // The time axis spans the run, from its start to the last row of the latest train (its
+        // ends rounded out to ticks, as every chart's: not more than twice the run).
+        let (lo, hi) = axes.x;
+        assert!(
+            lo <= 0.0 && hi >= end && hi - lo <= 2.0 * end,
+            "{case}: {:?} for {end} s",
+            axes.x
+        );
+    }
+    assert!(
+        drawn
+            .iter()
+            .filter(|l| l.starts_with("karhula-pump-motor-runup "))
+            .count()
+            == 2,
+        "the run-up's two mechanisms: {drawn:?}"
+    );
 }
 
 /// The bearing loads of the `prefix` (`main_bearing_` or `cylinder_`) in a CSV header: the

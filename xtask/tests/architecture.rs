@@ -106,6 +106,90 @@ fn the_loss_crate_sits_below_the_step_loop() {
     assert!(dynamics.contains("cardan-losses"));
 }
 
+/// The packages a package of `lock` (a Cargo.lock) builds, itself included, by name: the closure
+/// of the lock's dependency lists (which also hold dev-dependencies, so the set is if anything
+/// too large: a package missing from it is certainly not built).
+fn built_by(lock: &Path, package: &str) -> std::collections::BTreeSet<String> {
+    let lock: toml::Table = toml::from_str(&std::fs::read_to_string(lock).unwrap()).unwrap();
+    let packages = lock["package"].as_array().unwrap();
+    let dependencies_of = |name: &str| -> Vec<String> {
+        let entry = packages.iter().find(|p| p["name"].as_str() == Some(name));
+        let entry = entry.unwrap_or_else(|| panic!("{name} is not in the lock file"));
+        let listed = entry.get("dependencies").and_then(|d| d.as_array());
+        // An entry is "name" or "name version" when the lock holds two versions.
+        listed
+            .into_iter()
+            .flatten()
+            .map(|d| d.as_str().unwrap().split(' ').next().unwrap().to_string())
+            .collect()
+    };
+    let (mut seen, mut todo) = (std::collections::BTreeSet::new(), vec![package.to_string()]);
+    while let Some(name) = todo.pop() {
+        if seen.insert(name.clone()) {
+            todo.extend(dependencies_of(&name));
+        }
+    }
+    seen
+}
+
+/// The gear file of `cardan gear` is a crate of its own (`crates/gear-file`, issue 37): it
+/// reads, rates and writes a gear pair with `cardan-gears`' physics and never depends on the
+/// command line or the runner, directly (its manifest) or through another crate (the lock file).
+#[test]
+fn the_gear_file_crate_does_not_depend_on_the_command_line_or_the_runner() {
+    let manifest = std::fs::read_to_string(root().join("crates/gear-file/Cargo.toml")).unwrap();
+    for forbidden in [
+        "cardan-runner",
+        "cardan-dynamics",
+        "cardan =",
+        "\ncardan.",
+        "../cli",
+        "../runner",
+    ] {
+        assert!(
+            !manifest.contains(forbidden),
+            "crates/gear-file depends on {forbidden}"
+        );
+    }
+    let built = built_by(&root().join("Cargo.lock"), "cardan-gear-file");
+    assert!(built.contains("cardan-gears"), "{built:?}");
+    for forbidden in ["cardan", "cardan-runner"] {
+        assert!(
+            !built.contains(forbidden),
+            "cardan-gear-file builds {forbidden}: {built:?}"
+        );
+    }
+}
+
+/// The Python package rates gear files through `cardan-gear-file` and runs cases through the
+/// runner; it never builds the command line (`cardan`, with clap, indicatif and the Slurm
+/// scripts), directly or through another crate (python/Cargo.lock, its workspace's own).
+#[test]
+fn the_python_package_does_not_depend_on_the_command_line() {
+    let manifest = std::fs::read_to_string(root().join("python/Cargo.toml")).unwrap();
+    for forbidden in ["cardan =", "\ncardan.", "../cli"] {
+        assert!(
+            !manifest.contains(forbidden),
+            "python depends on {forbidden}"
+        );
+    }
+    let built = built_by(&root().join("python/Cargo.lock"), "cardan-python");
+    assert!(
+        built.contains("cardan-gear-file") && built.contains("cardan-runner"),
+        "{built:?}"
+    );
+    assert!(
+        !built.contains("cardan"),
+        "the Python package builds the command line: {built:?}"
+    );
+    // The measure itself: the command line builds the runner and the gear file's crate.
+    let cli = built_by(&root().join("Cargo.lock"), "cardan");
+    assert!(
+        cli.contains("cardan-runner") && cli.contains("cardan-gear-file"),
+        "{cli:?}"
+    );
+}
+
 /// The lengths of the functions of a Rust file formatted by rustfmt: (name, first line,
 /// lines from `fn` to its closing brace, both counted). A function ends at the first later
 /// line that is its indentation and `}`; a declaration without a body is skipped.
@@ -200,6 +284,7 @@ fn no_code_outside_a_mechanism_module_names_a_mechanism() {
         "runner/src",
         "report/src",
         "cli/src",
+        "crates/gear-file/src",
     ] {
         rust_files(&root().join(dir), &mut files);
     }

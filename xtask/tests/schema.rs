@@ -77,7 +77,7 @@ fn the_schema_refuses_what_the_reader_refuses() {
 
 #[test]
 fn every_shipped_gear_file_validates_against_its_schema() {
-    let validator = jsonschema::validator_for(&cardan::gear_file::gear_file_schema()).unwrap();
+    let validator = jsonschema::validator_for(&cardan_gear_file::gear_file_schema()).unwrap();
     let mut checked = 0;
     for entry in std::fs::read_dir(root().join("configs-gears")).unwrap() {
         let path = entry.unwrap().path();

@@ -62,7 +62,7 @@ pub(crate) struct TrainRows {
 /// the reported one (and the flywheel, if sized) solved first (`dynamic.rs`), then the
 /// reported cycle stepped one state at a time into `sinks`; the friction torque of the
 /// `setup`'s loss budget (with `[friction]`) among the motion's torques; returns the motion's
-/// metrics.
+/// metrics and its cycles' starts ([`MechanismResult::cycle_starts`]).
 #[allow(clippy::too_many_arguments)]
 fn run_solved(
     case: &Case,
@@ -72,7 +72,7 @@ fn run_solved(
     gas: Option<GasAt>,
     stages: &mut [Box<dyn Stage>],
     mut sinks: Vec<&mut dyn Sink>,
-) -> Result<Vec<(&'static str, f64)>, String> {
+) -> Result<(Metrics, CycleStarts), String> {
     // The solved motion: its states depend on the run's torques, so one thread takes them one
     // at a time.
     let d: &Dynamics = case.dynamics.as_ref().ok_or("not a solved motion")?;
@@ -114,8 +114,14 @@ fn run_solved(
         &mut sinks,
     )
     .map_err(|e| e.to_string())?;
-    Ok(solved.metrics)
+    Ok((solved.metrics, solved.cycles.starts))
 }
+
+/// (time s, crank speed rad/s) at the start of every cycle a solved motion ran.
+type CycleStarts = Vec<(f64, f64)>;
+
+/// A solved motion's metrics, by name (SI).
+type Metrics = Vec<(&'static str, f64)>;
 
 /// A train's load families: the bodies' inertia with the masses its crankshaft carries
 /// (`PreparedBalance::crank_masses`), and the gas where the case has one.
@@ -150,7 +156,7 @@ fn run_mechanism(
     shift: f64,
     label: &str,
     to: StepsTo,
-) -> Result<(Summary, Vec<String>, TrainRows), String> {
+) -> Result<(Summary, Vec<String>, CycleStarts, TrainRows), String> {
     let own = TrainFamilies::of(case, setup);
     let families = own.list();
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
@@ -198,6 +204,7 @@ fn run_mechanism(
     let check_sampling = per_rev < SAMPLING_CHECK_STEPS_PER_REV && case.dynamics.is_none();
     let mut shifted = Vec::new();
     let mut solved_metrics = Vec::new();
+    let mut cycle_starts = Vec::new();
     let mut steps = |gas: Option<GasAt>| {
         if case.dynamics.is_some() {
             let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0, &mut sinks.1 .1];
@@ -210,7 +217,7 @@ fn run_mechanism(
             if let Some(c) = columns.as_mut() {
                 list.push(c);
             }
-            solved_metrics = run_solved(
+            (solved_metrics, cycle_starts) = run_solved(
                 case,
                 (mechanism, setup),
                 shift,
@@ -289,7 +296,7 @@ fn run_mechanism(
         charts,
         columns: columns.map(ColumnSink::finish),
     };
-    Ok((summary, warnings, rows))
+    Ok((summary, warnings, cycle_starts, rows))
 }
 
 /// Runs `steps` with the case's gas, if any, as the chamber's pressure at the first train's
@@ -435,7 +442,7 @@ pub(crate) fn run_trains(
         .map(|(m, setup, shift, label)| {
             #[cfg(feature = "test-hooks")]
             test_hooks::panic_if_asked(case);
-            let (summary, warnings, rows) =
+            let (summary, warnings, cycle_starts, rows) =
                 run_mechanism(case, m.as_ref(), setup, *shift, label, to).map_err(|e| {
                     format!(
                         "{}: case \"{}\": {label}: {e}",
@@ -455,6 +462,7 @@ pub(crate) fn run_trains(
                 label: label.clone(),
                 summary,
                 warnings,
+                cycle_starts,
             };
             Ok((result, rows))
         })

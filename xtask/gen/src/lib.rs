@@ -255,7 +255,7 @@ pub fn schemas() -> Vec<(&'static str, String)> {
         ),
         (
             "schema/gear-file.schema.json",
-            text(cardan::gear_file::gear_file_schema()),
+            text(cardan_gear_file::gear_file_schema()),
         ),
     ]
 }

@@ -2,8 +2,8 @@
 //! `docs/validation/gears.md` §1.2), the interfering 20/40 internal pair, the shipped examples in
 //! `configs-gears/`, bad files and the output folder.
 
-use cardan::gear_file::{evaluate, load, parse, run, GearReport};
 use cardan_case::units::{to_si, Dimension};
+use cardan_gear_file::{evaluate, load, parse, run, GearReport};
 use cardan_gears::units::{INCH, LBF, PSI};
 use cardan_testing::mentions;
 use serde_json::Value;
@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 fn shipped(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../configs-gears")
+        .join("../../configs-gears")
         .join(name)
 }
 
@@ -410,8 +410,9 @@ fn output_folder_is_replaced_as_a_whole() {
 }
 
 /// Issue 22, reproducer r07: 200 kW through a 3 mm, 20/40, 30 mm-wide pair, SF ≈ 0.1 by hand
-/// (the computation is in the file).
-const OVERLOADED: &str = include_str!("reproducers/r07-gear-overloaded.toml");
+/// (the computation is in the file; one copy, beside the command's reproducers that
+/// `cli/tests/gear.rs` runs through `cardan gear`).
+const OVERLOADED: &str = include_str!("../../../cli/tests/reproducers/r07-gear-overloaded.toml");
 
 #[test]
 fn overloaded_pair_fails_its_verdict_naming_the_safety_factors_and_the_remedy() {
@@ -585,7 +586,7 @@ fn a_bare_module_meant_in_millimetres_is_refused() {
 /// them).
 #[test]
 fn every_shipped_gear_file_reads() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs-gears");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs-gears");
     let mut read = 0;
     for entry in std::fs::read_dir(&dir).unwrap() {
         let file = entry.unwrap().path();
@@ -646,7 +647,7 @@ fn a_misspelled_field_names_its_path_and_the_nearest_name() {
 /// The gear file's JSON Schema names every table and says which fields are required.
 #[test]
 fn the_gear_file_schema_lists_the_fields() {
-    let schema = cardan::gear_file::gear_file_schema();
+    let schema = cardan_gear_file::gear_file_schema();
     let required = schema["required"].as_array().unwrap();
     for field in ["name", "pressure_angle", "teeth"] {
         assert!(required.iter().any(|r| r == field), "{field}: {schema}");
@@ -667,7 +668,7 @@ fn the_gear_file_schema_lists_the_fields() {
 /// its `[gear]` table `gear`; the error of reading it as a case file, if any.
 fn case_error_of(gear: &str) -> Option<String> {
     let text = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/karhula-r60-l140-a0-w3pi.toml"),
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../configs/karhula-r60-l140-a0-w3pi.toml"),
     )
     .unwrap();
     let text = format!("{text}\n[gear]\nteeth = 20\n{gear}\n");
@@ -826,7 +827,7 @@ fn j_is_computed_when_not_given_and_the_report_says_how() {
         computed.rating.unwrap().unwrap(),
     );
     assert_eq!(g.j, [0.30, 0.40]);
-    assert!(matches!(g.j_source[0], cardan::gear_file::JSource::Given));
+    assert!(matches!(g.j_source[0], cardan_gear_file::JSource::Given));
     for k in 0..2 {
         let ratio = c.bending_stress[k] / g.bending_stress[k];
         assert!((ratio - g.j[k] / c.j[k]).abs() < 1e-12, "{ratio}");

@@ -1,7 +1,7 @@
 //! Gear files: one spur pair (external or internal, any ratio) in a TOML file → the ISO 21771
 //! geometry, the interference checks with their margins and remedies and, when a `[rating]`
 //! table is given, the AGMA 2001-D04 stresses and safety factors → `DIR/<name>/gear.json` and
-//! `DIR/<name>/report.md`. The physics is `cardan-gears`'; this module reads, validates and
+//! `DIR/<name>/report.md`. The physics is `cardan-gears`'; this crate reads, validates and
 //! writes (see docs/gear-calculator.md).
 //!
 //! Values take units as case files do, from the one table of [`cardan_case::units`]: a bare number
@@ -33,12 +33,12 @@ pub use validated::*;
 
 /// Reads and validates one gear file.
 pub fn load(file: &Path) -> Result<GearFile, GearFileError> {
-    let limit = cardan_report::files::GEAR_FILE;
-    let text =
-        cardan_report::files::read_text(file, limit).map_err(|source| GearFileError::Io {
+    let text = cardan_files::read_text(file, cardan_files::GEAR_FILE).map_err(|source| {
+        GearFileError::Io {
             file: file.into(),
             source,
-        })?;
+        }
+    })?;
     parse(file, &text)
 }
 

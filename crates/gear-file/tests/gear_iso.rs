@@ -1,7 +1,7 @@
 //! Gear files with named materials, the ISO 6336 rating beside AGMA's (and as the verdict's
 //! basis), and the `[measurement]` table.
 
-use cardan::gear_file::{evaluate, parse, GearReport};
+use cardan_gear_file::{evaluate, parse, GearReport};
 use cardan_gears::units::PSI;
 use serde_json::Value;
 use std::path::Path;
@@ -9,7 +9,7 @@ use std::path::Path;
 fn shipped(name: &str) -> String {
     std::fs::read_to_string(
         Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../configs-gears")
+            .join("../../configs-gears")
             .join(name),
     )
     .unwrap()
