@@ -153,7 +153,7 @@ impl Layout {
         crank: &CrankState,
     ) -> MachineShaking {
         let axis = |i: usize| C::from_polar(1.0, self.cylinders[i].axis_angle);
-        self.sum_by(axis, per_cylinder, rotors, crank)
+        self.sum_about(self.reference(), axis, per_cylinder, rotors, crank)
     }
 
     /// Each cylinder's axis direction e^{iβ}, which [`Layout::sum`] turns its shaking by.
@@ -172,12 +172,14 @@ impl Layout {
         rotors: &[Rotor],
         crank: &CrankState,
     ) -> MachineShaking {
-        self.sum_by(|i| axes[i], per_cylinder, rotors, crank)
+        self.sum_about(self.reference(), |i| axes[i], per_cylinder, rotors, crank)
     }
 
-    /// [`Layout::sum`], cylinder i's axis direction `axis(i)`.
-    fn sum_by(
+    /// [`Layout::sum`], cylinder i's axis direction `axis(i)`, the moments about the plane
+    /// `z0` (m; [`Layout::reference`], found once by a caller that sums at every step).
+    pub fn sum_about(
         &self,
+        z0: f64,
         axis: impl Fn(usize) -> C,
         per_cylinder: impl ExactSizeIterator<Item = Shaking>,
         rotors: &[Rotor],
@@ -188,7 +190,6 @@ impl Layout {
             self.cylinders.len(),
             "one shaking per cylinder"
         );
-        let z0 = self.reference();
         let mut out = MachineShaking::default();
         let mut add = |force: C, z: f64| {
             out.force += force;

@@ -183,6 +183,7 @@ impl MachineBalance {
         Ok(PreparedBalance {
             mechanism,
             axes: self.layout.axes(),
+            reference: self.layout.reference(),
             layout: self.layout.clone(),
             rotors,
             carried,
@@ -254,6 +255,8 @@ pub struct PreparedBalance {
     carried: C,
     /// The cylinders' axis directions ([`Layout::axes`]), made once.
     axes: Vec<C>,
+    /// The plane the moments are taken about ([`Layout::reference`]), m, found once.
+    reference: f64,
 }
 
 impl PreparedBalance {
@@ -304,8 +307,8 @@ impl PreparedBalance {
                 shaking_lane(t, block, 0)
             }
         });
-        self.layout
-            .sum_on(&self.axes, per_cylinder, &self.rotors, crank)
+        let (axes, z0) = (&self.axes, self.reference);
+        (self.layout).sum_about(z0, |i| axes[i], per_cylinder, &self.rotors, crank)
     }
 
     /// The machine's shaking at `crank` from each cylinder's own (`per_cylinder[i]`, in its
@@ -315,8 +318,8 @@ impl PreparedBalance {
         per_cylinder: impl ExactSizeIterator<Item = Shaking>,
         crank: &CrankState,
     ) -> MachineShaking {
-        self.layout
-            .sum_on(&self.axes, per_cylinder, &self.rotors, crank)
+        let (axes, z0) = (&self.axes, self.reference);
+        (self.layout).sum_about(z0, |i| axes[i], per_cylinder, &self.rotors, crank)
     }
 
     /// [`PreparedBalance::at`] the state `state` of cylinder 1 (a whole step).
