@@ -282,6 +282,16 @@ fn check(paths: &[PathBuf], allow_large: bool) -> (usize, Vec<String>) {
             Err(e) => failures.push(e.to_string()),
         }
     }
+    for o in &batch.optimizations {
+        println!(
+            "valid   {} (an optimisation of {} over {} variable(s)) ({})",
+            o.name,
+            o.mechanisms.join(", "),
+            o.variables.len(),
+            o.file.display()
+        );
+        valid += 1;
+    }
     println!("{valid} case(s) valid, {} failed", failures.len());
     (valid, failures)
 }

@@ -46,6 +46,7 @@ mod bearing_polar;
 mod case_plots;
 mod cases;
 mod chart_columns;
+mod convergence;
 mod crank_speed;
 mod data;
 mod doc;
@@ -62,6 +63,7 @@ mod svg;
 mod sweeps;
 mod thinning;
 
+pub use convergence::{convergence_chart, Convergence};
 pub use envelope::{ChartData, ChartRecorder, Envelope, Trace};
 pub use rows::{row_count, ChartRows, MAX_CHART_ROWS};
 pub use svg::MAX_POINTS;
