@@ -165,7 +165,7 @@ fn feasible_objective(o: &Optimization, m: &MechanismOptimum, values: &[Option<f
 fn the_thesis_pump_optimum_beats_a_coarse_sweep_and_its_perturbations() {
     const TOLERANCE: f64 = 1e-5;
     let text = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/optimize-thesis-pump.toml"),
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs-optimize/thesis-pump.toml"),
     )
     .unwrap();
     let text = text.replace("steps = 360", "steps = 90");
