@@ -22,7 +22,8 @@ use schemars::JsonSchema;
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
-/// `[optimize]` as written.
+/// `[optimize]`: each mechanism at its best, a design optimisation of the case's fields under
+/// constraints on its summary metrics (docs/optimisation.md).
 #[derive(Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct OptimizeTable {
@@ -140,7 +141,11 @@ impl Constraint {
     /// The margin relative to the bound's size (|bound|, or 1 in the metric's unit for a bound
     /// of 0): commensurate margins for the search's total violation.
     pub fn relative_margin(&self, value: f64) -> f64 {
-        let scale = if self.bound == 0.0 { 1.0 } else { self.bound.abs() };
+        let scale = if self.bound == 0.0 {
+            1.0
+        } else {
+            self.bound.abs()
+        };
         self.margin(value) / scale
     }
 }
@@ -168,7 +173,13 @@ pub struct Optimization {
     pub tolerance: f64,
 }
 
-fn invalid(file: &Path, case: &str, field: &str, value: &dyn std::fmt::Display, rule: &str) -> CaseError {
+fn invalid(
+    file: &Path,
+    case: &str,
+    field: &str,
+    value: &dyn std::fmt::Display,
+    rule: &str,
+) -> CaseError {
     CaseError::Invalid {
         file: file.into(),
         case: case.to_string(),
@@ -185,8 +196,19 @@ fn dimension_of(unit: &str) -> Option<Dimension> {
         return Some(Number);
     }
     [
-        Length, AngularSpeed, AngularAcceleration, Mass, Inertia, MassRadius, Pressure, Force,
-        Power, Torque, Density, KinematicViscosity, SpecificEnergy,
+        Length,
+        AngularSpeed,
+        AngularAcceleration,
+        Mass,
+        Inertia,
+        MassRadius,
+        Pressure,
+        Force,
+        Power,
+        Torque,
+        Density,
+        KinematicViscosity,
+        SpecificEnergy,
     ]
     .into_iter()
     .find(|d| d.default_unit() == unit)
@@ -230,7 +252,9 @@ fn metric(name: &str, computed: &Computed) -> Result<&'static metrics::MetricDef
         });
     };
     match needs(def, computed) {
-        Some(why) => Err(format!("\"{name}\" is {why}: this case does not compute it")),
+        Some(why) => Err(format!(
+            "\"{name}\" is {why}: this case does not compute it"
+        )),
         None => Ok(def),
     }
 }
@@ -266,27 +290,41 @@ fn number_and_unit(v: &toml::Value) -> Option<(f64, String)> {
 
 /// One variable's range, or the rule it breaks.
 fn variable(path: &str, range: &toml::Value, swept: &[String]) -> Result<Variable, String> {
-    if path == "name" || path.starts_with("optimize") || path.starts_with("sweep") || !path.contains('.') {
+    if path == "name"
+        || path.starts_with("optimize")
+        || path.starts_with("sweep")
+        || !path.contains('.')
+    {
         return Err("vary a field by its dotted path, e.g. \"geometry.rod_length\" (not name, sweep or optimize)".into());
     }
     if path.starts_with("mechanisms") || path.contains(['[', ']']) {
-        return Err("a list or an item of one cannot be varied: vary a numeric field by its dotted path".into());
+        return Err(
+            "a list or an item of one cannot be varied: vary a numeric field by its dotted path"
+                .into(),
+        );
     }
     if swept.iter().any(|s| s == path) {
-        return Err("is also swept in [sweep]: a field is either swept or optimised; remove it from one".into());
+        return Err(
+            "is also swept in [sweep]: a field is either swept or optimised; remove it from one"
+                .into(),
+        );
     }
     let ends = match range {
         toml::Value::Array(ends) if ends.len() == 2 => ends,
         _ => return Err("must be a range [lower, upper]: two numbers, or two strings with one unit (\"100 mm\")".into()),
     };
-    let (Some((lower, unit)), Some((upper, unit_upper))) = (number_and_unit(&ends[0]), number_and_unit(&ends[1])) else {
+    let (Some((lower, unit)), Some((upper, unit_upper))) =
+        (number_and_unit(&ends[0]), number_and_unit(&ends[1]))
+    else {
         return Err("the range's ends must be numbers, or strings with a unit (\"100 mm\")".into());
     };
     if !(lower.is_finite() && upper.is_finite()) {
         return Err("the range's ends must be finite numbers".into());
     }
     if unit != unit_upper {
-        return Err(format!("the range's ends must have the same unit (\"{unit}\" and \"{unit_upper}\")"));
+        return Err(format!(
+            "the range's ends must have the same unit (\"{unit}\" and \"{unit_upper}\")"
+        ));
     }
     if lower >= upper {
         return Err(format!("the range is empty: its lower end must be below its upper end (write [{upper}, {lower}] if they were swapped)"));
@@ -335,13 +373,20 @@ impl Optimization {
         let Some(spec) = table.remove("optimize") else {
             return Ok(None);
         };
-        let name = table.get("name").and_then(|n| n.as_str()).unwrap_or("(unnamed)").to_string();
-        let fail = |field: &str, value: &dyn std::fmt::Display, rule: &str| invalid(file, &name, field, value, rule);
-        let raw: OptimizeTable = crate::schema::read(spec, "optimize").map_err(|error| CaseError::Field {
-            file: file.into(),
-            case: name.clone(),
-            error,
-        })?;
+        let name = table
+            .get("name")
+            .and_then(|n| n.as_str())
+            .unwrap_or("(unnamed)")
+            .to_string();
+        let fail = |field: &str, value: &dyn std::fmt::Display, rule: &str| {
+            invalid(file, &name, field, value, rule)
+        };
+        let raw: OptimizeTable =
+            crate::schema::read(spec, "optimize").map_err(|error| CaseError::Field {
+                file: file.into(),
+                case: name.clone(),
+                error,
+            })?;
         let swept: Vec<String> = match table.get("sweep") {
             Some(toml::Value::Table(s)) => s.keys().filter(|k| *k != "mode").cloned().collect(),
             _ => Vec::new(),
@@ -351,31 +396,56 @@ impl Optimization {
         }
         let mut variables = Vec::new();
         for (path, range) in &raw.variables {
-            let v = variable(path, range, &swept).map_err(|rule| fail(&format!("optimize.variables.\"{path}\""), range, &rule))?;
+            let v = variable(path, range, &swept)
+                .map_err(|rule| fail(&format!("optimize.variables.\"{path}\""), range, &rule))?;
             variables.push(v);
         }
         if table.contains_key("sweep") {
             return Err(fail("sweep", &"a [sweep] table", "a case file with [optimize] cannot also sweep: the optimisation varies its own fields; sweep from a case file of its own"));
         }
         let base_case = case_of_table(file, table.clone())?;
-        let computed = Computed::of(&base_case.gas, &base_case.friction, &base_case.gear, &base_case.dynamics);
-        let objective = metric(&raw.objective, &computed).map_err(|rule| fail("optimize.objective", &format!("\"{}\"", raw.objective), &rule))?;
+        let computed = Computed::of(
+            &base_case.gas,
+            &base_case.friction,
+            &base_case.gear,
+            &base_case.dynamics,
+        );
+        let objective = metric(&raw.objective, &computed).map_err(|rule| {
+            fail(
+                "optimize.objective",
+                &format!("\"{}\"", raw.objective),
+                &rule,
+            )
+        })?;
         let mut constraints = Vec::new();
         for text in &raw.constraints {
-            let c = constraint(text, &computed).map_err(|rule| fail("optimize.constraints", &format!("\"{text}\""), &rule))?;
+            let c = constraint(text, &computed)
+                .map_err(|rule| fail("optimize.constraints", &format!("\"{text}\""), &rule))?;
             if constraints.iter().any(|o: &Constraint| o.text == c.text) {
-                return Err(fail("optimize.constraints", &format!("\"{text}\""), "is listed twice"));
+                return Err(fail(
+                    "optimize.constraints",
+                    &format!("\"{text}\""),
+                    "is listed twice",
+                ));
             }
             constraints.push(c);
         }
         let tolerance = raw.tolerance.unwrap_or(1e-4);
         if !(1e-6..=0.01).contains(&tolerance) {
-            return Err(fail("optimize.tolerance", &tolerance, "must lie from 1e-6 to 0.01 (a fraction of each variable's range; default 1e-4)"));
+            return Err(fail(
+                "optimize.tolerance",
+                &tolerance,
+                "must lie from 1e-6 to 0.01 (a fraction of each variable's range; default 1e-4)",
+            ));
         }
         let optimization = Self {
             file: file.into(),
             name: name.clone(),
-            mechanisms: base_case.mechanisms.iter().map(|m| m.name().to_string()).collect(),
+            mechanisms: base_case
+                .mechanisms
+                .iter()
+                .map(|m| m.name().to_string())
+                .collect(),
             base: table,
             objective: raw.objective.clone(),
             objective_unit: objective.unit,
@@ -402,12 +472,21 @@ impl Optimization {
     /// as the case file gives it), the fields it does not have left out.
     pub fn case_at(&self, mechanism: &str, values: &[Option<f64>]) -> Result<Case, CaseError> {
         let mut table = self.base.clone();
-        table.insert("mechanisms".into(), toml::Value::Array(vec![toml::Value::String(mechanism.into())]));
+        table.insert(
+            "mechanisms".into(),
+            toml::Value::Array(vec![toml::Value::String(mechanism.into())]),
+        );
         leave_out(&mut table, mechanism);
         for (v, x) in self.variables.iter().zip(values) {
             if let Some(x) = x {
                 crate::sweep::set(&mut table, &v.path, v.text(*x)).map_err(|rule| {
-                    invalid(&self.file, &self.name, &format!("optimize.variables.\"{}\"", v.path), &v.text(*x), &rule)
+                    invalid(
+                        &self.file,
+                        &self.name,
+                        &format!("optimize.variables.\"{}\"", v.path),
+                        &v.text(*x),
+                        &rule,
+                    )
                 })?;
             }
         }
@@ -416,7 +495,8 @@ impl Optimization {
         for _ in 0..8 {
             match case_of_table(&self.file, table.clone()) {
                 Err(CaseError::Invalid { field, rule, .. })
-                    if (rule.contains("no mechanism of the case") || rule.contains("not among the case's mechanisms"))
+                    if (rule.contains("no mechanism of the case")
+                        || rule.contains("not among the case's mechanisms"))
                         && !self.variables.iter().any(|v| v.path == field)
                         && remove_path(&mut table, &field) => {}
                 other => return other,
@@ -430,7 +510,9 @@ impl Optimization {
     /// and the end, with the case's own message.
     fn check_ranges(&self) -> Result<(), CaseError> {
         for m in &self.mechanisms {
-            let active: Vec<usize> = (0..self.variables.len()).filter(|&k| self.applies(m, k)).collect();
+            let active: Vec<usize> = (0..self.variables.len())
+                .filter(|&k| self.applies(m, k))
+                .collect();
             self.case_at(m, &vec![None; self.variables.len()])?;
             for &k in &active {
                 for (end, u) in [("lower", 0.0), ("upper", 1.0)] {
@@ -447,7 +529,13 @@ impl Optimization {
                     .map(|k| active.contains(&k).then(|| self.variables[k].at(u)))
                     .collect();
                 self.case_at(m, &values).map_err(|e| {
-                    invalid(&self.file, &self.name, "optimize.variables", &format!("every variable at its {end} end"), &format!("the {m}'s case there does not validate: narrow the ranges ({e})"))
+                    invalid(
+                        &self.file,
+                        &self.name,
+                        "optimize.variables",
+                        &format!("every variable at its {end} end"),
+                        &format!("the {m}'s case there does not validate: narrow the ranges ({e})"),
+                    )
                 })?;
             }
         }

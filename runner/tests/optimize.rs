@@ -80,20 +80,39 @@ fn the_closed_form_optimum_is_found() {
     .unwrap();
     assert_eq!(json["constraints"][0]["active"], true, "{json:#}");
     assert_eq!(json["variables"][0]["on_bound"], serde_json::Value::Null);
-    assert!(json["stopping_reason"].as_str().unwrap().contains("converged"));
+    assert!(json["stopping_reason"]
+        .as_str()
+        .unwrap()
+        .contains("converged"));
     let history = std::fs::read_to_string(folder.join("slider_crank/history.csv")).unwrap();
-    assert_eq!(history.lines().count(), 1 + json["evaluations"].as_u64().unwrap() as usize);
+    assert_eq!(
+        history.lines().count(),
+        1 + json["evaluations"].as_u64().unwrap() as usize
+    );
     assert!(folder.join("convergence.svg").is_file() && folder.join("report.md").is_file());
 }
 
 #[test]
 fn the_same_seed_gives_the_same_outputs() {
-    let o = define(&kinematic("seed = 5\nstarts = 3", "rod_angular_velocity_max >= 20 rad/s")).unwrap();
+    let o = define(&kinematic(
+        "seed = 5\nstarts = 3",
+        "rod_angular_velocity_max >= 20 rad/s",
+    ))
+    .unwrap();
     let dir = tempfile::tempdir().unwrap();
     let a = write(&o, &optimize(&o).unwrap(), &dir.path().join("a"), false).unwrap();
-    let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
-    let b = one.install(|| write(&o, &optimize(&o).unwrap(), &dir.path().join("b"), false).unwrap());
-    for file in ["slider_crank/optimum.json", "slider_crank/history.csv", "report.md", "convergence.svg"] {
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap();
+    let b =
+        one.install(|| write(&o, &optimize(&o).unwrap(), &dir.path().join("b"), false).unwrap());
+    for file in [
+        "slider_crank/optimum.json",
+        "slider_crank/history.csv",
+        "report.md",
+        "convergence.svg",
+    ] {
         assert_eq!(
             std::fs::read(a.join(file)).unwrap(),
             std::fs::read(b.join(file)).unwrap(),
@@ -113,7 +132,12 @@ fn an_infeasible_problem_is_reported() {
     let dir = tempfile::tempdir().unwrap();
     let folder = write(&o, &results, dir.path(), false).unwrap();
     let report = std::fs::read_to_string(folder.join("report.md")).unwrap();
-    assert!(report.contains("**no**") && report.contains("violated") && report.contains("on its lower bound"), "{report}");
+    assert!(
+        report.contains("**no**")
+            && report.contains("violated")
+            && report.contains("on its lower bound"),
+        "{report}"
+    );
 }
 
 #[test]
@@ -139,12 +163,19 @@ fn failing_evaluations_are_reported() {
     .unwrap();
     assert!(json["failed_evaluations"].as_u64().unwrap() > 0);
     let reason = json["failures"][0]["reason"].as_str().unwrap();
-    assert!(reason.contains("geometry.rod_length") && reason.contains("longer than"), "{reason}");
+    assert!(
+        reason.contains("geometry.rod_length") && reason.contains("longer than"),
+        "{reason}"
+    );
 }
 
 /// The objective of `mechanism` at `values` (None if the point fails or breaks a constraint
 /// the mechanism has).
-fn feasible_objective(o: &Optimization, m: &MechanismOptimum, values: &[Option<f64>]) -> Option<f64> {
+fn feasible_objective(
+    o: &Optimization,
+    m: &MechanismOptimum,
+    values: &[Option<f64>],
+) -> Option<f64> {
     let case = o.case_at(&m.mechanism, values).ok()?;
     let run = cardan_runner::memory::run_in_memory(&case, false).ok()?;
     let summary = &run.results[0].summary;
@@ -187,7 +218,11 @@ fn the_thesis_pump_optimum_beats_a_coarse_sweep_and_its_perturbations() {
                 values[k] = Some(o.variables[k].at(step as f64 / (grid - 1) as f64));
             }
             if let Some(v) = feasible_objective(&o, m, &values) {
-                assert!(v <= optimum + TOLERANCE, "{}: sweep point {values:?} gives {v}, the optimum {optimum} at {at:?}", m.mechanism);
+                assert!(
+                    v <= optimum + TOLERANCE,
+                    "{}: sweep point {values:?} gives {v}, the optimum {optimum} at {at:?}",
+                    m.mechanism
+                );
             }
         }
         // Every perturbation of ±1 % of each variable's range (and 0), inside the ranges.
@@ -205,7 +240,11 @@ fn the_thesis_pump_optimum_beats_a_coarse_sweep_and_its_perturbations() {
                 continue;
             }
             if let Some(v) = feasible_objective(&o, m, &values) {
-                assert!(v <= optimum + TOLERANCE, "{}: perturbed {values:?} gives {v}, the optimum {optimum} at {at:?}", m.mechanism);
+                assert!(
+                    v <= optimum + TOLERANCE,
+                    "{}: perturbed {values:?} gives {v}, the optimum {optimum} at {at:?}",
+                    m.mechanism
+                );
             }
         }
     }
@@ -215,22 +254,112 @@ fn the_thesis_pump_optimum_beats_a_coarse_sweep_and_its_perturbations() {
 fn bad_optimize_tables_are_refused_naming_field_rule_and_value() {
     let good = kinematic("", "rod_angular_velocity_max >= 20 rad/s");
     let cases: &[(&str, &str, &[&str])] = &[
-        ("\"geometry.rod_length\" = [", "\"geometry.rod_lenght\" = [", &["configs/opt.toml", "\"kinematic\"", "optimize.variables.\"geometry.rod_lenght\"", "did you mean \"rod_length\""]),
-        ("objective = \"piston_acceleration_max\"", "objective = \"piston_aceleration_max\"", &["optimize.objective", "\"piston_aceleration_max\"", "did you mean \"{piston}_acceleration_max\""]),
-        ("objective = \"piston_acceleration_max\"", "objective = \"mechanical_efficiency\"", &["optimize.objective", "needs a [friction] table"]),
-        (">= 20 rad/s", ">= 20 kN", &["optimize.constraints", "\"rod_angular_velocity_max >= 20 kN\"", "not a unit of the metric's dimension", "rad/s"]),
-        (">= 20 rad/s", "> 20 rad/s", &["optimize.constraints", "<= <bound>"]),
-        (">= 20 rad/s", ">= twenty", &["optimize.constraints", "cannot read a number"]),
-        ("[\"150 mm\", \"400 mm\"]", "[\"400 mm\", \"150 mm\"]", &["optimize.variables.\"geometry.rod_length\"", "the range is empty", "[150, 400]"]),
-        ("[\"150 mm\", \"400 mm\"]", "[\"150 mm\", \"0.4\"]", &["optimize.variables.\"geometry.rod_length\"", "same unit"]),
-        ("[\"150 mm\", \"400 mm\"]", "[\"150 mm\"]", &["optimize.variables.\"geometry.rod_length\"", "[lower, upper]"]),
-        ("[\"150 mm\", \"400 mm\"]", "[\"50 mm\", \"400 mm\"]", &["optimize.variables.\"geometry.rod_length\"", "\"50 mm\"", "lower end does not validate", "longer than geometry.crank_length"]),
-        ("sense = \"min\"", "sense = \"least\"", &["optimize.sense", "least"]),
-        ("sense = \"min\"", "sense = \"min\"\nstarts = 0", &["optimize.starts", "from 1 to 64"]),
-        ("sense = \"min\"", "sense = \"min\"\ntolerance = 0.5", &["optimize.tolerance", "0.5", "1e-6 to 0.01"]),
-        ("sense = \"min\"", "sense = \"min\"\nstep = 1", &["optimize", "step"]),
-        ("[optimize]", "[sweep]\n\"geometry.rod_length\" = [\"150 mm\", \"200 mm\"]\n[optimize]", &["optimize.variables.\"geometry.rod_length\"", "also swept"]),
-        ("[optimize]", "[sweep]\n\"motion.initial_speed\" = [\"10 rad/s\", \"20 rad/s\"]\n[optimize]", &["sweep", "cannot also sweep"]),
+        (
+            "\"geometry.rod_length\" = [",
+            "\"geometry.rod_lenght\" = [",
+            &[
+                "configs/opt.toml",
+                "\"kinematic\"",
+                "optimize.variables.\"geometry.rod_lenght\"",
+                "did you mean \"rod_length\"",
+            ],
+        ),
+        (
+            "objective = \"piston_acceleration_max\"",
+            "objective = \"piston_aceleration_max\"",
+            &[
+                "optimize.objective",
+                "\"piston_aceleration_max\"",
+                "did you mean \"{piston}_acceleration_max\"",
+            ],
+        ),
+        (
+            "objective = \"piston_acceleration_max\"",
+            "objective = \"mechanical_efficiency\"",
+            &["optimize.objective", "needs a [friction] table"],
+        ),
+        (
+            ">= 20 rad/s",
+            ">= 20 kN",
+            &[
+                "optimize.constraints",
+                "\"rod_angular_velocity_max >= 20 kN\"",
+                "not a unit of the metric's dimension",
+                "rad/s",
+            ],
+        ),
+        (
+            ">= 20 rad/s",
+            "> 20 rad/s",
+            &["optimize.constraints", "<= <bound>"],
+        ),
+        (
+            ">= 20 rad/s",
+            ">= twenty",
+            &["optimize.constraints", "cannot read a number"],
+        ),
+        (
+            "[\"150 mm\", \"400 mm\"]",
+            "[\"400 mm\", \"150 mm\"]",
+            &[
+                "optimize.variables.\"geometry.rod_length\"",
+                "the range is empty",
+                "[150, 400]",
+            ],
+        ),
+        (
+            "[\"150 mm\", \"400 mm\"]",
+            "[\"150 mm\", \"0.4\"]",
+            &["optimize.variables.\"geometry.rod_length\"", "same unit"],
+        ),
+        (
+            "[\"150 mm\", \"400 mm\"]",
+            "[\"150 mm\"]",
+            &[
+                "optimize.variables.\"geometry.rod_length\"",
+                "[lower, upper]",
+            ],
+        ),
+        (
+            "[\"150 mm\", \"400 mm\"]",
+            "[\"50 mm\", \"400 mm\"]",
+            &[
+                "optimize.variables.\"geometry.rod_length\"",
+                "\"50 mm\"",
+                "lower end does not validate",
+                "longer than geometry.crank_length",
+            ],
+        ),
+        (
+            "sense = \"min\"",
+            "sense = \"least\"",
+            &["optimize.sense", "least"],
+        ),
+        (
+            "sense = \"min\"",
+            "sense = \"min\"\nstarts = 0",
+            &["optimize.starts", "from 1 to 64"],
+        ),
+        (
+            "sense = \"min\"",
+            "sense = \"min\"\ntolerance = 0.5",
+            &["optimize.tolerance", "0.5", "1e-6 to 0.01"],
+        ),
+        (
+            "sense = \"min\"",
+            "sense = \"min\"\nstep = 1",
+            &["optimize", "step"],
+        ),
+        (
+            "[optimize]",
+            "[sweep]\n\"geometry.rod_length\" = [\"150 mm\", \"200 mm\"]\n[optimize]",
+            &["optimize.variables.\"geometry.rod_length\"", "also swept"],
+        ),
+        (
+            "[optimize]",
+            "[sweep]\n\"motion.initial_speed\" = [\"10 rad/s\", \"20 rad/s\"]\n[optimize]",
+            &["sweep", "cannot also sweep"],
+        ),
     ];
     for (from, to, words) in cases {
         assert!(good.contains(from), "{from}");

@@ -19,10 +19,20 @@ use std::path::Path;
 /// Runs and writes every optimisation of a batch (those `--only` selects) into `out`, on the
 /// worker threads `options` asks for; each written folder, or failure, into `report`. A
 /// shard runs none (an optimisation is one search, not split): said as a failure.
-pub fn run_optimizations(optimizations: &[Optimization], out: &Path, options: &RunOptions, report: &mut Report) {
+pub fn run_optimizations(
+    optimizations: &[Optimization],
+    out: &Path,
+    options: &RunOptions,
+    report: &mut Report,
+) {
     let selected: Vec<&Optimization> = optimizations
         .iter()
-        .filter(|o| options.only.as_deref().is_none_or(|p| matches_pattern(p, &o.name)))
+        .filter(|o| {
+            options
+                .only
+                .as_deref()
+                .is_none_or(|p| matches_pattern(p, &o.name))
+        })
         .collect();
     if selected.is_empty() {
         return;
@@ -38,7 +48,8 @@ pub fn run_optimizations(optimizations: &[Optimization], out: &Path, options: &R
             .iter()
             .map(|o| {
                 let _span = tracing::info_span!("optimize", name = %o.name).entered();
-                optimize(o).and_then(|results| write(o, &results, out, options.reports))
+                optimize(o)
+                    .and_then(|results| write(o, &results, out, options.reports))
                     .map(|dir| (o.name.clone(), dir))
             })
             .collect::<Vec<_>>()
@@ -48,7 +59,9 @@ pub fn run_optimizations(optimizations: &[Optimization], out: &Path, options: &R
         Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
             Ok(pool) => pool.install(work),
             Err(e) => {
-                report.failures.push(format!("cannot start {n} worker threads: {e}"));
+                report
+                    .failures
+                    .push(format!("cannot start {n} worker threads: {e}"));
                 return;
             }
         },

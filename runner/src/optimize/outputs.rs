@@ -85,18 +85,26 @@ fn optimum_json(o: &Optimization, m: &MechanismOptimum) -> Value {
             })
         })
         .collect();
-    let stop = m.optimum.starts.get(m.optimum.best_start).map(|s| s.stop.describe(&m.settings));
+    let stop = m
+        .optimum
+        .starts
+        .get(m.optimum.best_start)
+        .map(|s| s.stop.describe(&m.settings));
     let failures: Vec<Value> = m
         .optimum
         .failures()
         .take(20)
         .map(|r| match &r.outcome {
-            Outcome::Failed(why) => json!({ "start": r.start, "evaluation": r.evaluation, "reason": why }),
+            Outcome::Failed(why) => {
+                json!({ "start": r.start, "evaluation": r.evaluation, "reason": why })
+            }
             _ => Value::Null,
         })
         .collect();
     let left_out = |list: &[(String, String)]| -> Vec<Value> {
-        list.iter().map(|(what, why)| json!({ "name": what, "why": why })).collect()
+        list.iter()
+            .map(|(what, why)| json!({ "name": what, "why": why }))
+            .collect()
     };
     json!({
         "mechanism": m.mechanism,
@@ -157,11 +165,24 @@ fn history_csv(o: &Optimization, m: &MechanismOptimum) -> (String, Vec<f64>) {
     let mut t = String::from("start,evaluation,phase");
     for &k in &m.active {
         let v = &o.variables[k];
-        let _ = write!(t, ",{}{}", v.path, if v.unit.is_empty() { String::new() } else { format!(" [{}]", v.unit) });
+        let _ = write!(
+            t,
+            ",{}{}",
+            v.path,
+            if v.unit.is_empty() {
+                String::new()
+            } else {
+                format!(" [{}]", v.unit)
+            }
+        );
     }
     let _ = write!(t, ",{} [{}]", o.objective, o.objective_unit);
     for &c in &m.constraints {
-        let _ = write!(t, ",{} [{}]", o.constraints[c].metric, o.constraints[c].unit);
+        let _ = write!(
+            t,
+            ",{} [{}]",
+            o.constraints[c].metric, o.constraints[c].unit
+        );
     }
     t.push_str(",violation,feasible,best_so_far,failure\n");
     for (r, b) in records.iter().zip(&best) {
@@ -176,22 +197,44 @@ fn history_csv(o: &Optimization, m: &MechanismOptimum) -> (String, Vec<f64>) {
             Outcome::Failed(_) => vec![f64::NAN; m.constraints.len()],
         };
         for (&c, &margin) in m.constraints.iter().zip(&margins) {
-            let _ = write!(t, ",{}", cell(margin.is_finite().then(|| constraint_value(o, c, margin))));
+            let _ = write!(
+                t,
+                ",{}",
+                cell(margin.is_finite().then(|| constraint_value(o, c, margin)))
+            );
         }
         let failure = match &r.outcome {
             Outcome::Failed(why) => format!("\"{}\"", why.replace('"', "'")),
             _ => String::new(),
         };
-        let _ = writeln!(t, ",{},{},{},{failure}", r.outcome.violation(), r.outcome.feasible(), cell(b.is_finite().then_some(*b)));
+        let _ = writeln!(
+            t,
+            ",{},{},{},{failure}",
+            r.outcome.violation(),
+            r.outcome.feasible(),
+            cell(b.is_finite().then_some(*b))
+        );
     }
     (t, best)
 }
 
 /// Writes the optimisation's folder `<out>/<name>/` (module docs), with the reports unless
 /// `reports` is false; returns the folder.
-pub fn write(o: &Optimization, results: &[MechanismOptimum], out: &Path, reports: bool) -> Result<PathBuf, String> {
+pub fn write(
+    o: &Optimization,
+    results: &[MechanismOptimum],
+    out: &Path,
+    reports: bool,
+) -> Result<PathBuf, String> {
     let dir = out.join(&o.name);
-    let fail = |e: anyhow::Error| format!("{}: case \"{}\": cannot write {}: {e:#}", o.file.display(), o.name, dir.display());
+    let fail = |e: anyhow::Error| {
+        format!(
+            "{}: case \"{}\": cannot write {}: {e:#}",
+            o.file.display(),
+            o.name,
+            dir.display()
+        )
+    };
     let tmp = files::temporary_dir(&dir).map_err(fail)?;
     let mut searches = Vec::new();
     for m in results {
@@ -202,10 +245,15 @@ pub fn write(o: &Optimization, results: &[MechanismOptimum], out: &Path, reports
         let (csv, best) = history_csv(o, m);
         files::write_file(&folder.join("history.csv"), csv.as_bytes()).map_err(fail)?;
         if let Some((case, result)) = &m.best {
-            let summary = serde_json::to_string_pretty(&summary_json(case, std::slice::from_ref(result))).unwrap_or_default();
+            let summary =
+                serde_json::to_string_pretty(&summary_json(case, std::slice::from_ref(result)))
+                    .unwrap_or_default();
             files::write_file(&folder.join("summary.json"), summary.as_bytes()).map_err(fail)?;
         }
-        searches.push(cardan_report::Convergence { label: m.mechanism.clone(), best_so_far: best });
+        searches.push(cardan_report::Convergence {
+            label: m.mechanism.clone(),
+            best_so_far: best,
+        });
     }
     let chart = cardan_report::convergence_chart(&o.objective, o.objective_unit, &searches);
     files::write_file(&tmp.join("convergence.svg"), chart.as_bytes()).map_err(fail)?;
@@ -228,14 +276,30 @@ pub fn write(o: &Optimization, results: &[MechanismOptimum], out: &Path, reports
 /// `report.md`: each mechanism at its own optimum, side by side.
 pub(crate) fn report_md(o: &Optimization, results: &[MechanismOptimum]) -> String {
     let jsons: Vec<Value> = results.iter().map(|m| optimum_json(o, m)).collect();
-    let sense = match o.sense { Sense::Max => "maximised", Sense::Min => "minimised" };
-    let mut t = format!("# Optimisation: {}\n\nEach mechanism at its own best: `{}` {sense}", o.name, o.objective);
+    let sense = match o.sense {
+        Sense::Max => "maximised",
+        Sense::Min => "minimised",
+    };
+    let mut t = format!(
+        "# Optimisation: {}\n\nEach mechanism at its own best: `{}` {sense}",
+        o.name, o.objective
+    );
     if !o.constraints.is_empty() {
-        let list: Vec<String> = o.constraints.iter().map(|c| format!("`{}`", c.text)).collect();
+        let list: Vec<String> = o
+            .constraints
+            .iter()
+            .map(|c| format!("`{}`", c.text))
+            .collect();
         let _ = write!(t, " subject to {}", list.join(", "));
     }
     t.push_str(".\n\n| | ");
-    t.push_str(&results.iter().map(|m| m.mechanism.as_str()).collect::<Vec<_>>().join(" | "));
+    t.push_str(
+        &results
+            .iter()
+            .map(|m| m.mechanism.as_str())
+            .collect::<Vec<_>>()
+            .join(" | "),
+    );
     t.push_str(" |\n|---|");
     t.push_str(&"---|".repeat(results.len()));
     t.push('\n');
@@ -244,11 +308,23 @@ pub(crate) fn report_md(o: &Optimization, results: &[MechanismOptimum]) -> Strin
         let _ = writeln!(t, "| {label} | {} |", cells.join(" | "));
     };
     let num = |v: &Value| v.as_f64().map_or("—".to_string(), |x| format!("{x:.6}"));
-    row(&mut t, &format!("{} [{}]", o.objective, o.objective_unit), &|j| num(&j["objective"]["value"]));
-    row(&mut t, "feasible", &|j| if j["feasible"] == true { "yes".into() } else { "**no**: least violation shown".into() });
+    row(
+        &mut t,
+        &format!("{} [{}]", o.objective, o.objective_unit),
+        &|j| num(&j["objective"]["value"]),
+    );
+    row(&mut t, "feasible", &|j| {
+        if j["feasible"] == true {
+            "yes".into()
+        } else {
+            "**no**: least violation shown".into()
+        }
+    });
     for v in &o.variables {
         row(&mut t, &format!("{} [{}]", v.path, v.unit), &|j| {
-            let found = j["variables"].as_array().and_then(|a| a.iter().find(|x| x["path"] == v.path.as_str()));
+            let found = j["variables"]
+                .as_array()
+                .and_then(|a| a.iter().find(|x| x["path"] == v.path.as_str()));
             match found {
                 Some(x) => match x["on_bound"].as_str() {
                     Some(b) => format!("{} (on its {b} bound)", num(&x["value"])),
@@ -260,21 +336,46 @@ pub(crate) fn report_md(o: &Optimization, results: &[MechanismOptimum]) -> Strin
     }
     for c in &o.constraints {
         row(&mut t, &format!("{} [{}]", c.text, c.unit), &|j| {
-            let found = j["constraints"].as_array().and_then(|a| a.iter().find(|x| x["constraint"] == c.text.as_str()));
+            let found = j["constraints"]
+                .as_array()
+                .and_then(|a| a.iter().find(|x| x["constraint"] == c.text.as_str()));
             match found {
-                Some(x) => format!("{} (margin {}{})", num(&x["value"]), num(&x["margin"]), if x["active"] == true { ", active" } else if x["satisfied"] == false { ", **violated**" } else { "" }),
+                Some(x) => format!(
+                    "{} (margin {}{})",
+                    num(&x["value"]),
+                    num(&x["margin"]),
+                    if x["active"] == true {
+                        ", active"
+                    } else if x["satisfied"] == false {
+                        ", **violated**"
+                    } else {
+                        ""
+                    }
+                ),
                 None => "left out".into(),
             }
         });
     }
-    row(&mut t, "evaluations (probes)", &|j| format!("{} ({})", j["evaluations"], j["probe_evaluations"]));
-    row(&mut t, "failed evaluations", &|j| j["failed_evaluations"].to_string());
-    row(&mut t, "stopping reason", &|j| j["stopping_reason"].as_str().unwrap_or("—").to_string());
+    row(&mut t, "evaluations (probes)", &|j| {
+        format!("{} ({})", j["evaluations"], j["probe_evaluations"])
+    });
+    row(&mut t, "failed evaluations", &|j| {
+        j["failed_evaluations"].to_string()
+    });
+    row(&mut t, "stopping reason", &|j| {
+        j["stopping_reason"].as_str().unwrap_or("—").to_string()
+    });
     t.push_str("\nLeft out (a field or metric a mechanism does not have):\n\n");
     for j in &jsons {
         for what in ["variables_left_out", "constraints_left_out"] {
             for x in j[what].as_array().into_iter().flatten() {
-                let _ = writeln!(t, "- {}: `{}`: {}", j["mechanism"].as_str().unwrap_or(""), x["name"].as_str().unwrap_or(""), x["why"].as_str().unwrap_or(""));
+                let _ = writeln!(
+                    t,
+                    "- {}: `{}`: {}",
+                    j["mechanism"].as_str().unwrap_or(""),
+                    x["name"].as_str().unwrap_or(""),
+                    x["why"].as_str().unwrap_or("")
+                );
             }
         }
     }

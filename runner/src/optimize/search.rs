@@ -43,10 +43,18 @@ impl MechanismOptimum {
 }
 
 /// The case of `mechanism` at `values`, run: its first crank train's result.
-fn run_at(o: &Optimization, mechanism: &str, values: &[Option<f64>]) -> Result<(Case, MechanismResult), String> {
+fn run_at(
+    o: &Optimization,
+    mechanism: &str,
+    values: &[Option<f64>],
+) -> Result<(Case, MechanismResult), String> {
     let case = o.case_at(mechanism, values).map_err(|e| e.to_string())?;
     let run = run_in_memory(&case, false)?;
-    let result = run.results.into_iter().next().ok_or("the case ran no crank train")?;
+    let result = run
+        .results
+        .into_iter()
+        .next()
+        .ok_or("the case ran no crank train")?;
     Ok((case, result))
 }
 
@@ -64,7 +72,10 @@ fn outcome(o: &Optimization, constraints: &[usize], result: &MechanismResult) ->
         .iter()
         .map(|&c| {
             let c = &o.constraints[c];
-            result.summary.get(&c.metric).map_or(f64::NAN, |v| c.relative_margin(v))
+            result
+                .summary
+                .get(&c.metric)
+                .map_or(f64::NAN, |v| c.relative_margin(v))
         })
         .collect();
     Outcome::Value { objective, margins }
@@ -90,7 +101,11 @@ fn applicable(o: &Optimization, mechanism: &str) -> Result<MechanismOptimum, Str
         constraints_left_out: Vec::new(),
         probes: 0,
         settings: settings(o),
-        optimum: Optimum { best: None, best_start: 0, starts: Vec::new() },
+        optimum: Optimum {
+            best: None,
+            best_start: 0,
+            starts: Vec::new(),
+        },
         best: None,
     };
     let mut candidates = Vec::new();
@@ -98,12 +113,18 @@ fn applicable(o: &Optimization, mechanism: &str) -> Result<MechanismOptimum, Str
         if o.applies(mechanism, k) {
             candidates.push(k);
         } else {
-            m.left_out.push((o.variables[k].path.clone(), format!("not a field of the {mechanism}")));
+            m.left_out.push((
+                o.variables[k].path.clone(),
+                format!("not a field of the {mechanism}"),
+            ));
         }
     }
-    let middle: Vec<Option<f64>> = (0..n).map(|k| candidates.contains(&k).then(|| o.variables[k].at(0.5))).collect();
+    let middle: Vec<Option<f64>> = (0..n)
+        .map(|k| candidates.contains(&k).then(|| o.variables[k].at(0.5)))
+        .collect();
     m.probes += 1;
-    let (_, centre) = run_at(o, mechanism, &middle).map_err(|e| format!("the {mechanism} at the middle of the ranges: {e}"))?;
+    let (_, centre) = run_at(o, mechanism, &middle)
+        .map_err(|e| format!("the {mechanism} at the middle of the ranges: {e}"))?;
     if centre.summary.get(&o.objective).is_none() {
         return Err(format!("the {mechanism}'s summary has no metric {} (optimize.objective): optimise a metric it has, or list it apart", o.objective));
     }
@@ -111,7 +132,13 @@ fn applicable(o: &Optimization, mechanism: &str) -> Result<MechanismOptimum, Str
         if centre.summary.get(&constraint.metric).is_some() {
             m.constraints.push(c);
         } else {
-            m.constraints_left_out.push((constraint.text.clone(), format!("the {mechanism}'s summary has no metric {}", constraint.metric)));
+            m.constraints_left_out.push((
+                constraint.text.clone(),
+                format!(
+                    "the {mechanism}'s summary has no metric {}",
+                    constraint.metric
+                ),
+            ));
         }
     }
     for k in candidates {
