@@ -9,7 +9,7 @@
 mod outputs;
 mod search;
 
-pub use outputs::write;
+pub use outputs::{optimum_json, report_md, write};
 pub use search::{optimize, MechanismOptimum};
 
 use crate::run::{matches_pattern, worker_threads, Report, RunOptions};

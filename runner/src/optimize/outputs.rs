@@ -50,8 +50,8 @@ fn bound_of(u: f64) -> Value {
     }
 }
 
-/// `optimum.json` of one mechanism.
-fn optimum_json(o: &Optimization, m: &MechanismOptimum) -> Value {
+/// `optimum.json` of one mechanism (also what `cardan.optimize` returns per mechanism).
+pub fn optimum_json(o: &Optimization, m: &MechanismOptimum) -> Value {
     let best = m.optimum.best.as_ref();
     let values = best.map(|b| m.values(o, &b.x)).unwrap_or_default();
     let variables: Vec<Value> = m
@@ -274,7 +274,7 @@ pub fn write(
 }
 
 /// `report.md`: each mechanism at its own optimum, side by side.
-pub(crate) fn report_md(o: &Optimization, results: &[MechanismOptimum]) -> String {
+pub fn report_md(o: &Optimization, results: &[MechanismOptimum]) -> String {
     let jsons: Vec<Value> = results.iter().map(|m| optimum_json(o, m)).collect();
     let sense = match o.sense {
         Sense::Max => "maximised",
