@@ -11,7 +11,7 @@
 //! Values are compared by Deb's rules ([`crate::order`]).
 
 use crate::order::Outcome;
-use crate::{Record, Settings, Stop};
+use crate::settings::{Record, Settings, Stop};
 use std::collections::HashMap;
 
 /// The evaluations of one start: its history, a cache of points already evaluated (the compass

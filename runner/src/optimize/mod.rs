@@ -12,50 +12,30 @@ mod search;
 pub use outputs::{optimum_json, report_md, write};
 pub use search::{optimize, MechanismOptimum};
 
-use crate::run::{matches_pattern, worker_threads, Report, RunOptions};
-use cardan_case::optimize::Optimization;
+use crate::run::{worker_threads, Report};
 use std::path::Path;
 
-/// Runs and writes every optimisation of a batch (those `--only` selects) into `out`, on the
-/// worker threads `options` asks for; each written folder, or failure, into `report`. A
-/// shard runs none (an optimisation is one search, not split): said as a failure.
-pub fn run_optimizations(
-    optimizations: &[Optimization],
-    out: &Path,
-    options: &RunOptions,
-    report: &mut Report,
-) {
-    let selected: Vec<&Optimization> = optimizations
-        .iter()
-        .filter(|o| {
-            options
-                .only
-                .as_deref()
-                .is_none_or(|p| matches_pattern(p, &o.name))
-        })
-        .collect();
-    if selected.is_empty() {
-        return;
-    }
-    if options.shard.is_some() {
-        for o in selected {
-            report.failures.push(format!("{}: case \"{}\": an optimisation is one search and is not split into shards: run it without --shard", o.file.display(), o.name));
-        }
+/// Runs and writes the optimisations `report` holds (those `cardan_runner::run_paths` read
+/// and `--only` selected) into `out`, each after the other, its starts on `jobs` worker threads
+/// (None: one per core); each written folder, or failure, into `report`.
+pub fn run_optimizations(report: &mut Report, out: &Path, jobs: Option<usize>, reports: bool) {
+    let optimizations = std::mem::take(&mut report.optimizations);
+    if optimizations.is_empty() {
         return;
     }
     let work = || {
-        selected
+        optimizations
             .iter()
             .map(|o| {
                 let _span = tracing::info_span!("optimize", name = %o.name).entered();
                 optimize(o)
-                    .and_then(|results| write(o, &results, out, options.reports))
+                    .and_then(|results| write(o, &results, out, reports))
                     .map(|dir| (o.name.clone(), dir))
             })
             .collect::<Vec<_>>()
     };
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let outcomes = match worker_threads(options.jobs, cores).0 {
+    let outcomes = match worker_threads(jobs, cores).0 {
         Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
             Ok(pool) => pool.install(work),
             Err(e) => {
