@@ -31,11 +31,11 @@ pub struct OptimizeTable {
     pub objective: String,
     /// "max" or "min".
     pub sense: Sense,
-    /// The fields varied, each by its dotted path (as in [sweep]) with its range [lower, upper]:
+    /// The fields varied, each by its dotted path (as in `[sweep]`) with its range `[lower, upper]`:
     /// numbers, or strings with one unit ("100 mm").
     #[schemars(schema_with = "variables_schema")]
     pub variables: toml::Table,
-    /// Constraints on summary metrics, each "<metric> <= <bound>" or "<metric> >= <bound>",
+    /// Constraints on summary metrics, each `"<metric> <= <bound>"` or `"<metric> >= <bound>"`,
     /// the bound a number in the metric's SI unit or a string with a unit ("5 kN").
     #[serde(default)]
     pub constraints: Vec<String>,
@@ -461,7 +461,7 @@ impl Optimization {
         Ok(Some(optimization))
     }
 
-    /// Whether variable `k` is a field of `mechanism` (see [`leave_out`]).
+    /// Whether variable `k` is a field of `mechanism` (a field of another mechanism's own tables, or a pin offset where it has no piston pin, is not).
     pub fn applies(&self, mechanism: &str, k: usize) -> bool {
         let v = &self.variables[k];
         let pin = cardan_mechanism::entry(mechanism).is_some_and(|e| e.pin_offset);
