@@ -410,6 +410,16 @@ fn from_table(
         Some(toml::Value::String(name)) => name.clone(),
         _ => "(unnamed)".to_string(),
     };
+    if table.contains_key("optimize") {
+        // Read by `crate::optimize::Optimization::define`, which takes it out first.
+        return Err(CaseError::Invalid {
+            file: file.into(),
+            case: name,
+            field: "optimize".into(),
+            value: "an [optimize] table".into(),
+            rule: "an optimisation is run by `cardan run` (or `cardan.optimize` in Python), not as a single case: run the file with `cardan run`".into(),
+        });
+    }
     let own = mechanism_tables(&mut table);
     let raw: CaseFile = crate::schema::read(toml::Value::Table(table), "").map_err(|error| {
         // The mechanisms' tables are valid names at the top level and in [masses].

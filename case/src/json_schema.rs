@@ -15,6 +15,9 @@ pub fn case_schema() -> Value {
     generator.subschema_for::<Quantity<Angle>>();
     generator.subschema_for::<Quantity<Length>>();
     let sweep = crate::sweep::json_schema(&mut generator);
+    let optimize =
+        serde_json::to_value(generator.subschema_for::<crate::optimize::OptimizeTable>())
+            .unwrap_or_default();
     let root = generator.into_root_schema_for::<CaseFile>();
     let mut root = serde_json::to_value(root).unwrap_or_default();
     root["title"] = "cardan case file".into();
@@ -32,6 +35,7 @@ pub fn case_schema() -> Value {
             json!({ "$ref": "#/$defs/MechanismMassTable" });
     }
     root["properties"]["sweep"] = sweep;
+    root["properties"]["optimize"] = optimize;
     plain_descriptions(&mut root);
     root
 }

@@ -15,6 +15,7 @@ pub mod json_schema;
 pub mod machine_motion;
 pub mod masses;
 pub mod mechanism_table;
+pub mod optimize;
 mod output_metrics;
 pub mod plausible;
 pub mod quantity;

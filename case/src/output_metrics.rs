@@ -34,7 +34,7 @@ impl Computed {
 }
 
 /// The table of the registry a metric needs, and the case-file table that makes it computed.
-fn needs(def: &MetricDef, computed: &Computed) -> Option<&'static str> {
+pub(crate) fn needs(def: &MetricDef, computed: &Computed) -> Option<&'static str> {
     let within = |part: &[MetricDef]| part.contains(def);
     if within(metrics::GEAR_RATING) && !computed.gear {
         Some("a gear-rating metric: needs a [gear] table")

@@ -182,7 +182,7 @@ fn values_of(
 }
 
 /// Sets the value at the dotted `path` of `table`, making the tables on the way.
-fn set(table: &mut toml::Table, path: &str, value: toml::Value) -> Result<(), String> {
+pub(crate) fn set(table: &mut toml::Table, path: &str, value: toml::Value) -> Result<(), String> {
     let mut parts: Vec<&str> = path.split('.').collect();
     let last = parts.pop().ok_or("an empty path")?;
     let mut t = table;

@@ -282,6 +282,16 @@ fn check(paths: &[PathBuf], allow_large: bool) -> (usize, Vec<String>) {
             Err(e) => failures.push(e.to_string()),
         }
     }
+    for o in &batch.optimizations {
+        println!(
+            "valid   {} (an optimisation of {} over {} variable(s)) ({})",
+            o.name,
+            o.mechanisms.join(", "),
+            o.variables.len(),
+            o.file.display()
+        );
+        valid += 1;
+    }
     println!("{valid} case(s) valid, {} failed", failures.len());
     (valid, failures)
 }
@@ -430,7 +440,8 @@ fn main() -> ExitCode {
                     progress.set_position(done as u64);
                 })),
             };
-            let report = cardan_runner::run_paths(&paths, &out, options);
+            let mut report = cardan_runner::run_paths(&paths, &out, options);
+            cardan_runner::optimize::run_optimizations(&mut report, &out, jobs, !no_report);
             bar.finish_and_clear();
             // A sweep's points are told by one line for the sweep, not one each.
             let in_sweep = |dir: &std::path::Path| {

@@ -25,7 +25,7 @@ from . import _cardan
 from ._plots import plot as _plot
 from ._sweep import SweepTable, sweep
 
-__all__ = ["run", "sweep", "gear", "Result", "SweepTable", "CaseError", "RunError", "COLUMNS"]
+__all__ = ["run", "sweep", "optimize", "gear", "Result", "SweepTable", "CaseError", "RunError", "COLUMNS"]
 
 #: The package's version (the crate's, python/Cargo.toml).
 __version__ = _cardan.__version__
@@ -180,6 +180,21 @@ def run(case, steps=True):
     steps among the threads, and its memory does not grow with them)."""
     summary_json, trains = _cardan.run(case, steps)
     return Result(summary_json, trains)
+
+
+def optimize(case, **spec):
+    """Optimises each mechanism of ``case`` (a path, TOML text or a dict) on its own: the
+    case's ``[optimize]`` table, its entries replaced by ``spec`` (``objective``, ``sense``,
+    ``variables``, ``constraints``, ``starts``, ``seed``, ``max_evaluations``, ``tolerance``;
+    docs/optimisation.md). Returns ``(optima, report)``: each mechanism's ``optimum.json`` as a
+    dict (variables, objective, constraints with their margins, evaluations, stopping reason),
+    and the report comparing the mechanisms at their optima (Markdown)::
+
+        optima, report = cardan.optimize("pump.toml", objective="machine_mechanical_efficiency",
+            sense="max", variables={"geometry.rod_length": ["100 mm", "300 mm"]})
+        optima["cardan_gear"]["objective"]["value"]
+    """
+    return _cardan.optimize(case, spec or None)
 
 
 def gear(pair):

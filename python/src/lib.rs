@@ -8,6 +8,7 @@
 //! `RunError`, never aborting the interpreter.
 
 mod convert;
+mod optimize;
 mod sweep;
 mod units;
 
@@ -163,6 +164,7 @@ fn _cardan(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("RunError", m.py().get_type::<RunError>())?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(optimize::optimize, m)?)?;
     m.add_function(wrap_pyfunction!(units::quantity, m)?)?;
     m.add_function(wrap_pyfunction!(units::case_schema, m)?)?;
     // The package's version: the crate's (pyproject.toml takes it from Cargo.toml).

@@ -47,6 +47,7 @@ mod bearing_polar;
 mod case_plots;
 mod cases;
 mod chart_columns;
+mod convergence;
 mod crank_speed;
 mod data;
 mod doc;
@@ -63,6 +64,7 @@ mod svg;
 mod sweeps;
 mod thinning;
 
+pub use convergence::{convergence_chart, Convergence};
 pub use envelope::{ChartData, ChartRecorder, Envelope, Trace};
 pub use rows::{row_count, ChartRows, MAX_CHART_ROWS};
 pub use svg::MAX_POINTS;

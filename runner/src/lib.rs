@@ -5,6 +5,7 @@
 //! ([`memory`]: its summary and per-step columns, for the Python package).
 
 pub mod memory;
+pub mod optimize;
 pub mod output;
 pub mod per_step;
 pub mod progress;

@@ -54,6 +54,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let (batch, failures) = load_batch(paths);
     report.failures = failures;
     let (mut cases, mut tables) = (batch.cases, batch.tables);
+    let optimizations = batch.optimizations;
     let overrides = |case: &mut Case| {
         case.output.csv = options.csv.unwrap_or(case.output.csv);
         case.output.npy = options.npy.unwrap_or(case.output.npy);
@@ -146,6 +147,20 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         options.reports && manifest.is_none(),
         &mut report,
     );
+    for o in optimizations {
+        if options
+            .only
+            .as_deref()
+            .is_some_and(|p| !matches_pattern(p, &o.name))
+        {
+            continue;
+        }
+        if manifest.is_some() {
+            report.failures.push(format!("{}: case \"{}\": an optimisation is one search and is not split into shards: run it without --shard", o.file.display(), o.name));
+        } else {
+            report.optimizations.push(o);
+        }
+    }
     if let Some(manifest) = manifest {
         // A shard's sweeps and index are the merge's to report.
         if let Err(e) = manifest.write(out, &report.failures) {

@@ -3,6 +3,7 @@
 
 use super::table::{case_folders, TableSweep};
 use cardan_case::case::{self, Case};
+use cardan_case::optimize::Optimization;
 use cardan_case::sweep::{Sweep, MAX_EXPANDED};
 use cardan_case::CaseError;
 use rayon::prelude::*;
@@ -77,12 +78,15 @@ pub const RESERVED: &[&str] = &["index.html", "shard.json"];
 pub struct Batch {
     pub cases: Vec<Case>,
     pub tables: Vec<TableSweep>,
+    /// The case files with an `[optimize]` table (`crate::optimize`), each into its folder.
+    pub optimizations: Vec<Optimization>,
 }
 
 /// What one case file holds: its cases, or a sweep written as a table.
 enum Entry {
     Cases(Vec<Case>),
     Table(Box<TableSweep>),
+    Optimize(Box<Optimization>),
 }
 
 impl Entry {
@@ -94,6 +98,7 @@ impl Entry {
                 (folder, c.file.clone())
             }),
             Entry::Table(t) => Some((t.sweep.name.clone(), t.sweep.file.clone())),
+            Entry::Optimize(o) => Some((o.name.clone(), o.file.clone())),
         }
     }
 }
@@ -104,6 +109,9 @@ impl Entry {
 fn load_entry(file: &Path) -> Result<Entry, CaseError> {
     let text = case::read_case_text(file)?;
     let table = case::toml_table(file, &text)?;
+    if let Some(o) = Optimization::define(file, table.clone())? {
+        return Ok(Entry::Optimize(Box::new(o)));
+    }
     let Some(sweep) = Sweep::define(file, table.clone())? else {
         return Ok(Entry::Cases(vec![case::case_of_table(file, table)?]));
     };
@@ -175,6 +183,7 @@ pub fn load_batch(paths: &[PathBuf]) -> (Batch, Vec<String>) {
         match entry {
             Entry::Cases(cases) => batch.cases.extend(cases),
             Entry::Table(t) => batch.tables.push(*t),
+            Entry::Optimize(o) => batch.optimizations.push(*o),
         }
     }
     (batch, failures)
