@@ -29,6 +29,7 @@ fn physics_crates_do_not_depend_on_the_runner() {
         "balance",
         "metrics",
         "losses",
+        "loads",
     ] {
         let manifest =
             std::fs::read_to_string(root().join(format!("crates/{krate}/Cargo.toml"))).unwrap();
@@ -87,9 +88,10 @@ fn the_report_crate_does_not_depend_on_the_runner() {
 }
 
 /// The crates of `cardan-dynamics`'s jobs point one way: the losses (models, budget, engine
-/// losses, fmep) sit below the step loop and its stages, which evaluate them.
+/// losses, fmep) and the loads (families, planar solve, energy) sit below the step loop and its
+/// stages, which evaluate them; the loads need the mechanism alone.
 #[test]
-fn the_loss_crate_sits_below_the_step_loop() {
+fn the_loss_and_load_crates_sit_below_the_step_loop() {
     let manifest = std::fs::read_to_string(root().join("crates/losses/Cargo.toml")).unwrap();
     for forbidden in [
         "cardan-dynamics",
@@ -102,8 +104,16 @@ fn the_loss_crate_sits_below_the_step_loop() {
             "crates/losses depends on {forbidden}"
         );
     }
+    let loads = std::fs::read_to_string(root().join("crates/loads/Cargo.toml")).unwrap();
+    let loads = loads.split("[dependencies]").nth(1).unwrap_or("");
+    for line in loads.lines().filter(|l| l.starts_with("cardan-")) {
+        assert!(
+            line.starts_with("cardan-mechanism"),
+            "crates/loads depends on {line}: the loads need the mechanism alone"
+        );
+    }
     let dynamics = std::fs::read_to_string(root().join("crates/dynamics/Cargo.toml")).unwrap();
-    assert!(dynamics.contains("cardan-losses"));
+    assert!(dynamics.contains("cardan-losses") && dynamics.contains("cardan-loads"));
 }
 
 /// The packages a package of `lock` (a Cargo.lock) builds, itself included, by name: the closure
@@ -278,6 +288,7 @@ fn no_code_outside_a_mechanism_module_names_a_mechanism() {
     for dir in [
         "crates/dynamics/src",
         "crates/losses/src",
+        "crates/loads/src",
         "crates/gas/src",
         "crates/balance/src",
         "case/src",

@@ -51,7 +51,7 @@ pub struct MachineBalance {
 }
 
 impl Default for MachineBalance {
-    /// One cylinder, no balancing device: every case before issue 24.
+    /// One cylinder, no balancing device: a case without `[layout]` or `[balance]`.
     fn default() -> Self {
         Self {
             kind: "inline",

@@ -23,7 +23,7 @@ use cardan_gears::{
 };
 use cardan_mechanism::{Column, JointKind, Loads, Material, Mechanism, MeshForce, State, C};
 
-use crate::loss::{failed, At, Loss, Site};
+use crate::loss::{failed, Loss, LossInput, Site};
 use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
 use crate::mesh::{mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, ToothLoad};
@@ -104,11 +104,11 @@ impl MeshRating {
 /// The rated meshes of one mechanism.
 #[derive(Debug, Clone)]
 pub struct GearRatings {
-    meshes: Vec<Rated>,
+    meshes: Vec<RatedMesh>,
 }
 
 #[derive(Debug, Clone)]
-struct Rated {
+struct RatedMesh {
     joint: usize,
     body: usize,
     name: &'static str,
@@ -255,7 +255,7 @@ impl GearRatings {
             };
             let loss = mesh_loss(spec, mechanism, friction, k)?;
             let prepared = PreparedRating::new(&set.rating, set.face_width);
-            meshes.push(Rated {
+            meshes.push(RatedMesh {
                 joint: k,
                 body: j.body,
                 name: j.name,
@@ -361,7 +361,7 @@ fn mesh_loss(
         .unwrap_or_else(|| Err(failed("friction.gear_mesh", &"is not a gear-mesh loss")))
 }
 
-impl Rated {
+impl RatedMesh {
     /// The mesh's rating at `state` under the `total` loads (and the `inertial` family's).
     fn rate(
         &mut self,
@@ -404,7 +404,7 @@ impl Rated {
                 }
             }
         };
-        let at = At {
+        let at = LossInput {
             state,
             total,
             pressure: None,

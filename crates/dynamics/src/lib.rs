@@ -1,9 +1,12 @@
-//! Kinetostatics of any mechanism of `cardan-mechanism`, step by step: the joint loads and
-//! drive torque of each load family (inertia, gas), their totals, the per-step stages computed
-//! from the totals (the losses, the gear ratings: [`Stage`]), and the cycle summary, streamed to sinks so that memory does not
-//! grow with the number of steps.
+//! Kinetostatics of any mechanism of `cardan-mechanism`, a block of steps at a time: the step
+//! loop ([`run`], [`run_parallel`]) that loads each block by the load families of
+//! `cardan-loads` (inertia, gas; their totals), evaluates the per-step stages on its columns
+//! ([`Stage`]: the gear ratings, the loss budget of `cardan-losses`, the whole machine), and
+//! streams the block to sinks (the cycle summary, [`SummarySink`]) so that memory does not grow
+//! with the number of steps; the whole machine ([`Machine`]) and its solved crank motion
+//! ([`machine_motion`]). It re-exports the loads' and the losses' crates under their old paths.
 //!
-//! Two independent paths compute the same loads:
+//! Two independent paths compute the same loads (`cardan-loads`):
 //! - the closed forms each mechanism carries (Karhula 2008, appendix 5.2.1, for the slider-crank
 //!   and the cardan gear), through [`cardan_mechanism::Mechanism::closed_form_loads`];
 //! - a general planar solve ([`planar`]): the Newton-Euler equations of every body with every
@@ -15,8 +18,6 @@
 //! rotation, so that its work over a crank-angle interval equals the gain of kinetic energy of
 //! the bodies plus the work done on the gas.
 
-pub mod energy;
-pub mod family;
 pub mod flywheel_sizing;
 pub mod gear_rating;
 pub mod machine;
@@ -24,34 +25,36 @@ pub mod machine_friction;
 pub mod machine_motion;
 pub mod machine_stage;
 pub mod machine_totals;
+/// The loads (families, the planar solve, energy, the reduced inertia), their own crate:
+/// re-exported, so that their paths here stay as they were.
+pub use cardan_loads::{energy, family, planar, reduced_inertia};
 /// The losses, their own crate (the loss models, the budget, engine losses, fmep, the mesh
 /// joint's components): re-exported, so that their paths here stay as they were.
 pub use cardan_losses::{engine_losses, fmep, loss, loss_models, losses, mesh};
 /// The metric registry, its own crate (the reports read it without the physics).
 pub use cardan_metrics as metrics;
 pub mod parallel;
-pub mod planar;
-pub mod reduced_inertia;
 pub mod stage;
 pub mod stages;
 pub mod step;
 pub mod stepper;
 pub mod summary;
 
+pub use cardan_loads::{
+    kinetic_energy, torque_shares, Gas, Inertial, LoadFamily, ReducedInertia, ReducedInertiaOf,
+    Solver,
+};
 pub use cardan_losses::{
-    engine_metrics, fmep_breakdown, pnh_engine, radial, tangential, At, Attachment, BearingSize,
-    Bind, CircularArcCam, EngineLosses, FmepModel, FollowerContact, Friction, GearMaterial,
-    GearSpec, Loss, LossBudget, LossModel, Oil, Parameters, Site, ToothLoad, ValveTrain,
+    engine_metrics, fmep_breakdown, pnh_engine, radial, tangential, Attachment, BearingSize, Bind,
+    CircularArcCam, EngineLosses, FmepModel, FollowerContact, Friction, GearMaterial, GearSpec,
+    Loss, LossBudget, LossInput, LossModel, Oil, Parameters, Site, ToothLoad, ValveTrain,
     ValveTrainGeometry, ValveTrainLoss, LOSS_MODELS,
 };
-pub use energy::{kinetic_energy, torque_shares};
-pub use family::{Gas, Inertial, LoadFamily, Solver};
 pub use gear_rating::{GearRatings, MeshRating};
 pub use machine::{Machine, MachineKind};
 pub use machine_stage::MachineStage;
 pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
 pub use parallel::{run_parallel, run_summary, Joinable};
-pub use reduced_inertia::{reduced_inertia, ReducedInertia, ReducedInertiaOf};
 pub use stage::{
     Block, LaneError, PassedOn, RunTotals, SetupError, Stage, StageColumn, StageError, StageTotals,
 };

@@ -1,5 +1,5 @@
 //! What a loss model is, below every module that binds or registers one: the trait of a bound
-//! model ([`Loss`]), what it reads at a step ([`At`]), where it is bound ([`Site`], what a
+//! model ([`Loss`]), what it reads at a step ([`LossInput`]), where it is bound ([`Site`], what a
 //! registry entry's `bind` reads), the oil and the parameters of `[friction]` ([`Parameters`],
 //! each default once, next to its source). The models are in [`crate::losses::models`], the
 //! registry in [`crate::loss_models`], the budget that binds them in [`crate::losses`].
@@ -112,7 +112,7 @@ pub fn failed(field: &str, e: &dyn std::fmt::Display) -> SetupError {
 
 /// What a loss model reads at a step.
 #[derive(Debug, Clone, Copy)]
-pub struct At<'a> {
+pub struct LossInput<'a> {
     /// The step's state (crank, pistons, joints).
     pub state: &'a State,
     /// The total (lossless) loads.
@@ -128,7 +128,7 @@ pub struct At<'a> {
 /// `Clone`.
 pub trait Loss: LossClone + std::fmt::Debug + Send + Sync {
     /// The power loss at the step, W; `Err`: why it cannot be computed.
-    fn power(&mut self, at: &At) -> Result<f64, String>;
+    fn power(&mut self, at: &LossInput) -> Result<f64, String>;
 
     /// Whether a step's loss depends on the steps before it (then the steps are taken in
     /// order, by one thread).

@@ -20,7 +20,7 @@
 pub mod models;
 
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
-use crate::loss::{failed, At, Loss, Oil, Parameters, Site};
+use crate::loss::{failed, Loss, LossInput, Oil, Parameters, Site};
 use crate::loss_models::{default_model, Attachment, LossModel};
 use crate::mesh::GearSpec;
 use crate::MachineKind;
@@ -262,7 +262,7 @@ impl LossBudget {
         rated_meshes: &[(usize, f64)],
         out: &mut [f64],
     ) -> Result<(), String> {
-        let at = At {
+        let at = LossInput {
             state,
             total,
             pressure,

@@ -7,7 +7,7 @@
 use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::loss::{failed, At, Loss, Site};
+use crate::loss::{failed, Loss, LossInput, Site};
 use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::SetupError;
 use cardan_friction::{
@@ -171,7 +171,7 @@ pub struct RingPack {
 }
 
 impl Loss for RingPack {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         let force = self.force;
         Ok(at
             .state
@@ -198,7 +198,7 @@ pub struct RingFilms {
 }
 
 impl Loss for RingFilms {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         let now = at.state.crank.time;
         let dt = self.time.map(|t0| now - t0).filter(|dt| *dt > 0.0);
         self.time = Some(now);
@@ -244,7 +244,7 @@ pub fn coulomb(joint: usize, friction_coefficient: f64) -> Box<dyn Loss> {
 }
 
 impl Loss for Coulomb {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         let (load, state) = (&at.total.joints[self.joint], &at.state.joints[self.joint]);
         let loss = coulomb_sliding(
             self.friction_coefficient,
@@ -265,7 +265,7 @@ pub struct ViscousSkirtLoss {
 }
 
 impl Loss for ViscousSkirtLoss {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         let speed = at.state.joints[self.joint].relative_speed;
         Ok(viscous_skirt(&self.skirt, self.viscosity, speed).power)
     }
@@ -287,7 +287,7 @@ pub struct Rolling {
 }
 
 impl Loss for Rolling {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         let share = at.total.joints[self.joint].force.norm() / self.count;
         let w = at.state.joints[self.joint].relative_speed;
         let loss = self
@@ -311,7 +311,7 @@ pub struct Journal {
 }
 
 impl Loss for Journal {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         let share = at.total.joints[self.joint].force.norm() / self.count;
         let w = at.state.joints[self.joint].relative_speed;
         let one = if self.short {
@@ -342,7 +342,7 @@ pub struct Mesh {
 }
 
 impl Loss for Mesh {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         if let Some(&(_, loss)) = at.rated_meshes.iter().find(|(j, _)| *j == self.joint) {
             return Ok(loss);
         }
@@ -360,7 +360,7 @@ impl Loss for Mesh {
 
 /// The cylinder's valve train at the step's crank angle, speed and acceleration.
 impl Loss for ValveTrainLoss {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         let c = &at.state.crank;
         Ok(ValveTrainLoss::power(
             self,
@@ -379,7 +379,7 @@ pub struct Accessories {
 }
 
 impl Loss for Accessories {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         Ok(accessories_power(self.displacement, at.state.crank.speed))
     }
 }
@@ -393,7 +393,7 @@ pub struct Pumping {
 }
 
 impl Loss for Pumping {
-    fn power(&mut self, at: &At) -> Result<f64, String> {
+    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
         Ok(pumping_power(
             &self.engine,
             self.displacement,
