@@ -42,12 +42,12 @@ pub struct OptimizeTable {
     /// Starts of the search, from a Latin hypercube; default 4.
     pub starts: Option<Whole<1, 64>>,
     /// The seed of the starts' design; default 1. The same seed gives the same result.
-    pub seed: Option<Whole<0, { i64::MAX }>>,
+    pub seed: Option<Whole<0, 4_294_967_295>>,
     /// Evaluations (runs) a start may spend at most; default 200.
     pub max_evaluations: Option<Whole<10, 100_000>>,
     /// The search's last step, as a fraction of each variable's range, from 1e-6 to 0.01;
     /// default 1e-4: the optimum is located to within it.
-    pub tolerance: Option<f64>,
+    pub tolerance: Option<crate::quantity::Ranged<crate::plausible::OptimizeTolerance>>,
 }
 
 fn variables_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
@@ -430,14 +430,7 @@ impl Optimization {
             }
             constraints.push(c);
         }
-        let tolerance = raw.tolerance.unwrap_or(1e-4);
-        if !(1e-6..=0.01).contains(&tolerance) {
-            return Err(fail(
-                "optimize.tolerance",
-                &tolerance,
-                "must lie from 1e-6 to 0.01 (a fraction of each variable's range; default 1e-4)",
-            ));
-        }
+        let tolerance = raw.tolerance.as_ref().map_or(1e-4, |t| t.si);
         let optimization = Self {
             file: file.into(),
             name: name.clone(),

@@ -80,6 +80,8 @@ ranges! {
     /// A coefficient of fluctuation of speed.
     FluctuationCoefficient("FluctuationCoefficient"): 1e-4, 1.0, MAX_OPEN => "must be from 1e-4 to 1 (exclusive): Cs = (ω_max − ω_min)/ω_mean; machines are designed for about 0.002 (electric generators) to 0.2 (crushers), and a ripple as large as the mean speed cannot be met";
     /// A fraction of a cycle's start speed.
+    /// An optimisation's last step, a fraction of each variable's range.
+    OptimizeTolerance("OptimizeTolerance"): 1e-6, 0.01, => "must lie from 1e-6 to 0.01: the search's last step as a fraction of each variable's range (default 1e-4); below 1e-6 the objective's own round-off, above 1 % a coarse optimum";
     SteadyTolerance("SteadyTolerance"): 0.0, 1.0, MIN_OPEN MAX_OPEN => "must be between 0 and 1 (exclusive): a fraction of the cycle's start speed (this project's cases: 1e-5)";
     // [gear]
     /// The teeth of the cardan wheel.
