@@ -119,6 +119,12 @@ const UNMUTABLE: &[(&str, &str)] = &[
          values and document are hashed (tested by a_sweep_points_hash_covers_its_input)",
     ),
     (
+        "optimize",
+        "an optimisation's definition is not a case's input: it is run whole by `cardan run` \
+         (never resumed, sharded or merged, so it has no input hash), and each point it runs is \
+         a case validated as any other",
+    ),
+    (
         "gas.model",
         "a model's fields are its own: another model with the same fields is refused; every \
          model's fields are mutated, each in a case of that model",
