@@ -3,7 +3,7 @@
 //! pistons, each a force on every joint and a torque on the drive, [`LoadFamily`]), the general
 //! planar Newton-Euler solve with every joint reaction unknown ([`planar`], faer), the bodies'
 //! kinetic energy and each body's share of the drive torque ([`energy`]), and the reduced
-//! inertia J*(θ) of the machine motion ([`reduced_inertia`]). `cardan-dynamics` runs them at
+//! inertia J*(θ) of the machine motion ([`reduced_inertia`](mod@reduced_inertia)). `cardan-dynamics` runs them at
 //! every step and re-exports this crate's items.
 
 pub mod energy;
