@@ -105,7 +105,7 @@ pub(crate) fn build(
 
 #[cfg(test)]
 mod tests {
-    use super::{build, Computed};
+    use super::{build, Computed, GearStandard};
     use crate::error::CaseError;
 
     fn check(listed: &[&str], computed: &Computed) -> Result<usize, String> {

@@ -66,7 +66,7 @@ fn a_run_s_iso_rating_at_a_step_is_cardan_gear_s_at_that_load_and_speed() {
         col("gear_mesh_iso_bending_stress_pa"),
     );
     let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .map(|l| l.split(',').map(|x| x.parse().unwrap_or(f64::NAN)).collect())
         .collect();
     // The steps of the largest ISO contact and root stresses: there the run's smallest safety
     // factors are (σ_HG and σ_FG do not change with the step, the load factors are common to
