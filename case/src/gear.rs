@@ -178,9 +178,21 @@ impl GearTable {
         }
         if !spec.standard.iso() {
             let given = [
-                ("accuracy_grade", self.accuracy_grade.as_ref().map(|a| a.written.to_string())),
-                ("application_factor", self.application_factor.as_ref().map(|a| a.written.to_string())),
-                ("iso_quality", self.iso_quality.map(|q| format!("\"{q:?}\"").to_lowercase())),
+                (
+                    "accuracy_grade",
+                    self.accuracy_grade.as_ref().map(|a| a.written.to_string()),
+                ),
+                (
+                    "application_factor",
+                    self.application_factor
+                        .as_ref()
+                        .map(|a| a.written.to_string()),
+                ),
+                (
+                    "iso_quality",
+                    self.iso_quality
+                        .map(|q| format!("\"{q:?}\"").to_lowercase()),
+                ),
             ];
             if let Some((field, Some(value))) = given.into_iter().find(|(_, v)| v.is_some()) {
                 return Err(invalid(

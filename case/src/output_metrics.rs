@@ -44,8 +44,7 @@ pub(crate) fn needs(def: &MetricDef, computed: &Computed) -> Option<&'static str
         Some("a gear-rating metric: needs a [gear] table")
     } else if within(metrics::GEAR_RATING_ISO) && !standard.is_some_and(|s| s.iso()) {
         Some("an ISO 6336 gear-rating metric: needs [gear] standard = \"iso6336\" or \"both\"")
-    } else if metrics::GEAR_RATING_AGMA.contains(&def.name) && !standard.is_some_and(|s| s.agma())
-    {
+    } else if metrics::GEAR_RATING_AGMA.contains(&def.name) && !standard.is_some_and(|s| s.agma()) {
         Some("an AGMA 2001 gear-rating metric: needs [gear] standard = \"agma2001\" (the default) or \"both\"")
     } else if (within(metrics::LOSSES) || within(metrics::ENGINE_FRICTION)) && !computed.friction {
         Some("a loss metric: needs a [friction] table")
@@ -159,7 +158,10 @@ mod tests {
             gear: Some(GearStandard::Iso6336),
             ..all
         };
-        assert_eq!(check(&["iso_contact_safety_factor", "contact_ratio"], &iso), Ok(2));
+        assert_eq!(
+            check(&["iso_contact_safety_factor", "contact_ratio"], &iso),
+            Ok(2)
+        );
         let e = check(&["contact_safety_factor"], &iso).unwrap_err();
         assert!(e.contains("AGMA 2001"), "{e}");
         let both = Computed {
@@ -167,7 +169,10 @@ mod tests {
             ..all
         };
         assert_eq!(
-            check(&["iso_bending_safety_factor", "bending_safety_factor"], &both),
+            check(
+                &["iso_bending_safety_factor", "bending_safety_factor"],
+                &both
+            ),
             Ok(2)
         );
         assert!(check(&["speed_mean"], &all)

@@ -35,7 +35,10 @@ fn gear_file(torque: f64, pinion_speed: f64) -> String {
 /// A number of summary.json's metrics of the one mechanism that has it.
 fn summary_metric(json: &str, name: &str) -> f64 {
     let key = format!("\"{name}\":");
-    let at = json.find(&key).unwrap_or_else(|| panic!("summary lacks {name}")) + key.len();
+    let at = json
+        .find(&key)
+        .unwrap_or_else(|| panic!("summary lacks {name}"))
+        + key.len();
     let rest = &json[at..];
     let end = rest.find([',', '\n', '}']).unwrap();
     rest[..end].trim().parse().unwrap()
@@ -60,13 +63,20 @@ fn a_run_s_iso_rating_at_a_step_is_cardan_gear_s_at_that_load_and_speed() {
             .position(|c| *c == name)
             .unwrap_or_else(|| panic!("no column {name}"))
     };
-    let (load, speed) = (col("total_gear_mesh_tangential_n"), col("gear_mesh_speed_m_s"));
+    let (load, speed) = (
+        col("total_gear_mesh_tangential_n"),
+        col("gear_mesh_speed_m_s"),
+    );
     let (sigma_h, sigma_f) = (
         col("gear_mesh_iso_contact_stress_pa"),
         col("gear_mesh_iso_bending_stress_pa"),
     );
     let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|x| x.parse().unwrap_or(f64::NAN)).collect())
+        .map(|l| {
+            l.split(',')
+                .map(|x| x.parse().unwrap_or(f64::NAN))
+                .collect()
+        })
         .collect();
     // The steps of the largest ISO contact and root stresses: there the run's smallest safety
     // factors are (σ_HG and σ_FG do not change with the step, the load factors are common to
@@ -80,18 +90,37 @@ fn a_run_s_iso_rating_at_a_step_is_cardan_gear_s_at_that_load_and_speed() {
     // 2·30 mm/20 = 3 mm of the gear file, Karhula A9.1.37).
     let r = 0.03;
     for (row, stress, safety, what) in [
-        (peak(sigma_h), sigma_h, "iso_contact_safety_factor", "contact"),
-        (peak(sigma_f), sigma_f, "iso_bending_safety_factor", "bending"),
+        (
+            peak(sigma_h),
+            sigma_h,
+            "iso_contact_safety_factor",
+            "contact",
+        ),
+        (
+            peak(sigma_f),
+            sigma_f,
+            "iso_bending_safety_factor",
+            "bending",
+        ),
     ] {
         let (f, v) = (rows[row][load].abs(), rows[row][speed].abs());
-        assert!(f > 1e3 && v > 1.0, "{what}: a loaded, turning step ({f} N, {v} m/s)");
+        assert!(
+            f > 1e3 && v > 1.0,
+            "{what}: a loaded, turning step ({f} N, {v} m/s)"
+        );
         let text = gear_file(f * r, v / r);
         let gear = cardan_gear_file::parse(Path::new("pair.toml"), &text).unwrap();
         let rated = cardan_gear_file::evaluate(&gear).unwrap();
         let iso = rated.iso.expect("the ISO rating").unwrap();
         let (gear_stress, gear_safety) = match what {
-            "contact" => (iso.sigma_h[0].max(iso.sigma_h[1]), iso.s_h[0].min(iso.s_h[1])),
-            _ => (iso.sigma_f[0].max(iso.sigma_f[1]), iso.s_f[0].min(iso.s_f[1])),
+            "contact" => (
+                iso.sigma_h[0].max(iso.sigma_h[1]),
+                iso.s_h[0].min(iso.s_h[1]),
+            ),
+            _ => (
+                iso.sigma_f[0].max(iso.sigma_f[1]),
+                iso.s_f[0].min(iso.s_f[1]),
+            ),
         };
         // The same functions on the same inputs: the load and speed only pass through the
         // gear file's torque F·r and pinion speed v/r (and its module 2·e/z1), a few roundings

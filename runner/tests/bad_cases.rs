@@ -640,7 +640,12 @@ fn bad_iso_gear_inputs_name_the_gear_field() {
     let cases: &[(&str, &[&str])] = &[
         (
             "standard = \"iso6336\"",
-            &["gear.accuracy_grade", "(missing)", "ISO 1328-1", "accuracy_grade = 7"],
+            &[
+                "gear.accuracy_grade",
+                "(missing)",
+                "ISO 1328-1",
+                "accuracy_grade = 7",
+            ],
         ),
         (
             "standard = \"both\"\naccuracy_grade = 13",
@@ -652,11 +657,18 @@ fn bad_iso_gear_inputs_name_the_gear_field() {
         ),
         (
             "accuracy_grade = 7",
-            &["gear.accuracy_grade = 7", "read only by an ISO 6336 rating", "standard = \"both\""],
+            &[
+                "gear.accuracy_grade = 7",
+                "read only by an ISO 6336 rating",
+                "standard = \"both\"",
+            ],
         ),
         (
             "iso_quality = \"me\"",
-            &["gear.iso_quality = \"me\"", "read only by an ISO 6336 rating"],
+            &[
+                "gear.iso_quality = \"me\"",
+                "read only by an ISO 6336 rating",
+            ],
         ),
         (
             "standard = \"iso\"",
@@ -664,7 +676,12 @@ fn bad_iso_gear_inputs_name_the_gear_field() {
         ),
         (
             "standard = \"both\"\naccuracy_grade = 7\nhardness = [300, 150]",
-            &["gear.hardness", "190-342 HB", "the gear's 150 HB", "standard = \"agma2001\""],
+            &[
+                "gear.hardness",
+                "190-342 HB",
+                "the gear's 150 HB",
+                "standard = \"agma2001\"",
+            ],
         ),
     ];
     for (gear, parts) in cases {

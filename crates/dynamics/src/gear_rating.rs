@@ -29,9 +29,9 @@ use crate::losses::Friction;
 use crate::mesh::{
     mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, GearStandard, ToothLoad,
 };
+use crate::stage::SetupError;
 use cardan_gears::iso6336::{IsoDynamic, IsoInputs, IsoMember, PreparedIso, STEEL_DENSITY};
 use cardan_gears::materials::material;
-use crate::stage::SetupError;
 
 /// The bending geometry factors `[pinion, gear]` of a mesh whose `[gear] j` is not given,
 /// computed from the tooth form with the default generating rack (ISO 53, tip radius 0.25 m):

@@ -162,7 +162,10 @@ fn the_iso_rating_stands_beside_agma_s_without_changing_it() {
     let (agma, _) = rate(&GearSpec::default(), w, force);
     let (both, _) = rate(&iso(GearStandard::Both), w, force);
     let (alone, _) = rate(&iso(GearStandard::Iso6336), w, force);
-    assert_eq!(agma.values()[..MeshRating::AGMA_WIDTH], both.values()[..MeshRating::AGMA_WIDTH]);
+    assert_eq!(
+        agma.values()[..MeshRating::AGMA_WIDTH],
+        both.values()[..MeshRating::AGMA_WIDTH]
+    );
     assert!(agma.iso_contact_stress.is_nan());
     assert_eq!(both.values(), alone.values());
     assert!(both.iso_contact_stress > 0.0 && both.iso_bending_stress > 0.0);
@@ -171,7 +174,10 @@ fn the_iso_rating_stands_beside_agma_s_without_changing_it() {
     let contact = double.iso_contact_stress / both.iso_contact_stress;
     let root = double.iso_bending_stress / both.iso_bending_stress;
     // K_v and K_Hα of method B fall as the line load rises: the ratios lie below √2 and 2.
-    assert!(contact > 1.0 && contact <= 2f64.sqrt() * (1.0 + 1e-12), "{contact}");
+    assert!(
+        contact > 1.0 && contact <= 2f64.sqrt() * (1.0 + 1e-12),
+        "{contact}"
+    );
     assert!(root > 1.0 && root <= 2.0 * (1.0 + 1e-12), "{root}");
     // At no load at all the ISO stresses are 0 and the safety factors infinite, as AGMA's
     // (method B's K_v grows as 1/F_t, its dynamic increment staying as the load vanishes: a

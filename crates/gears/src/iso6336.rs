@@ -179,7 +179,10 @@ fn running_in_class(c: LifeCurve) -> RunningIn {
 pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
     validate(inp)?;
     let prepared = PreparedIso::new(pair, inp)?;
-    prepared.rate(2.0 * inp.pinion_torque / pair.pinion.reference, inp.pinion_speed)
+    prepared.rate(
+        2.0 * inp.pinion_torque / pair.pinion.reference,
+        inp.pinion_speed,
+    )
 }
 
 /// [`rate`] prepared once for many loads and speeds of one pair (a run rates a mesh at every
@@ -400,13 +403,7 @@ impl PreparedIso {
             None => [1.0; 3],
             Some(l) => {
                 let s_lim = inp.members[0].sigma_hlim.min(inp.members[1].sigma_hlim);
-                pit::lubrication_factors(
-                    s_lim,
-                    l.viscosity_40,
-                    v,
-                    l.flank_roughness,
-                    self.rho_red,
-                )
+                pit::lubrication_factors(s_lim, l.viscosity_40, v, l.flank_roughness, self.rho_red)
             }
         };
         let mut out = IsoRating {

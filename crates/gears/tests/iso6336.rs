@@ -207,7 +207,10 @@ fn z_b_is_the_curvature_ratio_of_the_inner_single_contact_point() {
             internal,
         );
         // The same geometry two ways: only rounding apart.
-        assert!((zb - m1.max(1.0)).abs() < 1e-9, "z2 = {z2}: Z_B {zb}, curvature ratio {m1}");
+        assert!(
+            (zb - m1.max(1.0)).abs() < 1e-9,
+            "z2 = {z2}: Z_B {zb}, curvature ratio {m1}"
+        );
     }
 }
 

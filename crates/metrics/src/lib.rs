@@ -597,7 +597,11 @@ mod tests {
     fn the_iso_gear_metrics_are_the_iso_rating_s_and_the_agma_ones_are_registered() {
         assert_eq!(GEAR_RATING_ISO.len(), 4);
         for d in GEAR_RATING_ISO {
-            assert!(d.name.starts_with("iso_") && d.meaning.contains("ISO 6336"), "{}", d.name);
+            assert!(
+                d.name.starts_with("iso_") && d.meaning.contains("ISO 6336"),
+                "{}",
+                d.name
+            );
         }
         for n in GEAR_RATING_AGMA {
             let d = find_in(GEAR_RATING, n).unwrap();
