@@ -579,7 +579,7 @@ fn validate(
             &invalid,
         )?;
     }
-    let gear = raw.gear.as_ref().map(|table| table.spec());
+    let gear = raw.gear.as_ref().map(|t| t.build(&invalid)).transpose()?;
     if gear.is_some() {
         // The run's fastest crank speed: an end of a prescribed ramp (ω² is linear in the
         // angle), a solved motion's start (its later speeds are checked at each step).

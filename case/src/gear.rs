@@ -6,11 +6,14 @@
 //! written there once. [`Ranged`] and [`PerGear`] are the number with a range and the value
 //! given once or per member, also used by the gear file of `cardan gear`.
 
+use crate::error::{CaseError, Invalid};
 pub use crate::plausible::{
-    GeometryFactorJ, Hardness, ProfileShift, QualityNumber, RingAddendum, Teeth,
+    AccuracyGrade, ApplicationFactor, GeometryFactorJ, Hardness, ProfileShift, QualityNumber,
+    RingAddendum, Teeth,
 };
 use crate::quantity::{broken, Dim, Length, NonNegative, Positive, Pressure};
 pub use crate::quantity::{Range, Ranged};
+use cardan_dynamics::mesh::{GearStandard, IsoQuality};
 use cardan_dynamics::{GearMaterial, GearSpec, ToothLoad};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::{de::Error as _, Deserialize, Deserializer};
@@ -82,6 +85,30 @@ pub enum ToothLoadWord {
     Thesis,
 }
 
+/// Which standard rates the stresses: the gear file's `basis` words, or both.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StandardWord {
+    /// AGMA 2001-D04 (the default; the rating of every run before).
+    Agma2001,
+    /// ISO 6336-2/-3:2019 method B, in place of AGMA's stresses and safety factors.
+    Iso6336,
+    /// Both side by side.
+    Both,
+}
+
+/// ISO 6336-5 material quality grade (the gear file's words).
+#[derive(Debug, Clone, Copy, Deserialize, JsonSchema, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum IsoQualityWord {
+    /// ML: modest demands.
+    Ml,
+    /// MQ: the usual industrial quality.
+    Mq,
+    /// ME: high reliability.
+    Me,
+}
+
 /// `[gear]`: the gear pair of every gear mesh of the case and its rating data. Every field is
 /// optional; the defaults are docs/case-file.md's ("Gear rating in runs").
 #[derive(Debug, Deserialize, JsonSchema, serde::Serialize)]
@@ -120,9 +147,64 @@ pub struct GearTable {
     pub twin: Option<bool>,
     /// Which load is rated. Default "tangential".
     pub tooth_load: Option<ToothLoadWord>,
+    /// Which standard rates the stresses and safety factors: "agma2001" (AGMA 2001-D04),
+    /// "iso6336" (ISO 6336-2/-3:2019 method B in its place) or "both" side by side; the
+    /// words of the gear file's `basis`. Default "agma2001".
+    pub standard: Option<StandardWord>,
+    /// ISO 1328-1 accuracy grade of both gears, from 1 to 12, for ISO 6336-1 method B's K_v
+    /// and K_Hα; required by an ISO rating (no default).
+    pub accuracy_grade: Option<Ranged<AccuracyGrade>>,
+    /// ISO 6336-1 application factor K_A, from 1 to 4, for an ISO rating. Default 1 (the
+    /// rated load is the run's computed load, as AGMA's K_o = 1; ISO 6336-1 Annex B: 1.00 for
+    /// uniform driver and driven machine).
+    pub application_factor: Option<Ranged<ApplicationFactor>>,
+    /// ISO 6336-5 material quality "ml", "mq" or "me", for σ_Hlim and σ_Flim of an ISO rating.
+    /// Default "mq".
+    pub iso_quality: Option<IsoQualityWord>,
 }
 
 impl GearTable {
+    /// The gear data of the case ([`GearTable::spec`]), its ISO fields checked against
+    /// `standard`: an ISO rating needs `accuracy_grade`, and an ISO field without one would be
+    /// read by nothing.
+    pub(crate) fn build(&self, invalid: &Invalid) -> Result<GearSpec, CaseError> {
+        let spec = self.spec();
+        if spec.standard.iso() && self.accuracy_grade.is_none() {
+            return Err(invalid(
+                "gear.accuracy_grade",
+                &"(missing)",
+                "an ISO 6336 rating (standard = \"iso6336\" or \"both\") needs the ISO 1328-1 accuracy grade of both gears, 1 to 12, for K_v and K_Hα by ISO 6336-1 method B: add e.g. accuracy_grade = 7",
+            ));
+        }
+        if !spec.standard.iso() {
+            let given = [
+                (
+                    "accuracy_grade",
+                    self.accuracy_grade.as_ref().map(|a| a.written.to_string()),
+                ),
+                (
+                    "application_factor",
+                    self.application_factor
+                        .as_ref()
+                        .map(|a| a.written.to_string()),
+                ),
+                (
+                    "iso_quality",
+                    self.iso_quality
+                        .map(|q| format!("\"{q:?}\"").to_lowercase()),
+                ),
+            ];
+            if let Some((field, Some(value))) = given.into_iter().find(|(_, v)| v.is_some()) {
+                return Err(invalid(
+                    &format!("gear.{field}"),
+                    &value,
+                    "is read only by an ISO 6336 rating, which the case does not ask for: add standard = \"both\" (ISO beside AGMA) or \"iso6336\", or remove it",
+                ));
+            }
+        }
+        Ok(spec)
+    }
+
     /// The gear data of the case: each given field replaces [`GearSpec::default`]'s.
     pub fn spec(&self) -> GearSpec {
         let mut g = GearSpec::default();
@@ -161,6 +243,24 @@ impl GearTable {
         }
         if let Some(t) = self.twin {
             g.twin = t;
+        }
+        if let Some(w) = self.standard {
+            g.standard = match w {
+                StandardWord::Agma2001 => GearStandard::Agma2001,
+                StandardWord::Iso6336 => GearStandard::Iso6336,
+                StandardWord::Both => GearStandard::Both,
+            };
+        }
+        g.accuracy_grade = self.accuracy_grade.as_ref().map(|a| a.si);
+        if let Some(k) = &self.application_factor {
+            g.application_factor = k.si;
+        }
+        if let Some(q) = self.iso_quality {
+            g.iso_quality = match q {
+                IsoQualityWord::Ml => IsoQuality::Ml,
+                IsoQualityWord::Mq => IsoQuality::Mq,
+                IsoQualityWord::Me => IsoQuality::Me,
+            };
         }
         if let Some(t) = self.tooth_load {
             g.tooth_load = match t {

@@ -4,30 +4,33 @@
 //! computes (a gear-rating metric needs `[gear]`, a loss `[friction]`, ...).
 
 use crate::error::{CaseError, Invalid};
+use cardan_dynamics::mesh::GearStandard;
 use cardan_dynamics::metrics::{self, MetricDef};
+use cardan_dynamics::GearSpec;
 use std::sync::Arc;
 
 /// What a case computes besides the metrics every run has.
 pub(crate) struct Computed {
     pub gas: bool,
     pub friction: bool,
-    pub gear: bool,
+    /// With `[gear]`, the standard that rates its stresses.
+    pub gear: Option<GearStandard>,
     pub dynamic: bool,
 }
 
 impl Computed {
     /// What a case with these tables (`[gas]`, `[friction]`, `[gear]`, a solved motion)
     /// computes.
-    pub fn of<G, F, R, D>(
+    pub fn of<G, F, D>(
         gas: &Option<G>,
         friction: &Option<F>,
-        gear: &Option<R>,
+        gear: &Option<GearSpec>,
         dynamics: &Option<D>,
     ) -> Self {
         Self {
             gas: gas.is_some(),
             friction: friction.is_some(),
-            gear: gear.is_some(),
+            gear: gear.as_ref().map(|g| g.standard),
             dynamic: dynamics.is_some(),
         }
     }
@@ -36,8 +39,13 @@ impl Computed {
 /// The table of the registry a metric needs, and the case-file table that makes it computed.
 pub(crate) fn needs(def: &MetricDef, computed: &Computed) -> Option<&'static str> {
     let within = |part: &[MetricDef]| part.contains(def);
-    if within(metrics::GEAR_RATING) && !computed.gear {
+    let standard = computed.gear;
+    if within(metrics::GEAR_RATING) && standard.is_none() {
         Some("a gear-rating metric: needs a [gear] table")
+    } else if within(metrics::GEAR_RATING_ISO) && !standard.is_some_and(|s| s.iso()) {
+        Some("an ISO 6336 gear-rating metric: needs [gear] standard = \"iso6336\" or \"both\"")
+    } else if metrics::GEAR_RATING_AGMA.contains(&def.name) && !standard.is_some_and(|s| s.agma()) {
+        Some("an AGMA 2001 gear-rating metric: needs [gear] standard = \"agma2001\" (the default) or \"both\"")
     } else if (within(metrics::LOSSES) || within(metrics::ENGINE_FRICTION)) && !computed.friction {
         Some("a loss metric: needs a [friction] table")
     } else if (within(metrics::GAS) || within(metrics::GAS_MODEL)) && !computed.gas {
@@ -96,7 +104,7 @@ pub(crate) fn build(
 
 #[cfg(test)]
 mod tests {
-    use super::{build, Computed};
+    use super::{build, Computed, GearStandard};
     use crate::error::CaseError;
 
     fn check(listed: &[&str], computed: &Computed) -> Result<usize, String> {
@@ -118,7 +126,7 @@ mod tests {
         let all = Computed {
             gas: true,
             friction: true,
-            gear: true,
+            gear: Some(GearStandard::Agma2001),
             dynamic: false,
         };
         let ok = [
@@ -138,11 +146,35 @@ mod tests {
         let bare = Computed {
             gas: false,
             friction: false,
-            gear: false,
+            gear: None,
             dynamic: false,
         };
         let e = check(&["mechanical_efficiency"], &bare).unwrap_err();
         assert!(e.contains("[friction]"), "{e}");
+        // Each standard's gear metrics need that standard.
+        let e = check(&["iso_contact_safety_factor"], &all).unwrap_err();
+        assert!(e.contains("standard = \"iso6336\" or \"both\""), "{e}");
+        let iso = Computed {
+            gear: Some(GearStandard::Iso6336),
+            ..all
+        };
+        assert_eq!(
+            check(&["iso_contact_safety_factor", "contact_ratio"], &iso),
+            Ok(2)
+        );
+        let e = check(&["contact_safety_factor"], &iso).unwrap_err();
+        assert!(e.contains("AGMA 2001"), "{e}");
+        let both = Computed {
+            gear: Some(GearStandard::Both),
+            ..all
+        };
+        assert_eq!(
+            check(
+                &["iso_bending_safety_factor", "bending_safety_factor"],
+                &both
+            ),
+            Ok(2)
+        );
         assert!(check(&["speed_mean"], &all)
             .unwrap_err()
             .contains("dynamic"));

@@ -94,6 +94,10 @@ ranges! {
     QualityNumber("GearQualityNumber"): 5.0, 12.0, => "must be an AGMA quality number Qv from 5 to 12";
     /// Brinell hardness of through-hardened steel.
     Hardness("GearHardness"): 140.0, 400.0, => "must be from 140 to 400 HB (through-hardened steel, AGMA 2001-D04 Figs. 3 and 8)";
+    /// An ISO 1328-1 accuracy grade.
+    AccuracyGrade("GearAccuracyGrade"): 1.0, 12.0, => "must be an ISO 1328-1 accuracy grade from 1 to 12 (the gear file's range; ISO 6336-1 method B's K_v and K_Hα read the deviations of the grade)";
+    /// An ISO 6336-1 application factor K_A.
+    ApplicationFactor("GearApplicationFactor"): 1.0, 4.0, => "must be from 1 to 4: ISO 6336-1:2019 Annex B Table B.1 runs from 1.00 (uniform driver and driven machine) to 2.25 (heavy shocks on both), and 4 is well beyond it";
     /// An AGMA bending geometry factor.
     GeometryFactorJ("GearGeometryFactorJ"): 0.0, 1.0, MIN_OPEN MAX_OPEN => "bending geometry factors J must be between 0 and 1";
 }

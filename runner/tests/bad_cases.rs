@@ -628,6 +628,70 @@ fn what_the_run_would_refuse_is_refused_on_reading() {
     assert!(e.contains("name") && e.contains("at most 200"), "{e}");
 }
 
+/// Bad ISO 6336 inputs of `[gear]` are refused on reading (so `cardan check` refuses them as the
+/// run would), naming the field, the value as written, the rule and the fix: an ISO rating
+/// without its accuracy grade, values out of range, an ISO field no rating reads, and a
+/// hardness ISO 6336-5's through-hardened line does not cover (its 190-342 HB, narrower than
+/// AGMA's 140-400).
+#[test]
+fn bad_iso_gear_inputs_name_the_gear_field() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs");
+    let pump = std::fs::read_to_string(dir.join("karhula-pump-r60-l140-a0-w30pi.toml")).unwrap();
+    let cases: &[(&str, &[&str])] = &[
+        (
+            "standard = \"iso6336\"",
+            &[
+                "gear.accuracy_grade",
+                "(missing)",
+                "ISO 1328-1",
+                "accuracy_grade = 7",
+            ],
+        ),
+        (
+            "standard = \"both\"\naccuracy_grade = 13",
+            &["gear.accuracy_grade = 13", "from 1 to 12"],
+        ),
+        (
+            "standard = \"both\"\naccuracy_grade = 7\napplication_factor = 0.8",
+            &["gear.application_factor = 0.8", "from 1 to 4", "Table B.1"],
+        ),
+        (
+            "accuracy_grade = 7",
+            &[
+                "gear.accuracy_grade = 7",
+                "read only by an ISO 6336 rating",
+                "standard = \"both\"",
+            ],
+        ),
+        (
+            "iso_quality = \"me\"",
+            &[
+                "gear.iso_quality = \"me\"",
+                "read only by an ISO 6336 rating",
+            ],
+        ),
+        (
+            "standard = \"iso\"",
+            &["gear.standard", "unknown word \"iso\""],
+        ),
+        (
+            "standard = \"both\"\naccuracy_grade = 7\nhardness = [300, 150]",
+            &[
+                "gear.hardness",
+                "190-342 HB",
+                "the gear's 150 HB",
+                "standard = \"agma2001\"",
+            ],
+        ),
+    ];
+    for (gear, parts) in cases {
+        let e = error_of(&format!("{pump}\n[gear]\n{gear}\n"));
+        for p in *parts {
+            assert!(e.contains(p), "{gear}: {p} not in {e}");
+        }
+    }
+}
+
 /// What the gas model would refuse when the run prepares it is refused on reading, naming the
 /// field the user wrote, in the unit written (issue 36.11): a bore, crank or rod far out of
 /// scale (the run blamed `gas.swept_volume`, no case field), a combustion start outside its

@@ -26,8 +26,12 @@ use cardan_mechanism::{Column, JointKind, Loads, Material, Mechanism, MeshForce,
 use crate::loss::{failed, Loss, LossInput, Site};
 use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
-use crate::mesh::{mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, ToothLoad};
+use crate::mesh::{
+    mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, GearStandard, ToothLoad,
+};
 use crate::stage::SetupError;
+use cardan_gears::iso6336::{IsoDynamic, IsoInputs, IsoMember, PreparedIso, STEEL_DENSITY};
+use cardan_gears::materials::material;
 
 /// The bending geometry factors `[pinion, gear]` of a mesh whose `[gear] j` is not given,
 /// computed from the tooth form with the default generating rack (ISO 53, tip radius 0.25 m):
@@ -68,11 +72,23 @@ pub struct MeshRating {
     pub bending_safety: f64,
     /// Anderson & Loewenthal mesh power loss, W (all gear sets).
     pub loss: f64,
+    /// ISO 6336-2 contact stress σ_H, the larger member's, Pa (NaN without an ISO rating; 0
+    /// at zero load).
+    pub iso_contact_stress: f64,
+    /// ISO 6336-2 pitting safety factor S_H, the smaller member's (infinite at zero load).
+    pub iso_contact_safety: f64,
+    /// ISO 6336-3 root stress σ_F, the larger member's, Pa.
+    pub iso_bending_stress: f64,
+    /// ISO 6336-3 root safety factor S_F, the smaller member's.
+    pub iso_bending_safety: f64,
 }
 
 impl MeshRating {
     /// Values of a rating as a stage's values ([`crate::Step::stages`]): its fields in order.
-    pub const WIDTH: usize = 7;
+    pub const WIDTH: usize = 11;
+    /// The values of a rating without ISO 6336 (the first of [`MeshRating::values`]): a stage
+    /// rating by AGMA alone keeps only these.
+    pub const AGMA_WIDTH: usize = 7;
 
     /// The rating as [`MeshRating::WIDTH`] values.
     pub fn values(&self) -> [f64; Self::WIDTH] {
@@ -84,11 +100,18 @@ impl MeshRating {
             self.bending_stress,
             self.bending_safety,
             self.loss,
+            self.iso_contact_stress,
+            self.iso_contact_safety,
+            self.iso_bending_stress,
+            self.iso_bending_safety,
         ]
     }
 
-    /// The rating at lane `i` of `columns`, a column per [value](MeshRating::values).
+    /// The rating at lane `i` of `columns`, a column per [value](MeshRating::values): all
+    /// [`MeshRating::WIDTH`] of them, or the first [`MeshRating::AGMA_WIDTH`] (the ISO
+    /// values then NaN).
     pub fn at_lane(columns: &[Column], i: usize) -> Self {
+        let iso = |k: usize| columns.get(k).map_or(f64::NAN, |c| c[i]);
         Self {
             tooth_load: columns[0][i],
             dynamic_load: columns[1][i],
@@ -97,6 +120,10 @@ impl MeshRating {
             bending_stress: columns[4][i],
             bending_safety: columns[5][i],
             loss: columns[6][i],
+            iso_contact_stress: iso(7),
+            iso_contact_safety: iso(8),
+            iso_bending_stress: iso(9),
+            iso_bending_safety: iso(10),
         }
     }
 }
@@ -105,6 +132,7 @@ impl MeshRating {
 #[derive(Debug, Clone)]
 pub struct GearRatings {
     meshes: Vec<RatedMesh>,
+    standard: GearStandard,
 }
 
 #[derive(Debug, Clone)]
@@ -132,6 +160,8 @@ struct RatedMesh {
     kv: Option<(u64, DynamicFactor)>,
     /// The set's rating at its face width, prepared once.
     rating: PreparedRating,
+    /// The ISO 6336 rating of the pair, prepared once (`None`: AGMA alone).
+    iso: Option<PreparedIso>,
 }
 
 impl GearRatings {
@@ -255,6 +285,11 @@ impl GearRatings {
             };
             let loss = mesh_loss(spec, mechanism, friction, k)?;
             let prepared = PreparedRating::new(&set.rating, set.face_width);
+            let iso = if spec.standard.iso() {
+                Some(iso_rating(spec, &set)?)
+            } else {
+                None
+            };
             meshes.push(RatedMesh {
                 joint: k,
                 body: j.body,
@@ -275,9 +310,13 @@ impl GearRatings {
                 loss,
                 kv: None,
                 rating: prepared,
+                iso,
             });
         }
-        Ok(Self { meshes })
+        Ok(Self {
+            meshes,
+            standard: spec.standard,
+        })
     }
 
     /// The rated meshes' joints (indices in the topology), in rating order.
@@ -296,6 +335,17 @@ impl GearRatings {
             .iter()
             .map(|m| m.set.pair.contact_ratio)
             .collect()
+    }
+
+    /// Which standard rates the stresses and safety factors.
+    pub fn standard(&self) -> GearStandard {
+        self.standard
+    }
+
+    /// Whether the meshes are rated by ISO 6336 too (each mesh's [`MeshRating`] then has all
+    /// [`MeshRating::WIDTH`] values, else the first [`MeshRating::AGMA_WIDTH`]).
+    pub fn iso(&self) -> bool {
+        self.meshes.iter().any(|m| m.iso.is_some())
     }
 
     /// Whether each mesh gets a bending rating (its J is known).
@@ -330,6 +380,94 @@ impl GearRatings {
             .iter_mut()
             .map(move |m| (m.joint, m.rate(state, total, inertial)))
     }
+}
+
+/// The load cycles of the pinion the ISO life factors `Z_NT`, `Y_NT` are taken at (the gear's:
+/// divided by the ratio): 1e7, the life the AGMA rating of a run is taken at (its `Y_N` = `Z_N`
+/// = 1, AGMA 2001-D04 Figs. 18 and 19 are drawn through 1 at 1e7 cycles), and the gear file's
+/// default `pinion_cycles`.
+pub const ISO_PINION_CYCLES: f64 = 1e7;
+
+/// The ISO 6336 method B rating of `set`'s pair (ISO 6336-1/-2/-3:2019,
+/// [`cardan_gears::iso6336`]) under `spec`, prepared once: `σ_Hlim`, `σ_Flim` and the life
+/// curves of the gear file's material table (`cardan_gears::materials`: "through_hardened" is
+/// its "steel-through-hardened" at each member's hardness, "carburized" its
+/// "steel-case-carburized") at `spec.iso_quality`; `Y_F`, `Y_S` from the tooth form by
+/// ISO 6336-3 method B with the default generating rack (as the computed J,
+/// [`cardan_gears::iso6336_method_b`]); `K_Hβ` the AGMA rating's `Km` for the face width (as the
+/// gear file's default: ISO 6336-1 methods B and C need shaft and bearing data); `Z_E` the
+/// AGMA rating's elastic coefficient (the same expression); `K_v` and `K_Hα` by method B
+/// from `spec.accuracy_grade` (steel blanks, 7830 kg/m³); `Z_L Z_v Z_R` = 1, `Y_B` = `Y_δrelT`
+/// = `Y_RrelT` = 1; [`ISO_PINION_CYCLES`].
+fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError> {
+    let pair = &set.pair;
+    let Some(grade) = spec.accuracy_grade else {
+        return Err(failed(
+            "gear.accuracy_grade",
+            &"an ISO 6336 rating needs the ISO 1328-1 accuracy grade of both gears (1-12) for \
+              K_v and K_Hα by ISO 6336-1 method B: give [gear] accuracy_grade",
+        ));
+    };
+    let table = match spec.material {
+        GearMaterial::ThroughHardened => "steel-through-hardened",
+        GearMaterial::Carburized => "steel-case-carburized",
+    };
+    let table = material(table).expect("the materials table has both steels");
+    let km = set
+        .rating
+        .load_distribution
+        .factor(set.face_width, pair.pinion.working)
+        .map_err(|e| failed("gear.face_width", &e))?
+        .km;
+    let cycles = [ISO_PINION_CYCLES, ISO_PINION_CYCLES / pair.ratio];
+    let member = |k: usize| -> Result<IsoMember, SetupError> {
+        let (which, name) = [(Which::Pinion, "pinion"), (Which::Gear, "gear")][k];
+        let hardness = (spec.material == GearMaterial::ThroughHardened).then_some(spec.hardness[k]);
+        let limits = table.iso_limits(hardness, spec.iso_quality).map_err(|e| {
+            failed(
+                "gear.hardness",
+                &format!(
+                    "{e} (the {name}'s {} HB): give a hardness within it, or rate by AGMA alone \
+                     (standard = \"agma2001\")",
+                    spec.hardness[k]
+                ),
+            )
+        })?;
+        let root = cardan_gears::iso6336_method_b(pair, Member::new(which)).map_err(|e| {
+            failed(
+                "gear",
+                &format!("the {name}'s ISO 6336-3 Y_F and Y_S cannot be computed from the tooth form ({e})"),
+            )
+        })?;
+        Ok(IsoMember {
+            sigma_hlim: limits.contact,
+            sigma_flim: limits.bending,
+            life_curve: table.life_curve(),
+            form_factor: root.form_factor,
+            stress_correction_factor: root.stress_correction,
+            rim_factor: 1.0,
+            notch_sensitivity: 1.0,
+            surface_factor: 1.0,
+            cycles: cycles[k],
+        })
+    };
+    let inputs = IsoInputs {
+        // Not read by the preparation: each step's load and speed are.
+        pinion_torque: 1.0,
+        pinion_speed: 1.0,
+        face_width: set.face_width,
+        application_factor: spec.application_factor,
+        dynamic: IsoDynamic::MethodB {
+            density: STEEL_DENSITY,
+        },
+        accuracy_grade: Some(grade),
+        face_load_factor: km,
+        transverse_load_factor: None,
+        elasticity_factor: set.rating.elastic_coefficient,
+        lubrication: None,
+        members: [member(0)?, member(1)?],
+    };
+    PreparedIso::new(pair, &inputs).map_err(|e| failed("gear", &format!("ISO 6336: {e}")))
 }
 
 /// The mesh loss of gear-mesh joint `joint` of `mechanism` on the pair of `spec`: the model of
@@ -449,6 +587,26 @@ impl RatedMesh {
         } else {
             (f64::NAN, f64::NAN)
         };
+        // ISO 6336 at the same rated load (at the reference circle, the joint's pitch circle:
+        // module = 2·r/z1) and the pinion's speed relative to the carrier, v/r.
+        let [iso_contact_stress, iso_contact_safety, iso_bending_stress, iso_bending_safety] =
+            match &m.iso {
+                None => [f64::NAN; 4],
+                // No load, no stress: the safety factors are infinite, as AGMA's.
+                Some(_) if load == 0.0 => [0.0, f64::INFINITY, 0.0, f64::INFINITY],
+                Some(iso) => {
+                    let speed = motion.relative_speed.abs() / m.pitch_radius;
+                    let r = iso
+                        .rate(load, speed)
+                        .map_err(|e| format!("gear rating of {name}: ISO 6336: {e}"))?;
+                    [
+                        r.sigma_h[0].max(r.sigma_h[1]),
+                        r.s_h[0].min(r.s_h[1]),
+                        r.sigma_f[0].max(r.sigma_f[1]),
+                        r.s_f[0].min(r.s_f[1]),
+                    ]
+                }
+            };
         Ok(MeshRating {
             tooth_load: load,
             dynamic_load: dynamic.dynamic_load,
@@ -457,6 +615,10 @@ impl RatedMesh {
             bending_stress,
             bending_safety,
             loss,
+            iso_contact_stress,
+            iso_contact_safety,
+            iso_bending_stress,
+            iso_bending_safety,
         })
     }
 }

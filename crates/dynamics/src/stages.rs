@@ -268,21 +268,30 @@ impl StageTotals for LossTotals {
 pub struct GearStage {
     ratings: GearRatings,
     room: LaneRoom,
+    /// The values of each mesh: [`MeshRating::WIDTH`] with an ISO 6336 rating, else
+    /// [`MeshRating::AGMA_WIDTH`] (a run rated by AGMA alone keeps the columns it had).
+    per_mesh: usize,
 }
 
 impl GearStage {
     /// The stage of `ratings`, the ratings of a mechanism of `topology`.
     pub fn new(ratings: GearRatings, topology: &Topology) -> Self {
+        let per_mesh = if ratings.iso() {
+            MeshRating::WIDTH
+        } else {
+            MeshRating::AGMA_WIDTH
+        };
         Self {
             ratings,
             room: LaneRoom::for_topology(topology),
+            per_mesh,
         }
     }
 }
 
 impl Stage for GearStage {
     fn width(&self) -> usize {
-        MeshRating::WIDTH * self.ratings.joints().count()
+        self.per_mesh * self.ratings.joints().count()
     }
 
     fn evaluate(
@@ -299,7 +308,7 @@ impl Stage for GearStage {
         for i in 0..block.len {
             let (state, total, inertial) = self.room.take(block, i, true);
             let ratings = self.ratings.ratings(state, total, inertial);
-            let outs = out.chunks_exact_mut(MeshRating::WIDTH);
+            let outs = out.chunks_exact_mut(self.per_mesh);
             for (((_, r), out), (_, loss)) in ratings.zip(outs).zip(passed.iter_mut()) {
                 let r = r.map_err(|e| StageError::Failed(e).at_lane(i))?;
                 for (c, v) in out.iter_mut().zip(r.values()) {
@@ -311,11 +320,12 @@ impl Stage for GearStage {
         Ok(())
     }
 
-    /// Each mesh's dynamic tooth load and contact stress, and its bending stress where it gets
-    /// a bending rating.
+    /// Each mesh's dynamic tooth load; by AGMA its contact stress, and its bending stress where
+    /// it gets a bending rating; by ISO 6336 its contact and root stresses.
     fn columns(&self) -> Vec<StageColumn> {
         let mut c = Vec::new();
         let ratings = &self.ratings;
+        let (agma, iso) = (ratings.standard().agma(), ratings.iso());
         let meshes = ratings
             .names()
             .into_iter()
@@ -324,12 +334,18 @@ impl Stage for GearStage {
         for (k, (name, bending)) in meshes {
             let at = |value: usize, what: &str| StageColumn {
                 name: format!("{name}_{what}"),
-                value: k * MeshRating::WIDTH + value,
+                value: k * self.per_mesh + value,
             };
             c.push(at(1, "dynamic_tooth_load_n"));
-            c.push(at(2, "contact_stress_pa"));
-            if bending {
-                c.push(at(4, "bending_stress_pa"));
+            if agma {
+                c.push(at(2, "contact_stress_pa"));
+                if bending {
+                    c.push(at(4, "bending_stress_pa"));
+                }
+            }
+            if iso {
+                c.push(at(7, "iso_contact_stress_pa"));
+                c.push(at(9, "iso_bending_stress_pa"));
             }
         }
         c
@@ -344,6 +360,14 @@ impl Stage for GearStage {
             contact_ratio: (self.ratings.contact_ratios().into_iter())
                 .fold(f64::INFINITY, f64::min),
             bending: self.ratings.bending().iter().all(|b| *b),
+            per_mesh: self.per_mesh,
+            agma: self.ratings.standard().agma(),
+            iso: IsoTotals {
+                contact_stress: 0.0,
+                contact_safety: f64::INFINITY,
+                bending_stress: 0.0,
+                bending_safety: f64::INFINITY,
+            },
             tooth_load: 0.0,
             dynamic_load: 0.0,
             contact_stress: 0.0,
@@ -368,6 +392,12 @@ struct GearTotals {
     contact_ratio: f64,
     /// Whether every mesh gets a bending rating.
     bending: bool,
+    /// The stage's values of each mesh ([`GearStage`]).
+    per_mesh: usize,
+    /// Whether AGMA's stresses and safety factors are reported.
+    agma: bool,
+    /// ISO 6336's (reported with an ISO rating: `per_mesh` is [`MeshRating::WIDTH`]).
+    iso: IsoTotals,
     tooth_load: f64,
     dynamic_load: f64,
     contact_stress: f64,
@@ -380,6 +410,43 @@ struct GearTotals {
     previous_loss: f64,
 }
 
+/// The ISO 6336 rating over the run: peaks of the stresses, the smallest safety factors.
+#[derive(Debug, Clone, Copy)]
+struct IsoTotals {
+    contact_stress: f64,
+    contact_safety: f64,
+    bending_stress: f64,
+    bending_safety: f64,
+}
+
+impl IsoTotals {
+    fn take(&mut self, r: &MeshRating) {
+        raise(&mut self.contact_stress, r.iso_contact_stress);
+        self.contact_safety = self.contact_safety.min(r.iso_contact_safety);
+        raise(&mut self.bending_stress, r.iso_bending_stress);
+        self.bending_safety = self.bending_safety.min(r.iso_bending_safety);
+    }
+
+    fn merge(&mut self, b: &Self) {
+        raise(&mut self.contact_stress, b.contact_stress);
+        self.contact_safety = self.contact_safety.min(b.contact_safety);
+        raise(&mut self.bending_stress, b.bending_stress);
+        self.bending_safety = self.bending_safety.min(b.bending_safety);
+    }
+
+    /// The ISO metrics; a safety factor only where a mesh carried a load.
+    fn finish(&self, m: &mut Summary) {
+        m.push("iso_contact_stress_max", self.contact_stress);
+        if self.contact_safety.is_finite() {
+            m.push("iso_contact_safety_factor", self.contact_safety);
+        }
+        m.push("iso_bending_stress_max", self.bending_stress);
+        if self.bending_safety.is_finite() {
+            m.push("iso_bending_safety_factor", self.bending_safety);
+        }
+    }
+}
+
 impl StageTotals for GearTotals {
     fn push_lanes(
         &mut self,
@@ -389,7 +456,8 @@ impl StageTotals for GearTotals {
         previous: Option<f64>,
     ) {
         let (mut started, mut t0) = (previous.is_some(), previous.unwrap_or(0.0));
-        let meshes = block.stage_columns[stage].chunks_exact(MeshRating::WIDTH);
+        let meshes = block.stage_columns[stage].chunks_exact(self.per_mesh);
+        let iso = self.per_mesh == MeshRating::WIDTH;
         for i in lanes {
             let (k, time) = (block.first + i, block.state.crank.time[i]);
             let ratings = meshes.clone().map(|c| MeshRating::at_lane(c, i));
@@ -409,6 +477,9 @@ impl StageTotals for GearTotals {
                     raise(&mut self.bending_stress, r.bending_stress);
                     self.bending_safety = self.bending_safety.min(r.bending_safety);
                 }
+                if iso {
+                    self.iso.take(&r);
+                }
             }
             (started, t0) = (true, time);
         }
@@ -426,6 +497,7 @@ impl StageTotals for GearTotals {
         self.contact_safety = self.contact_safety.min(b.contact_safety);
         raise(&mut self.bending_stress, b.bending_stress);
         self.bending_safety = self.bending_safety.min(b.bending_safety);
+        self.iso.merge(&b.iso);
         self.loss_work.merge(&b.loss_work);
         self.previous_loss = b.previous_loss;
     }
@@ -436,21 +508,26 @@ impl StageTotals for GearTotals {
         m.push("contact_ratio", self.contact_ratio);
         m.push("mesh_tangential_load_max", self.tooth_load);
         m.push("dynamic_tooth_load_max", self.dynamic_load);
-        m.push("contact_stress_max", self.contact_stress);
-        // A mesh that never carried a load has no finite safety factor: none is reported.
-        if self.contact_safety.is_finite() {
-            m.push("contact_safety_factor", self.contact_safety);
-        }
-        if self.bending {
-            m.push("bending_stress_max", self.bending_stress);
-            if self.bending_safety.is_finite() {
-                m.push("bending_safety_factor", self.bending_safety);
+        if self.agma {
+            m.push("contact_stress_max", self.contact_stress);
+            // A mesh that never carried a load has no finite safety factor: none is reported.
+            if self.contact_safety.is_finite() {
+                m.push("contact_safety_factor", self.contact_safety);
+            }
+            if self.bending {
+                m.push("bending_stress_max", self.bending_stress);
+                if self.bending_safety.is_finite() {
+                    m.push("bending_safety_factor", self.bending_safety);
+                }
             }
         }
         m.push(
             "gear_mesh_power_loss_mean",
             self.loss_work.value() / run.time,
         );
+        if self.per_mesh == MeshRating::WIDTH {
+            self.iso.finish(m);
+        }
     }
 
     fn fork(&self) -> Box<dyn StageTotals> {
@@ -465,6 +542,7 @@ impl StageTotals for GearTotals {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mesh::GearStandard;
     use crate::{Friction, GearSpec};
     use cardan_mechanism::{MachineGeometry, MassInputs, Options, MECHANISMS};
 
@@ -482,8 +560,20 @@ mod tests {
             let m = (entry.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
             let mut stages: Vec<Box<dyn Stage>> = Vec::new();
             let t = m.topology();
-            if let Ok(r) = GearRatings::new(&GearSpec::default(), m.as_ref(), None) {
-                stages.push(Box::new(GearStage::new(r, t)));
+            // AGMA alone, ISO alone and both: each declares the columns and metrics it gives.
+            let iso = |standard| GearSpec {
+                standard,
+                accuracy_grade: Some(7.0),
+                ..GearSpec::default()
+            };
+            for spec in [
+                GearSpec::default(),
+                iso(GearStandard::Iso6336),
+                iso(GearStandard::Both),
+            ] {
+                if let Ok(r) = GearRatings::new(&spec, m.as_ref(), None) {
+                    stages.push(Box::new(GearStage::new(r, t)));
+                }
             }
             let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
             stages.push(Box::new(LossStage::new(budget, t)));

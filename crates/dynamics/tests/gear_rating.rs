@@ -144,3 +144,46 @@ fn an_interfering_pair_is_refused_with_its_remedy() {
         r.contact_ratios()
     );
 }
+
+/// The ISO 6336 rating beside AGMA's (`standard = Both`) leaves AGMA's figures as they were,
+/// bit for bit; the ISO stresses grow with the load (σ_H about as its square root, σ_F about in
+/// proportion, K_v and K_Hα aside), are 0 without a load, the safety factors then infinite as
+/// AGMA's; `Iso6336` gives the same ISO figures as `Both`.
+#[test]
+fn the_iso_rating_stands_beside_agma_s_without_changing_it() {
+    use cardan_dynamics::mesh::GearStandard;
+    let iso = |standard| GearSpec {
+        standard,
+        accuracy_grade: Some(7.0),
+        ..GearSpec::default()
+    };
+    let w = 30.0 * PI;
+    let force = C::new(8000.0, 3000.0);
+    let (agma, _) = rate(&GearSpec::default(), w, force);
+    let (both, _) = rate(&iso(GearStandard::Both), w, force);
+    let (alone, _) = rate(&iso(GearStandard::Iso6336), w, force);
+    assert_eq!(
+        agma.values()[..MeshRating::AGMA_WIDTH],
+        both.values()[..MeshRating::AGMA_WIDTH]
+    );
+    assert!(agma.iso_contact_stress.is_nan());
+    assert_eq!(both.values(), alone.values());
+    assert!(both.iso_contact_stress > 0.0 && both.iso_bending_stress > 0.0);
+    assert!(both.iso_contact_safety.is_finite() && both.iso_bending_safety.is_finite());
+    let (double, _) = rate(&iso(GearStandard::Both), w, force * 2.0);
+    let contact = double.iso_contact_stress / both.iso_contact_stress;
+    let root = double.iso_bending_stress / both.iso_bending_stress;
+    // K_v and K_Hα of method B fall as the line load rises: the ratios lie below √2 and 2.
+    assert!(
+        contact > 1.0 && contact <= 2f64.sqrt() * (1.0 + 1e-12),
+        "{contact}"
+    );
+    assert!(root > 1.0 && root <= 2.0 * (1.0 + 1e-12), "{root}");
+    // At no load at all the ISO stresses are 0 and the safety factors infinite, as AGMA's
+    // (method B's K_v grows as 1/F_t, its dynamic increment staying as the load vanishes: a
+    // load of round-off size is rated at that increment's finite stress).
+    let (none, _) = rate(&iso(GearStandard::Both), w, C::new(0.0, 0.0));
+    assert_eq!(none.iso_contact_stress, 0.0);
+    assert_eq!(none.iso_contact_safety, f64::INFINITY);
+    assert_eq!(none.iso_bending_safety, f64::INFINITY);
+}

@@ -178,151 +178,315 @@ fn running_in_class(c: LifeCurve) -> RunningIn {
 /// Rates `pair` by ISO 6336-1/-2/-3 method B (spur: `β` = 0). Errors name the input.
 pub fn rate(pair: &GearPair, inp: &IsoInputs) -> Result<IsoRating, GearError> {
     validate(inp)?;
-    let s = &pair.spec;
-    let (m, alpha, b) = (s.module, s.pressure_angle, inp.face_width);
-    let z1 = s.pinion.teeth as f64;
-    let z2 = s.gear.teeth as f64;
-    let u = z2 / z1;
-    let d1 = pair.pinion.reference;
-    let ft = 2.0 * inp.pinion_torque / d1;
-    let v = inp.pinion_speed * d1 / 2.0;
-    let alpha_wt = pair.operating_pressure_angle;
-    let eps = pair.contact_ratio;
-    let k_a = inp.application_factor;
-    let line_load = k_a * ft / b;
+    let prepared = PreparedIso::new(pair, inp)?;
+    prepared.rate(
+        2.0 * inp.pinion_torque / pair.pinion.reference,
+        inp.pinion_speed,
+    )
+}
 
-    let z_h = pit::zone_factor(0.0, alpha_wt, alpha);
-    let z_eps = pit::contact_ratio_factor(eps, 0.0);
-    let z_beta = pit::helix_angle_factor(0.0);
-    let da = [pair.pinion.tip, pair.gear.tip];
-    let db = [pair.pinion.base, pair.gear.base];
-    let df = [pair.pinion.root, pair.gear.root];
-    let (zb, zd) =
-        pit::single_pair_factors(z1, z2.abs(), da, db, alpha_wt, eps, 0.0, pair.internal);
+/// [`rate`] prepared once for many loads and speeds of one pair (a run rates a mesh at every
+/// step): the factors that depend on neither the load nor the speed (`Z_H`, `Z_ε`, `Z_β`,
+/// `Z_B`/`Z_D`, the ISO 1328-1 deviations, `K_Fβ`, `Y_DT`, the life and size factors, `σ_FG`)
+/// are taken here, by the same functions in the same order as [`rate`] takes them, which is
+/// [`PreparedIso::new`] then [`PreparedIso::rate`]: one computation, the same bits.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PreparedIso {
+    inp: IsoInputs,
+    /// Teeth `z1`, `z2` (negative: internal), module \[m\], reference pressure angle \[rad\],
+    /// face width \[m\], pinion reference diameter \[m\].
+    z: [f64; 2],
+    module: f64,
+    alpha: f64,
+    face_width: f64,
+    d1: f64,
+    internal: bool,
+    /// Profile shifts and dedendum coefficients, for the mesh stiffness.
+    shift: [f64; 2],
+    dedendum: [f64; 2],
+    alpha_wt: f64,
+    eps: f64,
+    z_h: f64,
+    z_eps: f64,
+    z_beta: f64,
+    z_bd: [f64; 2],
+    /// `(f_pb, f_fα)` of the accuracy grade \[m\], if given.
+    deviations: Option<(f64, f64)>,
+    /// The pinion's mean of tip and root diameters and base diameter \[m\].
+    dm1: f64,
+    db1: f64,
+    /// Running-in tip relief `C_a` \[m\].
+    tip_relief: f64,
+    k_fb: f64,
+    y_dt: f64,
+    y_beta: f64,
+    /// `ρ_red` at the pitch point \[m\], for `Z_L Z_v Z_R`.
+    rho_red: f64,
+    z_nt: [f64; 2],
+    z_x: [f64; 2],
+    y_nt: [f64; 2],
+    y_x: [f64; 2],
+    sigma_fg: [f64; 2],
+}
 
-    // Stiffness, deviations and running-in (ISO 6336-1 §9, §8.3.4).
-    let (c1, c_ga) = mesh_stiffness(
-        z1,
-        z2,
-        s.pinion.shift,
-        s.gear.shift,
-        [s.pinion.dedendum_coefficient, s.gear.dedendum_coefficient],
-        alpha,
-        eps,
-        line_load,
-    );
-    let deviations = match inp.accuracy_grade {
-        Some(q) => {
-            let a = iso1328_deviations(m, d1, q)?;
-            let g = iso1328_deviations(m, pair.gear.reference, q)?;
-            // The larger of the two gears' deviations, f_pb = f_pt cos α.
-            Some((a.0.max(g.0) * alpha.cos(), a.1.max(g.1)))
-        }
-        None => None,
-    };
-    let need_grade = || {
-        GearError::InvalidInput {
-        field: "accuracy_grade",
-        rule: "ISO 6336-1 method B K_v and K_Hα need the ISO 1328-1 accuracy grade (or give both factors)",
-        value: f64::NAN,
-    }
-    };
-    let y_of = |f: f64| {
-        let [p, g] = inp.members;
-        0.5 * (running_in_allowance(running_in_class(p.life_curve), f, p.sigma_hlim, v)
-            + running_in_allowance(running_in_class(g.life_curve), f, g.sigma_hlim, v))
-    };
-    let (k_v, resonance) = match inp.dynamic {
-        IsoDynamic::Given(k) => (k, None),
-        IsoDynamic::MethodB { density } => {
+impl PreparedIso {
+    /// `pair` with the inputs `inp` (its `pinion_torque` and `pinion_speed` are not read: they
+    /// are [`PreparedIso::rate`]'s). Errors name the input, as [`rate`]'s.
+    pub fn new(pair: &GearPair, inp: &IsoInputs) -> Result<Self, GearError> {
+        validate_fixed(inp)?;
+        let s = &pair.spec;
+        let (m, alpha) = (s.module, s.pressure_angle);
+        let z1 = s.pinion.teeth as f64;
+        let z2 = s.gear.teeth as f64;
+        let d1 = pair.pinion.reference;
+        let alpha_wt = pair.operating_pressure_angle;
+        let eps = pair.contact_ratio;
+        let z_h = pit::zone_factor(0.0, alpha_wt, alpha);
+        let z_eps = pit::contact_ratio_factor(eps, 0.0);
+        let z_beta = pit::helix_angle_factor(0.0);
+        let da = [pair.pinion.tip, pair.gear.tip];
+        let db = [pair.pinion.base, pair.gear.base];
+        let df = [pair.pinion.root, pair.gear.root];
+        let (zb, zd) =
+            pit::single_pair_factors(z1, z2.abs(), da, db, alpha_wt, eps, 0.0, pair.internal);
+        // ISO 6336-1 §9, §8.3.4.
+        let deviations = match inp.accuracy_grade {
+            Some(q) => {
+                let a = iso1328_deviations(m, d1, q)?;
+                let g = iso1328_deviations(m, pair.gear.reference, q)?;
+                // The larger of the two gears' deviations, f_pb = f_pt cos α.
+                Some((a.0.max(g.0) * alpha.cos(), a.1.max(g.1)))
+            }
+            None => None,
+        };
+        if let IsoDynamic::MethodB { density } = inp.dynamic {
             positive("density", density)?;
-            let (f_pb, f_fa) = deviations.ok_or_else(need_grade)?;
-            let dm1 = 0.5 * (da[0] + df[0]);
-            let n = resonance_ratio(
-                inp.pinion_speed,
-                z1,
-                u,
-                pair.internal,
-                dm1,
-                db[0],
-                density,
-                c_ga,
+        }
+        let method_b = matches!(inp.dynamic, IsoDynamic::MethodB { .. })
+            || inp.transverse_load_factor.is_none();
+        if method_b && deviations.is_none() {
+            return Err(GearError::InvalidInput {
+                field: "accuracy_grade",
+                rule: "ISO 6336-1 method B K_v and K_Hα need the ISO 1328-1 accuracy grade (or give both factors)",
+                value: f64::NAN,
+            });
+        }
+        let tip_relief = 0.5
+            * (running_in_tip_relief(inp.members[0].sigma_hlim)
+                + running_in_tip_relief(inp.members[1].sigma_hlim));
+        let h = [(da[0] - df[0]).abs() / 2.0, (da[1] - df[1]).abs() / 2.0];
+        let b = inp.face_width;
+        let k_fb = face_load_factor_root(inp.face_load_factor, (b / h[0]).min(b / h[1]));
+        // `ρ_red` at the pitch point; internal: the ring's concave flank, ρ1 ρ2/(ρ2 − ρ1).
+        let r1 = 0.5 * db[0] * alpha_wt.tan();
+        let r2 = 0.5 * db[1] * alpha_wt.tan();
+        let rho_red = if pair.internal {
+            r1 * r2 / (r2 - r1)
+        } else {
+            r1 * r2 / (r1 + r2)
+        };
+        let mut p = Self {
+            inp: *inp,
+            z: [z1, z2],
+            module: m,
+            alpha,
+            face_width: b,
+            d1,
+            internal: pair.internal,
+            shift: [s.pinion.shift, s.gear.shift],
+            dedendum: [s.pinion.dedendum_coefficient, s.gear.dedendum_coefficient],
+            alpha_wt,
+            eps,
+            z_h,
+            z_eps,
+            z_beta,
+            z_bd: [zb, zd],
+            deviations,
+            dm1: 0.5 * (da[0] + df[0]),
+            db1: db[0],
+            tip_relief,
+            k_fb,
+            y_dt: bend::deep_tooth_factor(eps, inp.accuracy_grade),
+            y_beta: bend::helix_angle_factor(0.0, 0.0),
+            rho_red,
+            z_nt: [0.0; 2],
+            z_x: [0.0; 2],
+            y_nt: [0.0; 2],
+            y_x: [0.0; 2],
+            sigma_fg: [0.0; 2],
+        };
+        for k in 0..2 {
+            let mb = &inp.members[k];
+            p.z_nt[k] = pit::life_factor_contact(mb.life_curve, mb.cycles)?;
+            p.z_x[k] = pit::size_factor_contact(mb.life_curve, m);
+            p.y_nt[k] = bend::life_factor_root(mb.life_curve, mb.cycles);
+            p.y_x[k] = bend::size_factor_root(mb.life_curve, m);
+            p.sigma_fg[k] = bend::root_stress_limit(
+                mb.sigma_flim,
+                p.y_nt[k],
+                mb.notch_sensitivity,
+                mb.surface_factor,
+                p.y_x[k],
             );
-            let c_a = 0.5
-                * (running_in_tip_relief(inp.members[0].sigma_hlim)
-                    + running_in_tip_relief(inp.members[1].sigma_hlim));
-            let k = dynamic_factor_b(&DynamicInputs {
-                resonance_ratio: n,
-                line_load,
-                single_stiffness: c1,
-                f_pb_eff: f_pb - y_of(f_pb),
-                f_fa_eff: f_fa - y_of(f_fa),
-                tip_relief: c_a,
-                total_contact_ratio: eps,
-            })?;
-            (k, Some(n))
         }
-    };
-    let k_hb = inp.face_load_factor;
-    let (k_ha, k_fa) = match inp.transverse_load_factor {
-        Some(k) => (k, k),
-        None => {
-            let (f_pb, _) = deviations.ok_or_else(need_grade)?;
-            let f_th_b = ft * k_a * k_v * k_hb / b;
-            transverse_load_factors(eps, z_eps, c_ga, f_pb - y_of(f_pb), f_th_b)
-        }
-    };
-    let h = [(da[0] - df[0]).abs() / 2.0, (da[1] - df[1]).abs() / 2.0];
-    let k_fb = face_load_factor_root(k_hb, (b / h[0]).min(b / h[1]));
+        Ok(p)
+    }
 
-    // Contact (ISO 6336-2).
-    let z_e = inp.elasticity_factor;
-    let sigma_h0 = pit::nominal_contact_stress(ft, d1, b, u, z_h, z_e, z_eps, z_beta);
-    let z_lvr = lubrication(pair, inp, v);
-    let z_w = 1.0;
-    let y_dt = bend::deep_tooth_factor(eps, inp.accuracy_grade);
-    let mut out = IsoRating {
-        tangential_load: ft,
-        velocity: v,
-        resonance_ratio: resonance,
-        k_a,
-        k_v,
-        k_hbeta: k_hb,
-        k_halpha: k_ha,
-        k_fbeta: k_fb,
-        k_falpha: k_fa,
-        z_h,
-        z_e,
-        z_eps,
-        z_beta,
-        z_bd: [zb, zd],
-        z_nt: [0.0; 2],
-        z_lvr,
-        z_w,
-        z_x: [0.0; 2],
-        sigma_h0,
-        sigma_h: [0.0; 2],
-        sigma_hg: [0.0; 2],
-        s_h: [0.0; 2],
-        y_beta: bend::helix_angle_factor(0.0, 0.0),
-        y_dt,
-        y_f: inp.members.map(|m| m.form_factor),
-        y_s: inp.members.map(|m| m.stress_correction_factor),
-        y_nt: [0.0; 2],
-        y_x: [0.0; 2],
-        sigma_f0: [0.0; 2],
-        sigma_f: [0.0; 2],
-        sigma_fg: [0.0; 2],
-        s_f: [0.0; 2],
-    };
-    rate_members(&mut out, inp, m, ft, b)?;
-    Ok(out)
+    /// The rating at the nominal tangential load `ft` at the reference circle \[N\], positive,
+    /// and the pinion speed relative to the gear's frame `pinion_speed` \[rad/s\], not negative
+    /// (at rest the resonance ratio is 0 and method B's `K_v` is 1).
+    pub fn rate(&self, ft: f64, pinion_speed: f64) -> Result<IsoRating, GearError> {
+        positive("tangential load F_t", ft)?;
+        crate::error::non_negative("pinion speed", pinion_speed)?;
+        let inp = &self.inp;
+        let [z1, z2] = self.z;
+        let u = z2 / z1;
+        let (b, d1, eps) = (self.face_width, self.d1, self.eps);
+        let v = pinion_speed * d1 / 2.0;
+        let k_a = inp.application_factor;
+        let line_load = k_a * ft / b;
+        let (c1, c_ga) = mesh_stiffness(
+            z1,
+            z2,
+            self.shift[0],
+            self.shift[1],
+            self.dedendum,
+            self.alpha,
+            eps,
+            line_load,
+        );
+        let y_of = |f: f64| {
+            let [p, g] = inp.members;
+            0.5 * (running_in_allowance(running_in_class(p.life_curve), f, p.sigma_hlim, v)
+                + running_in_allowance(running_in_class(g.life_curve), f, g.sigma_hlim, v))
+        };
+        // `new` refused method B without the deviations.
+        let (f_pb, f_fa) = self.deviations.unwrap_or((0.0, 0.0));
+        let (k_v, resonance) = match inp.dynamic {
+            IsoDynamic::Given(k) => (k, None),
+            IsoDynamic::MethodB { density } => {
+                let n = resonance_ratio(
+                    pinion_speed,
+                    z1,
+                    u,
+                    self.internal,
+                    self.dm1,
+                    self.db1,
+                    density,
+                    c_ga,
+                );
+                let k = dynamic_factor_b(&DynamicInputs {
+                    resonance_ratio: n,
+                    line_load,
+                    single_stiffness: c1,
+                    f_pb_eff: f_pb - y_of(f_pb),
+                    f_fa_eff: f_fa - y_of(f_fa),
+                    tip_relief: self.tip_relief,
+                    total_contact_ratio: eps,
+                })?;
+                (k, Some(n))
+            }
+        };
+        let k_hb = inp.face_load_factor;
+        let (k_ha, k_fa) = match inp.transverse_load_factor {
+            Some(k) => (k, k),
+            None => {
+                let f_th_b = ft * k_a * k_v * k_hb / b;
+                transverse_load_factors(eps, self.z_eps, c_ga, f_pb - y_of(f_pb), f_th_b)
+            }
+        };
+        // Contact (ISO 6336-2).
+        let z_e = inp.elasticity_factor;
+        let sigma_h0 =
+            pit::nominal_contact_stress(ft, d1, b, u, self.z_h, z_e, self.z_eps, self.z_beta);
+        let z_lvr = match inp.lubrication {
+            None => [1.0; 3],
+            Some(l) => {
+                let s_lim = inp.members[0].sigma_hlim.min(inp.members[1].sigma_hlim);
+                pit::lubrication_factors(s_lim, l.viscosity_40, v, l.flank_roughness, self.rho_red)
+            }
+        };
+        let mut out = IsoRating {
+            tangential_load: ft,
+            velocity: v,
+            resonance_ratio: resonance,
+            k_a,
+            k_v,
+            k_hbeta: k_hb,
+            k_halpha: k_ha,
+            k_fbeta: self.k_fb,
+            k_falpha: k_fa,
+            z_h: self.z_h,
+            z_e,
+            z_eps: self.z_eps,
+            z_beta: self.z_beta,
+            z_bd: self.z_bd,
+            z_nt: self.z_nt,
+            z_lvr,
+            z_w: 1.0,
+            z_x: self.z_x,
+            sigma_h0,
+            sigma_h: [0.0; 2],
+            sigma_hg: [0.0; 2],
+            s_h: [0.0; 2],
+            y_beta: self.y_beta,
+            y_dt: self.y_dt,
+            y_f: inp.members.map(|m| m.form_factor),
+            y_s: inp.members.map(|m| m.stress_correction_factor),
+            y_nt: self.y_nt,
+            y_x: self.y_x,
+            sigma_f0: [0.0; 2],
+            sigma_f: [0.0; 2],
+            sigma_fg: self.sigma_fg,
+            s_f: [0.0; 2],
+        };
+        self.rate_members(&mut out, ft);
+        Ok(out)
+    }
+
+    /// The per-member stresses, limits and safety factors, once the pair's factors are in
+    /// `out`.
+    fn rate_members(&self, out: &mut IsoRating, ft: f64) {
+        let (k_a, k_v, k_hb, k_ha) = (out.k_a, out.k_v, out.k_hbeta, out.k_halpha);
+        let (k_fb, k_fa, z_lvr, z_w) = (out.k_fbeta, out.k_falpha, out.z_lvr, out.z_w);
+        let (sigma_h0, y_dt) = (out.sigma_h0, out.y_dt);
+        for k in 0..2 {
+            let mb = &self.inp.members[k];
+            let sh = pit::contact_stress(out.z_bd[k], sigma_h0, k_a, k_v, k_hb, k_ha);
+            let shg = pit::pitting_stress_limit(
+                mb.sigma_hlim,
+                [out.z_nt[k], z_lvr[0], z_lvr[1], z_lvr[2], z_w, out.z_x[k]],
+            );
+            let sf0 = bend::nominal_root_stress(
+                ft,
+                self.face_width,
+                self.module,
+                mb.form_factor,
+                mb.stress_correction_factor,
+                out.y_beta,
+                mb.rim_factor,
+                y_dt,
+            );
+            let sf = bend::root_stress(sf0, k_a, k_v, k_fb, k_fa);
+            out.sigma_h[k] = sh;
+            out.sigma_hg[k] = shg;
+            out.s_h[k] = shg / sh;
+            out.sigma_f0[k] = sf0;
+            out.sigma_f[k] = sf;
+            out.s_f[k] = out.sigma_fg[k] / sf;
+        }
+    }
 }
 
 /// Checks the inputs of [`rate`].
 fn validate(inp: &IsoInputs) -> Result<(), GearError> {
     positive("pinion torque", inp.pinion_torque)?;
     positive("pinion speed", inp.pinion_speed)?;
+    validate_fixed(inp)
+}
+
+/// Checks the inputs of [`PreparedIso::new`]: all but the load and the speed.
+fn validate_fixed(inp: &IsoInputs) -> Result<(), GearError> {
     positive("face width", inp.face_width)?;
     positive("application factor K_A", inp.application_factor)?;
     positive("face load factor K_Hβ", inp.face_load_factor)?;
@@ -336,84 +500,6 @@ fn validate(inp: &IsoInputs) -> Result<(), GearError> {
         positive("notch sensitivity Y_δrelT", m.notch_sensitivity)?;
         positive("surface factor Y_RrelT", m.surface_factor)?;
         positive("load cycles", m.cycles)?;
-    }
-    Ok(())
-}
-
-/// `[Z_L, Z_v, Z_R]`: ISO 6336-2 §11 method B from the oil and the flank roughness, else 1
-/// (`ρ_red` at the pitch point; a ring's concave flank gives `ρ1 ρ2/(ρ2 − ρ1)`).
-fn lubrication(pair: &GearPair, inp: &IsoInputs, v: f64) -> [f64; 3] {
-    let db = [pair.pinion.base, pair.gear.base];
-    let alpha_wt = pair.operating_pressure_angle;
-    match inp.lubrication {
-        None => [1.0; 3],
-        Some(l) => {
-            let r1 = 0.5 * db[0] * alpha_wt.tan();
-            let r2 = 0.5 * db[1] * alpha_wt.tan();
-            // Internal: the ring's concave flank, ρ_red = ρ1 ρ2/(ρ2 − ρ1).
-            let rho_red = if pair.internal {
-                r1 * r2 / (r2 - r1)
-            } else {
-                r1 * r2 / (r1 + r2)
-            };
-            let s_lim = inp.members[0].sigma_hlim.min(inp.members[1].sigma_hlim);
-            pit::lubrication_factors(s_lim, l.viscosity_40, v, l.flank_roughness, rho_red)
-        }
-    }
-}
-
-/// The per-member stresses, limits and safety factors of [`rate`], once the pair's factors
-/// are in `out`.
-fn rate_members(
-    out: &mut IsoRating,
-    inp: &IsoInputs,
-    m: f64,
-    ft: f64,
-    b: f64,
-) -> Result<(), GearError> {
-    let (k_a, k_v, k_hb, k_ha) = (out.k_a, out.k_v, out.k_hbeta, out.k_halpha);
-    let (k_fb, k_fa, z_lvr, z_w) = (out.k_fbeta, out.k_falpha, out.z_lvr, out.z_w);
-    let (sigma_h0, y_dt) = (out.sigma_h0, out.y_dt);
-    for k in 0..2 {
-        let mb = &inp.members[k];
-        let sh = pit::contact_stress(out.z_bd[k], sigma_h0, k_a, k_v, k_hb, k_ha);
-        let z_nt = pit::life_factor_contact(mb.life_curve, mb.cycles)?;
-        let z_x = pit::size_factor_contact(mb.life_curve, m);
-        let shg = pit::pitting_stress_limit(
-            mb.sigma_hlim,
-            [z_nt, z_lvr[0], z_lvr[1], z_lvr[2], z_w, z_x],
-        );
-        let sf0 = bend::nominal_root_stress(
-            ft,
-            b,
-            m,
-            mb.form_factor,
-            mb.stress_correction_factor,
-            out.y_beta,
-            mb.rim_factor,
-            y_dt,
-        );
-        let sf = bend::root_stress(sf0, k_a, k_v, k_fb, k_fa);
-        let y_nt = bend::life_factor_root(mb.life_curve, mb.cycles);
-        let y_x = bend::size_factor_root(mb.life_curve, m);
-        let sfg = bend::root_stress_limit(
-            mb.sigma_flim,
-            y_nt,
-            mb.notch_sensitivity,
-            mb.surface_factor,
-            y_x,
-        );
-        out.z_nt[k] = z_nt;
-        out.z_x[k] = z_x;
-        out.sigma_h[k] = sh;
-        out.sigma_hg[k] = shg;
-        out.s_h[k] = shg / sh;
-        out.y_nt[k] = y_nt;
-        out.y_x[k] = y_x;
-        out.sigma_f0[k] = sf0;
-        out.sigma_f[k] = sf;
-        out.sigma_fg[k] = sfg;
-        out.s_f[k] = sfg / sf;
     }
     Ok(())
 }

@@ -43,8 +43,11 @@ pub fn helix_angle_factor(beta: f64) -> f64 {
 /// (ISO 6336-2:2019 §6.2, eqs. (10)-(14)): `M1 = tan α_wt / √([√(d_a1²/d_b1² − 1) − 2π/z1]
 /// [√(d_a2²/d_b2² − 1) − (ε_α − 1) 2π/z2])`, `M2` the same with the gears swapped; spur
 /// `Z_B = max(1, M1)`, `Z_D = max(1, M2)`; `ε_β ≥ 1`: 1; between: `M − ε_β (M − 1)` (not
-/// below 1). An internal wheel has `Z_D = 1` (§6.2). Diameters \[m\] (magnitudes), `alpha_wt`
-/// \[rad\].
+/// below 1). An internal wheel has `Z_D = 1` (§6.2), and its `z2` counts negative in `M1`
+/// (ISO's sign convention for internal gears): the ring's flank at the pinion's inner point of
+/// single contact lies `(ε_α − 1) p_b` beyond the ring's tip along the line of action, where an
+/// external wheel's lies short of its tip, so its term is `√(d_a2²/d_b2² − 1) + (ε_α − 1) 2π/|z2|`.
+/// Diameters \[m\] (magnitudes), `z2` \[-\] (magnitude), `alpha_wt` \[rad\].
 #[allow(clippy::too_many_arguments)]
 pub fn single_pair_factors(
     z1: f64,
@@ -59,7 +62,8 @@ pub fn single_pair_factors(
     let r1 = ((da[0] / db[0]).powi(2) - 1.0).max(0.0).sqrt();
     let r2 = ((da[1] / db[1]).powi(2) - 1.0).max(0.0).sqrt();
     let t = alpha_wt.tan();
-    let m1 = t / ((r1 - 2.0 * PI / z1) * (r2 - (eps_alpha - 1.0) * 2.0 * PI / z2)).sqrt();
+    let sign = if internal { -1.0 } else { 1.0 };
+    let m1 = t / ((r1 - 2.0 * PI / z1) * (r2 - (eps_alpha - 1.0) * 2.0 * PI / (sign * z2))).sqrt();
     let m2 = t / ((r2 - 2.0 * PI / z2) * (r1 - (eps_alpha - 1.0) * 2.0 * PI / z1)).sqrt();
     let pick = |m: f64| {
         if !m.is_finite() || eps_beta >= 1.0 {

@@ -159,6 +159,61 @@ fn internal_pair_contact_is_milder_and_has_no_z_d() {
     assert_eq!(i.z_bd[1], 1.0);
 }
 
+/// Z_B = M1 is √ of the relative curvature at the pinion's inner point of single contact B over
+/// that at the pitch point C (ISO 6336-2 §6.2's meaning of eq. (10)), computed here from the
+/// flanks' radii of curvature along the line of action, with no ISO formula: ρ1 from the
+/// pinion's tip less one base pitch, ρ2 = ρ1 ∓ the distance between the tangency points
+/// (external: Σ ρ = a sin α_w; internal: ρ2 − ρ1 = a sin α_w), curvature 1/ρ1 ± 1/ρ2. An
+/// internal 20/40 pair at 20° with a 0.8-module ring addendum: M1 ≈ 1.17 (before the ring's
+/// sign was kept, the external formula gave 2.25 and σ_H 1.9 times too high).
+#[test]
+fn z_b_is_the_curvature_ratio_of_the_inner_single_contact_point() {
+    use cardan_gears::iso6336_pitting::single_pair_factors;
+    for (z2, ring_addendum) in [(40, 1.0), (-40, 0.8), (-60, 1.0)] {
+        let mut spec = cardan_gears::PairSpec::standard(3e-3, 20, z2, 20f64.to_radians(), 0.0, 0.0);
+        if z2 < 0 {
+            spec.gear = spec.gear.with_addendum(ring_addendum);
+        }
+        let p = cardan_gears::GearPair::new(spec).unwrap();
+        let internal = z2 < 0;
+        let (rb1, rb2) = (p.pinion.base / 2.0, p.gear.base.abs() / 2.0);
+        let ra1 = p.pinion.tip / 2.0;
+        let aw = p.operating_pressure_angle;
+        let tangency = (rb2 - if internal { rb1 } else { -rb1 }) * aw.tan();
+        let pb = std::f64::consts::PI * 3e-3 * 20f64.to_radians().cos();
+        let rho1 = |at_b: bool| {
+            if at_b {
+                (ra1 * ra1 - rb1 * rb1).sqrt() - pb
+            } else {
+                rb1 * aw.tan()
+            }
+        };
+        let curvature = |r1: f64| {
+            if internal {
+                1.0 / r1 - 1.0 / (r1 + tangency)
+            } else {
+                1.0 / r1 + 1.0 / (tangency - r1)
+            }
+        };
+        let m1 = (curvature(rho1(true)) / curvature(rho1(false))).sqrt();
+        let (zb, _) = single_pair_factors(
+            20.0,
+            f64::from(z2.abs()),
+            [p.pinion.tip, p.gear.tip.abs()],
+            [p.pinion.base, p.gear.base.abs()],
+            aw,
+            p.contact_ratio,
+            0.0,
+            internal,
+        );
+        // The same geometry two ways: only rounding apart.
+        assert!(
+            (zb - m1.max(1.0)).abs() < 1e-9,
+            "z2 = {z2}: Z_B {zb}, curvature ratio {m1}"
+        );
+    }
+}
+
 #[test]
 fn method_b_dynamic_factor_is_plausible_and_grows_with_speed() {
     // Method B K_v: above 1, rising with speed below resonance, and the transverse factors

@@ -5,6 +5,7 @@
 
 use crate::SetupError;
 use cardan_gears::geometry::{GearPair, PairSpec};
+pub use cardan_gears::materials::IsoQuality;
 use cardan_gears::mesh_loss::MeshSpeeds;
 use cardan_mechanism::{JointMotion, State, C};
 
@@ -59,6 +60,31 @@ pub enum GearMaterial {
     Carburized,
 }
 
+/// Which standard rates the meshes' stresses and safety factors: the words of the gear file's
+/// `[rating] basis` (`cardan gear`), and both side by side.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum GearStandard {
+    /// AGMA 2001-D04 (the rating of every run before ISO 6336 came in).
+    #[default]
+    Agma2001,
+    /// ISO 6336-2/-3:2019 method B, in place of AGMA's stresses and safety factors.
+    Iso6336,
+    /// Both, side by side.
+    Both,
+}
+
+impl GearStandard {
+    /// Whether AGMA 2001's stresses and safety factors are reported.
+    pub fn agma(self) -> bool {
+        self != Self::Iso6336
+    }
+
+    /// Whether ISO 6336's are computed and reported.
+    pub fn iso(self) -> bool {
+        self != Self::Agma2001
+    }
+}
+
 /// The gear pair of a mesh and its rating data, SI. Defaults: Karhula (2008) App. 8.1 and 9.1
 /// where it gives a value, this project's stated choice elsewhere.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -90,6 +116,18 @@ pub struct GearSpec {
     /// Two identical gear sets side by side share the load (Nunes 2017's twin set).
     pub twin: bool,
     pub tooth_load: ToothLoad,
+    /// Which standard rates the stresses (default AGMA 2001 alone).
+    pub standard: GearStandard,
+    /// ISO 1328-1 accuracy grade of both gears (1-12), for ISO 6336-1 method B's `K_v` and
+    /// `K_Hα`; required with an ISO rating (no default: nothing in the case implies it).
+    pub accuracy_grade: Option<f64>,
+    /// ISO 6336-1 application factor `K_A` (default 1: the run's tooth load is the computed
+    /// load at every step, gas and inertia, as the AGMA rating's overload factor `K_o` = 1;
+    /// ISO 6336-1:2019 Annex B, Table B.1: 1.00 for a uniform driver and driven machine).
+    pub application_factor: f64,
+    /// ISO 6336-5 material quality of both gears, for `σ_Hlim` and `σ_Flim` (default MQ,
+    /// ISO 6336-5:2016 §5.2's usual industrial quality, the gear file's default).
+    pub iso_quality: IsoQuality,
 }
 
 impl Default for GearSpec {
@@ -107,6 +145,10 @@ impl Default for GearSpec {
             youngs_modulus: 210e9,
             twin: false,
             tooth_load: ToothLoad::Tangential,
+            standard: GearStandard::Agma2001,
+            accuracy_grade: None,
+            application_factor: 1.0,
+            iso_quality: IsoQuality::Mq,
         }
     }
 }

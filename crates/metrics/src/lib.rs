@@ -187,6 +187,23 @@ pub const GEAR_RATING: &[MetricDef] = &[
     def("bending_stress_max", "Pa", T, GR, Lo, "gear rating: largest AGMA bending stress (with the bending geometry factors J known)"),
     def("bending_safety_factor", "1", T, GR, Hi, "gear rating: smallest AGMA bending safety factor S_F over the run"),
     def("gear_mesh_power_loss_mean", "W", T, GR, Lo, "gear rating: mean Anderson & Loewenthal mesh loss (A9.1.40-55), all gear sets"),
+    def("iso_contact_stress_max", "Pa", T, GR, Lo, "gear rating: largest ISO 6336-2:2019 method B contact stress σ_H over the run, members and meshes, at the rated tooth load (with gear.standard = \"iso6336\" or \"both\")"),
+    def("iso_contact_safety_factor", "1", T, GR, Hi, "gear rating: smallest ISO 6336-2 pitting safety factor S_H = σ_HG/σ_H over the run (stress ratio, as AGMA's)"),
+    def("iso_bending_stress_max", "Pa", T, GR, Lo, "gear rating: largest ISO 6336-3:2019 method B tooth root stress σ_F (Y_F, Y_S from the tooth form)"),
+    def("iso_bending_safety_factor", "1", T, GR, Hi, "gear rating: smallest ISO 6336-3 root safety factor S_F = σ_FG/σ_F over the run"),
+];
+
+/// The metrics of [`GEAR_RATING`] that only an ISO 6336 rating gives (`[gear] standard =
+/// "iso6336"` or `"both"`): its last four.
+pub const GEAR_RATING_ISO: &[MetricDef] = GEAR_RATING.split_at(GEAR_RATING.len() - 4).1;
+
+/// The metrics of [`GEAR_RATING`] that only an AGMA 2001 rating gives (`[gear] standard =
+/// "agma2001"`, the default, or `"both"`).
+pub const GEAR_RATING_AGMA: &[&str] = &[
+    "contact_stress_max",
+    "contact_safety_factor",
+    "bending_stress_max",
+    "bending_safety_factor",
 ];
 
 /// The fmep metrics of an engine with friction (`cardan_dynamics::engine_metrics`, after the run).
@@ -573,6 +590,22 @@ mod tests {
         // Names are unique.
         for (k, d) in METRICS.iter().enumerate() {
             assert!(METRICS[..k].iter().all(|e| e.name != d.name), "{}", d.name);
+        }
+    }
+
+    #[test]
+    fn the_iso_gear_metrics_are_the_iso_rating_s_and_the_agma_ones_are_registered() {
+        assert_eq!(GEAR_RATING_ISO.len(), 4);
+        for d in GEAR_RATING_ISO {
+            assert!(
+                d.name.starts_with("iso_") && d.meaning.contains("ISO 6336"),
+                "{}",
+                d.name
+            );
+        }
+        for n in GEAR_RATING_AGMA {
+            let d = find_in(GEAR_RATING, n).unwrap();
+            assert!(d.meaning.contains("AGMA"), "{n}");
         }
     }
 

@@ -46,6 +46,8 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("{joint}_dynamic_tooth_load_n", "with [gear]: Buckingham's dynamic tooth load of the mesh (Karhula A8.1.14), per gear set"),
     ("{joint}_contact_stress_pa", "with [gear]: AGMA contact stress of the mesh"),
     ("{joint}_bending_stress_pa", "with [gear] and known J: AGMA bending stress, the larger member's"),
+    ("{joint}_iso_contact_stress_pa", "with [gear] standard = \"iso6336\" or \"both\": ISO 6336-2 method B contact stress σ_H of the mesh, the larger member's"),
+    ("{joint}_iso_bending_stress_pa", "with [gear] standard = \"iso6336\" or \"both\": ISO 6336-3 method B tooth root stress σ_F, the larger member's"),
     ("friction_torque_nm", "with [friction]: the drive torque that covers the losses, Σ P / ω"),
     ("power_loss_{component}_w", "with [friction]: one loss component's power (rings, skirt, a slide, a revolute joint's bearings by joint name, a gear mesh by joint name)"),
     // The whole machine (issues 24, 35; the `machine_stage` of cardan-dynamics).
