@@ -185,6 +185,13 @@ crank_pin = { model = "palmgren", pitch_diameter = "50 mm", static_load_rating =
     let path = ["friction".to_string(), "valve_train".to_string()];
     let valves = set(table, &path, toml::Value::String("flat".into()));
     bases.push((file.clone(), valves));
+    // A gear rated by ISO 6336 beside AGMA 2001 (the fields ISO reads, refused without it).
+    let gear = "nunes-op-r26-l90-2000rpm-lead10.toml";
+    let (file, table) = bases.iter().find(|(f, _)| f.ends_with(gear)).unwrap();
+    let standard = ["gear".to_string(), "standard".to_string()];
+    let grade = ["gear".to_string(), "accuracy_grade".to_string()];
+    let iso = set(table, &standard, toml::Value::String("both".into()));
+    bases.push((file.clone(), set(&iso, &grade, toml::Value::Integer(7))));
     bases
 }
 
