@@ -16,6 +16,7 @@ use crate::case::{case_of_table, Case};
 use crate::error::CaseError;
 use crate::output_metrics::{needs, Computed};
 use crate::quantity::Whole;
+use crate::sweep::invalid;
 use crate::units::{split_number, to_si, Dimension};
 use cardan_dynamics::metrics;
 use schemars::JsonSchema;
@@ -171,22 +172,6 @@ pub struct Optimization {
     pub seed: u64,
     pub max_evaluations: usize,
     pub tolerance: f64,
-}
-
-fn invalid(
-    file: &Path,
-    case: &str,
-    field: &str,
-    value: &dyn std::fmt::Display,
-    rule: &str,
-) -> CaseError {
-    CaseError::Invalid {
-        file: file.into(),
-        case: case.to_string(),
-        field: field.to_string(),
-        value: value.to_string(),
-        rule: rule.to_string(),
-    }
 }
 
 /// The dimension whose SI unit is a metric's unit ("1": a pure number), if a case file has one.

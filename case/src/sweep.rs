@@ -39,7 +39,8 @@ pub const MAX_POINTS: usize = 10_000_000;
 /// each validated point a [`crate::Case`] (a few kilobytes each).
 pub const MAX_EXPANDED: usize = 100_000;
 
-fn invalid(
+/// A field of `case` in `file` refused: its value and the rule it breaks.
+pub(crate) fn invalid(
     file: &Path,
     case: &str,
     field: &str,
