@@ -34,4 +34,4 @@ pub use table::{case_folders, TableSweep, CASE_FOLDERS_UP_TO};
 pub use train::run_case;
 #[cfg(feature = "test-hooks")]
 pub use train::test_hooks;
-pub(crate) use train::{run_trains, StepsTo};
+pub(crate) use train::{log_warnings, run_trains, StepsTo};
