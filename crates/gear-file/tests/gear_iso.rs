@@ -209,3 +209,29 @@ fn span_width_through_the_gear_file_matches_the_published_example() {
     assert!(ring["measurement"]["gear"]["span_width"].is_null());
     assert!(num(&ring["measurement"]["gear"]["dimension_over_pins"]) > 0.0);
 }
+
+#[test]
+fn no_number_in_the_report_prints_a_negative_zero() {
+    // Issue 39 item 5: a value that rounds to zero printed "-0.0000". A profile shift of
+    // −0.00001 is written to 4 decimals in the geometry table.
+    let text = shipped(ISO).replace(
+        "teeth = [20, 40]",
+        "teeth = [20, 40]\nprofile_shift = [-0.00001, 0.00001]",
+    );
+    let md = report_of(&text).to_markdown();
+    assert!(
+        md.contains("| profile shift x1 / x2 (ISO) | 0.0000 / 0.0000 | - |"),
+        "{md}"
+    );
+    // No number anywhere is a minus sign before zeros only (the inputs echo "-0.00001").
+    let negative_zero = md.match_indices('-').any(|(i, _)| {
+        let digits: String = md[i + 1..]
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect();
+        digits.starts_with('0')
+            && digits.contains('.')
+            && digits.chars().all(|c| c == '0' || c == '.')
+    });
+    assert!(!negative_zero, "{md}");
+}
