@@ -274,8 +274,14 @@ fn an_iso_field_asks_for_the_iso_rating_and_the_overrides_are_taken() {
 fn a_bad_iso_override_names_its_field_and_value() {
     let text = shipped(ISO).replace("accuracy_grade = 6 ", "iso_dynamic_factor = 0.9\n# ");
     let e = error_of(&text);
-    assert!(e.contains("rating.iso_dynamic_factor") && e.contains("0.9"), "{e}");
-    let text = shipped(ISO).replace("[rating.gear]\n", "[rating.gear]\nsigma_hlim = \"-5 MPa\"\n");
+    assert!(
+        e.contains("rating.iso_dynamic_factor") && e.contains("0.9"),
+        "{e}"
+    );
+    let text = shipped(ISO).replace(
+        "[rating.gear]\n",
+        "[rating.gear]\nsigma_hlim = \"-5 MPa\"\n",
+    );
     let e = error_of(&text);
     assert!(e.contains("sigma_hlim") && e.contains("-5 MPa"), "{e}");
 }

@@ -52,8 +52,8 @@ fn iso1328_round(t: f64) -> f64 {
 /// as ISO 1328-1:1995 tabulates them (Tables 1 and 3): the grade 5 formulas
 /// `f_pt = 0.3 (m + 0.4 √d) + 4` µm and `f_fα = 2.5 √m + 0.17 √d + 0.5` µm (clause 6), with
 /// `m` and `d` the geometric means of the tables' module and diameter ranges
-/// ([`iso1328_range_mean`]), times the step `√2^(q − 5)` of the unrounded grade 5 value,
-/// then rounded ([`iso1328_round`]) (clause 5). Grade 7, 50 < d ≤ 125 mm,
+/// (`iso1328_range_mean`), times the step `√2^(q − 5)` of the unrounded grade 5 value,
+/// then rounded (`iso1328_round`) (clause 5). Grade 7, 50 < d ≤ 125 mm,
 /// 2 < m ≤ 3.5 mm: 12 µm and 12 µm, the tables' values. `module`, `diameter` \[m\] (the
 /// diameter's magnitude for a ring), `q` in 1..=12.
 pub fn iso1328_deviations(module: f64, diameter: f64, q: f64) -> Result<(f64, f64), GearError> {
