@@ -6,7 +6,7 @@
 
 use crate::output::{summary_json, MechanismResult};
 use crate::per_step::StepColumns;
-use crate::run::{run_trains, StepsTo};
+use crate::run::train::{run_trains, StepsTo};
 use cardan_case::case::Case;
 use rayon::prelude::*;
 use std::collections::HashMap;
