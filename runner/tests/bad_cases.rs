@@ -1302,7 +1302,11 @@ fn an_optimisation_of_a_metric_no_mechanism_reports_is_refused_by_check_and_run(
         assert!(batch.optimizations.is_empty(), "case {k} accepted");
         assert_eq!(checked.len(), 1, "{checked:?}");
         for w in *words {
-            assert!(checked[0].contains(w), "case {k}: {w:?} not in {}", checked[0]);
+            assert!(
+                checked[0].contains(w),
+                "case {k}: {w:?} not in {}",
+                checked[0]
+            );
         }
         let out = dir.path().join(format!("out{k}"));
         let options = cardan_runner::RunOptions {

@@ -93,12 +93,27 @@ fn three_shards_merged_equal_one_run_and_strangers_are_refused() {
     // record, listed by the index.
     let optimum = "optimize-thesis-pump";
     let holding: Vec<&PathBuf> = shards.iter().filter(|s| s.join(optimum).exists()).collect();
-    assert_eq!(holding.len(), 1, "the optimisation in one shard: {holding:?}");
-    for f in ["run.json", "report.md", "cardan_gear/optimum.json", "slider_crank/history.csv"] {
-        assert!(merged.join(optimum).join(f).is_file(), "{optimum}/{f} missing");
+    assert_eq!(
+        holding.len(),
+        1,
+        "the optimisation in one shard: {holding:?}"
+    );
+    for f in [
+        "run.json",
+        "report.md",
+        "cardan_gear/optimum.json",
+        "slider_crank/history.csv",
+    ] {
+        assert!(
+            merged.join(optimum).join(f).is_file(),
+            "{optimum}/{f} missing"
+        );
     }
     let index = std::fs::read_to_string(merged.join("index.html")).unwrap();
-    assert!(index.contains(&format!("{optimum}/report.md")), "not in the index");
+    assert!(
+        index.contains(&format!("{optimum}/report.md")),
+        "not in the index"
+    );
 
     // Refused, with nothing written: a shard missing, a shard twice, a shard of another batch
     // (other cases), a shard of another program.

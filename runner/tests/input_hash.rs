@@ -557,7 +557,10 @@ fn an_optimisations_hash_covers_its_definition() {
     for (from, to) in [
         ("sense = \"max\"", "sense = \"min\""),
         ("[\"100 mm\", \"300 mm\"]", "[\"100 mm\", \"250 mm\"]"),
-        ("\"bending_safety_factor >= 1.2\"", "\"bending_safety_factor >= 1.3\""),
+        (
+            "\"bending_safety_factor >= 1.2\"",
+            "\"bending_safety_factor >= 1.3\"",
+        ),
         ("seed = 1", "seed = 2"),
         ("max_evaluations = 400", "max_evaluations = 300"),
         ("bore = \"120 mm\"", "bore = \"121 mm\""),
@@ -569,6 +572,10 @@ fn an_optimisations_hash_covers_its_definition() {
     ] {
         assert!(text.contains(from), "{from}");
         let changed = text.replacen(from, to, 1);
-        assert_ne!(before, hash(&file, &changed), "{from} -> {to} kept the hash");
+        assert_ne!(
+            before,
+            hash(&file, &changed),
+            "{from} -> {to} kept the hash"
+        );
     }
 }

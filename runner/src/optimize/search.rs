@@ -123,7 +123,12 @@ pub fn check_metrics(o: &Optimization) -> Result<(), CaseError> {
                 format!("the {m}'s case there does not run, so its metrics are not known: narrow the ranges ({e})"),
             )
         })?;
-        let names = result.summary.metrics.iter().map(|x| x.name.clone()).collect();
+        let names = result
+            .summary
+            .metrics
+            .iter()
+            .map(|x| x.name.clone())
+            .collect();
         reported.push((m, names));
     }
     let nearest = |metric: &str, names: &[&String]| {

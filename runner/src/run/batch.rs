@@ -3,8 +3,8 @@
 
 use super::case_folder::{run_and_write, Written};
 use super::cases::{load_batch, matches_pattern};
-use super::options::{Report, RunOptions};
 use super::optimizations::run_optimizations;
+use super::options::{Report, RunOptions};
 use super::shard;
 use super::sweeps::{sweep_targets, write_sweeps, Point, SweepTarget};
 use super::table::{run_table, TableSweep};

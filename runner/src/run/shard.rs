@@ -249,8 +249,7 @@ impl Manifest {
         reports: bool,
         failures: &[String],
     ) -> Self {
-        let (shards, table_ranges, optimization_shards) =
-            assign(cases, tables, optimizations, n);
+        let (shards, table_ranges, optimization_shards) = assign(cases, tables, optimizations, n);
         let mut hash = Fnv::default();
         hash.update(format!("{n} shards, reports {reports}").as_bytes());
         for f in failures {
