@@ -15,7 +15,11 @@ fn cardan(args: &[&std::ffi::OsStr]) -> std::process::Output {
 #[test]
 fn check_and_run_an_optimisation() {
     let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("kinematic.toml");
+    // The batch: the optimisation and a case beside it (so that each of two shards has work).
+    let batch = dir.path().join("batch");
+    std::fs::create_dir(&batch).unwrap();
+    std::fs::write(batch.join("good.toml"), cardan_testing::cases::THESIS_PUMP).unwrap();
+    let file = batch.join("kinematic.toml");
     let case = kinematic_optimization("", "rod_angular_velocity_max >= 20 rad/s");
     std::fs::write(&file, &case).unwrap();
     let out = cardan(&["check".as_ref(), file.as_os_str()]);
@@ -43,7 +47,7 @@ fn check_and_run_an_optimisation() {
     let results = dir.path().join("out");
     let out = cardan(&[
         "run".as_ref(),
-        file.as_os_str(),
+        batch.as_os_str(),
         "--out".as_ref(),
         results.as_os_str(),
         "--quiet".as_ref(),
@@ -74,7 +78,7 @@ fn check_and_run_an_optimisation() {
         let shard = dir.path().join(format!("shard{}", &k[..1]));
         let out = cardan(&[
             "run".as_ref(),
-            file.as_os_str(),
+            batch.as_os_str(),
             "--out".as_ref(),
             shard.as_os_str(),
             "--shard".as_ref(),
@@ -107,6 +111,7 @@ fn check_and_run_an_optimisation() {
     );
     for f in [
         "index.html",
+        "good/summary.json",
         "kinematic/run.json",
         "kinematic/report.md",
         "kinematic/slider_crank/optimum.json",
