@@ -40,7 +40,7 @@ pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
 /// The expected cost of an optimisation (`[optimize]`), in step-evaluations: at most its
 /// starts times its evaluations a start, each a run of one mechanism's case as the file gives
 /// it ([`cost`]), for each of its mechanisms. An upper bound (a start that converges stops
-/// early), the same on every machine: an optimisation is one unit of [`assign`]'s rule, run
+/// early), the same on every machine: an optimisation is one unit of [`assignment`]'s rule, run
 /// whole by one shard.
 pub fn optimization_cost(o: &Optimization) -> u128 {
     let evaluations = (o.starts * o.max_evaluations) as u128;
