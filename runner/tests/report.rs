@@ -510,7 +510,11 @@ fn index_links_every_report() {
         .into_iter()
         .filter(|p| p.join("convergence.svg").is_file())
         .collect();
-    assert_eq!(optimizations.len(), 1, "the shipped thesis-pump optimisation");
+    assert_eq!(
+        optimizations.len(),
+        1,
+        "the shipped thesis-pump optimisation"
+    );
     for f in &optimizations {
         let link = format!("{}/report.md", f.file_name().unwrap().to_string_lossy());
         assert!(links.contains(&link.as_str()), "{link}");
