@@ -32,10 +32,11 @@ pub fn worker_threads(requested: Option<usize>, cores: usize) -> (Option<usize>,
 }
 
 /// Loads, validates, runs and writes every case under `paths` (or those `options.only`
-/// selects) into `out/<case name>/`, then every optimisation (`[optimize]`) into its folder. A panic inside a case is caught and reported as that
-/// case's failure. An `out` that is not a folder is refused before anything runs; leftovers
-/// of killed runs in it are removed; `index.html` (and an `--only` run's sweep report) is
-/// rewritten whenever the folder's contents change, so that it never describes old results.
+/// selects) into `out/<case name>/`, then every optimisation (`[optimize]`) into its folder.
+/// A panic inside a case is caught and reported as that case's failure. An `out` that is not
+/// a folder is refused before anything runs; leftovers of killed runs in it are removed;
+/// `index.html` (and an `--only` run's sweep report) is rewritten whenever the folder's
+/// contents change, so that it never describes old results.
 pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let mut report = Report::default();
     if let Ok(meta) = std::fs::metadata(out) {
