@@ -380,3 +380,50 @@ fn check_takes_the_cardan_pair_where_a_run_does() {
     );
     assert!(said.contains("balance.cardan_counterweights"), "{said}");
 }
+
+/// A table sweep whose every point warns (a grid too coarse for its peaks) says so in one
+/// line for the sweep, with the count and the first point's warning, not a line a point (a
+/// million-point sweep would print a million); a case run alone still prints its own.
+#[test]
+fn a_table_sweep_sums_up_its_points_warnings_in_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let coarse = shipped().replace("steps = 7200", "steps = 16");
+    assert!(
+        coarse.contains("steps = 16"),
+        "the shipped case's steps changed"
+    );
+    let sweep = format!(
+        "{coarse}\n[output]\ncase_folders = false\n[sweep]\n\"geometry.rod_length\" = {{ from = \"140 mm\", to = \"300 mm\", points = 12 }}\n"
+    );
+    std::fs::write(dir.path().join("coarse.toml"), &sweep).unwrap();
+    let run = cardan(&[
+        &"run",
+        &dir.path(),
+        &"--out",
+        &dir.path().join("out"),
+        &"--quiet",
+    ]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{stderr}");
+    let lines: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("low from sampling"))
+        .collect();
+    assert_eq!(lines.len(), 1, "{stderr}");
+    assert!(
+        lines[0].contains("12 of 12 point(s) gave warnings"),
+        "{}",
+        lines[0]
+    );
+    std::fs::write(dir.path().join("coarse.toml"), &coarse).unwrap();
+    let alone = cardan(&[
+        &"run",
+        &dir.path(),
+        &"--out",
+        &dir.path().join("out2"),
+        &"--quiet",
+    ]);
+    let stderr = String::from_utf8_lossy(&alone.stderr);
+    assert!(alone.status.success(), "{stderr}");
+    assert!(stderr.contains("low from sampling"), "{stderr}");
+}

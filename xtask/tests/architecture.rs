@@ -88,8 +88,9 @@ fn the_report_crate_does_not_depend_on_the_runner() {
 }
 
 /// The crates of `cardan-dynamics`'s jobs point one way: the losses (models, budget, engine
-/// losses, fmep) and the loads (families, planar solve, energy) sit below the step loop and its
-/// stages, which evaluate them; the loads need the mechanism alone.
+/// losses, fmep) and the loads (families, planar solve, energy) sit below the step pipeline
+/// (`cardan-pipeline`: the stage contract, the step loop, the summary), and that below the
+/// stages (`cardan-dynamics`), which evaluate them; the loads need the mechanism alone.
 #[test]
 fn the_loss_and_load_crates_sit_below_the_step_loop() {
     let manifest = std::fs::read_to_string(root().join("crates/losses/Cargo.toml")).unwrap();
@@ -112,8 +113,28 @@ fn the_loss_and_load_crates_sit_below_the_step_loop() {
             "crates/loads depends on {line}: the loads need the mechanism alone"
         );
     }
+    // The step pipeline knows the contract, not the stages: it sits below the crate that
+    // holds them (dynamics: the gear ratings, the losses' stage, the machine) and the balance.
+    let pipeline = std::fs::read_to_string(root().join("crates/pipeline/Cargo.toml")).unwrap();
+    let pipeline = pipeline.split("[dependencies]").nth(1).unwrap_or("");
+    for line in pipeline.lines().filter(|l| l.starts_with("cardan-")) {
+        let name = line.split(['.', ' ', '=']).next().unwrap_or("");
+        assert!(
+            [
+                "cardan-metrics",
+                "cardan-losses",
+                "cardan-loads",
+                "cardan-mechanism"
+            ]
+            .contains(&name),
+            "crates/pipeline depends on {line}: the pipeline needs the loads, the metric \
+             registry, the mesh's components (its peaks) and the mechanism alone"
+        );
+    }
     let dynamics = std::fs::read_to_string(root().join("crates/dynamics/Cargo.toml")).unwrap();
-    assert!(dynamics.contains("cardan-losses") && dynamics.contains("cardan-loads"));
+    assert!(["cardan-losses", "cardan-loads", "cardan-pipeline"]
+        .iter()
+        .all(|c| dynamics.contains(c)));
 }
 
 /// The packages a package of `lock` (a Cargo.lock) builds, itself included, by name: the closure

@@ -33,12 +33,10 @@ pub use cardan_loads::{energy, family, planar, reduced_inertia};
 pub use cardan_losses::{engine_losses, fmep, loss, loss_models, losses, mesh};
 /// The metric registry, its own crate (the reports read it without the physics).
 pub use cardan_metrics as metrics;
-pub mod parallel;
-pub mod stage;
+/// The step pipeline (the stage contract, the step loop, the sinks and the summary), its own
+/// crate: re-exported, so that its paths here stay as they were.
+pub use cardan_pipeline::{parallel, stage, step, stepper, summary};
 pub mod stages;
-pub mod step;
-pub mod stepper;
-pub mod summary;
 
 pub use cardan_loads::{
     kinetic_energy, torque_shares, Gas, Inertial, LoadFamily, ReducedInertia, ReducedInertiaOf,
@@ -50,15 +48,13 @@ pub use cardan_losses::{
     Loss, LossBudget, LossInput, LossModel, Oil, Parameters, Site, ToothLoad, ValveTrain,
     ValveTrainGeometry, ValveTrainLoss, LOSS_MODELS,
 };
+pub use cardan_pipeline::{
+    run, run_parallel, run_summary, summary_chunk, Block, GasAt, Joinable, LaneError, PassedOn,
+    RunError, RunTotals, SetupError, Sink, Stage, StageColumn, StageError, StageTotals, Step,
+    StepBlock, StepRecord, StepScratch, Steps, SummarySink, MAX_CHUNK,
+};
 pub use gear_rating::{GearRatings, MeshRating};
 pub use machine::{Machine, MachineKind};
 pub use machine_stage::MachineStage;
 pub use metrics::{Aggregation, Metric, MetricDef, Summary, METRICS};
-pub use parallel::{run_parallel, run_summary, Joinable};
-pub use stage::{
-    Block, LaneError, PassedOn, RunTotals, SetupError, Stage, StageColumn, StageError, StageTotals,
-};
 pub use stages::{GearStage, LossStage};
-pub use step::{Sink, Step, StepBlock, StepRecord, StepScratch, Steps};
-pub use stepper::{run, GasAt, RunError};
-pub use summary::{summary_chunk, SummarySink, MAX_CHUNK};

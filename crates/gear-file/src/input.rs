@@ -357,8 +357,8 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
 
     let basis = iso_input::basis(r);
     let members = [
-        member("pinion", &r.pinion, basis, invalid)?,
-        member("gear", &r.gear, basis, invalid)?,
+        member("pinion", &r.pinion, iso_input::iso_asked(r), invalid)?,
+        member("gear", &r.gear, iso_input::iso_asked(r), invalid)?,
     ];
     if members[0].lewis_y.is_some() != members[1].lewis_y.is_some() {
         let y = r.gear.lewis_y.as_ref().map_or("(missing)", |y| &y.written);
@@ -507,7 +507,7 @@ fn elastic(
 fn member(
     which: &str,
     m: &MemberTable,
-    basis: Basis,
+    iso_asked: bool,
     invalid: &Invalid,
 ) -> Result<MemberInputs, GearFileError> {
     let mat = iso_input::member_material(which, m, invalid)?;
@@ -581,7 +581,7 @@ fn member(
             contact_allowable_through_hardened,
         )?,
         material: mat,
-        iso: iso_input::iso_member(which, m, mat, basis == Basis::Iso6336, invalid)?,
+        iso: iso_input::iso_member(which, m, mat, iso_asked, invalid)?,
     })
 }
 

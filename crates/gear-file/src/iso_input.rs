@@ -31,9 +31,9 @@ pub fn member_material(
 }
 
 /// The member's ISO inputs when it gives `form_factor` (then `stress_correction_factor` and
-/// the limits, given or from its material, are required), else `None`; `required` (the
-/// verdict's basis is ISO) makes the ISO inputs required, Y_F and Y_S then computed from the
-/// tooth form where not given.
+/// the limits, given or from its material, are required), else `None`; `required` (the file
+/// asks for the ISO rating, [`iso_asked`]) makes the ISO inputs required, Y_F and Y_S then
+/// computed from the tooth form where not given.
 pub fn iso_member(
     which: &str,
     m: &MemberTable,
@@ -98,6 +98,27 @@ pub fn iso_member(
         )?,
         life_curve: mat.map_or(LifeCurve::ThroughHardened, |m| m.life_curve()),
     }))
+}
+
+/// Whether the file asks for the ISO 6336 rating: its verdict's basis is ISO, or it gives a
+/// field only the ISO rating reads (`accuracy_grade`, `iso_dynamic_factor`,
+/// `transverse_load_factor`, `face_load_factor`, `application_factor`, `density`,
+/// `oil_viscosity`, `flank_roughness`, a member's `sigma_hlim` or `sigma_flim`). Then the ISO
+/// rating is computed beside AGMA's, `Y_F` and `Y_S` from the tooth form where not given: a
+/// value the user wrote is never left unread.
+pub fn iso_asked(r: &RatingTable) -> bool {
+    let member = |m: &MemberTable| m.sigma_hlim.is_some() || m.sigma_flim.is_some();
+    r.basis == BasisWord::Iso6336
+        || r.accuracy_grade.is_some()
+        || r.iso_dynamic_factor.is_some()
+        || r.transverse_load_factor.is_some()
+        || r.face_load_factor.is_some()
+        || r.application_factor.is_some()
+        || r.density.is_some()
+        || r.oil_viscosity.is_some()
+        || r.flank_roughness.is_some()
+        || member(&r.pinion)
+        || member(&r.gear)
 }
 
 /// The verdict's basis.

@@ -1,6 +1,7 @@
 //! The ISO 6336 method B rating of a gear file beside its AGMA 2001 one, and the tooth
 //! thickness measurements: computed, written to `gear.json` and `report.md`.
 
+use super::md_table::{cells, num, nums, Table};
 use super::rating::GearReport;
 use super::validated::*;
 use cardan_gears::iso6336::IsoDynamic;
@@ -73,93 +74,65 @@ pub fn iso_markdown(report: &GearReport, o: &mut String) {
         Some(i) if matches!(i.dynamic, IsoDynamic::Given(_)) => "given",
         _ => "ISO 6336-1 method B",
     };
-    let _ = writeln!(o, "| quantity | value | unit |\n|---|---:|---|");
-    let mut row = |q: &str, v: String, u: &str| {
-        let _ = writeln!(o, "| {q} | {v} | {u} |");
-    };
-    row(
+    let mut t = Table::quantities(o);
+    let ft = r.tangential_load;
+    t.value(
         "tangential load at the reference circle F_t",
-        format!("{:.2}", r.tangential_load),
+        ft,
+        1.0,
+        2,
         "N",
     );
-    row("application factor K_A", format!("{:.4}", r.k_a), "-");
-    row(
+    t.value("application factor K_A", r.k_a, 1.0, 4, "-");
+    t.value(
         &format!("dynamic factor K_v ({dynamic})"),
-        format!("{:.4}", r.k_v),
+        r.k_v,
+        1.0,
+        4,
         "-",
     );
     if let Some(n) = r.resonance_ratio {
-        row("resonance ratio N", format!("{n:.4}"), "-");
+        t.value("resonance ratio N", n, 1.0, 4, "-");
     }
-    row(
-        "face load factors K_Hβ / K_Fβ",
-        format!("{:.4} / {:.4}", r.k_hbeta, r.k_fbeta),
-        "-",
-    );
-    row(
-        "transverse load factors K_Hα / K_Fα",
-        format!("{:.4} / {:.4}", r.k_halpha, r.k_falpha),
-        "-",
-    );
-    row("zone factor Z_H", format!("{:.4}", r.z_h), "-");
-    row(
-        "elasticity factor Z_E",
-        format!("{:.2}", r.z_e / 1e3),
-        "√MPa",
-    );
-    row("contact ratio factor Z_ε", format!("{:.4}", r.z_eps), "-");
-    row(
-        "Z_L / Z_v / Z_R / Z_W",
-        format!(
-            "{:.4} / {:.4} / {:.4} / {:.4}",
-            r.z_lvr[0], r.z_lvr[1], r.z_lvr[2], r.z_w
-        ),
-        "-",
-    );
-    row(
-        "nominal contact stress σ_H0",
-        format!("{:.2}", r.sigma_h0 / 1e6),
-        "MPa",
-    );
-    let _ = writeln!(
-        o,
-        "\n| per member | pinion | gear | unit |\n|---|---:|---:|---|"
-    );
-    let mut pair_row = |q: &str, a: [f64; 2], scale: f64, u: &str| {
-        let _ = writeln!(
-            o,
-            "| {q} | {:.4} | {:.4} | {u} |",
-            a[0] / scale,
-            a[1] / scale
-        );
-    };
-    pair_row("Z_B / Z_D", r.z_bd, 1.0, "-");
-    pair_row("life factor Z_NT", r.z_nt, 1.0, "-");
-    pair_row("size factor Z_X", r.z_x, 1.0, "-");
-    pair_row("contact stress σ_H", r.sigma_h, 1e6, "MPa");
-    pair_row("pitting stress limit σ_HG", r.sigma_hg, 1e6, "MPa");
-    pair_row("life factor Y_NT", r.y_nt, 1.0, "-");
-    pair_row("size factor Y_X", r.y_x, 1.0, "-");
-    pair_row("root stress σ_F", r.sigma_f, 1e6, "MPa");
-    pair_row("root stress limit σ_FG", r.sigma_fg, 1e6, "MPa");
-    pair_row("bending safety factor S_F", r.s_f, 1.0, "-");
-    pair_row("pitting safety factor S_H", r.s_h, 1.0, "-");
+    let kb = nums(&[r.k_hbeta, r.k_fbeta], 4);
+    t.row("face load factors K_Hβ / K_Fβ", &kb, "-");
+    let ka = nums(&[r.k_halpha, r.k_falpha], 4);
+    t.row("transverse load factors K_Hα / K_Fα", &ka, "-");
+    t.value("zone factor Z_H", r.z_h, 1.0, 4, "-");
+    t.value("elasticity factor Z_E", r.z_e, 1e3, 2, "√MPa");
+    t.value("contact ratio factor Z_ε", r.z_eps, 1.0, 4, "-");
+    let z = nums(&[r.z_lvr[0], r.z_lvr[1], r.z_lvr[2], r.z_w], 4);
+    t.row("Z_L / Z_v / Z_R / Z_W", &z, "-");
+    t.value("nominal contact stress σ_H0", r.sigma_h0, 1e6, 2, "MPa");
+    o.push('\n');
+    let mut t = Table::members(o, "per member");
+    t.pair("Z_B / Z_D", r.z_bd, 1.0, 4, "-");
+    t.pair("life factor Z_NT", r.z_nt, 1.0, 4, "-");
+    t.pair("size factor Z_X", r.z_x, 1.0, 4, "-");
+    t.pair("contact stress σ_H", r.sigma_h, 1e6, 4, "MPa");
+    t.pair("pitting stress limit σ_HG", r.sigma_hg, 1e6, 4, "MPa");
+    t.pair("life factor Y_NT", r.y_nt, 1.0, 4, "-");
+    t.pair("size factor Y_X", r.y_x, 1.0, 4, "-");
+    t.pair("root stress σ_F", r.sigma_f, 1e6, 4, "MPa");
+    t.pair("root stress limit σ_FG", r.sigma_fg, 1e6, 4, "MPa");
+    t.pair("bending safety factor S_F", r.s_f, 1.0, 4, "-");
+    t.pair("pitting safety factor S_H", r.s_h, 1.0, 4, "-");
     if let Some(Ok(a)) = &report.rating {
         let _ = writeln!(
             o,
             "\n### AGMA 2001 and ISO 6336 side by side (verdict basis: {})\n\n| safety factor | AGMA pinion | AGMA gear | ISO pinion | ISO gear |\n|---|---:|---:|---:|---:|",
             basis.word()
         );
-        let _ = writeln!(
-            o,
-            "| bending (SF / S_F) | {:.3} | {:.3} | {:.3} | {:.3} |",
-            a.bending_safety[0], a.bending_safety[1], r.s_f[0], r.s_f[1]
+        let sf = cells(
+            &[a.bending_safety[0], a.bending_safety[1], r.s_f[0], r.s_f[1]],
+            3,
         );
-        let _ = writeln!(
-            o,
-            "| pitting (SH / S_H) | {:.3} | {:.3} | {:.3} | {:.3} |",
-            a.contact_safety[0], a.contact_safety[1], r.s_h[0], r.s_h[1]
+        let sh = cells(
+            &[a.contact_safety[0], a.contact_safety[1], r.s_h[0], r.s_h[1]],
+            3,
         );
+        let _ = writeln!(o, "| bending (SF / S_F) | {sf} |");
+        let _ = writeln!(o, "| pitting (SH / S_H) | {sh} |");
     }
 }
 
@@ -240,30 +213,18 @@ pub fn measurement_markdown(input: &GearFile, o: &mut String) {
         }
         Ok(ms) => ms,
     };
-    let _ = writeln!(o, "With the thinning of `thickness_allowance`. A ring's dimension is between the pins.\n\n| quantity | pinion | gear | unit |\n|---|---:|---:|---|");
-    let span = |s: &Option<Span>, f: fn(&Span) -> String| s.as_ref().map_or("-".to_string(), f);
     let _ = writeln!(
         o,
-        "| teeth spanned k | {} | {} | - |",
-        span(&ms[0].0, |s| s.teeth.to_string()),
-        span(&ms[1].0, |s| s.teeth.to_string())
+        "With the thinning of `thickness_allowance`. A ring's dimension is between the pins.\n"
     );
-    let _ = writeln!(
-        o,
-        "| span width W_k | {} | {} | mm |",
-        span(&ms[0].0, |s| format!("{:.4}", s.width * 1e3)),
-        span(&ms[1].0, |s| format!("{:.4}", s.width * 1e3))
-    );
-    let _ = writeln!(
-        o,
-        "| pin / ball diameter D_M | {:.4} | {:.4} | mm |",
-        ms[0].1.pin_diameter * 1e3,
-        ms[1].1.pin_diameter * 1e3
-    );
-    let _ = writeln!(
-        o,
-        "| dimension over (between) pins M_d | {:.4} | {:.4} | mm |",
-        ms[0].1.dimension * 1e3,
-        ms[1].1.dimension * 1e3
-    );
+    let mut t = Table::members(o, "quantity");
+    let span = |k: usize, f: fn(&Span) -> String| ms[k].0.as_ref().map_or("-".to_string(), f);
+    let k = [0, 1].map(|k| span(k, |s| s.teeth.to_string()));
+    t.pair_text("teeth spanned k", [&k[0], &k[1]], "-");
+    let w = [0, 1].map(|k| span(k, |s| num(s.width * 1e3, 4)));
+    t.pair_text("span width W_k", [&w[0], &w[1]], "mm");
+    let pins = [ms[0].1.pin_diameter, ms[1].1.pin_diameter];
+    t.pair("pin / ball diameter D_M", pins, 1e-3, 4, "mm");
+    let dims = [ms[0].1.dimension, ms[1].1.dimension];
+    t.pair("dimension over (between) pins M_d", dims, 1e-3, 4, "mm");
 }

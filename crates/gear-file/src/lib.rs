@@ -22,6 +22,7 @@ mod input;
 mod iso_input;
 mod iso_rate;
 mod iso_rating;
+mod md_table;
 mod rating;
 mod report;
 mod table;

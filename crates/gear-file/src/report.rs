@@ -1,15 +1,11 @@
 //! `gear.json` and `report.md` of a rated pair.
 
+use super::md_table::{cell, num, nums, Table};
 use super::rating::{check_info, GearReport, JSource, Severity};
 use super::validated::*;
 use serde_json::{json, Map, Value};
 use std::f64::consts::PI;
 use std::fmt::Write as _;
-
-/// Text for a Markdown table cell: `|` escaped.
-fn cell(s: &str) -> String {
-    s.replace('|', "\\|")
-}
 
 /// How a J was obtained, with the critical section it was computed at (SI, angles in degrees).
 fn j_json(source: &JSource) -> Value {
@@ -223,7 +219,6 @@ impl GearReport {
     fn geometry_markdown(&self, o: &mut String) {
         let p = &self.pair;
         let s = &p.spec;
-        let mm = |x: f64| format!("{:.4}", x * 1e3);
         let _ = writeln!(o, "## Inputs\n\n| field | value as given |\n|---|---|");
         for (k, v) in &self.input.given {
             let _ = writeln!(o, "| `{k}` | `{}` |", cell(v));
@@ -234,66 +229,55 @@ impl GearReport {
         );
 
         let _ = writeln!(o, "## Geometry (ISO 21771)\n");
-        let _ = writeln!(o, "| quantity | value | unit |\n|---|---:|---|");
-        let mut row = |q: &str, v: String, u: &str| {
-            let _ = writeln!(o, "| {} | {v} | {u} |", cell(q));
-        };
-        row("module m", mm(s.module), "mm");
+        let mut t = Table::quantities(o);
+        t.value("module m", s.module, 1e-3, 4, "mm");
         if let Some(e) = self.input.cardan_crank_length {
-            row("cardan crank length e (m = 2e/z1, A9.1.37)", mm(e), "mm");
+            t.value(
+                "cardan crank length e (m = 2e/z1, A9.1.37)",
+                e,
+                1e-3,
+                4,
+                "mm",
+            );
         }
-        row(
-            "reference pressure angle α",
-            format!("{:.4}", s.pressure_angle.to_degrees()),
-            "deg",
-        );
-        row(
-            "teeth z1 / z2",
-            format!("{} / {}", s.pinion.teeth, s.gear.teeth),
-            "-",
-        );
-        row(
-            "profile shift x1 / x2 (ISO)",
-            format!("{:.4} / {:.4}", s.pinion.shift, s.gear.shift),
-            "-",
-        );
-        row("ratio u = |z2|/z1", format!("{:.4}", p.ratio), "-");
-        row(
-            "working pressure angle αw",
-            format!("{:.4}", p.working_pressure_angle.to_degrees()),
-            "deg",
-        );
-        row(
-            "operating pressure angle",
-            format!("{:.4}", p.operating_pressure_angle.to_degrees()),
-            "deg",
-        );
-        row(
-            "zero-backlash centre distance aw",
-            mm(p.working_centre_distance),
-            "mm",
-        );
-        row("centre distance a", mm(p.centre_distance), "mm");
-        row("base pitch pb", mm(p.base_pitch), "mm");
-        row("path of contact gα", mm(p.path_of_contact), "mm");
-        row("contact ratio εα", format!("{:.4}", p.contact_ratio), "-");
-        row(
-            "backlash jt / jn",
-            format!(
-                "{} / {}",
-                mm(p.backlash_circumferential),
-                mm(p.backlash_normal)
+        let deg = |x: f64| num(x.to_degrees(), 4);
+        t.row("reference pressure angle α", &deg(s.pressure_angle), "deg");
+        let teeth = format!("{} / {}", s.pinion.teeth, s.gear.teeth);
+        t.row("teeth z1 / z2", &teeth, "-");
+        let shifts = nums(&[s.pinion.shift, s.gear.shift], 4);
+        t.row("profile shift x1 / x2 (ISO)", &shifts, "-");
+        t.value("ratio u = |z2|/z1", p.ratio, 1.0, 4, "-");
+        let aw = deg(p.working_pressure_angle);
+        t.row("working pressure angle αw", &aw, "deg");
+        let a_op = deg(p.operating_pressure_angle);
+        t.row("operating pressure angle", &a_op, "deg");
+        for (q, x) in [
+            (
+                "zero-backlash centre distance aw",
+                p.working_centre_distance,
             ),
-            "mm",
+            ("centre distance a", p.centre_distance),
+            ("base pitch pb", p.base_pitch),
+            ("path of contact gα", p.path_of_contact),
+        ] {
+            t.value(q, x, 1e-3, 4, "mm");
+        }
+        t.value("contact ratio εα", p.contact_ratio, 1.0, 4, "-");
+        let backlash = nums(
+            &[p.backlash_circumferential * 1e3, p.backlash_normal * 1e3],
+            4,
         );
-        row("gear addendum", mm(p.gear_addendum()), "mm");
-        row(
+        t.row("backlash jt / jn", &backlash, "mm");
+        t.value("gear addendum", p.gear_addendum(), 1e-3, 4, "mm");
+        t.value(
             "largest gear addendum without involute interference",
-            mm(p.max_gear_addendum_without_interference()),
+            p.max_gear_addendum_without_interference(),
+            1e-3,
+            4,
             "mm",
         );
         if let Some(b) = self.input.face_width {
-            row("face width b", mm(b), "mm");
+            t.value("face width b", b, 1e-3, 4, "mm");
         }
         let _ = writeln!(o, "\n| diameter [mm] | pinion | gear |\n|---|---:|---:|");
         for (name, f) in [
@@ -306,7 +290,8 @@ impl GearReport {
             ("root df", |d| d.root),
             ("working dw", |d| d.working),
         ] {
-            let _ = writeln!(o, "| {name} | {} | {} |", mm(f(&p.pinion)), mm(f(&p.gear)));
+            let (a, b) = (f(&p.pinion) * 1e3, f(&p.gear) * 1e3);
+            let _ = writeln!(o, "| {name} | {} | {} |", num(a, 4), num(b, 4));
         }
     }
 
@@ -351,94 +336,58 @@ impl GearReport {
             Some(Ok(r)) => {
                 let inputs = self.input.rating.as_ref().expect("rated pairs have inputs");
                 let _ = writeln!(o, "\n## Rating (AGMA 2001-D04)\n");
-                let _ = writeln!(o, "| quantity | value | unit |\n|---|---:|---|");
-                let mut row = |q: &str, v: String, u: &str| {
-                    let _ = writeln!(o, "| {q} | {v} | {u} |");
-                };
-                row("power", format!("{:.1}", r.power), "W");
-                row("pinion torque", format!("{:.3}", r.pinion_torque), "N·m");
-                row(
-                    "pinion speed",
-                    format!("{:.2}", inputs.pinion_speed * 30.0 / PI),
-                    "rpm",
-                );
-                row(
-                    "pitch-line velocity",
-                    format!("{:.4}", r.pitch_line_velocity),
-                    "m/s",
-                );
-                row(
-                    "tangential load Wt",
-                    format!("{:.2}", r.tangential_load),
-                    "N",
-                );
-                row("dynamic factor Kv", format!("{:.4}", r.kv), "-");
-                row("overload factor Ko", format!("{:.4}", inputs.overload), "-");
-                row("load distribution factor Km", format!("{:.4}", r.km), "-");
-                row("pitting geometry factor I", format!("{:.4}", r.i), "-");
-                row(
-                    "elastic coefficient Cp",
-                    format!("{:.2}", inputs.elastic_coefficient / 1e3),
-                    "√MPa",
-                );
-                row(
+                let mut t = Table::quantities(o);
+                t.value("power", r.power, 1.0, 1, "W");
+                t.value("pinion torque", r.pinion_torque, 1.0, 3, "N·m");
+                t.value("pinion speed", inputs.pinion_speed, PI / 30.0, 2, "rpm");
+                t.value("pitch-line velocity", r.pitch_line_velocity, 1.0, 4, "m/s");
+                t.value("tangential load Wt", r.tangential_load, 1.0, 2, "N");
+                t.value("dynamic factor Kv", r.kv, 1.0, 4, "-");
+                t.value("overload factor Ko", inputs.overload, 1.0, 4, "-");
+                t.value("load distribution factor Km", r.km, 1.0, 4, "-");
+                t.value("pitting geometry factor I", r.i, 1.0, 4, "-");
+                let cp = inputs.elastic_coefficient;
+                t.value("elastic coefficient Cp", cp, 1e3, 2, "√MPa");
+                t.value(
                     "temperature factor KT",
-                    format!("{:.4}", inputs.temperature_factor),
+                    inputs.temperature_factor,
+                    1.0,
+                    4,
                     "-",
                 );
-                row(
+                t.value(
                     "reliability factor KR",
-                    format!("{:.4}", inputs.reliability_factor),
+                    inputs.reliability_factor,
+                    1.0,
+                    4,
                     "-",
                 );
-                let _ = writeln!(
-                    o,
-                    "\n| per member | pinion | gear | unit |\n|---|---:|---:|---|"
-                );
+                o.push('\n');
                 let mi = &inputs.members;
-                let mut pair_row = |q: &str, a: [f64; 2], fmt: &dyn Fn(f64) -> String, u: &str| {
-                    let _ = writeln!(o, "| {q} | {} | {} | {u} |", fmt(a[0]), fmt(a[1]));
-                };
-                let f4 = |x: f64| format!("{x:.4}");
-                let f3 = |x: f64| format!("{x:.3}");
-                let mpa = |x: f64| format!("{:.2}", x / 1e6);
-                let cyc = |x: f64| format!("{x:.4e}");
-                pair_row("load cycles", r.cycles, &cyc, "-");
-                pair_row("bending geometry factor J", r.j, &f4, "-");
+                let mut t = Table::members(o, "per member");
+                let cycles = r.cycles.map(|c| format!("{c:.4e}"));
+                t.pair_text("load cycles", [&cycles[0], &cycles[1]], "-");
+                t.pair("bending geometry factor J", r.j, 1.0, 4, "-");
                 let words = [r.j_source[0].word(), r.j_source[1].word()];
-                let _ = writeln!(o, "| J obtained by | {} | {} | - |", words[0], words[1]);
-                let mut pair_row = |q: &str, a: [f64; 2], fmt: &dyn Fn(f64) -> String, u: &str| {
-                    let _ = writeln!(o, "| {q} | {} | {} | {u} |", fmt(a[0]), fmt(a[1]));
-                };
-                pair_row(
-                    "rim thickness factor KB",
-                    [mi[0].rim_factor, mi[1].rim_factor],
-                    &f4,
-                    "-",
-                );
-                pair_row("size factor Ks", r.ks, &f4, "-");
-                pair_row("stress-cycle factor YN", r.yn, &f4, "-");
-                pair_row("stress-cycle factor ZN", r.zn, &f4, "-");
-                pair_row("hardness-ratio factor CH", r.ch, &f4, "-");
-                pair_row(
-                    "allowable bending stress St",
-                    [mi[0].bending_allowable, mi[1].bending_allowable],
-                    &mpa,
-                    "MPa",
-                );
-                pair_row(
-                    "allowable contact stress Sc",
-                    [mi[0].contact_allowable, mi[1].contact_allowable],
-                    &mpa,
-                    "MPa",
-                );
-                pair_row("bending stress σ", r.bending_stress, &mpa, "MPa");
-                pair_row("contact stress σc", r.contact_stress, &mpa, "MPa");
-                pair_row("bending safety factor SF", r.bending_safety, &f3, "-");
-                pair_row(
+                t.pair_text("J obtained by", words, "-");
+                let rim = [mi[0].rim_factor, mi[1].rim_factor];
+                t.pair("rim thickness factor KB", rim, 1.0, 4, "-");
+                t.pair("size factor Ks", r.ks, 1.0, 4, "-");
+                t.pair("stress-cycle factor YN", r.yn, 1.0, 4, "-");
+                t.pair("stress-cycle factor ZN", r.zn, 1.0, 4, "-");
+                t.pair("hardness-ratio factor CH", r.ch, 1.0, 4, "-");
+                let st = [mi[0].bending_allowable, mi[1].bending_allowable];
+                t.pair("allowable bending stress St", st, 1e6, 2, "MPa");
+                let sc = [mi[0].contact_allowable, mi[1].contact_allowable];
+                t.pair("allowable contact stress Sc", sc, 1e6, 2, "MPa");
+                t.pair("bending stress σ", r.bending_stress, 1e6, 2, "MPa");
+                t.pair("contact stress σc", r.contact_stress, 1e6, 2, "MPa");
+                t.pair("bending safety factor SF", r.bending_safety, 1.0, 3, "-");
+                t.pair(
                     "pitting safety factor SH (stress ratio; compare SH² with SF)",
                     r.contact_safety,
-                    &f3,
+                    1.0,
+                    3,
                     "-",
                 );
                 let _ = writeln!(

@@ -209,3 +209,79 @@ fn span_width_through_the_gear_file_matches_the_published_example() {
     assert!(ring["measurement"]["gear"]["span_width"].is_null());
     assert!(num(&ring["measurement"]["gear"]["dimension_over_pins"]) > 0.0);
 }
+
+#[test]
+fn no_number_in_the_report_prints_a_negative_zero() {
+    // Issue 39 item 5: a value that rounds to zero printed "-0.0000". A profile shift of
+    // −0.00001 is written to 4 decimals in the geometry table.
+    let text = shipped(ISO).replace(
+        "teeth = [20, 40]",
+        "teeth = [20, 40]\nprofile_shift = [-0.00001, 0.00001]",
+    );
+    let md = report_of(&text).to_markdown();
+    assert!(
+        md.contains("| profile shift x1 / x2 (ISO) | 0.0000 / 0.0000 | - |"),
+        "{md}"
+    );
+    // No number anywhere is a minus sign before zeros only (the inputs echo "-0.00001").
+    let negative_zero = md.match_indices('-').any(|(i, _)| {
+        let digits: String = md[i + 1..]
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect();
+        digits.starts_with('0')
+            && digits.contains('.')
+            && digits.chars().all(|c| c == '0' || c == '.')
+    });
+    assert!(!negative_zero, "{md}");
+}
+
+#[test]
+fn an_iso_field_asks_for_the_iso_rating_and_the_overrides_are_taken() {
+    // Judged by AGMA, no Y_F given: an ISO field (here accuracy_grade) still asks for the ISO
+    // rating beside AGMA's, Y_F and Y_S from the tooth form (it was left unread before).
+    let agma = shipped(ISO).replace("basis = \"iso6336\"", "basis = \"agma2001\"");
+    let j = report_of(&agma).to_json();
+    assert_eq!(j["rating"]["basis"], "agma2001");
+    assert!(j["rating"]["iso6336"].is_object(), "{}", j["rating"]);
+    // Without any ISO field, no ISO rating, as before.
+    let bare = agma.replace("accuracy_grade = 6 ", "# ");
+    assert!(report_of(&bare).to_json()["rating"]["iso6336"].is_null());
+    // The user's K_v, K_Hα, K_Hβ, σ_Hlim, σ_Flim and cycles replace the computed ones.
+    let text = agma
+        .replace(
+            "accuracy_grade = 6 ",
+            "iso_dynamic_factor = 1.2\ntransverse_load_factor = 1.1\nface_load_factor = 1.3\n# ",
+        )
+        .replace("pinion_cycles = 1e9", "pinion_cycles = 3e6")
+        .replace(
+            "[rating.pinion]\n",
+            "[rating.pinion]\nsigma_hlim = \"1400 MPa\"\nsigma_flim = \"400 MPa\"\n",
+        );
+    let iso = &report_of(&text).to_json()["rating"]["iso6336"];
+    assert_eq!(num(&iso["k_v"]), 1.2);
+    assert_eq!((num(&iso["k_halpha"]), num(&iso["k_falpha"])), (1.1, 1.1));
+    assert_eq!(num(&iso["k_hbeta"]), 1.3);
+    // 3e6 cycles: ISO 6336-3 Table 3's knee, Y_NT = 1; σ_FG = σ_Flim Y_ST (Y_X = 1 at 3 mm).
+    assert!((num(&iso["pinion"]["y_nt"]) - 1.0).abs() < 1e-12);
+    assert!((num(&iso["pinion"]["root_stress_limit"]) / 800e6 - 1.0).abs() < 1e-12);
+    let z_nt = num(&iso["pinion"]["z_nt"]);
+    let limit = num(&iso["pinion"]["pitting_stress_limit"]);
+    assert!((limit / (1400e6 * z_nt) - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn a_bad_iso_override_names_its_field_and_value() {
+    let text = shipped(ISO).replace("accuracy_grade = 6 ", "iso_dynamic_factor = 0.9\n# ");
+    let e = error_of(&text);
+    assert!(
+        e.contains("rating.iso_dynamic_factor") && e.contains("0.9"),
+        "{e}"
+    );
+    let text = shipped(ISO).replace(
+        "[rating.gear]\n",
+        "[rating.gear]\nsigma_hlim = \"-5 MPa\"\n",
+    );
+    let e = error_of(&text);
+    assert!(e.contains("sigma_hlim") && e.contains("-5 MPa"), "{e}");
+}

@@ -12,10 +12,50 @@ use std::f64::consts::PI;
 
 use crate::error::{positive, require, GearError};
 
-/// Pitch deviation `f_pt` and profile form deviation `f_fα` \[m\] of accuracy grade `q`
-/// (ISO 1328-1:1995 §6, grade 5 values `f_pt = 0.3 (m + 0.4 √d) + 4` µm and
-/// `f_fα = 2.5 √m + 0.17 √d + 0.5` µm, m and d in mm, times `√2^(q − 5)`; the standard's
-/// rounding of tabulated values is not applied). `module`, `diameter` \[m\], `q` in 1..=12.
+/// Range limits of the reference diameter \[mm\] of the ISO 1328-1:1995 tolerance tables
+/// (clause 5, the ranges of its tables): 5-20, 20-50, 50-125, 125-280, 280-560, 560-1000, 1000-1600,
+/// 1600-2500, 2500-4000, 4000-6000, 6000-8000, 8000-10 000.
+const ISO1328_DIAMETERS: [f64; 13] = [
+    5.0, 20.0, 50.0, 125.0, 280.0, 560.0, 1000.0, 1600.0, 2500.0, 4000.0, 6000.0, 8000.0, 10_000.0,
+];
+
+/// Range limits of the normal module \[mm\] of the same tables: 0.5-2, 2-3.5, 3.5-6, 6-10,
+/// 10-16, 16-25, 25-40, 40-70.
+const ISO1328_MODULES: [f64; 9] = [0.5, 2.0, 3.5, 6.0, 10.0, 16.0, 25.0, 40.0, 70.0];
+
+/// The value the ISO 1328-1:1995 tables put in a formula for `x` (mm): the geometric mean
+/// of the limits of the range holding it, lower limit excluded (ISO 1328-1:1995 clause 5: the
+/// tolerances are computed with the geometric means of the ranges, not the gear's own `m`
+/// and `d`); below
+/// the first or above the last range, `x` itself (the formula beyond the tables).
+fn iso1328_range_mean(limits: &[f64], x: f64) -> f64 {
+    if x < limits[0] || x > limits[limits.len() - 1] {
+        return x;
+    }
+    let k = limits.windows(2).position(|w| x <= w[1]).unwrap_or(0);
+    (limits[k] * limits[k + 1]).sqrt()
+}
+
+/// ISO 1328-1:1995 clause 5 rounding of a tolerance value `t` \[µm\]: above 10 µm to the
+/// whole µm, from 5 to 10 µm to 0.5 µm, below 5 µm to 0.1 µm.
+fn iso1328_round(t: f64) -> f64 {
+    if t > 10.0 {
+        t.round()
+    } else if t >= 5.0 {
+        (2.0 * t).round() / 2.0
+    } else {
+        (10.0 * t).round() / 10.0
+    }
+}
+
+/// Single pitch deviation `f_pt` and profile form deviation `f_fα` \[m\] of accuracy grade `q`,
+/// as ISO 1328-1:1995 tabulates them (Tables 1 and 3): the grade 5 formulas
+/// `f_pt = 0.3 (m + 0.4 √d) + 4` µm and `f_fα = 2.5 √m + 0.17 √d + 0.5` µm (clause 6), with
+/// `m` and `d` the geometric means of the tables' module and diameter ranges
+/// (`iso1328_range_mean`), times the step `√2^(q − 5)` of the unrounded grade 5 value,
+/// then rounded (`iso1328_round`) (clause 5). Grade 7, 50 < d ≤ 125 mm,
+/// 2 < m ≤ 3.5 mm: 12 µm and 12 µm, the tables' values. `module`, `diameter` \[m\] (the
+/// diameter's magnitude for a ring), `q` in 1..=12.
 pub fn iso1328_deviations(module: f64, diameter: f64, q: f64) -> Result<(f64, f64), GearError> {
     positive("module", module)?;
     positive("reference diameter", diameter)?;
@@ -25,10 +65,11 @@ pub fn iso1328_deviations(module: f64, diameter: f64, q: f64) -> Result<(f64, f6
         "ISO 1328-1 accuracy grade must lie in [1, 12]",
         q,
     )?;
-    let (m, d) = (module * 1e3, diameter * 1e3);
+    let m = iso1328_range_mean(&ISO1328_MODULES, module * 1e3);
+    let d = iso1328_range_mean(&ISO1328_DIAMETERS, diameter * 1e3);
     let step = 2f64.sqrt().powf(q - 5.0);
-    let f_pt = (0.3 * (m + 0.4 * d.sqrt()) + 4.0) * step;
-    let f_fa = (2.5 * m.sqrt() + 0.17 * d.sqrt() + 0.5) * step;
+    let f_pt = iso1328_round((0.3 * (m + 0.4 * d.sqrt()) + 4.0) * step);
+    let f_fa = iso1328_round((2.5 * m.sqrt() + 0.17 * d.sqrt() + 0.5) * step);
     Ok((f_pt * 1e-6, f_fa * 1e-6))
 }
 
@@ -264,6 +305,35 @@ pub fn face_load_factor_root(k_hbeta: f64, b_over_h: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn deviations_are_the_iso_1328_table_values() {
+        // ISO 1328-1:1995 Table 1, ±f_pt for 50 < d ≤ 125 mm, 2 < m ≤ 3.5 mm, grades 5 to
+        // 12: 6.0, 8.5, 12, 17, 23, 33, 47, 66 µm; Table 3, f_fα, grades 5 to 8: 6.0, 8.5, 12,
+        // 17 µm. Printed values, so exact to their rounding (1e-9 µm here). Any m and d in
+        // the ranges give them: the tables use the ranges' geometric means, so the gear's own
+        // d = 120 mm, m = 2.5 mm (the formula with them: 12.13 µm at grade 7) must not show.
+        let f_pt = [6.0, 8.5, 12.0, 17.0, 23.0, 33.0, 47.0, 66.0];
+        let f_fa = [6.0, 8.5, 12.0, 17.0];
+        for (k, want) in f_pt.iter().enumerate() {
+            let q = 5.0 + k as f64;
+            for (m, d) in [(2.5e-3, 120e-3), (3.5e-3, 51e-3), (2.01e-3, 80e-3)] {
+                let (pt, fa) = iso1328_deviations(m, d, q).unwrap();
+                assert!(
+                    (pt * 1e6 - want).abs() < 1e-9,
+                    "grade {q}: f_pt {}",
+                    pt * 1e6
+                );
+                if k < f_fa.len() {
+                    assert!(
+                        (fa * 1e6 - f_fa[k]).abs() < 1e-9,
+                        "grade {q}: f_fα {}",
+                        fa * 1e6
+                    );
+                }
+            }
+        }
+    }
 
     #[test]
     fn subcritical_kv_is_one_at_standstill_and_grows_with_n() {

@@ -114,14 +114,20 @@ pub(crate) fn log_log(pts: &[(f64, f64)], n: f64) -> f64 {
 }
 
 /// Size factor `Z_X` (ISO 6336-2:2019 §13, Table 3, long life): through-hardened steel and
-/// grey iron 1.0; case-hardened `1.05 − 0.005 m_n` (0.9 ≤ `Z_X` ≤ 1); nitrided
-/// `1.08 − 0.011 m_n` (0.75 ≤ `Z_X` ≤ 1); `m_n` in mm. `module` \[m\].
+/// grey iron 1.0; case-hardened 1.0 up to `m_n` = 10 mm, `1.05 − 0.005 m_n` below 30 mm, 0.9
+/// from 30 mm; nitrided 1.0 below `m_n` = 7.5 mm, `1.08 − 0.011 m_n` below 30 mm, 0.75 from
+/// 30 mm (the table's breaks, not where the line meets 1: at 7.3 mm it is 1.0, not 0.9997);
+/// `m_n` in mm. `module` \[m\].
 pub fn size_factor_contact(curve: LifeCurve, module: f64) -> f64 {
     let m = module * 1e3;
     match curve {
         LifeCurve::ThroughHardened | LifeCurve::GreyIron => 1.0,
-        LifeCurve::CaseHardened => (1.05 - 0.005 * m).clamp(0.9, 1.0),
-        LifeCurve::Nitrided => (1.08 - 0.011 * m).clamp(0.75, 1.0),
+        LifeCurve::CaseHardened if m <= 10.0 => 1.0,
+        LifeCurve::CaseHardened if m < 30.0 => 1.05 - 0.005 * m,
+        LifeCurve::CaseHardened => 0.9,
+        LifeCurve::Nitrided if m < 7.5 => 1.0,
+        LifeCurve::Nitrided if m < 30.0 => 1.08 - 0.011 * m,
+        LifeCurve::Nitrided => 0.75,
     }
 }
 
@@ -206,6 +212,18 @@ mod tests {
         let z = zone_factor(0.0, a, a);
         assert!((z - 2.0 / (2.0 * a).sin().sqrt()).abs() < 1e-12);
         assert!((z - 2.4946).abs() < 1e-4);
+    }
+
+    #[test]
+    fn size_factor_follows_the_table_breaks() {
+        // ISO 6336-2 Table 3: nitrided steel keeps Z_X = 1 below m_n = 7.5 mm (the line
+        // 1.08 − 0.011 m_n gives 0.9997 at 7.3 mm); 0.9975 at 7.5, 0.75 from 30 mm.
+        let z = |m: f64| size_factor_contact(LifeCurve::Nitrided, m * 1e-3);
+        assert_eq!(z(7.3), 1.0);
+        assert!((z(7.5) - 0.9975).abs() < 1e-12 && z(30.0) == 0.75);
+        let c = |m: f64| size_factor_contact(LifeCurve::CaseHardened, m * 1e-3);
+        assert_eq!(c(10.0), 1.0);
+        assert!((c(20.0) - 0.95).abs() < 1e-12 && c(30.0) == 0.9);
     }
 
     #[test]

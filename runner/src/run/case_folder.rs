@@ -68,6 +68,7 @@ pub(super) fn run_and_write(
         // the summaries.
         let (results, series): (Vec<MechanismResult>, Vec<Option<ChartData>>) =
             trains.into_iter().map(|(r, rows)| (r, rows.charts)).unzip();
+        super::train::log_warnings(case, &results);
         let charts: std::collections::BTreeMap<String, ChartData> = results
             .iter()
             .zip(series)

@@ -162,6 +162,10 @@ struct Table<'a> {
     only: Option<Arc<[String]>>,
     failed: Vec<serde_json::Value>,
     warned: bool,
+    /// How many points gave warnings, and the first one's (its name, train and warning):
+    /// logged once for the sweep (a million points would log a million lines).
+    warned_points: usize,
+    first_warning: Option<String>,
 }
 
 impl Table<'_> {
@@ -186,6 +190,11 @@ impl Table<'_> {
                 return self.nan_row();
             }
         };
+        if let Some(r) = results.iter().find(|r| !r.warnings.is_empty()) {
+            self.warned_points += 1;
+            self.first_warning
+                .get_or_insert_with(|| format!("case \"{name}\": {}: {}", r.label, r.warnings[0]));
+        }
         let only = self.only.clone();
         let wanted =
             |m: &&cardan_dynamics::Metric| only.as_ref().is_none_or(|o| o.contains(&m.name));
@@ -366,6 +375,8 @@ pub(super) fn run_table(
             only: table.first.table_metrics.clone(),
             failed: Vec::new(),
             warned: false,
+            warned_points: 0,
+            first_warning: None,
         };
         let mut ran = 0;
         for start in (0..rows).step_by(CHUNK) {
@@ -389,6 +400,14 @@ pub(super) fn run_table(
                 let k = table.index(j);
                 out.row(&table.sweep.point_name(k), &table.sweep.values(k), result)?;
             }
+        }
+        if let Some(first) = &out.first_warning {
+            tracing::warn!(
+                "{}: sweep \"{sweep}\": {} of {} point(s) gave warnings; the first, {first}",
+                table.sweep.file.display(),
+                out.warned_points,
+                rows
+            );
         }
         let part = table.range.as_ref().map(|r| (r, table.sweep.len()));
         if ran == 0 && part.is_none() {

@@ -404,7 +404,9 @@ pub fn run_case(case: &Case, dir: Option<&Path>) -> Result<Vec<MechanismResult>,
         None => StepsTo::Summary,
     };
     let trains = run_trains(case, to)?;
-    Ok(trains.into_iter().map(|(r, _)| r).collect())
+    let results: Vec<MechanismResult> = trains.into_iter().map(|(r, _)| r).collect();
+    log_warnings(case, &results);
+    Ok(results)
 }
 
 /// A deliberate panic, for tests of what catches one (built with the feature `test-hooks`
@@ -424,7 +426,23 @@ pub mod test_hooks {
     }
 }
 
-/// [`run_case`], each crank train's per-step rows where `to` says, with its [`TrainRows`].
+/// Logs each warning of `results`, the trains of `case` (a case run on its own; a table
+/// sweep's points are summed up once for the sweep, `table.rs`).
+pub(crate) fn log_warnings(case: &Case, results: &[MechanismResult]) {
+    for r in results {
+        for w in &r.warnings {
+            tracing::warn!(
+                "{}: case \"{}\": {}: {w}",
+                case.file.display(),
+                case.name,
+                r.label
+            );
+        }
+    }
+}
+
+/// [`run_case`], each crank train's per-step rows where `to` says, with its [`TrainRows`]; the
+/// warnings are in each [`MechanismResult`], not logged ([`log_warnings`]).
 pub(crate) fn run_trains(
     case: &Case,
     to: StepsTo,
@@ -450,13 +468,6 @@ pub(crate) fn run_trains(
                         case.name
                     )
                 })?;
-            for w in &warnings {
-                tracing::warn!(
-                    "{}: case \"{}\": {label}: {w}",
-                    case.file.display(),
-                    case.name
-                );
-            }
             let result = MechanismResult {
                 mechanism: Arc::clone(m),
                 label: label.clone(),

@@ -7,10 +7,10 @@
 //! where they are wanted) and then forgotten. Nothing here grows with the number of steps.
 //! [`crate::run_parallel`] shares one run among threads, each piece through this loop.
 
-use crate::energy::torque_shares;
-use crate::family::LoadFamily;
 use crate::stage::{Block, LaneError, PassedOn, Stage, StageError};
 use crate::step::{Sink, Step, StepBlock};
+use cardan_loads::energy::torque_shares;
+use cardan_loads::family::LoadFamily;
 use cardan_mechanism::{
     vectorised, Column, Loads, LoadsBlock, Mechanism, MotionError, MotionSource, State, StateBlock,
     Topology, LANES, ZERO,
@@ -209,10 +209,10 @@ fn next_states(
 
 /// How a run loads its steps: its families, and how their total is made (also the solved
 /// motion's friction torque, `machine_friction.rs`, which loads its states as a run does).
-pub(crate) struct Loading<'f> {
+pub struct Loading<'f> {
     families: &'f [&'f dyn LoadFamily],
     /// Whether there are several families (one family is its own total).
-    pub(crate) several: bool,
+    pub several: bool,
     /// Whether the total is the solve of the families' loads together, not their sum: a joint
     /// whose reaction is not linear in the loads (an involute mesh's loaded flank) makes it so.
     together: bool,
@@ -228,7 +228,8 @@ pub(crate) struct Loading<'f> {
 }
 
 impl<'f> Loading<'f> {
-    pub(crate) fn new(families: &'f [&'f dyn LoadFamily], topology: &Topology) -> Self {
+    /// The loading of `families` (in their order) on a mechanism of `topology`.
+    pub fn new(families: &'f [&'f dyn LoadFamily], topology: &Topology) -> Self {
         let several = families.len() > 1;
         let mut names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
         names.push("total");
@@ -247,7 +248,7 @@ impl<'f> Loading<'f> {
     /// Each family's loads at the block `states` into `loads` (the pistons pushed by `applied`
     /// where a family takes them), and with several families their total into `total`; each
     /// family sees the sum of those before it.
-    pub(crate) fn loads(
+    pub fn loads(
         &self,
         mechanism: &dyn Mechanism,
         states: &StateBlock,

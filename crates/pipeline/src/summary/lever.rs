@@ -3,8 +3,8 @@
 
 use super::integral::{add_trapezoids, Integral};
 use super::peaks::{raise, raise_over};
-use crate::metrics::Summary;
 use crate::step::StepBlock;
+use cardan_metrics::Summary;
 use std::ops::Range;
 
 /// Largest |dx/dθ| of the first piston, m/rad, and ∫|dx/dθ| dθ, m.

@@ -9,14 +9,14 @@ use std::ops::Range;
 const SLOTS: usize = 4;
 
 /// A trapezoidal integral summed chunk by chunk ([`crate::summary_chunk`]). Within a chunk, the term
-/// of the interval ending at step k goes to running sum k mod [`SLOTS`], each sum taking its
+/// of the interval ending at step k goes to running sum k mod `SLOTS` (4), each sum taking its
 /// terms in the steps' order; a chunk's value is the sums added pairwise. The order is a
 /// function of the steps' indices alone, so a run gives the same bits however it is cut into
 /// blocks and pieces; the sums are independent, so four terms are added at once (one add's
 /// latency per four steps, not per step; the error bound is that of sequential summation of
 /// a quarter as many terms).
 #[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Integral {
+pub struct Integral {
     /// The sum of the chunks closed so far, and the running sums of the chunk under way.
     closed: f64,
     open: [f64; SLOTS],
@@ -24,28 +24,35 @@ pub(crate) struct Integral {
 
 impl Integral {
     /// Adds `term`, the trapezoid of the interval ending at step `step`.
-    pub(crate) fn add(&mut self, step: usize, term: f64) {
+    #[inline]
+    pub fn add(&mut self, step: usize, term: f64) {
         self.open[step % SLOTS] += term;
     }
 
     /// The running sums added pairwise.
+    #[inline]
     fn chunk(&self) -> f64 {
         let [a, b, c, d] = self.open;
         (a + b) + (c + d)
     }
 
-    pub(crate) fn close_chunk(&mut self) {
+    /// Closes the chunk under way (its sums added pairwise to the closed ones).
+    #[inline]
+    pub fn close_chunk(&mut self) {
         self.closed += self.chunk();
         self.open = [0.0; SLOTS];
     }
 
-    pub(crate) fn value(&self) -> f64 {
+    /// The integral so far, J or whatever the terms' unit.
+    #[inline]
+    pub fn value(&self) -> f64 {
         self.closed + self.chunk()
     }
 
     /// Continues with the chunks of `later`, a summary of the steps after these (its first
     /// step closed this one's last chunk).
-    pub(crate) fn merge(&mut self, later: &Integral) {
+    #[inline]
+    pub fn merge(&mut self, later: &Integral) {
         self.closed += later.closed;
         self.open = later.open;
     }

@@ -3,9 +3,9 @@
 
 use super::integral::{add_trapezoids, Integral};
 use super::peaks::{raise, raise_over};
-use crate::metrics::Summary;
 use crate::step::StepBlock;
 use cardan_mechanism::{LoadsBlock, LANES};
+use cardan_metrics::Summary;
 use std::ops::Range;
 
 /// One family's peak |drive torque| and its integrals over the crank angle: the work ∫ T dθ,

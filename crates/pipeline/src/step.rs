@@ -21,7 +21,7 @@ pub struct Step<'a> {
     /// The values of each of the run's stages ([`crate::Stage`]), in the run's order (empty
     /// without stages).
     pub stages: &'a [Vec<f64>],
-    /// Each family's torque shares by body ([`crate::torque_shares`]), N·m; computed, with the
+    /// Each family's torque shares by body ([`cardan_loads::torque_shares`]), N·m; computed, with the
     /// state's extras, only when a sink [wants](Sink::wants_details) them (zeros otherwise).
     pub shares: &'a [Vec<f64>],
 }

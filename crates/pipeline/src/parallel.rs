@@ -6,13 +6,13 @@
 //! whatever the number of threads (tested in `tests/parallel.rs`). [`run_summary`] is the whole
 //! pipeline in one call.
 
-use crate::family::{Gas, Inertial, LoadFamily, Solver};
-use crate::metrics::Summary;
 use crate::stage::Stage;
 use crate::step::{Sink, StepBlock, StepRecord, Steps};
 use crate::stepper::{run, GasAt, RunError};
 use crate::summary::{summary_chunk, SummarySink, MAX_CHUNK};
+use cardan_loads::family::{Gas, Inertial, LoadFamily, Solver};
 use cardan_mechanism::{Mechanism, MotionSource};
+use cardan_metrics::Summary;
 use rayon::prelude::*;
 
 /// A sink whose steps several threads may take in pieces, each piece into a sink of its own,

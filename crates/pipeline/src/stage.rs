@@ -1,17 +1,17 @@
 //! The stage contract: what a run computes from a block's states and total loads besides the
 //! loads themselves (the gear ratings, the loss budget, the whole machine: their impls are in
-//! [`crate::stages`] and [`crate::machine_stage`]), behind one trait, so that the step loop
+//! `cardan-dynamics`, above this crate), behind one trait, so that the step loop
 //! ([`crate::run`]) and the summary ([`crate::SummarySink`]) take any stage without naming it.
 //! A stage evaluates a whole block at a time from the block's columns into columns of its own
 //! ([`crate::StepBlock::stage_columns`]); declares the per-step columns it fills and the
-//! summary metrics it defines (its part of the registry, [`crate::metrics`]); and makes the
+//! summary metrics it defines (its part of the registry, [`cardan_metrics`]); and makes the
 //! accumulator that totals its values into the summary ([`StageTotals`]). A model that is
 //! written for one state at a time (a loss model, a gear rating) is evaluated lane by lane
 //! inside its stage; the step loop knows one path.
 
-use crate::metrics::{MetricDef, Summary};
 use crate::step::StepBlock;
 use cardan_mechanism::{Column, LoadsBlock, StateBlock};
+use cardan_metrics::{MetricDef, Summary};
 use std::any::Any;
 use std::ops::Range;
 
@@ -63,7 +63,7 @@ pub struct PassedOn {
     /// computed once.
     pub mesh_losses: Vec<(usize, Column)>,
     /// The run's train's power loss at each lane, W, once its loss budget has taken it: the
-    /// machine's stage charges it to cylinder 1 ([`crate::MachineStage`]).
+    /// machine's stage charges it to cylinder 1 (`cardan_dynamics::MachineStage`).
     pub loss_power: Option<Column>,
 }
 
@@ -135,7 +135,7 @@ pub trait Stage: std::fmt::Debug + Send + Sync {
     fn columns(&self) -> Vec<StageColumn>;
 
     /// The summary metrics its totals define: its part of the registry
-    /// ([`crate::metrics::METRICS`]).
+    /// ([`cardan_metrics::METRICS`]).
     fn metrics(&self) -> &'static [MetricDef];
 
     /// A fresh accumulator of its values for a summary.

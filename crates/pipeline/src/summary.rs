@@ -5,21 +5,21 @@
 //! drive work (`summary/work.rs`), the lever (`summary/lever.rs`), the ends and the energy
 //! check (`summary/energy.rs`), and the totals of each per-step stage ([`crate::StageTotals`]).
 //! Their integrals are summed chunk by chunk (`summary/integral.rs`). Metric names and units
-//! come from [`crate::metrics`].
+//! come from [`cardan_metrics`].
 
 mod energy;
 mod integral;
 mod lever;
-pub(crate) mod peaks;
+pub mod peaks;
 mod work;
 
-pub(crate) use integral::Integral;
+pub use integral::Integral;
 
-use crate::metrics::{self, MetricDef, Summary};
 use crate::stage::{RunTotals, Stage, StageTotals};
 use crate::step::{Sink, StepBlock};
 use cardan_mechanism::vectorised;
 use cardan_mechanism::{Mechanism, Topology};
+use cardan_metrics::{self as metrics, MetricDef, Summary};
 use energy::Ends;
 use lever::Lever;
 use peaks::{GasPeaks, JointKinds, JointPeaks, MotionPeaks};

@@ -2,10 +2,10 @@
 //! the gas. Each is raised over a block's columns (the lanes side by side) and joined with a
 //! later piece's by the larger value (a maximum does not depend on the order).
 
-use crate::mesh::tangential;
-use crate::metrics::Summary;
 use crate::step::StepBlock;
+use cardan_losses::mesh::tangential;
 use cardan_mechanism::{JointKind, JointMotion, LoadsBlock, StateBlock, Topology, C, LANES};
+use cardan_metrics::Summary;
 use std::ops::Range;
 
 /// Raises `peak` to `value`. The stepper has checked every value is finite, so a plain
@@ -13,7 +13,7 @@ use std::ops::Range;
 /// a branch, so that it compiles to one `maxsd` instead of a jump the processor mispredicts
 /// whenever a peak rises (the same result for every pair of numbers).
 #[inline(always)]
-pub(crate) fn raise(peak: &mut f64, value: f64) {
+pub fn raise(peak: &mut f64, value: f64) {
     *peak = if value > *peak { value } else { *peak };
 }
 

@@ -2,10 +2,10 @@
 //! steps, which give its span and duration and the energy check (drive work = ΔKE, Karhula
 //! 2008 A5.2.1.37 against the bodies' kinetic energy).
 
-use crate::energy::kinetic_energy;
-use crate::metrics::Summary;
 use crate::step::StepBlock;
+use cardan_loads::energy::kinetic_energy;
 use cardan_mechanism::{State, Topology};
+use cardan_metrics::Summary;
 use std::ops::Range;
 
 /// Largest energy-check error a run may have, relative to the energy the drive moves
