@@ -439,6 +439,18 @@ impl Optimization {
         Ok(Some(optimization))
     }
 
+    /// The whole validated definition in the program's own form (`Debug`), except the path of
+    /// its file (a case file moved or run from another folder is the same optimisation): the
+    /// case table it varies, the objective, variables, constraints and the search's settings;
+    /// the runner's input hash of an optimisation's folder is made from it.
+    pub fn definition(&self) -> String {
+        let definition = Self {
+            file: PathBuf::new(),
+            ..self.clone()
+        };
+        format!("{definition:?}")
+    }
+
     /// Whether variable `k` is a field of `mechanism` (a field of another mechanism's own tables, or a pin offset where it has no piston pin, is not).
     pub fn applies(&self, mechanism: &str, k: usize) -> bool {
         let v = &self.variables[k];

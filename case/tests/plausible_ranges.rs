@@ -133,10 +133,10 @@ fn every_number_without_a_unit_has_a_range_in_the_schema() {
     assert!(missing.is_empty(), "numbers without a range: {missing:?}");
 }
 
-/// The shipped configs (one case each) and optimisations, read as TOML tables.
+/// The shipped configs (one case each, optimisations among them), read as TOML tables.
 fn configs() -> Vec<(PathBuf, toml::Table)> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let dirs = [root.join("configs"), root.join("configs-optimize")];
+    let dirs = [root.join("configs")];
     let mut files: Vec<PathBuf> = (dirs.iter())
         .flat_map(|dir| std::fs::read_dir(dir).unwrap())
         .map(|e| e.unwrap().path())

@@ -440,8 +440,7 @@ fn main() -> ExitCode {
                     progress.set_position(done as u64);
                 })),
             };
-            let mut report = cardan_runner::run_paths(&paths, &out, options);
-            cardan_runner::optimize::run_optimizations(&mut report, &out, jobs, !no_report);
+            let report = cardan_runner::run_paths(&paths, &out, options);
             bar.finish_and_clear();
             // A sweep's points are told by one line for the sweep, not one each.
             let in_sweep = |dir: &std::path::Path| {

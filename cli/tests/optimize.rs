@@ -1,29 +1,9 @@
 //! `cardan check` and `cardan run` on a case file with `[optimize]` (issue 40): check says it
 //! is valid or refuses it naming the field, run writes the optimisation's folder beside the
-//! batch's cases, `--shard` refuses it.
+//! batch's cases and lists it in the index, two shards merged equal one run.
 
+use cardan_testing::cases::kinematic_optimization;
 use std::process::Command;
-
-const CASE: &str = r#"
-name = "kinematic"
-machine = "pump"
-mechanisms = ["slider_crank"]
-[geometry]
-crank_length = "50 mm"
-rod_length = "200 mm"
-bore = "80 mm"
-[motion]
-start_angle = "0 deg"
-end_angle = "360 deg"
-initial_speed = "100 rad/s"
-angular_acceleration = 0
-steps = 360
-[optimize]
-objective = "piston_acceleration_max"
-sense = "min"
-variables = { "geometry.rod_length" = ["150 mm", "400 mm"] }
-constraints = ["rod_angular_velocity_max >= 20 rad/s"]
-"#;
 
 fn cardan(args: &[&std::ffi::OsStr]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_cardan"))
@@ -35,8 +15,13 @@ fn cardan(args: &[&std::ffi::OsStr]) -> std::process::Output {
 #[test]
 fn check_and_run_an_optimisation() {
     let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("kinematic.toml");
-    std::fs::write(&file, CASE).unwrap();
+    // The batch: the optimisation and a case beside it (so that each of two shards has work).
+    let batch = dir.path().join("batch");
+    std::fs::create_dir(&batch).unwrap();
+    std::fs::write(batch.join("good.toml"), cardan_testing::cases::THESIS_PUMP).unwrap();
+    let file = batch.join("kinematic.toml");
+    let case = kinematic_optimization("", "rod_angular_velocity_max >= 20 rad/s");
+    std::fs::write(&file, &case).unwrap();
     let out = cardan(&["check".as_ref(), file.as_os_str()]);
     let said = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{said}");
@@ -46,7 +31,7 @@ fn check_and_run_an_optimisation() {
     );
 
     let bad = dir.path().join("bad.toml");
-    std::fs::write(&bad, CASE.replace(">= 20 rad/s", ">= 20 N")).unwrap();
+    std::fs::write(&bad, case.replace(">= 20 rad/s", ">= 20 N")).unwrap();
     let out = cardan(&["check".as_ref(), bad.as_os_str()]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1));
@@ -62,7 +47,7 @@ fn check_and_run_an_optimisation() {
     let results = dir.path().join("out");
     let out = cardan(&[
         "run".as_ref(),
-        file.as_os_str(),
+        batch.as_os_str(),
         "--out".as_ref(),
         results.as_os_str(),
         "--quiet".as_ref(),
@@ -86,14 +71,57 @@ fn check_and_run_an_optimisation() {
         assert!(folder.join(f).is_file(), "{f} missing");
     }
 
-    let out = cardan(&[
-        "run".as_ref(),
-        file.as_os_str(),
-        "--out".as_ref(),
-        dir.path().join("shard").as_os_str(),
-        "--shard".as_ref(),
-        "1/2".as_ref(),
-    ]);
-    assert_eq!(out.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("not split into shards"));
+    // Two shards, one of which runs the optimisation whole, merged: one run's folder, byte
+    // for byte, its index listing the optimisation.
+    let mut shards = Vec::new();
+    for k in ["1/2", "2/2"] {
+        let shard = dir.path().join(format!("shard{}", &k[..1]));
+        let out = cardan(&[
+            "run".as_ref(),
+            batch.as_os_str(),
+            "--out".as_ref(),
+            shard.as_os_str(),
+            "--shard".as_ref(),
+            k.as_ref(),
+            "--quiet".as_ref(),
+        ]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        shards.push(shard);
+    }
+    let merged = dir.path().join("merged");
+    let mut args: Vec<&std::ffi::OsStr> = vec!["merge".as_ref()];
+    args.extend(shards.iter().map(|s| s.as_os_str()));
+    args.extend(["--out".as_ref(), merged.as_os_str()]);
+    let out = cardan(&args);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let index = std::fs::read_to_string(merged.join("index.html")).unwrap();
+    assert!(
+        index.contains("Optimisations") && index.contains("kinematic/report.md"),
+        "{index}"
+    );
+    for f in [
+        "index.html",
+        "good/summary.json",
+        "kinematic/run.json",
+        "kinematic/report.md",
+        "kinematic/slider_crank/optimum.json",
+        "kinematic/slider_crank/history.csv",
+        "kinematic/at-optima/summary.json",
+    ] {
+        assert_eq!(
+            std::fs::read(results.join(f)).unwrap(),
+            std::fs::read(merged.join(f)).unwrap(),
+            "{f}: the merged shards differ from one run"
+        );
+    }
 }

@@ -1,5 +1,6 @@
-//! `<out>/index.html`: every case and sweep of an output folder, each linked to its report
-//! (or, without one, to its results), and a table of headline metrics per case and mechanism.
+//! `<out>/index.html`: every case, sweep and optimisation of an output folder, each linked to
+//! its report (or, without one, to its results), and a table of headline metrics per case and
+//! mechanism.
 
 use crate::data;
 use crate::doc::{href, Align, Block, Doc};
@@ -143,10 +144,13 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
     let mut cases = Vec::new();
     let mut summaries = Vec::new();
     let mut sweeps = Vec::new();
+    let mut optimizations = Vec::new();
     for name in folders(out_dir)? {
         let dir = out_dir.join(&name);
         if dir.join("sweep.csv").is_file() {
             sweeps.push(name);
+        } else if dir.join(OPTIMUM_CHART).is_file() && dir.join("report.md").is_file() {
+            optimizations.push(name);
         } else if dir.join("summary.json").is_file() {
             match data::read_summary(&dir.join("summary.json"), None) {
                 Ok((s, _)) => {
@@ -169,8 +173,13 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
         title: "cardan results".into(),
         blocks: Vec::new(),
     };
+    let optimized = if optimizations.is_empty() {
+        String::new()
+    } else {
+        format!(", {} optimisation(s)", optimizations.len())
+    };
     doc.push(Block::Paragraph(format!(
-        "{} case(s) and {} sweep(s). Headline metrics: the whole machine's, every cylinder at \
+        "{} case(s){optimized} and {} sweep(s). Headline metrics: the whole machine's, every cylinder at \
          its own crank angle (`machine_*`; in a summary without them, of a machine of one \
          cylinder, its cylinder's: the total loads where a gas model adds them, else the \
          inertial ones); — where a mechanism has no such metric.",
@@ -256,8 +265,30 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
                 .collect(),
         ));
     }
+    if !optimizations.is_empty() {
+        doc.push(Block::Heading(2, "Optimisations".into()));
+        doc.push(Block::Links(
+            optimizations
+                .iter()
+                .map(|o| {
+                    (
+                        o.clone(),
+                        href(&format!("{o}/report.md")),
+                        "each mechanism at its own optimum; compared side by side in \
+                         at-optima/report.html"
+                            .to_string(),
+                    )
+                })
+                .collect(),
+        ));
+    }
     crate::files::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
 }
+
+/// The chart only an optimisation's folder holds (`[optimize]`, issue 40: its folder has no
+/// `summary.json` of its own, each mechanism's search in a folder of its own): how the index
+/// tells one.
+const OPTIMUM_CHART: &str = "convergence.svg";
 
 #[cfg(test)]
 mod tests {

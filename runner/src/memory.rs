@@ -6,7 +6,7 @@
 
 use crate::output::{summary_json, MechanismResult};
 use crate::per_step::StepColumns;
-use crate::run::{run_trains, StepsTo};
+use crate::run::train::{run_trains, StepsTo};
 use cardan_case::case::Case;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -49,7 +49,7 @@ pub fn run_in_memory(case: &Case, steps: bool) -> Result<CaseRun, String> {
     let trains = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_trains(case, to)))
         .map_err(|panic| panicked(case, panic.as_ref()))??;
     let (results, rows): (Vec<MechanismResult>, Vec<_>) = trains.into_iter().unzip();
-    crate::run::log_warnings(case, &results);
+    crate::run::train::log_warnings(case, &results);
     Ok(CaseRun {
         summary: summary_json(case, &results),
         steps: rows.into_iter().filter_map(|r| r.columns).collect(),

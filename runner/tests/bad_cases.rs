@@ -1244,3 +1244,85 @@ fn a_bare_speed_that_reads_like_rpm_is_a_warning_of_the_summary() {
         .get("warnings")
         .is_none());
 }
+
+/// An `[optimize]` naming a summary metric that no mechanism of the case reports (issue 40):
+/// a name the metric registry's templates accept but no mechanism's joint or body has, the
+/// objective of a mechanism whose summary lacks it, a gear metric without `[gear]`. `cardan
+/// check` (the batch's reading, `load_batch`) and `cardan run` (`run_paths`) refuse it with
+/// one message naming the file, the field, the metric and the likely fix, and run nothing.
+#[test]
+fn an_optimisation_of_a_metric_no_mechanism_reports_is_refused_by_check_and_run() {
+    use cardan_testing::cases::kinematic_optimization;
+    let good_constraint = "rod_angular_velocity_max >= 20 rad/s";
+    let cases: Vec<(String, &[&str])> = vec![
+        (
+            // `crankpin` for the slider-crank's joint `crank_pin`: the registry's template
+            // `{family}_{joint}_force_max` reads it, no summary has it.
+            kinematic_optimization("", "inertial_crankpin_force_max <= 5 kN"),
+            &[
+                "opt.toml",
+                "case \"kinematic\"",
+                "optimize.constraints = \"inertial_crankpin_force_max <= 5 kN\"",
+                "no mechanism of the case reports the metric \"inertial_crankpin_force_max\"",
+                "the slider_crank's summary has no such metric",
+                "did you mean \"inertial_crank_pin_force_max\"",
+                "constrain a metric one of them reports",
+            ],
+        ),
+        (
+            // The cardan gear's rod is guided by the gears: it has no piston side force.
+            kinematic_optimization("", good_constraint)
+                .replace("\"slider_crank\"", "\"cardan_gear\"")
+                .replace(
+                    "objective = \"piston_acceleration_max\"",
+                    "objective = \"inertial_piston_side_force_max\"",
+                ),
+            &[
+                "opt.toml",
+                "optimize.objective = \"inertial_piston_side_force_max\"",
+                "the cardan_gear's summary has no metric \"inertial_piston_side_force_max\"",
+                "optimise a metric every mechanism of the case reports",
+            ],
+        ),
+        (
+            kinematic_optimization("", "bending_safety_factor >= 1.2"),
+            &[
+                "opt.toml",
+                "optimize.constraints = \"bending_safety_factor >= 1.2\"",
+                "needs a [gear] table",
+            ],
+        ),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    for (k, (text, words)) in cases.iter().enumerate() {
+        let file = dir.path().join(format!("{k}")).join("opt.toml");
+        std::fs::create_dir_all(file.parent().unwrap()).unwrap();
+        std::fs::write(&file, text).unwrap();
+        let (batch, checked) = cardan_runner::run::load_batch(std::slice::from_ref(&file));
+        assert!(batch.optimizations.is_empty(), "case {k} accepted");
+        assert_eq!(checked.len(), 1, "{checked:?}");
+        for w in *words {
+            assert!(
+                checked[0].contains(w),
+                "case {k}: {w:?} not in {}",
+                checked[0]
+            );
+        }
+        let out = dir.path().join(format!("out{k}"));
+        let options = cardan_runner::RunOptions {
+            jobs: Some(1),
+            ..Default::default()
+        };
+        let report = cardan_runner::run_paths(std::slice::from_ref(&file), &out, options);
+        assert_eq!(report.failures, checked, "case {k}: check and run disagree");
+        assert!(report.written.is_empty() && !out.join("kinematic").exists());
+    }
+    // A constraint on a metric one mechanism reports binds that one: accepted.
+    let both = kinematic_optimization("", "inertial_piston_side_force_max <= 5 kN")
+        .replace("[\"slider_crank\"]", "[\"slider_crank\", \"cardan_gear\"]");
+    let file = dir.path().join("both.toml");
+    std::fs::write(&file, both).unwrap();
+    let (batch, failures) = cardan_runner::run::load_batch(&[file]);
+    assert!(failures.is_empty(), "{failures:?}");
+    assert_eq!(batch.optimizations.len(), 1);
+}

@@ -58,7 +58,7 @@ fn assert_same_tree(expected: &Path, actual: &Path) {
 
 /// The shipped configs in one run, and in three shards merged: the same files, byte for byte
 /// (summaries, per-step CSVs, reports and charts, every sweep's `sweep.csv` and report, the
-/// index). Then the shards' records refuse what does not belong together.
+/// optimisation's folder, the index). Then the shards' records refuse what does not belong together.
 #[test]
 fn three_shards_merged_equal_one_run_and_strangers_are_refused() {
     let tmp = tempfile::tempdir().unwrap();
@@ -89,6 +89,31 @@ fn three_shards_merged_equal_one_run_and_strangers_are_refused() {
     );
     assert!(report.failures.is_empty(), "{:#?}", report.failures);
     assert_same_tree(&single, &merged);
+    // The shipped optimisation (issue 40) among them: run whole by one shard, copied with its
+    // record, listed by the index.
+    let optimum = "optimize-thesis-pump";
+    let holding: Vec<&PathBuf> = shards.iter().filter(|s| s.join(optimum).exists()).collect();
+    assert_eq!(
+        holding.len(),
+        1,
+        "the optimisation in one shard: {holding:?}"
+    );
+    for f in [
+        "run.json",
+        "report.md",
+        "cardan_gear/optimum.json",
+        "slider_crank/history.csv",
+    ] {
+        assert!(
+            merged.join(optimum).join(f).is_file(),
+            "{optimum}/{f} missing"
+        );
+    }
+    let index = std::fs::read_to_string(merged.join("index.html")).unwrap();
+    assert!(
+        index.contains(&format!("{optimum}/report.md")),
+        "not in the index"
+    );
 
     // Refused, with nothing written: a shard missing, a shard twice, a shard of another batch
     // (other cases), a shard of another program.

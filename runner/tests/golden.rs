@@ -6,6 +6,8 @@
 //! speed (about 1e-12 J), and would differ between machines.
 
 use cardan_case::case;
+use cardan_case::optimize::Optimization;
+use cardan_runner::optimize::{optimize, optimum_json};
 use cardan_runner::{output, run_case};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -32,16 +34,49 @@ fn round(v: &mut Value) {
 fn check(stem: &str) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let file = root.join("configs").join(format!("{stem}.toml"));
+    if let Some(o) = optimization(&file) {
+        return snapshot(&root, stem, optimization_summary(&o));
+    }
     let cases = case::load_file(&file).unwrap_or_else(|e| panic!("{e}"));
     assert!(
         cases[0].sweep.is_none(),
         "{stem} is a sweep: its points are checked by running it (runner/tests/sweep.rs)"
     );
     let case = &cases[0];
-    let mut summary = output::summary_json(
+    let summary = output::summary_json(
         case,
         &run_case(case, None).unwrap_or_else(|e| panic!("{e}")),
     );
+    snapshot(&root, stem, summary);
+}
+
+/// The optimisation of the case file `file`, if it has an `[optimize]` table.
+fn optimization(file: &Path) -> Option<Optimization> {
+    let text = std::fs::read_to_string(file).unwrap();
+    let table = case::toml_table(file, &text).unwrap_or_else(|e| panic!("{e}"));
+    Optimization::define(file, table).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// An optimisation's summary: each mechanism's `optimum.json` (its variables, objective,
+/// constraints with their margins, evaluations and stopping reason) and the summary of every
+/// mechanism at its own optimum (`at-optima/summary.json`), as `cardan run` writes them.
+fn optimization_summary(o: &Optimization) -> Value {
+    let results = optimize(o).unwrap_or_else(|e| panic!("{e}"));
+    let optima: serde_json::Map<String, Value> = results
+        .iter()
+        .map(|m| (m.mechanism.clone(), optimum_json(o, m)))
+        .collect();
+    let bests: Vec<_> = results.iter().filter_map(|m| m.best.clone()).collect();
+    let (case, _) = bests.first().expect("an optimum");
+    let all: Vec<_> = bests.iter().map(|(_, r)| r.clone()).collect();
+    serde_json::json!({
+        "optimum": optima,
+        "at_optima": output::summary_json(case, &all),
+    })
+}
+
+/// Compares `summary`, rounded, with `golden/<stem>.snap`.
+fn snapshot(root: &Path, stem: &str, mut summary: Value) {
     round(&mut summary);
     insta::with_settings!({ snapshot_path => root.join("golden"), prepend_module_to_snapshot => false, omit_expression => true }, {
         insta::assert_json_snapshot!(stem, summary);
@@ -95,6 +130,7 @@ golden! {
     karhula_r60_l140_a200pi_w200pi => "karhula-r60-l140-a200pi-w200pi",
     nunes_op_r26_l90_2000rpm_lead10 => "nunes-op-r26-l90-2000rpm-lead10",
     nunes_op_r26_l90_2000rpm => "nunes-op-r26-l90-2000rpm",
+    optimize_thesis_pump => "optimize-thesis-pump",
     vidinsky_hm2_p75_r340 => "vidinsky-hm2-p75-r340",
     vidinsky_hm3_p75_r510 => "vidinsky-hm3-p75-r510",
 }
@@ -109,8 +145,10 @@ fn every_shipped_case_has_its_golden_test() {
     let mut shipped: Vec<String> = files
         .iter()
         .filter(|file| {
-            let cases = case::load_file(file).unwrap_or_else(|e| panic!("{e}"));
-            cases[0].sweep.is_none()
+            optimization(file).is_some() || {
+                let cases = case::load_file(file).unwrap_or_else(|e| panic!("{e}"));
+                cases[0].sweep.is_none()
+            }
         })
         .map(|file| {
             PathBuf::from(file)

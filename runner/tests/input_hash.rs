@@ -1,7 +1,7 @@
 //! The input hash (`run.json`, `shard.json`; `--resume` and `cardan merge` trust it) covers the
 //! whole input: every field of the case file's schema, each found in the JSON Schema (not
 //! listed here), mutated to another valid value, changes it; so do the bytes of a pressure
-//! trace the case reads, and a sweep point's own input.
+//! trace the case reads, a sweep point's own input, and an optimisation's definition.
 
 use cardan_case::case::{case_of_table, load_file};
 use cardan_runner::run::stamp::input_hash;
@@ -120,9 +120,10 @@ const UNMUTABLE: &[(&str, &str)] = &[
     ),
     (
         "optimize",
-        "an optimisation's definition is not a case's input: it is run whole by `cardan run` \
-         (never resumed, sharded or merged, so it has no input hash), and each point it runs is \
-         a case validated as any other",
+        "an optimisation's definition is not a case's input: its folder's record has an input \
+         hash of its own, made of its whole definition (tested by \
+         an_optimisations_hash_covers_its_definition), and each point it runs is a case \
+         validated as any other",
     ),
     (
         "gas.model",
@@ -153,7 +154,10 @@ fn bases() -> Vec<(PathBuf, toml::Table)> {
     let mut bases: Vec<(PathBuf, toml::Table)> = files
         .into_iter()
         .map(|f| {
-            let table = toml::from_str(&std::fs::read_to_string(&f).unwrap()).unwrap();
+            let mut table: toml::Table =
+                toml::from_str(&std::fs::read_to_string(&f).unwrap()).unwrap();
+            // An optimisation's case, as a case: its `[optimize]` is hashed apart.
+            table.remove("optimize");
             (f, table)
         })
         .collect();
@@ -517,5 +521,61 @@ fn a_sweep_points_hash_covers_its_input() {
     assert_eq!(before.len(), after.len());
     for (k, (b, a)) in before.iter().zip(&after).enumerate() {
         assert_ne!(b, a, "point {k} kept its hash after peak_pressure changed");
+    }
+}
+
+/// An optimisation's folder (`[optimize]`) is hashed by its whole definition: its objective,
+/// sense, a variable's range, a constraint, a search setting and a field of the case it varies
+/// each change the hash; the same file read from another folder keeps it.
+#[test]
+fn an_optimisations_hash_covers_its_definition() {
+    use cardan_case::optimize::Optimization;
+    use cardan_runner::run::stamp::optimization_hash;
+    let file = configs().join("optimize-thesis-pump.toml");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let hash = |file: &Path, text: &str| {
+        let table = cardan_case::case::toml_table(file, text).unwrap();
+        let o = Optimization::define(file, table).unwrap().unwrap();
+        optimization_hash(&o, true)
+    };
+    let before = hash(&file, &text);
+    assert_eq!(before, hash(Path::new("elsewhere/opt.toml"), &text));
+    let dir = tempfile::tempdir().unwrap();
+    let moved = dir.path().join("optimize-thesis-pump.toml");
+    std::fs::write(&moved, &text).unwrap();
+    assert_eq!(before, hash(&moved, &text), "moved to another folder");
+    assert_ne!(
+        before,
+        optimization_hash(
+            &Optimization::define(&file, cardan_case::case::toml_table(&file, &text).unwrap())
+                .unwrap()
+                .unwrap(),
+            false
+        ),
+        "with and without reports"
+    );
+    for (from, to) in [
+        ("sense = \"max\"", "sense = \"min\""),
+        ("[\"100 mm\", \"300 mm\"]", "[\"100 mm\", \"250 mm\"]"),
+        (
+            "\"bending_safety_factor >= 1.2\"",
+            "\"bending_safety_factor >= 1.3\"",
+        ),
+        ("seed = 1", "seed = 2"),
+        ("max_evaluations = 400", "max_evaluations = 300"),
+        ("bore = \"120 mm\"", "bore = \"121 mm\""),
+        ("counterweight = 0.5", "counterweight = 0.6"),
+        (
+            "objective = \"machine_mechanical_efficiency\"",
+            "objective = \"machine_mechanical_efficiency\"\nstarts = 3",
+        ),
+    ] {
+        assert!(text.contains(from), "{from}");
+        let changed = text.replacen(from, to, 1);
+        assert_ne!(
+            before,
+            hash(&file, &changed),
+            "{from} -> {to} kept the hash"
+        );
     }
 }

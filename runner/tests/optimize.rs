@@ -17,7 +17,8 @@ fn define(text: &str) -> Result<Optimization, String> {
         .ok_or_else(|| "no [optimize]".to_string())
 }
 
-/// The kinematic problem: a slider-crank of crank r = 50 mm at ω = 100 rad/s, no gas.
+/// The kinematic problem (`cardan_testing::cases::kinematic_optimization`, shared with the
+/// command line's tests): a slider-crank of crank r = 50 mm at ω = 100 rad/s, no gas.
 /// Minimise the peak piston acceleration over the rod length l ∈ [150, 400] mm subject to
 /// the peak rod angular speed ≥ ω/5. For a centred slider-crank with λ = r/l ≤ 1/4 the peak
 /// piston acceleration is rω²(1 + λ), at top dead centre, and the peak rod angular speed λω,
@@ -27,29 +28,7 @@ fn define(text: &str) -> Result<Optimization, String> {
 /// optimum is l* = 250 mm, a_max* = rω²·1.2 = 600 m/s². Both peaks fall on a grid step (θ = 0),
 /// so the grid adds no error.
 fn kinematic(extra: &str, constraint: &str) -> String {
-    format!(
-        r#"
-name = "kinematic"
-machine = "pump"
-mechanisms = ["slider_crank"]
-[geometry]
-crank_length = "50 mm"
-rod_length = "200 mm"
-bore = "80 mm"
-[motion]
-start_angle = "0 deg"
-end_angle = "360 deg"
-initial_speed = "100 rad/s"
-angular_acceleration = 0
-steps = 360
-[optimize]
-objective = "piston_acceleration_max"
-sense = "min"
-variables = {{ "geometry.rod_length" = ["150 mm", "400 mm"] }}
-constraints = ["{constraint}"]
-{extra}
-"#
-    )
+    cardan_testing::cases::kinematic_optimization(extra, constraint)
 }
 
 fn best_value(m: &MechanismOptimum, o: &Optimization, k: usize) -> f64 {
@@ -196,7 +175,7 @@ fn feasible_objective(
 fn the_thesis_pump_optimum_beats_a_coarse_sweep_and_its_perturbations() {
     const TOLERANCE: f64 = 1e-5;
     let text = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs-optimize/thesis-pump.toml"),
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../configs/optimize-thesis-pump.toml"),
     )
     .unwrap();
     let text = text.replace("steps = 360", "steps = 90");

@@ -505,7 +505,23 @@ fn index_links_every_report() {
         assert!(links.contains(&link.as_str()), "{link}");
         assert!(out.join(&link).is_file());
     }
-    assert_eq!(links.len(), folders.len());
+    // Each optimisation (`[optimize]`: no summary.json of its own) linked to its report.md.
+    let optimizations: Vec<PathBuf> = crate::folders(out)
+        .into_iter()
+        .filter(|p| p.join("convergence.svg").is_file())
+        .collect();
+    assert_eq!(
+        optimizations.len(),
+        1,
+        "the shipped thesis-pump optimisation"
+    );
+    for f in &optimizations {
+        let link = format!("{}/report.md", f.file_name().unwrap().to_string_lossy());
+        assert!(links.contains(&link.as_str()), "{link}");
+        assert!(out.join(&link).is_file());
+    }
+    assert!(html.contains("Optimisations") && html.contains("1 optimisation(s)"));
+    assert_eq!(links.len(), folders.len() + optimizations.len());
     // The engines' negative mean drive power is explained (issue 22).
     for part in [
         "Mean drive power",

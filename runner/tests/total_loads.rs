@@ -18,7 +18,14 @@ fn shipped_cases_with_gas_have_the_general_solve_of_their_total() {
     files.sort();
     let mut checked = 0;
     for file in files {
-        let text = std::fs::read_to_string(&file).unwrap();
+        let mut text = std::fs::read_to_string(&file).unwrap();
+        if text.contains("\n[optimize]") {
+            // An optimisation's case, checked as the case the file gives (its `[optimize]` is
+            // the search's, not the case's).
+            let mut table: toml::Table = text.parse().unwrap();
+            table.remove("optimize");
+            text = toml::to_string(&table).unwrap();
+        }
         if !text.contains("[gas]") {
             continue;
         }

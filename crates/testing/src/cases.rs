@@ -1,7 +1,8 @@
 //! Case-file text that several test files start from, so that a change of the schema is made
-//! once. Each is the thesis air pump (Karhula 2008, ch. 11: crank 60 mm, rod 140 mm, bore
+//! once. Most are the thesis air pump (Karhula 2008, ch. 11: crank 60 mm, rod 140 mm, bore
 //! 120 mm, both mechanisms, one pump cycle from 90° to 810°); tests edit the text with
-//! `replace` and append tables to it.
+//! `replace` and append tables to it. [`kinematic_optimization`] is the optimisation with a
+//! closed-form optimum (issue 40) that the runner's and the command line's tests run.
 
 /// The pump at 628.3185307 rad/s (6000 rpm) over 720 steps, inertial loads only, every value a
 /// bare SI number; named "good".
@@ -47,6 +48,39 @@ compression_ratio = 12
 polytropic_exponent = 1.4
 [friction]
 [gear]
+"#
+    )
+}
+
+/// The kinematic optimisation (`[optimize]`, issue 40), named "kinematic": a slider-crank of
+/// crank r = 50 mm at ω = 100 rad/s, no gas, one revolution in 360 steps; the peak piston
+/// acceleration minimised over the rod length l ∈ [150, 400] mm subject to `constraint`, with
+/// `extra` lines appended to its `[optimize]` table. For a centred slider-crank with
+/// λ = r/l ≤ 1/4 the peak piston acceleration is rω²(1 + λ) and the peak rod angular speed
+/// λω, both at top dead centre (Karhula 2008, A4.1.1): with "rod_angular_velocity_max >= 20
+/// rad/s" (λω ≥ ω/5, l ≤ 5r) the optimum is l* = 250 mm, a_max* = 600 m/s².
+pub fn kinematic_optimization(extra: &str, constraint: &str) -> String {
+    format!(
+        r#"
+name = "kinematic"
+machine = "pump"
+mechanisms = ["slider_crank"]
+[geometry]
+crank_length = "50 mm"
+rod_length = "200 mm"
+bore = "80 mm"
+[motion]
+start_angle = "0 deg"
+end_angle = "360 deg"
+initial_speed = "100 rad/s"
+angular_acceleration = 0
+steps = 360
+[optimize]
+objective = "piston_acceleration_max"
+sense = "min"
+variables = {{ "geometry.rod_length" = ["150 mm", "400 mm"] }}
+constraints = ["{constraint}"]
+{extra}
 "#
     )
 }

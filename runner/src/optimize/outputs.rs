@@ -3,10 +3,12 @@
 //! constraint with its margin, the evaluations, the stopping reason, what sits on a bound or a
 //! constraint, the failures), `history.csv` (every evaluation) and `summary.json` (its run at
 //! the optimum); `convergence.svg`; `at-optima/` (every mechanism at its own optimum in one
-//! `summary.json`, with the case report's side-by-side comparison); `report.md`.
+//! `summary.json`, with the case report's side-by-side comparison); `report.md`; and last the
+//! folder's record, `run.json` (`crate::run::stamp`), as a case folder's.
 
 use super::search::MechanismOptimum;
 use crate::output::summary_json;
+use crate::run::stamp;
 use cardan_case::optimize::{Optimization, Relation, Sense};
 use cardan_optimize::{Outcome, Record};
 use cardan_report::files;
@@ -269,6 +271,8 @@ pub fn write(
         }
     }
     files::write_file(&tmp.join("report.md"), report_md(o, results).as_bytes()).map_err(fail)?;
+    // Last: the record that vouches for the folder (`--resume`, `cardan merge`).
+    stamp::write_optimization(&tmp, o, reports).map_err(fail)?;
     files::replace_dir(&tmp, &dir).map_err(fail)?;
     Ok(dir)
 }

@@ -8,6 +8,7 @@ use crate::memory::run_in_memory;
 use crate::output::MechanismResult;
 use cardan_case::case::Case;
 use cardan_case::optimize::{Optimization, Sense};
+use cardan_case::CaseError;
 use cardan_optimize::{minimise, Optimum, Outcome, Settings};
 
 /// One mechanism's optimisation.
@@ -89,6 +90,82 @@ fn watched(o: &Optimization, constraints: &[usize], result: &MechanismResult) ->
         .collect()
 }
 
+/// Every variable of `mechanism` at the middle of its range, the others as the file gives them:
+/// where [`applicable`] and [`check_metrics`] look at what its summary reports.
+fn middle(o: &Optimization, mechanism: &str) -> Vec<Option<f64>> {
+    (0..o.variables.len())
+        .map(|k| o.applies(mechanism, k).then(|| o.variables[k].at(0.5)))
+        .collect()
+}
+
+/// The objective and the constraints checked against what the mechanisms' summaries report,
+/// each mechanism's case run once at the middle of its ranges: the objective must be a metric
+/// of every mechanism's summary (each is optimised on it), a constraint's metric of at least
+/// one (a constraint binds the mechanisms that have its metric and is left out, said so, for
+/// the others); a name the registry knows but no mechanism reports (another mechanism's joint
+/// or body, a gear metric without a gear mesh) is refused naming the file, the field, the
+/// metric and the nearest metric reported. `cardan check` and `cardan run` both refuse through
+/// it (the batch's reading calls it), and so does [`optimize`].
+pub fn check_metrics(o: &Optimization) -> Result<(), CaseError> {
+    let invalid = |field: &str, value: String, rule: String| CaseError::Invalid {
+        file: o.file.clone(),
+        case: o.name.clone(),
+        field: field.into(),
+        value,
+        rule,
+    };
+    let mut reported: Vec<(&str, Vec<String>)> = Vec::new();
+    for m in &o.mechanisms {
+        let (_, result) = run_at(o, m, &middle(o, m)).map_err(|e| {
+            invalid(
+                "optimize.variables",
+                "every variable at the middle of its range".into(),
+                format!("the {m}'s case there does not run, so its metrics are not known: narrow the ranges ({e})"),
+            )
+        })?;
+        let names = result
+            .summary
+            .metrics
+            .iter()
+            .map(|x| x.name.clone())
+            .collect();
+        reported.push((m, names));
+    }
+    let nearest = |metric: &str, names: &[&String]| {
+        let names: Vec<&str> = names.iter().map(|s| s.as_str()).collect();
+        cardan_case::schema::nearest(metric, &names)
+            .map_or(String::new(), |near| format!("did you mean \"{near}\"? "))
+    };
+    for (m, names) in &reported {
+        if !names.contains(&o.objective) {
+            let near = nearest(&o.objective, &names.iter().collect::<Vec<_>>());
+            return Err(invalid(
+                "optimize.objective",
+                format!("\"{}\"", o.objective),
+                format!("the {m}'s summary has no metric \"{}\" (the metrics of its summary.json; docs/results.md): {near}optimise a metric every mechanism of the case reports, or optimise the {m} in a case file of its own", o.objective),
+            ));
+        }
+    }
+    for c in &o.constraints {
+        if reported.iter().any(|(_, names)| names.contains(&c.metric)) {
+            continue;
+        }
+        let all: Vec<&String> = reported.iter().flat_map(|(_, n)| n).collect();
+        let whose: Vec<String> = reported.iter().map(|(m, _)| format!("the {m}'s")).collect();
+        return Err(invalid(
+            "optimize.constraints",
+            format!("\"{}\"", c.text),
+            format!(
+                "no mechanism of the case reports the metric \"{}\" ({} summary has no such metric; docs/results.md): {}constrain a metric one of them reports, or add the mechanism that has it to `mechanisms`",
+                c.metric,
+                whose.join(" and "),
+                nearest(&c.metric, &all)
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// Which variables and constraints apply to `mechanism` (module docs), and the evaluations
 /// that cost.
 fn applicable(o: &Optimization, mechanism: &str) -> Result<MechanismOptimum, String> {
@@ -119,9 +196,7 @@ fn applicable(o: &Optimization, mechanism: &str) -> Result<MechanismOptimum, Str
             ));
         }
     }
-    let middle: Vec<Option<f64>> = (0..n)
-        .map(|k| candidates.contains(&k).then(|| o.variables[k].at(0.5)))
-        .collect();
+    let middle = middle(o, mechanism);
     m.probes += 1;
     let (_, centre) = run_at(o, mechanism, &middle)
         .map_err(|e| format!("the {mechanism} at the middle of the ranges: {e}"))?;
@@ -177,6 +252,7 @@ fn settings(o: &Optimization) -> Settings {
 /// cannot be (its summary lacks the objective, its case fails at the middle of the ranges) is
 /// the failure of the whole optimisation, said with the mechanism.
 pub fn optimize(o: &Optimization) -> Result<Vec<MechanismOptimum>, String> {
+    check_metrics(o).map_err(|e| e.to_string())?;
     let mut out = Vec::new();
     for mechanism in &o.mechanisms {
         let mut m = applicable(o, mechanism)

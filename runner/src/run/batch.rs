@@ -3,6 +3,7 @@
 
 use super::case_folder::{run_and_write, Written};
 use super::cases::{load_batch, matches_pattern};
+use super::optimizations::run_optimizations;
 use super::options::{Report, RunOptions};
 use super::shard;
 use super::sweeps::{sweep_targets, write_sweeps, Point, SweepTarget};
@@ -31,10 +32,11 @@ pub fn worker_threads(requested: Option<usize>, cores: usize) -> (Option<usize>,
 }
 
 /// Loads, validates, runs and writes every case under `paths` (or those `options.only`
-/// selects) into `out/<case name>/`. A panic inside a case is caught and reported as that
-/// case's failure. An `out` that is not a folder is refused before anything runs; leftovers
-/// of killed runs in it are removed; `index.html` (and an `--only` run's sweep report) is
-/// rewritten whenever the folder's contents change, so that it never describes old results.
+/// selects) into `out/<case name>/`, then every optimisation (`[optimize]`) into its folder.
+/// A panic inside a case is caught and reported as that case's failure. An `out` that is not
+/// a folder is refused before anything runs; leftovers of killed runs in it are removed;
+/// `index.html` (and an `--only` run's sweep report) is rewritten whenever the folder's
+/// contents change, so that it never describes old results.
 pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let mut report = Report::default();
     if let Ok(meta) = std::fs::metadata(out) {
@@ -54,7 +56,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let (batch, failures) = load_batch(paths);
     report.failures = failures;
     let (mut cases, mut tables) = (batch.cases, batch.tables);
-    let optimizations = batch.optimizations;
+    let mut optimizations = batch.optimizations;
     let overrides = |case: &mut Case| {
         case.output.csv = options.csv.unwrap_or(case.output.csv);
         case.output.npy = options.npy.unwrap_or(case.output.npy);
@@ -67,6 +69,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         shard::take(
             &mut cases,
             &mut tables,
+            &mut optimizations,
             shard,
             options.reports,
             &report.failures,
@@ -91,6 +94,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
             report.failures.extend(partial);
             return report;
         }
+        optimizations.retain(|o| matches_pattern(pattern, &o.name));
     }
     let mut selected: HashMap<&str, usize> = HashMap::new();
     for c in &cases {
@@ -147,20 +151,10 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         options.reports && manifest.is_none(),
         &mut report,
     );
-    for o in optimizations {
-        if options
-            .only
-            .as_deref()
-            .is_some_and(|p| !matches_pattern(p, &o.name))
-        {
-            continue;
-        }
-        if manifest.is_some() {
-            report.failures.push(format!("{}: case \"{}\": an optimisation is one search and is not split into shards: run it without --shard", o.file.display(), o.name));
-        } else {
-            report.optimizations.push(o);
-        }
-    }
+    // After the cases: each whole, on the shard it is given to.
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let threads = worker_threads(options.jobs, cores).0;
+    run_optimizations(&optimizations, out, &options, threads, &mut report);
     if let Some(manifest) = manifest {
         // A shard's sweeps and index are the merge's to report.
         if let Err(e) = manifest.write(out, &report.failures) {

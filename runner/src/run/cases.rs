@@ -110,6 +110,8 @@ fn load_entry(file: &Path) -> Result<Entry, CaseError> {
     let text = case::read_case_text(file)?;
     let table = case::toml_table(file, &text)?;
     if let Some(o) = Optimization::define(file, table.clone())? {
+        // What the run refuses, the check refuses: a metric no mechanism reports.
+        crate::optimize::check_metrics(&o)?;
         return Ok(Entry::Optimize(Box::new(o)));
     }
     let Some(sweep) = Sweep::define(file, table.clone())? else {

@@ -63,8 +63,4 @@ pub struct Report {
     pub sweeps: Vec<(String, PathBuf, usize)>,
     /// Cases whose folder of an earlier run was kept (`--resume`; each is also in `written`).
     pub reused: usize,
-    /// The batch's optimisations (`[optimize]`) that `--only` selects, read and validated but
-    /// not run: `crate::optimize::run_optimizations` runs them (the command line does, after
-    /// the cases).
-    pub optimizations: Vec<cardan_case::optimize::Optimization>,
 }

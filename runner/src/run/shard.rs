@@ -1,12 +1,13 @@
-//! Shards (`--shard K/N`): the cases of a batch (sweeps expanded) split into N deterministic
-//! parts of near-equal expected cost ([`part`]), and the record a shard leaves in its output
+//! Shards (`--shard K/N`): the cases of a batch (sweeps expanded, each optimisation one whole
+//! unit) split into N deterministic parts of near-equal expected cost ([`part`]), and the record a shard leaves in its output
 //! folder (`shard.json`, [`Manifest`]) by which `cardan merge` gathers the shards into what one
 //! run writes (`merge.rs`) and refuses shards of other inputs or another program.
 
-use super::stamp::{input_hash, Fnv, PROGRAM};
+use super::stamp::{input_hash, optimization_hash, Fnv, PROGRAM};
 use super::table::TableSweep;
 use anyhow::Context;
 use cardan_case::case::Case;
+use cardan_case::optimize::Optimization;
 use cardan_report::files;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -33,7 +34,24 @@ pub fn cost(case: &Case) -> u128 {
 /// best split). The points of a sweep written as a table (no case folders) are split into
 /// contiguous ranges (`assign`). The same cases give the same parts on every machine.
 pub fn assignment(cases: &[Case], n: usize) -> Vec<usize> {
-    assign(cases, &[], n).0
+    assign(cases, &[], &[], n).0
+}
+
+/// The expected cost of an optimisation (`[optimize]`), in step-evaluations: at most its
+/// starts times its evaluations a start, each a run of one mechanism's case as the file gives
+/// it ([`cost`]), for each of its mechanisms. An upper bound (a start that converges stops
+/// early), the same on every machine: an optimisation is one unit of [`assignment`]'s rule, run
+/// whole by one shard.
+pub fn optimization_cost(o: &Optimization) -> u128 {
+    let evaluations = (o.starts * o.max_evaluations) as u128;
+    o.mechanisms
+        .iter()
+        .map(|m| {
+            o.case_at(m, &vec![None; o.variables.len()])
+                .map_or(1, |case| cost(&case))
+                * evaluations
+        })
+        .sum()
 }
 
 /// A table sweep of fewer points goes whole to one shard (one unit of [`assignment`]'s rule):
@@ -43,8 +61,9 @@ pub const SPLIT_FROM: usize = 64;
 /// The points `start..end` of a table sweep, run by shard `shard` (from 1).
 pub type Range = (usize, usize, usize);
 
-/// The shard (from 1) of each of `cases`, and the ranges of points of each sweep of `tables`
-/// (a sweep written as a table). The cases, and each table of fewer than [`SPLIT_FROM`] points
+/// The shard (from 1) of each of `cases`, the ranges of points of each sweep of `tables`
+/// (a sweep written as a table), and the shard of each of `optimizations` (each one unit, of
+/// [`optimization_cost`]). The cases, and each table of fewer than [`SPLIT_FROM`] points
 /// (one unit of its points' cost: the first point's [`cost`] times its points), are dealt by
 /// [`assignment`]'s rule; then each larger table, in order, is split into contiguous ranges
 /// that fill the shards' costs up to one level ([`fill`]), shard 1 taking the first range,
@@ -52,8 +71,9 @@ pub type Range = (usize, usize, usize);
 pub(super) fn assign(
     cases: &[Case],
     tables: &[TableSweep],
+    optimizations: &[Optimization],
     n: usize,
-) -> (Vec<usize>, Vec<Vec<Range>>) {
+) -> (Vec<usize>, Vec<Vec<Range>>, Vec<usize>) {
     let n = n.max(1);
     let mut points: std::collections::HashMap<&str, usize> = Default::default();
     for c in cases {
@@ -87,9 +107,13 @@ pub(super) fn assign(
         let i = cases.len() + t;
         units.push((i, vec![i], cost(&table.first) * table.points() as u128));
     }
+    for (j, o) in optimizations.iter().enumerate() {
+        let i = cases.len() + tables.len() + j;
+        units.push((i, vec![i], optimization_cost(o)));
+    }
     units.sort_by_key(|(first, _, cost)| (std::cmp::Reverse(*cost), *first));
     let mut load = vec![0u128; n];
-    let mut shard_of = vec![0; cases.len() + tables.len()];
+    let mut shard_of = vec![0; cases.len() + tables.len() + optimizations.len()];
     for (_, members, cost) in units {
         let k = (0..n).min_by_key(|&k| (load[k], k)).unwrap_or(0);
         load[k] += cost;
@@ -97,6 +121,7 @@ pub(super) fn assign(
             shard_of[i] = k + 1;
         }
     }
+    let optimization_shards = shard_of.split_off(cases.len() + tables.len());
     let whole = shard_of.split_off(cases.len());
     let ranges = tables
         .iter()
@@ -121,7 +146,7 @@ pub(super) fn assign(
             ranges
         })
         .collect();
-    (shard_of, ranges)
+    (shard_of, ranges, optimization_shards)
 }
 
 /// Water-filling: shares of `total` (each shard's, summing to `total`) that raise the lowest
@@ -155,18 +180,24 @@ pub fn part(cases: &[Case], k: usize, n: usize) -> Vec<bool> {
     assignment(cases, n).into_iter().map(|s| s == k).collect()
 }
 
-/// Keeps in `cases` and `tables` only the K-th of `n` parts ([`assign`]), and returns the
-/// shard's record of the whole batch ([`Manifest::new`]).
+/// Keeps in `cases`, `tables` and `optimizations` only the K-th of `n` parts ([`assign`]),
+/// and returns the shard's record of the whole batch ([`Manifest::new`]).
 pub(super) fn take(
     cases: &mut Vec<Case>,
     tables: &mut Vec<TableSweep>,
+    optimizations: &mut Vec<Optimization>,
     (k, n): (usize, usize),
     reports: bool,
     failures: &[String],
 ) -> Manifest {
-    let manifest = Manifest::new(cases, tables, (k, n), reports, failures);
-    let (mine, ranges) = assign(cases, tables, n);
+    let manifest = Manifest::new(cases, tables, optimizations, (k, n), reports, failures);
+    let (mine, ranges, optimization_shards) = assign(cases, tables, optimizations, n);
     let mut index = 0;
+    optimizations.retain(|_| {
+        index += 1;
+        optimization_shards[index - 1] == k
+    });
+    index = 0;
     cases.retain(|_| {
         index += 1;
         mine[index - 1] == k
@@ -194,7 +225,8 @@ pub struct Manifest {
     pub shard: (usize, usize),
     pub reports: bool,
     /// (case name, its sweep, the shard that runs it) of every case of the batch (a sweep
-    /// written as a table is in `tables`).
+    /// written as a table is in `tables`), then of every optimisation (its folder is copied as
+    /// a case's).
     pub cases: Vec<(String, Option<String>, usize)>,
     /// Every sweep written as a table: its name, its points, and the ranges of points each
     /// shard runs (`assign`), in order.
@@ -204,18 +236,20 @@ pub struct Manifest {
 }
 
 impl Manifest {
-    /// The record of shard `k` of `n` of the batch `cases` and `tables` (as they run: after
-    /// the command line's overrides); `failures` so far are the case files that could not be
-    /// read, which change the inputs as much as the cases do. A sweep written as a table is
-    /// hashed by its definition and its first point, and listed with its ranges.
+    /// The record of shard `k` of `n` of the batch `cases`, `tables` and `optimizations` (as
+    /// they run: after the command line's overrides); `failures` so far are the case files
+    /// that could not be read, which change the inputs as much as the cases do. A sweep written
+    /// as a table is hashed by its definition and its first point, and listed with its ranges;
+    /// an optimisation by its input hash ([`optimization_hash`]).
     pub fn new(
         cases: &[Case],
         tables: &[TableSweep],
+        optimizations: &[Optimization],
         (k, n): (usize, usize),
         reports: bool,
         failures: &[String],
     ) -> Self {
-        let (shards, table_ranges) = assign(cases, tables, n);
+        let (shards, table_ranges, optimization_shards) = assign(cases, tables, optimizations, n);
         let mut hash = Fnv::default();
         hash.update(format!("{n} shards, reports {reports}").as_bytes());
         for f in failures {
@@ -231,10 +265,20 @@ impl Manifest {
                 .update(t.sweep.definition().as_bytes())
                 .update(format!("{} points", t.points()).as_bytes());
         }
+        for o in optimizations {
+            hash.update(o.name.as_bytes())
+                .update(optimization_hash(o, reports).as_bytes());
+        }
         let entries: Vec<(String, Option<String>, usize)> = cases
             .iter()
             .zip(shards)
             .map(|(c, s)| (c.name.clone(), c.sweep.as_ref().map(|(s, _)| s.clone()), s))
+            .chain(
+                optimizations
+                    .iter()
+                    .zip(optimization_shards)
+                    .map(|(o, s)| (o.name.clone(), None, s)),
+            )
             .collect();
         let tables = tables
             .iter()

@@ -7,6 +7,7 @@
 
 use crate::output::MechanismResult;
 use cardan_case::case::Case;
+use cardan_case::optimize::Optimization;
 use cardan_report::files::{read_text, RESULT_RECORD};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -84,21 +85,58 @@ fn listing(dir: &Path) -> std::io::Result<Vec<(String, u64)>> {
     Ok(out)
 }
 
+/// The hash of an optimisation's input (`[optimize]`, issue 40), and whether its folder holds
+/// the reports: the program and its version, its whole validated definition except the path
+/// of its file (the case table it varies, its objective, variables, constraints and search
+/// settings), and the digest of each mechanism's case as the file gives it
+/// ([`Case::input_digest`]: the bytes of every file it reads too). A case file that cannot be
+/// validated any more hashes its error, so that its folder is never taken as current.
+pub fn optimization_hash(o: &Optimization, report: bool) -> String {
+    let mut hash = Fnv::default();
+    hash.update(PROGRAM.as_bytes())
+        .update(o.definition().as_bytes());
+    for m in &o.mechanisms {
+        match o.case_at(m, &vec![None; o.variables.len()]) {
+            Ok(case) => hash.update(case.input_digest.as_bytes()),
+            Err(e) => hash.update(e.to_string().as_bytes()),
+        };
+    }
+    hash.update(if report { b"report" } else { b"no report" })
+        .hex()
+}
+
 /// Writes the record of `case` into its finished temporary folder `dir` (every other file
 /// already written).
 pub fn write(dir: &Path, case: &Case, report: bool, cells: &[Cell]) -> anyhow::Result<()> {
+    let row = case
+        .sweep
+        .as_ref()
+        .map(|(_, values)| (json!(values), json!(cells)));
+    write_record(dir, input_hash(case, report), row)
+}
+
+/// Writes the record of the optimisation `o` into its finished temporary folder `dir` (every
+/// other file already written): what `--resume` and `cardan merge` read of its folder, as of a
+/// case's.
+pub fn write_optimization(dir: &Path, o: &Optimization, report: bool) -> anyhow::Result<()> {
+    write_record(dir, optimization_hash(o, report), None)
+}
+
+/// Writes the record of `dir`: the program, `hash`, the files of `dir`, and a sweep point's
+/// values and row.
+fn write_record(dir: &Path, hash: String, row: Option<(Value, Value)>) -> anyhow::Result<()> {
     let files: serde_json::Map<String, Value> = listing(dir)?
         .into_iter()
         .map(|(name, size)| (name, json!(size)))
         .collect();
     let mut record = json!({
         "program": PROGRAM,
-        "input_hash": input_hash(case, report),
+        "input_hash": hash,
         "files": files,
     });
-    if let Some((_, values)) = &case.sweep {
-        record["sweep_values"] = json!(values);
-        record["metrics"] = json!(cells);
+    if let Some((values, cells)) = row {
+        record["sweep_values"] = values;
+        record["metrics"] = cells;
     }
     let mut text = serde_json::to_string(&record)?;
     text.push('\n');
@@ -204,4 +242,14 @@ pub fn reusable(dir: &Path, case: &Case, report: bool) -> Option<Vec<Cell>> {
     let record = read(dir)?;
     (record.complete && record.program == PROGRAM && record.input_hash == input_hash(case, report))
         .then_some(record.metrics)
+}
+
+/// Whether the folder `dir` of the optimisation `o` is complete and was written by this program
+/// from this very definition: `--resume` keeps it instead of running the search again.
+pub fn reusable_optimization(dir: &Path, o: &Optimization, report: bool) -> bool {
+    read(dir).is_some_and(|record| {
+        record.complete
+            && record.program == PROGRAM
+            && record.input_hash == optimization_hash(o, report)
+    })
 }
