@@ -8,12 +8,12 @@
 
 use crate::error::{CaseError, Invalid};
 pub use crate::plausible::{
-    AccuracyGrade, ApplicationFactor, GeometryFactorJ, Hardness, ProfileShift, QualityNumber,
-    RingAddendum, Teeth,
+    AccuracyGrade, ApplicationFactor, GeometryFactorJ, Hardness, IsoLoadFactor, ProfileShift,
+    QualityNumber, RingAddendum, Teeth,
 };
 use crate::quantity::{broken, Dim, Length, NonNegative, Positive, Pressure};
 pub use crate::quantity::{Range, Ranged};
-use cardan_dynamics::mesh::{GearStandard, IsoQuality};
+use cardan_dynamics::mesh::{GearStandard, IsoOverrides, IsoQuality};
 use cardan_dynamics::{GearMaterial, GearSpec, ToothLoad};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::{de::Error as _, Deserialize, Deserializer};
@@ -161,6 +161,22 @@ pub struct GearTable {
     /// ISO 6336-5 material quality "ml", "mq" or "me", for σ_Hlim and σ_Flim of an ISO rating.
     /// Default "mq".
     pub iso_quality: Option<IsoQualityWord>,
+    /// ISO 6336-1 dynamic factor K_v, from 1 to 4, in place of method B's from the accuracy
+    /// grade (ISO 6336-1:2019 §4.1.6: a measured or established value takes precedence).
+    /// Default computed.
+    pub iso_dynamic_factor: Option<Ranged<IsoLoadFactor>>,
+    /// ISO 6336-1 transverse load factor K_Hα (= K_Fα), from 1 to 4, in place of method B's.
+    /// With `iso_dynamic_factor` too, no `accuracy_grade` is needed. Default computed.
+    pub transverse_load_factor: Option<Ranged<IsoLoadFactor>>,
+    /// ISO 6336-1 face load factor K_Hβ, from 1 to 4 (K_Fβ follows from it). Default the AGMA
+    /// rating's K_m for the face width.
+    pub face_load_factor: Option<Ranged<IsoLoadFactor>>,
+    /// ISO 6336-5 allowable contact stress number σ_Hlim; Pa; one for both, or [pinion, gear].
+    /// Default from `material`, `hardness` and `iso_quality`.
+    pub sigma_hlim: Option<PerGear<Positive<Pressure>>>,
+    /// ISO 6336-5 nominal bending stress number σ_Flim; Pa; one for both, or [pinion, gear].
+    /// Default from `material`, `hardness` and `iso_quality`.
+    pub sigma_flim: Option<PerGear<Positive<Pressure>>>,
 }
 
 impl GearTable {
@@ -169,14 +185,27 @@ impl GearTable {
     /// read by nothing.
     pub(crate) fn build(&self, invalid: &Invalid) -> Result<GearSpec, CaseError> {
         let spec = self.spec();
-        if spec.standard.iso() && self.accuracy_grade.is_none() {
+        let both_factors =
+            self.iso_dynamic_factor.is_some() && self.transverse_load_factor.is_some();
+        if spec.standard.iso() && self.accuracy_grade.is_none() && !both_factors {
             return Err(invalid(
                 "gear.accuracy_grade",
                 &"(missing)",
-                "an ISO 6336 rating (standard = \"iso6336\" or \"both\") needs the ISO 1328-1 accuracy grade of both gears, 1 to 12, for K_v and K_Hα by ISO 6336-1 method B: add e.g. accuracy_grade = 7",
+                "an ISO 6336 rating (standard = \"iso6336\" or \"both\") needs the ISO 1328-1 accuracy grade of both gears, 1 to 12, for K_v and K_Hα by ISO 6336-1 method B: add e.g. accuracy_grade = 7 (or give both iso_dynamic_factor and transverse_load_factor)",
+            ));
+        }
+        if let (Some(grade), true) = (&self.accuracy_grade, both_factors) {
+            return Err(invalid(
+                "gear.accuracy_grade",
+                &grade.written,
+                "is read by nothing: iso_dynamic_factor and transverse_load_factor replace the K_v and K_Hα it gives; remove it, or one of them",
             ));
         }
         if !spec.standard.iso() {
+            let written = |r: &Option<Ranged<IsoLoadFactor>>| r.as_ref().map(|a| a.written.clone());
+            let stress = |p: &Option<PerGear<Positive<Pressure>>>| {
+                p.as_ref().map(|p| p.0[0].written.clone())
+            };
             let given = [
                 (
                     "accuracy_grade",
@@ -193,6 +222,14 @@ impl GearTable {
                     self.iso_quality
                         .map(|q| format!("\"{q:?}\"").to_lowercase()),
                 ),
+                ("iso_dynamic_factor", written(&self.iso_dynamic_factor)),
+                (
+                    "transverse_load_factor",
+                    written(&self.transverse_load_factor),
+                ),
+                ("face_load_factor", written(&self.face_load_factor)),
+                ("sigma_hlim", stress(&self.sigma_hlim)),
+                ("sigma_flim", stress(&self.sigma_flim)),
             ];
             if let Some((field, Some(value))) = given.into_iter().find(|(_, v)| v.is_some()) {
                 return Err(invalid(
@@ -255,6 +292,15 @@ impl GearTable {
         if let Some(k) = &self.application_factor {
             g.application_factor = k.si;
         }
+        let stress =
+            |p: &Option<PerGear<Positive<Pressure>>>| p.as_ref().map(|p| [p.0[0].si, p.0[1].si]);
+        g.iso_overrides = IsoOverrides {
+            dynamic_factor: self.iso_dynamic_factor.as_ref().map(|k| k.si),
+            transverse_load_factor: self.transverse_load_factor.as_ref().map(|k| k.si),
+            face_load_factor: self.face_load_factor.as_ref().map(|k| k.si),
+            sigma_hlim: stress(&self.sigma_hlim),
+            sigma_flim: stress(&self.sigma_flim),
+        };
         if let Some(q) = self.iso_quality {
             g.iso_quality = match q {
                 IsoQualityWord::Ml => IsoQuality::Ml,

@@ -98,6 +98,8 @@ ranges! {
     AccuracyGrade("GearAccuracyGrade"): 1.0, 12.0, => "must be an ISO 1328-1 accuracy grade from 1 to 12 (the gear file's range; ISO 6336-1 method B's K_v and K_Hα read the deviations of the grade)";
     /// An ISO 6336-1 application factor K_A.
     ApplicationFactor("GearApplicationFactor"): 1.0, 4.0, => "must be from 1 to 4: ISO 6336-1:2019 Annex B Table B.1 runs from 1.00 (uniform driver and driven machine) to 2.25 (heavy shocks on both), and 4 is well beyond it";
+    /// An ISO 6336-1 load factor K_v, K_Hα or K_Hβ given in place of its computed value.
+    IsoLoadFactor("GearIsoLoadFactor"): 1.0, 4.0, => "must be from 1 to 4: ISO 6336-1's K_v, K_Hα and K_Hβ multiply the nominal load and are at least 1 (K_v of a gear run near its resonance, K_Hβ of a load on one end of the face, stay well below 4; ISO 6336-1:2019 §§6-8)";
     /// An AGMA bending geometry factor.
     GeometryFactorJ("GearGeometryFactorJ"): 0.0, 1.0, MIN_OPEN MAX_OPEN => "bending geometry factors J must be between 0 and 1";
 }

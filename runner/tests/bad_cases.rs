@@ -630,7 +630,8 @@ fn what_the_run_would_refuse_is_refused_on_reading() {
 
 /// Bad ISO 6336 inputs of `[gear]` are refused on reading (so `cardan check` refuses them as the
 /// run would), naming the field, the value as written, the rule and the fix: an ISO rating
-/// without its accuracy grade, values out of range, an ISO field no rating reads, and a
+/// without its accuracy grade, values out of range, an ISO field no rating reads (an
+/// accuracy grade whose K_v and K_Hα are both given, an override without an ISO rating), and a
 /// hardness ISO 6336-5's through-hardened line does not cover (its 190-342 HB, narrower than
 /// AGMA's 140-400).
 #[test]
@@ -673,6 +674,33 @@ fn bad_iso_gear_inputs_name_the_gear_field() {
         (
             "standard = \"iso\"",
             &["gear.standard", "unknown word \"iso\""],
+        ),
+        (
+            "standard = \"both\"\naccuracy_grade = 7\niso_dynamic_factor = 0.9",
+            &["gear.iso_dynamic_factor = 0.9", "from 1 to 4", "at least 1"],
+        ),
+        (
+            "standard = \"both\"\naccuracy_grade = 7\niso_dynamic_factor = 1.1\ntransverse_load_factor = 1.05",
+            &[
+                "gear.accuracy_grade = 7",
+                "read by nothing",
+                "iso_dynamic_factor and transverse_load_factor",
+            ],
+        ),
+        (
+            "face_load_factor = 1.3",
+            &[
+                "gear.face_load_factor = 1.3",
+                "read only by an ISO 6336 rating",
+            ],
+        ),
+        (
+            "sigma_hlim = \"1200 MPa\"",
+            &["gear.sigma_hlim", "1200 MPa", "read only by an ISO 6336 rating"],
+        ),
+        (
+            "standard = \"both\"\naccuracy_grade = 7\nsigma_flim = [\"400 MPa\", \"-3 MPa\"]",
+            &["gear.sigma_flim", "-3 MPa"],
         ),
         (
             "standard = \"both\"\naccuracy_grade = 7\nhardness = [300, 150]",

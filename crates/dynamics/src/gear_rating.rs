@@ -398,27 +398,36 @@ pub const ISO_PINION_CYCLES: f64 = 1e7;
 /// gear file's default: ISO 6336-1 methods B and C need shaft and bearing data); `Z_E` the
 /// AGMA rating's elastic coefficient (the same expression); `K_v` and `K_Hα` by method B
 /// from `spec.accuracy_grade` (steel blanks, 7830 kg/m³); `Z_L Z_v Z_R` = 1, `Y_B` = `Y_δrelT`
-/// = `Y_RrelT` = 1; [`ISO_PINION_CYCLES`].
+/// = `Y_RrelT` = 1; [`ISO_PINION_CYCLES`]. Each of `K_v`, `K_Hα`, `K_Hβ`, `σ_Hlim`, `σ_Flim`
+/// given in `spec.iso_overrides` replaces its computed value (ISO 6336-1:2019 §4.1.6: a
+/// factor established by method A or from experience takes precedence); with `K_v` and `K_Hα`
+/// both given no accuracy grade is needed.
 fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError> {
     let pair = &set.pair;
-    let Some(grade) = spec.accuracy_grade else {
+    let given = spec.iso_overrides;
+    let grade = spec.accuracy_grade;
+    if grade.is_none() && (given.dynamic_factor.is_none() || given.transverse_load_factor.is_none())
+    {
         return Err(failed(
             "gear.accuracy_grade",
             &"an ISO 6336 rating needs the ISO 1328-1 accuracy grade of both gears (1-12) for \
               K_v and K_Hα by ISO 6336-1 method B: give [gear] accuracy_grade",
         ));
-    };
+    }
     let table = match spec.material {
         GearMaterial::ThroughHardened => "steel-through-hardened",
         GearMaterial::Carburized => "steel-case-carburized",
     };
     let table = material(table).expect("the materials table has both steels");
-    let km = set
-        .rating
-        .load_distribution
-        .factor(set.face_width, pair.pinion.working)
-        .map_err(|e| failed("gear.face_width", &e))?
-        .km;
+    let km = match given.face_load_factor {
+        Some(k) => k,
+        None => {
+            (set.rating.load_distribution)
+                .factor(set.face_width, pair.pinion.working)
+                .map_err(|e| failed("gear.face_width", &e))?
+                .km
+        }
+    };
     let cycles = [ISO_PINION_CYCLES, ISO_PINION_CYCLES / pair.ratio];
     let member = |k: usize| -> Result<IsoMember, SetupError> {
         let (which, name) = [(Which::Pinion, "pinion"), (Which::Gear, "gear")][k];
@@ -440,8 +449,8 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
             )
         })?;
         Ok(IsoMember {
-            sigma_hlim: limits.contact,
-            sigma_flim: limits.bending,
+            sigma_hlim: given.sigma_hlim.map_or(limits.contact, |s| s[k]),
+            sigma_flim: given.sigma_flim.map_or(limits.bending, |s| s[k]),
             life_curve: table.life_curve(),
             form_factor: root.form_factor,
             stress_correction_factor: root.stress_correction,
@@ -457,12 +466,15 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
         pinion_speed: 1.0,
         face_width: set.face_width,
         application_factor: spec.application_factor,
-        dynamic: IsoDynamic::MethodB {
-            density: STEEL_DENSITY,
+        dynamic: match given.dynamic_factor {
+            Some(k) => IsoDynamic::Given(k),
+            None => IsoDynamic::MethodB {
+                density: STEEL_DENSITY,
+            },
         },
-        accuracy_grade: Some(grade),
+        accuracy_grade: grade,
         face_load_factor: km,
-        transverse_load_factor: None,
+        transverse_load_factor: given.transverse_load_factor,
         elasticity_factor: set.rating.elastic_coefficient,
         lubrication: None,
         members: [member(0)?, member(1)?],

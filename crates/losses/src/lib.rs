@@ -27,5 +27,5 @@ pub use loss::{Loss, LossInput, Oil, Parameters, Site};
 pub use loss_models::{Attachment, Bind, LossModel, LOSS_MODELS};
 pub use losses::{BearingSize, Friction, LossBudget};
 pub use machine_kind::MachineKind;
-pub use mesh::{radial, tangential, GearMaterial, GearSpec, ToothLoad};
+pub use mesh::{radial, tangential, GearMaterial, GearSpec, IsoOverrides, ToothLoad};
 pub use setup_error::SetupError;

@@ -128,6 +128,28 @@ pub struct GearSpec {
     /// ISO 6336-5 material quality of both gears, for `σ_Hlim` and `σ_Flim` (default MQ,
     /// ISO 6336-5:2016 §5.2's usual industrial quality, the gear file's default).
     pub iso_quality: IsoQuality,
+    /// Factors and limits of the ISO rating a user knows better than its defaults (the gear
+    /// file's fields of the same names).
+    pub iso_overrides: IsoOverrides,
+}
+
+/// What replaces an ISO 6336 rating's own factors and limits where given (`None`: computed, as
+/// `cardan_dynamics::gear_rating` says): ISO 6336-1's method A, a measured or otherwise
+/// established value, takes precedence over method B (ISO 6336-1:2019 §4.1.6).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct IsoOverrides {
+    /// Dynamic factor `K_v` (ISO 6336-1 §6), ≥ 1; else method B from the accuracy grade.
+    pub dynamic_factor: Option<f64>,
+    /// Transverse load factor `K_Hα` (= `K_Fα`, ISO 6336-1 §8), ≥ 1; else method B.
+    pub transverse_load_factor: Option<f64>,
+    /// Face load factor `K_Hβ` (ISO 6336-1 §7), ≥ 1; else the AGMA rating's `K_m` for the face
+    /// width; `K_Fβ` follows from it (ISO 6336-1 §7.6).
+    pub face_load_factor: Option<f64>,
+    /// Allowable contact stress numbers `σ_Hlim` [pinion, gear], Pa; else ISO 6336-5 for the
+    /// material, hardness and quality.
+    pub sigma_hlim: Option<[f64; 2]>,
+    /// Nominal bending stress numbers `σ_Flim` [pinion, gear], Pa; else ISO 6336-5.
+    pub sigma_flim: Option<[f64; 2]>,
 }
 
 impl Default for GearSpec {
@@ -149,6 +171,7 @@ impl Default for GearSpec {
             accuracy_grade: None,
             application_factor: 1.0,
             iso_quality: IsoQuality::Mq,
+            iso_overrides: IsoOverrides::default(),
         }
     }
 }
