@@ -183,10 +183,13 @@ impl RunUp {
 mod tests {
     use super::*;
 
+    /// (time, speed) points.
+    type Points = Vec<(f64, f64)>;
+
     /// A run-up of `cycles` cycles of `steps` steps: time t = cycle + k/steps, speed rising
     /// with a ripple of two periods a cycle (its extremes at 1/8 + j/4 of a cycle). Returns the
     /// run-up, the cycles' starts and the largest speed of the rows before the last cycle.
-    fn run(cycles: usize, steps: usize) -> (Vec<(f64, f64)>, Vec<(f64, f64)>, f64) {
+    fn run(cycles: usize, steps: usize) -> (Points, Points, f64) {
         let speed = |t: f64| t + 0.3 * (4.0 * std::f64::consts::PI * t).sin();
         let mut r = RunUp::new(steps);
         let (mut starts, mut top) = (Vec::new(), f64::MIN);
