@@ -8,9 +8,11 @@
 //! A dynamic run that solved cycles before the reported one (a run-up from rest or from any
 //! start speed: `summary.json`'s `cycle_starts` lists more than one) also has its crank speed
 //! over time (`crank_speed_time.svg`), from the run's start to the reported cycle's end: per
-//! mechanism the speed at the start of every cycle (the same crank angle, `start_angle`: the
-//! run-up without its fluctuation within the cycles, which the run does not keep), and every
-//! row of the reported cycle over `time_s`; the same band marked.
+//! mechanism the run-up through every cycle before the reported one (`summary.json`'s `runup`:
+//! each cycle's start and its steps' extremes, thinned by the run), the speed at the start of
+//! every cycle (markers; the same crank angle, `start_angle`), and every row of the reported
+//! cycle over `time_s`; the same band marked. Both charts are made by one builder
+//! ([`speed_chart`]), apart only in their x column.
 
 use crate::chart_columns::locus_key;
 use crate::data::{CaseSummary, MechanismSummary};
@@ -26,6 +28,76 @@ pub(super) fn crank_speed_charts(
     s: &CaseSummary,
     data: &[Option<ChartData>],
 ) -> Vec<(String, String, String)> {
+    speed_chart(s, data, Over::Angle)
+}
+
+/// The crank speed over time of the case's run-up: none unless a dynamic run solved cycles
+/// before the reported one. Per mechanism three series, each its own dash: the run-up
+/// (`summary.json:runup`, where the summary has it), the speed at the start of every cycle
+/// (markers; `summary.json:cycle_starts`), and the reported cycle's rows over `time_s`, which
+/// start where the run-up ends, at the last cycle start.
+pub(super) fn crank_speed_time_charts(
+    s: &CaseSummary,
+    data: &[Option<ChartData>],
+) -> Vec<(String, String, String)> {
+    speed_chart(s, data, Over::Time)
+}
+
+/// The x column of a crank-speed chart.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Over {
+    /// The crank angle (`crank_speed.svg`): the reported cycle.
+    Angle,
+    /// `time_s` (`crank_speed_time.svg`): the run from its start.
+    Time,
+}
+
+impl Over {
+    /// The chart's trace of the crank speed over this x.
+    fn trace(self) -> String {
+        match self {
+            Over::Angle => "crank_speed_rad_s".into(),
+            Over::Time => locus_key("time_s", "crank_speed_rad_s"),
+        }
+    }
+
+    /// `data-x-column` of its series (the crank angle is every chart's default).
+    fn x_column(self) -> Option<String> {
+        (self == Over::Time).then(|| "time_s".into())
+    }
+}
+
+/// A series of mechanism `m` (colour `k`) from `summary.json`'s `field`, (time s, speed
+/// rad/s) pairs drawn in rpm over time.
+fn summary_series(
+    m: &MechanismSummary,
+    field: &str,
+    label: &str,
+    points: &[(f64, f64)],
+    k: usize,
+    dash: usize,
+    markers: bool,
+) -> Series {
+    let (x, y): (Vec<f64>, Vec<f64>) = points.iter().copied().unzip();
+    Series {
+        label: format!("{}: {label}", m.name),
+        source: format!("summary.json:{}:{field}", m.name),
+        x,
+        y: y.iter().map(|v| v * RPM_PER_RAD_S).collect(),
+        colour: k,
+        dash,
+        markers,
+        x_column: Over::Time.x_column(),
+    }
+}
+
+/// The crank-speed chart over `over`: per dynamic mechanism the reported cycle's rows with its
+/// fluctuation band, over time with the run before them (a run-up: more than one cycle start).
+fn speed_chart(
+    s: &CaseSummary,
+    data: &[Option<ChartData>],
+    over: Over,
+) -> Vec<(String, String, String)> {
     let mut series = Vec::new();
     let mut bands = Vec::new();
     for (k, m) in s.mechanisms.iter().enumerate() {
@@ -35,51 +107,95 @@ pub(super) fn crank_speed_charts(
         else {
             continue;
         };
-        let Some(t) = d.traces.get("crank_speed_rad_s") else {
+        let Some(t) = d.traces.get(&over.trace()) else {
             continue;
         };
         if !t.y.iter().any(|v| v.is_finite()) {
             continue;
         }
+        let label = match over {
+            Over::Angle => format!("{} ({})", m.name, mean_and_delta(m, mean)),
+            Over::Time if m.cycle_starts.len() < 2 => continue,
+            Over::Time => {
+                if m.runup.len() > 1 {
+                    let run = "run-up, each cycle's start and extremes";
+                    series.push(summary_series(
+                        m,
+                        "runup",
+                        run,
+                        &m.runup,
+                        k,
+                        series.len(),
+                        false,
+                    ));
+                }
+                let starts = "speed at each cycle's start";
+                let n = series.len();
+                series.push(summary_series(
+                    m,
+                    "cycle_starts",
+                    starts,
+                    &m.cycle_starts,
+                    k,
+                    n,
+                    true,
+                ));
+                format!("{}: reported cycle ({})", m.name, mean_and_delta(m, mean))
+            }
+        };
         let dash = series.len();
         series.push(Series {
-            label: format!("{} ({})", m.name, mean_and_delta(m, mean)),
+            label,
             source: format!("{}:crank_speed_rad_s", d.file),
             x: t.x.clone(),
             y: t.y.iter().map(|v| v * RPM_PER_RAD_S).collect(),
             colour: k,
             dash,
             markers: false,
-            x_column: None,
+            x_column: over.x_column(),
         });
         bands.push(band(m, [lo, hi], k, dash));
     }
     if series.is_empty() {
         return Vec::new();
     }
-    let title = match s.one_cylinder() {
-        Some(_) => "Crank speed over the reported cycle (the whole machine)",
-        None => "Crank speed over the reported cycle",
+    let whole = s.one_cylinder().is_some();
+    let (title, x_label, file, caption) = match over {
+        Over::Angle => (
+            "Crank speed over the reported cycle",
+            "crank angle θ, °",
+            "crank_speed.svg",
+            "Crank speed of the reported cycle over crank angle, every mechanism; the shaded \
+             band of each runs from its speed_min to its speed_max (the cycle's extremes, \
+             between the rows too), δ = (speed_max − speed_min)/speed_mean",
+        ),
+        Over::Time => (
+            "Crank speed over time, from the run's start",
+            "time t, s",
+            "crank_speed_time.svg",
+            "Crank speed over time from the run's start (its cycles before the reported one, a \
+             run-up), every mechanism: the run-up (each cycle's start and the extremes of its \
+             steps, thinned), the speed at the start of each cycle (markers, the same crank \
+             angle), then every row of the reported cycle; the shaded band of each runs from \
+             its speed_min to its speed_max over the reported cycle",
+        ),
     };
     let chart = LineChart {
-        title: title.into(),
-        x_label: "crank angle θ, °".into(),
+        title: if whole {
+            format!("{title} (the whole machine)")
+        } else {
+            title.into()
+        },
+        x_label: x_label.into(),
         y_label: "crank speed".into(),
         y_unit: "rpm".into(),
         series,
-        angle_axis: true,
+        angle_axis: over == Over::Angle,
         factors: Some((1.0, RPM_PER_RAD_S)),
         bands,
         ..LineChart::default()
     };
-    vec![(
-        "crank_speed.svg".into(),
-        svg::line_chart(&chart),
-        "Crank speed of the reported cycle over crank angle, every mechanism; the shaded band \
-         of each runs from its speed_min to its speed_max (the cycle's extremes, between the \
-         rows too), δ = (speed_max − speed_min)/speed_mean"
-            .into(),
-    )]
+    vec![(file.into(), svg::line_chart(&chart), caption.into())]
 }
 
 /// "mean 900.0 rpm, δ = 2.345 %": the reported cycle's mean speed and its coefficient of
@@ -102,79 +218,4 @@ fn band(m: &MechanismSummary, [lo, hi]: [f64; 2], k: usize, dash: usize) -> Band
         dash,
         label: format!("{}: speed_min to speed_max", m.name),
     }
-}
-
-/// The crank speed over time of the case's run-up: none unless a dynamic run solved cycles
-/// before the reported one. Per mechanism two series, each its own dash: the speed at the
-/// start of every cycle (markers; `summary.json:cycle_starts`), and the reported cycle's rows
-/// over `time_s`, which start where the last cycle start is.
-pub(super) fn crank_speed_time_charts(
-    s: &CaseSummary,
-    data: &[Option<ChartData>],
-) -> Vec<(String, String, String)> {
-    let mut series = Vec::new();
-    let mut bands = Vec::new();
-    for (k, m) in s.mechanisms.iter().enumerate() {
-        let Some(d) = &data[k] else { continue };
-        let (Some(lo), Some(hi), Some(mean)) =
-            (m.get("speed_min"), m.get("speed_max"), m.get("speed_mean"))
-        else {
-            continue;
-        };
-        let Some(t) = d.traces.get(&locus_key("time_s", "crank_speed_rad_s")) else {
-            continue;
-        };
-        if m.cycle_starts.len() < 2 || !t.y.iter().any(|v| v.is_finite()) {
-            continue;
-        }
-        let (x, y): (Vec<f64>, Vec<f64>) = m.cycle_starts.iter().copied().unzip();
-        series.push(Series {
-            label: format!("{}: speed at each cycle's start", m.name),
-            source: format!("summary.json:{}:cycle_starts", m.name),
-            x,
-            y: y.iter().map(|v| v * RPM_PER_RAD_S).collect(),
-            colour: k,
-            dash: series.len(),
-            markers: true,
-            x_column: Some("time_s".into()),
-        });
-        let dash = series.len();
-        series.push(Series {
-            label: format!("{}: reported cycle ({})", m.name, mean_and_delta(m, mean)),
-            source: format!("{}:crank_speed_rad_s", d.file),
-            x: t.x.clone(),
-            y: t.y.iter().map(|v| v * RPM_PER_RAD_S).collect(),
-            colour: k,
-            dash,
-            markers: false,
-            x_column: Some("time_s".into()),
-        });
-        bands.push(band(m, [lo, hi], k, dash));
-    }
-    if series.is_empty() {
-        return Vec::new();
-    }
-    let title = match s.one_cylinder() {
-        Some(_) => "Crank speed over time, from the run's start (the whole machine)",
-        None => "Crank speed over time, from the run's start",
-    };
-    let chart = LineChart {
-        title: title.into(),
-        x_label: "time t, s".into(),
-        y_label: "crank speed".into(),
-        y_unit: "rpm".into(),
-        series,
-        factors: Some((1.0, RPM_PER_RAD_S)),
-        bands,
-        ..LineChart::default()
-    };
-    vec![(
-        "crank_speed_time.svg".into(),
-        svg::line_chart(&chart),
-        "Crank speed over time from the run's start (its cycles before the reported one, a \
-         run-up), every mechanism: the speed at the start of each cycle (the same crank angle), \
-         then every row of the reported cycle; the shaded band of each runs from its speed_min \
-         to its speed_max over the reported cycle"
-            .into(),
-    )]
 }

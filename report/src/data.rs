@@ -20,6 +20,9 @@ pub struct MechanismSummary {
     /// A solved motion's (time s, crank speed rad/s) at the start of every cycle it ran, the
     /// reported one's last (`summary.json`'s `cycle_starts`); empty without.
     pub cycle_starts: Vec<(f64, f64)>,
+    /// A solved motion's (time s, crank speed rad/s) through its cycles before the reported
+    /// one, thinned, to the reported cycle's start (`summary.json`'s `runup`); empty without.
+    pub runup: Vec<(f64, f64)>,
 }
 
 /// The gas chamber of a crank train (`summary.json`'s `chamber`): V = V_comp + A·(x_TDC − x),
@@ -56,9 +59,9 @@ impl Chamber {
     }
 }
 
-/// `summary.json`'s `cycle_starts` (`time_s` and `crank_speed_rad_s`, of one length) as
-/// (time, speed) pairs; empty where the two lists are not numbers of one length.
-fn cycle_starts(v: &Value) -> Vec<(f64, f64)> {
+/// `summary.json`'s `cycle_starts` or `runup` (`time_s` and `crank_speed_rad_s`, of one
+/// length) as (time, speed) pairs; empty where the two lists are not numbers of one length.
+fn speed_over_time(v: &Value) -> Vec<(f64, f64)> {
     let list =
         |k: &str| -> Option<Vec<f64>> { v.get(k)?.as_array()?.iter().map(Value::as_f64).collect() };
     match (list("time_s"), list("crank_speed_rad_s")) {
@@ -213,7 +216,8 @@ pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(Cas
                 units,
                 joints,
                 chamber: m.get("chamber").and_then(Chamber::read),
-                cycle_starts: m.get("cycle_starts").map_or_else(Vec::new, cycle_starts),
+                cycle_starts: m.get("cycle_starts").map_or_else(Vec::new, speed_over_time),
+                runup: m.get("runup").map_or_else(Vec::new, speed_over_time),
             }
         })
         .collect();

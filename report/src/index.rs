@@ -302,6 +302,7 @@ mod tests {
             joints: Vec::new(),
             chamber: None,
             cycle_starts: Vec::new(),
+            runup: Vec::new(),
         }
     }
 

@@ -25,6 +25,12 @@ pub struct MechanismResult {
     /// reported one's last (`summary.json`'s `cycle_starts`: the run-up before the reported
     /// cycle, drawn by the report's `crank_speed_time.svg`); empty for a prescribed motion.
     pub cycle_starts: Vec<(f64, f64)>,
+    /// A solved motion's (time s, crank speed rad/s) through every cycle before the reported
+    /// one, each cycle's start and its steps' extremes, thinned to at most
+    /// [`cardan_dynamics::runup::MAX_RUNUP_POINTS`] (`summary.json`'s `runup`, drawn by
+    /// `crank_speed_time.svg`), from the run's start to the reported cycle's; empty for a
+    /// prescribed motion.
+    pub runup: Vec<(f64, f64)>,
 }
 
 /// Version of the layout of `summary.json`; raised when a name or the shape changes.
@@ -149,6 +155,10 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
         if !r.cycle_starts.is_empty() {
             let (time, speed): (Vec<f64>, Vec<f64>) = r.cycle_starts.iter().copied().unzip();
             mechanism["cycle_starts"] = json!({"time_s": time, "crank_speed_rad_s": speed});
+        }
+        if !r.runup.is_empty() {
+            let (time, speed): (Vec<f64>, Vec<f64>) = r.runup.iter().copied().unzip();
+            mechanism["runup"] = json!({"time_s": time, "crank_speed_rad_s": speed});
         }
         mechanisms.insert(r.label.clone(), mechanism);
     }

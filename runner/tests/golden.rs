@@ -29,6 +29,39 @@ fn round(v: &mut Value) {
     }
 }
 
+/// A dynamic run's `runup` (up to `MAX_RUNUP_POINTS` points a mechanism, thinned by the run)
+/// as its digest, so that a snapshot stays reviewable: its number of points, its first and last
+/// (time s, speed rad/s) and its smallest and largest speed (the series itself is checked against
+/// the cycle starts, the CSV and its chart in report_charts.rs, its thinning in
+/// cardan-dynamics' runup.rs and machine_motion.rs).
+fn digest_runup(summary: &mut Value) {
+    let Some(mechanisms) = summary.get_mut("mechanisms").and_then(Value::as_object_mut) else {
+        return;
+    };
+    for m in mechanisms.values_mut() {
+        let Some(runup) = m.get("runup") else {
+            continue;
+        };
+        let list = |k: &str| -> Vec<f64> {
+            runup[k]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .collect()
+        };
+        let (t, w) = (list("time_s"), list("crank_speed_rad_s"));
+        let n = t.len();
+        m["runup"] = serde_json::json!({
+            "points": n,
+            "first": [t[0], w[0]],
+            "last": [t[n - 1], w[n - 1]],
+            "crank_speed_min_rad_s": w.iter().copied().fold(f64::MAX, f64::min),
+            "crank_speed_max_rad_s": w.iter().copied().fold(f64::MIN, f64::max),
+        });
+    }
+}
+
 /// Runs the shipped case `configs/<stem>.toml` and compares its rounded summary with
 /// `golden/<stem>.snap`.
 fn check(stem: &str) {
@@ -77,6 +110,7 @@ fn optimization_summary(o: &Optimization) -> Value {
 
 /// Compares `summary`, rounded, with `golden/<stem>.snap`.
 fn snapshot(root: &Path, stem: &str, mut summary: Value) {
+    digest_runup(&mut summary);
     round(&mut summary);
     insta::with_settings!({ snapshot_path => root.join("golden"), prepend_module_to_snapshot => false, omit_expression => true }, {
         insta::assert_json_snapshot!(stem, summary);

@@ -6,6 +6,7 @@
 //! `main_bearing_polar_crank.svg`, `crank_pin_polar.svg`); and every chart's lines told apart by
 //! their dash. Shipped configs of each kind, run in-process with their reports.
 
+use cardan_dynamics::runup::MAX_RUNUP_POINTS;
 use cardan_report::MAX_POINTS;
 use cardan_runner::{run_paths, RunOptions};
 use cardan_testing::chart::{attr_f64, points, Axes};
@@ -294,10 +295,13 @@ fn the_crank_speed_of_a_dynamic_run_is_drawn_with_its_band() {
 
 /// A dynamic run that solved cycles before the reported one (`summary.json`'s `cycle_starts`
 /// lists more than one; the motor-driven pump's run-up from rest above all) has its crank speed
-/// over time (`crank_speed_time.svg`): per mechanism the speed at each cycle's start and the
-/// reported cycle's CSV rows over `time_s`, in rpm; its time axis spans the run, from its start
-/// (t = 0, the case file's initial speed) to the reported cycle's last row; a run without
-/// earlier cycles has none.
+/// over time (`crank_speed_time.svg`): per mechanism the run-up (`summary.json`'s `runup`), the
+/// speed at each cycle's start and the reported cycle's CSV rows over `time_s`, in rpm; its time
+/// axis spans the run, from its start (t = 0, the case file's initial speed) to the reported
+/// cycle's last row; a run without earlier cycles has none. The run-up is in time order from
+/// the run's start to the reported cycle's first CSV row, holds every cycle start, and is
+/// bounded: at most `MAX_RUNUP_POINTS` (the pump's 104 cycles of 720 steps, 75 000 steps, were
+/// thinned to fit) and 65 points a cycle.
 #[test]
 fn the_crank_speed_of_a_run_up_is_drawn_over_time() {
     let mut drawn = Vec::new();
@@ -332,7 +336,7 @@ fn the_crank_speed_of_a_run_up_is_drawn_over_time() {
         assert_eq!(fx, 1.0, "{case}: seconds");
         assert!((fy - 60.0 / (2.0 * PI)).abs() < 1e-15, "{case}: rpm");
         let nodes = series(&doc);
-        assert_eq!(nodes.len(), 2 * runs.len(), "{case}");
+        assert_eq!(nodes.len(), 3 * runs.len(), "{case}");
         let mut end = 0.0f64;
         for (m, times, speeds, mean) in &runs {
             let label = format!("{case} {m}");
@@ -386,6 +390,35 @@ fn the_crank_speed_of_a_run_up_is_drawn_over_time() {
                 .collect();
             let node = find(&format!("summary.json:{m}:cycle_starts"));
             check_path(&label, node, &starts, &|v| axes.px(v), &|v| axes.py(v));
+            let runup = runup_of(&s["mechanisms"][m], &label);
+            assert_eq!(
+                runup[0],
+                (times[0], speeds[0]),
+                "{label}: from the run's start"
+            );
+            assert!(
+                (runup[runup.len() - 1].0 - t[0]).abs() <= 1e-9 * t[0]
+                    && (runup[runup.len() - 1].1 - w[0]).abs() <= 1e-9 * w[0],
+                "{label}: to the reported cycle's first row"
+            );
+            assert!(
+                runup.windows(2).all(|p| p[0].0 < p[1].0),
+                "{label}: in time order"
+            );
+            for (time, speed) in times.iter().zip(speeds) {
+                assert!(
+                    runup.contains(&(*time, *speed)),
+                    "{label}: the cycle start at {time} s"
+                );
+            }
+            assert!(
+                runup.len() <= MAX_RUNUP_POINTS && runup.len() <= 65 * (n - 1) + 1,
+                "{label}: {} points for {n} cycles",
+                runup.len()
+            );
+            let points: Vec<(f64, f64)> = runup.iter().map(|(a, b)| (*a, b * fy)).collect();
+            let node = find(&format!("summary.json:{m}:runup"));
+            check_path(&label, node, &points, &|v| axes.px(v), &|v| axes.py(v));
             let rows: Vec<(f64, f64)> = t.iter().zip(w).map(|(a, b)| (*a, b * fy)).collect();
             let node = find(&format!("{m}.csv:crank_speed_rad_s"));
             check_path(&label, node, &rows, &|v| axes.px(v), &|v| axes.py(v));
@@ -408,6 +441,18 @@ fn the_crank_speed_of_a_run_up_is_drawn_over_time() {
             == 2,
         "the run-up's two mechanisms: {drawn:?}"
     );
+}
+
+/// `summary.json`'s `runup` of a mechanism as (time s, speed rad/s): two lists of one length.
+fn runup_of(mechanism: &serde_json::Value, label: &str) -> Vec<(f64, f64)> {
+    let list = |k: &str| -> Vec<f64> {
+        let a = mechanism["runup"][k].as_array();
+        let a = a.unwrap_or_else(|| panic!("{label}: no runup.{k}"));
+        a.iter().map(|x| x.as_f64().unwrap()).collect()
+    };
+    let (time, speed) = (list("time_s"), list("crank_speed_rad_s"));
+    assert_eq!(time.len(), speed.len(), "{label}");
+    time.into_iter().zip(speed).collect()
 }
 
 /// The bearing loads of the `prefix` (`main_bearing_` or `cylinder_`) in a CSV header: the

@@ -25,6 +25,7 @@ pub mod machine_friction;
 pub mod machine_motion;
 pub mod machine_stage;
 pub mod machine_totals;
+pub mod runup;
 /// The loads (families, the planar solve, energy, the reduced inertia), their own crate:
 /// re-exported, so that their paths here stay as they were.
 pub use cardan_loads::{energy, family, planar, reduced_inertia};

@@ -28,6 +28,7 @@
 
 use crate::machine_friction::{FrictionAt, MotionFriction};
 use crate::reduced_inertia::ReducedInertiaOf;
+use crate::runup::RunUp;
 use crate::stage::GasAt;
 use cardan_balance::Phase;
 use cardan_mechanism::{CrankState, Mechanism, MotionError, MotionSource};
@@ -295,6 +296,10 @@ pub struct Cycles {
     pub start: Point,
     /// (time, speed) at the start of every cycle run, the reported one's last.
     pub starts: Vec<(f64, f64)>,
+    /// (time s, speed rad/s) through every cycle before the reported one, thinned in bounded
+    /// memory ([`RunUp`]: each cycle's start and its buckets' extremes, at most
+    /// [`crate::runup::MAX_RUNUP_POINTS`]), ending at the reported cycle's start.
+    pub runup: Vec<(f64, f64)>,
     /// The reported cycle's smallest and largest speed, rad/s (between the rows too:
     /// [`hermite_extremes`] of e = ½·ω² on each step), and its duration, s.
     pub speed_min: f64,
@@ -417,16 +422,19 @@ pub fn first_point(f: &mut Acceleration, run: &SolvedRun) -> Result<Point, Solve
 }
 
 /// Integrates the cycles of `run` before the reported one, and the reported one for its
-/// extremes (no state is kept: memory does not grow with the steps).
+/// extremes (no state is kept but the thinned run-up, [`RunUp`]: memory does not grow with
+/// the steps).
 pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles, SolveError> {
     let mut f = Acceleration::new(torques);
     let h = (run.end - run.start) / run.steps as f64;
     let span = run.end - run.start;
     let mut p = first_point(&mut f, run)?;
     let mut starts = Vec::new();
+    let mut runup = RunUp::new(run.steps);
     let mut cycle = 0;
     loop {
         starts.push((p.time, p.speed));
+        runup.start(p.time, p.speed);
         let begin = p;
         let (mut lo, mut hi) = (p.speed, p.speed);
         let (mut jlo, mut jhi) = (p.inertia, p.inertia);
@@ -439,6 +447,9 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
             (jlo, jhi) = (jlo.min(q.inertia), jhi.max(q.inertia));
             let (klo, khi) = energy_between(&p, &q, h);
             (elo, ehi) = (elo.min(klo), ehi.max(khi));
+            if k + 1 < run.steps {
+                runup.row(k + 1, q.time, q.speed);
+            }
             p = q;
         }
         // The next cycle starts exactly a span on, as the grid's last point is `end`.
@@ -451,6 +462,7 @@ pub fn solve_cycles(torques: &MachineTorques, run: &SolvedRun) -> Result<Cycles,
             return Ok(Cycles {
                 start: begin,
                 starts,
+                runup: runup.finish(),
                 speed_min: lo,
                 speed_max: hi,
                 duration: p.time - begin.time,

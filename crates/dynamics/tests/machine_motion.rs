@@ -415,6 +415,70 @@ fn a_machine_that_stops_fails_with_its_step_and_angle() {
     );
 }
 
+/// The run-up a solved run keeps (`Cycles::runup`, issue 38): from the run's start (t = 0, the
+/// start speed) to the reported cycle's start, in time order, every point a row of its cycle
+/// (each cycle's rows made apart as the reported cycle of a run of that many cycles), each
+/// cycle's start and its smallest and largest row speed among them; bounded by
+/// `MAX_RUNUP_POINTS` however many cycles and steps (a long run-up of 3000 cycles).
+#[test]
+fn the_run_up_is_kept_thinned_from_the_start_to_the_reported_cycle() {
+    use cardan_dynamics::runup::MAX_RUNUP_POINTS;
+    let m = thesis("slider_crank", Material::Steel);
+    let motor = LoadTorque {
+        constant: 30.0,
+        per_speed: -0.2,
+        ..LoadTorque::default()
+    };
+    let t = MachineTorques {
+        mechanism: m.as_ref(),
+        cylinders: &[Phase::FIRST],
+        gas: None,
+        load: &motor,
+        flywheel: 0.01,
+        friction: None,
+    };
+    let c = solve_cycles(&t, &run(360, 40, 0.0)).unwrap();
+    let up = &c.runup;
+    assert_eq!(up[0], (0.0, 0.0), "from rest at t = 0");
+    assert_eq!(up.last(), c.starts.last(), "to the reported cycle's start");
+    assert!(up.windows(2).all(|w| w[0].0 < w[1].0), "in time order");
+    assert!(
+        up.len() <= MAX_RUNUP_POINTS && up.len() > 40 * 16,
+        "{}",
+        up.len()
+    );
+    for s in &c.starts {
+        assert!(up.contains(s), "the cycle start {s:?}");
+    }
+    for cycle in [0, 1, 7, 38] {
+        let rows: Vec<(f64, f64)> = states(&t, &run(360, cycle + 1, 0.0))
+            .iter()
+            .map(|s| (s.time, s.speed))
+            .collect();
+        let (from, to) = (c.starts[cycle].0, c.starts[cycle + 1].0);
+        let kept: Vec<&(f64, f64)> = up.iter().filter(|p| p.0 >= from && p.0 < to).collect();
+        for p in &kept {
+            assert!(rows.contains(p), "cycle {cycle}: {p:?} is no row");
+        }
+        let inner = &rows[..rows.len() - 1];
+        for extreme in [
+            inner.iter().map(|r| r.1).fold(f64::MAX, f64::min),
+            inner.iter().map(|r| r.1).fold(f64::MIN, f64::max),
+        ] {
+            assert!(
+                kept.iter().any(|p| p.1 == extreme),
+                "cycle {cycle}: its extreme {extreme} rad/s"
+            );
+        }
+    }
+    let long = solve_cycles(&t, &run(16, 3000, 0.0)).unwrap();
+    let up = &long.runup;
+    assert_eq!(long.starts.len(), 3000);
+    assert!(up.len() <= MAX_RUNUP_POINTS, "{}", up.len());
+    assert!(up.windows(2).all(|w| w[0].0 < w[1].0));
+    assert_eq!((up[0], up.last()), ((0.0, 0.0), long.starts.last()));
+}
+
 use cardan_dynamics::machine_friction::MotionFriction;
 use cardan_dynamics::{Friction, Gas, Inertial, LoadFamily, LossBudget, Solver};
 use cardan_mechanism::Mechanism;

@@ -62,7 +62,8 @@ pub(crate) struct TrainRows {
 /// the reported one (and the flywheel, if sized) solved first (`dynamic.rs`), then the
 /// reported cycle stepped one state at a time into `sinks`; the friction torque of the
 /// `setup`'s loss budget (with `[friction]`) among the motion's torques; returns the motion's
-/// metrics and its cycles' starts ([`MechanismResult::cycle_starts`]).
+/// metrics, its cycles' starts and its run-up ([`MechanismResult::cycle_starts`],
+/// [`MechanismResult::runup`]).
 #[allow(clippy::too_many_arguments)]
 fn run_solved(
     case: &Case,
@@ -72,7 +73,7 @@ fn run_solved(
     gas: Option<GasAt>,
     stages: &mut [Box<dyn Stage>],
     mut sinks: Vec<&mut dyn Sink>,
-) -> Result<(Metrics, CycleStarts), String> {
+) -> Result<(Metrics, RunUp), String> {
     // The solved motion: its states depend on the run's torques, so one thread takes them one
     // at a time.
     let d: &Dynamics = case.dynamics.as_ref().ok_or("not a solved motion")?;
@@ -114,11 +115,21 @@ fn run_solved(
         &mut sinks,
     )
     .map_err(|e| e.to_string())?;
-    Ok((solved.metrics, solved.cycles.starts))
+    let runup = RunUp {
+        starts: solved.cycles.starts,
+        series: solved.cycles.runup,
+    };
+    Ok((solved.metrics, runup))
 }
 
-/// (time s, crank speed rad/s) at the start of every cycle a solved motion ran.
-type CycleStarts = Vec<(f64, f64)>;
+/// What a solved motion's cycles give the outputs (empty for a prescribed motion).
+#[derive(Default)]
+struct RunUp {
+    /// (time s, crank speed rad/s) at the start of every cycle it ran.
+    starts: Vec<(f64, f64)>,
+    /// (time s, crank speed rad/s) through the cycles before the reported one, thinned.
+    series: Vec<(f64, f64)>,
+}
 
 /// A solved motion's metrics, by name (SI).
 type Metrics = Vec<(&'static str, f64)>;
@@ -156,7 +167,7 @@ fn run_mechanism(
     shift: f64,
     label: &str,
     to: StepsTo,
-) -> Result<(Summary, Vec<String>, CycleStarts, TrainRows), String> {
+) -> Result<(Summary, Vec<String>, RunUp, TrainRows), String> {
     let own = TrainFamilies::of(case, setup);
     let families = own.list();
     let names: Vec<&'static str> = families.iter().map(|f| f.name()).collect();
@@ -204,7 +215,7 @@ fn run_mechanism(
     let check_sampling = per_rev < SAMPLING_CHECK_STEPS_PER_REV && case.dynamics.is_none();
     let mut shifted = Vec::new();
     let mut solved_metrics = Vec::new();
-    let mut cycle_starts = Vec::new();
+    let mut runup = RunUp::default();
     let mut steps = |gas: Option<GasAt>| {
         if case.dynamics.is_some() {
             let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0, &mut sinks.1 .1];
@@ -217,7 +228,7 @@ fn run_mechanism(
             if let Some(c) = columns.as_mut() {
                 list.push(c);
             }
-            (solved_metrics, cycle_starts) = run_solved(
+            (solved_metrics, runup) = run_solved(
                 case,
                 (mechanism, setup),
                 shift,
@@ -296,7 +307,7 @@ fn run_mechanism(
         charts,
         columns: columns.map(ColumnSink::finish),
     };
-    Ok((summary, warnings, cycle_starts, rows))
+    Ok((summary, warnings, runup, rows))
 }
 
 /// Runs `steps` with the case's gas, if any, as the chamber's pressure at the first train's
@@ -460,7 +471,7 @@ pub(crate) fn run_trains(
         .map(|(m, setup, shift, label)| {
             #[cfg(feature = "test-hooks")]
             test_hooks::panic_if_asked(case);
-            let (summary, warnings, cycle_starts, rows) =
+            let (summary, warnings, runup, rows) =
                 run_mechanism(case, m.as_ref(), setup, *shift, label, to).map_err(|e| {
                     format!(
                         "{}: case \"{}\": {label}: {e}",
@@ -473,7 +484,8 @@ pub(crate) fn run_trains(
                 label: label.clone(),
                 summary,
                 warnings,
-                cycle_starts,
+                cycle_starts: runup.starts,
+                runup: runup.series,
             };
             Ok((result, rows))
         })
