@@ -309,3 +309,20 @@ def test_a_panic_in_a_run_is_a_run_error_and_the_interpreter_goes_on():
     with pytest.raises(cardan.RunError):
         cardan.run(case)
     assert cardan.run(CASE, steps=False).summary_json["case"] == case_dict(CASE)["name"]
+
+
+def test_the_shipped_optimisation_is_the_command_lines(cli_out):
+    # configs/optimize-thesis-pump.toml through cardan.optimize: each mechanism's optimum is the
+    # command line's optimum.json, value for value (the same search from the same seed: the
+    # starts run in parallel but each is deterministic, docs/optimisation.md).
+    path = os.path.join(ROOT, "configs", "optimize-thesis-pump.toml")
+    optima, report = cardan.optimize(path)
+    folder = os.path.join(cli_out(path), "optimize-thesis-pump")
+    assert sorted(optima) == sorted(
+        d for d in os.listdir(folder) if os.path.isfile(os.path.join(folder, d, "optimum.json"))
+    )
+    for mechanism, got in optima.items():
+        with open(os.path.join(folder, mechanism, "optimum.json"), encoding="utf-8") as f:
+            want = json.load(f)
+        assert got == want, mechanism
+    assert "cardan_gear" in report and "slider_crank" in report
