@@ -395,16 +395,21 @@ fn a_table_sweep_sums_up_its_points_warnings_in_one_line() {
     let sweep = format!(
         "{coarse}\n[output]\ncase_folders = false\n[sweep]\n\"geometry.rod_length\" = {{ from = \"140 mm\", to = \"300 mm\", points = 12 }}\n"
     );
+    // The folder's cases run into `out`: their stderr, the run having succeeded.
+    let run_into = |out: &str| {
+        let run = cardan(&[
+            &"run",
+            &dir.path(),
+            &"--out",
+            &dir.path().join(out),
+            &"--quiet",
+        ]);
+        let stderr = String::from_utf8_lossy(&run.stderr).into_owned();
+        assert!(run.status.success(), "{stderr}");
+        stderr
+    };
     std::fs::write(dir.path().join("coarse.toml"), &sweep).unwrap();
-    let run = cardan(&[
-        &"run",
-        &dir.path(),
-        &"--out",
-        &dir.path().join("out"),
-        &"--quiet",
-    ]);
-    let stderr = String::from_utf8_lossy(&run.stderr);
-    assert!(run.status.success(), "{stderr}");
+    let stderr = run_into("out");
     let lines: Vec<&str> = stderr
         .lines()
         .filter(|l| l.contains("low from sampling"))
@@ -416,14 +421,6 @@ fn a_table_sweep_sums_up_its_points_warnings_in_one_line() {
         lines[0]
     );
     std::fs::write(dir.path().join("coarse.toml"), &coarse).unwrap();
-    let alone = cardan(&[
-        &"run",
-        &dir.path(),
-        &"--out",
-        &dir.path().join("out2"),
-        &"--quiet",
-    ]);
-    let stderr = String::from_utf8_lossy(&alone.stderr);
-    assert!(alone.status.success(), "{stderr}");
+    let stderr = run_into("out2");
     assert!(stderr.contains("low from sampling"), "{stderr}");
 }

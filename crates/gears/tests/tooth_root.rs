@@ -27,6 +27,29 @@ fn table_pair(zp: i32, zg: i32, x: f64) -> Option<GearPair> {
     GearPair::new(s).ok()
 }
 
+/// The AGMA full-depth 20° generating racks the chart and table readings are checked over:
+/// (dedendum, tool tip radius, thinning), each in modules: dedendum 1.25-1.35, tip radius
+/// 0.30-0.35, thinning 0-0.024.
+fn agma_20_racks() -> Vec<(f64, f64, f64)> {
+    [1.25, 1.35]
+        .into_iter()
+        .flat_map(|hf| [0.30, 0.35].map(|tip| (hf, tip)))
+        .flat_map(|(hf, tip)| [0.0, 0.024].map(|thin| (hf, tip, thin)))
+        .collect()
+}
+
+/// [pinion, gear] J of the standard 20° pair of `zp`, `zg` teeth (m = 1) cut by `rack`
+/// ([`agma_20_racks`]'s (dedendum, tip radius, thinning)).
+fn j_on_rack(zp: i32, zg: i32, (hf, tip, thinning): (f64, f64, f64)) -> [f64; 2] {
+    let mut s = PairSpec::standard(1.0, zp, zg, deg(20.0), 0.0, 0.0);
+    for g in [&mut s.pinion, &mut s.gear] {
+        g.dedendum_coefficient = hf;
+        g.thickness_allowance = thinning;
+    }
+    let pair = GearPair::new(s).unwrap();
+    [Which::Pinion, Which::Gear].map(|which| j(&pair, which, tip).j)
+}
+
 fn j(pair: &GearPair, which: Which, tip: f64) -> BendingJ {
     bending_geometry_factor(
         pair,
@@ -125,20 +148,9 @@ fn nunes_table_4_8() {
 fn shigley_chart_readings_lie_within_the_agma_racks() {
     for (zp, zg, jp_read, jg_read) in [(17, 52, 0.30, 0.40), (18, 72, 0.32, 0.415)] {
         let mut range = [[f64::INFINITY, f64::NEG_INFINITY]; 2];
-        for hf in [1.25, 1.35] {
-            for tip in [0.30, 0.35] {
-                for thinning in [0.0, 0.024] {
-                    let mut s = PairSpec::standard(1.0, zp, zg, deg(20.0), 0.0, 0.0);
-                    for g in [&mut s.pinion, &mut s.gear] {
-                        g.dedendum_coefficient = hf;
-                        g.thickness_allowance = thinning;
-                    }
-                    let pair = GearPair::new(s).unwrap();
-                    for (k, which) in [Which::Pinion, Which::Gear].into_iter().enumerate() {
-                        let v = j(&pair, which, tip).j;
-                        range[k] = [range[k][0].min(v), range[k][1].max(v)];
-                    }
-                }
+        for rack in agma_20_racks() {
+            for (k, v) in j_on_rack(zp, zg, rack).into_iter().enumerate() {
+                range[k] = [range[k][0].min(v), range[k][1].max(v)];
             }
         }
         for (k, read) in [jp_read, jg_read].into_iter().enumerate() {
@@ -170,24 +182,13 @@ fn agma908_table_phi_20_lies_within_the_agma_racks() {
         (21, 55, 0.34, 0.40), (26, 55, 0.37, 0.41), (35, 55, 0.40, 0.42), (55, 55, 0.43, 0.43),
         (21, 135, 0.35, 0.43), (26, 135, 0.38, 0.44), (35, 135, 0.41, 0.45), (55, 135, 0.45, 0.47),
     ];
-    let racks: Vec<(f64, f64, f64)> = [1.25, 1.35]
-        .into_iter()
-        .flat_map(|hf| [0.30, 0.35].map(|tip| (hf, tip)))
-        .flat_map(|(hf, tip)| [0.0, 0.024].map(|thin| (hf, tip, thin)))
-        .collect();
+    let racks = agma_20_racks();
     // The worst deviation over the table of each rack.
     let mut worst = vec![0.0f64; racks.len()];
     for (zp, zg, jp_t, jg_t) in table {
         let mut range = [[f64::INFINITY, f64::NEG_INFINITY]; 2];
-        for (r, &(hf, tip, thinning)) in racks.iter().enumerate() {
-            let mut s = PairSpec::standard(1.0, zp, zg, deg(20.0), 0.0, 0.0);
-            for g in [&mut s.pinion, &mut s.gear] {
-                g.dedendum_coefficient = hf;
-                g.thickness_allowance = thinning;
-            }
-            let pair = GearPair::new(s).unwrap();
-            for (k, which) in [Which::Pinion, Which::Gear].into_iter().enumerate() {
-                let v = j(&pair, which, tip).j;
+        for (r, &rack) in racks.iter().enumerate() {
+            for (k, v) in j_on_rack(zp, zg, rack).into_iter().enumerate() {
                 range[k] = [range[k][0].min(v), range[k][1].max(v)];
                 worst[r] = worst[r].max((v - [jp_t, jg_t][k]).abs());
             }
