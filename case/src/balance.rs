@@ -163,6 +163,7 @@ pub(crate) fn build(
         Some(t) => build_layout(t, invalid)?,
         None => MachineBalance::default(),
     };
+    machine.shaking_per_step = layout.is_some() || balance.is_some();
     if let Some(b) = balance {
         if let Some(c) = &b.counterweight {
             if !(0.0..=1.0).contains(&c.si) {

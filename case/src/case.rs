@@ -623,7 +623,8 @@ fn validate(
     if dynamics.is_some() {
         solved_friction(&setups, &invalid)?;
     }
-    let computed = crate::output_metrics::Computed::of(&gas, &friction, &gear, &dynamics);
+    let shaking = (&dynamics, balance.shaking_per_step);
+    let computed = crate::output_metrics::Computed::of(&gas, &friction, &gear, shaking);
     let listed = raw.output.metrics.as_deref();
     let table_metrics = crate::output_metrics::build(listed, &computed, &invalid)?;
     Ok(Case {

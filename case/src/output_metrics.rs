@@ -16,22 +16,25 @@ pub(crate) struct Computed {
     /// With `[gear]`, the standard that rates its stresses.
     pub gear: Option<GearStandard>,
     pub dynamic: bool,
+    /// Whether the machine's shaking is taken step by step (`[layout]` or `[balance]`).
+    pub shaking: bool,
 }
 
 impl Computed {
-    /// What a case with these tables (`[gas]`, `[friction]`, `[gear]`, a solved motion)
-    /// computes.
+    /// What a case with these tables (`[gas]`, `[friction]`, `[gear]`, a solved motion, the
+    /// shaking step by step) computes.
     pub fn of<G, F, D>(
         gas: &Option<G>,
         friction: &Option<F>,
         gear: &Option<GearSpec>,
-        dynamics: &Option<D>,
+        (dynamics, shaking): (&Option<D>, bool),
     ) -> Self {
         Self {
             gas: gas.is_some(),
             friction: friction.is_some(),
             gear: gear.as_ref().map(|g| g.standard),
             dynamic: dynamics.is_some(),
+            shaking,
         }
     }
 }
@@ -52,6 +55,8 @@ pub(crate) fn needs(def: &MetricDef, computed: &Computed) -> Option<&'static str
         Some("a gas metric: needs a [gas] table")
     } else if within(metrics::MACHINE_MOTION) && !computed.dynamic {
         Some("a metric of the solved motion: needs [motion] mode = \"dynamic\"")
+    } else if metrics::SHAKING_PEAKS.contains(&def.name) && !computed.shaking {
+        Some("a peak of the machine's shaking over the run: needs a [layout] or [balance] table (an empty [balance] will do; the shaking's orders need neither)")
     } else {
         None
     }
@@ -128,6 +133,7 @@ mod tests {
             friction: true,
             gear: Some(GearStandard::Agma2001),
             dynamic: false,
+            shaking: true,
         };
         let ok = [
             "mechanical_efficiency",
@@ -148,9 +154,15 @@ mod tests {
             friction: false,
             gear: None,
             dynamic: false,
+            shaking: false,
         };
         let e = check(&["mechanical_efficiency"], &bare).unwrap_err();
         assert!(e.contains("[friction]"), "{e}");
+        // The shaking's peaks need it taken step by step; its orders do not.
+        let e = check(&["shaking_force_max"], &bare).unwrap_err();
+        assert!(e.contains("[layout] or [balance]"), "{e}");
+        assert_eq!(check(&["shaking_moment_max"], &all), Ok(1));
+        assert_eq!(check(&["shaking_force_order_2"], &bare), Ok(1));
         // Each standard's gear metrics need that standard.
         let e = check(&["iso_contact_safety_factor"], &all).unwrap_err();
         assert!(e.contains("standard = \"iso6336\" or \"both\""), "{e}");

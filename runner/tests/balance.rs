@@ -126,7 +126,7 @@ fn the_cardan_counterweight_pair_leaves_no_shaking_force() {
             let r = results(&t);
             (metric(&r, "cardan_gear", "shaking_force_max"), r)
         };
-        let (bare, r) = with("");
+        let (bare, r) = with("[balance]");
         assert!(r[0].warnings.is_empty(), "{:?}", r[0].warnings);
         let bare_torque = metric(&r, "cardan_gear", "inertial_torque_max");
         let (balanced, r) = with("[balance]\ncardan_counterweights = true");
@@ -524,7 +524,7 @@ fn the_cardan_pair_applies_to_the_mechanisms_with_a_cardan_wheel() {
     };
     let cardan = results(&text("\"cardan_gear\"", 360, &pair));
     // The slider-crank alone without the cardan gear's table (nothing would read it: refused).
-    let slider = results(&text("\"slider_crank\"", 360, ""));
+    let slider = results(&text("\"slider_crank\"", 360, "[balance]"));
     assert_eq!(bits(&compared, "cardan_gear"), bits(&cardan, "cardan_gear"));
     assert_eq!(
         bits(&compared, "slider_crank"),
@@ -632,4 +632,97 @@ fn a_two_stroke_layout_defaults_to_a_two_stroke_crank() {
         first(&two),
         first(&one)
     );
+}
+
+/// The shaking is taken at every step only where a case asks for it (`[layout]` or
+/// `[balance]`, an empty `[balance]` will do; CHANGELOG): without, the run writes neither
+/// `shaking_force_max` nor `shaking_moment_max` nor the per-step shaking columns, and every
+/// other metric and column has the bits of the run that asks (the orders among them); with
+/// gas and friction, every registered mechanism that forms a machine.
+#[test]
+fn the_shaking_at_every_step_only_where_asked() {
+    let mechanisms = r#""slider_crank", "cardan_gear", "scotch_yoke""#;
+    let tables = |balance: &str| {
+        format!(
+            "[gas]\nmodel = \"karhula_pump\"\ncompression_ratio = 12\npolytropic_exponent = 1.4\nfilling = 1.07\nambient_pressure = \"1 bar\"\n[friction]\n{balance}\n[output]\ncsv = true\n"
+        )
+    };
+    let run = |balance: &str, folder: &str| {
+        let dir = std::env::temp_dir().join(folder);
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let results = run_case(&case(&text(mechanisms, 720, &tables(balance))), Some(&dir))
+            .unwrap_or_else(|e| panic!("{e}"));
+        (results, dir)
+    };
+    let (plain, plain_dir) = run("", "balance-not-asked");
+    let (asked, asked_dir) = run("[balance]", "balance-asked");
+    let peaks = ["shaking_force_max", "shaking_moment_max"];
+    let shaking_columns = [
+        "shaking_force_x_n",
+        "shaking_force_y_n",
+        "shaking_moment_pitch_nm",
+        "shaking_moment_yaw_nm",
+    ];
+    for (p, a) in plain.iter().zip(&asked) {
+        let names = |r: &MechanismResult| -> Vec<String> {
+            r.summary
+                .metrics
+                .iter()
+                .map(|m| m.name.to_string())
+                .collect()
+        };
+        let expected: Vec<String> = names(a)
+            .into_iter()
+            .filter(|n| !peaks.contains(&n.as_str()))
+            .collect();
+        assert_eq!(names(p), expected, "{}: the metrics", p.label);
+        assert!(
+            names(a).iter().any(|n| n == "shaking_force_max"),
+            "{}",
+            a.label
+        );
+        assert!(
+            expected.iter().any(|n| n == "shaking_force_order_1"),
+            "{}",
+            p.label
+        );
+        for m in &p.summary.metrics {
+            let v = metric(&asked, &a.label, &m.name);
+            assert_eq!(m.value.to_bits(), v.to_bits(), "{}: {}", p.label, m.name);
+        }
+        let csv =
+            |dir: &Path| std::fs::read_to_string(dir.join(format!("{}.csv", p.label))).unwrap();
+        let (p_csv, a_csv) = (csv(&plain_dir), csv(&asked_dir));
+        let header = |text: &str| -> Vec<String> {
+            text.lines()
+                .next()
+                .unwrap()
+                .split(',')
+                .map(String::from)
+                .collect()
+        };
+        let (p_head, a_head) = (header(&p_csv), header(&a_csv));
+        let kept: Vec<usize> = (0..a_head.len())
+            .filter(|&k| !shaking_columns.contains(&a_head[k].as_str()))
+            .collect();
+        assert_eq!(kept.len() + 4, a_head.len(), "{}: {a_head:?}", a.label);
+        let kept_names: Vec<&String> = kept.iter().map(|&k| &a_head[k]).collect();
+        assert_eq!(p_head.iter().collect::<Vec<_>>(), kept_names, "{}", p.label);
+        for (p_row, a_row) in p_csv.lines().zip(a_csv.lines()).skip(1) {
+            let a_cells: Vec<&str> = a_row.split(',').collect();
+            let a_kept: Vec<&str> = kept.iter().map(|&k| a_cells[k]).collect();
+            assert_eq!(p_row.split(',').collect::<Vec<_>>(), a_kept, "{}", p.label);
+        }
+    }
+    let _ = std::fs::remove_dir_all(&plain_dir);
+    let _ = std::fs::remove_dir_all(&asked_dir);
+    // A table of peaks no point would have is refused, naming the fix; with [balance] taken.
+    let listed = "[output]\nmetrics = [\"shaking_moment_max\"]\n";
+    let e = refused(&text(mechanisms, 36, listed));
+    assert!(
+        e.contains("output.metrics") && e.contains("[layout] or [balance]"),
+        "{e}"
+    );
+    case(&text(mechanisms, 36, &format!("[balance]\n{listed}")));
 }

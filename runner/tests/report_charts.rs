@@ -18,8 +18,9 @@ use std::sync::OnceLock;
 /// The configs run: a compressor (gas, prescribed speed), an engine and a pump of solved
 /// motion (dynamic), a three-cylinder machine (several journals and pins), a gas-less case,
 /// and an opposed-piston engine with a crank phase (a chamber of two trains' pistons).
-const CONFIGS: [&str; 6] = [
+const CONFIGS: [&str; 7] = [
     "example-compressor",
+    "balance-thesis-single-cw0",
     "karhula-engine-dynamic-flywheel",
     "karhula-pump-motor-runup",
     "balance-inline3",
@@ -583,17 +584,29 @@ fn every_series_of_a_chart_has_its_own_dash() {
 }
 
 /// No chart without data (issue 38): a machine of one cylinder has no free moment, so no
-/// chart of it; the three-cylinder machine's free moment is drawn.
+/// chart of it; the three-cylinder machine's free moment is drawn. A case that does not ask
+/// for the shaking at every step (no `[layout]`, no `[balance]`) has no shaking columns and no
+/// shaking chart.
 #[test]
 fn a_quantity_zero_throughout_has_no_chart() {
+    let case = "balance-thesis-single-cw0";
+    let data = read_csv(&out().join(case).join("slider_crank.csv"));
+    assert!(data["shaking_moment_pitch_nm"]
+        .iter()
+        .chain(&data["shaking_moment_yaw_nm"])
+        .all(|v| *v == 0.0));
+    assert!(chart(case, "shaking_moment.svg").is_none(), "{case}");
+    assert!(chart(case, "shaking_force.svg").is_some(), "{case}");
     for case in ["example-compressor", "karhula-engine-dynamic-flywheel"] {
         let data = read_csv(&out().join(case).join("slider_crank.csv"));
-        assert!(data["shaking_moment_pitch_nm"]
-            .iter()
-            .chain(&data["shaking_moment_yaw_nm"])
-            .all(|v| *v == 0.0));
-        assert!(chart(case, "shaking_moment.svg").is_none(), "{case}");
-        assert!(chart(case, "shaking_force.svg").is_some(), "{case}");
+        assert!(!data.contains_key("shaking_force_x_n"), "{case}");
+        for file in [
+            "shaking_moment.svg",
+            "shaking_force.svg",
+            "shaking_force_locus.svg",
+        ] {
+            assert!(chart(case, file).is_none(), "{case}: {file}");
+        }
     }
     assert!(chart("balance-inline3", "shaking_moment.svg").is_some());
 }

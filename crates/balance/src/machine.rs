@@ -51,6 +51,10 @@ pub struct MachineBalance {
     pub lanchester: bool,
     /// The counterweight pair on crank and wheel of every cylinder ([`CardanCounterweights`]).
     pub cardan_counterweights: bool,
+    /// Whether the case asks for the machine's shaking step by step (it has `[layout]` or
+    /// `[balance]`): the shaking force and free moments at every step and their peaks. Its
+    /// orders, taken over one revolution, are every run's whatever this says.
+    pub shaking_per_step: bool,
 }
 
 impl Default for MachineBalance {
@@ -63,6 +67,7 @@ impl Default for MachineBalance {
             counterweight: None,
             lanchester: false,
             cardan_counterweights: false,
+            shaking_per_step: false,
         }
     }
 }

@@ -34,6 +34,9 @@ pub struct Machine {
     /// sentence each (`[balance] cardan_counterweights` on a mechanism without a cardan
     /// wheel): the run's warnings in `summary.json`.
     pub notes: Vec<String>,
+    /// Whether the case asks for the machine's shaking step by step
+    /// ([`MachineBalance::shaking_per_step`]).
+    pub shaking_per_step: bool,
     /// The layout and devices prepared for the mechanism ([`MachineBalance::prepare`], called
     /// here only): the equipped mechanism, the rotors, the crank's carried masses.
     balance: PreparedBalance,
@@ -110,6 +113,7 @@ impl Machine {
         Ok(Self {
             kind,
             notes,
+            shaking_per_step: machine.shaking_per_step,
             phases: machine.phases(),
             axes: layout.axes(),
             pin_of,

@@ -3,7 +3,9 @@
 //! families (the closed forms, or the general solve where the mechanism has none), and from
 //! them the machine's drive torque (every cylinder's gas and inertia, and with `[friction]`
 //! every cylinder's losses), its main journals' and crank pins' loads, each cylinder's gas
-//! force, and its shaking force and free moments (`cardan-balance`); its accumulator
+//! force, and where the case asks for them (`[layout]` or `[balance]`:
+//! [`Machine::shaking_per_step`]) its shaking force and free moments (`cardan-balance`),
+//! which a case that does not ask need not pay for at every step; its accumulator
 //! ([`MachineTotals`]) makes the machine's metrics (`metrics::MACHINE`) and the balance's,
 //! with the orders at constant speed over one revolution whatever the run's motion.
 //!
@@ -31,17 +33,20 @@ use cardan_mechanism::{
 };
 use std::sync::Arc;
 
-/// The stage's first per-step columns: the machine's shaking force (x, y) and free moment
-/// (pitch, yaw), its drive torque; then each main journal's load (x, y in the machine frame),
-/// each cylinder's crank-pin load (x, y in the machine frame) and gas force
+/// The stage's first per-step columns where the case asks for the machine's shaking step by
+/// step (`[layout]` or `[balance]`): its shaking force (x, y) and free moment (pitch, yaw);
+/// then [`TORQUE_COLUMN`], each main journal's load (x, y in the machine frame), each
+/// cylinder's crank-pin load (x, y in the machine frame) and gas force
 /// ([`MachineStage::columns`]).
-pub const COLUMNS: [&str; 5] = [
+pub const SHAKING_COLUMNS: [&str; 4] = [
     "shaking_force_x_n",
     "shaking_force_y_n",
     "shaking_moment_pitch_nm",
     "shaking_moment_yaw_nm",
-    "machine_torque_nm",
 ];
+
+/// The machine's drive torque's column.
+pub const TORQUE_COLUMN: &str = "machine_torque_nm";
 
 /// One cylinder at one step, in the machine frame.
 #[derive(Debug, Clone, Copy, Default)]
@@ -100,7 +105,10 @@ struct Room {
 impl MachineStage {
     /// The stage of the machine `machine`, its orders taken at `order_speed` (rad/s); `gas`:
     /// whether the case has a gas model; `losses`: the case's loss budget of the mechanism
-    /// (with `[friction]`), copied for each cylinder the stage loads itself.
+    /// (with `[friction]`), copied for each cylinder the stage loads itself. The machine's
+    /// shaking step by step ([`SHAKING_COLUMNS`] and their peaks) where the case asks for it
+    /// ([`Machine::shaking_per_step`]); the orders, taken over one revolution at the finish,
+    /// are every run's.
     pub fn new(
         machine: Arc<Machine>,
         order_speed: f64,
@@ -110,6 +118,7 @@ impl MachineStage {
         let n = machine.cylinders();
         let own = n - usize::from(machine.train_is_first());
         let places = Places {
+            shaking: machine.shaking_per_step,
             cylinders: n,
             journals: machine.journals(),
             pins: machine.crank_pin().is_some() && machine.main_bearing().is_some(),
@@ -178,7 +187,10 @@ impl MachineStage {
             };
             for (k, &p) in pressure[..lanes].iter().enumerate() {
                 let mut at = CylinderAt {
-                    shaking: shaking_lane(t, &room.block, k),
+                    shaking: match self.places.shaking {
+                        true => shaking_lane(t, &room.block, k),
+                        false => Shaking::default(),
+                    },
                     torque: total.crank_torque[k],
                     gas_torque: room.loads.get(1).map_or(0.0, |g| g.crank_torque[k]),
                     gas_force: gas.map_or(0.0, |_| room.force[k]),
@@ -215,14 +227,16 @@ impl MachineStage {
         let n = self.machine.cylinders();
         let first = usize::from(self.machine.train_is_first());
         let at = |i: usize| &room.at[i * LANES + k];
-        let s = self
-            .machine
-            .balance()
-            .sum((0..n).map(|i| at(i).shaking), crank);
-        out[0] = s.force.re;
-        out[1] = s.force.im;
-        out[2] = s.pitch();
-        out[3] = s.yaw();
+        if self.places.shaking {
+            let s = self
+                .machine
+                .balance()
+                .sum((0..n).map(|i| at(i).shaking), crank);
+            out[0] = s.force.re;
+            out[1] = s.force.im;
+            out[2] = s.pitch();
+            out[3] = s.yaw();
+        }
         let p = self.places;
         let (mut torque, mut gas_torque, mut loss) = (0.0, 0.0, 0.0);
         for i in first..n {
@@ -241,7 +255,7 @@ impl MachineStage {
         if self.friction && crank.speed != 0.0 {
             torque += loss / crank.speed.abs();
         }
-        out[Places::TORQUE] = torque;
+        out[p.torque()] = torque;
         for j in 0..p.journals {
             out[p.journal(j)] = 0.0;
             out[p.journal(j) + 1] = 0.0;
@@ -283,8 +297,9 @@ impl MachineStage {
     }
 }
 
-/// The train as cylinder 1 at lane `i` of the block `input`, from its columns.
-fn train_lane(machine: &Machine, input: &Block, i: usize) -> CylinderAt {
+/// The train as cylinder 1 at lane `i` of the block `input`, from its columns (its shaking
+/// where `shaking`).
+fn train_lane(machine: &Machine, input: &Block, i: usize, shaking: bool) -> CylinderAt {
     let total = input.total;
     let joint = |j: Option<usize>| {
         j.map_or(C::new(0.0, 0.0), |j| {
@@ -293,7 +308,10 @@ fn train_lane(machine: &Machine, input: &Block, i: usize) -> CylinderAt {
         })
     };
     CylinderAt {
-        shaking: shaking_lane(machine.mechanism().topology(), input.states, i),
+        shaking: match shaking {
+            true => shaking_lane(machine.mechanism().topology(), input.states, i),
+            false => Shaking::default(),
+        },
         torque: total.crank_torque[i],
         main: joint(machine.main_bearing()),
         pin: joint(machine.crank_pin()),
@@ -330,7 +348,7 @@ impl Stage for MachineStage {
         for i in 0..n {
             let mut loss = 0.0;
             if self.machine.train_is_first() {
-                let train = train_lane(&self.machine, input, i);
+                let train = train_lane(&self.machine, input, i, self.places.shaking);
                 self.room.as_mut().expect("room made").at[i] = train;
                 loss = train_loss.map_or(0.0, |l| l[i]);
             }
@@ -346,7 +364,15 @@ impl Stage for MachineStage {
 
     fn columns(&self) -> Vec<StageColumn> {
         let p = self.places;
-        let mut columns: Vec<(usize, String)> = (0..5).map(|v| (v, COLUMNS[v].into())).collect();
+        let mut columns: Vec<(usize, String)> = match p.shaking {
+            true => SHAKING_COLUMNS
+                .iter()
+                .enumerate()
+                .map(|(v, c)| (v, c.to_string()))
+                .collect(),
+            false => Vec::new(),
+        };
+        columns.push((p.torque(), TORQUE_COLUMN.into()));
         for j in 0..p.journals {
             for (d, axis) in [(0, "x"), (1, "y")] {
                 let name = format!("main_bearing_{}_force_{axis}_n", j + 1);
@@ -406,29 +432,31 @@ impl MachineStage {
         let total = input.total;
         let joint =
             |j: usize, i: usize| m.axis(0) * C::new(total.joints[j].fx[i], total.joints[j].fy[i]);
-        for i in 0..n {
-            let crank = input.states.crank.at(i);
-            let s = m
-                .balance()
-                .sum(std::iter::once(shaking_lane(t, input.states, i)), &crank);
-            out[0][i] = s.force.re;
-            out[1][i] = s.force.im;
-            out[2][i] = s.pitch();
-            out[3][i] = s.yaw();
+        if p.shaking {
+            for i in 0..n {
+                let crank = input.states.crank.at(i);
+                let s = m
+                    .balance()
+                    .sum(std::iter::once(shaking_lane(t, input.states, i)), &crank);
+                out[0][i] = s.force.re;
+                out[1][i] = s.force.im;
+                out[2][i] = s.pitch();
+                out[3][i] = s.yaw();
+            }
         }
         let others = p.others();
         for c in &mut out[others..others + 3] {
             c[..n].fill(0.0);
         }
         for i in 0..n {
-            out[Places::TORQUE][i] = 0.0 + total.crank_torque[i];
+            out[p.torque()][i] = 0.0 + total.crank_torque[i];
         }
         if self.friction {
             let speed = &input.states.crank.speed;
             for i in 0..n {
                 let loss = 0.0 + train_loss.map_or(0.0, |l| l[i]);
                 if speed[i] != 0.0 {
-                    out[Places::TORQUE][i] += loss / speed[i].abs();
+                    out[p.torque()][i] += loss / speed[i].abs();
                 }
             }
         }

@@ -15,9 +15,15 @@ use std::any::Any;
 use std::ops::Range;
 use std::sync::Arc;
 
-/// Where each of the stage's values sits in its row of values.
+/// Where each of the stage's values sits in its row of values: the shaking force (x, y) and
+/// free moment (pitch, yaw) where the case asks for them, the drive torque, each main
+/// journal's load (x, y), each crank pin's (x, y), each cylinder's gas force, then the values
+/// no column shows ([`Places::others`]).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Places {
+    /// Whether the case asks for the machine's shaking step by step (`[layout]` or
+    /// `[balance]`): its columns, and the peaks `shaking_force_max` and `shaking_moment_max`.
+    pub(crate) shaking: bool,
     pub(crate) cylinders: usize,
     pub(crate) journals: usize,
     /// Whether the mechanism has a crank pin (its columns).
@@ -27,10 +33,13 @@ pub(crate) struct Places {
 }
 
 impl Places {
-    pub(crate) const TORQUE: usize = 4;
+    /// The drive torque's place.
+    pub(crate) fn torque(&self) -> usize {
+        4 * usize::from(self.shaking)
+    }
 
     pub(crate) fn journal(&self, j: usize) -> usize {
-        5 + 2 * j
+        self.torque() + 1 + 2 * j
     }
 
     pub(crate) fn pin(&self, k: usize) -> usize {
@@ -52,27 +61,97 @@ impl Places {
     }
 }
 
-/// `raise(peak, x.hypot(y))`, the same result, with `hypot` (a libm call, 80 instructions)
-/// skipped where it cannot raise the peak: (0, 0) (the free moments of one cylinder), and
-/// x² + y² below peak²·(1 − 2⁻⁴⁰). There, with u = 2⁻⁵³, the computed squares and sum are
-/// within (1 ± 2u) of the exact x² + y² (Higham, *Accuracy and Stability of Numerical
-/// Algorithms*, 2nd ed., §3.1, the model of floating-point arithmetic) and peak² within
-/// (1 ± u), so the exact norm is below peak·(1 − 2⁻⁴²), and `hypot` (within 1 ulp, glibc's
-/// documented bound) rounds it to at most peak: no change. A peak² below [`SMALL`] or
-/// infinite never skips.
-#[inline]
-fn raise_norm(peak: &mut f64, x: f64, y: f64) {
-    const BELOW: f64 = 1.0 - 1.0 / (1u64 << 40) as f64;
-    let p2 = *peak * *peak;
-    let s = x * x + y * y;
-    let zero = x == 0.0 && y == 0.0 && *peak >= 0.0;
-    if zero || (p2 > SMALL && p2.is_finite() && s < p2 * BELOW) {
-        return;
-    }
-    raise(peak, x.hypot(y));
+/// The largest |(x, y)| = `x.hypot(y)` of the pairs pushed, bit for bit the peak that raising
+/// it to each pair's `hypot` gives, with `hypot` (a libm call, some 80 instructions) taken only
+/// of the pairs that may be the largest: a pair is dropped where another one's norm is surely
+/// not smaller. A pair whose computed x² + y² is below another's times (1 − 2⁻⁴⁰) has the
+/// smaller `hypot`: the computed squares and sum are within (1 ± 2u) of the exact x² + y², with
+/// u = 2⁻⁵³ (Higham, *Accuracy and Stability of Numerical Algorithms*, 2nd ed., §3.1, the
+/// model of floating-point arithmetic), so its exact norm is below the other's by more than
+/// 2⁻⁴², and `hypot` (within 1 ulp, glibc's documented bound) keeps that order. The latest
+/// candidate stays pending (a peak that rises step after step takes no `hypot` until it is
+/// read); one that cannot be told from the pending one, or whose sum of squares is below
+/// [`SMALL`] or overflows, is resolved at once. The values are finite (the stage checked).
+#[derive(Debug, Clone, Copy)]
+struct NormPeak {
+    /// The largest `hypot` resolved so far (0 at first).
+    peak: f64,
+    /// The pending candidate's (x, y) and x² + y² (an x² + y² of 0: none).
+    pending: (f64, f64, f64),
+    /// A computed x² + y² below this is surely not the largest: the larger of the pending
+    /// one's and the peak's square, times (1 − 2⁻⁴⁰), where that is safe (else −∞).
+    drop_below: f64,
 }
 
-/// About 2⁻⁹⁰⁰: [`raise_norm`]'s smallest peak² that may skip (far above the subnormals).
+impl Default for NormPeak {
+    fn default() -> Self {
+        Self {
+            peak: 0.0,
+            pending: (0.0, 0.0, 0.0),
+            drop_below: f64::NEG_INFINITY,
+        }
+    }
+}
+
+impl NormPeak {
+    const BELOW: f64 = 1.0 - 1.0 / (1u64 << 40) as f64;
+
+    /// Below this a computed x² + y² is surely the smaller norm beside `than` (the type note), or
+    /// −∞ where `than` is too small or not finite to tell.
+    #[inline(always)]
+    fn bound(than: f64) -> f64 {
+        if than > SMALL && than.is_finite() {
+            than * Self::BELOW
+        } else {
+            f64::NEG_INFINITY
+        }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, x: f64, y: f64) {
+        let s = x * x + y * y;
+        // (0, 0): the free moments of a machine in one plane.
+        if s < self.drop_below || (x == 0.0 && y == 0.0) {
+            return;
+        }
+        self.take(x, y, s);
+    }
+
+    /// A pair that may be the largest.
+    #[inline(never)]
+    fn take(&mut self, x: f64, y: f64, s: f64) {
+        let (px, py, ps) = self.pending;
+        if ps >= Self::bound(s) {
+            raise(&mut self.peak, px.hypot(py));
+        }
+        if s > SMALL && s.is_finite() {
+            self.pending = (x, y, s);
+        } else {
+            raise(&mut self.peak, x.hypot(y));
+            self.pending = (0.0, 0.0, 0.0);
+        }
+        self.drop_below = Self::bound(self.pending.2.max(self.peak * self.peak));
+    }
+
+    /// The peak.
+    fn value(&self) -> f64 {
+        let (x, y, _) = self.pending;
+        let mut peak = self.peak;
+        raise(&mut peak, x.hypot(y));
+        peak
+    }
+
+    /// The peak over both runs of pairs.
+    fn merge(&mut self, later: &Self) {
+        self.peak = self.value();
+        raise(&mut self.peak, later.value());
+        self.pending = (0.0, 0.0, 0.0);
+        self.drop_below = Self::bound(self.peak * self.peak);
+    }
+}
+
+/// About 2⁻⁹⁰⁰: [`NormPeak`]'s smallest sum of squares that may stay pending or drop a pair
+/// (far above the subnormals).
 const SMALL: f64 = 1.2e-271;
 
 /// The machine's accumulator: the peaks of the shaking force, free moment, journal and crank
@@ -84,10 +163,13 @@ pub struct MachineTotals {
     places: Places,
     order_speed: f64,
     friction: bool,
-    force: f64,
-    moment: f64,
-    journal: f64,
-    pin: f64,
+    force: NormPeak,
+    moment: NormPeak,
+    journal: NormPeak,
+    pin: NormPeak,
+    /// Whether each cylinder has a crank pin of its own, the pins in the cylinders' order (its
+    /// pin's load is then its own).
+    own_pins: bool,
     /// Room for each crank pin's load at a step.
     pins: Vec<C>,
     /// The machine torque's smallest and largest value so far.
@@ -114,16 +196,18 @@ impl MachineTotals {
         friction: bool,
     ) -> Self {
         let others = machine.cylinders() > usize::from(machine.train_is_first());
+        let own_pins = (0..machine.cylinders()).all(|k| machine.pin_of(k) == k);
         Self {
             pins: vec![C::new(0.0, 0.0); machine.pins()],
             machine,
             places,
             order_speed,
             friction,
-            force: 0.0,
-            moment: 0.0,
-            journal: 0.0,
-            pin: 0.0,
+            force: NormPeak::default(),
+            moment: NormPeak::default(),
+            journal: NormPeak::default(),
+            pin: NormPeak::default(),
+            own_pins,
             torque: None,
             work: Integral::default(),
             gas_work: Integral::default(),
@@ -133,38 +217,52 @@ impl MachineTotals {
         }
     }
 
-    /// Takes the stage's values at the steps `steps` (step number, crank angle in rad, time in
-    /// s, in the steps' order), `column(place)` the values at `place` of those steps. The peaks
-    /// a value at a time over the steps (each accumulator sees its values in the steps' order),
+    /// Takes the stage's values at `n` steps, `column(place)` the values at `place` of those
+    /// steps; `steps`: each one's step number, crank angle in rad and time in s, in the steps'
+    /// order (read only where the machine has cylinders apart from the train). The peaks a
+    /// value at a time over the steps (each accumulator sees its values in the steps' order),
     /// the integrals step by step.
     #[inline]
-    fn take<'v>(&mut self, steps: &[(usize, f64, f64)], column: impl Fn(usize) -> &'v [f64]) {
+    fn take<'v>(
+        &mut self,
+        n: usize,
+        steps: &[(usize, f64, f64)],
+        column: impl Fn(usize) -> &'v [f64],
+    ) {
         let p = self.places;
-        let norms = |peak: &mut f64, x: usize| {
+        let norms = |peak: &mut NormPeak, x: usize| {
             for (&a, &b) in column(x).iter().zip(column(x + 1)) {
-                raise_norm(peak, a, b);
+                peak.push(a, b);
             }
         };
-        norms(&mut self.force, 0);
-        norms(&mut self.moment, 2);
+        if p.shaking {
+            norms(&mut self.force, 0);
+            norms(&mut self.moment, 2);
+        }
         for j in 0..p.journals {
             norms(&mut self.journal, p.journal(j));
         }
-        for &torque in column(Places::TORQUE) {
-            self.torque = Some(match self.torque {
-                None => (torque, torque),
-                Some((lo, hi)) => (lo.min(torque), hi.max(torque)),
-            });
+        let torques = column(p.torque());
+        if let Some(&first) = torques.first() {
+            let (mut lo, mut hi) = self.torque.unwrap_or((first, first));
+            for &torque in torques {
+                (lo, hi) = (lo.min(torque), hi.max(torque));
+            }
+            self.torque = Some((lo, hi));
         }
-        if p.pins {
-            for i in 0..steps.len() {
+        if p.pins && self.own_pins {
+            for k in 0..p.cylinders {
+                norms(&mut self.pin, p.pin(k));
+            }
+        } else if p.pins {
+            for i in 0..n {
                 self.pins.fill(C::new(0.0, 0.0));
                 for k in 0..p.cylinders {
                     let pin = C::new(column(p.pin(k))[i], column(p.pin(k) + 1)[i]);
                     self.pins[self.machine.pin_of(k)] += pin;
                 }
                 for f in &self.pins {
-                    raise_norm(&mut self.pin, f.re, f.im);
+                    self.pin.push(f.re, f.im);
                 }
             }
         }
@@ -196,10 +294,14 @@ impl StageTotals for MachineTotals {
         let c = &block.stage_columns[stage];
         let crank = &block.state.crank;
         let mut steps = [(0, 0.0, 0.0); LANES];
-        for (i, j) in lanes.clone().enumerate() {
-            steps[i] = (block.first + j, crank.angle[j], crank.time[j]);
+        let n = lanes.len();
+        // The steps only for the integrals of the cylinders apart from the train.
+        if self.others {
+            for (i, j) in lanes.clone().enumerate() {
+                steps[i] = (block.first + j, crank.angle[j], crank.time[j]);
+            }
         }
-        self.take(&steps[..lanes.len()], |place| &c[place][lanes.clone()]);
+        self.take(n, &steps[..n], |place| &c[place][lanes.clone()]);
     }
 
     fn close_chunk(&mut self) {
@@ -213,10 +315,10 @@ impl StageTotals for MachineTotals {
             .as_any()
             .downcast_ref::<Self>()
             .expect("machine totals");
-        raise(&mut self.force, later.force);
-        raise(&mut self.moment, later.moment);
-        raise(&mut self.journal, later.journal);
-        raise(&mut self.pin, later.pin);
+        self.force.merge(&later.force);
+        self.moment.merge(&later.moment);
+        self.journal.merge(&later.journal);
+        self.pin.merge(&later.pin);
         self.torque = match (self.torque, later.torque) {
             (Some((a, b)), Some((c, d))) => Some((a.min(c), b.max(d))),
             (x, y) => x.or(y),
@@ -233,21 +335,25 @@ impl StageTotals for MachineTotals {
     /// A9.1.60-75 for the whole machine).
     fn finish(&self, run: &RunTotals, m: &mut Summary) {
         let orders = self.machine.balance().orders(self.order_speed);
-        m.push("shaking_force_max", self.force);
+        if self.places.shaking {
+            m.push("shaking_force_max", self.force.value());
+        }
         for k in [1, 2, 4] {
             let name = format!("shaking_force_order_{k}");
             m.push(name, orders.force[k].amplitude());
         }
-        m.push("shaking_moment_max", self.moment);
+        if self.places.shaking {
+            m.push("shaking_moment_max", self.moment.value());
+        }
         for k in [1, 2] {
             let name = format!("shaking_moment_order_{k}");
             m.push(name, orders.moment[k].amplitude());
         }
         if self.machine.main_bearing().is_some() {
-            m.push("machine_main_bearing_force_max", self.journal);
+            m.push("machine_main_bearing_force_max", self.journal.value());
         }
         if self.places.pins {
-            m.push("machine_crank_pin_force_max", self.pin);
+            m.push("machine_crank_pin_force_max", self.pin.value());
         }
         let (span, time) = (run.span, run.time);
         let first = self.machine.train_is_first();
@@ -311,11 +417,12 @@ impl StageTotals for MachineTotals {
 mod tests {
     use super::*;
 
-    /// `raise_norm` raises a peak exactly as raising it to `hypot` does, over a run of values
-    /// that grow, shrink, tie and cross zero, their squares near the skip's edge, tiny and
-    /// huge ones (a generator of its own: no values copied from the program).
+    /// A [`NormPeak`] is the peak that raising to each pair's `hypot` gives, bit for bit, after
+    /// every pair and merged from two halves at any split, over runs of pairs that grow (at
+    /// random and by single ulps), shrink, tie the peak and the floats about it, cross zero,
+    /// and are tiny or huge (a generator of its own: no values copied from the program).
     #[test]
-    fn raise_norm_is_raise_of_hypot() {
+    fn a_norm_peak_is_the_peak_of_hypot() {
         let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
         let mut next = || {
             seed ^= seed << 13;
@@ -323,21 +430,48 @@ mod tests {
             seed ^= seed << 17;
             (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
         };
+        let ulps = |x: f64, n: i64| f64::from_bits((x.to_bits() as i64 + n).max(0) as u64);
         for scale in [1e-160, 1e-140, 1e-130, 1e-3, 1.0, 1e3, 1e150, 1e160] {
-            let (mut a, mut b) = (0.0_f64, 0.0_f64);
-            for k in 0..20_000 {
-                let (x, y) = match k % 7 {
+            let mut pairs = Vec::new();
+            let mut peak = 0.0_f64;
+            for k in 0..20_000_u64 {
+                let (x, y) = match k % 9 {
                     0 => (0.0, -0.0),
-                    // Near the last peak: a tie and the next floats about it.
-                    1 => {
-                        let t = f64::from_bits((b.to_bits() + k % 3).saturating_sub(1));
-                        (t, 0.0)
-                    }
+                    // Near the peak so far: a tie and the floats about it.
+                    1 => (ulps(peak, (k % 3) as i64 - 1), 0.0),
+                    // A rise of an ulp or two in both coordinates.
+                    2 | 3 => pairs.last().map_or((scale, 0.0), |&(a, b): &(f64, f64)| {
+                        (ulps(a.abs(), (k % 2 + 1) as i64), ulps(b.abs(), 1))
+                    }),
+                    // A ramp that grows in steps of about 1e-3.
+                    4 => (scale * (0.5 + 1e-3 * (k % 500) as f64), -0.25 * scale),
                     _ => (scale * next(), scale * next()),
                 };
-                raise(&mut a, x.hypot(y));
-                raise_norm(&mut b, x, y);
-                assert_eq!(a.to_bits(), b.to_bits(), "{scale}: step {k}, ({x}, {y})");
+                pairs.push((x, y));
+                raise(&mut peak, x.hypot(y));
+            }
+            let mut expected = 0.0_f64;
+            let mut norms = NormPeak::default();
+            for (k, &(x, y)) in pairs.iter().enumerate() {
+                raise(&mut expected, x.hypot(y));
+                norms.push(x, y);
+                let got = norms.value();
+                assert_eq!(
+                    expected.to_bits(),
+                    got.to_bits(),
+                    "{scale}: pair {k}, ({x}, {y})"
+                );
+            }
+            for split in [0, 1, 7, 4_999, 10_000, 19_999] {
+                let (mut a, mut b) = (NormPeak::default(), NormPeak::default());
+                pairs[..split].iter().for_each(|&(x, y)| a.push(x, y));
+                pairs[split..].iter().for_each(|&(x, y)| b.push(x, y));
+                a.merge(&b);
+                assert_eq!(
+                    a.value().to_bits(),
+                    peak.to_bits(),
+                    "{scale}: split {split}"
+                );
             }
         }
     }

@@ -171,6 +171,7 @@ fn a_stage_gives_the_same_bits_in_blocks_and_one_step_at_a_time() {
                 layout,
                 counterweight: Some(0.5),
                 lanchester: true,
+                shaking_per_step: true,
                 ..MachineBalance::default()
             };
             let Ok(built) = Machine::build(&machine, Arc::clone(&m), MachineKind::Pump) else {

@@ -206,6 +206,10 @@ pub const GEAR_RATING_AGMA: &[&str] = &[
     "bending_safety_factor",
 ];
 
+/// The metrics of [`MACHINE`] taken from the machine's shaking at every step, which a run
+/// computes only where its case asks (`[layout]` or `[balance]`); the orders are every run's.
+pub const SHAKING_PEAKS: &[&str] = &["shaking_force_max", "shaking_moment_max"];
+
 /// The fmep metrics of an engine with friction (`cardan_dynamics::engine_metrics`, after the run).
 pub const ENGINE_FRICTION: &[MetricDef] = &[
     def("fmep", "Pa", T, L, Lo, "engine with friction: the run's friction mean effective pressure, loss_work per swept volume π/4·B²·stroke per four-stroke cycle (4π of crank angle)"),
@@ -383,11 +387,11 @@ pub const MACHINE: &[MetricDef] = &[
     def("machine_mechanical_efficiency", "1", R, Group::Machine, Hi, "with [friction] and a gas model, one definition per machine kind whatever the run's motion, where its denominator is positive (Karhula's definitions are of a steady cycle): pump Σ gas work / (Σ drive work + loss work) (Karhula A9.1.72-73), engine (−Σ drive work − loss work) / −Σ drive work (A9.1.74-75), over every cylinder"),
     def("machine_main_bearing_force_max", "N", R, Group::Machine, Lo, "largest load over the run on any main journal of the crankshaft: one journal for a one-throw machine (the mechanism's main bearing, every cylinder's sum), else one each side of every throw, each throw's main-bearing load split half to each (statically determinate, docs/results.md)"),
     def("machine_crank_pin_force_max", "N", R, Group::Machine, Lo, "largest load over the run on any crank pin, a pin carrying every rod on it (a vee's pair, a radial's star)"),
-    def("shaking_force_max", "N", R, Group::Balance, Lo, "largest magnitude over the run of the machine's shaking force on the frame, −Σ m·a of every moving body and rotor (counterweights, balance shafts) of every cylinder"),
+    def("shaking_force_max", "N", R, Group::Balance, Lo, "largest magnitude over the run of the machine's shaking force on the frame, −Σ m·a of every moving body and rotor (counterweights, balance shafts) of every cylinder; with [layout] or [balance] (the shaking taken step by step)"),
     def("shaking_force_order_1", "N", R, Group::Balance, Lo, "amplitude of the shaking force's first order (once per revolution): the largest magnitude over a revolution of its forward and backward rotating components together, |A₁| + |B₁|, at constant speed (the case's initial speed)"),
     def("shaking_force_order_2", "N", R, Group::Balance, Lo, "the same, second order (twice per revolution)"),
     def("shaking_force_order_4", "N", R, Group::Balance, Lo, "the same, fourth order"),
-    def("shaking_moment_max", "N*m", R, Group::Balance, Lo, "largest magnitude over the run of the machine's free moment about the crank-axis point midway between its outermost cylinders (pitch and yaw; the roll reaction is not part of it)"),
+    def("shaking_moment_max", "N*m", R, Group::Balance, Lo, "largest magnitude over the run of the machine's free moment about the crank-axis point midway between its outermost cylinders (pitch and yaw; the roll reaction is not part of it); with [layout] or [balance]"),
     def("shaking_moment_order_1", "N*m", R, Group::Balance, Lo, "amplitude of the free moment's first order, |A₁| + |B₁|, at constant speed (the case's initial speed)"),
     def("shaking_moment_order_2", "N*m", R, Group::Balance, Lo, "the same, second order"),
     def("torque_nonuniformity", "1", R, Group::Balance, Lo, "(machine_torque_max − machine_torque_min)/|machine_torque_mean| of the machine's drive torque (every cylinder's, with [friction] its losses), where its mean is not zero"),

@@ -51,9 +51,9 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("friction_torque_nm", "with [friction]: the drive torque that covers the losses, Σ P / ω"),
     ("power_loss_{component}_w", "with [friction]: one loss component's power (rings, skirt, a slide, a revolute joint's bearings by joint name, a gear mesh by joint name)"),
     // The whole machine (issues 24, 35; the `machine_stage` of cardan-dynamics).
-    ("shaking_force_x_n", "the machine's shaking force on the frame, x: −Σ m·a of every moving body and rotor (counterweights, balance shafts) of every cylinder"),
+    ("shaking_force_x_n", "with [layout] or [balance]: the machine's shaking force on the frame, x: −Σ m·a of every moving body and rotor (counterweights, balance shafts) of every cylinder"),
     ("shaking_force_y_n", "the same, y"),
-    ("shaking_moment_pitch_nm", "the machine's free moment about the horizontal axis across the crank axis, at the crank-axis point midway between the outermost cylinders"),
+    ("shaking_moment_pitch_nm", "with [layout] or [balance]: the machine's free moment about the horizontal axis across the crank axis, at the crank-axis point midway between the outermost cylinders"),
     ("shaking_moment_yaw_nm", "the same, about the vertical axis"),
     ("machine_torque_nm", "the whole crankshaft's drive torque: every cylinder's gas and inertia at its own crank angle, axis and firing phase, plus with [friction] every cylinder's Σ P / ω; one cylinder: its total_torque_nm (+ friction_torque_nm)"),
     ("main_bearing_{k}_force_x_n", "load on the crankshaft at main journal k (from 1, along the crank axis) from the frame, x in the machine frame: one journal for a one-throw machine (its cylinders' main-bearing loads summed), else one each side of every throw, each throw's load split half to each"),
@@ -318,8 +318,9 @@ mod tests {
             bore: 0.12,
             pin_offset: 0.0,
         };
-        let balance: Vec<StageColumn> = cardan_dynamics::machine_stage::COLUMNS
-            .iter()
+        let machine = cardan_dynamics::machine_stage::SHAKING_COLUMNS;
+        let balance: Vec<StageColumn> = (machine.iter())
+            .chain([&cardan_dynamics::machine_stage::TORQUE_COLUMN])
             .enumerate()
             .map(|(value, name)| StageColumn {
                 name: name.to_string(),
