@@ -73,4 +73,4 @@ pub use mesh_loss::{
     mesh_loss, mesh_loss_with, LossOptions, Lubricant, MeshGeometry, MeshLoss, MeshSpeeds,
     PreparedMeshLoss, Reading,
 };
-pub use tooth_root::{iso6336_method_b, Member, RootFactors, RootSection, Which};
+pub use tooth_root::{iso6336_method_b, GeneratedMember, PairMember, RootFactors, RootSection};

@@ -75,7 +75,9 @@
 //! `chamber_angle_deg` (δ between links 1 and 2, eq 15), `mechanical_advantage` (eq 21).
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{Bearings, Body, Extra, Joint, JointKind, MeshForce, Piston, State, Topology};
+use crate::model::{
+    Bearings, Body, ExtraColumn, Joint, JointKind, MeshForce, Piston, State, Topology,
+};
 use crate::{check_length, number, CrankState, Entry, MachineGeometry, Mechanism, StateBlock};
 use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
@@ -360,15 +362,15 @@ impl Hypotrochoid {
             pistons,
             crankshaft: CRANKSHAFT,
             extras: vec![
-                Extra {
+                ExtraColumn {
                     name: "carrier_angle_vidinsky_deg",
                     meaning: "carrier angle θ of Vidinsky (2021), clockwise positive, deg",
                 },
-                Extra {
+                ExtraColumn {
                     name: "chamber_angle_deg",
                     meaning: "angle δ between piston links 1 and 2 (Vidinsky eq 15), deg",
                 },
-                Extra {
+                ExtraColumn {
                     name: "mechanical_advantage",
                     meaning: "F_out at the crank pin over F_in between piston links 1 and 2 (Vidinsky eq 21)",
                 },
