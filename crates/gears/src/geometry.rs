@@ -153,7 +153,7 @@ pub struct GearPair {
     pub base_pitch: f64,
     /// Length of path of contact `gα = ½[√(da1²−db1²) ± √(da2²−db2²)] − |a| sin α_op`
     /// (ISO 21771, `+` external, `−` internal) \[m\]. A tip circle inside its base circle counts
-    /// as ending on the base circle (see [`CheckKind::RingTipInsideBaseCircle`]).
+    /// as ending on the base circle (see [`checks::CheckKind::RingTipInsideBaseCircle`]).
     pub path_of_contact: f64,
     /// Transverse contact ratio `εα = gα / pb` \[-\].
     pub contact_ratio: f64,
