@@ -103,25 +103,25 @@ pub enum FmepWord {
 
 /// An attachment of loss models, as a type: the field type [`Model`] takes its words from the
 /// registry.
-pub trait Site {
+pub trait AttachmentType {
     const ATTACHMENT: Attachment;
     /// The name used in the JSON Schema's definitions.
     const NAME: &'static str;
 }
 
-macro_rules! sites {
+macro_rules! attachment_types {
     ($($(#[$doc:meta])* $name:ident => $attachment:ident),* $(,)?) => {$(
         $(#[$doc])*
         #[derive(Debug, Clone, Copy, PartialEq, Eq)]
         pub struct $name;
-        impl Site for $name {
+        impl AttachmentType for $name {
             const ATTACHMENT: Attachment = Attachment::$attachment;
             const NAME: &'static str = concat!(stringify!($name), "Model");
         }
     )*};
 }
 
-sites!(
+attachment_types!(
     /// The rings of the pistons.
     Rings => Rings,
     /// A piston's slide on the frame.
@@ -138,17 +138,17 @@ sites!(
 #[derive(Debug, Clone, Copy)]
 pub struct Model<S> {
     pub model: Option<&'static LossModel>,
-    site: PhantomData<S>,
+    attachment: PhantomData<S>,
 }
 
-impl<S: Site> Model<S> {
+impl<S: AttachmentType> Model<S> {
     /// The word as written.
     pub fn word(&self) -> &'static str {
         self.model.map_or(NONE, |m| m.name)
     }
 }
 
-impl<'de, S: Site> Deserialize<'de> for Model<S> {
+impl<'de, S: AttachmentType> Deserialize<'de> for Model<S> {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         let word = String::deserialize(deserializer)?;
         let model = loss_models::find(S::ATTACHMENT, &word);
@@ -160,19 +160,19 @@ impl<'de, S: Site> Deserialize<'de> for Model<S> {
         }
         Ok(Self {
             model,
-            site: PhantomData,
+            attachment: PhantomData,
         })
     }
 }
 
 /// Its word.
-impl<S: Site> serde::Serialize for Model<S> {
+impl<S: AttachmentType> serde::Serialize for Model<S> {
     fn serialize<Ser: serde::Serializer>(&self, serializer: Ser) -> Result<Ser::Ok, Ser::Error> {
         serializer.serialize_str(self.word())
     }
 }
 
-impl<S: Site> JsonSchema for Model<S> {
+impl<S: AttachmentType> JsonSchema for Model<S> {
     fn schema_name() -> Cow<'static, str> {
         S::NAME.into()
     }

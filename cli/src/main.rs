@@ -24,47 +24,7 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Run every case under PATHS and write OUT/CASE/summary.json and MECHANISM.csv.
-    Run {
-        /// Case files, or folders searched recursively for *.toml.
-        #[arg(required = true)]
-        paths: Vec<PathBuf>,
-        /// Output folder; each case's folder in it is replaced as a whole.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// Worker threads (default: one per core; more than the cores are capped to them).
-        #[arg(long)]
-        jobs: Option<usize>,
-        /// Write no per-step CSV, whatever the cases' output tables say.
-        #[arg(long)]
-        no_csv: bool,
-        /// Write every case's per-step NPY file (binary, column after column, with
-        /// MECHANISM.columns.json), whatever the cases' output tables say.
-        #[arg(long)]
-        npy: bool,
-        /// Run only the cases whose name matches PATTERN (`*` matches anything; without `*`,
-        /// any name containing PATTERN).
-        #[arg(long, value_name = "PATTERN")]
-        only: Option<String>,
-        /// No progress bar (it shows on a terminal when a run takes more than a second).
-        #[arg(long)]
-        quiet: bool,
-        /// Write no comparison reports (report.md, report.html and plots/ per case and sweep,
-        /// OUT/index.html).
-        #[arg(long)]
-        no_report: bool,
-        /// Run cases whose per-step files would exceed 10 GB (estimated from steps, columns
-        /// and bytes per value as the case's [output] asks); without it they are refused.
-        #[arg(long)]
-        allow_large: bool,
-        /// Keep every case folder an earlier (killed) run left complete, written by this
-        /// program from the same input (its run.json), and run the rest.
-        #[arg(long)]
-        resume: bool,
-        /// Run only the K-th of N parts of the cases (sweeps expanded; parts balanced by
-        /// expected cost), for `cardan merge` to gather (see docs/cluster.md).
-        #[arg(long, value_name = "K/N", value_parser = cardan_runner::run::shard::parse_shard)]
-        shard: Option<(usize, usize)>,
-    },
+    Run(RunArgs),
     /// Gather the output folders of the N shards of one run (`cardan run --shard K/N`) into
     /// what one run writes; shards of other inputs or another program are refused.
     Merge {
@@ -103,6 +63,50 @@ enum Command {
         #[arg(long, default_value = "out")]
         out: PathBuf,
     },
+}
+
+/// `cardan run`'s options.
+#[derive(clap::Args)]
+struct RunArgs {
+    /// Case files, or folders searched recursively for *.toml.
+    #[arg(required = true)]
+    paths: Vec<PathBuf>,
+    /// Output folder; each case's folder in it is replaced as a whole.
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// Worker threads (default: one per core; more than the cores are capped to them).
+    #[arg(long)]
+    jobs: Option<usize>,
+    /// Write no per-step CSV, whatever the cases' output tables say.
+    #[arg(long)]
+    no_csv: bool,
+    /// Write every case's per-step NPY file (binary, column after column, with
+    /// MECHANISM.columns.json), whatever the cases' output tables say.
+    #[arg(long)]
+    npy: bool,
+    /// Run only the cases whose name matches PATTERN (`*` matches anything; without `*`,
+    /// any name containing PATTERN).
+    #[arg(long, value_name = "PATTERN")]
+    only: Option<String>,
+    /// No progress bar (it shows on a terminal when a run takes more than a second).
+    #[arg(long)]
+    quiet: bool,
+    /// Write no comparison reports (report.md, report.html and plots/ per case and sweep,
+    /// OUT/index.html).
+    #[arg(long)]
+    no_report: bool,
+    /// Run cases whose per-step files would exceed 10 GB (estimated from steps, columns
+    /// and bytes per value as the case's [output] asks); without it they are refused.
+    #[arg(long)]
+    allow_large: bool,
+    /// Keep every case folder an earlier (killed) run left complete, written by this
+    /// program from the same input (its run.json), and run the rest.
+    #[arg(long)]
+    resume: bool,
+    /// Run only the K-th of N parts of the cases (sweeps expanded; parts balanced by
+    /// expected cost), for `cardan merge` to gather (see docs/cluster.md).
+    #[arg(long, value_name = "K/N", value_parser = cardan_runner::run::shard::parse_shard)]
+    shard: Option<(usize, usize)>,
 }
 
 /// `cardan slurm`'s options.
@@ -385,6 +389,89 @@ fn merge(
     Ok((report.written.len() + report.sweeps.len(), report.failures))
 }
 
+/// `cardan run`: the batch run with a progress bar, each case written told on stdout; the
+/// number of cases and sweeps written and the failures, or the exit code of a usage error.
+fn run(args: RunArgs) -> Result<(usize, Vec<String>), ExitCode> {
+    let RunArgs {
+        paths,
+        out,
+        jobs,
+        no_csv,
+        npy,
+        only,
+        quiet,
+        no_report,
+        allow_large,
+        resume,
+        shard,
+    } = args;
+    if jobs == Some(0) {
+        eprintln!("error: --jobs must be at least 1");
+        return Err(ExitCode::from(2));
+    }
+    if shard.is_some() && only.is_some() {
+        eprintln!(
+            "error: --shard and --only cannot be combined: a shard is a part of the whole batch"
+        );
+        return Err(ExitCode::from(2));
+    }
+    let started = std::time::Instant::now();
+    let bar = progress_bar(quiet);
+    let progress = bar.clone();
+    let options = RunOptions {
+        jobs,
+        csv: no_csv.then_some(false),
+        npy: npy.then_some(true),
+        only,
+        reports: !no_report,
+        allow_large,
+        resume,
+        shard,
+        max_bytes: None,
+        progress: Some(std::sync::Arc::new(move |done, total| {
+            progress.set_length(total as u64);
+            progress.set_position(done as u64);
+        })),
+    };
+    let report = cardan_runner::run_paths(&paths, &out, options);
+    bar.finish_and_clear();
+    // A sweep's points are told by one line for the sweep, not one each.
+    let in_sweep = |dir: &std::path::Path| {
+        report
+            .sweeps
+            .iter()
+            .any(|(_, s, _)| dir.parent() == Some(s.as_path()))
+    };
+    for (name, dir) in &report.written {
+        if !in_sweep(dir) {
+            println!("ok      {name} -> {}", dir.display());
+        }
+    }
+    for (name, dir, points) in &report.sweeps {
+        println!(
+            "ok      {name} ({points} point(s) written) -> {}",
+            dir.display()
+        );
+    }
+    println!(
+        "{} case(s) written to {}{}, {} failed, in {:.2} s",
+        report.written.len(),
+        out.display(),
+        if resume {
+            format!(" ({} kept from an earlier run)", report.reused)
+        } else {
+            String::new()
+        },
+        report.failures.len(),
+        started.elapsed().as_secs_f64()
+    );
+    let index = out.join("index.html");
+    if !no_report && index.is_file() {
+        println!("reports: {}", index.display());
+    }
+    Ok((report.written.len() + report.sweeps.len(), report.failures))
+}
+
 fn main() -> ExitCode {
     tracing_subscriber::fmt()
         .with_env_filter(
@@ -401,83 +488,10 @@ fn main() -> ExitCode {
     }
     let cli = Cli::parse();
     let (ok, failures) = match cli.command {
-        Command::Run {
-            paths,
-            out,
-            jobs,
-            no_csv,
-            npy,
-            only,
-            quiet,
-            no_report,
-            allow_large,
-            resume,
-            shard,
-        } => {
-            if jobs == Some(0) {
-                eprintln!("error: --jobs must be at least 1");
-                return ExitCode::from(2);
-            }
-            if shard.is_some() && only.is_some() {
-                eprintln!("error: --shard and --only cannot be combined: a shard is a part of the whole batch");
-                return ExitCode::from(2);
-            }
-            let started = std::time::Instant::now();
-            let bar = progress_bar(quiet);
-            let progress = bar.clone();
-            let options = RunOptions {
-                jobs,
-                csv: no_csv.then_some(false),
-                npy: npy.then_some(true),
-                only,
-                reports: !no_report,
-                allow_large,
-                resume,
-                shard,
-                max_bytes: None,
-                progress: Some(std::sync::Arc::new(move |done, total| {
-                    progress.set_length(total as u64);
-                    progress.set_position(done as u64);
-                })),
-            };
-            let report = cardan_runner::run_paths(&paths, &out, options);
-            bar.finish_and_clear();
-            // A sweep's points are told by one line for the sweep, not one each.
-            let in_sweep = |dir: &std::path::Path| {
-                report
-                    .sweeps
-                    .iter()
-                    .any(|(_, s, _)| dir.parent() == Some(s.as_path()))
-            };
-            for (name, dir) in &report.written {
-                if !in_sweep(dir) {
-                    println!("ok      {name} -> {}", dir.display());
-                }
-            }
-            for (name, dir, points) in &report.sweeps {
-                println!(
-                    "ok      {name} ({points} point(s) written) -> {}",
-                    dir.display()
-                );
-            }
-            println!(
-                "{} case(s) written to {}{}, {} failed, in {:.2} s",
-                report.written.len(),
-                out.display(),
-                if resume {
-                    format!(" ({} kept from an earlier run)", report.reused)
-                } else {
-                    String::new()
-                },
-                report.failures.len(),
-                started.elapsed().as_secs_f64()
-            );
-            let index = out.join("index.html");
-            if !no_report && index.is_file() {
-                println!("reports: {}", index.display());
-            }
-            (report.written.len() + report.sweeps.len(), report.failures)
-        }
+        Command::Run(args) => match run(args) {
+            Ok(done) => done,
+            Err(code) => return code,
+        },
         Command::Gear { file, out } => return gear(&file, &out),
         Command::Slurm(args) => return slurm(args),
         Command::Merge {

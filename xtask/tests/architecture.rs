@@ -30,6 +30,7 @@ fn physics_crates_do_not_depend_on_the_runner() {
         "metrics",
         "losses",
         "loads",
+        "numeric",
     ] {
         let manifest =
             std::fs::read_to_string(root().join(format!("crates/{krate}/Cargo.toml"))).unwrap();
@@ -42,15 +43,18 @@ fn physics_crates_do_not_depend_on_the_runner() {
     }
 }
 
-/// The metric registry depends on nothing: every crate may read it.
+/// The metric registry and the numeric helpers depend on nothing: every crate may read them.
 #[test]
-fn the_metric_registry_depends_on_nothing() {
-    let manifest = std::fs::read_to_string(root().join("crates/metrics/Cargo.toml")).unwrap();
-    let dependencies = manifest.split("[dependencies]").nth(1).unwrap_or("");
-    assert!(
-        dependencies.trim().is_empty(),
-        "crates/metrics has dependencies: {dependencies}"
-    );
+fn the_bottom_crates_depend_on_nothing() {
+    for krate in ["metrics", "numeric"] {
+        let manifest =
+            std::fs::read_to_string(root().join(format!("crates/{krate}/Cargo.toml"))).unwrap();
+        let dependencies = manifest.split("[dependencies]").nth(1).unwrap_or("");
+        assert!(
+            dependencies.trim().is_empty(),
+            "crates/{krate} has dependencies: {dependencies}"
+        );
+    }
 }
 
 /// The case schema is read before anything runs: its crate never depends on the runner, the

@@ -18,12 +18,12 @@ use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
 use cardan_gears::mesh_loss::Lubricant;
 use cardan_gears::{
-    bending_geometry_factor, pitting_geometry_factor, GearPair, GearSet, IForm, Member, MeshStep,
-    Which,
+    bending_geometry_factor, pitting_geometry_factor, GearPair, GearSet, GeneratedMember, IForm,
+    MeshStep, PairMember,
 };
 use cardan_mechanism::{Column, JointKind, Loads, Material, Mechanism, MeshForce, State, C};
 
-use crate::loss::{failed, Loss, LossInput, Site};
+use crate::loss::{failed, BindInput, Loss, LossInput};
 use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
 use crate::mesh::{
@@ -39,11 +39,11 @@ use cardan_gears::materials::material;
 /// ([`cardan_gears::agma908`]).
 fn computed_j(pair: &GearPair) -> Result<[f64; 2], SetupError> {
     let mut j = [0.0; 2];
-    for (k, (which, name)) in [(Which::Pinion, "pinion"), (Which::Gear, "gear")]
+    for (k, (which, name)) in [(PairMember::Pinion, "pinion"), (PairMember::Gear, "gear")]
         .into_iter()
         .enumerate()
     {
-        j[k] = bending_geometry_factor(pair, Member::new(which))
+        j[k] = bending_geometry_factor(pair, GeneratedMember::new(which))
             .map_err(|e| SetupError {
                 field: "gear.j".into(),
                 rule: format!(
@@ -430,7 +430,7 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
     };
     let cycles = [ISO_PINION_CYCLES, ISO_PINION_CYCLES / pair.ratio];
     let member = |k: usize| -> Result<IsoMember, SetupError> {
-        let (which, name) = [(Which::Pinion, "pinion"), (Which::Gear, "gear")][k];
+        let (which, name) = [(PairMember::Pinion, "pinion"), (PairMember::Gear, "gear")][k];
         let hardness = (spec.material == GearMaterial::ThroughHardened).then_some(spec.hardness[k]);
         let limits = table.iso_limits(hardness, spec.iso_quality).map_err(|e| {
             failed(
@@ -442,7 +442,7 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
                 ),
             )
         })?;
-        let root = cardan_gears::iso6336_method_b(pair, Member::new(which)).map_err(|e| {
+        let root = cardan_gears::iso6336_method_b(pair, GeneratedMember::new(which)).map_err(|e| {
             failed(
                 "gear",
                 &format!("the {name}'s ISO 6336-3 Y_F and Y_S cannot be computed from the tooth form ({e})"),
@@ -497,7 +497,7 @@ fn mesh_loss(
         .and_then(|f| f.gear_mesh)
         .or_else(|| find(Attachment::GearMesh, "corrected"))
         .expect("the registry has the corrected mesh loss");
-    let site = Site {
+    let site = BindInput {
         parameters: &f.parameters,
         oil: &f.oil,
         pair: spec,

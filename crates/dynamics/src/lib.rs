@@ -45,8 +45,8 @@ pub use cardan_loads::{
 };
 pub use cardan_losses::{
     engine_metrics, fmep_breakdown, pnh_engine, radial, tangential, Attachment, BearingSize, Bind,
-    CircularArcCam, EngineLosses, FmepModel, FollowerContact, Friction, GearMaterial, GearSpec,
-    Loss, LossBudget, LossInput, LossModel, Oil, Parameters, Site, ToothLoad, ValveTrain,
+    BindInput, CircularArcCam, EngineLosses, FmepModel, FollowerContact, Friction, GearMaterial,
+    GearSpec, Loss, LossBudget, LossInput, LossModel, Oil, Parameters, ToothLoad, ValveTrain,
     ValveTrainGeometry, ValveTrainLoss, LOSS_MODELS,
 };
 pub use cardan_pipeline::{

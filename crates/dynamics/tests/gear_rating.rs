@@ -72,12 +72,15 @@ fn the_dynamic_tooth_load_is_buckingham_on_the_tangential_load() {
         karhula.gear = karhula.gear.with_addendum(0.8);
         let pair = cardan_gears::GearPair::new(karhula).unwrap();
         let j = |which| {
-            cardan_gears::bending_geometry_factor(&pair, cardan_gears::Member::new(which))
+            cardan_gears::bending_geometry_factor(&pair, cardan_gears::GeneratedMember::new(which))
                 .unwrap()
                 .j
         };
         let given = GearSpec {
-            j: Some([j(cardan_gears::Which::Pinion), j(cardan_gears::Which::Gear)]),
+            j: Some([
+                j(cardan_gears::PairMember::Pinion),
+                j(cardan_gears::PairMember::Gear),
+            ]),
             ..GearSpec::default()
         };
         let (g, _) = rate(&given, w, C::new(8000.0, 3000.0));

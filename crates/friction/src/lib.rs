@@ -40,6 +40,8 @@ pub mod rings;
 pub mod rolling_bearing;
 pub mod skirt;
 
+/// The memo of [`RollingModel::loss_kept`], from the crate the gear mesh loss shares it with.
+pub use cardan_numeric::KeptPower;
 pub use engine::{
     bishop_pumps_misc_mep, bishop_throttling_mep, cam_drive_torque, flat_follower_friction,
     follower_load, mep_power, pnh_fmep, roller_follower_friction, FmepBreakdown, Follower,
@@ -54,8 +56,8 @@ pub use rings::{
     RingFilmState, RingLoad, RingProfile, KARHULA_RING_MU,
 };
 pub use rolling_bearing::{
-    rolling_bearing_loss, KarhulaBearingSizes, KeptPower, PalmgrenCoefficients, RollingBearing,
-    RollingLoss, RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
+    rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing, RollingLoss,
+    RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
     KARHULA_LOAD_CONSTANT_PRINTED,
 };
 pub use skirt::{coulomb_sliding, karhula_skirt, viscous_skirt, ViscousSkirt, KARHULA_SKIRT_MU};

@@ -14,6 +14,7 @@
 //! seals, drag and replenishment; speed is the relative angular speed of the two rings.
 
 use crate::{positive, FrictionError};
+use cardan_numeric::KeptPower;
 use std::f64::consts::PI;
 
 /// A rolling bearing as the friction models see it.
@@ -319,35 +320,6 @@ impl RollingModel {
             friction_torque: total,
             power: total * w,
         }
-    }
-}
-
-/// A power x^e of one exponent kept with its argument x, so that a model evaluated step by
-/// step with an argument that does not change (a joint's speed at a constant crank speed)
-/// takes it once; the bits are `powf`'s.
-#[derive(Debug, Clone, Copy)]
-pub struct KeptPower {
-    argument: f64,
-    power: f64,
-}
-
-impl Default for KeptPower {
-    /// Nothing kept (NaN's bits are never an argument's).
-    fn default() -> Self {
-        Self {
-            argument: f64::NAN,
-            power: f64::NAN,
-        }
-    }
-}
-
-impl KeptPower {
-    /// `x.powf(e)`, `e` being the same at every call.
-    pub fn pow(&mut self, x: f64, e: f64) -> f64 {
-        if self.argument.to_bits() != x.to_bits() {
-            (self.argument, self.power) = (x, x.powf(e));
-        }
-        self.power
     }
 }
 

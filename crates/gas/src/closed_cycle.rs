@@ -41,7 +41,7 @@
 //! - Energy fractions of §5.1.1 (docs/validation/nunes-2017.md R5.1.9): the vaporisation heat
 //!   counts as heat loss.
 
-use crate::{require, Chamber, GasError, GasMetric, GasModel, PreparedGas};
+use crate::{require, Chamber, Cylinder, GasError, GasMetric, GasModel, PreparedGas};
 use std::f64::consts::PI;
 
 /// The coarsest integration step, rad (5°): the Wiebe burn of about 30° must span several
@@ -354,9 +354,10 @@ impl ClosedCycle {
         Some(ch + cr)
     }
 
-    /// The closed cycle from IVC to EVO at the mean crank speed `speed` (rad/s), on Blair's
-    /// finite-difference first law (eqs 3.4-3.8) with the phases of eqs 3.9-3.17.
-    pub fn trace(&self, chamber: &Chamber, speed: f64) -> Result<ClosedCycleTrace, GasError> {
+    /// The inputs of [`ClosedCycle::trace`] checked (the model's own, a clearance volume, a
+    /// positive speed), and the combustion's start and duration at `speed` (eqs 3.1-3.2), rad,
+    /// checked to lie within the closed cycle.
+    fn checked_timing(&self, chamber: &Chamber, speed: f64) -> Result<(f64, f64), GasError> {
         self.validate()?;
         let cyl = chamber.cylinder;
         require(
@@ -382,7 +383,61 @@ impl ClosedCycle {
             "must be positive at the mean crank speed (eq 3.2: combustion_duration + \
              combustion_duration_per_speed × speed)",
         )?;
+        Ok((start, duration))
+    }
 
+    /// The heat-transfer coefficient at the state `s` at the start of a step (eq 2.39's h),
+    /// W/(m²·K); beyond the range of the Annand fits, the input at fault: the compression where
+    /// the isentropic compression from IVC alone (T·V^(γ−1) constant), at `compressed` K,
+    /// would already be too hot, else the fuel.
+    fn step_heat_transfer(
+        &self,
+        cyl: &Cylinder,
+        s: &Point,
+        compressed: f64,
+        sp: f64,
+    ) -> Result<f64, GasError> {
+        self.heat_transfer_coefficient(cyl.bore, s.p, s.t, sp)
+            .ok_or_else(
+                || match self.heat_transfer_coefficient(cyl.bore, s.p, compressed, sp) {
+                    Some(_) => GasError {
+                        field: "fuel_heating_value",
+                        value: self.fuel_heating_value,
+                        rule: "heats the gas beyond the range of the Annand property fits \
+                               (eqs 2.34, 2.36)",
+                    },
+                    None => GasError {
+                        field: "compression_ratio",
+                        value: (cyl.swept_volume + cyl.clearance_volume) / cyl.clearance_volume,
+                        rule: "compresses the gas beyond the range of the Annand property fits \
+                               (eqs 2.34, 2.36) by itself, whatever the fuel's heat",
+                    },
+                },
+            )
+    }
+
+    /// The energy balance's totals at the last point `s` of a cycle that started with the
+    /// internal energy `u0`, J: heat released, lost and taken by vaporisation, work, the change
+    /// of internal energy and the exhaust's energy above ambient (eqs 3.4-3.8's sums).
+    fn closing_balance(&self, s: &Point, u0: f64) -> EnergyBalance {
+        let (r, g, t1) = (self.gas_constant, self.gamma, self.ambient_temperature);
+        EnergyBalance {
+            heat_released: s.q_r,
+            heat_loss: s.q_l,
+            vaporisation_heat: s.q_v,
+            work: s.w,
+            internal_energy_change: s.p * s.v / (g - 1.0) - u0,
+            exhaust_energy: s.m * r / (g - 1.0) * (s.t - t1),
+            ..EnergyBalance::default()
+        }
+    }
+
+    /// The closed cycle from IVC to EVO at the mean crank speed `speed` (rad/s), on Blair's
+    /// finite-difference first law (eqs 3.4-3.8) with the phases of eqs 3.9-3.17.
+    pub fn trace(&self, chamber: &Chamber, speed: f64) -> Result<ClosedCycleTrace, GasError> {
+        let cyl = chamber.cylinder;
+        let (start, duration) = self.checked_timing(chamber, speed)?;
+        let (ivc, evo) = (self.intake_closing, self.exhaust_opening);
         let (r, g, p1, t1) = (
             self.gas_constant,
             self.gamma,
@@ -403,11 +458,6 @@ impl ClosedCycle {
         let stroke = cyl.stroke();
         let sp = 2.0 * stroke * speed / (2.0 * PI); // (2.33)
         let vap_span = start - ivc; // θ_vap (2.41), rad
-        let too_hot = GasError {
-            field: "fuel_heating_value",
-            value: self.fuel_heating_value,
-            rule: "heats the gas beyond the range of the Annand property fits (eqs 2.34, 2.36)",
-        };
 
         let v = volume(ivc)?;
         let mut s = Point {
@@ -431,22 +481,7 @@ impl ClosedCycle {
             let xb2 = self.burned_fraction(a2, start, duration);
             let dq_r = eta_c * (xb2 - s.xb) * fuel * self.fuel_heating_value;
             // Heat loss (2.39) from the state at the start of the step.
-            // Too hot where the isentropic compression from IVC alone (T·V^(γ−1) constant)
-            // would already be: the compression did it, not the fuel.
-            let compressed = t1 * (v / s.v).powf(g - 1.0);
-            let hc =
-                self.heat_transfer_coefficient(cyl.bore, s.p, s.t, sp)
-                    .ok_or_else(|| {
-                        match self.heat_transfer_coefficient(cyl.bore, s.p, compressed, sp) {
-                    Some(_) => too_hot.clone(),
-                    None => GasError {
-                        field: "compression_ratio",
-                        value: (cyl.swept_volume + cyl.clearance_volume) / cyl.clearance_volume,
-                        rule: "compresses the gas beyond the range of the Annand property fits \
-                               (eqs 2.34, 2.36) by itself, whatever the fuel's heat",
-                    },
-                }
-                    })?;
+            let hc = self.step_heat_transfer(&cyl, &s, t1 * (v / s.v).powf(g - 1.0), sp)?;
             let dq_l = hc * (s.t - self.wall_temperature) * cyl.wall_area(s.v) * dt;
             // (3.5)
             let p2 = (2.0 * (dq_r - dq_l - dq_vap) + s.p * (g6 * s.v - v2)) / (g6 * v2 - s.v);
@@ -472,12 +507,7 @@ impl ClosedCycle {
             };
             tr.push(&s);
         }
-        let (ip, &pmax) = tr
-            .pressure
-            .iter()
-            .enumerate()
-            .max_by(|a, b| a.1.total_cmp(b.1))
-            .unwrap_or((0, &p1));
+        let (peak_pressure, peak_pressure_angle) = tr.peak_pressure(p1);
         tr.balance = EnergyBalance {
             combustion_start: start,
             combustion_duration: duration,
@@ -485,14 +515,9 @@ impl ClosedCycle {
             trapped_mass: tr.mass[0],
             fuel_mass: fuel,
             fuel_energy: fuel * self.fuel_heating_value,
-            heat_released: s.q_r,
-            heat_loss: s.q_l,
-            vaporisation_heat: s.q_v,
-            work: s.w,
-            internal_energy_change: s.p * s.v / (g - 1.0) - u0,
-            exhaust_energy: s.m * r / (g - 1.0) * (s.t - t1),
-            peak_pressure: pmax,
-            peak_pressure_angle: tr.angle[ip],
+            peak_pressure,
+            peak_pressure_angle,
+            ..self.closing_balance(&s, u0)
         };
         Ok(tr)
     }
@@ -525,6 +550,18 @@ impl ClosedCycleTrace {
         self.heat_loss.push(s.q_l);
         self.vaporisation_heat.push(s.q_v);
         self.work.push(s.w);
+    }
+
+    /// The highest pressure of the trace, Pa, and its angle, rad (`otherwise` at the first
+    /// point if no pressure compares highest).
+    fn peak_pressure(&self, otherwise: f64) -> (f64, f64) {
+        let (ip, &pmax) = self
+            .pressure
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(b.1))
+            .unwrap_or((0, &otherwise));
+        (pmax, self.angle[ip])
     }
 }
 

@@ -69,8 +69,39 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
     let given = given_fields(text);
     let z = raw.teeth.0.map(|t| t.0);
 
-    // Module, or the cardan crank length it follows from.
-    let (module, crank) = match (&raw.module, &raw.cardan_crank_length) {
+    let (module, crank) = module_of(&raw, z, &invalid)?;
+    let spec = pair_spec(&raw, &table, module, z, &invalid)?;
+    // The geometry is validated here, so that a bad pair is an input error of this file.
+    let pair = GearPair::new(spec).map_err(|e| geometry_error(e, &table, &invalid))?;
+
+    let rack_tip_radius = rack_tip_radius(&raw, &table, module, &invalid)?;
+    let face_width = raw.face_width.as_ref().map(|w| w.si);
+    let rating = rating_of(&raw, face_width, &pair, &invalid)?;
+    if let Some(r) = &rating {
+        computable_j(r, &pair, rack_tip_radius, &table, &invalid)?;
+    }
+    let measurement = iso_input::measurement(&raw.measurement, z, &invalid)?;
+    Ok(GearFile {
+        file: file.into(),
+        name: raw.name,
+        spec,
+        cardan_crank_length: crank,
+        face_width,
+        rack_tip_radius,
+        rating,
+        measurement,
+        given,
+    })
+}
+
+/// The module, m, and the cardan crank length it follows from, if the file gives that instead
+/// (`module` or `cardan_crank_length`, exactly one).
+fn module_of(
+    raw: &GearFileTable,
+    z: [i32; 2],
+    invalid: &Invalid,
+) -> Result<(f64, Option<f64>), GearFileError> {
+    Ok(match (&raw.module, &raw.cardan_crank_length) {
         (Some(m), None) => {
             // A module is millimetres (ISO 54: 0.05…100 mm): a bare number above 0.1 m was
             // meant in mm, as a bare crank of 60 is refused in case files.
@@ -108,7 +139,18 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
                 "give module (a length, e.g. \"3 mm\") or cardan_crank_length",
             ))
         }
-    };
+    })
+}
+
+/// The pair's specification from the module and the file's teeth, pressure angle, profile
+/// shifts, tips, dedenda, thickness allowances, centre distance and teeth difference.
+fn pair_spec(
+    raw: &GearFileTable,
+    table: &toml::Table,
+    module: f64,
+    z: [i32; 2],
+    invalid: &Invalid,
+) -> Result<PairSpec, GearFileError> {
     let mut spec = PairSpec::standard(module, z[0], z[1], raw.pressure_angle.si, 0.0, 0.0);
     if let Some(x) = &raw.profile_shift {
         [spec.pinion.shift, spec.gear.shift] = x.si();
@@ -146,27 +188,7 @@ pub fn parse(file: &Path, text: &str) -> Result<GearFile, GearFileError> {
     if let Some(d) = raw.min_teeth_difference {
         spec.min_teeth_difference = d.0;
     }
-    // The geometry is validated here, so that a bad pair is an input error of this file.
-    let pair = GearPair::new(spec).map_err(|e| geometry_error(e, &table, &invalid))?;
-
-    let rack_tip_radius = rack_tip_radius(&raw, &table, module, &invalid)?;
-    let face_width = raw.face_width.as_ref().map(|w| w.si);
-    let rating = rating_of(&raw, face_width, &pair, &invalid)?;
-    if let Some(r) = &rating {
-        computable_j(r, &pair, rack_tip_radius, &table, &invalid)?;
-    }
-    let measurement = iso_input::measurement(&raw.measurement, z, &invalid)?;
-    Ok(GearFile {
-        file: file.into(),
-        name: raw.name,
-        spec,
-        cardan_crank_length: crank,
-        face_width,
-        rack_tip_radius,
-        rating,
-        measurement,
-        given,
-    })
+    Ok(spec)
 }
 
 /// A J not given must be computable from the tooth form (`super::rating::member_j`): else
@@ -290,61 +312,15 @@ fn geometry_error(e: GearError, table: &toml::Table, invalid: &Invalid) -> GearF
     }
 }
 
+/// The `[rating]` table's inputs, each checked and in SI, in the order a file's errors are
+/// reported.
 fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, GearFileError> {
-    let gear_err =
-        |field: &str, v: &dyn std::fmt::Display, e: GearError| invalid(field, v, &e.to_string());
     let factor = |f: &Option<Positive<Number>>| f.as_ref().map_or(1.0, |q| q.si);
 
-    let (load, load_field, written) = match (&r.power, &r.torque) {
-        (Some(p), None) => (Load::Power(p.si), "rating.power", &p.written),
-        (None, Some(t)) => (Load::Torque(t.si), "rating.torque", &t.written),
-        (Some(p), Some(_)) => {
-            return Err(invalid(
-                "rating.power",
-                &p.written,
-                "give power or the pinion torque, not both",
-            ))
-        }
-        (None, None) => {
-            return Err(invalid(
-                "rating.power",
-                &"(missing)",
-                "give power (e.g. \"4 hp\", \"3 kW\") or the pinion torque (\"20 N*m\")",
-            ))
-        }
-    };
-    let (Load::Power(load_value) | Load::Torque(load_value)) = load;
-    if load_value <= 0.0 {
-        return Err(invalid(
-            load_field,
-            written,
-            "must be positive (a pair without load has no rating: leave out [rating] for the geometry only)",
-        ));
-    }
-
+    let load = load(r, invalid)?;
     let kv = kv_input(r, invalid)?;
-    let reliability_factor = match (&r.reliability, &r.reliability_factor) {
-        (Some(v), None) => reliability_factor_table(v.si)
-            .or_else(|_| reliability_factor_fit(v.si))
-            .map_err(|e| gear_err("rating.reliability", &v.written, e))?,
-        (None, Some(k)) => k.si,
-        (Some(v), Some(_)) => {
-            return Err(invalid(
-                "rating.reliability",
-                &v.written,
-                "give reliability or reliability_factor (KR), not both",
-            ))
-        }
-        (None, None) => 1.0,
-    };
-    let pinion_cycles = match &r.pinion_cycles {
-        Some(n) => {
-            pitting_cycle_factor(n.si, false)
-                .map_err(|e| gear_err("rating.pinion_cycles", &n.written, e))?;
-            n.si
-        }
-        None => DEFAULT_PINION_CYCLES,
-    };
+    let reliability_factor = reliability_factor(r, invalid)?;
+    let pinion_cycles = pinion_cycles(r, invalid)?;
     let i = match r
         .geometry_factor_i
         .clone()
@@ -371,24 +347,7 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
 
     let elastic = elastic(r, &members, invalid)?;
     let iso = iso_input::iso_rating(r, &members, invalid)?;
-    let required_safety_factor = match &r.required_safety_factor {
-        None => 1.0,
-        Some(n) if !n.si.is_finite() => {
-            return Err(invalid(
-                "rating.required_safety_factor",
-                &n.written,
-                "must be a finite number",
-            ))
-        }
-        Some(n) if n.si < 1.0 => {
-            return Err(invalid(
-                "rating.required_safety_factor",
-                &n.written,
-                "must be >= 1 (below 1 the pair is expected to break)",
-            ))
-        }
-        Some(n) => n.si,
-    };
+    let required_safety_factor = required_safety_factor(r, invalid)?;
 
     Ok(RatingInputs {
         load,
@@ -429,6 +388,91 @@ fn parse_rating(r: &RatingTable, invalid: &Invalid) -> Result<RatingInputs, Gear
         required_safety_factor,
         basis,
         iso,
+    })
+}
+
+/// The load to rate the pair at: `power` or the pinion's `torque`, exactly one, positive.
+fn load(r: &RatingTable, invalid: &Invalid) -> Result<Load, GearFileError> {
+    let (load, load_field, written) = match (&r.power, &r.torque) {
+        (Some(p), None) => (Load::Power(p.si), "rating.power", &p.written),
+        (None, Some(t)) => (Load::Torque(t.si), "rating.torque", &t.written),
+        (Some(p), Some(_)) => {
+            return Err(invalid(
+                "rating.power",
+                &p.written,
+                "give power or the pinion torque, not both",
+            ))
+        }
+        (None, None) => {
+            return Err(invalid(
+                "rating.power",
+                &"(missing)",
+                "give power (e.g. \"4 hp\", \"3 kW\") or the pinion torque (\"20 N*m\")",
+            ))
+        }
+    };
+    let (Load::Power(load_value) | Load::Torque(load_value)) = load;
+    if load_value <= 0.0 {
+        return Err(invalid(
+            load_field,
+            written,
+            "must be positive (a pair without load has no rating: leave out [rating] for the geometry only)",
+        ));
+    }
+    Ok(load)
+}
+
+/// The reliability factor K_R: from `reliability` (AGMA 2001-D04 Table 11, else Shigley eq.
+/// 14-38's fit), or given, or 1.
+fn reliability_factor(r: &RatingTable, invalid: &Invalid) -> Result<f64, GearFileError> {
+    Ok(match (&r.reliability, &r.reliability_factor) {
+        (Some(v), None) => reliability_factor_table(v.si)
+            .or_else(|_| reliability_factor_fit(v.si))
+            .map_err(|e| invalid("rating.reliability", &v.written, &e.to_string()))?,
+        (None, Some(k)) => k.si,
+        (Some(v), Some(_)) => {
+            return Err(invalid(
+                "rating.reliability",
+                &v.written,
+                "give reliability or reliability_factor (KR), not both",
+            ))
+        }
+        (None, None) => 1.0,
+    })
+}
+
+/// The pinion's load cycles, checked against the pitting cycle factor's range; else
+/// [`DEFAULT_PINION_CYCLES`].
+fn pinion_cycles(r: &RatingTable, invalid: &Invalid) -> Result<f64, GearFileError> {
+    Ok(match &r.pinion_cycles {
+        Some(n) => {
+            pitting_cycle_factor(n.si, false)
+                .map_err(|e| invalid("rating.pinion_cycles", &n.written, &e.to_string()))?;
+            n.si
+        }
+        None => DEFAULT_PINION_CYCLES,
+    })
+}
+
+/// The safety factor the rating requires: finite and at least 1; 1 when not given.
+fn required_safety_factor(r: &RatingTable, invalid: &Invalid) -> Result<f64, GearFileError> {
+    Ok(match &r.required_safety_factor {
+        None => 1.0,
+        Some(n) if !n.si.is_finite() => {
+            return Err(invalid(
+                "rating.required_safety_factor",
+                &n.written,
+                "must be a finite number",
+            ))
+        }
+        Some(n) if n.si < 1.0 => {
+            return Err(invalid(
+                "rating.required_safety_factor",
+                &n.written,
+                "must be >= 1 (below 1 the pair is expected to break)",
+            ))
+        }
+        Some(n) => n.si,
     })
 }
 

@@ -3,7 +3,7 @@
 
 use super::validated::*;
 use cardan_gears::iso6336::{rate, IsoInputs, IsoMember, IsoRating};
-use cardan_gears::tooth_root::{iso6336_method_b, Member, Which};
+use cardan_gears::tooth_root::{iso6336_method_b, GeneratedMember, PairMember};
 use cardan_gears::GearPair;
 
 /// The ISO rating of the pair, when its inputs are given; an error names what could not be
@@ -37,8 +37,12 @@ pub fn rate_iso(
                 match (m.form_factor, m.stress_correction_factor) {
                     (Some(y_f), Some(y_s)) => (y_f, y_s),
                     _ => {
-                        let which = if k == 0 { Which::Pinion } else { Which::Gear };
-                        let member = Member {
+                        let which = if k == 0 {
+                            PairMember::Pinion
+                        } else {
+                            PairMember::Gear
+                        };
+                        let member = GeneratedMember {
                             which,
                             rack_tip_radius: rack_tip_radius[k],
                         };

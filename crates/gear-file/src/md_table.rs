@@ -3,7 +3,7 @@
 //! (`| … | pinion | gear | unit |`), each number by [`num`], so that a value that rounds to
 //! zero prints "0.0000", never "-0.0000".
 
-use cardan_gears::geometry::fixed;
+use cardan_gears::geometry::checks::fixed;
 use std::fmt::Write as _;
 
 /// Text for a Markdown table cell: `|` escaped.

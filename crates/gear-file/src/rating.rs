@@ -4,7 +4,8 @@ use super::validated::*;
 use cardan_gears::{
     bending_cycle_factor, bending_geometry_factor, dynamic_factor, hardness_ratio_factor,
     pitting_cycle_factor, pitting_geometry_factor, BendingJ, CheckKind, CheckReport, GearError,
-    GearPair, GearSetRating, HardnessPairing, JMethod, Member, MemberData, SizeFactor, Which,
+    GearPair, GearSetRating, GeneratedMember, HardnessPairing, JMethod, MemberData, PairMember,
+    SizeFactor,
 };
 
 /// Whether a failed check makes the pair unusable (`Error`) or only breaks a rule of thumb
@@ -87,10 +88,14 @@ impl JSource {
 /// `tip` \[m\] (`None`: the default): AGMA 908-B89 for an external member, ISO 6336-3 method
 /// B for an internal ring.
 pub fn member_j(pair: &GearPair, k: usize, tip: Option<f64>) -> Result<BendingJ, GearError> {
-    let which = if k == 0 { Which::Pinion } else { Which::Gear };
+    let which = if k == 0 {
+        PairMember::Pinion
+    } else {
+        PairMember::Gear
+    };
     bending_geometry_factor(
         pair,
-        Member {
+        GeneratedMember {
             which,
             rack_tip_radius: tip,
         },

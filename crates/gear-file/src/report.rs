@@ -51,8 +51,52 @@ impl GearReport {
     pub fn to_json(&self) -> Value {
         let p = &self.pair;
         let s = &p.spec;
-        let checks: Vec<Value> = self
-            .checks
+        let checks = self.checks_json();
+        let warnings = self.warnings();
+        let rating = self.rating_json();
+        let mut inputs = Map::new();
+        for (k, v) in &self.input.given {
+            inputs.insert(k.clone(), json!(v));
+        }
+        json!({
+            "schema_version": SCHEMA_VERSION,
+            "name": self.input.name,
+            "file": self.input.file.display().to_string(),
+            "pair": if p.internal { "internal" } else { "external" },
+            "passed": self.failures().is_empty(),
+            "failures": self.failures(),
+            "warnings": warnings,
+            "inputs": inputs,
+            "module": s.module,
+            "cardan_crank_length": self.input.cardan_crank_length,
+            "pressure_angle_deg": s.pressure_angle.to_degrees(),
+            "teeth": [s.pinion.teeth, s.gear.teeth],
+            "profile_shift": [s.pinion.shift, s.gear.shift],
+            "ratio": p.ratio,
+            "working_pressure_angle_deg": p.working_pressure_angle.to_degrees(),
+            "operating_pressure_angle_deg": p.operating_pressure_angle.to_degrees(),
+            "working_center_distance": p.working_centre_distance,
+            "center_distance": p.centre_distance,
+            "base_pitch": p.base_pitch,
+            "path_of_contact": p.path_of_contact,
+            "contact_ratio": p.contact_ratio,
+            "backlash_circumferential": p.backlash_circumferential,
+            "backlash_normal": p.backlash_normal,
+            "gear_addendum": p.gear_addendum(),
+            "max_gear_addendum_without_interference": p.max_gear_addendum_without_interference(),
+            "trochoid_ratio": if p.internal { json!(p.trochoid_ratio()) } else { Value::Null },
+            "pinion": diameters_json(&p.pinion),
+            "gear": diameters_json(&p.gear),
+            "face_width": self.input.face_width,
+            "checks": checks,
+            "rating": rating,
+            "measurement": super::iso_rating::measurement_json(&self.input),
+        })
+    }
+
+    /// `gear.json`'s `checks`: each check's name, severity, outcome, margin, rule and remedies.
+    fn checks_json(&self) -> Vec<Value> {
+        self.checks
             .iter()
             .map(|c| {
                 let (name, severity, meaning) = check_info(c.kind);
@@ -65,9 +109,13 @@ impl GearReport {
                     "remedies": c.remedies.iter().map(|r| r.to_string()).collect::<Vec<_>>(),
                 })
             })
-            .collect();
-        let warnings = self.warnings();
-        let rating = match &self.rating {
+            .collect()
+    }
+
+    /// `gear.json`'s `rating`: `null` without a `[rating]` table, its error, or the AGMA
+    /// rating's factors, each member's stresses and safety factors, and the ISO 6336 rating.
+    fn rating_json(&self) -> Value {
+        match &self.rating {
             None => Value::Null,
             Some(Err(e)) => json!({ "error": e }),
             Some(Ok(r)) => {
@@ -116,45 +164,7 @@ impl GearReport {
                     "warnings": r.warnings,
                 })
             }
-        };
-        let mut inputs = Map::new();
-        for (k, v) in &self.input.given {
-            inputs.insert(k.clone(), json!(v));
         }
-        json!({
-            "schema_version": SCHEMA_VERSION,
-            "name": self.input.name,
-            "file": self.input.file.display().to_string(),
-            "pair": if p.internal { "internal" } else { "external" },
-            "passed": self.failures().is_empty(),
-            "failures": self.failures(),
-            "warnings": warnings,
-            "inputs": inputs,
-            "module": s.module,
-            "cardan_crank_length": self.input.cardan_crank_length,
-            "pressure_angle_deg": s.pressure_angle.to_degrees(),
-            "teeth": [s.pinion.teeth, s.gear.teeth],
-            "profile_shift": [s.pinion.shift, s.gear.shift],
-            "ratio": p.ratio,
-            "working_pressure_angle_deg": p.working_pressure_angle.to_degrees(),
-            "operating_pressure_angle_deg": p.operating_pressure_angle.to_degrees(),
-            "working_center_distance": p.working_centre_distance,
-            "center_distance": p.centre_distance,
-            "base_pitch": p.base_pitch,
-            "path_of_contact": p.path_of_contact,
-            "contact_ratio": p.contact_ratio,
-            "backlash_circumferential": p.backlash_circumferential,
-            "backlash_normal": p.backlash_normal,
-            "gear_addendum": p.gear_addendum(),
-            "max_gear_addendum_without_interference": p.max_gear_addendum_without_interference(),
-            "trochoid_ratio": if p.internal { json!(p.trochoid_ratio()) } else { Value::Null },
-            "pinion": diameters_json(&p.pinion),
-            "gear": diameters_json(&p.gear),
-            "face_width": self.input.face_width,
-            "checks": checks,
-            "rating": rating,
-            "measurement": super::iso_rating::measurement_json(&self.input),
-        })
     }
 
     /// `report.md`: inputs with units, geometry, checks with margins and remedies, rating.

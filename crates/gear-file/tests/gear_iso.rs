@@ -133,13 +133,16 @@ fn an_overloaded_pair_fails_by_its_iso_factors() {
 
 #[test]
 fn iso_basis_computes_the_tooth_form_factors_unless_given() {
-    use cardan_gears::tooth_root::{iso6336_method_b, Member, Which};
+    use cardan_gears::tooth_root::{iso6336_method_b, GeneratedMember, PairMember};
     // The shipped example gives neither Y_F nor Y_S: ISO 6336-3 method B from the tooth form.
     let file = parse(Path::new("gears/test.toml"), &shipped(ISO)).unwrap();
     let pair = cardan_gears::GearPair::new(file.spec).unwrap();
     let iso = &report_of(&shipped(ISO)).to_json()["rating"]["iso6336"];
-    for (k, which) in [Which::Pinion, Which::Gear].into_iter().enumerate() {
-        let member = Member {
+    for (k, which) in [PairMember::Pinion, PairMember::Gear]
+        .into_iter()
+        .enumerate()
+    {
+        let member = GeneratedMember {
             which,
             rack_tip_radius: None,
         };

@@ -42,8 +42,8 @@ use std::f64::consts::PI;
 use crate::error::{require, GearError};
 use crate::geometry::GearPair;
 use crate::tooth_root::{
-    fillet_curvature_radius, fillet_point, fillet_range, generation, iso6336_method_b, Member,
-    RootFactors, Which,
+    fillet_curvature_radius, fillet_point, fillet_range, generation, iso6336_method_b,
+    GeneratedMember, PairMember, RootFactors,
 };
 
 /// How a `J` was obtained.
@@ -113,9 +113,12 @@ pub fn stress_correction_factor(
 
 /// AGMA 908-B89 `J` of an external member (module docs). Errors for an internal gear (no
 /// AGMA 908 method; see [`bending_geometry_factor`]).
-pub fn agma908_section(pair: &GearPair, member: Member) -> Result<Agma908Section, GearError> {
+pub fn agma908_section(
+    pair: &GearPair,
+    member: GeneratedMember,
+) -> Result<Agma908Section, GearError> {
     require(
-        !(pair.internal && member.which == Which::Gear),
+        !(pair.internal && member.which == PairMember::Gear),
         "gear.teeth",
         "AGMA 908-B89 has no J for internal teeth (use ISO 6336-3 method B)",
         pair.spec.gear.teeth as f64,
@@ -186,11 +189,11 @@ pub fn agma908_section(pair: &GearPair, member: Member) -> Result<Agma908Section
 }
 
 /// `J = d / (d_w Y_F Y_S)` from ISO 6336-3 method B (module docs), either member.
-pub fn iso_j(pair: &GearPair, member: Member) -> Result<(f64, RootFactors), GearError> {
+pub fn iso_j(pair: &GearPair, member: GeneratedMember) -> Result<(f64, RootFactors), GearError> {
     let f = iso6336_method_b(pair, member)?;
     let d = match member.which {
-        Which::Pinion => &pair.pinion,
-        Which::Gear => &pair.gear,
+        PairMember::Pinion => &pair.pinion,
+        PairMember::Gear => &pair.gear,
     };
     Ok((
         d.reference / (d.working * f.form_factor * f.stress_correction),
@@ -200,8 +203,11 @@ pub fn iso_j(pair: &GearPair, member: Member) -> Result<(f64, RootFactors), Gear
 
 /// The bending geometry factor `J` of one member: AGMA 908-B89 for an external member, ISO
 /// 6336-3 method B for an internal ring (module docs).
-pub fn bending_geometry_factor(pair: &GearPair, member: Member) -> Result<BendingJ, GearError> {
-    if pair.internal && member.which == Which::Gear {
+pub fn bending_geometry_factor(
+    pair: &GearPair,
+    member: GeneratedMember,
+) -> Result<BendingJ, GearError> {
+    if pair.internal && member.which == PairMember::Gear {
         let (j, f) = iso_j(pair, member)?;
         Ok(BendingJ {
             j,

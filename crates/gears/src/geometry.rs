@@ -24,7 +24,6 @@
 //! ≥ 1, pinion undercut (rack generation) and backlash sign.
 
 use std::f64::consts::PI;
-use std::fmt;
 
 use crate::error::{finite, non_negative, positive, require, GearError};
 use crate::involute::{inv, inv_inverse};
@@ -154,7 +153,7 @@ pub struct GearPair {
     pub base_pitch: f64,
     /// Length of path of contact `gα = ½[√(da1²−db1²) ± √(da2²−db2²)] − |a| sin α_op`
     /// (ISO 21771, `+` external, `−` internal) \[m\]. A tip circle inside its base circle counts
-    /// as ending on the base circle (see [`CheckKind::RingTipInsideBaseCircle`]).
+    /// as ending on the base circle (see [`checks::CheckKind::RingTipInsideBaseCircle`]).
     pub path_of_contact: f64,
     /// Transverse contact ratio `εα = gα / pb` \[-\].
     pub contact_ratio: f64,
@@ -163,157 +162,6 @@ pub struct GearPair {
     pub backlash_circumferential: f64,
     /// Normal backlash `jn = jt cos α_op` \[m\].
     pub backlash_normal: f64,
-}
-
-/// Which geometry check.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum CheckKind {
-    /// The mate's tip reaches the pinion flank below its base circle (beyond the interference
-    /// point T1). Internal pairs: the KHK criterion `z1/z2 ≥ 1 − tan αa2/tan αw`; margin
-    /// `z1/|z2| − 1 + tan αa2/tan α_op`. External pairs: margin `1 + z1/z2 − tan αa2/tan α_op`.
-    /// Both are the distance from T1 to the mate-tip contact point divided by `rb2 tan α_op`.
-    InvoluteInterferencePinion,
-    /// External pairs only: the pinion tip reaches the gear flank below its base circle;
-    /// margin `1 + z2/z1 − tan αa1/tan α_op`.
-    InvoluteInterferenceGear,
-    /// Internal pairs only: tip/trochoid interference while the pinion leaves the mesh
-    /// (KHK: `θ1 z1/z2 ≥ θ2`); margin `z1/|z2| − θ2/θ1` (`θ2/θ1` taken as 0 when the tip
-    /// circles do not intersect).
-    TrochoidInterference,
-    /// Internal pairs only: the ring tip circle lies inside the ring base circle, so the ring
-    /// tooth has no involute near its tip; margin `(|da2| − |db2|) / (2 m)` \[modules\].
-    RingTipInsideBaseCircle,
-    /// Internal pairs only: `|z2| − z1 ≥ min_teeth_difference`; margin = the surplus \[teeth\].
-    TeethDifference,
-    /// `εα ≥ 1`; margin `εα − 1`.
-    ContactRatio,
-    /// Rack-generated pinion without undercut (ISO 53 rack, straight-flank addendum 1 m):
-    /// `x1 ≥ 1 − z1 sin²α / 2`; margin `x1 − (1 − z1 sin²α/2)`.
-    PinionUndercut,
-    /// Backlash must not be negative; margin `jt / m` \[modules\].
-    Backlash,
-}
-
-/// What to change when a check fails.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Remedy {
-    /// Shorten the ring (internal gear) addendum to at most `max_addendum` \[m\] measured from
-    /// its reference circle (e.g. by a tip-diameter change or ISO shift `x2 < 0`).
-    ShortenRingAddendum {
-        /// Largest admissible ring addendum \[m\].
-        max_addendum: f64,
-    },
-    /// Shorten the mating gear's addendum to at most `max_addendum` \[m\].
-    ShortenGearAddendum {
-        /// Largest admissible addendum \[m\].
-        max_addendum: f64,
-    },
-    /// Shorten the pinion addendum.
-    ShortenPinionAddendum,
-    /// Apply a profile shift (positive on the pinion) to move contact away from the base circle.
-    ProfileShift,
-    /// Give the pinion a shift of at least `min_shift` \[-\].
-    PinionShiftAtLeast {
-        /// Smallest shift coefficient without undercut.
-        min_shift: f64,
-    },
-    /// Use a larger pressure angle (e.g. 25° instead of 20°).
-    LargerPressureAngle,
-    /// Increase the ring-minus-pinion tooth count difference to at least `minimum`.
-    MoreTeethDifference {
-        /// Required difference.
-        minimum: u32,
-    },
-    /// Lengthen the addenda or use a smaller pressure angle to raise the contact ratio.
-    LongerAddendaOrSmallerPressureAngle,
-    /// Increase the centre distance or thin the teeth.
-    IncreaseCentreDistanceOrThinTeeth,
-}
-
-impl fmt::Display for Remedy {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Remedy::ShortenRingAddendum { max_addendum } => write!(
-                f,
-                "shorter ring addendum (at most {:.4} mm from the reference circle)",
-                max_addendum * 1e3
-            ),
-            Remedy::ShortenGearAddendum { max_addendum } => write!(
-                f,
-                "shorter gear addendum (at most {:.4} mm)",
-                max_addendum * 1e3
-            ),
-            Remedy::ShortenPinionAddendum => write!(f, "shorter pinion addendum"),
-            Remedy::ProfileShift => write!(f, "profile shift (positive on the pinion)"),
-            Remedy::PinionShiftAtLeast { min_shift } => {
-                write!(f, "pinion profile shift x1 >= {min_shift:.4}")
-            }
-            Remedy::LargerPressureAngle => write!(f, "larger pressure angle"),
-            Remedy::MoreTeethDifference { minimum } => {
-                write!(f, "ring-minus-pinion teeth difference >= {minimum}")
-            }
-            Remedy::LongerAddendaOrSmallerPressureAngle => {
-                write!(f, "longer addenda or a smaller pressure angle")
-            }
-            Remedy::IncreaseCentreDistanceOrThinTeeth => {
-                write!(f, "larger centre distance or thinner teeth")
-            }
-        }
-    }
-}
-
-/// Result of one geometry check.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CheckReport {
-    /// Which check.
-    pub kind: CheckKind,
-    /// Margin (dimensionless, defined per [`CheckKind`]); ≥ 0 passes.
-    pub margin: f64,
-    /// `margin >= 0` (to a rounding allowance of 1e-12).
-    pub passed: bool,
-    /// Remedies, filled only on failure.
-    pub remedies: Vec<Remedy>,
-}
-
-impl CheckReport {
-    /// The margin to 5 decimals, a value that rounds to zero written `0.00000` whatever its sign
-    /// (a zero-backlash pair computes `jt ≈ −1e-17 m`, which is no negative margin).
-    pub fn margin_text(&self) -> String {
-        fixed(self.margin, 5)
-    }
-
-    /// "margin M, ok" or "margin M, FAILED; remedy: R1, or R2": the one text of a check's
-    /// outcome, for the case files' geometry errors ([`GearPair::verify`]) and the gear file's
-    /// report alike.
-    pub fn verdict(&self) -> String {
-        let mut s = format!("margin {}", self.margin_text());
-        if self.passed {
-            s.push_str(", ok");
-        } else {
-            s.push_str(", FAILED");
-            if !self.remedies.is_empty() {
-                s.push_str("; remedy: ");
-                let remedies: Vec<String> = self.remedies.iter().map(|r| r.to_string()).collect();
-                s.push_str(&remedies.join(", or "));
-            }
-        }
-        s
-    }
-}
-
-/// `x` with `decimals` decimals, and `0.000…` (no sign) for a value that rounds to zero.
-pub fn fixed(x: f64, decimals: usize) -> String {
-    let s = format!("{x:.decimals$}");
-    match s.strip_prefix('-') {
-        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
-        _ => s,
-    }
-}
-
-impl fmt::Display for CheckReport {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{:?}: {}", self.kind, self.verdict())
-    }
 }
 
 /// Checks a pair's input field by field, in the order [`GearPair::new`] reports the first
@@ -396,73 +244,15 @@ impl GearPair {
         let (z1, z2) = (spec.pinion.teeth, spec.gear.teeth);
         let internal = z2 < 0;
         let (zf1, zf2) = (z1 as f64, z2 as f64);
-        let (x1, x2) = (spec.pinion.shift, spec.gear.shift);
-        let (ca, ta) = (alpha.cos(), alpha.tan());
+        let ca = alpha.cos();
         // Signed ISO 21771 diameters.
         let d1 = m * zf1;
         let d2 = m * zf2;
         let db1 = d1 * ca;
         let db2 = d2 * ca;
-        let tip = |g: &GearSpec, d: f64| match g.tip {
-            Tip::Coefficient(ha) => d + 2.0 * m * (ha + g.shift),
-            Tip::Diameter(da) => da * d.signum(),
-        };
-        let da1 = tip(&spec.pinion, d1);
-        let da2 = tip(&spec.gear, d2);
-        let df1 = d1 - 2.0 * m * (spec.pinion.dedendum_coefficient - x1);
-        let df2 = d2 - 2.0 * m * (spec.gear.dedendum_coefficient - x2);
-        require(
-            da1 > df1 && da1 > 0.0,
-            "pinion tip",
-            "pinion tip diameter must exceed its root diameter",
-            da1,
-        )?;
-        if internal {
-            // Signed: the ring tip circle (magnitude) must be smaller than its root circle.
-            require(
-                da2 < 0.0 && da2 > df2,
-                "gear tip",
-                "ring tip circle must lie inside its root circle",
-                da2.abs(),
-            )?;
-            require(
-                da2.abs() > da1,
-                "gear tip",
-                "ring tip circle must be larger than the pinion tip circle",
-                da2.abs(),
-            )?;
-        } else {
-            require(
-                da2 > df2,
-                "gear tip",
-                "tip diameter must exceed root diameter",
-                da2,
-            )?;
-        }
+        let [da1, df1, da2, df2] = tips_and_roots(&spec, d1, d2)?;
 
-        // Working pressure angle and centre distance (ISO 21771).
-        let inv_aw = inv(alpha) + 2.0 * ta * (x1 + x2) / (zf1 + zf2);
-        let aw_angle = inv_inverse(inv_aw).map_err(|_| GearError::InvalidInput {
-            field: "shift",
-            rule: "the sum of shifts gives no working pressure angle in (0, 80°)",
-            value: x1 + x2,
-        })?;
-        let a0 = m * (zf1 + zf2) / 2.0;
-        let a_w = a0 * ca / aw_angle.cos();
-        let (a_op, alpha_op) = match spec.centre_distance {
-            None => (a_w, aw_angle),
-            Some(a) => {
-                positive("centre_distance", a)?;
-                let c = a0.abs() * ca / a;
-                require(
-                    c < 1.0,
-                    "centre_distance",
-                    "must exceed |a0| cos α (else no operating pressure angle)",
-                    a,
-                )?;
-                (a * a0.signum(), c.acos())
-            }
-        };
+        let (aw_angle, a_w, a_op, alpha_op) = operating_mesh(&spec)?;
         let dw1 = db1 / alpha_op.cos();
         let dw2 = db2 / alpha_op.cos();
 
@@ -475,24 +265,7 @@ impl GearPair {
         let pb = PI * m * ca;
         let eps = g_alpha / pb;
 
-        // Backlash: ISO tooth thickness transferred to the operating pitch circle.
-        let s = |g: &GearSpec| m * (PI / 2.0 + 2.0 * g.shift * ta) - g.thickness_allowance;
-        // A tooth thinned by more than its thickness at the reference circle,
-        // s = m (π/2 + 2 x tan α) (ISO 21771), is no tooth: its "backlash" would exceed the pitch.
-        for (field, g) in [
-            ("pinion.thickness_allowance", &spec.pinion),
-            ("gear.thickness_allowance", &spec.gear),
-        ] {
-            require(
-                s(g) > 0.0,
-                field,
-                "must be less than the tooth's thickness at the reference circle, m (π/2 + 2 x tan α): the tooth would be thinned away",
-                g.thickness_allowance,
-            )?;
-        }
-        let sw1 = dw1 * (s(&spec.pinion) / d1 + inv(alpha) - inv(alpha_op));
-        let sw2 = dw2 * (s(&spec.gear) / d2 + inv(alpha) - inv(alpha_op));
-        let jt = PI * dw1 / zf1 - sw1 - sw2;
+        let jt = circumferential_backlash(&spec, [d1, d2], [dw1, dw2], alpha_op)?;
 
         let diam = |d: f64, db: f64, da: f64, df: f64, dw: f64| Diameters {
             reference: d.abs(),
@@ -546,124 +319,6 @@ impl GearPair {
         }
     }
 
-    /// Runs every check that applies to this pair type.
-    pub fn checks(&self) -> Vec<CheckReport> {
-        let m = self.spec.module;
-        let z1 = self.spec.pinion.teeth as f64;
-        let z2 = self.spec.gear.teeth.unsigned_abs() as f64;
-        let t_op = self.operating_pressure_angle.tan();
-        let ta1 = self.pinion_tip_pressure_angle().tan();
-        let ta2 = self.gear_tip_pressure_angle().tan();
-        let mut out = Vec::new();
-        let mut push = |kind, margin: f64, remedies: Vec<Remedy>| {
-            // Rounding allowance: a zero-backlash pair computes jt ≈ ±1e-17 m.
-            let passed = margin >= -ROUNDING;
-            out.push(CheckReport {
-                kind,
-                margin,
-                passed,
-                remedies: if passed { Vec::new() } else { remedies },
-            });
-        };
-        let max_ha2 = self.max_gear_addendum_without_interference();
-        if self.internal {
-            push(
-                CheckKind::InvoluteInterferencePinion,
-                z1 / z2 - 1.0 + ta2 / t_op,
-                vec![
-                    Remedy::ShortenRingAddendum {
-                        max_addendum: max_ha2,
-                    },
-                    Remedy::ProfileShift,
-                    Remedy::LargerPressureAngle,
-                ],
-            );
-            push(
-                CheckKind::TrochoidInterference,
-                z1 / z2 - self.trochoid_ratio(),
-                vec![
-                    Remedy::ShortenRingAddendum {
-                        max_addendum: max_ha2.min(self.gear_addendum()),
-                    },
-                    Remedy::MoreTeethDifference {
-                        minimum: self.spec.min_teeth_difference,
-                    },
-                    Remedy::LargerPressureAngle,
-                ],
-            );
-            push(
-                CheckKind::RingTipInsideBaseCircle,
-                (self.gear.tip - self.gear.base) / (2.0 * m),
-                vec![
-                    Remedy::ShortenRingAddendum {
-                        max_addendum: (self.gear.reference - self.gear.base) / 2.0,
-                    },
-                    Remedy::LargerPressureAngle,
-                ],
-            );
-            push(
-                CheckKind::TeethDifference,
-                (z2 - z1) - self.spec.min_teeth_difference as f64,
-                vec![Remedy::MoreTeethDifference {
-                    minimum: self.spec.min_teeth_difference,
-                }],
-            );
-        } else {
-            push(
-                CheckKind::InvoluteInterferencePinion,
-                1.0 + z1 / z2 - ta2 / t_op,
-                vec![
-                    Remedy::ShortenGearAddendum {
-                        max_addendum: max_ha2,
-                    },
-                    Remedy::ProfileShift,
-                    Remedy::LargerPressureAngle,
-                ],
-            );
-            push(
-                CheckKind::InvoluteInterferenceGear,
-                1.0 + z2 / z1 - ta1 / t_op,
-                vec![Remedy::ShortenPinionAddendum, Remedy::LargerPressureAngle],
-            );
-        }
-        push(
-            CheckKind::ContactRatio,
-            self.contact_ratio - 1.0,
-            vec![Remedy::LongerAddendaOrSmallerPressureAngle],
-        );
-        let alpha = self.spec.pressure_angle;
-        let x_min = 1.0 - z1 * alpha.sin().powi(2) / 2.0;
-        push(
-            CheckKind::PinionUndercut,
-            self.spec.pinion.shift - x_min,
-            vec![
-                Remedy::PinionShiftAtLeast { min_shift: x_min },
-                Remedy::LargerPressureAngle,
-            ],
-        );
-        push(
-            CheckKind::Backlash,
-            self.backlash_circumferential / m,
-            vec![Remedy::IncreaseCentreDistanceOrThinTeeth],
-        );
-        out
-    }
-
-    /// Runs [`Self::checks`] and returns an error listing every failure with its remedies.
-    pub fn verify(&self) -> Result<(), GearError> {
-        let failed: Vec<String> = self
-            .checks()
-            .iter()
-            .filter(|c| !c.passed)
-            .map(|c| c.to_string())
-            .collect();
-        if failed.is_empty() {
-            Ok(())
-        } else {
-            Err(GearError::ChecksFailed(failed.join("\n")))
-        }
-    }
-
     /// Addendum of gear 2 from its reference circle, `| |d2| − |da2| | / 2` \[m\].
     pub fn gear_addendum(&self) -> f64 {
         (self.gear.reference - self.gear.tip).abs() / 2.0
@@ -694,6 +349,8 @@ impl GearPair {
     }
 }
 
+/// The rounding allowance of a check's margin and of the tip-to-root clearance (in modules):
+/// a zero-backlash pair computes jt ≈ ±1e-17 m.
 const ROUNDING: f64 = 1e-12;
 
 fn tip_angle(base: f64, tip: f64) -> f64 {
@@ -752,6 +409,119 @@ pub fn karhula_contact_ratio(path_of_contact: f64, m: f64, alpha: f64) -> f64 {
     39.37 * path_of_contact * (25.4 / (m * 1e3)) / (PI * alpha.cos())
 }
 
+/// The tip and root diameters [da1, df1, da2, df2] of the pair's members at their signed
+/// reference diameters `d1`, `d2` (ISO 21771: `da = d + 2 m (ha* + x)` or the given tip,
+/// `df = d − 2 m (hf* − x)`), checked: each tip beyond its root, a ring's tip circle inside its
+/// root circle and around the pinion's tip circle.
+fn tips_and_roots(spec: &PairSpec, d1: f64, d2: f64) -> Result<[f64; 4], GearError> {
+    let m = spec.module;
+    let (x1, x2) = (spec.pinion.shift, spec.gear.shift);
+    let internal = spec.gear.teeth < 0;
+    let tip = |g: &GearSpec, d: f64| match g.tip {
+        Tip::Coefficient(ha) => d + 2.0 * m * (ha + g.shift),
+        Tip::Diameter(da) => da * d.signum(),
+    };
+    let da1 = tip(&spec.pinion, d1);
+    let da2 = tip(&spec.gear, d2);
+    let df1 = d1 - 2.0 * m * (spec.pinion.dedendum_coefficient - x1);
+    let df2 = d2 - 2.0 * m * (spec.gear.dedendum_coefficient - x2);
+    require(
+        da1 > df1 && da1 > 0.0,
+        "pinion tip",
+        "pinion tip diameter must exceed its root diameter",
+        da1,
+    )?;
+    if internal {
+        // Signed: the ring tip circle (magnitude) must be smaller than its root circle.
+        require(
+            da2 < 0.0 && da2 > df2,
+            "gear tip",
+            "ring tip circle must lie inside its root circle",
+            da2.abs(),
+        )?;
+        require(
+            da2.abs() > da1,
+            "gear tip",
+            "ring tip circle must be larger than the pinion tip circle",
+            da2.abs(),
+        )?;
+    } else {
+        require(
+            da2 > df2,
+            "gear tip",
+            "tip diameter must exceed root diameter",
+            da2,
+        )?;
+    }
+    Ok([da1, df1, da2, df2])
+}
+
+/// The working pressure angle and centre distance (ISO 21771: `inv αw = inv α + 2 tan α
+/// (x1 + x2)/(z1 + z2)`, `aw = a0 cos α / cos αw`) and the operating ones, at the given centre
+/// distance if any: (αw rad, aw m signed, a_op m signed, α_op rad).
+fn operating_mesh(spec: &PairSpec) -> Result<(f64, f64, f64, f64), GearError> {
+    let (m, alpha) = (spec.module, spec.pressure_angle);
+    let (zf1, zf2) = (spec.pinion.teeth as f64, spec.gear.teeth as f64);
+    let (x1, x2) = (spec.pinion.shift, spec.gear.shift);
+    let (ca, ta) = (alpha.cos(), alpha.tan());
+    let inv_aw = inv(alpha) + 2.0 * ta * (x1 + x2) / (zf1 + zf2);
+    let aw_angle = inv_inverse(inv_aw).map_err(|_| GearError::InvalidInput {
+        field: "shift",
+        rule: "the sum of shifts gives no working pressure angle in (0, 80°)",
+        value: x1 + x2,
+    })?;
+    let a0 = m * (zf1 + zf2) / 2.0;
+    let a_w = a0 * ca / aw_angle.cos();
+    let (a_op, alpha_op) = match spec.centre_distance {
+        None => (a_w, aw_angle),
+        Some(a) => {
+            positive("centre_distance", a)?;
+            let c = a0.abs() * ca / a;
+            require(
+                c < 1.0,
+                "centre_distance",
+                "must exceed |a0| cos α (else no operating pressure angle)",
+                a,
+            )?;
+            (a * a0.signum(), c.acos())
+        }
+    };
+    Ok((aw_angle, a_w, a_op, alpha_op))
+}
+
+/// The circumferential backlash on the operating pitch circle, m: the ISO 21771 tooth
+/// thickness at the reference circle, less its allowance, transferred to the working
+/// diameters `dw` (`d`: the signed reference diameters).
+fn circumferential_backlash(
+    spec: &PairSpec,
+    [d1, d2]: [f64; 2],
+    [dw1, dw2]: [f64; 2],
+    alpha_op: f64,
+) -> Result<f64, GearError> {
+    let (m, alpha) = (spec.module, spec.pressure_angle);
+    let ta = alpha.tan();
+    let zf1 = spec.pinion.teeth as f64;
+    // Backlash: ISO tooth thickness transferred to the operating pitch circle.
+    let s = |g: &GearSpec| m * (PI / 2.0 + 2.0 * g.shift * ta) - g.thickness_allowance;
+    // A tooth thinned by more than its thickness at the reference circle,
+    // s = m (π/2 + 2 x tan α) (ISO 21771), is no tooth: its "backlash" would exceed the pitch.
+    for (field, g) in [
+        ("pinion.thickness_allowance", &spec.pinion),
+        ("gear.thickness_allowance", &spec.gear),
+    ] {
+        require(
+            s(g) > 0.0,
+            field,
+            "must be less than the tooth's thickness at the reference circle, m (π/2 + 2 x tan α): the tooth would be thinned away",
+            g.thickness_allowance,
+        )?;
+    }
+    let sw1 = dw1 * (s(&spec.pinion) / d1 + inv(alpha) - inv(alpha_op));
+    let sw2 = dw2 * (s(&spec.gear) / d2 + inv(alpha) - inv(alpha_op));
+    let jt = PI * dw1 / zf1 - sw1 - sw2;
+    Ok(jt)
+}
+
 /// Tip-to-root clearance at the operating centre distance: each member's tip circle
 /// must stay outside the mate's root circle, c ≥ 0 (ISO 21771's bottom clearance,
 /// c = a − ra1 − rf2 for an external pair; for an internal one, in magnitudes, the
@@ -793,6 +563,8 @@ fn tip_to_root_clearance(
     )?;
     Ok(())
 }
+
+pub mod checks;
 
 #[cfg(test)]
 mod tests;

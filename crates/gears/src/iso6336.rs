@@ -355,44 +355,21 @@ impl PreparedIso {
             eps,
             line_load,
         );
-        let y_of = |f: f64| {
-            let [p, g] = inp.members;
-            0.5 * (running_in_allowance(running_in_class(p.life_curve), f, p.sigma_hlim, v)
-                + running_in_allowance(running_in_class(g.life_curve), f, g.sigma_hlim, v))
-        };
         // `new` refused method B without the deviations.
-        let (f_pb, f_fa) = self.deviations.unwrap_or((0.0, 0.0));
-        let (k_v, resonance) = match inp.dynamic {
-            IsoDynamic::Given(k) => (k, None),
-            IsoDynamic::MethodB { density } => {
-                let n = resonance_ratio(
-                    pinion_speed,
-                    z1,
-                    u,
-                    self.internal,
-                    self.dm1,
-                    self.db1,
-                    density,
-                    c_ga,
-                );
-                let k = dynamic_factor_b(&DynamicInputs {
-                    resonance_ratio: n,
-                    line_load,
-                    single_stiffness: c1,
-                    f_pb_eff: f_pb - y_of(f_pb),
-                    f_fa_eff: f_fa - y_of(f_fa),
-                    tip_relief: self.tip_relief,
-                    total_contact_ratio: eps,
-                })?;
-                (k, Some(n))
-            }
-        };
+        let f_pb = self.deviations.map_or(0.0, |(f_pb, _)| f_pb);
+        let (k_v, resonance) = self.dynamic_factor(pinion_speed, line_load, c1, c_ga)?;
         let k_hb = inp.face_load_factor;
         let (k_ha, k_fa) = match inp.transverse_load_factor {
             Some(k) => (k, k),
             None => {
                 let f_th_b = ft * k_a * k_v * k_hb / b;
-                transverse_load_factors(eps, self.z_eps, c_ga, f_pb - y_of(f_pb), f_th_b)
+                transverse_load_factors(
+                    eps,
+                    self.z_eps,
+                    c_ga,
+                    f_pb - self.running_in(f_pb, v),
+                    f_th_b,
+                )
             }
         };
         // Contact (ISO 6336-2).
@@ -442,6 +419,56 @@ impl PreparedIso {
         };
         self.rate_members(&mut out, ft);
         Ok(out)
+    }
+
+    /// The dynamic factor `K_v`, given or by method B (ISO 6336-1:2019 §6.5.4 to §6.5.8) with
+    /// the resonance ratio it was taken at, at the pinion speed `pinion_speed` \[rad/s\], the
+    /// line load `line_load` and the mesh stiffnesses `c1`, `c_ga` of [`mesh_stiffness`].
+    fn dynamic_factor(
+        &self,
+        pinion_speed: f64,
+        line_load: f64,
+        c1: f64,
+        c_ga: f64,
+    ) -> Result<(f64, Option<f64>), GearError> {
+        let [z1, z2] = self.z;
+        let eps = self.eps;
+        let v = pinion_speed * self.d1 / 2.0;
+        // `new` refused method B without the deviations.
+        let (f_pb, f_fa) = self.deviations.unwrap_or((0.0, 0.0));
+        Ok(match self.inp.dynamic {
+            IsoDynamic::Given(k) => (k, None),
+            IsoDynamic::MethodB { density } => {
+                let n = resonance_ratio(
+                    pinion_speed,
+                    z1,
+                    z2 / z1,
+                    self.internal,
+                    self.dm1,
+                    self.db1,
+                    density,
+                    c_ga,
+                );
+                let k = dynamic_factor_b(&DynamicInputs {
+                    resonance_ratio: n,
+                    line_load,
+                    single_stiffness: c1,
+                    f_pb_eff: f_pb - self.running_in(f_pb, v),
+                    f_fa_eff: f_fa - self.running_in(f_fa, v),
+                    tip_relief: self.tip_relief,
+                    total_contact_ratio: eps,
+                })?;
+                (k, Some(n))
+            }
+        })
+    }
+
+    /// The running-in allowance of a deviation `f` \[m\] at the pitch-line velocity `v`
+    /// \[m/s\]: the mean of the two members' [`running_in_allowance`] (ISO 6336-1:2019 §8.3.4).
+    fn running_in(&self, f: f64, v: f64) -> f64 {
+        let [p, g] = self.inp.members;
+        0.5 * (running_in_allowance(running_in_class(p.life_curve), f, p.sigma_hlim, v)
+            + running_in_allowance(running_in_class(g.life_curve), f, g.sigma_hlim, v))
     }
 
     /// The per-member stresses, limits and safety factors, once the pair's factors are in

@@ -65,12 +65,13 @@ pub use agma908::{bending_geometry_factor, BendingJ, JMethod};
 pub use buckingham::{BuckinghamPair, DynamicLoad, ToothForm, FULL_DEPTH_20};
 pub use error::GearError;
 pub use gear_set::{GearSet, MeshStep, StepResult};
+pub use geometry::checks::{CheckKind, CheckReport, Remedy};
 pub use geometry::{
-    cardan_module, check_pitch_line_velocity, CheckKind, CheckReport, Diameters, GearPair,
-    GearSpec, PairSpec, Remedy, Tip, MAX_PITCH_LINE_VELOCITY,
+    cardan_module, check_pitch_line_velocity, Diameters, GearPair, GearSpec, PairSpec, Tip,
+    MAX_PITCH_LINE_VELOCITY,
 };
 pub use mesh_loss::{
     mesh_loss, mesh_loss_with, LossOptions, Lubricant, MeshGeometry, MeshLoss, MeshSpeeds,
     PreparedMeshLoss, Reading,
 };
-pub use tooth_root::{iso6336_method_b, Member, RootFactors, RootSection, Which};
+pub use tooth_root::{iso6336_method_b, GeneratedMember, PairMember, RootFactors, RootSection};

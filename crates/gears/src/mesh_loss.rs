@@ -33,6 +33,7 @@
 //! Not verified against TP-1622 itself (its Table III could not be read): the windage
 //! correlation is used as Karhula prints it (`1 + 2.3 b/d1`, `(d1/2)^4.6`, `d1/2` in m).
 
+use cardan_numeric::KeptPower;
 use std::f64::consts::PI;
 
 use crate::error::{non_negative, positive, require, GearError};
@@ -205,7 +206,11 @@ pub fn mesh_loss_with(
 ) -> Result<MeshLoss, GearError> {
     check_inputs(geometry, lubricant)?;
     check_step(speeds, ft)?;
-    Ok(MeshConstants::new(geometry, lubricant, options)?.loss(speeds, ft, &mut PowMemo::default()))
+    Ok(MeshConstants::new(geometry, lubricant, options)?.loss(
+        speeds,
+        ft,
+        &mut KeptSpeedPowers::default(),
+    ))
 }
 
 /// The checks of [`mesh_loss_with`] on the geometry and lubricant that come before the step's.
@@ -250,7 +255,7 @@ pub struct PreparedMeshLoss {
     /// `None` if the geometry or lubricant fails a check: every step then goes through
     /// [`mesh_loss_with`], which says which.
     constants: Option<MeshConstants>,
-    memo: PowMemo,
+    kept: KeptSpeedPowers,
 }
 
 impl PreparedMeshLoss {
@@ -264,7 +269,7 @@ impl PreparedMeshLoss {
             lubricant: *lubricant,
             options,
             constants,
-            memo: PowMemo::default(),
+            kept: KeptSpeedPowers::default(),
         }
     }
 
@@ -273,7 +278,7 @@ impl PreparedMeshLoss {
         match &self.constants {
             Some(c) => {
                 check_step(speeds, ft)?;
-                Ok(c.loss(speeds, ft, &mut self.memo))
+                Ok(c.loss(speeds, ft, &mut self.kept))
             }
             None => mesh_loss_with(&self.geometry, &self.lubricant, speeds, ft, self.options),
         }
@@ -281,31 +286,13 @@ impl PreparedMeshLoss {
 }
 
 /// The powers of the speed-dependent terms at the last step's arguments: `n_abs^2.8` and
-/// `(v_r η)^0.67`, recomputed only when their argument's bits change.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct PowMemo {
-    /// (argument, power) of `n_abs^2.8`.
-    windage: (f64, f64),
-    /// (argument, power) of `(v_r η)^0.67`.
-    film: (f64, f64),
-}
-
-impl Default for PowMemo {
-    fn default() -> Self {
-        // NaN's bits are never an argument's: the first step computes both.
-        Self {
-            windage: (f64::NAN, f64::NAN),
-            film: (f64::NAN, f64::NAN),
-        }
-    }
-}
-
-/// `x^e` from `memo` if `x` has the bits of its argument, else computed and kept.
-fn pow_kept(memo: &mut (f64, f64), x: f64, e: f64) -> f64 {
-    if memo.0.to_bits() != x.to_bits() {
-        *memo = (x, x.powf(e));
-    }
-    memo.1
+/// `(v_r η)^0.67`, taken again only when their argument's bits change.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct KeptSpeedPowers {
+    /// `n_abs^2.8` (A9.1.54).
+    windage: KeptPower,
+    /// `(v_r η)^0.67` (A9.1.51).
+    film: KeptPower,
 }
 
 /// What [`mesh_loss_with`] computes from the geometry, lubricant and reading alone.
@@ -411,7 +398,7 @@ impl MeshConstants {
     }
 
     /// The loss at `speeds` under `ft` (checked finite), A9.1.41-55.
-    fn loss(&self, speeds: &MeshSpeeds, ft: f64, memo: &mut PowMemo) -> MeshLoss {
+    fn loss(&self, speeds: &MeshSpeeds, ft: f64, kept: &mut KeptSpeedPowers) -> MeshLoss {
         let Self {
             d1,
             l,
@@ -455,10 +442,7 @@ impl MeshConstants {
         let p_s = 2e-3 * v_s * mu * f_n * 1e3;
         // A9.1.51: undefined at zero load; reported as zero film and zero rolling loss.
         let h = if f_n > 0.0 && v_r > 0.0 && r_eq > 0.0 {
-            2.051e-7
-                * pow_kept(&mut memo.film, v_r * eta, 0.67)
-                * f_n.powf(-0.067)
-                * self.r_eq_power
+            2.051e-7 * kept.film.pow(v_r * eta, 0.67) * f_n.powf(-0.067) * self.r_eq_power
         } else {
             0.0
         };
@@ -466,7 +450,7 @@ impl MeshConstants {
         let p_r = 9e4 * v_r * h * b * cr * 1e3;
         // A9.1.54 [kW] -> W; pinion absolute spin speed in both readings.
         let [w0, w1, w2] = self.windage;
-        let p_w = w0 * pow_kept(&mut memo.windage, n_abs, 2.8) * w1 * w2 * 1e3;
+        let p_w = w0 * kept.windage.pow(n_abs, 2.8) * w1 * w2 * 1e3;
         MeshLoss {
             path_of_contact: l,
             contact_ratio: cr,

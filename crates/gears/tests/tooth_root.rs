@@ -47,13 +47,13 @@ fn j_on_rack(zp: i32, zg: i32, (hf, tip, thinning): (f64, f64, f64)) -> [f64; 2]
         g.thickness_allowance = thinning;
     }
     let pair = GearPair::new(s).unwrap();
-    [Which::Pinion, Which::Gear].map(|which| j(&pair, which, tip).j)
+    [PairMember::Pinion, PairMember::Gear].map(|which| j(&pair, which, tip).j)
 }
 
-fn j(pair: &GearPair, which: Which, tip: f64) -> BendingJ {
+fn j(pair: &GearPair, which: PairMember, tip: f64) -> BendingJ {
     bending_geometry_factor(
         pair,
-        Member {
+        GeneratedMember {
             which,
             rack_tip_radius: Some(tip * pair.spec.module),
         },
@@ -83,7 +83,7 @@ fn agma908_tables_phi_25() {
                     continue;
                 };
                 let pair = table_pair(zp as i32, zg as i32, x).unwrap();
-                for (which, table) in [(Which::Pinion, cell.jp), (Which::Gear, cell.jg)] {
+                for (which, table) in [(PairMember::Pinion, cell.jp), (PairMember::Gear, cell.jg)] {
                     if !table.is_finite() {
                         continue;
                     }
@@ -129,8 +129,8 @@ fn nunes_table_4_8() {
         (0.5, 52, 104, 0.5770, 0.4704),
     ] {
         let pair = table_pair(zp, zg, x).unwrap();
-        let jp = j(&pair, Which::Pinion, TABLE_RACK_TIP).j;
-        let jg = j(&pair, Which::Gear, TABLE_RACK_TIP).j;
+        let jp = j(&pair, PairMember::Pinion, TABLE_RACK_TIP).j;
+        let jg = j(&pair, PairMember::Gear, TABLE_RACK_TIP).j;
         assert!((jp - jp_t).abs() <= 0.01, "x {x} {zp}/{zg}: {jp} vs {jp_t}");
         assert!((jg - jg_t).abs() <= 0.01, "x {x} {zp}/{zg}: {jg} vs {jg_t}");
     }
@@ -214,7 +214,7 @@ fn agma908_table_phi_20_lies_within_the_agma_racks() {
 /// section must meet (to 1e-3 at |z2| = 200 000; measured 5e-5 on Y_F).
 #[test]
 fn external_and_internal_meet_at_the_rack() {
-    let member = Member::new(Which::Gear);
+    let member = GeneratedMember::new(PairMember::Gear);
     let z2 = 200_000;
     let ext = GearPair::new(PairSpec::standard(1.0, 20, z2, deg(20.0), 0.0, 0.0)).unwrap();
     let int = GearPair::new(PairSpec::standard(1.0, 20, -z2, deg(20.0), 0.0, 0.0)).unwrap();
@@ -242,9 +242,9 @@ fn external_and_internal_meet_at_the_rack() {
 fn trends_with_teeth_mate_and_shift() {
     let pair =
         |z1, z2, x1| GearPair::new(PairSpec::standard(1e-3, z1, z2, deg(20.0), x1, 0.0)).unwrap();
-    let jp = |p: &GearPair| j(p, Which::Pinion, 0.25).j;
+    let jp = |p: &GearPair| j(p, PairMember::Pinion, 0.25).j;
     let yf = |p: &GearPair| {
-        iso6336_method_b(p, Member::new(Which::Pinion))
+        iso6336_method_b(p, GeneratedMember::new(PairMember::Pinion))
             .unwrap()
             .form_factor
     };
@@ -279,20 +279,20 @@ fn trends_with_teeth_mate_and_shift() {
 fn the_internal_ring() {
     let int = table_pair(26, -52, 0.0).unwrap();
     let ext = table_pair(26, 52, 0.0).unwrap();
-    let ring = j(&int, Which::Gear, TABLE_RACK_TIP);
+    let ring = j(&int, PairMember::Gear, TABLE_RACK_TIP);
     assert_eq!(ring.method, JMethod::Iso6336MethodB);
     assert!(ring.agma.is_none());
     let f = ring.iso.unwrap();
     assert!(f.within_validity, "q_s outside 1…8");
     assert_eq!(
-        j(&int, Which::Pinion, TABLE_RACK_TIP).method,
+        j(&int, PairMember::Pinion, TABLE_RACK_TIP).method,
         JMethod::Agma908
     );
-    let m = |w| Member {
+    let m = |w| GeneratedMember {
         which: w,
         rack_tip_radius: Some(TABLE_RACK_TIP),
     };
-    let e = iso6336_method_b(&ext, m(Which::Gear)).unwrap();
+    let e = iso6336_method_b(&ext, m(PairMember::Gear)).unwrap();
     assert!(f.section.chord > e.section.chord);
     assert!(f.form_factor < e.form_factor);
     assert!(f.stress_correction > e.stress_correction);
@@ -300,7 +300,7 @@ fn the_internal_ring() {
     // J from ISO is d/(d_w Y_F Y_S); at the zero-backlash centre distance of an unshifted
     // pair d_w = d.
     assert!((ring.j - 1.0 / (f.form_factor * f.stress_correction)).abs() < 1e-12);
-    let (ext_iso, _) = iso_j(&ext, m(Which::Gear)).unwrap();
+    let (ext_iso, _) = iso_j(&ext, m(PairMember::Gear)).unwrap();
     assert!((ext_iso - 1.0 / (e.form_factor * e.stress_correction)).abs() < 1e-12);
 }
 
@@ -311,14 +311,14 @@ fn errors() {
     // ISO 53 profile A's 0.38 m does not fit a 25° rack of dedendum 1.25 m.
     let e = bending_geometry_factor(
         &p,
-        Member {
-            which: Which::Pinion,
+        GeneratedMember {
+            which: PairMember::Pinion,
             rack_tip_radius: Some(0.38e-3),
         },
     )
     .unwrap_err();
     assert!(e.to_string().contains("rack_tip_radius"), "{e}");
     let int = GearPair::new(PairSpec::standard(1e-3, 20, -50, deg(25.0), 0.0, 0.0)).unwrap();
-    let e = agma908::agma908_section(&int, Member::new(Which::Gear)).unwrap_err();
+    let e = agma908::agma908_section(&int, GeneratedMember::new(PairMember::Gear)).unwrap_err();
     assert!(e.to_string().contains("internal"), "{e}");
 }

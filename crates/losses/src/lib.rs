@@ -1,6 +1,6 @@
 //! The losses of a mechanism's run, apart from the step loop that evaluates them: what a loss
-//! model is ([`Loss`], the state and loads it is evaluated at, [`LossInput`]; where it is bound,
-//! [`Site`]), the registry of loss models ([`LOSS_MODELS`]) and their bound forms
+//! model is ([`Loss`], the state and loads it is evaluated at, [`LossInput`]; what it is bound
+//! with, [`BindInput`]), the registry of loss models ([`LOSS_MODELS`]) and their bound forms
 //! ([`losses::models`], on the physics of `cardan-friction` and `cardan-gears`), the budget
 //! that binds them to a mechanism's pistons and joints ([`LossBudget`], from the case's
 //! [`Friction`]), the engine's own losses (valve train, accessories, pumping:
@@ -23,7 +23,7 @@ pub use engine_losses::{
     ValveTrainLoss,
 };
 pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
-pub use loss::{Loss, LossInput, Oil, Parameters, Site};
+pub use loss::{BindInput, Loss, LossInput, Oil, Parameters};
 pub use loss_models::{Attachment, Bind, LossModel, LOSS_MODELS};
 pub use losses::{BearingSize, Friction, LossBudget};
 pub use machine_kind::MachineKind;

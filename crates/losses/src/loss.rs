@@ -1,6 +1,6 @@
 //! What a loss model is, below every module that binds or registers one: the trait of a bound
-//! model ([`Loss`]), what it reads at a step ([`LossInput`]), where it is bound ([`Site`], what a
-//! registry entry's `bind` reads), the oil and the parameters of `[friction]` ([`Parameters`],
+//! model ([`Loss`]), what it reads at a step ([`LossInput`]), what it is bound with ([`BindInput`]:
+//! where it attaches and what a registry entry's `bind` reads), the oil and the parameters of `[friction]` ([`Parameters`],
 //! each default once, next to its source). The models are in [`crate::losses::models`], the
 //! registry in [`crate::loss_models`], the budget that binds them in [`crate::losses`].
 
@@ -80,10 +80,11 @@ impl Default for Parameters {
     }
 }
 
-/// Where a loss model is bound: what a registry entry's `bind` reads
-/// ([`crate::loss_models::Bind::Site`]).
+/// What a loss model is bound with: where it attaches (the joint, its bearings, the bore) and
+/// what it reads there (parameters, oil, gear pair, mechanism), the input of a registry entry's
+/// `bind` ([`crate::loss_models::Bind::Loss`]).
 #[derive(Clone, Copy)]
-pub struct Site<'a> {
+pub struct BindInput<'a> {
     /// The models' parameters (`[friction]`'s, else their defaults).
     pub parameters: &'a Parameters,
     /// The oil.

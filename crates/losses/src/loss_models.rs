@@ -9,10 +9,10 @@
 //! of its own is a field of [`Parameters`] and of the case's `[friction]` table.
 
 use crate::engine_losses::FollowerContact;
-use crate::loss::Site;
+use crate::loss::BindInput;
 use crate::losses::models::{
     bind_coulomb, bind_journal, bind_mesh, bind_ring_films, bind_ring_pack, bind_rolling,
-    bind_viscous_skirt, Bound,
+    bind_viscous_skirt, BoundLoss,
 };
 use cardan_friction::{PalmgrenCoefficients, RollingReading, SkfDeepGrooveBall};
 use cardan_gears::mesh_loss::Reading;
@@ -53,9 +53,9 @@ pub const NONE: &str = "none";
 /// How a registry entry binds its model.
 #[derive(Clone, Copy)]
 pub enum Bind {
-    /// At a piston's cylinder or a joint: the bound loss from the parameters and the site
-    /// (rings, skirt, bearings, gear mesh).
-    Site(fn(&Site) -> Bound),
+    /// At a piston's cylinder or a joint: the bound loss from its [`BindInput`] (rings, skirt,
+    /// bearings, gear mesh).
+    Loss(fn(&BindInput) -> BoundLoss),
     /// An engine's valve train: its cam/follower contact from the parameters, which the engine's
     /// valve train ([`crate::ValveTrain`], with its springs and geometry) binds to the crank
     /// and the fmep cross-check reads (its PNH follower).
@@ -77,9 +77,9 @@ pub struct LossModel {
 impl LossModel {
     /// The model bound at `site`; `None` for a valve train, which the engine binds
     /// ([`Bind::Follower`]).
-    pub fn bind_at(&self, site: &Site) -> Option<Bound> {
+    pub fn bind_at(&self, site: &BindInput) -> Option<BoundLoss> {
         match self.bind {
-            Bind::Site(bind) => Some(bind(site)),
+            Bind::Loss(bind) => Some(bind(site)),
             Bind::Follower(_) => None,
         }
     }
@@ -104,25 +104,25 @@ pub const LOSS_MODELS: &[LossModel] = &[
         name: "karhula",
         attachment: Attachment::Rings,
         summary: "2 compression rings (2 mm, 0.19 MPa) and an oil ring (4 mm, 1 MPa), μ = ring_friction_coefficient (Karhula A9.1.2-4, A9.1.8)",
-        bind: Bind::Site(|s| bind_ring_pack(s, s.parameters.ring_friction_coefficient)),
+        bind: Bind::Loss(|s| bind_ring_pack(s, s.parameters.ring_friction_coefficient)),
     },
     LossModel {
         name: "film",
         attachment: Attachment::Rings,
         summary: "each ring of the pack on its oil film (Reynolds with squeeze film, Greenwood-Tripp asperities), faces crowned by ring_crown_height",
-        bind: Bind::Site(|s| bind_ring_films(s, s.parameters.ring_crown_height)),
+        bind: Bind::Loss(|s| bind_ring_films(s, s.parameters.ring_crown_height)),
     },
     LossModel {
         name: "karhula",
         attachment: Attachment::Skirt,
         summary: "Coulomb friction on the side force, μ = skirt_friction_coefficient (Karhula A9.1.5)",
-        bind: Bind::Site(|s| bind_coulomb(s, s.parameters.skirt_friction_coefficient)),
+        bind: Bind::Loss(|s| bind_coulomb(s, s.parameters.skirt_friction_coefficient)),
     },
     LossModel {
         name: "viscous",
         attachment: Attachment::Skirt,
         summary: "Couette shear of a skirt of skirt_length and skirt_clearance (Thai thesis 2.5.c.1-3)",
-        bind: Bind::Site(|s| {
+        bind: Bind::Loss(|s| {
             let p = s.parameters;
             bind_viscous_skirt(s, p.skirt_length.unwrap_or(0.6 * s.bore), p.skirt_clearance)
         }),
@@ -131,7 +131,7 @@ pub const LOSS_MODELS: &[LossModel] = &[
         name: "karhula",
         attachment: Attachment::Bearing,
         summary: "rolling bearings as printed (Karhula A9.1.26-33), f0 = lubrication_factor, bearing_load_constant",
-        bind: Bind::Site(|s| bind_rolling(s, RollingReading::Karhula {
+        bind: Bind::Loss(|s| bind_rolling(s, RollingReading::Karhula {
             f0: s.parameters.lubrication_factor,
             load_constant: s.parameters.bearing_load_constant,
         })),
@@ -140,7 +140,7 @@ pub const LOSS_MODELS: &[LossModel] = &[
         name: "palmgren",
         attachment: Attachment::Bearing,
         summary: "Palmgren's M0 + M1 of a deep-groove ball bearing, f0 = lubrication_factor",
-        bind: Bind::Site(|s| bind_rolling(s, RollingReading::Palmgren(PalmgrenCoefficients {
+        bind: Bind::Loss(|s| bind_rolling(s, RollingReading::Palmgren(PalmgrenCoefficients {
             f0: s.parameters.lubrication_factor,
             ..PalmgrenCoefficients::DEEP_GROOVE_BALL
         }))),
@@ -149,31 +149,31 @@ pub const LOSS_MODELS: &[LossModel] = &[
         name: "skf",
         attachment: Attachment::Bearing,
         summary: "SKF's rolling and sliding moments of a series-62 deep-groove ball bearing",
-        bind: Bind::Site(|s| bind_rolling(s, RollingReading::Skf(SkfDeepGrooveBall::SERIES_62))),
+        bind: Bind::Loss(|s| bind_rolling(s, RollingReading::Skf(SkfDeepGrooveBall::SERIES_62))),
     },
     LossModel {
         name: "petroff",
         attachment: Attachment::Bearing,
         summary: "Petroff's concentric plain journal of journal_length_ratio and journal_clearance_ratio",
-        bind: Bind::Site(|s| bind_journal(s, false)),
+        bind: Bind::Loss(|s| bind_journal(s, false)),
     },
     LossModel {
         name: "short_bearing",
         attachment: Attachment::Bearing,
         summary: "Ocvirk's short plain journal, the eccentricity from the instantaneous load",
-        bind: Bind::Site(|s| bind_journal(s, true)),
+        bind: Bind::Loss(|s| bind_journal(s, true)),
     },
     LossModel {
         name: "karhula",
         attachment: Attachment::GearMesh,
         summary: "Anderson & Loewenthal's sliding, rolling and windage loss as printed (Karhula A9.1.36-55)",
-        bind: Bind::Site(|s| bind_mesh(s, Reading::Karhula)),
+        bind: Bind::Loss(|s| bind_mesh(s, Reading::Karhula)),
     },
     LossModel {
         name: "corrected",
         attachment: Attachment::GearMesh,
         summary: "the same in centipoise, with carrier-relative internal-mesh kinematics and the pair's real geometry",
-        bind: Bind::Site(|s| bind_mesh(s, Reading::Corrected)),
+        bind: Bind::Loss(|s| bind_mesh(s, Reading::Corrected)),
     },
     LossModel {
         name: "flat",
@@ -253,7 +253,7 @@ mod tests {
             for entry in MECHANISMS {
                 let mechanism = (entry.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
                 let t = mechanism.topology();
-                let site = |joint, bearings| Site {
+                let site = |joint, bearings| BindInput {
                     parameters: &p,
                     oil: &oil,
                     pair: &pair,
@@ -262,7 +262,7 @@ mod tests {
                     joint,
                     bearings,
                 };
-                let sites: Vec<Site> = match m.attachment {
+                let sites: Vec<BindInput> = match m.attachment {
                     Attachment::Rings => vec![site(0, None)],
                     Attachment::ValveTrain => vec![],
                     a => (t.joints.iter().enumerate())

@@ -20,7 +20,7 @@
 pub mod models;
 
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
-use crate::loss::{failed, Loss, LossInput, Oil, Parameters, Site};
+use crate::loss::{failed, BindInput, Loss, LossInput, Oil, Parameters};
 use crate::loss_models::{default_model, Attachment, LossModel};
 use crate::mesh::GearSpec;
 use crate::MachineKind;
@@ -117,7 +117,7 @@ impl Friction {
         joint: usize,
         bearings: Option<Bearings>,
     ) -> Result<Box<dyn Loss>, SetupError> {
-        let site = Site {
+        let site = BindInput {
             parameters: &self.parameters,
             oil: &self.oil,
             pair: &self.pair,

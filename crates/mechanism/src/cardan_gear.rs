@@ -96,7 +96,7 @@ pub enum MeshModel {
 /// its centre S): the sum of the added masses, kg, their first moment Σ m·d, kg·m (complex),
 /// and their polar moment about S, Σ (J + m·|d|²), kg·m².
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-struct Added {
+struct AddedMasses {
     mass: f64,
     first: C,
     polar: f64,
@@ -118,7 +118,7 @@ pub struct CardanGear {
     topology: Topology,
     /// A rigid mass added to the wheel ([`Mechanism::with_added_mass`]: the wheel's
     /// counterweight of the cardan pair); `None` without.
-    added: Option<Added>,
+    added: Option<AddedMasses>,
     /// tan of the pair's pressure angle (the involute mesh's radial force per unit tangential
     /// force), computed once: a libm call per block of steps is measurable. The angle itself
     /// is the mesh joint's (`JointKind::GearMesh`).

@@ -75,7 +75,9 @@
 //! `chamber_angle_deg` (δ between links 1 and 2, eq 15), `mechanical_advantage` (eq 21).
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{Bearings, Body, Extra, Joint, JointKind, MeshForce, Piston, State, Topology};
+use crate::model::{
+    Bearings, Body, ExtraColumn, Joint, JointKind, MeshForce, Piston, State, Topology,
+};
 use crate::{check_length, number, CrankState, Entry, MachineGeometry, Mechanism, StateBlock};
 use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
@@ -191,6 +193,171 @@ pub struct Hypotrochoid {
     topology: Topology,
 }
 
+/// The modulus and lengths of [`Hypotrochoid::new`] checked: `m` from 2 to [`MAX_MODULUS`],
+/// positive lengths, a piston link longer than the crank, its centre of gravity on it.
+fn check_dimensions(
+    m: usize,
+    p: f64,
+    r: f64,
+    u: f64,
+    masses: &MassProperties,
+) -> Result<(), MechanismError> {
+    if !(2..=MAX_MODULUS).contains(&m) {
+        return Err(MechanismError::new(
+            "hypotrochoid.angular_modulus",
+            m,
+            format!("must be an integer from 2 to {MAX_MODULUS}"),
+        ));
+    }
+    check_length("geometry.crank_length", p)?;
+    check_length("hypotrochoid.piston_link_length", r)?;
+    check_length("hypotrochoid.planet_radius", u)?;
+    // Eq 11 has a real branch for every θ, and the rod AB keeps a positive length
+    // q ∈ [r − p, r + p] (eq 13), only if r > p.
+    if r <= p {
+        return Err(MechanismError::new(
+            "hypotrochoid.piston_link_length",
+            r,
+            format!("must be longer than geometry.crank_length ({p} m): ψ(θ) = θ − asin(p·sin((m+1)θ)/r) (Vidinsky eq 11) needs r > p, and B would reach A"),
+        ));
+    }
+    if !(0.0..=r).contains(&masses.rod_cg) {
+        return Err(MechanismError::new(
+            "masses.rod_cg",
+            masses.rod_cg,
+            format!("the piston link's centre of gravity must lie on it, between 0 and hypotrochoid.piston_link_length ({r} m)"),
+        ));
+    }
+    Ok(())
+}
+
+/// The bodies, joints and pistons of a mechanism of modulus `m`, piston link `r` and planet
+/// radius `u`, with `masses` and bearings [link pin, crank and coupler pins, main axis].
+fn topology(
+    m: usize,
+    r: f64,
+    u: f64,
+    masses: &MassProperties,
+    bearings: [Bearings; 3],
+) -> Topology {
+    let pistons = (0..m)
+        .map(|k| Piston {
+            name: PISTONS[k],
+            body: FIRST_LINK + k,
+            axis: C::new(0.0, -1.0),
+            origin: C::new(r, 0.0),
+        })
+        .collect();
+    Topology {
+        bodies: bodies(m, masses),
+        joints: joints(m, u, bearings),
+        pistons,
+        crankshaft: CRANKSHAFT,
+        extras: vec![
+            ExtraColumn {
+                name: "carrier_angle_vidinsky_deg",
+                meaning: "carrier angle θ of Vidinsky (2021), clockwise positive, deg",
+            },
+            ExtraColumn {
+                name: "chamber_angle_deg",
+                meaning: "angle δ between piston links 1 and 2 (Vidinsky eq 15), deg",
+            },
+            ExtraColumn {
+                name: "mechanical_advantage",
+                meaning:
+                    "F_out at the crank pin over F_in between piston links 1 and 2 (Vidinsky eq 21)",
+            },
+        ],
+    }
+}
+
+/// The bodies: crankshaft, carrier, planet, rotor, then the `m` piston links and their `m`
+/// sliding blocks (the indices [`FIRST_LINK`] on).
+fn bodies(m: usize, masses: &MassProperties) -> Vec<Body> {
+    let mut bodies = vec![
+        Body {
+            name: "crankshaft",
+            mass: 0.0,
+            inertia: masses.crankshaft_inertia,
+            lumped: None,
+        },
+        Body {
+            name: "carrier",
+            mass: 0.0,
+            inertia: 0.0,
+            lumped: None,
+        },
+        Body {
+            name: "planet",
+            mass: 0.0,
+            inertia: masses.wheel_inertia,
+            lumped: None,
+        },
+        Body {
+            name: "rotor",
+            mass: 0.0,
+            inertia: 0.0,
+            lumped: None,
+        },
+    ];
+    bodies.extend(LINKS[..m].iter().map(|&name| Body {
+        name,
+        mass: masses.rod_mass,
+        inertia: masses.rod_inertia,
+        lumped: None,
+    }));
+    bodies.extend(BLOCKS[..m].iter().map(|&name| Body {
+        name,
+        mass: 0.0,
+        inertia: 0.0,
+        lumped: None,
+    }));
+    bodies
+}
+
+/// The joints: the main axis's bearings, the planet's, its ring mesh, the crank and coupler
+/// pins, then each piston link's pivot, pin and slide.
+fn joints(m: usize, u: f64, bearings: [Bearings; 3]) -> Vec<Joint> {
+    let [r_pin, r_crank, r_main] = bearings;
+    let pin = |name, radius, body, other| Joint {
+        name,
+        kind: JointKind::Revolute(radius),
+        body,
+        other,
+    };
+    let mut joints = vec![
+        pin("main_bearing", r_main, CRANKSHAFT, None),
+        pin("carrier_bearing", r_main, CARRIER, None),
+        pin("planet_bearing", r_crank, PLANET, Some(CARRIER)),
+        Joint {
+            name: "ring_mesh",
+            kind: JointKind::GearMesh {
+                ratio: (m + 1) as f64,
+                pitch_radius: u,
+                internal: true,
+                pressure_angle: PRESSURE_ANGLE,
+                force: MeshForce::Involute,
+            },
+            body: PLANET,
+            other: None,
+        },
+        pin("crank_pin", r_crank, CRANKSHAFT, Some(ROTOR)),
+        pin("coupler_pin", r_crank, PLANET, Some(ROTOR)),
+    ];
+    for k in 0..m {
+        let (link, block) = (FIRST_LINK + k, FIRST_LINK + m + k);
+        joints.push(pin(PIVOTS[k], r_main, link, None));
+        joints.push(pin(PINS[k], r_pin, link, Some(block)));
+        joints.push(Joint {
+            name: SLIDES[k],
+            kind: JointKind::Prismatic,
+            body: block,
+            other: Some(ROTOR),
+        });
+    }
+    joints
+}
+
 /// A point P(θ) with dP/dθ and d²P/dθ², m, m/rad, m/rad².
 #[derive(Clone, Copy)]
 struct Curve(C, C, C);
@@ -245,135 +412,8 @@ impl Hypotrochoid {
         masses: MassProperties,
         bearings: [Bearings; 3],
     ) -> Result<Self, MechanismError> {
-        if !(2..=MAX_MODULUS).contains(&m) {
-            return Err(MechanismError::new(
-                "hypotrochoid.angular_modulus",
-                m,
-                format!("must be an integer from 2 to {MAX_MODULUS}"),
-            ));
-        }
-        check_length("geometry.crank_length", p)?;
-        check_length("hypotrochoid.piston_link_length", r)?;
-        check_length("hypotrochoid.planet_radius", u)?;
-        // Eq 11 has a real branch for every θ, and the rod AB keeps a positive length
-        // q ∈ [r − p, r + p] (eq 13), only if r > p.
-        if r <= p {
-            return Err(MechanismError::new(
-                "hypotrochoid.piston_link_length",
-                r,
-                format!("must be longer than geometry.crank_length ({p} m): ψ(θ) = θ − asin(p·sin((m+1)θ)/r) (Vidinsky eq 11) needs r > p, and B would reach A"),
-            ));
-        }
-        if !(0.0..=r).contains(&masses.rod_cg) {
-            return Err(MechanismError::new(
-                "masses.rod_cg",
-                masses.rod_cg,
-                format!("the piston link's centre of gravity must lie on it, between 0 and hypotrochoid.piston_link_length ({r} m)"),
-            ));
-        }
-        let [r_pin, r_crank, r_main] = bearings;
-        let mut bodies = vec![
-            Body {
-                name: "crankshaft",
-                mass: 0.0,
-                inertia: masses.crankshaft_inertia,
-                lumped: None,
-            },
-            Body {
-                name: "carrier",
-                mass: 0.0,
-                inertia: 0.0,
-                lumped: None,
-            },
-            Body {
-                name: "planet",
-                mass: 0.0,
-                inertia: masses.wheel_inertia,
-                lumped: None,
-            },
-            Body {
-                name: "rotor",
-                mass: 0.0,
-                inertia: 0.0,
-                lumped: None,
-            },
-        ];
-        bodies.extend(LINKS[..m].iter().map(|&name| Body {
-            name,
-            mass: masses.rod_mass,
-            inertia: masses.rod_inertia,
-            lumped: None,
-        }));
-        bodies.extend(BLOCKS[..m].iter().map(|&name| Body {
-            name,
-            mass: 0.0,
-            inertia: 0.0,
-            lumped: None,
-        }));
-        let pin = |name, radius, body, other| Joint {
-            name,
-            kind: JointKind::Revolute(radius),
-            body,
-            other,
-        };
-        let mut joints = vec![
-            pin("main_bearing", r_main, CRANKSHAFT, None),
-            pin("carrier_bearing", r_main, CARRIER, None),
-            pin("planet_bearing", r_crank, PLANET, Some(CARRIER)),
-            Joint {
-                name: "ring_mesh",
-                kind: JointKind::GearMesh {
-                    ratio: (m + 1) as f64,
-                    pitch_radius: u,
-                    internal: true,
-                    pressure_angle: PRESSURE_ANGLE,
-                    force: MeshForce::Involute,
-                },
-                body: PLANET,
-                other: None,
-            },
-            pin("crank_pin", r_crank, CRANKSHAFT, Some(ROTOR)),
-            pin("coupler_pin", r_crank, PLANET, Some(ROTOR)),
-        ];
-        for k in 0..m {
-            let (link, block) = (FIRST_LINK + k, FIRST_LINK + m + k);
-            joints.push(pin(PIVOTS[k], r_main, link, None));
-            joints.push(pin(PINS[k], r_pin, link, Some(block)));
-            joints.push(Joint {
-                name: SLIDES[k],
-                kind: JointKind::Prismatic,
-                body: block,
-                other: Some(ROTOR),
-            });
-        }
-        let pistons = (0..m)
-            .map(|k| Piston {
-                name: PISTONS[k],
-                body: FIRST_LINK + k,
-                axis: C::new(0.0, -1.0),
-                origin: C::new(r, 0.0),
-            })
-            .collect();
-        let topology = Topology {
-            bodies,
-            joints,
-            pistons,
-            crankshaft: CRANKSHAFT,
-            extras: vec![
-                Extra {
-                    name: "carrier_angle_vidinsky_deg",
-                    meaning: "carrier angle θ of Vidinsky (2021), clockwise positive, deg",
-                },
-                Extra {
-                    name: "chamber_angle_deg",
-                    meaning: "angle δ between piston links 1 and 2 (Vidinsky eq 15), deg",
-                },
-                Extra {
-                    name: "mechanical_advantage",
-                    meaning: "F_out at the crank pin over F_in between piston links 1 and 2 (Vidinsky eq 21)",
-                },
-            ],
-        };
+        check_dimensions(m, p, r, u, &masses)?;
+        let topology = topology(m, r, u, &masses, bearings);
         Ok(Self {
             modulus: m,
             crank: p,

@@ -39,8 +39,8 @@ pub use interface::{
 };
 pub use mass::{MassInputs, MassProperties, MassRules, Material};
 pub use model::{
-    cross, Bearings, Body, BodyMotion, Extra, Joint, JointKind, JointLoad, JointMotion, Loads,
-    MeshForce, Piston, PistonMotion, PointMotion, State, Topology,
+    cross, Bearings, Body, BodyMotion, ExtraColumn, Joint, JointKind, JointLoad, JointMotion,
+    Loads, MeshForce, Piston, PistonMotion, PointMotion, State, Topology,
 };
 pub use motion::{CrankMotion, Grid, MotionError, MotionSource, CHAINS, REANCHOR};
 pub use polar::PolarComponents;

@@ -160,7 +160,7 @@ impl Piston {
 
 /// A per-step quantity only one mechanism has (a column of its per-step output).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Extra {
+pub struct ExtraColumn {
     /// Column name, with its unit in it.
     pub name: &'static str,
     pub meaning: &'static str,
@@ -176,7 +176,7 @@ pub struct Topology {
     /// main axis).
     pub crankshaft: usize,
     /// Per-step quantities of this mechanism alone.
-    pub extras: Vec<Extra>,
+    pub extras: Vec<ExtraColumn>,
 }
 
 impl Topology {

@@ -12,7 +12,9 @@
 //! `piston_pin` (piston–rod), `piston_side` (piston–cylinder wall, a slide along the axis).
 
 use crate::mass::{self, MassInputs, MassProperties};
-use crate::model::{cross, Bearings, Body, Extra, Joint, Piston, PistonMotion, State, Topology};
+use crate::model::{
+    cross, Bearings, Body, ExtraColumn, Joint, Piston, PistonMotion, State, Topology,
+};
 use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
 use crate::{
     vectorised, BodyColumns, Column, CrankColumns, JointColumns, LoadsBlock, PistonColumns,
@@ -37,7 +39,7 @@ const PISTON: usize = 2;
 
 /// The columns of a block that the slider-crank's fill reads (the crank's) and writes (the
 /// rest stay zero).
-struct Parts<'a> {
+struct SliderCrankColumns<'a> {
     crank: &'a CrankColumns,
     shaft: &'a mut BodyColumns,
     rod: &'a mut BodyColumns,
@@ -130,7 +132,7 @@ impl SliderCrank {
             ],
             pistons: vec![Piston::in_line(PISTON, pin_offset)],
             crankshaft: CRANKSHAFT,
-            extras: vec![Extra {
+            extras: vec![ExtraColumn {
                 name: "rod_percussion_centre_m",
                 meaning: "distance from the crank pin along the rod of the rod's centre of percussion, where its inertial force acts with no couple (A5.2.1.6-7); empty where undefined",
             }],
@@ -167,7 +169,7 @@ impl SliderCrank {
         &self,
         crank: &CrankState,
         (cos_ba, sin_ba, d1, d2): (f64, f64, f64, f64),
-        parts: &mut Parts,
+        parts: &mut SliderCrankColumns,
         lane: usize,
     ) {
         let (w, a) = (crank.speed, crank.acceleration);
@@ -319,7 +321,7 @@ vectorised! {
         let Some((n, crank, [shaft, rod, piston], joints, [cylinder])) = block.split() else {
             unreachable!("the slider-crank's topology")
         };
-        let mut parts = Parts {
+        let mut parts = SliderCrankColumns {
             crank,
             shaft,
             rod,

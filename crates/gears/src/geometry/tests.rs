@@ -1,3 +1,4 @@
+use super::checks::*;
 use super::*;
 
 fn pair(z1: i32, z2: i32) -> GearPair {

@@ -1,13 +1,13 @@
 //! The loss models bound to a mechanism: one type per model, each its power loss at a step
 //! ([`Loss`]) from the joint's total load and relative speed, the pistons' speeds or the
-//! crank's, and the functions that bind it at its [`Site`] (the registry's entries,
+//! crank's, and the functions that bind it from its [`BindInput`] (the registry's entries,
 //! [`crate::loss_models::LOSS_MODELS`], call them); [`crate::LossBudget`] binds them by joint
 //! kind.
 
 use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::loss::{failed, Loss, LossInput, Site};
+use crate::loss::{failed, BindInput, Loss, LossInput};
 use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::SetupError;
 use cardan_friction::{
@@ -19,16 +19,16 @@ use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, PreparedMeshLoss, Reading
 use cardan_mechanism::{Bearings, JointKind};
 
 /// What a bound model is: its [`Loss`], or why it cannot be set up.
-pub type Bound = Result<Box<dyn Loss>, SetupError>;
+pub type BoundLoss = Result<Box<dyn Loss>, SetupError>;
 
 /// Karhula's ring pack (2 compression rings of 2 mm at 0.19 MPa, 1 oil ring of 4 mm at 1 MPa)
 /// in a cylinder of the site's bore.
-fn ring_pack(site: &Site) -> Result<KarhulaRingPack, SetupError> {
+fn ring_pack(site: &BindInput) -> Result<KarhulaRingPack, SetupError> {
     KarhulaRingPack::karhula(site.bore).map_err(|e| failed("geometry.bore", &e))
 }
 
 /// Karhula's ring pack with a constant friction coefficient μ (A9.1.2-4, A9.1.8).
-pub fn bind_ring_pack(site: &Site, friction_coefficient: f64) -> Bound {
+pub fn bind_ring_pack(site: &BindInput, friction_coefficient: f64) -> BoundLoss {
     let pack = ring_pack(site)?;
     Ok(Box::new(RingPack {
         force: friction_coefficient * pack.contact_force(),
@@ -40,7 +40,7 @@ pub fn bind_ring_pack(site: &Site, friction_coefficient: f64) -> Bound {
 /// pressure above atmospheric behind it (the lower rings see none: inter-ring pressures are
 /// not modelled); squeeze film stepped in time, Greenwood-Tripp asperity contact with
 /// [`AsperityContact::typical`] surfaces; on every piston of the cylinder.
-pub fn bind_ring_films(site: &Site, crown_height: f64) -> Bound {
+pub fn bind_ring_films(site: &BindInput, crown_height: f64) -> BoundLoss {
     let pack = ring_pack(site)?;
     let bore = site.bore;
     let ring = |height: f64, pressure: f64, top: bool| {
@@ -73,13 +73,13 @@ pub fn bind_ring_films(site: &Site, crown_height: f64) -> Bound {
 }
 
 /// Coulomb friction of `friction_coefficient` on the site's slide (Karhula A9.1.5).
-pub fn bind_coulomb(site: &Site, friction_coefficient: f64) -> Bound {
+pub fn bind_coulomb(site: &BindInput, friction_coefficient: f64) -> BoundLoss {
     Ok(coulomb(site.joint, friction_coefficient))
 }
 
 /// The viscous skirt (Thai thesis 2.5.c.1-3) of `length` and `clearance` (m) on the site's
 /// slide, in a cylinder of its bore.
-pub fn bind_viscous_skirt(site: &Site, length: f64, clearance: f64) -> Bound {
+pub fn bind_viscous_skirt(site: &BindInput, length: f64, clearance: f64) -> BoundLoss {
     Ok(Box::new(ViscousSkirtLoss {
         joint: site.joint,
         skirt: ViscousSkirt::new(site.bore, length, clearance)
@@ -89,13 +89,13 @@ pub fn bind_viscous_skirt(site: &Site, length: f64, clearance: f64) -> Bound {
 }
 
 /// The site's revolute-joint bearings.
-fn bearings(site: &Site) -> Result<Bearings, SetupError> {
+fn bearings(site: &BindInput) -> Result<Bearings, SetupError> {
     site.bearings
         .ok_or_else(|| failed("friction.bearings", &"attaches to a revolute joint only"))
 }
 
 /// The site's rolling bearings in `reading` of [`cardan_friction::rolling_bearing_loss`].
-pub fn bind_rolling(site: &Site, reading: RollingReading) -> Bound {
+pub fn bind_rolling(site: &BindInput, reading: RollingReading) -> BoundLoss {
     let b = bearings(site)?;
     Ok(Box::new(Rolling {
         joint: site.joint,
@@ -112,7 +112,7 @@ pub fn bind_rolling(site: &Site, reading: RollingReading) -> Bound {
 
 /// The site's plain journal bearings of its journal radius, L/D and c/R of the parameters:
 /// Ocvirk's short bearing (`short`), else Petroff's concentric journal.
-pub fn bind_journal(site: &Site, short: bool) -> Bound {
+pub fn bind_journal(site: &BindInput, short: bool) -> BoundLoss {
     let b = bearings(site)?;
     let p = site.parameters;
     Ok(Box::new(Journal {
@@ -131,7 +131,7 @@ pub fn bind_journal(site: &Site, short: bool) -> Bound {
 
 /// Anderson & Loewenthal's mesh loss in `reading` on the site's gear-mesh joint, the pair
 /// [`mesh_pair`] builds from the joint and the site's pair.
-pub fn bind_mesh(site: &Site, reading: Reading) -> Bound {
+pub fn bind_mesh(site: &BindInput, reading: Reading) -> BoundLoss {
     let j = &site.mechanism.topology().joints[site.joint];
     let JointKind::GearMesh {
         ratio,
