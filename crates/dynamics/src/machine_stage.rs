@@ -417,6 +417,12 @@ impl Stage for MachineStage {
     }
 }
 
+/// The first `n` values of the neighbouring columns `k` and `k + 1` of `out` (a load's x and y).
+fn column_pair(out: &mut [Column], k: usize, n: usize) -> (&mut [f64], &mut [f64]) {
+    let (x, rest) = out[k..].split_at_mut(1);
+    (&mut x[0][..n], &mut rest[0][..n])
+}
+
 impl MachineStage {
     /// A block of a machine of one cylinder, the run's train (module note): its values from the
     /// train's columns a column at a time, with the operations of [`MachineStage::values`] in
@@ -430,8 +436,6 @@ impl MachineStage {
         let m = &*self.machine;
         let t = m.mechanism().topology();
         let total = input.total;
-        let joint =
-            |j: usize, i: usize| m.axis(0) * C::new(total.joints[j].fx[i], total.joints[j].fy[i]);
         if p.shaking {
             for i in 0..n {
                 let crank = input.states.crank.at(i);
@@ -448,15 +452,16 @@ impl MachineStage {
         for c in &mut out[others..others + 3] {
             c[..n].fill(0.0);
         }
-        for i in 0..n {
-            out[p.torque()][i] = 0.0 + total.crank_torque[i];
+        let torque = &mut out[p.torque()][..n];
+        for (t, &c) in torque.iter_mut().zip(&total.crank_torque[..n]) {
+            *t = 0.0 + c;
         }
         if self.friction {
-            let speed = &input.states.crank.speed;
-            for i in 0..n {
+            let speed = &input.states.crank.speed[..n];
+            for (i, (t, &w)) in torque.iter_mut().zip(speed).enumerate() {
                 let loss = 0.0 + train_loss.map_or(0.0, |l| l[i]);
-                if speed[i] != 0.0 {
-                    out[p.torque()][i] += loss / speed[i].abs();
+                if w != 0.0 {
+                    *t += loss / w.abs();
                 }
             }
         }
@@ -464,32 +469,34 @@ impl MachineStage {
             out[p.journal(j)][..n].fill(0.0);
             out[p.journal(j) + 1][..n].fill(0.0);
         }
-        if let Some(b) = m.main_bearing() {
-            for (j, share) in m.journals_of(0) {
-                for i in 0..n {
-                    let main = joint(b, i);
-                    out[p.journal(j)][i] += share * main.re;
-                    out[p.journal(j) + 1][i] += share * main.im;
-                }
-            }
-        } else {
-            for (j, share) in m.journals_of(0) {
-                for i in 0..n {
-                    out[p.journal(j)][i] += share * 0.0;
-                    out[p.journal(j) + 1][i] += share * 0.0;
-                }
+        let zero = [0.0; LANES];
+        let load = |j: Option<usize>| match j {
+            Some(j) => (&total.joints[j].fx[..n], &total.joints[j].fy[..n]),
+            None => (&zero[..n], &zero[..n]),
+        };
+        let axis = m.axis(0);
+        for (j, share) in m.journals_of(0) {
+            let (x, y) = column_pair(out, p.journal(j), n);
+            let (fx, fy) = load(m.main_bearing());
+            for (((x, y), &fx), &fy) in x.iter_mut().zip(y).zip(fx).zip(fy) {
+                let main = axis * C::new(fx, fy);
+                *x += share * main.re;
+                *y += share * main.im;
             }
         }
         if p.pins {
-            for i in 0..n {
-                let pin = m.crank_pin().map_or(C::new(0.0, 0.0), |j| joint(j, i));
-                out[p.pin(0)][i] = pin.re;
-                out[p.pin(0) + 1][i] = pin.im;
+            let (x, y) = column_pair(out, p.pin(0), n);
+            let (fx, fy) = load(m.crank_pin());
+            for (((x, y), &fx), &fy) in x.iter_mut().zip(y).zip(fx).zip(fy) {
+                let pin = axis * C::new(fx, fy);
+                (*x, *y) = (pin.re, pin.im);
             }
         }
         if p.gas {
-            for i in 0..n {
-                out[p.gas(0)][i] = input.force.map_or(0.0, |f| f[i]);
+            let gas = &mut out[p.gas(0)][..n];
+            match input.force {
+                Some(f) => gas.copy_from_slice(&f[..n]),
+                None => gas.fill(0.0),
             }
         }
     }
