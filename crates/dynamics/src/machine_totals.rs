@@ -107,6 +107,41 @@ impl NormPeak {
         }
     }
 
+    /// The pairs (`xs[i]`, `ys[i]`) of a block's lanes (at most [`LANES`]) in order, as
+    /// [`NormPeak::push`] of each: the block's largest sum of squares first (eight running
+    /// maxima, kept in vector registers), then only the pairs not surely below it, for a pair
+    /// surely below another of the block has the smaller `hypot` (the type note), and that
+    /// one is pushed.
+    #[inline]
+    fn push_block(&mut self, xs: &[f64], ys: &[f64]) {
+        let n = xs.len().min(ys.len()).min(LANES);
+        let (xs, ys) = (&xs[..n], &ys[..n]);
+        let mut squares = [0.0; LANES];
+        for ((s, &x), &y) in squares.iter_mut().zip(xs).zip(ys) {
+            *s = x * x + y * y;
+        }
+        let larger = |a: f64, b: f64| if b > a { b } else { a };
+        let mut top = [f64::NEG_INFINITY; 8];
+        let chunks = squares[..n].chunks_exact(8);
+        let rest = chunks.remainder();
+        for c in chunks {
+            for (m, &s) in top.iter_mut().zip(c) {
+                *m = larger(*m, s);
+            }
+        }
+        let top = rest
+            .iter()
+            .chain(&top)
+            .fold(f64::NEG_INFINITY, |a, &b| larger(a, b));
+        let below = Self::bound(top).max(self.drop_below);
+        for ((&s, &x), &y) in squares.iter().zip(xs).zip(ys) {
+            if s < below || (x == 0.0 && y == 0.0) {
+                continue;
+            }
+            self.take(x, y, s);
+        }
+    }
+
     #[inline(always)]
     fn push(&mut self, x: f64, y: f64) {
         let s = x * x + y * y;
@@ -230,11 +265,7 @@ impl MachineTotals {
         column: impl Fn(usize) -> &'v [f64],
     ) {
         let p = self.places;
-        let norms = |peak: &mut NormPeak, x: usize| {
-            for (&a, &b) in column(x).iter().zip(column(x + 1)) {
-                peak.push(a, b);
-            }
-        };
+        let norms = |peak: &mut NormPeak, x: usize| peak.push_block(column(x), column(x + 1));
         if p.shaking {
             norms(&mut self.force, 0);
             norms(&mut self.moment, 2);
@@ -461,6 +492,24 @@ mod tests {
                     got.to_bits(),
                     "{scale}: pair {k}, ({x}, {y})"
                 );
+            }
+            // The same pairs a block at a time, blocks of every length up to LANES.
+            let mut blocks = NormPeak::default();
+            let (mut start, mut len) = (0, 1);
+            while start < pairs.len() {
+                let end = (start + len).min(pairs.len());
+                let (xs, ys): (Vec<f64>, Vec<f64>) = pairs[start..end].iter().copied().unzip();
+                blocks.push_block(&xs, &ys);
+                let expected = pairs[..end].iter().fold(0.0, |mut p, &(x, y)| {
+                    raise(&mut p, x.hypot(y));
+                    p
+                });
+                assert_eq!(
+                    blocks.value().to_bits(),
+                    expected.to_bits(),
+                    "{scale}: to {end}"
+                );
+                (start, len) = (end, len % LANES + 1);
             }
             for split in [0, 1, 7, 4_999, 10_000, 19_999] {
                 let (mut a, mut b) = (NormPeak::default(), NormPeak::default());
