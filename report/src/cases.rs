@@ -581,17 +581,46 @@ fn chart_data_from_csv(path: &Path, joints: &[String], file: String) -> anyhow::
 pub(super) fn case_report(
     case_dir: &Path,
     reference: Option<&str>,
-    mut from_run: BTreeMap<String, ChartData>,
+    from_run: BTreeMap<String, ChartData>,
 ) -> anyhow::Result<()> {
     let (s, reference) = data::read_summary(&case_dir.join("summary.json"), reference)?;
+    let data = chart_data(case_dir, &s, from_run)?;
+    let plots = case_charts(&s, &data);
+
+    let mut doc = Doc {
+        title: format!("Case report: {}", s.case),
+        blocks: Vec::new(),
+    };
+    push_overview(&mut doc, &s, &reference);
+    // The method after the results (issue 38): what Δ is and which way is better.
+    doc.push(Block::Paragraph(format!(
+        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
+         for loads, torques, power need and losses; higher is better for efficiency and output. \
+         Values in SI units as in `summary.json` (rpm, bar, kN and kW beside them in brackets); \
+         — where a mechanism has no such metric. \
+         {ROUND_OFF_LEGEND}"
+    )));
+    push_loss_budget(&mut doc, &s);
+    push_metrics(&mut doc, &s);
+    push_charts(&mut doc, &plots);
+    let files: Vec<(String, String)> = plots.into_iter().map(|(f, s, _)| (f, s)).collect();
+    write_report(case_dir, &doc, &files)
+}
+
+/// Each mechanism's chart data, in the summary's order: the run's where it gave them, else
+/// read from the mechanism's CSV where the folder has one, else none.
+fn chart_data(
+    case_dir: &Path,
+    s: &CaseSummary,
+    mut from_run: BTreeMap<String, ChartData>,
+) -> anyhow::Result<Vec<Option<ChartData>>> {
     let given: Vec<Option<ChartData>> = s
         .mechanisms
         .iter()
         .map(|m| from_run.remove(&m.name))
         .collect();
     // Only the mechanisms the run did not chart read their CSV (in parallel).
-    let data: Vec<Option<ChartData>> = s
-        .mechanisms
+    s.mechanisms
         .par_iter()
         .zip(given)
         .map(|(m, given)| {
@@ -605,24 +634,29 @@ pub(super) fn case_report(
             }
             chart_data_from_csv(&path, &m.joints, file).map(Some)
         })
-        .collect::<anyhow::Result<_>>()?;
+        .collect::<anyhow::Result<_>>()
+}
+
+/// The case's charts as (file, SVG, caption), in the report's order.
+fn case_charts(s: &CaseSummary, data: &[Option<ChartData>]) -> Vec<(String, String, String)> {
     let headers: Vec<Option<Vec<String>>> = data
         .iter()
         .map(|c| c.as_ref().map(|c| c.header.clone()))
         .collect();
-    let specs = plot_specs(&s, &headers);
+    let specs = plot_specs(s, &headers);
     // The charts engineers read first (issue 38), then the rest.
-    let mut plots = crate::indicator::indicator_charts(&s, &data);
-    plots.extend(crate::crank_speed::crank_speed_charts(&s, &data));
-    plots.extend(crate::crank_speed::crank_speed_time_charts(&s, &data));
-    plots.extend(crate::bearing_polar::polar_charts(&s, &data));
-    plots.extend(charts(&s, &specs, &data));
-    plots.extend(locus_charts(&s, &data));
+    let mut plots = crate::indicator::indicator_charts(s, data);
+    plots.extend(crate::crank_speed::crank_speed_charts(s, data));
+    plots.extend(crate::crank_speed::crank_speed_time_charts(s, data));
+    plots.extend(crate::bearing_polar::polar_charts(s, data));
+    plots.extend(charts(s, &specs, data));
+    plots.extend(locus_charts(s, data));
+    plots
+}
 
-    let mut doc = Doc {
-        title: format!("Case report: {}", s.case),
-        blocks: Vec::new(),
-    };
+/// The report's opening: the machine, its layout, gas model and mechanisms, the run's
+/// warnings, and, of several mechanisms, which is better.
+fn push_overview(doc: &mut Doc, s: &CaseSummary, reference: &str) {
     let names: Vec<String> = s
         .mechanisms
         .iter()
@@ -643,7 +677,7 @@ pub(super) fn case_report(
     }
     if s.mechanisms.len() > 1 {
         doc.push(Block::Heading(2, "Which is better".into()));
-        let items = summary_items(&s);
+        let items = summary_items(s);
         if items.is_empty() {
             doc.push(Block::Paragraph(
                 "No headline metric is shared by two mechanisms.".into(),
@@ -652,15 +686,11 @@ pub(super) fn case_report(
             doc.push(Block::List(items));
         }
     }
-    // The method after the results (issue 38): what Δ is and which way is better.
-    doc.push(Block::Paragraph(format!(
-        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better \
-         for loads, torques, power need and losses; higher is better for efficiency and output. \
-         Values in SI units as in `summary.json` (rpm, bar, kN and kW beside them in brackets); \
-         — where a mechanism has no such metric. \
-         {ROUND_OFF_LEGEND}"
-    )));
-    if let Some(budget) = loss_budget(&s) {
+}
+
+/// The loss budget's section, where the summary has one.
+fn push_loss_budget(doc: &mut Doc, s: &CaseSummary) {
+    if let Some(budget) = loss_budget(s) {
         let (title, whose) = match s.one_cylinder() {
             Some(w) => (format!("Loss budget of {w}"), format!("the total of {w}")),
             None => (
@@ -675,6 +705,11 @@ pub(super) fn case_report(
         )));
         doc.push(budget);
     }
+}
+
+/// The metrics' section: whose the tables are for a machine of several cylinders, then the
+/// tables.
+fn push_metrics(doc: &mut Doc, s: &CaseSummary) {
     doc.push(Block::Heading(2, "Metrics".into()));
     if let Some(w) = s.one_cylinder() {
         doc.push(Block::Paragraph(format!(
@@ -684,7 +719,11 @@ pub(super) fn case_report(
             s.cylinders
         )));
     }
-    doc.blocks.extend(metric_tables(&s));
+    doc.blocks.extend(metric_tables(s));
+}
+
+/// The charts' section: each chart as a figure, or why a report has none.
+fn push_charts(doc: &mut Doc, plots: &[(String, String, String)]) {
     doc.push(Block::Heading(2, "Charts".into()));
     if plots.is_empty() {
         doc.push(Block::Paragraph(
@@ -694,13 +733,11 @@ pub(super) fn case_report(
                 .into(),
         ));
     }
-    for (file, svg_text, caption) in &plots {
+    for (file, svg_text, caption) in plots {
         doc.push(Block::Figure {
             file: format!("plots/{file}"),
             svg: svg_text.clone(),
             caption: caption.clone(),
         });
     }
-    let files: Vec<(String, String)> = plots.into_iter().map(|(f, s, _)| (f, s)).collect();
-    write_report(case_dir, &doc, &files)
 }

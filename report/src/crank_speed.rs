@@ -98,6 +98,37 @@ fn speed_chart(
     data: &[Option<ChartData>],
     over: Over,
 ) -> Vec<(String, String, String)> {
+    let (series, bands) = speed_series(s, data, over);
+    if series.is_empty() {
+        return Vec::new();
+    }
+    let whole = s.one_cylinder().is_some();
+    let (title, x_label, file, caption) = speed_chart_words(over);
+    let chart = LineChart {
+        title: if whole {
+            format!("{title} (the whole machine)")
+        } else {
+            title.into()
+        },
+        x_label: x_label.into(),
+        y_label: "crank speed".into(),
+        y_unit: "rpm".into(),
+        series,
+        angle_axis: over == Over::Angle,
+        factors: Some((1.0, RPM_PER_RAD_S)),
+        bands,
+        ..LineChart::default()
+    };
+    vec![(file.into(), svg::line_chart(&chart), caption.into())]
+}
+
+/// The series of the crank-speed chart over `over` and each dynamic mechanism's fluctuation
+/// band: over time the run-up and the cycles' starts before the reported cycle's rows.
+fn speed_series(
+    s: &CaseSummary,
+    data: &[Option<ChartData>],
+    over: Over,
+) -> (Vec<Series>, Vec<Band>) {
     let mut series = Vec::new();
     let mut bands = Vec::new();
     for (k, m) in s.mechanisms.iter().enumerate() {
@@ -156,11 +187,12 @@ fn speed_chart(
         });
         bands.push(band(m, [lo, hi], k, dash));
     }
-    if series.is_empty() {
-        return Vec::new();
-    }
-    let whole = s.one_cylinder().is_some();
-    let (title, x_label, file, caption) = match over {
+    (series, bands)
+}
+
+/// The crank-speed chart's title, x axis title, file and caption over `over`.
+fn speed_chart_words(over: Over) -> (&'static str, &'static str, &'static str, &'static str) {
+    match over {
         Over::Angle => (
             "Crank speed over the reported cycle",
             "crank angle θ, °",
@@ -179,23 +211,7 @@ fn speed_chart(
              angle), then every row of the reported cycle; the shaded band of each runs from \
              its speed_min to its speed_max over the reported cycle",
         ),
-    };
-    let chart = LineChart {
-        title: if whole {
-            format!("{title} (the whole machine)")
-        } else {
-            title.into()
-        },
-        x_label: x_label.into(),
-        y_label: "crank speed".into(),
-        y_unit: "rpm".into(),
-        series,
-        angle_axis: over == Over::Angle,
-        factors: Some((1.0, RPM_PER_RAD_S)),
-        bands,
-        ..LineChart::default()
-    };
-    vec![(file.into(), svg::line_chart(&chart), caption.into())]
+    }
 }
 
 /// "mean 900.0 rpm, δ = 2.345 %": the reported cycle's mean speed and its coefficient of

@@ -153,6 +153,13 @@ pub fn heat_map(map: &HeatMap) -> String {
     let plot_w = WIDTH - left - 150.0;
     let plot_h = PLOT_HEIGHT;
     let (cw, ch) = (plot_w / nx as f64, plot_h / ny as f64);
+    let grid = Grid {
+        left,
+        plot_w,
+        plot_h,
+        cw,
+        ch,
+    };
     let range = colour_range(&map.values, map.diverging);
     let height = TOP + plot_h + 56.0;
     let mut o = String::with_capacity(16 * 1024);
@@ -166,77 +173,11 @@ pub fn heat_map(map: &HeatMap) -> String {
         c(plot_w),
         c(plot_h)
     );
-    // Cell centre of column i, row j (row 0 at the bottom).
-    let cx = |i: f64| left + (i + 0.5) * cw;
-    let cy = |j: f64| TOP + plot_h - (j + 0.5) * ch;
-    for (j, row) in map.values.iter().enumerate() {
-        for (i, v) in row.iter().enumerate() {
-            let _ = writeln!(
-                o,
-                "<rect class=\"cell\" data-i=\"{i}\" data-j=\"{j}\" data-value=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
-                attr_num(*v),
-                c(left + i as f64 * cw),
-                c(TOP + plot_h - (j + 1) as f64 * ch),
-                c(cw + 0.4),
-                c(ch + 0.4),
-                colour(*v, range, map.diverging)
-            );
-        }
-    }
+    cells(&mut o, map, &grid, range);
     if map.zero_contour {
-        let segments = zero_contour(&map.values);
-        if !segments.is_empty() {
-            let mut d = String::new();
-            for [a, b] in &segments {
-                let _ = write!(
-                    d,
-                    "M{} {}L{} {}",
-                    c(cx(a.0)),
-                    c(cy(a.1)),
-                    c(cx(b.0)),
-                    c(cy(b.1))
-                );
-            }
-            let _ = writeln!(
-                o,
-                "<path class=\"contour\" data-level=\"0\" data-segments=\"{}\" d=\"{d}\" fill=\"none\" stroke=\"#000\" stroke-width=\"2.2\"/>",
-                segments.len()
-            );
-        }
+        contour_path(&mut o, map, &grid);
     }
-    let _ = writeln!(
-        o,
-        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>",
-        c(left),
-        c(TOP),
-        c(plot_w),
-        c(plot_h)
-    );
-    let widest = map
-        .x_labels
-        .iter()
-        .map(|l| text_width(l, 12.0))
-        .fold(0.0, f64::max);
-    let every_x = ((widest + 8.0) / cw).ceil().max(1.0) as usize;
-    for (i, l) in map.x_labels.iter().enumerate().step_by(every_x) {
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
-            c(cx(i as f64)),
-            c(TOP + plot_h + 16.0),
-            esc(l)
-        );
-    }
-    let every_y = ny.div_ceil(12).max(1);
-    for (j, l) in map.y_labels.iter().enumerate().step_by(every_y) {
-        let _ = writeln!(
-            o,
-            "<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
-            c(left - 6.0),
-            c(cy(j as f64) + 4.0),
-            esc(l)
-        );
-    }
+    frame_and_ticks(&mut o, map, &grid, ny);
     o.push_str("</g>\n");
     let _ = writeln!(
         o,
@@ -254,6 +195,110 @@ pub fn heat_map(map: &HeatMap) -> String {
     colour_legend(&mut o, map, range, left + plot_w + 24.0, plot_h);
     o.push_str("</svg>\n");
     o
+}
+
+/// Where a heat map's plot and its cells are, px.
+struct Grid {
+    /// The plot's left edge.
+    left: f64,
+    /// The plot's width.
+    plot_w: f64,
+    /// The plot's height.
+    plot_h: f64,
+    /// A cell's width.
+    cw: f64,
+    /// A cell's height.
+    ch: f64,
+}
+
+impl Grid {
+    /// The horizontal centre of column `i`.
+    fn cx(&self, i: f64) -> f64 {
+        self.left + (i + 0.5) * self.cw
+    }
+
+    /// The vertical centre of row `j` (row 0 at the bottom).
+    fn cy(&self, j: f64) -> f64 {
+        TOP + self.plot_h - (j + 0.5) * self.ch
+    }
+}
+
+/// A rectangle per cell, coloured by its value over `range`, with its indices and value.
+fn cells(o: &mut String, map: &HeatMap, grid: &Grid, range: (f64, f64)) {
+    for (j, row) in map.values.iter().enumerate() {
+        for (i, v) in row.iter().enumerate() {
+            let _ = writeln!(
+                o,
+                "<rect class=\"cell\" data-i=\"{i}\" data-j=\"{j}\" data-value=\"{}\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{}\"/>",
+                attr_num(*v),
+                c(grid.left + i as f64 * grid.cw),
+                c(TOP + grid.plot_h - (j + 1) as f64 * grid.ch),
+                c(grid.cw + 0.4),
+                c(grid.ch + 0.4),
+                colour(*v, range, map.diverging)
+            );
+        }
+    }
+}
+
+/// The 0 contour through the cells' centres as one path, none where the values never cross 0.
+fn contour_path(o: &mut String, map: &HeatMap, grid: &Grid) {
+    let segments = zero_contour(&map.values);
+    if !segments.is_empty() {
+        let mut d = String::new();
+        for [a, b] in &segments {
+            let _ = write!(
+                d,
+                "M{} {}L{} {}",
+                c(grid.cx(a.0)),
+                c(grid.cy(a.1)),
+                c(grid.cx(b.0)),
+                c(grid.cy(b.1))
+            );
+        }
+        let _ = writeln!(
+            o,
+            "<path class=\"contour\" data-level=\"0\" data-segments=\"{}\" d=\"{d}\" fill=\"none\" stroke=\"#000\" stroke-width=\"2.2\"/>",
+            segments.len()
+        );
+    }
+}
+
+/// The plot's frame and the levels' labels: on x as many as fit side by side, on y at most 12.
+fn frame_and_ticks(o: &mut String, map: &HeatMap, grid: &Grid, ny: usize) {
+    let _ = writeln!(
+        o,
+        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>",
+        c(grid.left),
+        c(TOP),
+        c(grid.plot_w),
+        c(grid.plot_h)
+    );
+    let widest = map
+        .x_labels
+        .iter()
+        .map(|l| text_width(l, 12.0))
+        .fold(0.0, f64::max);
+    let every_x = ((widest + 8.0) / grid.cw).ceil().max(1.0) as usize;
+    for (i, l) in map.x_labels.iter().enumerate().step_by(every_x) {
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
+            c(grid.cx(i as f64)),
+            c(TOP + grid.plot_h + 16.0),
+            esc(l)
+        );
+    }
+    let every_y = ny.div_ceil(12).max(1);
+    for (j, l) in map.y_labels.iter().enumerate().step_by(every_y) {
+        let _ = writeln!(
+            o,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
+            c(grid.left - 6.0),
+            c(grid.cy(j as f64) + 4.0),
+            esc(l)
+        );
+    }
 }
 
 /// Writes the colour legend of `map` (its colours over `range`) at x = `lx`, beside a plot

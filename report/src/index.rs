@@ -140,149 +140,192 @@ fn target(dir: &Path, name: &str, results: &str) -> String {
     }
 }
 
+/// Writes `<out>/index.html`: the folders listed, then a section for each kind that has any.
 pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
-    let mut cases = Vec::new();
-    let mut summaries = Vec::new();
-    let mut sweeps = Vec::new();
-    let mut optimizations = Vec::new();
-    for name in folders(out_dir)? {
-        let dir = out_dir.join(&name);
-        if dir.join("sweep.csv").is_file() {
-            sweeps.push(name);
-        } else if dir.join(OPTIMUM_CHART).is_file() && dir.join("report.md").is_file() {
-            optimizations.push(name);
-        } else if dir.join("summary.json").is_file() {
-            match data::read_summary(&dir.join("summary.json"), None) {
-                Ok((s, _)) => {
-                    cases.push(name);
-                    summaries.push(s);
-                }
-                // Gone since it was listed: another run is replacing this folder (and writes
-                // the index again when it has). The file may be back by the time this looks,
-                // so the read's own error says so, not a second look at the folder.
-                Err(e)
-                    if e.chain().any(|c| {
-                        c.downcast_ref::<std::io::Error>()
-                            .is_some_and(|io| io.kind() == std::io::ErrorKind::NotFound)
-                    }) => {}
-                Err(e) => return Err(e),
-            }
-        }
-    }
+    let listing = Listing::read(out_dir)?;
     let mut doc = Doc {
         title: "cardan results".into(),
         blocks: Vec::new(),
     };
-    let optimized = if optimizations.is_empty() {
+    let optimized = if listing.optimizations.is_empty() {
         String::new()
     } else {
-        format!(", {} optimisation(s)", optimizations.len())
+        format!(", {} optimisation(s)", listing.optimizations.len())
     };
     doc.push(Block::Paragraph(format!(
         "{} case(s){optimized} and {} sweep(s). Headline metrics: the whole machine's, every cylinder at \
          its own crank angle (`machine_*`; in a summary without them, of a machine of one \
          cylinder, its cylinder's: the total loads where a gas model adds them, else the \
          inertial ones); — where a mechanism has no such metric.",
-        cases.len(),
-        sweeps.len()
+        listing.cases.len(),
+        listing.sweeps.len()
     )));
-    if !cases.is_empty() {
-        doc.push(Block::Heading(2, "Cases".into()));
-        doc.push(Block::Links(
-            cases
-                .iter()
-                .map(|c| (c.clone(), target(out_dir, c, "summary.json"), String::new()))
-                .collect(),
-        ));
-        let mut header = vec![
-            "case".to_string(),
-            "machine".to_string(),
-            "layout".to_string(),
-            "mechanism".to_string(),
-        ];
-        let mut align = vec![Align::Left; 4];
-        for (title, _, _) in HEADLINES {
-            header.push(title.to_string());
-            align.push(Align::Right);
-        }
-        let mut rows = Vec::new();
-        for (c, s) in cases.iter().zip(&summaries) {
-            for m in &s.mechanisms {
-                let mut row = vec![
-                    c.clone(),
-                    s.machine.clone(),
-                    layout_cell(s),
-                    format!("`{}`", m.name),
-                ];
-                for (_, machine, one_cylinder) in HEADLINES {
-                    let v = machine.value(m).or_else(|| {
-                        // A cylinder's figure is the machine's only for a machine of one.
-                        (s.cylinders == 1)
-                            .then(|| one_cylinder.iter().find_map(|c| c.value(m)))
-                            .flatten()
-                    });
-                    row.push(match v {
-                        Some(v) => fmt_num(v),
-                        None => "—".into(),
-                    });
-                }
-                rows.push(row);
-            }
-        }
-        doc.push(Block::Heading(2, "Headline metrics".into()));
-        doc.push(Block::Table {
-            header,
-            align,
-            rows,
-        });
-        doc.push(Block::Paragraph(
-            "Mean drive power: of the torque the drive applies to the crankshaft, positive in \
-             the direction of rotation: positive when the drive delivers power to the machine \
-             (a pump's need), negative when the machine delivers it (an engine whose gas drives \
-             the crank). Peaks are magnitudes: the peak drive torque is the larger of \
-             |`machine_torque_max`| and |`machine_torque_min`|. A main-journal or crank-pin load \
-             is the peak over the machine's journals or pins."
-                .into(),
-        ));
+    if !listing.cases.is_empty() {
+        push_cases(&mut doc, out_dir, &listing.cases, &listing.summaries);
     }
-    if !sweeps.is_empty() {
-        doc.push(Block::Heading(2, "Sweeps".into()));
-        doc.push(Block::Links(
-            sweeps
-                .iter()
-                .map(|s| {
-                    let points = folders(&out_dir.join(s)).map_or(0, |f| {
-                        f.iter()
-                            .filter(|p| out_dir.join(s).join(p).join("summary.json").is_file())
-                            .count()
-                    });
-                    (
-                        s.clone(),
-                        target(out_dir, s, "sweep.csv"),
-                        format!("{points} points"),
-                    )
-                })
-                .collect(),
-        ));
+    if !listing.sweeps.is_empty() {
+        push_sweeps(&mut doc, out_dir, &listing.sweeps);
     }
-    if !optimizations.is_empty() {
-        doc.push(Block::Heading(2, "Optimisations".into()));
-        doc.push(Block::Links(
-            optimizations
-                .iter()
-                .map(|o| {
-                    (
-                        o.clone(),
-                        href(&format!("{o}/report.md")),
-                        "each mechanism at its own optimum; compared side by side in \
-                         at-optima/report.html"
-                            .to_string(),
-                    )
-                })
-                .collect(),
-        ));
+    if !listing.optimizations.is_empty() {
+        push_optimizations(&mut doc, &listing.optimizations);
     }
     crate::files::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
+}
+
+/// An output folder's folders by kind, each kind in the order of [`folders`].
+struct Listing {
+    /// The case folders whose summary was read.
+    cases: Vec<String>,
+    /// Their summaries, one per case, in the same order.
+    summaries: Vec<data::CaseSummary>,
+    /// The sweep folders (those holding `sweep.csv`).
+    sweeps: Vec<String>,
+    /// The optimisation folders (see [`OPTIMUM_CHART`]).
+    optimizations: Vec<String>,
+}
+
+impl Listing {
+    /// Sorts `out_dir`'s folders by kind, reading each case's summary.
+    fn read(out_dir: &Path) -> anyhow::Result<Self> {
+        let mut listing = Listing {
+            cases: Vec::new(),
+            summaries: Vec::new(),
+            sweeps: Vec::new(),
+            optimizations: Vec::new(),
+        };
+        for name in folders(out_dir)? {
+            let dir = out_dir.join(&name);
+            if dir.join("sweep.csv").is_file() {
+                listing.sweeps.push(name);
+            } else if dir.join(OPTIMUM_CHART).is_file() && dir.join("report.md").is_file() {
+                listing.optimizations.push(name);
+            } else if dir.join("summary.json").is_file() {
+                match data::read_summary(&dir.join("summary.json"), None) {
+                    Ok((s, _)) => {
+                        listing.cases.push(name);
+                        listing.summaries.push(s);
+                    }
+                    // Gone since it was listed: another run is replacing this folder (and writes
+                    // the index again when it has). The file may be back by the time this looks,
+                    // so the read's own error says so, not a second look at the folder.
+                    Err(e)
+                        if e.chain().any(|c| {
+                            c.downcast_ref::<std::io::Error>()
+                                .is_some_and(|io| io.kind() == std::io::ErrorKind::NotFound)
+                        }) => {}
+                    Err(e) => return Err(e),
+                }
+            }
+        }
+        Ok(listing)
+    }
+}
+
+/// The cases' section: their links, the headline table and what its peaks mean.
+fn push_cases(doc: &mut Doc, out_dir: &Path, cases: &[String], summaries: &[data::CaseSummary]) {
+    doc.push(Block::Heading(2, "Cases".into()));
+    doc.push(Block::Links(
+        cases
+            .iter()
+            .map(|c| (c.clone(), target(out_dir, c, "summary.json"), String::new()))
+            .collect(),
+    ));
+    doc.push(Block::Heading(2, "Headline metrics".into()));
+    doc.push(headline_table(cases, summaries));
+    doc.push(Block::Paragraph(
+        "Mean drive power: of the torque the drive applies to the crankshaft, positive in \
+         the direction of rotation: positive when the drive delivers power to the machine \
+         (a pump's need), negative when the machine delivers it (an engine whose gas drives \
+         the crank). Peaks are magnitudes: the peak drive torque is the larger of \
+         |`machine_torque_max`| and |`machine_torque_min`|. A main-journal or crank-pin load \
+         is the peak over the machine's journals or pins."
+            .into(),
+    ));
+}
+
+/// The headline table: a row per case and mechanism, a column per [`HEADLINES`] entry.
+fn headline_table(cases: &[String], summaries: &[data::CaseSummary]) -> Block {
+    let mut header = vec![
+        "case".to_string(),
+        "machine".to_string(),
+        "layout".to_string(),
+        "mechanism".to_string(),
+    ];
+    let mut align = vec![Align::Left; 4];
+    for (title, _, _) in HEADLINES {
+        header.push(title.to_string());
+        align.push(Align::Right);
+    }
+    let mut rows = Vec::new();
+    for (c, s) in cases.iter().zip(summaries) {
+        for m in &s.mechanisms {
+            let mut row = vec![
+                c.clone(),
+                s.machine.clone(),
+                layout_cell(s),
+                format!("`{}`", m.name),
+            ];
+            for (_, machine, one_cylinder) in HEADLINES {
+                let v = machine.value(m).or_else(|| {
+                    // A cylinder's figure is the machine's only for a machine of one.
+                    (s.cylinders == 1)
+                        .then(|| one_cylinder.iter().find_map(|c| c.value(m)))
+                        .flatten()
+                });
+                row.push(match v {
+                    Some(v) => fmt_num(v),
+                    None => "—".into(),
+                });
+            }
+            rows.push(row);
+        }
+    }
+    Block::Table {
+        header,
+        align,
+        rows,
+    }
+}
+
+/// The sweeps' section: a link to each with its number of points.
+fn push_sweeps(doc: &mut Doc, out_dir: &Path, sweeps: &[String]) {
+    doc.push(Block::Heading(2, "Sweeps".into()));
+    doc.push(Block::Links(
+        sweeps
+            .iter()
+            .map(|s| {
+                let points = folders(&out_dir.join(s)).map_or(0, |f| {
+                    f.iter()
+                        .filter(|p| out_dir.join(s).join(p).join("summary.json").is_file())
+                        .count()
+                });
+                (
+                    s.clone(),
+                    target(out_dir, s, "sweep.csv"),
+                    format!("{points} points"),
+                )
+            })
+            .collect(),
+    ));
+}
+
+/// The optimisations' section: a link to each one's report.
+fn push_optimizations(doc: &mut Doc, optimizations: &[String]) {
+    doc.push(Block::Heading(2, "Optimisations".into()));
+    doc.push(Block::Links(
+        optimizations
+            .iter()
+            .map(|o| {
+                (
+                    o.clone(),
+                    href(&format!("{o}/report.md")),
+                    "each mechanism at its own optimum; compared side by side in \
+                     at-optima/report.html"
+                        .to_string(),
+                )
+            })
+            .collect(),
+    ));
 }
 
 /// The chart only an optimisation's folder holds (`[optimize]`, issue 40: its folder has no

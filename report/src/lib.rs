@@ -61,6 +61,7 @@ mod log_chart;
 mod numbers;
 mod rows;
 mod svg;
+mod sweep_axis;
 mod sweeps;
 mod thinning;
 

@@ -48,10 +48,13 @@ pub fn locus_chart(chart: &LocusChart) -> String {
         .filter(|v| v.is_finite())
         .fold(0.0_f64, |m, v| m.max(v.abs()));
     let (lo, hi, step) = nice_range(-reach, reach, 6.0);
-    let side = PLOT_HEIGHT;
+    let square = Square {
+        lo,
+        hi,
+        side: PLOT_HEIGHT,
+    };
+    let side = square.side;
     let (scale, pre) = crate::svg::prefix(lo.abs().max(hi.abs()), &chart.unit);
-    let px = |v: f64| LEFT + (v - lo) / (hi - lo) * side;
-    let py = |v: f64| TOP + (hi - v) / (hi - lo) * side;
     let labels: Vec<String> = chart.series.iter().map(|s| s.label.clone()).collect();
     let legend_top = TOP + side + 50.0;
     let (legend, legend_h) = legend_layout(&labels, legend_top);
@@ -60,6 +63,43 @@ pub fn locus_chart(chart: &LocusChart) -> String {
     open_svg(&mut o, height);
     chart_heading(&mut o, &chart.title, LEFT);
     open_plot(&mut o, [LEFT, TOP, side, side], (lo, hi), (lo, hi));
+    square_grid(&mut o, &square, step, scale);
+    for (k, s) in chart.series.iter().enumerate() {
+        locus_series(&mut o, chart, k, s, &square);
+    }
+    o.push_str("</g>\n");
+    axis_titles(&mut o, chart, pre, side);
+    legend_lines(&mut o, &chart.series, &legend);
+    o.push_str("</g>\n</svg>\n");
+    o
+}
+
+/// The square plot's range, the same on both axes, and its side in pixels.
+struct Square {
+    /// The axes' lower end, SI.
+    lo: f64,
+    /// The axes' upper end, SI.
+    hi: f64,
+    /// The side of the plot, px.
+    side: f64,
+}
+
+impl Square {
+    /// The horizontal pixel of `v` on the x axis.
+    fn px(&self, v: f64) -> f64 {
+        LEFT + (v - self.lo) / (self.hi - self.lo) * self.side
+    }
+
+    /// The vertical pixel of `v` on the y axis.
+    fn py(&self, v: f64) -> f64 {
+        TOP + (self.hi - v) / (self.hi - self.lo) * self.side
+    }
+}
+
+/// The plot's frame, its grid lines with their tick labels on both axes, and the axes through
+/// the origin.
+fn square_grid(o: &mut String, square: &Square, step: f64, scale: f64) {
+    let (lo, hi, side) = (square.lo, square.hi, square.side);
     let _ = writeln!(
         o,
         "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>",
@@ -78,8 +118,8 @@ pub fn locus_chart(chart: &LocusChart) -> String {
             c(LEFT),
             c(LEFT + side),
             c(LEFT - 6.0),
-            c(py(v) + 4.0),
-            y = c(py(v))
+            c(square.py(v) + 4.0),
+            y = c(square.py(v))
         );
         let _ = writeln!(
             o,
@@ -87,7 +127,7 @@ pub fn locus_chart(chart: &LocusChart) -> String {
             c(TOP),
             c(TOP + side),
             c(TOP + side + 16.0),
-            x = c(px(v))
+            x = c(square.px(v))
         );
     }
     let _ = writeln!(
@@ -97,56 +137,62 @@ pub fn locus_chart(chart: &LocusChart) -> String {
         c(LEFT + side),
         c(TOP),
         c(TOP + side),
-        y = c(py(0.0)),
-        x = c(px(0.0))
+        y = c(square.py(0.0)),
+        x = c(square.px(0.0))
     );
-    for (k, s) in chart.series.iter().enumerate() {
-        let colour = PALETTE[s.colour % PALETTE.len()];
-        let mut points = String::with_capacity(s.x.len() * 14);
-        let mut n = 0;
-        for (a, b) in s.x.iter().zip(&s.y) {
-            if a.is_finite() && b.is_finite() {
-                push_coord(&mut points, px(*a));
-                points.push(',');
-                push_coord(&mut points, py(*b));
-                points.push(' ');
-                n += 1;
-            }
-        }
-        points.pop();
-        let x_column = chart.x_columns.get(k).map_or("", String::as_str);
-        let dash = DASHES[s.dash % DASHES.len()];
-        let dash = if dash.is_empty() {
-            String::new()
-        } else {
-            format!(" stroke-dasharray=\"{dash}\"")
-        };
-        let frame = if chart.crank_frame {
-            " data-frame=\"crank\""
-        } else {
-            ""
-        };
-        let _ = writeln!(
-            o,
-            "<polyline class=\"series\" data-label=\"{}\" data-source=\"{}\" data-x-column=\"{}\"{frame} data-n=\"{n}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.6\"{dash} points=\"{points}\"/>",
-            esc(&s.label),
-            esc(&s.source),
-            esc(x_column),
-        );
-        if let Some((a, b)) =
-            s.x.iter()
-                .zip(&s.y)
-                .find(|(a, b)| a.is_finite() && b.is_finite())
-        {
-            let _ = writeln!(
-                o,
-                "<circle class=\"start\" cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{colour}\"/>",
-                c(px(*a)),
-                c(py(*b))
-            );
+}
+
+/// The `k`th series: its polyline over the finite points with its data attributes, and a dot
+/// at its first finite point.
+fn locus_series(o: &mut String, chart: &LocusChart, k: usize, s: &Series, square: &Square) {
+    let colour = PALETTE[s.colour % PALETTE.len()];
+    let mut points = String::with_capacity(s.x.len() * 14);
+    let mut n = 0;
+    for (a, b) in s.x.iter().zip(&s.y) {
+        if a.is_finite() && b.is_finite() {
+            push_coord(&mut points, square.px(*a));
+            points.push(',');
+            push_coord(&mut points, square.py(*b));
+            points.push(' ');
+            n += 1;
         }
     }
-    o.push_str("</g>\n");
+    points.pop();
+    let x_column = chart.x_columns.get(k).map_or("", String::as_str);
+    let dash = DASHES[s.dash % DASHES.len()];
+    let dash = if dash.is_empty() {
+        String::new()
+    } else {
+        format!(" stroke-dasharray=\"{dash}\"")
+    };
+    let frame = if chart.crank_frame {
+        " data-frame=\"crank\""
+    } else {
+        ""
+    };
+    let _ = writeln!(
+        o,
+        "<polyline class=\"series\" data-label=\"{}\" data-source=\"{}\" data-x-column=\"{}\"{frame} data-n=\"{n}\" fill=\"none\" stroke=\"{colour}\" stroke-width=\"1.6\"{dash} points=\"{points}\"/>",
+        esc(&s.label),
+        esc(&s.source),
+        esc(x_column),
+    );
+    if let Some((a, b)) =
+        s.x.iter()
+            .zip(&s.y)
+            .find(|(a, b)| a.is_finite() && b.is_finite())
+    {
+        let _ = writeln!(
+            o,
+            "<circle class=\"start\" cx=\"{}\" cy=\"{}\" r=\"3\" fill=\"{colour}\"/>",
+            c(square.px(*a)),
+            c(square.py(*b))
+        );
+    }
+}
+
+/// Both axes' titles, each with the unit and its prefix.
+fn axis_titles(o: &mut String, chart: &LocusChart, pre: &str, side: f64) {
     let unit = pretty_unit_prefixed(pre, &chart.unit);
     let title = |label: &str| {
         if unit.is_empty() {
@@ -168,9 +214,6 @@ pub fn locus_chart(chart: &LocusChart) -> String {
         c(TOP + side / 2.0),
         esc(&title(&chart.y_label))
     );
-    legend_lines(&mut o, &chart.series, &legend);
-    o.push_str("</g>\n</svg>\n");
-    o
 }
 
 #[cfg(test)]

@@ -316,6 +316,8 @@ pub(crate) fn open_plot(
     );
 }
 
+/// The line chart as an SVG document: the series thinned to [`MAX_POINTS`], its bands, the
+/// grid, the axes' titles and the legend.
 pub fn line_chart(chart: &LineChart) -> String {
     let decimated: Vec<(Vec<f64>, Vec<f64>)> = chart
         .series
@@ -357,6 +359,35 @@ pub fn line_chart(chart: &LineChart) -> String {
         c(PLOT_HEIGHT)
     );
     // Grid and tick labels.
+    y_grid(&mut o, (y_lo, y_hi, y_step), scale, plot_w, &py);
+    x_grid(&mut o, &chart.x_categories, (x_lo, x_hi, x_step), &px);
+    if chart.zero_line && y_lo < 0.0 && y_hi > 0.0 {
+        let _ = writeln!(
+            o,
+            "<line class=\"zero\" x1=\"{}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"#000\" stroke-width=\"1.2\"/>",
+            c(LEFT),
+            c(LEFT + plot_w),
+            y = c(py(0.0))
+        );
+    }
+    bands(&mut o, &chart.bands, (LEFT, plot_w), &py);
+    series_lines(&mut o, &chart.series, &decimated, px, py);
+    o.push_str("</g>\n");
+    line_axis_titles(&mut o, chart, pre, plot_w);
+    legend_lines(&mut o, &chart.series, &legend);
+    o.push_str("</g>\n</svg>\n");
+    o
+}
+
+/// The horizontal grid lines over `(y_lo, y_hi, y_step)` with their tick labels in the
+/// axis's prefixed unit (`scale` SI units per displayed unit).
+fn y_grid(
+    o: &mut String,
+    (y_lo, y_hi, y_step): (f64, f64, f64),
+    scale: f64,
+    plot_w: f64,
+    py: &impl Fn(f64) -> f64,
+) {
     let y_ticks = ((y_hi - y_lo) / y_step).round() as usize;
     for k in 0..=y_ticks {
         let v = y_lo + k as f64 * y_step;
@@ -372,6 +403,16 @@ pub fn line_chart(chart: &LineChart) -> String {
             y = c(y)
         );
     }
+}
+
+/// The vertical grid lines with their labels: of a text axis at most 12 of its categories,
+/// else over `(x_lo, x_hi, x_step)`.
+fn x_grid(
+    o: &mut String,
+    categories: &Option<Vec<String>>,
+    (x_lo, x_hi, x_step): (f64, f64, f64),
+    px: &impl Fn(f64) -> f64,
+) {
     // A vertical grid line at x with its label under the plot.
     let x_tick = |o: &mut String, x: f64, label: &str| {
         let _ = writeln!(
@@ -383,33 +424,25 @@ pub fn line_chart(chart: &LineChart) -> String {
             x = c(x)
         );
     };
-    match &chart.x_categories {
+    match categories {
         Some(cats) => {
             let every = cats.len().div_ceil(12).max(1);
             for (k, cat) in cats.iter().enumerate().step_by(every) {
-                x_tick(&mut o, px(k as f64), &esc(cat));
+                x_tick(o, px(k as f64), &esc(cat));
             }
         }
         None => {
             let x_ticks = ((x_hi - x_lo) / x_step).round() as usize;
             for k in 0..=x_ticks {
                 let v = x_lo + k as f64 * x_step;
-                x_tick(&mut o, px(v), &tick_label(v, x_step));
+                x_tick(o, px(v), &tick_label(v, x_step));
             }
         }
     }
-    if chart.zero_line && y_lo < 0.0 && y_hi > 0.0 {
-        let _ = writeln!(
-            o,
-            "<line class=\"zero\" x1=\"{}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"#000\" stroke-width=\"1.2\"/>",
-            c(LEFT),
-            c(LEFT + plot_w),
-            y = c(py(0.0))
-        );
-    }
-    bands(&mut o, &chart.bands, (LEFT, plot_w), &py);
-    series_lines(&mut o, &chart.series, &decimated, px, py);
-    o.push_str("</g>\n");
+}
+
+/// The line chart's axis titles: x as given, y with its unit and the unit's prefix.
+fn line_axis_titles(o: &mut String, chart: &LineChart, pre: &str, plot_w: f64) {
     let unit = pretty_unit_prefixed(pre, &chart.y_unit);
     let y_title = if unit.is_empty() {
         chart.y_label.clone()
@@ -429,9 +462,6 @@ pub fn line_chart(chart: &LineChart) -> String {
         c(TOP + PLOT_HEIGHT / 2.0),
         esc(&y_title)
     );
-    legend_lines(&mut o, &chart.series, &legend);
-    o.push_str("</g>\n</svg>\n");
-    o
 }
 
 /// Writes the plot group's `factors` (`data-x-factor`, `data-y-factor`: display units per SI

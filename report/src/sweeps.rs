@@ -10,6 +10,7 @@ use crate::numbers::{
     ROUND_OFF_LEGEND, SIGN_LEGEND,
 };
 use crate::svg::{self, LineChart, Series};
+use crate::sweep_axis::Axis;
 use std::path::Path;
 
 /// The metrics a sweep report charts, in this order: each entry is a list of alternatives of
@@ -106,116 +107,6 @@ fn add_machine_torque_peak(t: &mut SweepTable) {
         t.metrics.insert(format!("{m}.{MACHINE_TORQUE_PEAK}"), peak);
         t.units.insert(MACHINE_TORQUE_PEAK.into(), "N*m".into());
     }
-}
-
-/// One swept field's values as an axis.
-#[derive(Debug, Clone)]
-pub(super) struct Axis {
-    /// Axis title: the field's path and unit.
-    pub title: String,
-    /// Each point's number, when every value reads as a number with one unit.
-    pub numbers: Option<Vec<f64>>,
-    /// Each point's text.
-    pub texts: Vec<String>,
-}
-
-impl Axis {
-    fn of(t: &SweepTable, k: usize) -> Axis {
-        let texts: Vec<String> = t.params.iter().map(|p| p[k].clone()).collect();
-        let parsed: Option<Vec<(f64, String)>> = texts.iter().map(|s| parse_quantity(s)).collect();
-        let numbers = parsed.as_ref().and_then(|p| {
-            let unit = &p.first()?.1;
-            p.iter()
-                .all(|(_, u)| u == unit)
-                .then(|| p.iter().map(|(v, _)| *v).collect())
-        });
-        let unit = parsed
-            .as_ref()
-            .and_then(|p| p.first().map(|(_, u)| u.clone()))
-            .filter(|u| !u.is_empty() && numbers.is_some());
-        Axis {
-            title: match unit {
-                Some(u) => format!("{}, {u}", t.swept[k]),
-                None => t.swept[k].clone(),
-            },
-            numbers,
-            texts,
-        }
-    }
-
-    /// The distinct values in axis order (numeric ascending, else first appearance): their
-    /// texts, and each point's index among them.
-    fn levels(&self) -> (Vec<String>, Vec<usize>) {
-        let mut order: Vec<usize> = Vec::new();
-        for (k, s) in self.texts.iter().enumerate() {
-            if !order.iter().any(|&o| self.texts[o] == *s) {
-                order.push(k);
-            }
-        }
-        if let Some(n) = &self.numbers {
-            order.sort_by(|a, b| n[*a].total_cmp(&n[*b]));
-        }
-        let labels: Vec<String> = order.iter().map(|&o| self.texts[o].clone()).collect();
-        let index = self
-            .texts
-            .iter()
-            .map(|s| labels.iter().position(|l| l == s).unwrap_or(0))
-            .collect();
-        (labels, index)
-    }
-
-    /// The levels as tick labels: without their unit when the axis title carries it.
-    fn tick_labels(&self) -> Vec<String> {
-        let (levels, _) = self.levels();
-        if self.numbers.is_none() {
-            return levels;
-        }
-        let values: Vec<f64> = levels
-            .iter()
-            .filter_map(|l| parse_quantity(l).map(|(v, _)| v))
-            .collect();
-        if values.len() == levels.len() {
-            return readable(&values);
-        }
-        levels
-            .iter()
-            .map(|l| l.split_whitespace().next().unwrap_or(l).to_string())
-            .collect()
-    }
-}
-
-/// Tick labels of `values` rounded to readable numbers (issue 38: "229" for a log-spaced
-/// level of 228.852 rpm): the fewest significant figures, three at least, that keep
-/// neighbouring levels apart, without trailing zeros.
-pub(crate) fn readable(values: &[f64]) -> Vec<String> {
-    let round = |v: f64, sig: i32| -> String {
-        if v == 0.0 || !v.is_finite() {
-            return format!("{v}");
-        }
-        let decimals = (sig - 1 - v.abs().log10().floor() as i32).max(0) as usize;
-        let s = format!("{v:.decimals$}");
-        let s = if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            // Beyond the significant figures: round the integer part too.
-            let scale = 10f64
-                .powi(v.abs().log10().floor() as i32 + 1 - sig)
-                .max(1.0);
-            format!("{}", (v / scale).round() * scale)
-        };
-        if s == "-0" {
-            "0".into()
-        } else {
-            s
-        }
-    };
-    for sig in 3..=12 {
-        let labels: Vec<String> = values.iter().map(|v| round(*v, sig)).collect();
-        if labels.windows(2).all(|w| w[0] != w[1]) {
-            return labels;
-        }
-    }
-    values.iter().map(|v| format!("{v}")).collect()
 }
 
 /// The key metrics present: the first alternative of each [`KEY_METRICS`] entry that some
@@ -423,52 +314,87 @@ fn line_charts(
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|a, b| x[*a].total_cmp(&x[*b]));
     let pick = |v: &[f64]| -> Vec<f64> { order.iter().map(|&k| v[k]).collect() };
-    let xs = pick(&x);
-    let mut out = Vec::new();
-    for metric in keys {
-        let series: Vec<Series> = t
-            .mechanisms
-            .iter()
-            .enumerate()
-            .filter_map(|(k, m)| {
-                t.column(m, metric).map(|c| Series {
-                    label: m.clone(),
-                    source: format!("sweep.csv:{m}.{metric}"),
-                    x: xs.clone(),
-                    y: pick(c),
-                    colour: k,
-                    // Told apart in black and white too (issue 38).
-                    dash: k,
-                    markers: true,
-                    x_column: None,
-                })
+    let along = Along {
+        axis,
+        xs: pick(&x),
+        categories,
+        pick: &pick,
+    };
+    let mut out: Vec<(String, String, String)> = keys
+        .iter()
+        .map(|metric| metric_line_chart(t, metric, &along))
+        .collect();
+    out.extend(difference_line_chart(t, keys, reference, &along));
+    out
+}
+
+/// The points of a line sweep in the order of their axis, as its charts draw them.
+struct Along<'a> {
+    /// The swept axis.
+    axis: &'a Axis,
+    /// The points' abscissae in increasing order (a text axis's points numbered).
+    xs: Vec<f64>,
+    /// A text axis's labels, `None` for a numeric one.
+    categories: Option<Vec<String>>,
+    /// A column of the table in the order of `xs`.
+    pick: &'a dyn Fn(&[f64]) -> Vec<f64>,
+}
+
+/// The line chart of one key metric: a series per mechanism that has it.
+fn metric_line_chart(t: &SweepTable, metric: &String, along: &Along) -> (String, String, String) {
+    let axis = along.axis;
+    let series: Vec<Series> = t
+        .mechanisms
+        .iter()
+        .enumerate()
+        .filter_map(|(k, m)| {
+            t.column(m, metric).map(|c| Series {
+                label: m.clone(),
+                source: format!("sweep.csv:{m}.{metric}"),
+                x: along.xs.clone(),
+                y: (along.pick)(c),
+                colour: k,
+                // Told apart in black and white too (issue 38).
+                dash: k,
+                markers: true,
+                x_column: None,
             })
-            .collect();
-        let unit = t.units.get(metric).cloned().unwrap_or_default();
-        let chart = LineChart {
-            title: match whose(t, metric) {
-                Some(w) => format!("{metric} ({w}) over {}", axis.title),
-                None => format!("{metric} over {}", axis.title),
-            },
-            x_label: axis.title.clone(),
-            y_label: metric.clone(),
-            y_unit: unit,
-            series,
-            zero_line: true,
-            x_categories: categories.clone(),
-            angle_axis: false,
-            ..LineChart::default()
-        };
-        out.push((
-            format!("{metric}.svg"),
-            svg::line_chart(&chart),
-            format!(
-                "{} of every mechanism over `{}`",
-                named(t, metric),
-                axis.title
-            ),
-        ));
-    }
+        })
+        .collect();
+    let unit = t.units.get(metric).cloned().unwrap_or_default();
+    let chart = LineChart {
+        title: match whose(t, metric) {
+            Some(w) => format!("{metric} ({w}) over {}", axis.title),
+            None => format!("{metric} over {}", axis.title),
+        },
+        x_label: axis.title.clone(),
+        y_label: metric.clone(),
+        y_unit: unit,
+        series,
+        zero_line: true,
+        x_categories: along.categories.clone(),
+        angle_axis: false,
+        ..LineChart::default()
+    };
+    (
+        format!("{metric}.svg"),
+        svg::line_chart(&chart),
+        format!(
+            "{} of every mechanism over `{}`",
+            named(t, metric),
+            axis.title
+        ),
+    )
+}
+
+/// The chart of every other mechanism's differences to the reference, none without any.
+fn difference_line_chart(
+    t: &SweepTable,
+    keys: &[String],
+    reference: &str,
+    along: &Along,
+) -> Option<(String, String, String)> {
+    let axis = along.axis;
     let others: Vec<&String> = t.mechanisms.iter().filter(|m| *m != reference).collect();
     let mut series = Vec::new();
     for m in &others {
@@ -484,8 +410,8 @@ fn line_charts(
                     metric.clone()
                 },
                 source: format!("sweep.csv:{m}.{metric}-{reference}.{metric}"),
-                x: xs.clone(),
-                y: pick(&d),
+                x: along.xs.clone(),
+                y: (along.pick)(&d),
                 colour: b,
                 // Every series its own dash (issue 38): told apart in black and white.
                 dash: series.len(),
@@ -494,29 +420,29 @@ fn line_charts(
             });
         }
     }
-    if !series.is_empty() {
-        let names: Vec<&str> = others.iter().map(|s| s.as_str()).collect();
-        let chart = LineChart {
-            title: format!("Difference of {} to {reference}", names.join(", ")),
-            x_label: axis.title.clone(),
-            y_label: "Δ".into(),
-            y_unit: "%".into(),
-            series,
-            zero_line: true,
-            x_categories: categories,
-            angle_axis: false,
-            ..LineChart::default()
-        };
-        out.push((
-            "difference.svg".into(),
-            svg::line_chart(&chart),
-            format!(
-                "Δ = (mechanism − `{reference}`) / |`{reference}`| in % over `{}`; below 0 the mechanism's value is smaller",
-                axis.title
-            ),
-        ));
+    if series.is_empty() {
+        return None;
     }
-    out
+    let names: Vec<&str> = others.iter().map(|s| s.as_str()).collect();
+    let chart = LineChart {
+        title: format!("Difference of {} to {reference}", names.join(", ")),
+        x_label: axis.title.clone(),
+        y_label: "Δ".into(),
+        y_unit: "%".into(),
+        series,
+        zero_line: true,
+        x_categories: along.categories.clone(),
+        angle_axis: false,
+        ..LineChart::default()
+    };
+    Some((
+        "difference.svg".into(),
+        svg::line_chart(&chart),
+        format!(
+            "Δ = (mechanism − `{reference}`) / |`{reference}`| in % over `{}`; below 0 the mechanism's value is smaller",
+            axis.title
+        ),
+    ))
 }
 
 /// Heat maps over a grid: each key metric of every mechanism, and each difference.
@@ -599,6 +525,8 @@ fn heat_maps(
     out
 }
 
+/// Writes a sweep's report: what was swept, the verdicts, a table per key metric, the charts
+/// and the links to its points.
 pub(super) fn sweep_report(
     sweep_dir: &Path,
     name: &str,
@@ -612,92 +540,14 @@ pub(super) fn sweep_report(
         title: format!("Sweep report: {name}"),
         blocks: Vec::new(),
     };
-    let fields: Vec<String> = (0..t.swept.len())
-        .map(|k| {
-            let axis = Axis::of(&t, k);
-            let (levels, _) = axis.levels();
-            format!(
-                "`{}` ({} values: {} … {})",
-                t.swept[k],
-                levels.len(),
-                levels.first().map_or("", String::as_str),
-                levels.last().map_or("", String::as_str)
-            )
-        })
-        .collect();
-    doc.push(Block::Paragraph(format!(
-        "{} points; swept: {}; {}. Mechanisms: {}; reference `{reference}`.",
-        t.cases.len(),
-        if fields.is_empty() {
-            "nothing".into()
-        } else {
-            fields.join(", ")
-        },
-        match &layout {
-            Layout::Grid(..) => "a full grid of two fields: heat maps",
-            Layout::Line(_) => "charts along the points",
-        },
-        t.mechanisms
-            .iter()
-            .map(|m| format!("`{m}`"))
-            .collect::<Vec<_>>()
-            .join(", ")
-    )));
-    let list = if multi_cylinder(&t) {
-        format!(
-            "of a machine of several cylinders: the whole machine's machine_mechanical_efficiency; \
-             machine_loss_power_mean; machine_power_mean (lower is better: a pump's smaller \
-             need, an engine's larger output, which is negative); {MACHINE_TORQUE_PEAK}, the \
-             larger of |machine_torque_max| and |machine_torque_min| of each point (made by \
-             this report); machine_main_bearing_force_max; machine_crank_pin_force_max; then \
-             {}'s total_torque_max or inertial_torque_max",
-            whose(&t, "total_torque_max").unwrap_or("one cylinder")
-        )
-    } else {
-        "mechanical_efficiency; power_loss_mean; power_need_mean or output_power_mean; \
-         total_torque_max or inertial_torque_max; inertial_torque_max; \
-         total_crank_pin_force_max or inertial_crank_pin_force_max; total_power_mean or \
-         inertial_power_mean"
-            .to_string()
-    };
-    doc.push(Block::Paragraph(format!(
-        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better for \
-         loads, torques, power need and losses; higher is better for efficiency and output. Key \
-         metrics (the first present of each entry of the list {list}): {}. \
-         {ROUND_OFF_LEGEND}",
-        keys.iter()
-            .map(|k| format!("`{k}`"))
-            .collect::<Vec<_>>()
-            .join(", ")
-    )));
+    doc.push(Block::Paragraph(overview(&t, &layout, &reference)));
+    doc.push(Block::Paragraph(key_metrics_legend(&t, &keys, &reference)));
     if t.mechanisms.len() > 1 {
-        doc.push(Block::Heading(2, "Where each mechanism is better".into()));
-        let line = match &layout {
-            Layout::Line(a) => Some(a),
-            Layout::Grid(..) => None,
-        };
-        let items = verdicts(&t, &keys, &reference, line);
-        if items.is_empty() {
-            doc.push(Block::Paragraph("No key metric to compare.".into()));
-        } else {
-            doc.push(Block::List(items));
-        }
+        push_verdicts(&mut doc, &t, &keys, &reference, &layout);
     }
     doc.push(Block::Heading(2, "Key metrics".into()));
     for metric in &keys {
-        let unit = svg::pretty_unit(t.units.get(metric).map_or("", String::as_str));
-        doc.push(Block::Heading(
-            3,
-            if unit.is_empty() {
-                named(&t, metric)
-            } else {
-                format!("{}, {unit}", named(&t, metric))
-            },
-        ));
-        doc.push(metric_table(&t, metric, &reference));
-        if signed(metric) {
-            doc.push(Block::Paragraph(SIGN_LEGEND.into()));
-        }
+        push_metric_table(&mut doc, &t, metric, &reference);
     }
     let plots = match &layout {
         Layout::Line(axis) => line_charts(&t, &keys, &reference, axis),
@@ -711,8 +561,117 @@ pub(super) fn sweep_report(
             caption: caption.clone(),
         });
     }
+    let points = point_links(sweep_dir, &t.cases);
+    if !points.is_empty() {
+        doc.push(Block::Heading(2, "Points".into()));
+        doc.push(Block::Links(points));
+    }
+    let files: Vec<(String, String)> = plots.into_iter().map(|(f, s, _)| (f, s)).collect();
+    write_report(sweep_dir, &doc, &files)
+}
+
+/// The report's opening: the points, each swept field's range, the layout, the mechanisms.
+fn overview(t: &SweepTable, layout: &Layout, reference: &str) -> String {
+    let fields: Vec<String> = (0..t.swept.len())
+        .map(|k| {
+            let axis = Axis::of(t, k);
+            let (levels, _) = axis.levels();
+            format!(
+                "`{}` ({} values: {} … {})",
+                t.swept[k],
+                levels.len(),
+                levels.first().map_or("", String::as_str),
+                levels.last().map_or("", String::as_str)
+            )
+        })
+        .collect();
+    format!(
+        "{} points; swept: {}; {}. Mechanisms: {}; reference `{reference}`.",
+        t.cases.len(),
+        if fields.is_empty() {
+            "nothing".into()
+        } else {
+            fields.join(", ")
+        },
+        match layout {
+            Layout::Grid(..) => "a full grid of two fields: heat maps",
+            Layout::Line(_) => "charts along the points",
+        },
+        t.mechanisms
+            .iter()
+            .map(|m| format!("`{m}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+/// What Δ means, which way is better, and the list the key metrics were taken from.
+fn key_metrics_legend(t: &SweepTable, keys: &[String], reference: &str) -> String {
+    let list = if multi_cylinder(t) {
+        format!(
+            "of a machine of several cylinders: the whole machine's machine_mechanical_efficiency; \
+             machine_loss_power_mean; machine_power_mean (lower is better: a pump's smaller \
+             need, an engine's larger output, which is negative); {MACHINE_TORQUE_PEAK}, the \
+             larger of |machine_torque_max| and |machine_torque_min| of each point (made by \
+             this report); machine_main_bearing_force_max; machine_crank_pin_force_max; then \
+             {}'s total_torque_max or inertial_torque_max",
+            whose(t, "total_torque_max").unwrap_or("one cylinder")
+        )
+    } else {
+        "mechanical_efficiency; power_loss_mean; power_need_mean or output_power_mean; \
+         total_torque_max or inertial_torque_max; inertial_torque_max; \
+         total_crank_pin_force_max or inertial_crank_pin_force_max; total_power_mean or \
+         inertial_power_mean"
+            .to_string()
+    };
+    format!(
+        "Δ = (mechanism − reference) / |reference| × 100 %, to `{reference}`. Lower is better for \
+         loads, torques, power need and losses; higher is better for efficiency and output. Key \
+         metrics (the first present of each entry of the list {list}): {}. \
+         {ROUND_OFF_LEGEND}",
+        keys.iter()
+            .map(|k| format!("`{k}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+/// The section of where each mechanism is better (a line sweep's verdicts name its ranges).
+fn push_verdicts(doc: &mut Doc, t: &SweepTable, keys: &[String], reference: &str, layout: &Layout) {
+    doc.push(Block::Heading(2, "Where each mechanism is better".into()));
+    let line = match layout {
+        Layout::Line(a) => Some(a),
+        Layout::Grid(..) => None,
+    };
+    let items = verdicts(t, keys, reference, line);
+    if items.is_empty() {
+        doc.push(Block::Paragraph("No key metric to compare.".into()));
+    } else {
+        doc.push(Block::List(items));
+    }
+}
+
+/// One key metric's heading with its unit, its table, and the sign legend where it is signed.
+fn push_metric_table(doc: &mut Doc, t: &SweepTable, metric: &String, reference: &str) {
+    let unit = svg::pretty_unit(t.units.get(metric).map_or("", String::as_str));
+    doc.push(Block::Heading(
+        3,
+        if unit.is_empty() {
+            named(t, metric)
+        } else {
+            format!("{}, {unit}", named(t, metric))
+        },
+    ));
+    doc.push(metric_table(t, metric, reference));
+    if signed(metric) {
+        doc.push(Block::Paragraph(SIGN_LEGEND.into()));
+    }
+}
+
+/// The links to the sweep's points: each to its report, else to its summary, else none.
+fn point_links(sweep_dir: &Path, cases: &[String]) -> Vec<(String, String, String)> {
     let mut points = Vec::new();
-    for c in &t.cases {
+    for c in cases {
         let dir = sweep_dir.join(c);
         if dir.join("report.html").is_file() {
             points.push((
@@ -728,35 +687,5 @@ pub(super) fn sweep_report(
             ));
         }
     }
-    if !points.is_empty() {
-        doc.push(Block::Heading(2, "Points".into()));
-        doc.push(Block::Links(points));
-    }
-    let files: Vec<(String, String)> = plots.into_iter().map(|(f, s, _)| (f, s)).collect();
-    write_report(sweep_dir, &doc, &files)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::readable;
-
-    /// A log-spaced speed sweep (90 to 6000 rpm in 10 points) is labelled in three figures,
-    /// round values stay as they are, close levels get the figures that tell them apart.
-    #[test]
-    fn sweep_levels_are_labelled_in_readable_figures() {
-        let log: Vec<f64> = (0..10)
-            .map(|k| 90.0 * (6000.0f64 / 90.0).powf(k as f64 / 9.0))
-            .collect();
-        assert_eq!(
-            readable(&log),
-            ["90", "144", "229", "365", "582", "928", "1480", "2360", "3760", "6000"]
-        );
-        assert_eq!(readable(&[140.0, 150.0, 160.0]), ["140", "150", "160"]);
-        assert_eq!(readable(&[0.0125, 0.05, 1.0]), ["0.0125", "0.05", "1"]);
-        assert_eq!(
-            readable(&[1000.0, 1001.0, 1002.5]),
-            ["1000", "1001", "1003"]
-        );
-        assert_eq!(readable(&[-3.0, 0.0, 2.5]), ["-3", "0", "2.5"]);
-    }
+    points
 }
