@@ -284,15 +284,8 @@ fn open_sinks<'a>(
         .then(|| ColumnSink::new(mechanism, layout, case.output.decimation, case.steps));
     // Without files, the charts take their rows on their own, so that the run can be shared;
     // the steps are counted for the progress display.
-    let chart_sink = (per_step.is_none() && charts).then(|| {
-        ChartSink::new(
-            mechanism,
-            layout,
-            case.output.decimation,
-            case.steps,
-            label,
-        )
-    });
+    let chart_sink = (per_step.is_none() && charts)
+        .then(|| ChartSink::new(mechanism, layout, case.output.decimation, case.steps, label));
     let sinks = (summary, (chart_sink, StepCounter));
     Ok((sinks, KeptSinks { per_step, columns }))
 }
