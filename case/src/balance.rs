@@ -224,8 +224,9 @@ fn refuse_without(
     Ok(())
 }
 
-fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, CaseError> {
-    let n = t.cylinders.0 as usize;
+/// The layout table's fields checked against its kind before any is used: fields the kind has
+/// no use for, and the cylinder count the kind needs.
+fn check_layout_kind(t: &LayoutTable, n: usize, invalid: &Invalid) -> Result<(), CaseError> {
     let kind = t.kind;
     refuse_without(
         t.bank_angle.is_some() && kind != LayoutKind::Vee,
@@ -267,22 +268,84 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
             "a radial engine has at least 3 cylinders",
         ));
     }
-    let firing = match &t.firing_order {
-        None => None,
-        Some(order) => {
-            let order: Vec<usize> = order.iter().map(|w| w.0 as usize).collect();
-            let mut sorted = order.clone();
-            sorted.sort_unstable();
-            if sorted != (1..=n).collect::<Vec<_>>() {
-                return Err(invalid(
-                    "layout.firing_order",
-                    &format!("{order:?}"),
-                    &format!("must name every cylinder 1..={n} once (a permutation)"),
-                ));
-            }
-            Some(order)
-        }
+    Ok(())
+}
+
+/// The firing order given, if any (cylinder numbers from 1), once it names each of the `n`
+/// cylinders exactly once.
+fn firing_order(
+    t: &LayoutTable,
+    n: usize,
+    invalid: &Invalid,
+) -> Result<Option<Vec<usize>>, CaseError> {
+    let Some(order) = &t.firing_order else {
+        return Ok(None);
     };
+    let order: Vec<usize> = order.iter().map(|w| w.0 as usize).collect();
+    let mut sorted = order.clone();
+    sorted.sort_unstable();
+    if sorted != (1..=n).collect::<Vec<_>>() {
+        return Err(invalid(
+            "layout.firing_order",
+            &format!("{order:?}"),
+            &format!("must name every cylinder 1..={n} once (a permutation)"),
+        ));
+    }
+    Ok(Some(order))
+}
+
+/// An inline engine's cylinders (default throw, axis angle, axial position): the throws from
+/// the firing order if given, else the inline order's, `spacing` (m) apart on one axis.
+fn inline_cylinders(
+    firing: Option<&[usize]>,
+    n: usize,
+    (cycle_angle, interval): (f64, f64),
+    spacing: f64,
+) -> Vec<(f64, f64, f64)> {
+    let default = match firing {
+        Some(order) => throws_from_firing_order(order, interval),
+        None => inline_throws(n, cycle_angle),
+    };
+    (0..n)
+        .map(|i| (default[i], 0.0, i as f64 * spacing))
+        .collect()
+}
+
+/// A vee's cylinders (default throw, axis angle, axial position): each pair on one pin of an
+/// inline crank of n/2 throws, the banks `bank` (rad) apart, the pins `spacing` (m) apart.
+fn vee_cylinders(n: usize, cycle_angle: f64, bank: f64, spacing: f64) -> Vec<(f64, f64, f64)> {
+    let pins = inline_throws(n / 2, cycle_angle);
+    (0..n)
+        .map(|i| {
+            let side = if i % 2 == 0 { -0.5 } else { 0.5 };
+            (pins[i / 2], side * bank, (i / 2) as f64 * spacing)
+        })
+        .collect()
+}
+
+/// A boxer's cylinders (default throw, axis angle, axial position), `spacing` (m) apart.
+fn boxer_cylinders(n: usize, spacing: f64) -> Vec<(f64, f64, f64)> {
+    // Opposed pairs on throws 180° apart: both pistons at their top dead centres
+    // together; the pairs' throws evenly apart (360°/pairs, in the inline order of as
+    // many cylinders, whatever the cycle): the flat four's 0°, 180°, 180°, 0°, free of
+    // first-order couples, its second-order couple left (docs/validation/balance.md).
+    // A two-stroke boxer fires each opposed pair together, the pairs 360°/pairs apart.
+    let m = n / 2;
+    let pairs = throws_from_firing_order(&inline_firing_order(m), TAU / m as f64);
+    (0..n)
+        .map(|i| {
+            let side = if i % 2 == 0 { 0.0 } else { PI };
+            (pairs[i / 2] + side, side, i as f64 * spacing)
+        })
+        .collect()
+}
+
+/// A machine's cylinders and firing delays from its `[layout]` table, each field checked.
+fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, CaseError> {
+    let n = t.cylinders.0 as usize;
+    let kind = t.kind;
+    check_layout_kind(t, n, invalid)?;
+    let firing = firing_order(t, n, invalid)?;
     let cycle_angle = t.cycle.angle();
     let interval = cycle_angle / n as f64;
     let spacing = t.cylinder_spacing.as_ref().map_or(0.1, |s| s.si);
@@ -303,38 +366,10 @@ fn build_layout(t: &LayoutTable, invalid: &Invalid) -> Result<MachineBalance, Ca
     // Each cylinder: (default throw, axis angle, axial position).
     let cylinders: Vec<(f64, f64, f64)> = match kind {
         LayoutKind::Inline => {
-            let default = match &firing {
-                Some(order) => throws_from_firing_order(order, interval),
-                None => inline_throws(n, cycle_angle),
-            };
-            (0..n)
-                .map(|i| (default[i], 0.0, i as f64 * spacing))
-                .collect()
+            inline_cylinders(firing.as_deref(), n, (cycle_angle, interval), spacing)
         }
-        LayoutKind::Vee => {
-            let pins = inline_throws(n / 2, cycle_angle);
-            (0..n)
-                .map(|i| {
-                    let side = if i % 2 == 0 { -0.5 } else { 0.5 };
-                    (pins[i / 2], side * bank, (i / 2) as f64 * spacing)
-                })
-                .collect()
-        }
-        LayoutKind::Boxer => {
-            // Opposed pairs on throws 180° apart: both pistons at their top dead centres
-            // together; the pairs' throws evenly apart (360°/pairs, in the inline order of as
-            // many cylinders, whatever the cycle): the flat four's 0°, 180°, 180°, 0°, free of
-            // first-order couples, its second-order couple left (docs/validation/balance.md).
-            // A two-stroke boxer fires each opposed pair together, the pairs 360°/pairs apart.
-            let m = n / 2;
-            let pairs = throws_from_firing_order(&inline_firing_order(m), TAU / m as f64);
-            (0..n)
-                .map(|i| {
-                    let side = if i % 2 == 0 { 0.0 } else { PI };
-                    (pairs[i / 2] + side, side, i as f64 * spacing)
-                })
-                .collect()
-        }
+        LayoutKind::Vee => vee_cylinders(n, cycle_angle, bank, spacing),
+        LayoutKind::Boxer => boxer_cylinders(n, spacing),
         LayoutKind::Radial => (0..n)
             .map(|i| (0.0, TAU * i as f64 / n as f64, 0.0))
             .collect(),

@@ -535,12 +535,7 @@ fn validate(
     };
     let machine = raw.machine;
     let g = &raw.geometry;
-    let geometry = MachineGeometry {
-        crank_length: g.crank_length.si,
-        rod_length: g.rod_length.si,
-        bore: g.bore.si,
-        pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
-    };
+    let geometry = machine_geometry(g);
     crate::unread::geometry_size([&g.crank_length, &g.rod_length, &g.bore], &invalid)?;
     let pistons = if g.opposed_pistons { 2 } else { 1 };
     let crank_phase = crank_phase(g, pistons, &invalid)?;
@@ -558,58 +553,21 @@ fn validate(
         .as_ref()
         .map(|table| crate::gas::parse(table, file, &case_name, (machine, read_once)))
         .transpose()?;
-    if gas.is_some() {
-        crate::unread::gas_cylinders(&mechanisms, &invalid)?;
-    }
-    if let (Some(gas), Some(table)) = (&gas, &raw.gas) {
-        let written = [
-            &*g.bore.written,
-            &g.crank_length.written,
-            &m.initial_speed.written,
-        ];
+    if let Some(gas) = &gas {
         let cylinder = (geometry.bore, pistons, crank_phase);
         let ready = (&mechanisms[..], cylinder, mean_speed(&motion, end_angle));
-        let at = (file, case_name.as_str(), machine);
-        crate::unread::gas_ready(
-            gas,
-            table,
-            at,
-            ready,
-            (raw.layout.as_ref(), written),
-            &invalid,
-        )?;
+        check_gas(file, &raw, gas, ready, &invalid)?;
     }
     let gear = raw.gear.as_ref().map(|t| t.build(&invalid)).transpose()?;
     if gear.is_some() {
-        // The run's fastest crank speed: an end of a prescribed ramp (ω² is linear in the
-        // angle), a solved motion's start (its later speeds are checked at each step).
-        let end = motion
-            .at_angle(end_angle)
-            .ok()
-            .filter(|_| dynamics.is_none());
-        let blame = match end.filter(|e| e.speed.abs() > motion.initial_speed.abs()) {
-            Some(e) => (
-                e.speed,
-                (
-                    "motion.angular_acceleration",
-                    &*m.angular_acceleration.written,
-                ),
-            ),
-            None => (
-                motion.initial_speed,
-                ("motion.initial_speed", &*m.initial_speed.written),
-            ),
-        };
-        crate::gear_speed::check(&mechanisms, blame.0.abs(), blame.1, &invalid)?;
+        let written = [&*m.angular_acceleration.written, &*m.initial_speed.written];
+        let run = (&motion, end_angle, dynamics.is_some());
+        crate::gear_speed::check_run(&mechanisms, run, written, &invalid)?;
     }
-    let friction = match &raw.friction {
-        None => None,
-        Some(table) => {
-            let f = crate::friction::build(table, gear.as_ref(), machine, gas.as_ref(), &invalid)?;
-            crate::friction::check_joints(table, &mechanisms, &invalid)?;
-            Some(f)
-        }
-    };
+    let with = (gear.as_ref(), machine, gas.as_ref());
+    let friction = (raw.friction.as_ref())
+        .map(|t| crate::friction::build_checked(t, with, &mechanisms, &invalid))
+        .transpose()?;
     let balance = crate::balance::build(raw.layout.as_ref(), raw.balance.as_ref(), &invalid)?;
     let machines = crate::setup::check_machine(&balance, mechanisms, (pistons, machine), &invalid)?;
     let mechanisms = machines.iter().map(|m| Arc::clone(m.mechanism())).collect();
@@ -652,6 +610,31 @@ fn validate(
     })
 }
 
+/// The gas checked against the crank trains it drives (`ready`: the mechanisms; the
+/// cylinder's bore m, pistons and crank phase rad; the mean crank speed rad/s): each train has
+/// a cylinder for it, and the gas is made ready for each as the run makes it.
+fn check_gas(
+    file: &Path,
+    raw: &CaseFile,
+    gas: &GasCase,
+    ready: crate::unread::Trains,
+    invalid: &Invalid,
+) -> Result<(), CaseError> {
+    crate::unread::gas_cylinders(ready.0, invalid)?;
+    let Some(table) = &raw.gas else {
+        return Ok(());
+    };
+    let (g, m) = (&raw.geometry, &raw.motion);
+    let written = [
+        &*g.bore.written,
+        &g.crank_length.written,
+        &m.initial_speed.written,
+    ];
+    let at = (file, raw.name.0.as_str(), raw.machine);
+    let layout = (raw.layout.as_ref(), written);
+    crate::unread::gas_ready(gas, table, at, ready, layout, invalid)
+}
+
 /// The mean crank speed of a prescribed `motion` from its start to `end_angle` (rad/s), at which
 /// the gas models are prepared (their speed-dependent timing and heat transfer); the initial
 /// speed if the crank does not get there in a positive time.
@@ -659,6 +642,16 @@ pub fn mean_speed(motion: &CrankMotion, end_angle: f64) -> f64 {
     match motion.at_angle(end_angle) {
         Ok(end) if end.time > 0.0 => (end_angle - motion.start_angle) / end.time,
         _ => motion.initial_speed,
+    }
+}
+
+/// The crank train's dimensions (m) as the mechanisms take them: no pin offset given is none.
+fn machine_geometry(g: &GeometryTable) -> MachineGeometry {
+    MachineGeometry {
+        crank_length: g.crank_length.si,
+        rod_length: g.rod_length.si,
+        bore: g.bore.si,
+        pin_offset: g.pin_offset.as_ref().map_or(0.0, |p| p.si),
     }
 }
 

@@ -503,6 +503,19 @@ fn engine(
     Ok(e)
 }
 
+/// [`build`] (`with`: the case's gear, machine and gas), then [`check_joints`] against the
+/// case's `mechanisms`: a case's friction as validation takes it.
+pub(crate) fn build_checked(
+    table: &FrictionTable,
+    (gear, machine, gas): (Option<&GearSpec>, Machine, Option<&GasCase>),
+    mechanisms: &[Arc<dyn Mechanism>],
+    invalid: &Invalid,
+) -> Result<Friction, CaseError> {
+    let f = build(table, gear, machine, gas, invalid)?;
+    check_joints(table, mechanisms, invalid)?;
+    Ok(f)
+}
+
 /// Every joint `[friction.joints]` names must be a revolute joint of a mechanism of the case.
 pub fn check_joints(
     table: &FrictionTable,

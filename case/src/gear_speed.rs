@@ -5,7 +5,7 @@
 //! a solved motion's is not, and the gear stage refuses a step beyond the limit.
 
 use crate::error::{CaseError, Invalid};
-use cardan_mechanism::{CrankState, JointKind, Mechanism};
+use cardan_mechanism::{CrankMotion, CrankState, JointKind, Mechanism};
 use std::sync::Arc;
 
 /// Crank angles a turn is sampled at for the meshes' fastest pitch-line velocity: one block of
@@ -71,4 +71,27 @@ pub(crate) fn check(
         }
     }
     Ok(())
+}
+
+/// Refuses `mechanisms` whose meshes run too fast at the run's fastest crank speed (`run`: the
+/// prescribed motion, its end angle rad, and whether the motion is solved instead), blamed on
+/// the field that sets it (`written`: `motion.angular_acceleration` and
+/// `motion.initial_speed` as written).
+pub(crate) fn check_run(
+    mechanisms: &[Arc<dyn Mechanism>],
+    (motion, end_angle, solved): (&CrankMotion, f64, bool),
+    [acceleration, initial_speed]: [&str; 2],
+    invalid: &Invalid,
+) -> Result<(), CaseError> {
+    // The run's fastest crank speed: an end of a prescribed ramp (ω² is linear in the
+    // angle), a solved motion's start (its later speeds are checked at each step).
+    let end = motion.at_angle(end_angle).ok().filter(|_| !solved);
+    let blame = match end.filter(|e| e.speed.abs() > motion.initial_speed.abs()) {
+        Some(e) => (e.speed, ("motion.angular_acceleration", acceleration)),
+        None => (
+            motion.initial_speed,
+            ("motion.initial_speed", initial_speed),
+        ),
+    };
+    check(mechanisms, blame.0.abs(), blame.1, invalid)
 }

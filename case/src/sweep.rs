@@ -227,6 +227,96 @@ struct Field {
     texts: Vec<String>,
 }
 
+/// Whether the sweep `[sweep]` (of the case `name` in `file`) zips its fields (`mode = "zip"`)
+/// instead of taking every combination of their values (`"grid"`, the default).
+fn sweep_mode(file: &Path, name: &str, sweep: &toml::Table) -> Result<bool, CaseError> {
+    match sweep.get("mode").and_then(|m| m.as_str()) {
+        None | Some("grid") => Ok(false),
+        Some("zip") => Ok(true),
+        Some(other) => Err(invalid(
+            file,
+            name,
+            "sweep.mode",
+            &other,
+            "must be \"grid\" or \"zip\"",
+        )),
+    }
+}
+
+/// The fields `[sweep]` varies (of the case `name` in `file`), each by its dotted path, with
+/// its values read and checked; at least one.
+fn sweep_fields(file: &Path, name: &str, sweep: &toml::Table) -> Result<Vec<Field>, CaseError> {
+    let mut fields: Vec<Field> = Vec::new();
+    for (path, spec) in sweep {
+        if path == "mode" {
+            continue;
+        }
+        if path == "name" || path.starts_with("sweep") || !path.contains('.') {
+            return Err(invalid(file, name, &format!("sweep.\"{path}\""), spec, "sweep a field by its dotted path, e.g. \"motion.initial_speed\" (not name or sweep)"));
+        }
+        if path.contains(['[', ']']) {
+            return Err(invalid(file, name, &format!("sweep.\"{path}\""), spec, "an item of a list cannot be swept on its own: sweep the whole field by its dotted path with a list of its values, e.g. \"layout.crank_angles\" = [[0, 180], [0, 90]]"));
+        }
+        let values = values_of(file, name, path, spec)?;
+        fields.push(Field {
+            path: path.clone(),
+            short: path.rsplit('.').next().unwrap_or(path).to_string(),
+            pieces: values.iter().map(name_piece).collect(),
+            texts: values
+                .iter()
+                .map(|v| match v {
+                    toml::Value::String(s) => s.clone(),
+                    o => o.to_string(),
+                })
+                .collect(),
+            values,
+        });
+    }
+    if fields.is_empty() {
+        return Err(invalid(
+            file,
+            name,
+            "sweep",
+            &"{}",
+            "names no field to vary",
+        ));
+    }
+    Ok(fields)
+}
+
+/// How many points the sweep of `fields` has (`zip`: their values taken together, else every
+/// combination), at most [`MAX_POINTS`].
+fn point_count(file: &Path, name: &str, fields: &[Field], zip: bool) -> Result<usize, CaseError> {
+    let count = if zip {
+        let n = fields[0].values.len();
+        if let Some(f) = fields.iter().find(|f| f.values.len() != n) {
+            return Err(invalid(
+                file,
+                name,
+                &format!("sweep.\"{}\"", f.path),
+                &f.values.len(),
+                &format!("a zipped sweep needs as many values in every field ({n})"),
+            ));
+        }
+        n
+    } else {
+        fields
+            .iter()
+            .try_fold(1usize, |n, f| n.checked_mul(f.values.len()))
+            .unwrap_or(usize::MAX)
+    };
+    if count > MAX_POINTS {
+        return Err(invalid(
+            file,
+            name,
+            "sweep",
+            &count,
+            &format!("at most {MAX_POINTS} points (a sweep of more: split it into several case files, e.g. by one field's range)"),
+        ));
+    }
+    Ok(count)
+}
+
 /// A sweep's definition, its points made on demand ([`Sweep::point`]): point `k` of a grid takes
 /// the value `k mod n₁` of the first field, `(k / n₁) mod n₂` of the second, ... (a mixed-radix
 /// index, the first field fastest); of a zipped sweep, the k-th value of every field. Holding
@@ -267,81 +357,9 @@ impl Sweep {
         let Some(sweep) = sweep.as_table().cloned() else {
             return Err(invalid(file, &name, "sweep", &sweep, "must be a table"));
         };
-        let zip = match sweep.get("mode").and_then(|m| m.as_str()) {
-            None | Some("grid") => false,
-            Some("zip") => true,
-            Some(other) => {
-                return Err(invalid(
-                    file,
-                    &name,
-                    "sweep.mode",
-                    &other,
-                    "must be \"grid\" or \"zip\"",
-                ))
-            }
-        };
-        let mut fields: Vec<Field> = Vec::new();
-        for (path, spec) in &sweep {
-            if path == "mode" {
-                continue;
-            }
-            if path == "name" || path.starts_with("sweep") || !path.contains('.') {
-                return Err(invalid(file, &name, &format!("sweep.\"{path}\""), spec, "sweep a field by its dotted path, e.g. \"motion.initial_speed\" (not name or sweep)"));
-            }
-            if path.contains(['[', ']']) {
-                return Err(invalid(file, &name, &format!("sweep.\"{path}\""), spec, "an item of a list cannot be swept on its own: sweep the whole field by its dotted path with a list of its values, e.g. \"layout.crank_angles\" = [[0, 180], [0, 90]]"));
-            }
-            let values = values_of(file, &name, path, spec)?;
-            fields.push(Field {
-                path: path.clone(),
-                short: path.rsplit('.').next().unwrap_or(path).to_string(),
-                pieces: values.iter().map(name_piece).collect(),
-                texts: values
-                    .iter()
-                    .map(|v| match v {
-                        toml::Value::String(s) => s.clone(),
-                        o => o.to_string(),
-                    })
-                    .collect(),
-                values,
-            });
-        }
-        if fields.is_empty() {
-            return Err(invalid(
-                file,
-                &name,
-                "sweep",
-                &"{}",
-                "names no field to vary",
-            ));
-        }
-        let count = if zip {
-            let n = fields[0].values.len();
-            if let Some(f) = fields.iter().find(|f| f.values.len() != n) {
-                return Err(invalid(
-                    file,
-                    &name,
-                    &format!("sweep.\"{}\"", f.path),
-                    &f.values.len(),
-                    &format!("a zipped sweep needs as many values in every field ({n})"),
-                ));
-            }
-            n
-        } else {
-            fields
-                .iter()
-                .try_fold(1usize, |n, f| n.checked_mul(f.values.len()))
-                .unwrap_or(usize::MAX)
-        };
-        if count > MAX_POINTS {
-            return Err(invalid(
-                file,
-                &name,
-                "sweep",
-                &count,
-                &format!("at most {MAX_POINTS} points (a sweep of more: split it into several case files, e.g. by one field's range)"),
-            ));
-        }
+        let zip = sweep_mode(file, &name, &sweep)?;
+        let fields = sweep_fields(file, &name, &sweep)?;
+        let count = point_count(file, &name, &fields, zip)?;
         let sweep = Self {
             file: file.into(),
             name,

@@ -80,87 +80,7 @@ fn chamber_json(case: &Case, mechanism: &dyn Mechanism) -> Option<Value> {
 pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
     let mut mechanisms = Map::new();
     for r in results {
-        let m = r.mechanism.as_ref();
-        let mut metrics = Map::new();
-        let mut units = Map::new();
-        for metric in &r.summary.metrics {
-            metrics.insert(metric.name.clone(), json!(metric.value));
-            units.insert(metric.name.clone(), json!(metric.unit));
-        }
-        let masses = m.masses();
-        let mut mass_properties: Map<String, Value> = masses
-            .fields()
-            .iter()
-            .map(|(name, value, _)| (name.to_string(), json!(value)))
-            .collect();
-        mass_properties.insert("rod_material".into(), json!(masses.rod_material.name()));
-        let t = m.topology();
-        let bodies: Map<String, Value> = t
-            .bodies
-            .iter()
-            .map(|b| {
-                (
-                    b.name.to_string(),
-                    json!({"mass_kg": b.mass, "inertia_kg_m2": b.inertia}),
-                )
-            })
-            .collect();
-        let joints: Map<String, Value> = t
-            .joints
-            .iter()
-            .map(|j| {
-                let between = json!([
-                    t.bodies[j.body].name,
-                    j.other.map_or("frame", |o| t.bodies[o].name)
-                ]);
-                let v = match j.kind {
-                    JointKind::Revolute(b) => {
-                        json!({"kind": "revolute", "bodies": between, "journal_radius_m": b.radius,
-                            "bearings": b.count, "static_load_rating_N": b.static_load_rating})
-                    }
-                    JointKind::Prismatic => json!({"kind": "prismatic", "bodies": between}),
-                    JointKind::GearMesh {
-                        ratio,
-                        pitch_radius,
-                        internal,
-                        pressure_angle,
-                        ..
-                    } => json!({
-                        "kind": "gear_mesh",
-                        "bodies": between,
-                        "ratio": ratio,
-                        "pitch_radius_m": pitch_radius,
-                        "internal": internal,
-                        "pressure_angle_deg": pressure_angle.to_degrees()
-                    }),
-                };
-                (j.name.to_string(), v)
-            })
-            .collect();
-        // The maps moved in: `json!` would serialise each into a copy.
-        let mechanism: Map<String, Value> = [
-            ("metrics", metrics),
-            ("units", units),
-            ("mass_properties", mass_properties),
-            ("bodies", bodies),
-            ("joints", joints),
-        ]
-        .into_iter()
-        .map(|(k, v)| (k.to_string(), Value::Object(v)))
-        .collect();
-        let mut mechanism = Value::Object(mechanism);
-        if let Some(chamber) = chamber_json(case, m) {
-            mechanism["chamber"] = chamber;
-        }
-        if !r.cycle_starts.is_empty() {
-            let (time, speed): (Vec<f64>, Vec<f64>) = r.cycle_starts.iter().copied().unzip();
-            mechanism["cycle_starts"] = json!({"time_s": time, "crank_speed_rad_s": speed});
-        }
-        if !r.runup.is_empty() {
-            let (time, speed): (Vec<f64>, Vec<f64>) = r.runup.iter().copied().unzip();
-            mechanism["runup"] = json!({"time_s": time, "crank_speed_rad_s": speed});
-        }
-        mechanisms.insert(r.label.clone(), mechanism);
+        mechanisms.insert(r.label.clone(), mechanism_json(case, r));
     }
     let mut summary = json!({
         "schema_version": SCHEMA_VERSION,
@@ -182,4 +102,106 @@ pub fn summary_json(case: &Case, results: &[MechanismResult]) -> Value {
         summary["warnings"] = json!(warnings);
     }
     summary
+}
+
+/// A crank train's entry of `summary.json`: its metrics with their units, its mass properties,
+/// bodies and joints, and its chamber, cycle starts and run-up where it has them.
+fn mechanism_json(case: &Case, r: &MechanismResult) -> Value {
+    let m = r.mechanism.as_ref();
+    let mut metrics = Map::new();
+    let mut units = Map::new();
+    for metric in &r.summary.metrics {
+        metrics.insert(metric.name.clone(), json!(metric.value));
+        units.insert(metric.name.clone(), json!(metric.unit));
+    }
+    let mass_properties = mass_properties_json(m);
+    let bodies = bodies_json(m);
+    let joints = joints_json(m);
+    // The maps moved in: `json!` would serialise each into a copy.
+    let mechanism: Map<String, Value> = [
+        ("metrics", metrics),
+        ("units", units),
+        ("mass_properties", mass_properties),
+        ("bodies", bodies),
+        ("joints", joints),
+    ]
+    .into_iter()
+    .map(|(k, v)| (k.to_string(), Value::Object(v)))
+    .collect();
+    let mut mechanism = Value::Object(mechanism);
+    if let Some(chamber) = chamber_json(case, m) {
+        mechanism["chamber"] = chamber;
+    }
+    if !r.cycle_starts.is_empty() {
+        let (time, speed): (Vec<f64>, Vec<f64>) = r.cycle_starts.iter().copied().unzip();
+        mechanism["cycle_starts"] = json!({"time_s": time, "crank_speed_rad_s": speed});
+    }
+    if !r.runup.is_empty() {
+        let (time, speed): (Vec<f64>, Vec<f64>) = r.runup.iter().copied().unzip();
+        mechanism["runup"] = json!({"time_s": time, "crank_speed_rad_s": speed});
+    }
+    mechanism
+}
+
+/// A mechanism's mass properties in `summary.json`, by field, with its rod's material.
+fn mass_properties_json(m: &dyn Mechanism) -> Map<String, Value> {
+    let masses = m.masses();
+    let mut mass_properties: Map<String, Value> = masses
+        .fields()
+        .iter()
+        .map(|(name, value, _)| (name.to_string(), json!(value)))
+        .collect();
+    mass_properties.insert("rod_material".into(), json!(masses.rod_material.name()));
+    mass_properties
+}
+
+/// A mechanism's bodies in `summary.json`: each one's mass and moment of inertia.
+fn bodies_json(m: &dyn Mechanism) -> Map<String, Value> {
+    m.topology()
+        .bodies
+        .iter()
+        .map(|b| {
+            (
+                b.name.to_string(),
+                json!({"mass_kg": b.mass, "inertia_kg_m2": b.inertia}),
+            )
+        })
+        .collect()
+}
+
+/// A mechanism's joints in `summary.json`: each one's kind, the bodies it joins and its
+/// kind's dimensions.
+fn joints_json(m: &dyn Mechanism) -> Map<String, Value> {
+    let t = m.topology();
+    t.joints
+        .iter()
+        .map(|j| {
+            let between = json!([
+                t.bodies[j.body].name,
+                j.other.map_or("frame", |o| t.bodies[o].name)
+            ]);
+            let v = match j.kind {
+                JointKind::Revolute(b) => {
+                    json!({"kind": "revolute", "bodies": between, "journal_radius_m": b.radius,
+                        "bearings": b.count, "static_load_rating_N": b.static_load_rating})
+                }
+                JointKind::Prismatic => json!({"kind": "prismatic", "bodies": between}),
+                JointKind::GearMesh {
+                    ratio,
+                    pitch_radius,
+                    internal,
+                    pressure_angle,
+                    ..
+                } => json!({
+                    "kind": "gear_mesh",
+                    "bodies": between,
+                    "ratio": ratio,
+                    "pitch_radius_m": pitch_radius,
+                    "internal": internal,
+                    "pressure_angle_deg": pressure_angle.to_degrees()
+                }),
+            };
+            (j.name.to_string(), v)
+        })
+        .collect()
 }

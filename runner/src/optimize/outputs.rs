@@ -280,6 +280,50 @@ pub fn write(
 /// `report.md`: each mechanism at its own optimum, side by side.
 pub fn report_md(o: &Optimization, results: &[MechanismOptimum]) -> String {
     let jsons: Vec<Value> = results.iter().map(|m| optimum_json(o, m)).collect();
+    let mut t = report_heading(o, results);
+    let row = |t: &mut String, label: &str, cell: &dyn Fn(&Value) -> String| {
+        let cells: Vec<String> = jsons.iter().map(cell).collect();
+        let _ = writeln!(t, "| {label} | {} |", cells.join(" | "));
+    };
+    row(
+        &mut t,
+        &format!("{} [{}]", o.objective, o.objective_unit),
+        &|j| number(&j["objective"]["value"]),
+    );
+    row(&mut t, "feasible", &|j| {
+        if j["feasible"] == true {
+            "yes".into()
+        } else {
+            "**no**: least violation shown".into()
+        }
+    });
+    for v in &o.variables {
+        row(&mut t, &format!("{} [{}]", v.path, v.unit), &|j| {
+            variable_cell(j, &v.path)
+        });
+    }
+    for c in &o.constraints {
+        row(&mut t, &format!("{} [{}]", c.text, c.unit), &|j| {
+            constraint_cell(j, &c.text)
+        });
+    }
+    row(&mut t, "evaluations (probes)", &|j| {
+        format!("{} ({})", j["evaluations"], j["probe_evaluations"])
+    });
+    row(&mut t, "failed evaluations", &|j| {
+        j["failed_evaluations"].to_string()
+    });
+    row(&mut t, "stopping reason", &|j| {
+        j["stopping_reason"].as_str().unwrap_or("—").to_string()
+    });
+    left_out(&mut t, &jsons);
+    t.push_str("\n![convergence](convergence.svg)\n\nEvery metric of every mechanism at its own optimum, side by side: [at-optima/report.md](at-optima/report.md). Each mechanism's search: `<mechanism>/optimum.json`, `<mechanism>/history.csv`.\n");
+    t
+}
+
+/// `report.md`'s title, the objective and constraints in words, and its table's header (a
+/// column per mechanism).
+fn report_heading(o: &Optimization, results: &[MechanismOptimum]) -> String {
     let sense = match o.sense {
         Sense::Max => "maximised",
         Sense::Min => "minimised",
@@ -307,70 +351,57 @@ pub fn report_md(o: &Optimization, results: &[MechanismOptimum]) -> String {
     t.push_str(" |\n|---|");
     t.push_str(&"---|".repeat(results.len()));
     t.push('\n');
-    let row = |t: &mut String, label: &str, cell: &dyn Fn(&Value) -> String| {
-        let cells: Vec<String> = jsons.iter().map(cell).collect();
-        let _ = writeln!(t, "| {label} | {} |", cells.join(" | "));
-    };
-    let num = |v: &Value| v.as_f64().map_or("—".to_string(), |x| format!("{x:.6}"));
-    row(
-        &mut t,
-        &format!("{} [{}]", o.objective, o.objective_unit),
-        &|j| num(&j["objective"]["value"]),
-    );
-    row(&mut t, "feasible", &|j| {
-        if j["feasible"] == true {
-            "yes".into()
-        } else {
-            "**no**: least violation shown".into()
-        }
-    });
-    for v in &o.variables {
-        row(&mut t, &format!("{} [{}]", v.path, v.unit), &|j| {
-            let found = j["variables"]
-                .as_array()
-                .and_then(|a| a.iter().find(|x| x["path"] == v.path.as_str()));
-            match found {
-                Some(x) => match x["on_bound"].as_str() {
-                    Some(b) => format!("{} (on its {b} bound)", num(&x["value"])),
-                    None => num(&x["value"]),
-                },
-                None => "left out".into(),
-            }
-        });
+    t
+}
+
+/// A number of `optimum.json` in `report.md`'s table (6 decimals), "—" if none.
+fn number(v: &Value) -> String {
+    v.as_f64().map_or("—".to_string(), |x| format!("{x:.6}"))
+}
+
+/// A mechanism's (`optimum.json` `j`) value of the variable `path` in `report.md`'s table, with
+/// the bound it ends on; "left out" if the mechanism has no such field.
+fn variable_cell(j: &Value, path: &str) -> String {
+    let found = j["variables"]
+        .as_array()
+        .and_then(|a| a.iter().find(|x| x["path"] == path));
+    match found {
+        Some(x) => match x["on_bound"].as_str() {
+            Some(b) => format!("{} (on its {b} bound)", number(&x["value"])),
+            None => number(&x["value"]),
+        },
+        None => "left out".into(),
     }
-    for c in &o.constraints {
-        row(&mut t, &format!("{} [{}]", c.text, c.unit), &|j| {
-            let found = j["constraints"]
-                .as_array()
-                .and_then(|a| a.iter().find(|x| x["constraint"] == c.text.as_str()));
-            match found {
-                Some(x) => format!(
-                    "{} (margin {}{})",
-                    num(&x["value"]),
-                    num(&x["margin"]),
-                    if x["active"] == true {
-                        ", active"
-                    } else if x["satisfied"] == false {
-                        ", **violated**"
-                    } else {
-                        ""
-                    }
-                ),
-                None => "left out".into(),
+}
+
+/// A mechanism's (`optimum.json` `j`) value of the constraint `text` in `report.md`'s table, with
+/// its margin and whether it is active or violated; "left out" if the mechanism has no such
+/// metric.
+fn constraint_cell(j: &Value, text: &str) -> String {
+    let found = j["constraints"]
+        .as_array()
+        .and_then(|a| a.iter().find(|x| x["constraint"] == text));
+    match found {
+        Some(x) => format!(
+            "{} (margin {}{})",
+            number(&x["value"]),
+            number(&x["margin"]),
+            if x["active"] == true {
+                ", active"
+            } else if x["satisfied"] == false {
+                ", **violated**"
+            } else {
+                ""
             }
-        });
+        ),
+        None => "left out".into(),
     }
-    row(&mut t, "evaluations (probes)", &|j| {
-        format!("{} ({})", j["evaluations"], j["probe_evaluations"])
-    });
-    row(&mut t, "failed evaluations", &|j| {
-        j["failed_evaluations"].to_string()
-    });
-    row(&mut t, "stopping reason", &|j| {
-        j["stopping_reason"].as_str().unwrap_or("—").to_string()
-    });
+}
+
+/// `report.md`'s list of the variables and constraints each mechanism left out, and why.
+fn left_out(t: &mut String, jsons: &[Value]) {
     t.push_str("\nLeft out (a field or metric a mechanism does not have):\n\n");
-    for j in &jsons {
+    for j in jsons {
         for what in ["variables_left_out", "constraints_left_out"] {
             for x in j[what].as_array().into_iter().flatten() {
                 let _ = writeln!(
@@ -383,6 +414,4 @@ pub fn report_md(o: &Optimization, results: &[MechanismOptimum]) -> String {
             }
         }
     }
-    t.push_str("\n![convergence](convergence.svg)\n\nEvery metric of every mechanism at its own optimum, side by side: [at-optima/report.md](at-optima/report.md). Each mechanism's search: `<mechanism>/optimum.json`, `<mechanism>/history.csv`.\n");
-    t
 }

@@ -39,30 +39,15 @@ pub fn worker_threads(requested: Option<usize>, cores: usize) -> (Option<usize>,
 /// contents change, so that it never describes old results.
 pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     let mut report = Report::default();
-    if let Ok(meta) = std::fs::metadata(out) {
-        if !meta.is_dir() {
-            let kind = if meta.is_file() {
-                "a file"
-            } else {
-                "a device or other special file"
-            };
-            report.failures.push(format!(
-                "--out {}: is {kind}, not a folder: nothing was run",
-                out.display()
-            ));
-            return report;
-        }
+    if let Some(why) = not_a_folder(out) {
+        report.failures.push(why);
+        return report;
     }
     let (batch, failures) = load_batch(paths);
     report.failures = failures;
     let (mut cases, mut tables) = (batch.cases, batch.tables);
     let mut optimizations = batch.optimizations;
-    let overrides = |case: &mut Case| {
-        case.output.csv = options.csv.unwrap_or(case.output.csv);
-        case.output.npy = options.npy.unwrap_or(case.output.npy);
-    };
-    cases.iter_mut().for_each(overrides);
-    tables.iter_mut().for_each(|t| overrides(&mut t.first));
+    override_outputs(&mut cases, &mut tables, &options);
     // A shard runs its part of the cases as if they were all: its sweeps' folders hold its
     // points only, and `cardan merge` gathers them.
     let manifest = options.shard.map(|shard| {
@@ -80,15 +65,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         return report;
     }
     // Every sweep's points in their order, before `--only` selects some.
-    let mut all_points: HashMap<String, Vec<String>> = HashMap::new();
-    for c in &cases {
-        if let Some((sweep, _)) = &c.sweep {
-            all_points
-                .entry(sweep.clone())
-                .or_default()
-                .push(c.name.clone());
-        }
-    }
+    let all_points = sweep_points(&cases);
     if let Some(pattern) = &options.only {
         if let Err(partial) = select(pattern, &mut cases, &mut tables) {
             report.failures.extend(partial);
@@ -96,12 +73,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         }
         optimizations.retain(|o| matches_pattern(pattern, &o.name));
     }
-    let mut selected: HashMap<&str, usize> = HashMap::new();
-    for c in &cases {
-        if let Some((sweep, _)) = &c.sweep {
-            *selected.entry(sweep.as_str()).or_default() += 1;
-        }
-    }
+    let selected = selected_points(&cases);
     // A sweep's points run into a temporary folder that replaces `out/<sweep>` as a whole, or,
     // when `--only` selects some of the points of a sweep written before, into its folder.
     let sweeps = sweep_targets(
@@ -133,14 +105,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
     else {
         return report;
     };
-    for (sweep, written, failures) in tables {
-        if written > 0 {
-            report
-                .sweeps
-                .push((sweep.clone(), out.join(&sweep), written));
-        }
-        report.failures.extend(failures);
-    }
+    record_tables(tables, out, &mut report);
     let (points, failed) = record_outcomes(&cases, &outcomes, out, &mut report);
     write_sweeps(
         &sweeps,
@@ -162,6 +127,77 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         }
         return report;
     }
+    write_index(out, &options, &mut report);
+    report
+}
+
+/// Why `out` cannot take the run (it exists and is not a folder), if so.
+fn not_a_folder(out: &Path) -> Option<String> {
+    let meta = std::fs::metadata(out).ok()?;
+    if meta.is_dir() {
+        return None;
+    }
+    let kind = if meta.is_file() {
+        "a file"
+    } else {
+        "a device or other special file"
+    };
+    Some(format!(
+        "--out {}: is {kind}, not a folder: nothing was run",
+        out.display()
+    ))
+}
+
+/// The `--csv`/`--npy` options given, over every case's and sweep table's own.
+fn override_outputs(cases: &mut [Case], tables: &mut [TableSweep], options: &RunOptions) {
+    let overrides = |case: &mut Case| {
+        case.output.csv = options.csv.unwrap_or(case.output.csv);
+        case.output.npy = options.npy.unwrap_or(case.output.npy);
+    };
+    cases.iter_mut().for_each(overrides);
+    tables.iter_mut().for_each(|t| overrides(&mut t.first));
+}
+
+/// Every sweep's points (case names), in their order, by sweep.
+fn sweep_points(cases: &[Case]) -> HashMap<String, Vec<String>> {
+    let mut all_points: HashMap<String, Vec<String>> = HashMap::new();
+    for c in cases {
+        if let Some((sweep, _)) = &c.sweep {
+            all_points
+                .entry(sweep.clone())
+                .or_default()
+                .push(c.name.clone());
+        }
+    }
+    all_points
+}
+
+/// How many points of each sweep are among `cases` (the ones selected to run).
+fn selected_points(cases: &[Case]) -> HashMap<&str, usize> {
+    let mut selected: HashMap<&str, usize> = HashMap::new();
+    for c in cases {
+        if let Some((sweep, _)) = &c.sweep {
+            *selected.entry(sweep.as_str()).or_default() += 1;
+        }
+    }
+    selected
+}
+
+/// Each sweep written as a table into `report`: its folder if any of its points ran, and its
+/// failures.
+fn record_tables(tables: Vec<TableOutcome>, out: &Path, report: &mut Report) {
+    for (sweep, written, failures) in tables {
+        if written > 0 {
+            report
+                .sweeps
+                .push((sweep.clone(), out.join(&sweep), written));
+        }
+        report.failures.extend(failures);
+    }
+}
+
+/// Rewrites `out/index.html` when the run changed the folder's contents.
+fn write_index(out: &Path, options: &RunOptions, report: &mut Report) {
     // The index describes what the folder holds: rewritten whenever that changes, also by a
     // run that writes no reports (else it links reports that are gone, with old numbers).
     let changed = !report.written.is_empty() || !report.sweeps.is_empty();
@@ -173,7 +209,6 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
                 .push(format!("cannot write {}: {e:#}", index.display()));
         }
     }
-    report
 }
 
 /// A case's outcome: its folder and sweep row, or its failure.

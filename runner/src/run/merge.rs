@@ -269,31 +269,43 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
         let shard = by_shard[k - 1];
         match sweep {
             Some(s) => sweeps.entry(s).or_default().push((name, shard)),
-            None => {
-                let from = shard.join(name);
-                // A case the shard could not run has no complete folder: its failure is listed.
-                if !stamp::read(&from).is_some_and(|r| r.complete) {
-                    continue;
-                }
-                let dir = out.join(name);
-                let copied = files::temporary_dir(&dir).and_then(|tmp| {
-                    copy_dir(&from, &tmp)
-                        .with_context(|| format!("copy {}", from.display()))
-                        .and_then(|()| files::replace_dir(&tmp, &dir))
-                        .inspect_err(|_| {
-                            let _ = std::fs::remove_dir_all(&tmp);
-                        })
-                });
-                match copied {
-                    Ok(()) => report.written.push((name.clone(), dir)),
-                    Err(e) => report.failures.push(format!(
-                        "case \"{name}\": cannot write {}: {e:#}",
-                        dir.display()
-                    )),
-                }
-            }
+            None => copy_case(name, shard, out, &mut report),
         }
     }
+    merge_tables(tables, out, &mut report);
+    merge_sweeps(sweeps, out, first.reports, &mut report);
+    write_index(out, first.reports, &mut report);
+    report
+}
+
+/// Copies a case run outside any sweep from its `shard`'s folder into `out`, replaced whole,
+/// into `report`; a case the shard could not run is skipped (its failure is listed).
+fn copy_case(name: &str, shard: &Path, out: &Path, report: &mut Report) {
+    let from = shard.join(name);
+    // A case the shard could not run has no complete folder: its failure is listed.
+    if !stamp::read(&from).is_some_and(|r| r.complete) {
+        return;
+    }
+    let dir = out.join(name);
+    let copied = files::temporary_dir(&dir).and_then(|tmp| {
+        copy_dir(&from, &tmp)
+            .with_context(|| format!("copy {}", from.display()))
+            .and_then(|()| files::replace_dir(&tmp, &dir))
+            .inspect_err(|_| {
+                let _ = std::fs::remove_dir_all(&tmp);
+            })
+    });
+    match copied {
+        Ok(()) => report.written.push((name.to_string(), dir)),
+        Err(e) => report.failures.push(format!(
+            "case \"{name}\": cannot write {}: {e:#}",
+            dir.display()
+        )),
+    }
+}
+
+/// Writes each sweep run as a table into `out` from its shards' `parts`, into `report`.
+fn merge_tables(tables: Vec<(&String, Vec<table_merge::Part>)>, out: &Path, report: &mut Report) {
     for (sweep, parts) in tables {
         // A sweep written as a table: its shards' ranges of points joined.
         let dir = out.join(sweep);
@@ -306,9 +318,19 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
             )),
         }
     }
+}
+
+/// Gathers each sweep's points (each with its shard's folder) into `out`, with its report if
+/// `reports`, into `report`.
+fn merge_sweeps(
+    sweeps: BTreeMap<&str, Vec<(&str, &Path)>>,
+    out: &Path,
+    reports: bool,
+    report: &mut Report,
+) {
     for (sweep, points) in sweeps {
         let dir = out.join(sweep);
-        match merge_sweep(sweep, &points, &dir, first.reports) {
+        match merge_sweep(sweep, &points, &dir, reports) {
             Ok(written) if written.is_empty() => {}
             Ok(written) => {
                 report
@@ -324,16 +346,19 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
             )),
         }
     }
+}
+
+/// Rewrites `out/index.html` when the merge changed the folder's contents (as a run does).
+fn write_index(out: &Path, reports: bool, report: &mut Report) {
     let changed = !report.written.is_empty() || !report.sweeps.is_empty();
     let index = out.join("index.html");
-    if changed && (first.reports || index.symlink_metadata().is_ok()) {
+    if changed && (reports || index.symlink_metadata().is_ok()) {
         if let Err(e) = cardan_report::index(out) {
             report
                 .failures
                 .push(format!("cannot write {}: {e:#}", index.display()));
         }
     }
-    report
 }
 
 /// Gathers the sweep's `points` (each in its shard's folder of the sweep) into `dir`, replaced

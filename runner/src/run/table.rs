@@ -349,76 +349,7 @@ pub(super) fn run_table(
             return (0, failures);
         }
     };
-    let rows = table.points();
-    let written = (|| -> anyhow::Result<usize> {
-        std::fs::create_dir(tmp.join("columns"))?;
-        // Each text column's width: the longest name, the longest value of each swept field
-        // (of the whole sweep for a shard's part: the merged table's).
-        let (name_width, value_widths) = match &table.range {
-            Some(_) => table.sweep.text_widths(0..table.sweep.len()),
-            None => table.sweep.text_widths((0..rows).map(|j| table.index(j))),
-        };
-        let mut text = vec![Column::create(&tmp, "case", Some(name_width.max(1)), rows)?];
-        for (path, w) in table.sweep.paths().into_iter().zip(value_widths) {
-            text.push(Column::create(&tmp, path, Some(w.max(1)), rows)?);
-        }
-        let first_row = table.range.as_ref().map_or(0, |r| r.start);
-        let mut out = Table {
-            dir: &tmp,
-            rows,
-            text,
-            metrics: Vec::new(),
-            first_row,
-            next: first_row,
-            first_columns: None,
-            part: table.range.is_some(),
-            only: table.first.table_metrics.clone(),
-            failed: Vec::new(),
-            warned: false,
-            warned_points: 0,
-            first_warning: None,
-        };
-        let mut ran = 0;
-        for start in (0..rows).step_by(CHUNK) {
-            let results: Vec<Result<Vec<MechanismResult>, String>> = (start
-                ..(start + CHUNK).min(rows))
-                .into_par_iter()
-                .map(|j| {
-                    let r = run_point(table, table.index(j));
-                    if let Some(progress) = &options.progress {
-                        progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-                    }
-                    r
-                })
-                .collect();
-            for (j, result) in (start..).zip(results) {
-                if let Err(e) = &result {
-                    failures.push(e.clone());
-                } else {
-                    ran += 1;
-                }
-                let k = table.index(j);
-                out.row(&table.sweep.point_name(k), &table.sweep.values(k), result)?;
-            }
-        }
-        if let Some(first) = &out.first_warning {
-            tracing::warn!(
-                "{}: sweep \"{sweep}\": {} of {} point(s) gave warnings; the first, {first}",
-                table.sweep.file.display(),
-                out.warned_points,
-                rows
-            );
-        }
-        let part = table.range.as_ref().map(|r| (r, table.sweep.len()));
-        if ran == 0 && part.is_none() {
-            // Every point failed: the earlier folder, if any, stays (a shard's part is
-            // written: the merge needs its rows).
-            return Ok(0);
-        }
-        out.finish(sweep, part)?;
-        files::replace_dir(&tmp, &dir)?;
-        Ok(ran)
-    })();
+    let written = write_table(table, (&tmp, &dir), options, (done, total), &mut failures);
     let kept = table.range.is_some() || matches!(written, Ok(n) if n > 0);
     if !(kept && written.is_ok()) {
         let _ = std::fs::remove_dir_all(&tmp);
@@ -433,6 +364,108 @@ pub(super) fn run_table(
             (0, failures)
         }
     }
+}
+
+/// Writes the points of `table` into its table in the temporary folder `tmp`, which then
+/// replaces `dir`; `done` counts the points out of `total`. Returns how many points ran (0 with
+/// `dir` left as it was when every point of a whole table failed); each point's failure goes
+/// to `failures`.
+fn write_table(
+    table: &TableSweep,
+    (tmp, dir): (&Path, &Path),
+    options: &RunOptions,
+    progress: (&AtomicUsize, usize),
+    failures: &mut Vec<String>,
+) -> anyhow::Result<usize> {
+    let sweep = table.sweep.name.as_str();
+    let rows = table.points();
+    let mut out = open_table(table, tmp, rows)?;
+    let ran = run_rows(table, &mut out, options, progress, failures)?;
+    if let Some(first) = &out.first_warning {
+        tracing::warn!(
+            "{}: sweep \"{sweep}\": {} of {} point(s) gave warnings; the first, {first}",
+            table.sweep.file.display(),
+            out.warned_points,
+            rows
+        );
+    }
+    let part = table.range.as_ref().map(|r| (r, table.sweep.len()));
+    if ran == 0 && part.is_none() {
+        // Every point failed: the earlier folder, if any, stays (a shard's part is
+        // written: the merge needs its rows).
+        return Ok(0);
+    }
+    out.finish(sweep, part)?;
+    files::replace_dir(tmp, dir)?;
+    Ok(ran)
+}
+
+/// A table of `rows` rows begun in `tmp`: its text columns (the case's name, each swept
+/// field's value) created at their widths, no metric column yet.
+fn open_table<'a>(table: &TableSweep, tmp: &'a Path, rows: usize) -> anyhow::Result<Table<'a>> {
+    std::fs::create_dir(tmp.join("columns"))?;
+    // Each text column's width: the longest name, the longest value of each swept field
+    // (of the whole sweep for a shard's part: the merged table's).
+    let (name_width, value_widths) = match &table.range {
+        Some(_) => table.sweep.text_widths(0..table.sweep.len()),
+        None => table.sweep.text_widths((0..rows).map(|j| table.index(j))),
+    };
+    let mut text = vec![Column::create(tmp, "case", Some(name_width.max(1)), rows)?];
+    for (path, w) in table.sweep.paths().into_iter().zip(value_widths) {
+        text.push(Column::create(tmp, path, Some(w.max(1)), rows)?);
+    }
+    let first_row = table.range.as_ref().map_or(0, |r| r.start);
+    Ok(Table {
+        dir: tmp,
+        rows,
+        text,
+        metrics: Vec::new(),
+        first_row,
+        next: first_row,
+        first_columns: None,
+        part: table.range.is_some(),
+        only: table.first.table_metrics.clone(),
+        failed: Vec::new(),
+        warned: false,
+        warned_points: 0,
+        first_warning: None,
+    })
+}
+
+/// Runs the points of `table`, `CHUNK` at a time on the worker threads, into `out`'s rows in
+/// their order; `done` counts the points for `options.progress` out of `total`. Returns how
+/// many ran; each failure goes to `failures`.
+fn run_rows(
+    table: &TableSweep,
+    out: &mut Table,
+    options: &RunOptions,
+    (done, total): (&AtomicUsize, usize),
+    failures: &mut Vec<String>,
+) -> anyhow::Result<usize> {
+    let rows = table.points();
+    let mut ran = 0;
+    for start in (0..rows).step_by(CHUNK) {
+        let results: Vec<Result<Vec<MechanismResult>, String>> = (start..(start + CHUNK).min(rows))
+            .into_par_iter()
+            .map(|j| {
+                let r = run_point(table, table.index(j));
+                if let Some(progress) = &options.progress {
+                    progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                }
+                r
+            })
+            .collect();
+        for (j, result) in (start..).zip(results) {
+            if let Err(e) = &result {
+                failures.push(e.clone());
+            } else {
+                ran += 1;
+            }
+            let k = table.index(j);
+            out.row(&table.sweep.point_name(k), &table.sweep.values(k), result)?;
+        }
+    }
+    Ok(ran)
 }
 
 #[cfg(test)]

@@ -154,6 +154,28 @@ impl TrainFamilies {
     }
 }
 
+/// The sinks every step of a train feeds: its summary, the charts' rows where they are taken
+/// on their own (without files), and the steps counted for the progress display.
+type SharedSinks<'a> = (SummarySink, (Option<ChartSink<'a>>, StepCounter));
+
+/// The sinks a train's per-step rows are kept in, each if asked: the per-step files (which
+/// record the charts' series too) or the columns in memory.
+struct KeptSinks<'a> {
+    per_step: Option<PerStepSink<'a>>,
+    columns: Option<ColumnSink<'a>>,
+}
+
+impl KeptSinks<'_> {
+    /// The one sink that keeps the rows, if any: the files before the columns.
+    fn kept(&mut self) -> Option<&mut dyn Sink> {
+        match (self.per_step.as_mut(), self.columns.as_mut()) {
+            (Some(p), _) => Some(p),
+            (None, Some(c)) => Some(c),
+            (None, None) => None,
+        }
+    }
+}
+
 /// Runs one crank train of `case`: `mechanism` (its stages copied from its `setup`, which
 /// validation built) with its crank `shift` (rad) ahead of the case's (the second train of a
 /// phased opposed-piston case; 0 otherwise), its per-step rows (named `label`) where `to` says.
@@ -180,34 +202,7 @@ fn run_mechanism(
         gas: case.gas.is_some(),
         stages: &columns,
     };
-    let (dir, charts) = to.files();
-    let mut per_step = match dir {
-        Some(dir) => PerStepSink::create(
-            dir,
-            label,
-            mechanism,
-            &layout,
-            case.output,
-            case.steps,
-            charts,
-        )
-        .map_err(|e| format!("{e:#}"))?,
-        None => None,
-    };
-    let mut columns = matches!(to, StepsTo::Memory)
-        .then(|| ColumnSink::new(mechanism, &layout, case.output.decimation, case.steps));
-    // Without files, the charts take their rows on their own, so that the run can be shared;
-    // the steps are counted for the progress display.
-    let chart_sink = (per_step.is_none() && charts).then(|| {
-        ChartSink::new(
-            mechanism,
-            &layout,
-            case.output.decimation,
-            case.steps,
-            label,
-        )
-    });
-    let mut sinks = (summary, (chart_sink, StepCounter));
+    let (mut sinks, mut kept) = open_sinks(case, mechanism, label, to, &layout, summary)?;
     // A coarse grid's peaks are checked by the same run on the grid shifted by a third and by
     // two thirds of a step (summaries only).
     let revolutions = (case.end_angle - case.motion.start_angle) / std::f64::consts::TAU;
@@ -218,16 +213,7 @@ fn run_mechanism(
     let mut runup = RunUp::default();
     let mut steps = |gas: Option<GasAt>| {
         if case.dynamics.is_some() {
-            let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0, &mut sinks.1 .1];
-            if let Some(p) = per_step.as_mut() {
-                list.push(p);
-            }
-            if let Some(c) = sinks.1 .0.as_mut() {
-                list.push(c);
-            }
-            if let Some(c) = columns.as_mut() {
-                list.push(c);
-            }
+            let list = solved_sinks(&mut sinks, &mut kept);
             (solved_metrics, runup) = run_solved(
                 case,
                 (mechanism, setup),
@@ -239,46 +225,15 @@ fn run_mechanism(
             )?;
             return Ok(());
         }
-        let motion = CrankMotion {
-            start_angle: case.motion.start_angle + shift,
-            ..case.motion
-        };
-        let mut grid = Grid::new(
-            motion,
-            motion.start_angle,
-            case.end_angle + shift,
-            case.steps,
-        );
-        let mut stages: Vec<&mut dyn Stage> = stages
-            .iter_mut()
-            .map(|s| &mut **s as &mut dyn Stage)
-            .collect();
-        // Without rows kept the run is shared by the threads (the same results bit for bit);
-        // the files are written in the steps' order, by a thread of their own.
-        let kept: Option<&mut dyn Sink> = match (per_step.as_mut(), columns.as_mut()) {
-            (Some(p), _) => Some(p),
-            (None, Some(c)) => Some(c),
-            (None, None) => None,
-        };
-        match kept {
-            Some(p) => run(
-                mechanism,
-                &mut grid,
-                &families,
-                gas,
-                &mut stages,
-                &mut [&mut sinks.0, &mut sinks.1 .1, p],
-            ),
-            None => run_parallel(
-                mechanism,
-                &mut grid,
-                &families,
-                gas,
-                &mut stages,
-                &mut sinks,
-            ),
-        }
-        .map_err(|e| e.to_string())?;
+        let motion = run_kinematic(
+            case,
+            (mechanism, shift),
+            &families,
+            gas,
+            &mut stages,
+            &mut sinks,
+            &mut kept,
+        )?;
         if check_sampling {
             shifted.extend(shifted_peaks(
                 case, mechanism, motion, &names, &families, gas,
@@ -290,12 +245,7 @@ fn run_mechanism(
     let (summary, (chart_rows, _)) = sinks;
     let mut summary = finish_summary(case, mechanism, &summary, gas_metrics, &solved_metrics)?;
     push_solved(&mut summary, solved_metrics)?;
-    let charts = match per_step {
-        Some(p) => p
-            .finish()
-            .map_err(|e| format!("cannot write the per-step files: {e:#}"))?,
-        None => chart_rows.and_then(ChartSink::finish),
-    };
+    let rows = finish_rows(kept, chart_rows)?;
     // What of the case this mechanism ignores, then the sampling check's.
     let warnings = setup
         .notes
@@ -303,11 +253,117 @@ fn run_mechanism(
         .cloned()
         .chain(sampling_warning(&summary, &shifted, case.steps, per_rev))
         .collect();
-    let rows = TrainRows {
-        charts,
-        columns: columns.map(ColumnSink::finish),
-    };
     Ok((summary, warnings, runup, rows))
+}
+
+/// Opens the sinks of one train's steps: `summary`, the per-step files or columns where `to`
+/// says, and the charts' own rows when they are asked without files.
+fn open_sinks<'a>(
+    case: &Case,
+    mechanism: &'a dyn Mechanism,
+    label: &str,
+    to: StepsTo,
+    layout: &RunLayout,
+    summary: SummarySink,
+) -> Result<(SharedSinks<'a>, KeptSinks<'a>), String> {
+    let (dir, charts) = to.files();
+    let per_step = match dir {
+        Some(dir) => PerStepSink::create(
+            dir,
+            label,
+            mechanism,
+            layout,
+            case.output,
+            case.steps,
+            charts,
+        )
+        .map_err(|e| format!("{e:#}"))?,
+        None => None,
+    };
+    let columns = matches!(to, StepsTo::Memory)
+        .then(|| ColumnSink::new(mechanism, layout, case.output.decimation, case.steps));
+    // Without files, the charts take their rows on their own, so that the run can be shared;
+    // the steps are counted for the progress display.
+    let chart_sink = (per_step.is_none() && charts)
+        .then(|| ChartSink::new(mechanism, layout, case.output.decimation, case.steps, label));
+    let sinks = (summary, (chart_sink, StepCounter));
+    Ok((sinks, KeptSinks { per_step, columns }))
+}
+
+/// Every sink of a solved motion's steps, in the order they take each step: the summary,
+/// the progress count, the per-step files, the charts' own rows, the columns.
+fn solved_sinks<'s>(
+    sinks: &'s mut SharedSinks<'_>,
+    kept: &'s mut KeptSinks<'_>,
+) -> Vec<&'s mut dyn Sink> {
+    let mut list: Vec<&mut dyn Sink> = vec![&mut sinks.0, &mut sinks.1 .1];
+    if let Some(p) = kept.per_step.as_mut() {
+        list.push(p);
+    }
+    if let Some(c) = sinks.1 .0.as_mut() {
+        list.push(c);
+    }
+    if let Some(c) = kept.columns.as_mut() {
+        list.push(c);
+    }
+    list
+}
+
+/// Steps a train whose crank motion is given (`shift`, rad, ahead of the case's) into its
+/// sinks, and returns that motion (the sampling check steps it again on shifted grids).
+fn run_kinematic(
+    case: &Case,
+    (mechanism, shift): (&dyn Mechanism, f64),
+    families: &[&dyn LoadFamily],
+    gas: Option<GasAt>,
+    stages: &mut [Box<dyn Stage>],
+    sinks: &mut SharedSinks,
+    kept: &mut KeptSinks,
+) -> Result<CrankMotion, String> {
+    let motion = CrankMotion {
+        start_angle: case.motion.start_angle + shift,
+        ..case.motion
+    };
+    let mut grid = Grid::new(
+        motion,
+        motion.start_angle,
+        case.end_angle + shift,
+        case.steps,
+    );
+    let mut stages: Vec<&mut dyn Stage> = stages
+        .iter_mut()
+        .map(|s| &mut **s as &mut dyn Stage)
+        .collect();
+    // Without rows kept the run is shared by the threads (the same results bit for bit);
+    // the files are written in the steps' order, by a thread of their own.
+    match kept.kept() {
+        Some(p) => run(
+            mechanism,
+            &mut grid,
+            families,
+            gas,
+            &mut stages,
+            &mut [&mut sinks.0, &mut sinks.1 .1, p],
+        ),
+        None => run_parallel(mechanism, &mut grid, families, gas, &mut stages, sinks),
+    }
+    .map_err(|e| e.to_string())?;
+    Ok(motion)
+}
+
+/// Closes a train's row sinks: the per-step files written out (their charts' series
+/// returned), or the charts' own rows; the columns, if kept.
+fn finish_rows(kept: KeptSinks, chart_rows: Option<ChartSink>) -> Result<TrainRows, String> {
+    let charts = match kept.per_step {
+        Some(p) => p
+            .finish()
+            .map_err(|e| format!("cannot write the per-step files: {e:#}"))?,
+        None => chart_rows.and_then(ChartSink::finish),
+    };
+    Ok(TrainRows {
+        charts,
+        columns: kept.columns.map(ColumnSink::finish),
+    })
 }
 
 /// Runs `steps` with the case's gas, if any, as the chamber's pressure at the first train's
