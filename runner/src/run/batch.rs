@@ -127,7 +127,7 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
         }
         return report;
     }
-    write_index(out, &options, &mut report);
+    report.write_index(out, options.reports);
     report
 }
 
@@ -193,21 +193,6 @@ fn record_tables(tables: Vec<TableOutcome>, out: &Path, report: &mut Report) {
                 .push((sweep.clone(), out.join(&sweep), written));
         }
         report.failures.extend(failures);
-    }
-}
-
-/// Rewrites `out/index.html` when the run changed the folder's contents.
-fn write_index(out: &Path, options: &RunOptions, report: &mut Report) {
-    // The index describes what the folder holds: rewritten whenever that changes, also by a
-    // run that writes no reports (else it links reports that are gone, with old numbers).
-    let changed = !report.written.is_empty() || !report.sweeps.is_empty();
-    let index = out.join("index.html");
-    if changed && (options.reports || index.symlink_metadata().is_ok()) {
-        if let Err(e) = cardan_report::index(out) {
-            report
-                .failures
-                .push(format!("cannot write {}: {e:#}", index.display()));
-        }
     }
 }
 

@@ -274,7 +274,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Report {
     }
     merge_tables(tables, out, &mut report);
     merge_sweeps(sweeps, out, first.reports, &mut report);
-    write_index(out, first.reports, &mut report);
+    report.write_index(out, first.reports);
     report
 }
 
@@ -344,19 +344,6 @@ fn merge_sweeps(
                 "sweep \"{sweep}\": cannot write results to {}: {e:#}",
                 dir.display()
             )),
-        }
-    }
-}
-
-/// Rewrites `out/index.html` when the merge changed the folder's contents (as a run does).
-fn write_index(out: &Path, reports: bool, report: &mut Report) {
-    let changed = !report.written.is_empty() || !report.sweeps.is_empty();
-    let index = out.join("index.html");
-    if changed && (reports || index.symlink_metadata().is_ok()) {
-        if let Err(e) = cardan_report::index(out) {
-            report
-                .failures
-                .push(format!("cannot write {}: {e:#}", index.display()));
         }
     }
 }

@@ -1,6 +1,6 @@
 //! How a batch runs ([`RunOptions`]) and what it did ([`Report`]).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Called after each case with (cases finished, cases in the batch).
 pub type Progress = std::sync::Arc<dyn Fn(usize, usize) + Send + Sync>;
@@ -63,4 +63,20 @@ pub struct Report {
     pub sweeps: Vec<(String, PathBuf, usize)>,
     /// Cases whose folder of an earlier run was kept (`--resume`; each is also in `written`).
     pub reused: usize,
+}
+
+impl Report {
+    /// Rewrites `out/index.html` when the run (or merge) changed the folder's contents, also
+    /// where it writes no reports (`reports` false) but an index is there: the index describes
+    /// what the folder holds, and would otherwise link reports that are gone, with old numbers.
+    /// A failure to write it is one of the batch's failures.
+    pub(crate) fn write_index(&mut self, out: &Path, reports: bool) {
+        let changed = !self.written.is_empty() || !self.sweeps.is_empty();
+        let index = out.join("index.html");
+        if changed && (reports || index.symlink_metadata().is_ok()) {
+            if let Err(e) = cardan_report::index(out) {
+                (self.failures).push(format!("cannot write {}: {e:#}", index.display()));
+            }
+        }
+    }
 }
