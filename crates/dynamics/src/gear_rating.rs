@@ -23,7 +23,7 @@ use cardan_gears::{
 };
 use cardan_mechanism::{Column, JointKind, Loads, Material, Mechanism, MeshForce, State, C};
 
-use crate::loss::{failed, BindInput, Loss, LossInput};
+use crate::loss::{failed, BindInput, Loss, LossInput, Oil};
 use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
 use crate::mesh::{
@@ -188,101 +188,10 @@ impl GearRatings {
             else {
                 continue;
             };
-            // The thesis's ring force acts along its tied direction (A5.2.1.48-51); involute
-            // teeth have no such direction.
-            let axis = match (spec.tooth_load, force) {
-                (_, MeshForce::Tied { direction, .. }) => direction,
-                (ToothLoad::Thesis, MeshForce::Involute) => {
-                    return Err(SetupError {
-                        field: "gear.tooth_load".into(),
-                        rule: format!(
-                            "\"thesis\" is Karhula's reading of his own mesh force, which acts \
-                             along a fixed direction; the mesh {} has involute teeth pushing \
-                             along the line of action (the `involute` mesh-force reading): rate \
-                             it with \"tangential\", or use the `karhula` mesh-force reading",
-                            j.name
-                        ),
-                    });
-                }
-                (_, MeshForce::Involute) => C::i(),
-            };
+            let axis = tooth_load_axis(spec.tooth_load, force, j.name)?;
             let (pair, face_width) =
                 mesh_pair(spec, ratio, pitch_radius, internal, pressure_angle)?;
-            // The load distribution's empirical Cpf holds up to 40 in (AGMA 2001-D04 eq. 28-30):
-            // a wider face is refused here, before any step, not at the first step's rating.
-            cardan_gears::agma::factors::pinion_proportion_factor(face_width, pair.pinion.working)
-                .map_err(|e| failed("gear.face_width", &e))?;
-            let j_factors = match spec.j {
-                Some(j) => j,
-                None => computed_j(&pair)?,
-            };
-            let member = |m: usize| -> Result<MemberData, SetupError> {
-                let (bending_allowable, contact_allowable) = match spec.material {
-                    GearMaterial::ThroughHardened => (
-                        bending_allowable_through_hardened(spec.hardness[m], Grade::Two)
-                            .map_err(|e| failed("gear.hardness", &e))?,
-                        contact_allowable_through_hardened(spec.hardness[m], Grade::Two)
-                            .map_err(|e| failed("gear.hardness", &e))?,
-                    ),
-                    GearMaterial::Carburized => carburized_allowables(Grade::Two),
-                };
-                Ok(MemberData {
-                    j: j_factors[m],
-                    rim: 1.0,
-                    bending_allowable,
-                    contact_allowable,
-                    yn: 1.0,
-                    zn: 1.0,
-                    ch: 1.0,
-                })
-            };
-            let rating = GearSetRating {
-                module: pair.spec.module,
-                pinion_diameter: pair.pinion.working,
-                overload: 1.0,
-                load_distribution: LoadDistribution {
-                    crowned: false,
-                    offset_ratio: 0.0,
-                    enclosure: Enclosure::PrecisionEnclosed,
-                    adjusted_at_assembly: false,
-                },
-                size: SizeFactor::Given([1.0, 1.0]),
-                surface_condition: 1.0,
-                geometry_i: pitting_geometry_factor(&pair, IForm::Lpstc)
-                    .map_err(|e| failed("gear", &e))?,
-                elastic_coefficient: elastic_coefficient(
-                    spec.youngs_modulus,
-                    0.3,
-                    spec.youngs_modulus,
-                    0.3,
-                )
-                .map_err(|e| failed("gear.youngs_modulus", &e))?,
-                temperature: 1.0,
-                reliability: 1.0,
-                pinion: member(0)?,
-                gear: member(1)?,
-            };
-            let set = GearSet {
-                buckingham: BuckinghamPair {
-                    pinion_radius: pair.pinion.reference / 2.0,
-                    gear_radius: pair.gear.reference.abs() / 2.0,
-                    internal,
-                    face_width,
-                    error: spec.error,
-                    e1: spec.youngs_modulus,
-                    e2: spec.youngs_modulus,
-                    form: FULL_DEPTH_20,
-                },
-                pair,
-                face_width,
-                quality: Quality::Qv(spec.quality),
-                rating,
-                lubricant: Lubricant {
-                    kinematic_viscosity: oil.kinematic_viscosity,
-                    density: oil.density,
-                },
-                loss_reading: None,
-            };
+            let set = gear_set(spec, pair, (face_width, internal), oil)?;
             let loss = mesh_loss(spec, mechanism, friction, k)?;
             let prepared = PreparedRating::new(&set.rating, set.face_width);
             let iso = if spec.standard.iso() {
@@ -379,6 +288,113 @@ impl GearRatings {
         self.meshes
             .iter_mut()
             .map(move |m| (m.joint, m.rate(state, total, inertial)))
+    }
+}
+
+/// The AGMA 2001 gear set of one mesh of `spec`: the pair `pair`, its face width and whether
+/// the gear is internal (`mesh`), the oil `oil` (its viscosity and density for the mesh loss
+/// and the film), with the case's materials, J factors (given or computed) and the factors a
+/// case run takes as 1; the face width refused where AGMA's load distribution does not hold.
+fn gear_set(
+    spec: &GearSpec,
+    pair: GearPair,
+    (face_width, internal): (f64, bool),
+    oil: Oil,
+) -> Result<GearSet, SetupError> {
+    // The load distribution's empirical Cpf holds up to 40 in (AGMA 2001-D04 eq. 28-30):
+    // a wider face is refused here, before any step, not at the first step's rating.
+    cardan_gears::agma::factors::pinion_proportion_factor(face_width, pair.pinion.working)
+        .map_err(|e| failed("gear.face_width", &e))?;
+    let j_factors = match spec.j {
+        Some(j) => j,
+        None => computed_j(&pair)?,
+    };
+    let member = |m: usize| -> Result<MemberData, SetupError> {
+        let (bending_allowable, contact_allowable) = match spec.material {
+            GearMaterial::ThroughHardened => (
+                bending_allowable_through_hardened(spec.hardness[m], Grade::Two)
+                    .map_err(|e| failed("gear.hardness", &e))?,
+                contact_allowable_through_hardened(spec.hardness[m], Grade::Two)
+                    .map_err(|e| failed("gear.hardness", &e))?,
+            ),
+            GearMaterial::Carburized => carburized_allowables(Grade::Two),
+        };
+        Ok(MemberData {
+            j: j_factors[m],
+            rim: 1.0,
+            bending_allowable,
+            contact_allowable,
+            yn: 1.0,
+            zn: 1.0,
+            ch: 1.0,
+        })
+    };
+    let rating = GearSetRating {
+        module: pair.spec.module,
+        pinion_diameter: pair.pinion.working,
+        overload: 1.0,
+        load_distribution: LoadDistribution {
+            crowned: false,
+            offset_ratio: 0.0,
+            enclosure: Enclosure::PrecisionEnclosed,
+            adjusted_at_assembly: false,
+        },
+        size: SizeFactor::Given([1.0, 1.0]),
+        surface_condition: 1.0,
+        geometry_i: pitting_geometry_factor(&pair, IForm::Lpstc).map_err(|e| failed("gear", &e))?,
+        elastic_coefficient: elastic_coefficient(
+            spec.youngs_modulus,
+            0.3,
+            spec.youngs_modulus,
+            0.3,
+        )
+        .map_err(|e| failed("gear.youngs_modulus", &e))?,
+        temperature: 1.0,
+        reliability: 1.0,
+        pinion: member(0)?,
+        gear: member(1)?,
+    };
+    let set = GearSet {
+        buckingham: BuckinghamPair {
+            pinion_radius: pair.pinion.reference / 2.0,
+            gear_radius: pair.gear.reference.abs() / 2.0,
+            internal,
+            face_width,
+            error: spec.error,
+            e1: spec.youngs_modulus,
+            e2: spec.youngs_modulus,
+            form: FULL_DEPTH_20,
+        },
+        pair,
+        face_width,
+        quality: Quality::Qv(spec.quality),
+        rating,
+        lubricant: Lubricant {
+            kinematic_viscosity: oil.kinematic_viscosity,
+            density: oil.density,
+        },
+        loss_reading: None,
+    };
+    Ok(set)
+}
+
+/// The direction the rated tooth load is taken along (`tooth_load`) for a mesh whose force
+/// reading is `force`: the thesis's ring force acts along its tied direction (A5.2.1.48-51);
+/// involute teeth have no such direction, so the thesis's reading is refused on them (naming
+/// the mesh `name`), and the tangential one takes the pitch-circle tangent.
+fn tooth_load_axis(tooth_load: ToothLoad, force: MeshForce, name: &str) -> Result<C, SetupError> {
+    match (tooth_load, force) {
+        (_, MeshForce::Tied { direction, .. }) => Ok(direction),
+        (ToothLoad::Thesis, MeshForce::Involute) => Err(SetupError {
+            field: "gear.tooth_load".into(),
+            rule: format!(
+                "\"thesis\" is Karhula's reading of his own mesh force, which acts \
+                 along a fixed direction; the mesh {name} has involute teeth pushing \
+                 along the line of action (the `involute` mesh-force reading): rate \
+                 it with \"tangential\", or use the `karhula` mesh-force reading"
+            ),
+        }),
+        (_, MeshForce::Involute) => Ok(C::i()),
     }
 }
 
@@ -512,6 +528,64 @@ fn mesh_loss(
 }
 
 impl RatedMesh {
+    /// AGMA's dynamic factor at `step` where the rated load is not the tangential one (whose
+    /// rating gives it): kept with the pitch-line speed's bits it was taken at, the step's
+    /// checks made again when kept (the same factor at the same speed).
+    fn kept_dynamic_factor(
+        &mut self,
+        step: &MeshStep,
+    ) -> Result<cardan_gears::DynamicFactor, cardan_gears::GearError> {
+        let bits = step.pitch_line_velocity.abs().to_bits();
+        match self.kv {
+            Some((kept, kv)) if kept == bits => {
+                self.set.check_step(step)?;
+                Ok(kv)
+            }
+            _ => {
+                let kv = self.set.dynamic_factor(step)?;
+                self.kv = Some((bits, kv));
+                Ok(kv)
+            }
+        }
+    }
+
+    /// The thesis's tooth load (Karhula A5.2.1.48-51, [`ToothLoad::Thesis`]): the mesh force
+    /// `force` less twice the inertial family's (its `inertial` loads; none: zero) plus the
+    /// wheel disc's inertia, its part along the mesh's tied axis, tangential to the pitch
+    /// circle, per set of teeth.
+    fn thesis_load(&self, state: &State, force: C, inertial: Option<&Loads>) -> f64 {
+        let inertial = inertial.map_or(C::new(0.0, 0.0), |l| l.joints[self.joint].force);
+        let wheel = self.disc_mass * state.bodies[self.body].cg.acceleration;
+        let slipped = force - 2.0 * inertial + wheel;
+        let axial = self.axis * (slipped.re * self.axis.re + slipped.im * self.axis.im);
+        tangential(axial, &state.joints[self.joint]).abs() / self.sets
+    }
+
+    /// ISO 6336 at the rated load `load` (at the reference circle, the joint's pitch circle:
+    /// module = 2·r/z1) and the pinion's speed relative to the carrier, |v|/r from the
+    /// pitch-line velocity `velocity`: the larger member's contact stress, the smaller contact
+    /// safety factor, the larger root stress, the smaller bending safety factor (NaN without
+    /// an ISO rating).
+    fn iso_at(&self, load: f64, velocity: f64) -> Result<[f64; 4], String> {
+        Ok(match &self.iso {
+            None => [f64::NAN; 4],
+            // No load, no stress: the safety factors are infinite, as AGMA's.
+            Some(_) if load == 0.0 => [0.0, f64::INFINITY, 0.0, f64::INFINITY],
+            Some(iso) => {
+                let speed = velocity.abs() / self.pitch_radius;
+                let r = iso
+                    .rate(load, speed)
+                    .map_err(|e| format!("gear rating of {}: ISO 6336: {e}", self.name))?;
+                [
+                    r.sigma_h[0].max(r.sigma_h[1]),
+                    r.s_h[0].min(r.s_h[1]),
+                    r.sigma_f[0].max(r.sigma_f[1]),
+                    r.s_f[0].min(r.s_f[1]),
+                ]
+            }
+        })
+    }
+
     /// The mesh's rating at `state` under the `total` loads (and the `inertial` family's).
     fn rate(
         &mut self,
@@ -538,21 +612,7 @@ impl RatedMesh {
         };
         let kv = match &tangential_rating {
             Some(r) => r.kv,
-            None => {
-                let bits = step.pitch_line_velocity.abs().to_bits();
-                match m.kv {
-                    // The same checks of the step, then the factor of the same speed.
-                    Some((kept, kv)) if kept == bits => {
-                        m.set.check_step(&step).map_err(failed)?;
-                        kv
-                    }
-                    _ => {
-                        let kv = m.set.dynamic_factor(&step).map_err(failed)?;
-                        m.kv = Some((bits, kv));
-                        kv
-                    }
-                }
-            }
+            None => m.kept_dynamic_factor(&step).map_err(failed)?,
         };
         let at = LossInput {
             state,
@@ -567,13 +627,7 @@ impl RatedMesh {
         let load = match m.tooth_load {
             ToothLoad::Tangential => tangential_load,
             ToothLoad::RingForce => force.norm() / m.sets,
-            ToothLoad::Thesis => {
-                let inertial = inertial.map_or(C::new(0.0, 0.0), |l| l.joints[m.joint].force);
-                let wheel = m.disc_mass * state.bodies[m.body].cg.acceleration;
-                let slipped = force - 2.0 * inertial + wheel;
-                let axial = m.axis * (slipped.re * m.axis.re + slipped.im * m.axis.im);
-                tangential(axial, motion).abs() / m.sets
-            }
+            ToothLoad::Thesis => m.thesis_load(state, force, inertial),
         };
         // Another rated load: the rating and Buckingham's load at it (the loss stays on the
         // tangential load).
@@ -599,26 +653,8 @@ impl RatedMesh {
         } else {
             (f64::NAN, f64::NAN)
         };
-        // ISO 6336 at the same rated load (at the reference circle, the joint's pitch circle:
-        // module = 2·r/z1) and the pinion's speed relative to the carrier, v/r.
         let [iso_contact_stress, iso_contact_safety, iso_bending_stress, iso_bending_safety] =
-            match &m.iso {
-                None => [f64::NAN; 4],
-                // No load, no stress: the safety factors are infinite, as AGMA's.
-                Some(_) if load == 0.0 => [0.0, f64::INFINITY, 0.0, f64::INFINITY],
-                Some(iso) => {
-                    let speed = motion.relative_speed.abs() / m.pitch_radius;
-                    let r = iso
-                        .rate(load, speed)
-                        .map_err(|e| format!("gear rating of {name}: ISO 6336: {e}"))?;
-                    [
-                        r.sigma_h[0].max(r.sigma_h[1]),
-                        r.s_h[0].min(r.s_h[1]),
-                        r.sigma_f[0].max(r.sigma_f[1]),
-                        r.s_f[0].min(r.s_f[1]),
-                    ]
-                }
-            };
+            m.iso_at(load, motion.relative_speed)?;
         Ok(MeshRating {
             tooth_load: load,
             dynamic_load: dynamic.dynamic_load,

@@ -61,6 +61,75 @@ pub fn loads(
     unreachable!("the loop returns on its second pass")
 }
 
+/// The unknowns of the solve: each joint's kind of unknowns and its first column, the drive
+/// torque's column, the tied meshes (mesh joint, tied joint, direction, factor) and the first
+/// involute mesh.
+struct Columns {
+    kinds: Vec<Unknowns>,
+    first: Vec<usize>,
+    drive: usize,
+    ties: Vec<(usize, usize, C, f64)>,
+    involute: Option<usize>,
+}
+
+impl Columns {
+    /// The columns of `topology`'s joints in `state`, the involute meshes' flank sign `flank`.
+    fn of(topology: &Topology, state: &State, flank: f64) -> Self {
+        let joints = &topology.joints;
+        let mut kinds = Vec::with_capacity(joints.len());
+        let mut first = Vec::with_capacity(joints.len());
+        let mut unknowns = 0;
+        let mut ties = Vec::new();
+        let mut involute = None;
+        for (j, joint) in joints.iter().enumerate() {
+            let m = &state.joints[j];
+            let u = match joint.kind {
+                JointKind::Revolute(_) => Unknowns::Pin,
+                JointKind::Prismatic => Unknowns::Slide {
+                    n: C::i() * m.direction,
+                },
+                JointKind::GearMesh {
+                    pressure_angle,
+                    force,
+                    ..
+                } => match force {
+                    MeshForce::Involute => {
+                        involute.get_or_insert(j);
+                        // Tangent t = i·d; radial part |F_t|·tan α along d, towards the centre
+                        // of the gear on `body`.
+                        Unknowns::Along {
+                            d: C::i() * m.direction + flank * pressure_angle.tan() * m.direction,
+                        }
+                    }
+                    MeshForce::Tied {
+                        direction,
+                        joint: tied,
+                        factor,
+                    } => {
+                        ties.push((j, tied, direction, factor));
+                        Unknowns::Along { d: direction }
+                    }
+                },
+            };
+            kinds.push(u);
+            first.push(unknowns);
+            unknowns += u.count();
+        }
+        Self {
+            kinds,
+            first,
+            drive: unknowns,
+            ties,
+            involute,
+        }
+    }
+
+    /// The number of unknowns: the joints' and the drive torque.
+    fn count(&self) -> usize {
+        self.drive + 1
+    }
+}
+
 /// One least-squares solve with the involute flank sign `flank`; returns the residual and the
 /// tangential force of the (first) involute mesh, if any.
 fn solve(
@@ -71,51 +140,10 @@ fn solve(
     flank: f64,
     out: &mut Loads,
 ) -> (f64, Option<f64>) {
-    let joints = &topology.joints;
-    let mut kinds = Vec::with_capacity(joints.len());
-    let mut columns = Vec::with_capacity(joints.len());
-    let mut unknowns = 0;
-    let mut ties = Vec::new();
-    let mut involute = None;
-    for (j, joint) in joints.iter().enumerate() {
-        let m = &state.joints[j];
-        let u = match joint.kind {
-            JointKind::Revolute(_) => Unknowns::Pin,
-            JointKind::Prismatic => Unknowns::Slide {
-                n: C::i() * m.direction,
-            },
-            JointKind::GearMesh {
-                pressure_angle,
-                force,
-                ..
-            } => match force {
-                MeshForce::Involute => {
-                    involute.get_or_insert(j);
-                    // Tangent t = i·d; radial part |F_t|·tan α along d, towards the centre of
-                    // the gear on `body`.
-                    Unknowns::Along {
-                        d: C::i() * m.direction + flank * pressure_angle.tan() * m.direction,
-                    }
-                }
-                MeshForce::Tied {
-                    direction,
-                    joint: tied,
-                    factor,
-                } => {
-                    ties.push((j, tied, direction, factor));
-                    Unknowns::Along { d: direction }
-                }
-            },
-        };
-        kinds.push(u);
-        columns.push(unknowns);
-        unknowns += u.count();
-    }
-    let drive = unknowns;
-    unknowns += 1;
+    let columns = Columns::of(topology, state, flank);
     let bodies = &topology.bodies;
-    let equations = 3 * bodies.len() + ties.len();
-    let mut a = Mat::<f64>::zeros(equations, unknowns);
+    let equations = 3 * bodies.len() + columns.ties.len();
+    let mut a = Mat::<f64>::zeros(equations, columns.count());
     let mut b = Mat::<f64>::zeros(equations, 1);
     let moments: Vec<Moment> = (0..bodies.len())
         .map(|k| Moment::of(topology, state, k))
@@ -123,67 +151,15 @@ fn solve(
     if inertia {
         inertia_rows(topology, state, &moments, &mut b);
     }
-    // The gas pushes each piston along its axis towards the crankshaft, at the piston pin.
-    for ((piston, motion), &force) in topology
-        .pistons
-        .iter()
-        .zip(&state.pistons)
-        .zip(piston_forces)
-    {
-        let k = piston.body;
-        let f = -force * piston.axis;
-        let at = piston.origin + motion.position * piston.axis;
-        let Moment { row, scale, about } = moments[k];
-        b[(3 * k, 0)] -= f.re;
-        b[(3 * k + 1, 0)] -= f.im;
-        b[(row, 0)] -= scale * cross(at - about, f);
-    }
-    for (j, joint) in joints.iter().enumerate() {
-        let col = columns[j];
-        let at = state.joints[j].position;
-        for (target, sign) in [(Some(joint.body), 1.0), (joint.other, -1.0)] {
-            let Some(k) = target else { continue };
-            let Moment { row, scale, about } = moments[k];
-            let arm = at - about;
-            // A unit force f at `at` adds f to the force rows and arm × f to the moment row.
-            let mut put = |c: usize, f: C, couple: f64| {
-                a[(3 * k, c)] += sign * f.re;
-                a[(3 * k + 1, c)] += sign * f.im;
-                a[(row, c)] += sign * scale * (cross(arm, f) + couple);
-            };
-            match kinds[j] {
-                Unknowns::Pin => {
-                    put(col, C::new(1.0, 0.0), 0.0);
-                    put(col + 1, C::new(0.0, 1.0), 0.0);
-                }
-                Unknowns::Slide { n } => {
-                    put(col, n, 0.0);
-                    put(col + 1, C::new(0.0, 0.0), 1.0);
-                }
-                Unknowns::Along { d } => put(col, d, 0.0),
-            }
-        }
-    }
-    a[(3 * topology.crankshaft + 2, drive)] += 1.0;
-    for (t, &(mesh, tied, direction, factor)) in ties.iter().enumerate() {
-        let row = 3 * bodies.len() + t;
-        a[(row, columns[mesh])] = 1.0;
-        // The component along `direction` of the tied joint's force.
-        let c = columns[tied];
-        match kinds[tied] {
-            Unknowns::Pin => {
-                a[(row, c)] -= factor * direction.re;
-                a[(row, c + 1)] -= factor * direction.im;
-            }
-            Unknowns::Slide { n } => a[(row, c)] -= factor * dot(n, direction),
-            Unknowns::Along { d } => a[(row, c)] -= factor * dot(d, direction),
-        }
-    }
+    gas_rows(topology, state, piston_forces, &moments, &mut b);
+    joint_rows(topology, state, &columns, &moments, &mut a);
+    a[(3 * topology.crankshaft + 2, columns.drive)] += 1.0;
+    tie_rows(bodies.len(), &columns, &mut a);
     let x = a.qr().solve_lstsq(&b);
     let residual = (&a * &x - &b).norm_l2();
     for (j, load) in out.joints.iter_mut().enumerate() {
-        let c = columns[j];
-        *load = match kinds[j] {
+        let c = columns.first[j];
+        *load = match columns.kinds[j] {
             Unknowns::Pin => JointLoad {
                 force: C::new(x[(c, 0)], x[(c + 1, 0)]),
                 moment: 0.0,
@@ -198,8 +174,88 @@ fn solve(
             },
         };
     }
-    out.crank_torque = x[(drive, 0)];
-    (residual, involute.map(|j| x[(columns[j], 0)]))
+    out.crank_torque = x[(columns.drive, 0)];
+    let involute = columns.involute;
+    (residual, involute.map(|j| x[(columns.first[j], 0)]))
+}
+
+/// The gas in the right-hand side `b`: it pushes each piston along its axis towards the
+/// crankshaft, at the piston pin, with the force `piston_forces` of its piston.
+fn gas_rows(
+    topology: &Topology,
+    state: &State,
+    piston_forces: &[f64],
+    moments: &[Moment],
+    b: &mut Mat<f64>,
+) {
+    for ((piston, motion), &force) in topology
+        .pistons
+        .iter()
+        .zip(&state.pistons)
+        .zip(piston_forces)
+    {
+        let k = piston.body;
+        let f = -force * piston.axis;
+        let at = piston.origin + motion.position * piston.axis;
+        let Moment { row, scale, about } = moments[k];
+        b[(3 * k, 0)] -= f.re;
+        b[(3 * k + 1, 0)] -= f.im;
+        b[(row, 0)] -= scale * cross(at - about, f);
+    }
+}
+
+/// Each joint's unknowns in the equations of the two bodies it joins (with opposite signs):
+/// a unit force f at the joint adds f to a body's force rows and arm × f to its moment row.
+fn joint_rows(
+    topology: &Topology,
+    state: &State,
+    columns: &Columns,
+    moments: &[Moment],
+    a: &mut Mat<f64>,
+) {
+    for (j, joint) in topology.joints.iter().enumerate() {
+        let col = columns.first[j];
+        let at = state.joints[j].position;
+        for (target, sign) in [(Some(joint.body), 1.0), (joint.other, -1.0)] {
+            let Some(k) = target else { continue };
+            let Moment { row, scale, about } = moments[k];
+            let arm = at - about;
+            let mut put = |c: usize, f: C, couple: f64| {
+                a[(3 * k, c)] += sign * f.re;
+                a[(3 * k + 1, c)] += sign * f.im;
+                a[(row, c)] += sign * scale * (cross(arm, f) + couple);
+            };
+            match columns.kinds[j] {
+                Unknowns::Pin => {
+                    put(col, C::new(1.0, 0.0), 0.0);
+                    put(col + 1, C::new(0.0, 1.0), 0.0);
+                }
+                Unknowns::Slide { n } => {
+                    put(col, n, 0.0);
+                    put(col + 1, C::new(0.0, 0.0), 1.0);
+                }
+                Unknowns::Along { d } => put(col, d, 0.0),
+            }
+        }
+    }
+}
+
+/// A tied mesh's equation each, after the `bodies`' 3 rows each: its force equals `factor`
+/// times the tied joint's force component along `direction`.
+fn tie_rows(bodies: usize, columns: &Columns, a: &mut Mat<f64>) {
+    for (t, &(mesh, tied, direction, factor)) in columns.ties.iter().enumerate() {
+        let row = 3 * bodies + t;
+        a[(row, columns.first[mesh])] = 1.0;
+        let c = columns.first[tied];
+        match columns.kinds[tied] {
+            Unknowns::Pin => {
+                a[(row, c)] -= factor * direction.re;
+                a[(row, c + 1)] -= factor * direction.im;
+            }
+            Unknowns::Slide { n } => a[(row, c)] -= factor * dot(n, direction),
+            Unknowns::Along { d } => a[(row, c)] -= factor * dot(d, direction),
+        }
+    }
 }
 
 /// The bodies' inertia in the right-hand side `b`: m·a in each body's force rows, J·α in its own
