@@ -12,6 +12,17 @@ fn cardan(args: &[&std::ffi::OsStr]) -> std::process::Output {
         .unwrap()
 }
 
+/// `cardan args`, which must exit 0 (else its stderr is the failure's message).
+fn cardan_ok(args: &[&std::ffi::OsStr]) {
+    let out = cardan(args);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 #[test]
 fn check_and_run_an_optimisation() {
     let dir = tempfile::tempdir().unwrap();
@@ -45,19 +56,13 @@ fn check_and_run_an_optimisation() {
     }
 
     let results = dir.path().join("out");
-    let out = cardan(&[
+    cardan_ok(&[
         "run".as_ref(),
         batch.as_os_str(),
         "--out".as_ref(),
         results.as_os_str(),
         "--quiet".as_ref(),
     ]);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     let folder = results.join("kinematic");
     for f in [
         "slider_crank/optimum.json",
@@ -76,7 +81,7 @@ fn check_and_run_an_optimisation() {
     let mut shards = Vec::new();
     for k in ["1/2", "2/2"] {
         let shard = dir.path().join(format!("shard{}", &k[..1]));
-        let out = cardan(&[
+        cardan_ok(&[
             "run".as_ref(),
             batch.as_os_str(),
             "--out".as_ref(),
@@ -85,25 +90,13 @@ fn check_and_run_an_optimisation() {
             k.as_ref(),
             "--quiet".as_ref(),
         ]);
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
         shards.push(shard);
     }
     let merged = dir.path().join("merged");
     let mut args: Vec<&std::ffi::OsStr> = vec!["merge".as_ref()];
     args.extend(shards.iter().map(|s| s.as_os_str()));
     args.extend(["--out".as_ref(), merged.as_os_str()]);
-    let out = cardan(&args);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    cardan_ok(&args);
     let index = std::fs::read_to_string(merged.join("index.html")).unwrap();
     assert!(
         index.contains("Optimisations") && index.contains("kinematic/report.md"),
