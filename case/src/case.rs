@@ -581,8 +581,13 @@ fn validate(
     if dynamics.is_some() {
         solved_friction(&setups, &invalid)?;
     }
-    let shaking = (&dynamics, balance.shaking_per_step);
-    let computed = crate::output_metrics::Computed::of(&gas, &friction, &gear, shaking);
+    let computed = crate::output_metrics::Computed::of(
+        &gas,
+        &friction,
+        &gear,
+        &dynamics,
+        balance.shaking_per_step,
+    );
     let listed = raw.output.metrics.as_deref();
     let table_metrics = crate::output_metrics::build(listed, &computed, &invalid)?;
     Ok(Case {

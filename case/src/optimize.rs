@@ -393,7 +393,8 @@ impl Optimization {
             &base_case.gas,
             &base_case.friction,
             &base_case.gear,
-            (&base_case.dynamics, base_case.balance.shaking_per_step),
+            &base_case.dynamics,
+            base_case.balance.shaking_per_step,
         );
         let objective = metric(&raw.objective, &computed).map_err(|rule| {
             fail(

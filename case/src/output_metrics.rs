@@ -27,7 +27,8 @@ impl Computed {
         gas: &Option<G>,
         friction: &Option<F>,
         gear: &Option<GearSpec>,
-        (dynamics, shaking): (&Option<D>, bool),
+        dynamics: &Option<D>,
+        shaking: bool,
     ) -> Self {
         Self {
             gas: gas.is_some(),
