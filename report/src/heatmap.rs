@@ -5,8 +5,8 @@
 //! `<g class="legend">` with `data-min`/`data-max`; the contour `<path class="contour">`.
 
 use crate::svg::{
-    attr_num, c, chart_heading, esc, nice_range, open_svg, text_width, tick_label, PLOT_HEIGHT,
-    TOP, WIDTH,
+    attr_num, axis_titles, c, chart_heading, esc, nice_range, open_svg, text_width, tick_label,
+    PLOT_HEIGHT, TOP, WIDTH,
 };
 use std::fmt::Write as _;
 
@@ -179,19 +179,8 @@ pub fn heat_map(map: &HeatMap) -> String {
     }
     frame_and_ticks(&mut o, map, &grid, ny);
     o.push_str("</g>\n");
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
-        c(left + plot_w / 2.0),
-        c(TOP + plot_h + 36.0),
-        esc(&map.x_label)
-    );
-    let _ = writeln!(
-        o,
-        "<text transform=\"translate(16 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
-        c(TOP + plot_h / 2.0),
-        esc(&map.y_label)
-    );
+    let middle = (left + plot_w / 2.0, TOP + plot_h / 2.0);
+    axis_titles(&mut o, middle, TOP + plot_h, (&map.x_label, &map.y_label));
     colour_legend(&mut o, map, range, left + plot_w + 24.0, plot_h);
     o.push_str("</svg>\n");
     o

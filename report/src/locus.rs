@@ -10,8 +10,9 @@
 //! both), a function of the rows announced, so a run and its CSV read back draw the same points.
 
 use crate::svg::{
-    c, chart_heading, esc, legend_layout, legend_lines, nice_range, open_plot, open_svg,
-    pretty_unit_prefixed, push_coord, tick_label, Series, DASHES, LEFT, PALETTE, PLOT_HEIGHT, TOP,
+    axis_titles, c, chart_heading, esc, legend_layout, legend_lines, nice_range, open_plot,
+    open_svg, pretty_unit_prefixed, push_coord, tick_label, Series, DASHES, LEFT, PALETTE,
+    PLOT_HEIGHT, TOP,
 };
 use std::fmt::Write as _;
 
@@ -68,7 +69,7 @@ pub fn locus_chart(chart: &LocusChart) -> String {
         locus_series(&mut o, chart, k, s, &square);
     }
     o.push_str("</g>\n");
-    axis_titles(&mut o, chart, pre, side);
+    locus_axis_titles(&mut o, chart, pre, side);
     legend_lines(&mut o, &chart.series, &legend);
     o.push_str("</g>\n</svg>\n");
     o
@@ -192,7 +193,7 @@ fn locus_series(o: &mut String, chart: &LocusChart, k: usize, s: &Series, square
 }
 
 /// Both axes' titles, each with the unit and its prefix.
-fn axis_titles(o: &mut String, chart: &LocusChart, pre: &str, side: f64) {
+fn locus_axis_titles(o: &mut String, chart: &LocusChart, pre: &str, side: f64) {
     let unit = pretty_unit_prefixed(pre, &chart.unit);
     let title = |label: &str| {
         if unit.is_empty() {
@@ -201,19 +202,9 @@ fn axis_titles(o: &mut String, chart: &LocusChart, pre: &str, side: f64) {
             format!("{label}, {unit}")
         }
     };
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
-        c(LEFT + side / 2.0),
-        c(TOP + side + 36.0),
-        esc(&title(&chart.x_label))
-    );
-    let _ = writeln!(
-        o,
-        "<text transform=\"translate(16 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
-        c(TOP + side / 2.0),
-        esc(&title(&chart.y_label))
-    );
+    let middle = (LEFT + side / 2.0, TOP + side / 2.0);
+    let titles = (title(&chart.x_label), title(&chart.y_label));
+    axis_titles(o, middle, TOP + side, (&titles.0, &titles.1));
 }
 
 #[cfg(test)]

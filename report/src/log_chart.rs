@@ -6,7 +6,7 @@
 //! value v is at left + (log₁₀ v − log₁₀ min)/(log₁₀ max − log₁₀ min)·width.
 
 use crate::svg::{
-    c, chart_heading, esc, legend_layout, legend_lines, open_plot, open_svg, plot_factors,
+    axis_titles, c, chart_heading, legend_layout, legend_lines, open_plot, open_svg, plot_factors,
     pretty_unit, series_lines, LineChart, LEFT, PLOT_HEIGHT, RIGHT, TOP, WIDTH,
 };
 use std::fmt::Write as _;
@@ -148,19 +148,9 @@ pub(crate) fn log_chart(chart: &LineChart) -> String {
     } else {
         format!("{}, {unit} (log scale)", chart.y_label)
     };
-    let _ = writeln!(
-        o,
-        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{} (log scale)</text>",
-        c(LEFT + plot_w / 2.0),
-        c(TOP + PLOT_HEIGHT + 36.0),
-        esc(&chart.x_label)
-    );
-    let _ = writeln!(
-        o,
-        "<text transform=\"translate(16 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
-        c(TOP + PLOT_HEIGHT / 2.0),
-        esc(&y_title)
-    );
+    let x_title = format!("{} (log scale)", chart.x_label);
+    let middle = (LEFT + plot_w / 2.0, TOP + PLOT_HEIGHT / 2.0);
+    axis_titles(&mut o, middle, TOP + PLOT_HEIGHT, (&x_title, &y_title));
     legend_lines(&mut o, &chart.series, &legend);
     o.push_str("</g>\n</svg>\n");
     o

@@ -449,18 +449,26 @@ fn line_axis_titles(o: &mut String, chart: &LineChart, pre: &str, plot_w: f64) {
     } else {
         format!("{}, {unit}", chart.y_label)
     };
+    let x_title = &chart.x_label;
+    let middle = (LEFT + plot_w / 2.0, TOP + PLOT_HEIGHT / 2.0);
+    axis_titles(o, middle, TOP + PLOT_HEIGHT, (x_title, &y_title));
+}
+
+/// A chart's axis titles: `titles.0` centred under the plot (its middle `middle.0`, its bottom
+/// edge `bottom`), `titles.1` turned up the left edge beside its middle `middle.1`.
+pub(crate) fn axis_titles(o: &mut String, middle: (f64, f64), bottom: f64, titles: (&str, &str)) {
     let _ = writeln!(
         o,
         "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>",
-        c(LEFT + plot_w / 2.0),
-        c(TOP + PLOT_HEIGHT + 36.0),
-        esc(&chart.x_label)
+        c(middle.0),
+        c(bottom + 36.0),
+        esc(titles.0)
     );
     let _ = writeln!(
         o,
         "<text transform=\"translate(16 {}) rotate(-90)\" text-anchor=\"middle\">{}</text>",
-        c(TOP + PLOT_HEIGHT / 2.0),
-        esc(&y_title)
+        c(middle.1),
+        esc(titles.1)
     );
 }
 
