@@ -109,8 +109,7 @@ fn losses(x: &StageInputs) -> Built {
     let Some(budget) = x.losses else {
         return Ok(None);
     };
-    let t = x.machine.mechanism().topology();
-    Ok(Some(Box::new(LossStage::new(budget.clone(), t))))
+    Ok(Some(Box::new(LossStage::new(budget.clone()))))
 }
 
 /// The whole machine: every cylinder's loads, the machine's torque, journal and pin loads,

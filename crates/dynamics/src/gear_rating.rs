@@ -21,9 +21,12 @@ use cardan_gears::{
     bending_geometry_factor, pitting_geometry_factor, GearPair, GearSet, GeneratedMember, IForm,
     MeshStep, PairMember,
 };
-use cardan_mechanism::{Column, JointKind, Loads, Material, Mechanism, MeshForce, State, C};
+use cardan_mechanism::{
+    Column, JointKind, Loads, LoadsBlock, Material, Mechanism, MeshForce, State, StateBlock,
+    Topology, C, ZERO,
+};
 
-use crate::loss::{failed, BindInput, Loss, LossInput, Oil};
+use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil};
 use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
 use crate::mesh::{
@@ -262,33 +265,73 @@ impl GearRatings {
         self.meshes.iter().map(|m| m.bending).collect()
     }
 
-    /// Each mesh's rating at `state` under the `total` loads (and the `inertial` family's, which
-    /// [`ToothLoad::Thesis`] needs; `None` without one), into `out`.
+    /// Each mesh's rating at `state` of a mechanism of `topology` under the `total` loads (and
+    /// the `inertial` family's, which [`ToothLoad::Thesis`] needs; `None` without one), into
+    /// `out`.
     pub fn evaluate(
         &mut self,
+        topology: &Topology,
         state: &State,
         total: &Loads,
         inertial: Option<&Loads>,
         out: &mut [MeshRating],
     ) -> Result<(), String> {
-        for ((_, r), out) in self.ratings(state, total, inertial).zip(out.iter_mut()) {
+        let (mut states, mut totals) = (
+            StateBlock::for_topology(topology),
+            LoadsBlock::for_topology(topology),
+        );
+        states.scatter(0, state);
+        totals.scatter(0, total);
+        let mut losses = vec![ZERO; self.meshes.len()];
+        let failed = self.mesh_losses(&LossLanes::one(&states, &totals), &mut losses);
+        let losses = lane_losses(&losses, &failed, 0);
+        for ((_, r), out) in self
+            .ratings(state, total, inertial, losses)
+            .zip(out.iter_mut())
+        {
             *out = r?;
         }
         Ok(())
     }
 
+    /// Each mesh's loss at the lanes `at.lanes` into its column of `out`, W; each mesh's
+    /// failure, if it fails at a lane (the lanes from there on unset).
+    pub(crate) fn mesh_losses(
+        &mut self,
+        at: &LossLanes,
+        out: &mut [Column],
+    ) -> Vec<Option<LaneFailure>> {
+        (self.meshes.iter_mut().zip(out))
+            .map(|(m, out)| m.loss.power(at, out).err())
+            .collect()
+    }
+
     /// Each mesh's joint and rating at `state` (as [`GearRatings::evaluate`] gives them), in
-    /// rating order.
+    /// rating order, each with its mesh loss at the state (`losses`, in the same order: from
+    /// [`GearRatings::mesh_losses`] by [`lane_losses`]).
     pub(crate) fn ratings<'s>(
         &'s mut self,
         state: &'s State,
         total: &'s Loads,
         inertial: Option<&'s Loads>,
+        losses: impl Iterator<Item = Result<f64, String>> + 's,
     ) -> impl Iterator<Item = (usize, Result<MeshRating, String>)> + 's {
-        self.meshes
-            .iter_mut()
-            .map(move |m| (m.joint, m.rate(state, total, inertial)))
+        (self.meshes.iter_mut().zip(losses))
+            .map(move |(m, loss)| (m.joint, m.rate(state, total, inertial, loss)))
     }
+}
+
+/// Each mesh's loss at lane `i` of its column of `losses`, or its failure there (`failed`, from
+/// [`GearRatings::mesh_losses`]).
+pub(crate) fn lane_losses<'a>(
+    losses: &'a [Column],
+    failed: &'a [Option<LaneFailure>],
+    i: usize,
+) -> impl Iterator<Item = Result<f64, String>> + 'a {
+    losses.iter().zip(failed).map(move |(c, f)| match f {
+        Some(f) if f.lane == i => Err(f.why.clone()),
+        _ => Ok(c[i]),
+    })
 }
 
 /// The AGMA 2001 gear set of one mesh of `spec`: the pair `pair`, its face width and whether
@@ -586,12 +629,14 @@ impl RatedMesh {
         })
     }
 
-    /// The mesh's rating at `state` under the `total` loads (and the `inertial` family's).
+    /// The mesh's rating at `state` under the `total` loads (and the `inertial` family's), its
+    /// mesh loss `loss` (W) at the state.
     fn rate(
         &mut self,
         state: &State,
         total: &Loads,
         inertial: Option<&Loads>,
+        loss: Result<f64, String>,
     ) -> Result<MeshRating, String> {
         let m = self;
         let motion = &state.joints[m.joint];
@@ -600,7 +645,11 @@ impl RatedMesh {
         let step = MeshStep {
             tangential_load,
             pitch_line_velocity: motion.relative_speed,
-            speeds: mesh_speeds(state, m.joint, m.body, m.pitch_radius),
+            speeds: mesh_speeds(
+                state.bodies[m.body].angular_velocity,
+                motion.relative_speed,
+                m.pitch_radius,
+            ),
         };
         let name = m.name;
         let failed = |e: cardan_gears::GearError| format!("gear rating of {name}: {e}");
@@ -614,16 +663,7 @@ impl RatedMesh {
             Some(r) => r.kv,
             None => m.kept_dynamic_factor(&step).map_err(failed)?,
         };
-        let at = LossInput {
-            state,
-            total,
-            pressure: None,
-            rated_meshes: &[],
-        };
-        let loss = m
-            .loss
-            .power(&at)
-            .map_err(|e| format!("gear rating of {name}: {e}"))?;
+        let loss = loss.map_err(|e| format!("gear rating of {name}: {e}"))?;
         let load = match m.tooth_load {
             ToothLoad::Tangential => tangential_load,
             ToothLoad::RingForce => force.norm() / m.sets,

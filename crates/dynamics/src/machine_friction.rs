@@ -25,9 +25,8 @@ use crate::family::LoadFamily;
 use crate::losses::LossBudget;
 use crate::stage::GasAt;
 use crate::stepper::Loading;
-use cardan_mechanism::{
-    Column, CrankState, Loads, LoadsBlock, Mechanism, State, StateBlock, LANES,
-};
+use crate::LossLanes;
+use cardan_mechanism::{Column, CrankState, LoadsBlock, Mechanism, StateBlock, LANES, ZERO};
 
 /// The speed at which the losses are evaluated below it, rad/s (module doc: the limit of a
 /// Coulomb loss's torque at vanishing speed).
@@ -53,9 +52,8 @@ pub(crate) struct FrictionAt<'a> {
     states: StateBlock,
     loads: Vec<LoadsBlock>,
     total: LoadsBlock,
-    state: State,
-    total_loads: Loads,
-    losses: Vec<f64>,
+    /// The loss components at the state, W (lane 0).
+    losses: Vec<Column>,
 }
 
 impl<'a> FrictionAt<'a> {
@@ -74,9 +72,7 @@ impl<'a> FrictionAt<'a> {
             states: StateBlock::for_topology(t),
             loads: vec![LoadsBlock::for_topology(t); friction.families.len()],
             total: LoadsBlock::for_topology(t),
-            state: State::for_topology(t),
-            total_loads: Loads::for_topology(t),
-            losses: vec![0.0; friction.budget.names().len()],
+            losses: vec![ZERO; friction.budget.names().len()],
         }
     }
 
@@ -115,16 +111,18 @@ impl<'a> FrictionAt<'a> {
         } else {
             &self.loads[0]
         };
-        self.states.gather(0, &mut self.state);
-        total.gather(0, &mut self.total_loads);
-        self.budget.evaluate(
-            &self.state,
-            &self.total_loads,
-            pressure,
-            &[],
-            &mut self.losses,
-        )?;
-        let power: f64 = self.losses.iter().sum();
+        let pressure = pressure.map(|p| [p; LANES]);
+        let at = LossLanes {
+            lanes: 0..1,
+            states: &self.states,
+            total,
+            pressure: pressure.as_ref(),
+            rated_meshes: &[],
+        };
+        self.budget
+            .evaluate(&at, &mut self.losses)
+            .map_err(|f| f.why)?;
+        let power: f64 = self.losses.iter().map(|c| c[0]).sum();
         Ok(power / speed)
     }
 }

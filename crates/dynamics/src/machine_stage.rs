@@ -27,10 +27,9 @@ use crate::stage::{
     Block, GasAt, LaneError, PassedOn, Stage, StageColumn, StageError, StageTotals,
 };
 use crate::stepper::Loading;
+use crate::LossLanes;
 use cardan_balance::{shaking_lane, Shaking};
-use cardan_mechanism::{
-    Column, CrankState, Loads, LoadsBlock, Mechanism, State, StateBlock, C, LANES,
-};
+use cardan_mechanism::{Column, CrankState, LoadsBlock, Mechanism, StateBlock, C, LANES, ZERO};
 use std::sync::Arc;
 
 /// The stage's first per-step columns where the case asks for the machine's shaking step by
@@ -58,9 +57,8 @@ struct CylinderAt {
     /// Its main bearing's and crank pin's loads (on the crankshaft), N.
     main: C,
     pin: C,
-    /// Gas force on each of its pistons, N, and the absolute pressure, Pa.
+    /// Gas force on each of its pistons, N.
     gas_force: f64,
-    pressure: Option<f64>,
     /// Its power loss, W.
     loss: f64,
 }
@@ -94,10 +92,8 @@ struct Room {
     cranks: Vec<CrankState>,
     /// One cylinder's crank states at the machine's `cranks`.
     own: Vec<CrankState>,
-    /// One cylinder's loss components at a step, W.
-    parts: Vec<f64>,
-    state: State,
-    one: Loads,
+    /// One cylinder's loss components at each lane, W.
+    parts: Vec<Column>,
     /// Each cylinder at each lane of the block, cylinder by cylinder.
     at: Vec<CylinderAt>,
 }
@@ -185,7 +181,24 @@ impl MachineStage {
             } else {
                 &room.total
             };
-            for (k, &p) in pressure[..lanes].iter().enumerate() {
+            let losses = match self.losses.get_mut(i - first) {
+                Some(budget) => {
+                    room.parts.resize(budget.names().len(), ZERO);
+                    let at = LossLanes {
+                        lanes: 0..lanes,
+                        states: &room.block,
+                        total,
+                        pressure: gas.map(|_| &pressure),
+                        rated_meshes: &[],
+                    };
+                    budget
+                        .evaluate(&at, &mut room.parts)
+                        .map_err(|f| StageError::Failed(f.why).at_lane(f.lane))?;
+                    true
+                }
+                None => false,
+            };
+            for k in 0..lanes {
                 let mut at = CylinderAt {
                     shaking: match self.places.shaking {
                         true => shaking_lane(t, &room.block, k),
@@ -194,7 +207,6 @@ impl MachineStage {
                     torque: total.crank_torque[k],
                     gas_torque: room.loads.get(1).map_or(0.0, |g| g.crank_torque[k]),
                     gas_force: gas.map_or(0.0, |_| room.force[k]),
-                    pressure: gas.map(|_| p),
                     ..CylinderAt::default()
                 };
                 if let Some(j) = self.machine.main_bearing() {
@@ -205,14 +217,8 @@ impl MachineStage {
                     let l = &total.joints[j];
                     at.pin = axis * C::new(l.fx[k], l.fy[k]);
                 }
-                if let Some(budget) = self.losses.get_mut(i - first) {
-                    room.block.gather(k, &mut room.state);
-                    total.gather(k, &mut room.one);
-                    room.parts.resize(budget.names().len(), 0.0);
-                    budget
-                        .evaluate(&room.state, &room.one, at.pressure, &[], &mut room.parts)
-                        .map_err(|e| StageError::Failed(e).at_lane(k))?;
-                    at.loss = room.parts.iter().sum();
+                if losses {
+                    at.loss = room.parts.iter().map(|c| c[k]).sum();
                 }
                 room.at[i * LANES + k] = at;
             }
@@ -289,8 +295,6 @@ impl MachineStage {
                 cranks: Vec::with_capacity(LANES),
                 own: Vec::with_capacity(LANES),
                 parts: Vec::new(),
-                state: State::for_topology(t),
-                one: Loads::for_topology(t),
                 at: Vec::new(),
             })
         })
@@ -316,7 +320,6 @@ fn train_lane(machine: &Machine, input: &Block, i: usize, shaking: bool) -> Cyli
         main: joint(machine.main_bearing()),
         pin: joint(machine.crank_pin()),
         gas_force: input.force.map_or(0.0, |f| f[i]),
-        pressure: input.pressure.map(|p| p[i]),
         ..CylinderAt::default()
     }
 }

@@ -4,7 +4,7 @@
 //! summary. A run takes the ratings before the budget, which charges a rated mesh's loss as
 //! the rating computed it ([`PassedOn::mesh_losses`]).
 
-use crate::gear_rating::{GearRatings, MeshRating};
+use crate::gear_rating::{lane_losses, GearRatings, MeshRating};
 use crate::losses::LossBudget;
 use crate::machine::MachineKind;
 use crate::metrics::{self, MetricDef, Summary};
@@ -14,6 +14,7 @@ use crate::stage::{
 use crate::step::StepBlock;
 use crate::summary::peaks::raise;
 use crate::summary::Integral;
+use crate::LossLanes;
 use cardan_mechanism::{Column, Loads, State, Topology, ZERO};
 use std::any::Any;
 use std::ops::Range;
@@ -61,23 +62,12 @@ impl LaneRoom {
 #[derive(Debug, Clone)]
 pub struct LossStage {
     budget: LossBudget,
-    room: LaneRoom,
-    /// The rated meshes' losses at a lane, W, by joint index.
-    meshes: Vec<(usize, f64)>,
-    /// The components' losses at a lane, W.
-    parts: Vec<f64>,
 }
 
 impl LossStage {
-    /// The stage of `budget`, a loss budget of a mechanism of `topology`.
-    pub fn new(budget: LossBudget, topology: &Topology) -> Self {
-        let parts = vec![0.0; budget.names().len()];
-        Self {
-            budget,
-            room: LaneRoom::for_topology(topology),
-            meshes: Vec::new(),
-            parts,
-        }
+    /// The stage of `budget`.
+    pub fn new(budget: LossBudget) -> Self {
+        Self { budget }
     }
 }
 
@@ -92,28 +82,31 @@ impl Stage for LossStage {
         passed: &mut PassedOn,
         out: &mut [Column],
     ) -> Result<(), LaneError> {
+        let at = LossLanes {
+            lanes: 0..block.len,
+            states: block.states,
+            total: block.total,
+            pressure: block.pressure,
+            rated_meshes: &passed.mesh_losses,
+        };
+        let (torque, parts) = out.split_first_mut().expect("a torque column");
+        let failed = self.budget.evaluate(&at, parts).err();
+        let complete = failed.as_ref().map_or(block.len, |f| f.lane);
         let mut power = ZERO;
-        for i in 0..block.len {
-            let (state, total, _) = self.room.take(block, i, false);
-            passed.mesh_losses_at(i, &mut self.meshes);
-            let pressure = block.pressure.map(|p| p[i]);
-            let parts = &mut self.parts;
-            (self.budget)
-                .evaluate(state, total, pressure, &self.meshes, parts)
-                .map_err(|e| StageError::Failed(e).at_lane(i))?;
-            let sum: f64 = parts.iter().sum();
+        for i in 0..complete {
+            let sum: f64 = parts.iter().map(|c| c[i]).sum();
             if !sum.is_finite() {
-                let k = parts.iter().position(|p| !p.is_finite()).unwrap_or(0);
+                let k = parts.iter().position(|c| !c[i].is_finite()).unwrap_or(0);
                 let quantity = format!("power_loss_{}", self.budget.names()[k]);
-                let value = parts[k];
+                let value = parts[k][i];
                 return Err(StageError::NonFinite { quantity, value }.at_lane(i));
             }
-            let speed = state.crank.speed;
-            out[0][i] = if speed != 0.0 { sum / speed.abs() } else { 0.0 };
-            for (c, p) in out[1..].iter_mut().zip(parts.iter()) {
-                c[i] = *p;
-            }
+            let speed = block.states.crank.speed[i];
+            torque[i] = if speed != 0.0 { sum / speed.abs() } else { 0.0 };
             power[i] = sum;
+        }
+        if let Some(f) = failed {
+            return Err(StageError::Failed(f.why).at_lane(f.lane));
         }
         passed.loss_power = Some(power);
         Ok(())
@@ -268,6 +261,8 @@ impl StageTotals for LossTotals {
 pub struct GearStage {
     ratings: GearRatings,
     room: LaneRoom,
+    /// Each mesh's loss at each lane of the block, W.
+    losses: Vec<Column>,
     /// The values of each mesh: [`MeshRating::WIDTH`] with an ISO 6336 rating, else
     /// [`MeshRating::AGMA_WIDTH`] (a run rated by AGMA alone keeps the columns it had).
     per_mesh: usize,
@@ -284,6 +279,7 @@ impl GearStage {
         Self {
             ratings,
             room: LaneRoom::for_topology(topology),
+            losses: Vec::new(),
             per_mesh,
         }
     }
@@ -305,9 +301,16 @@ impl Stage for GearStage {
             .mesh_losses
             .extend(self.ratings.joints().map(|joint| (joint, ZERO)));
         let passed = &mut passed.mesh_losses[first..];
+        let at = LossLanes {
+            lanes: 0..block.len,
+            ..LossLanes::one(block.states, block.total)
+        };
+        self.losses.resize(passed.len(), ZERO);
+        let failed = self.ratings.mesh_losses(&at, &mut self.losses);
         for i in 0..block.len {
             let (state, total, inertial) = self.room.take(block, i, true);
-            let ratings = self.ratings.ratings(state, total, inertial);
+            let losses = lane_losses(&self.losses, &failed, i);
+            let ratings = self.ratings.ratings(state, total, inertial, losses);
             let outs = out.chunks_exact_mut(self.per_mesh);
             for (((_, r), out), (_, loss)) in ratings.zip(outs).zip(passed.iter_mut()) {
                 let r = r.map_err(|e| StageError::Failed(e).at_lane(i))?;
@@ -576,7 +579,7 @@ mod tests {
                 }
             }
             let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
-            stages.push(Box::new(LossStage::new(budget, t)));
+            stages.push(Box::new(LossStage::new(budget)));
             for s in &stages {
                 assert!(
                     s.columns().iter().all(|c| c.value < s.width()),

@@ -58,7 +58,7 @@ fn losses_at(
     let loads = Loads::for_topology(m.topology());
     let mut out = vec![f64::NAN; budget.names().len()];
     budget
-        .evaluate(&state, &loads, None, &[], &mut out)
+        .at_state(m.topology(), (&state, &loads), None, &mut out)
         .unwrap();
     budget.names().iter().cloned().zip(out).collect()
 }
@@ -599,7 +599,7 @@ fn run_once(
 ) -> (Vec<cardan_dynamics::StepRecord>, cardan_dynamics::Summary) {
     let inertial = Inertial::new(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 1] = [&inertial];
-    let mut budget = LossStage::new(LossBudget::new(friction, m, BORE).unwrap(), m.topology());
+    let mut budget = LossStage::new(LossBudget::new(friction, m, BORE).unwrap());
     let mut summary = SummarySink::new(m, &["inertial"], steps + 1).with_stages(&[&budget]);
     let mut records = Steps::default();
     let mut grid = Grid::new(motion, PI / 2.0, 4.5 * PI, steps);

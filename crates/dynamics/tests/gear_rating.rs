@@ -45,7 +45,9 @@ fn rate(spec: &GearSpec, w: f64, force: C) -> (MeshRating, C) {
     let mut ratings = GearRatings::new(spec, m.as_ref(), None).unwrap();
     assert_eq!(ratings.names(), ["gear_mesh"]);
     let mut out = [MeshRating::default()];
-    ratings.evaluate(&state, &loads, None, &mut out).unwrap();
+    ratings
+        .evaluate(m.topology(), &state, &loads, None, &mut out)
+        .unwrap();
     (out[0], loads.joints[mesh].force)
 }
 

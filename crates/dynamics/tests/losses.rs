@@ -74,7 +74,7 @@ fn cardan_gear_components_are_their_models_at_their_joints() {
     );
     let mut out = vec![f64::NAN; budget.names().len()];
     budget
-        .evaluate(&state, &loads, None, &[], &mut out)
+        .at_state(m.topology(), (&state, &loads), None, &mut out)
         .unwrap();
     let close = |what: &str, got: f64, want: f64| {
         assert!(
@@ -124,7 +124,7 @@ fn cardan_gear_components_are_their_models_at_their_joints() {
         friction.gear_mesh = cardan_dynamics::loss_models::find(Attachment::GearMesh, word);
         let mut budget = LossBudget::new(&friction, m.as_ref(), 0.12).unwrap();
         budget
-            .evaluate(&state, &loads, None, &[], &mut out)
+            .at_state(m.topology(), (&state, &loads), None, &mut out)
             .unwrap();
         let speeds = MeshSpeeds {
             pinion_absolute: -w,
@@ -148,7 +148,7 @@ fn the_skirt_carries_coulomb_friction_on_the_side_force() {
     let mut budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
     let mut out = vec![0.0; budget.names().len()];
     budget
-        .evaluate(&state, &loads, None, &[], &mut out)
+        .at_state(m.topology(), (&state, &loads), None, &mut out)
         .unwrap();
     let v = state.pistons[0].velocity.abs();
     assert!(v > 1.0);
@@ -185,7 +185,7 @@ fn losses_keep_the_energy_books() {
     let gas_family = Gas(Solver::ClosedForm);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
     let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
-    let mut budget = LossStage::new(budget, m.topology());
+    let mut budget = LossStage::new(budget);
     let mut summary =
         SummarySink::new(m.as_ref(), &["inertial", "gas"], 7201).with_stages(&[&budget]);
     let mut torque = FrictionTorque::default();
@@ -258,7 +258,7 @@ fn catalogue_values_override_the_declared_bearings() {
     let mut budget = LossBudget::new(&friction, m.as_ref(), 0.12).unwrap();
     let mut out = vec![0.0; budget.names().len()];
     budget
-        .evaluate(&state, &loads, None, &[], &mut out)
+        .at_state(m.topology(), (&state, &loads), None, &mut out)
         .unwrap();
     let want = karhula_torque(5000.0, 80e3, 0.05, 2.0 * w) * 2.0 * w;
     let got = loss(&budget, &out, "crank_pin");

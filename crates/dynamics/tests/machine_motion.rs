@@ -496,7 +496,9 @@ fn friction_torque(m: &dyn Mechanism, budget: &mut LossBudget, c: &CrankState) -
     assert!(m.closed_form_loads(&s, false, &[f], &mut gas));
     total.add(&gas);
     let mut out = vec![0.0; budget.names().len()];
-    budget.evaluate(&s, &total, Some(p), &[], &mut out).unwrap();
+    budget
+        .at_state(m.topology(), (&s, &total), Some(p), &mut out)
+        .unwrap();
     out.iter().sum::<f64>() / c.speed
 }
 

@@ -26,7 +26,7 @@ fn summary(
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
     let budget = LossBudget::new(&Friction::karhula(), m, 0.12).unwrap();
     assert!(!budget.carries_history());
-    let mut budget = LossStage::new(budget, m.topology());
+    let mut budget = LossStage::new(budget);
     let mut gears = GearRatings::new(&GearSpec::default(), m, None)
         .ok()
         .filter(|g| !g.names().is_empty())

@@ -1,5 +1,5 @@
 //! The losses of a mechanism's run, apart from the step loop that evaluates them: what a loss
-//! model is ([`Loss`], the state and loads it is evaluated at, [`LossInput`]; what it is bound
+//! model is ([`Loss`], the columns of a block it is evaluated on, [`LossLanes`]; what it is bound
 //! with, [`BindInput`]), the registry of loss models ([`LOSS_MODELS`]) and their bound forms
 //! ([`losses::models`], on the physics of `cardan-friction` and `cardan-gears`), the budget
 //! that binds them to a mechanism's pistons and joints ([`LossBudget`], from the case's
@@ -23,7 +23,7 @@ pub use engine_losses::{
     ValveTrainLoss,
 };
 pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
-pub use loss::{BindInput, Loss, LossInput, Oil, Parameters};
+pub use loss::{BindInput, LaneFailure, Loss, LossLanes, Oil, Parameters};
 pub use loss_models::{Attachment, Bind, LossModel, LOSS_MODELS};
 pub use losses::{BearingSize, Friction, LossBudget};
 pub use machine_kind::MachineKind;

@@ -1,5 +1,5 @@
 //! What a loss model is, below every module that binds or registers one: the trait of a bound
-//! model ([`Loss`]), what it reads at a step ([`LossInput`]), what it is bound with ([`BindInput`]:
+//! model ([`Loss`]), what it reads over a block's lanes ([`LossLanes`]), what it is bound with ([`BindInput`]:
 //! where it attaches and what a registry entry's `bind` reads), the oil and the parameters of `[friction]` ([`Parameters`],
 //! each default once, next to its source). The models are in [`crate::losses::models`], the
 //! registry in [`crate::loss_models`], the budget that binds them in [`crate::losses`].
@@ -8,7 +8,8 @@ use crate::engine_losses::FollowerContact;
 use crate::mesh::GearSpec;
 use crate::SetupError;
 use cardan_friction::{KARHULA_LOAD_CONSTANT, KARHULA_RING_MU, KARHULA_SKIRT_MU};
-use cardan_mechanism::{Bearings, Loads, Mechanism, State};
+use cardan_mechanism::{Bearings, Column, LoadsBlock, Mechanism, StateBlock};
+use std::ops::Range;
 
 /// The lubricant of every lubricated contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -111,25 +112,50 @@ pub fn failed(field: &str, e: &dyn std::fmt::Display) -> SetupError {
     }
 }
 
-/// What a loss model reads at a step.
-#[derive(Debug, Clone, Copy)]
-pub struct LossInput<'a> {
-    /// The step's state (crank, pistons, joints).
-    pub state: &'a State,
+/// What a loss model reads over the lanes of a block of steps: the block's columns (a single
+/// step is a block of one lane, [`LossLanes::lanes`] `0..1`).
+#[derive(Debug, Clone)]
+pub struct LossLanes<'a> {
+    /// The lanes to evaluate, in order (the block's first lanes).
+    pub lanes: Range<usize>,
+    /// The steps' states (crank, bodies, joints, pistons).
+    pub states: &'a StateBlock,
     /// The total (lossless) loads.
-    pub total: &'a Loads,
-    /// Absolute cylinder pressure, Pa, if a gas model runs.
-    pub pressure: Option<f64>,
-    /// The loss (W) of each gear-mesh joint a `GearRatings` (`cardan-dynamics`) has rated at this step.
-    pub rated_meshes: &'a [(usize, f64)],
+    pub total: &'a LoadsBlock,
+    /// Absolute cylinder pressure at each lane, Pa, if a gas model runs.
+    pub pressure: Option<&'a Column>,
+    /// The loss (W) at each lane of each gear-mesh joint a `GearRatings` (`cardan-dynamics`)
+    /// has rated, by joint index: taken as it is instead of being computed again.
+    pub rated_meshes: &'a [(usize, Column)],
 }
 
-/// A loss model bound to its piston, joint or crank: its power loss step by step. A model is a
-/// type of [`crate::losses::models`] (or of its own module) implementing this and deriving
-/// `Clone`.
+impl<'a> LossLanes<'a> {
+    /// Lane 0 of `states` and `total` alone: a single step, without gas or rated meshes.
+    pub fn one(states: &'a StateBlock, total: &'a LoadsBlock) -> Self {
+        Self {
+            lanes: 0..1,
+            states,
+            total,
+            pressure: None,
+            rated_meshes: &[],
+        }
+    }
+}
+
+/// A loss model that cannot be evaluated at a lane: the lane and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LaneFailure {
+    pub lane: usize,
+    pub why: String,
+}
+
+/// A loss model bound to its piston, joint or crank: its power loss over the lanes of a block.
+/// A model is a type of [`crate::losses::models`] (or of its own module) implementing this and
+/// deriving `Clone`.
 pub trait Loss: LossClone + std::fmt::Debug + Send + Sync {
-    /// The power loss at the step, W; `Err`: why it cannot be computed.
-    fn power(&mut self, at: &LossInput) -> Result<f64, String>;
+    /// The power loss at each lane of `at.lanes`, W, into the same lanes of `out`; `Err`: the
+    /// first lane it cannot be computed at, and why (the lanes from there on are left unset).
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure>;
 
     /// Whether a step's loss depends on the steps before it (then the steps are taken in
     /// order, by one thread).

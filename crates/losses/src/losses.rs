@@ -20,13 +20,15 @@
 pub mod models;
 
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
-use crate::loss::{failed, BindInput, Loss, LossInput, Oil, Parameters};
+use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil, Parameters};
 use crate::loss_models::{default_model, Attachment, LossModel};
 use crate::mesh::GearSpec;
 use crate::MachineKind;
 use crate::SetupError;
 use cardan_friction::KARHULA_SKIRT_MU;
-use cardan_mechanism::{Bearings, JointKind, Loads, Mechanism, State};
+use cardan_mechanism::{
+    Bearings, Column, JointKind, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, LANES,
+};
 
 /// Catalogue values of a joint's bearings; `None` keeps the declared value.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -250,27 +252,116 @@ impl LossBudget {
         self.parts.iter().any(|p| p.carries_history())
     }
 
-    /// The power loss of each component at `state` under the `total` loads, W, into `out`
-    /// (one per name). `pressure` is the absolute cylinder pressure, Pa, if a gas model runs;
-    /// `rated_meshes` the loss (W) of each gear-mesh joint a `GearRatings` (`cardan-dynamics`) has rated
-    /// at this step, taken as it is instead of being computed again.
-    pub fn evaluate(
+    /// The power loss of each component at one step, W, into `out` (one per name): `state` of
+    /// a mechanism of `topology` under the `total` loads, with the absolute cylinder pressure
+    /// `pressure` (Pa) if a gas model runs. The budget at a block of one lane
+    /// ([`LossBudget::evaluate`]).
+    pub fn at_state(
         &mut self,
-        state: &State,
-        total: &Loads,
+        topology: &Topology,
+        (state, total): (&State, &Loads),
         pressure: Option<f64>,
-        rated_meshes: &[(usize, f64)],
         out: &mut [f64],
     ) -> Result<(), String> {
-        let at = LossInput {
-            state,
-            total,
-            pressure,
-            rated_meshes,
+        let mut states = StateBlock::for_topology(topology);
+        let mut totals = LoadsBlock::for_topology(topology);
+        states.scatter(0, state);
+        totals.scatter(0, total);
+        let pressure = pressure.map(|p| [p; LANES]);
+        let at = LossLanes {
+            pressure: pressure.as_ref(),
+            ..LossLanes::one(&states, &totals)
         };
-        for (part, out) in self.parts.iter_mut().zip(out.iter_mut()) {
-            *out = part.power(&at)?;
+        let mut columns = vec![[0.0; LANES]; out.len()];
+        self.evaluate(&at, &mut columns).map_err(|f| f.why)?;
+        for (out, c) in out.iter_mut().zip(&columns) {
+            *out = c[0];
         }
         Ok(())
+    }
+
+    /// The power loss of each component at the lanes `at.lanes`, W, into the same lanes of
+    /// `out` (a column per name); `Err`: the first lane a component cannot be computed at and
+    /// why (the first component's failure where several fail there), as if the lanes were
+    /// taken one at a time: every lane before it is complete.
+    pub fn evaluate(&mut self, at: &LossLanes, out: &mut [Column]) -> Result<(), LaneFailure> {
+        let mut first: Option<LaneFailure> = None;
+        for (part, out) in self.parts.iter_mut().zip(out.iter_mut()) {
+            if let Err(f) = part.power(at, out) {
+                if first.as_ref().is_none_or(|e| f.lane < e.lane) {
+                    first = Some(f);
+                }
+            }
+        }
+        first.map_or(Ok(()), Err)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A model giving its lane's index as its loss, failing at `fails` (if set).
+    #[derive(Debug, Clone)]
+    struct FailsAt(Option<usize>, &'static str);
+
+    impl Loss for FailsAt {
+        fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+            for i in at.lanes.clone() {
+                if Some(i) == self.0 {
+                    let why = self.1.to_string();
+                    return Err(LaneFailure { lane: i, why });
+                }
+                out[i] = i as f64;
+            }
+            Ok(())
+        }
+    }
+
+    fn budget(parts: &[FailsAt]) -> LossBudget {
+        LossBudget {
+            names: (0..parts.len()).map(|k| k.to_string()).collect(),
+            parts: parts.iter().map(|p| Box::new(p.clone()) as Box<dyn Loss>).collect(),
+            kind: MachineKind::Pump,
+        }
+    }
+
+    /// The budget over a block fails where taking its lanes one at a time would: at the first
+    /// lane any component fails at, naming the first component failing there.
+    #[test]
+    fn a_block_fails_at_its_first_failing_lane_and_component() {
+        let t = cardan_mechanism::Topology {
+            bodies: Vec::new(),
+            joints: Vec::new(),
+            pistons: Vec::new(),
+            crankshaft: 0,
+            extras: Vec::new(),
+        };
+        let (states, total) = (StateBlock::for_topology(&t), LoadsBlock::for_topology(&t));
+        let at = LossLanes {
+            lanes: 0..LANES,
+            ..LossLanes::one(&states, &total)
+        };
+        let cases: [(&[FailsAt], Option<(usize, &str)>); 4] = [
+            (&[FailsAt(None, "a"), FailsAt(None, "b")], None),
+            (&[FailsAt(Some(20), "a"), FailsAt(Some(9), "b")], Some((9, "b"))),
+            (&[FailsAt(Some(9), "a"), FailsAt(Some(20), "b")], Some((9, "a"))),
+            (&[FailsAt(Some(9), "a"), FailsAt(Some(9), "b")], Some((9, "a"))),
+        ];
+        for (parts, want) in cases {
+            let mut out = vec![[f64::NAN; LANES]; parts.len()];
+            let got = budget(parts).evaluate(&at, &mut out);
+            let complete = match (got, want) {
+                (Ok(()), None) => LANES,
+                (Err(f), Some((lane, why))) => {
+                    assert_eq!((f.lane, f.why.as_str()), (lane, why));
+                    lane
+                }
+                (got, want) => panic!("{got:?}, want {want:?}"),
+            };
+            for c in &out {
+                assert!((0..complete).all(|i| c[i] == i as f64));
+            }
+        }
     }
 }

@@ -7,7 +7,7 @@ use crate::SetupError;
 use cardan_gears::geometry::{GearPair, PairSpec};
 pub use cardan_gears::materials::IsoQuality;
 use cardan_gears::mesh_loss::MeshSpeeds;
-use cardan_mechanism::{JointMotion, State, C};
+use cardan_mechanism::{JointMotion, C};
 
 /// The component of a mesh force along the pitch-circle tangent t = i·d (d: from the pitch
 /// point towards the centre of the mesh's first gear): the tooth load that transmits torque
@@ -227,13 +227,12 @@ pub fn mesh_pair(
     Ok((pair, face_width))
 }
 
-/// The speeds of a mesh joint `joint` whose pinion is on `body` with pitch radius
-/// `pitch_radius` (m): the pinion's absolute angular speed, and the carrier's from the joint's
-/// relative speed, which is the pitch-line speed relative to the carrier.
-pub fn mesh_speeds(state: &State, joint: usize, body: usize, pitch_radius: f64) -> MeshSpeeds {
-    let pinion = state.bodies[body].angular_velocity;
+/// The speeds of a mesh whose pinion turns at `pinion` (rad/s, absolute) with pitch radius
+/// `pitch_radius` (m): the pinion's absolute angular speed, and the carrier's from the mesh
+/// joint's `relative_speed` (m/s), which is the pitch-line speed relative to the carrier.
+pub fn mesh_speeds(pinion: f64, relative_speed: f64, pitch_radius: f64) -> MeshSpeeds {
     MeshSpeeds {
         pinion_absolute: pinion,
-        carrier: pinion - state.joints[joint].relative_speed / pitch_radius,
+        carrier: pinion - relative_speed / pitch_radius,
     }
 }

@@ -73,12 +73,6 @@ impl PassedOn {
         self.mesh_losses.clear();
         self.loss_power = None;
     }
-
-    /// The rated meshes' losses at lane `i` into `out`, by joint index.
-    pub fn mesh_losses_at(&self, i: usize, out: &mut Vec<(usize, f64)>) {
-        out.clear();
-        out.extend(self.mesh_losses.iter().map(|(j, c)| (*j, c[i])));
-    }
 }
 
 /// Why a stage stops the run at a step.

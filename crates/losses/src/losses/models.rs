@@ -1,5 +1,5 @@
-//! The loss models bound to a mechanism: one type per model, each its power loss at a step
-//! ([`Loss`]) from the joint's total load and relative speed, the pistons' speeds or the
+//! The loss models bound to a mechanism: one type per model, each its power loss over a block's
+//! lanes ([`Loss`], read from the block's columns) from the joint's total load and relative speed, the pistons' speeds or the
 //! crank's, and the functions that bind it from its [`BindInput`] (the registry's entries,
 //! [`crate::loss_models::LOSS_MODELS`], call them); [`crate::LossBudget`] binds them by joint
 //! kind.
@@ -7,7 +7,7 @@
 use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::loss::{failed, BindInput, Loss, LossInput};
+use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes};
 use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::SetupError;
 use cardan_friction::{
@@ -16,7 +16,7 @@ use cardan_friction::{
     RollingReading, ViscousSkirt,
 };
 use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, PreparedMeshLoss, Reading};
-use cardan_mechanism::{Bearings, JointKind};
+use cardan_mechanism::{Bearings, Column, JointKind};
 
 /// What a bound model is: its [`Loss`], or why it cannot be set up.
 pub type BoundLoss = Result<Box<dyn Loss>, SetupError>;
@@ -171,14 +171,12 @@ pub struct RingPack {
 }
 
 impl Loss for RingPack {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        let force = self.force;
-        Ok(at
-            .state
-            .pistons
-            .iter()
-            .map(|p| force * p.velocity.abs())
-            .sum())
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        let (force, pistons) = (self.force, &at.states.pistons);
+        for i in at.lanes.clone() {
+            out[i] = pistons.iter().map(|p| force * p.velocity[i].abs()).sum();
+        }
+        Ok(())
     }
 }
 
@@ -198,29 +196,35 @@ pub struct RingFilms {
 }
 
 impl Loss for RingFilms {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        let now = at.state.crank.time;
-        let dt = self.time.map(|t0| now - t0).filter(|dt| *dt > 0.0);
-        self.time = Some(now);
-        let gauge = at.pressure.map_or(0.0, |p| (p - AMBIENT_PRESSURE).max(0.0));
-        let mut power = 0.0;
-        let per_piston = self.rings.len();
-        for (k, p) in at.state.pistons.iter().enumerate() {
-            for (r, (film, elastic, top)) in self.rings.iter().enumerate() {
-                let load = RingLoad {
-                    elastic_pressure: *elastic,
-                    gas_pressure_behind: if *top { gauge } else { 0.0 },
-                };
-                let h = &mut self.films[k * per_piston + r];
-                let s = match (*h, dt) {
-                    (Some(h0), Some(dt)) => film.step(h0, dt, self.viscosity, p.velocity, load),
-                    _ => film.quasi_steady(self.viscosity, p.velocity, load),
-                };
-                *h = Some(s.min_film_thickness);
-                power += s.loss.power;
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        for i in at.lanes.clone() {
+            let now = at.states.crank.time[i];
+            let dt = self.time.map(|t0| now - t0).filter(|dt| *dt > 0.0);
+            self.time = Some(now);
+            let gauge = at
+                .pressure
+                .map_or(0.0, |p| (p[i] - AMBIENT_PRESSURE).max(0.0));
+            let mut power = 0.0;
+            let per_piston = self.rings.len();
+            for (k, p) in at.states.pistons.iter().enumerate() {
+                let velocity = p.velocity[i];
+                for (r, (film, elastic, top)) in self.rings.iter().enumerate() {
+                    let load = RingLoad {
+                        elastic_pressure: *elastic,
+                        gas_pressure_behind: if *top { gauge } else { 0.0 },
+                    };
+                    let h = &mut self.films[k * per_piston + r];
+                    let s = match (*h, dt) {
+                        (Some(h0), Some(dt)) => film.step(h0, dt, self.viscosity, velocity, load),
+                        _ => film.quasi_steady(self.viscosity, velocity, load),
+                    };
+                    *h = Some(s.min_film_thickness);
+                    power += s.loss.power;
+                }
             }
+            out[i] = power;
         }
-        Ok(power)
+        Ok(())
     }
 
     fn carries_history(&self) -> bool {
@@ -244,14 +248,14 @@ pub fn coulomb(joint: usize, friction_coefficient: f64) -> Box<dyn Loss> {
 }
 
 impl Loss for Coulomb {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        let (load, state) = (&at.total.joints[self.joint], &at.state.joints[self.joint]);
-        let loss = coulomb_sliding(
-            self.friction_coefficient,
-            load.force.norm(),
-            state.relative_speed,
-        );
-        Ok(loss.power)
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        let (load, motion) = (&at.total.joints[self.joint], &at.states.joints[self.joint]);
+        for i in at.lanes.clone() {
+            let force = load.fx[i].hypot(load.fy[i]);
+            let speed = motion.relative_speed[i];
+            out[i] = coulomb_sliding(self.friction_coefficient, force, speed).power;
+        }
+        Ok(())
     }
 }
 
@@ -265,9 +269,12 @@ pub struct ViscousSkirtLoss {
 }
 
 impl Loss for ViscousSkirtLoss {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        let speed = at.state.joints[self.joint].relative_speed;
-        Ok(viscous_skirt(&self.skirt, self.viscosity, speed).power)
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        let speed = &at.states.joints[self.joint].relative_speed;
+        for i in at.lanes.clone() {
+            out[i] = viscous_skirt(&self.skirt, self.viscosity, speed[i]).power;
+        }
+        Ok(())
     }
 }
 
@@ -287,13 +294,17 @@ pub struct Rolling {
 }
 
 impl Loss for Rolling {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        let share = at.total.joints[self.joint].force.norm() / self.count;
-        let w = at.state.joints[self.joint].relative_speed;
-        let loss = self
-            .model
-            .loss_kept(share, w, self.viscosity, &mut self.kept);
-        Ok(self.count * loss.power)
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        let (load, motion) = (&at.total.joints[self.joint], &at.states.joints[self.joint]);
+        for i in at.lanes.clone() {
+            let share = load.fx[i].hypot(load.fy[i]) / self.count;
+            let w = motion.relative_speed[i];
+            let loss = self
+                .model
+                .loss_kept(share, w, self.viscosity, &mut self.kept);
+            out[i] = self.count * loss.power;
+        }
+        Ok(())
     }
 }
 
@@ -311,17 +322,21 @@ pub struct Journal {
 }
 
 impl Loss for Journal {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        let share = at.total.joints[self.joint].force.norm() / self.count;
-        let w = at.state.joints[self.joint].relative_speed;
-        let one = if self.short {
-            short_bearing(&self.bearing, self.viscosity, share, w, w)
-                .loss
-                .power
-        } else {
-            petroff(&self.bearing, self.viscosity, w, share).0.power
-        };
-        Ok(self.count * one)
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        let (load, motion) = (&at.total.joints[self.joint], &at.states.joints[self.joint]);
+        for i in at.lanes.clone() {
+            let share = load.fx[i].hypot(load.fy[i]) / self.count;
+            let w = motion.relative_speed[i];
+            let one = if self.short {
+                short_bearing(&self.bearing, self.viscosity, share, w, w)
+                    .loss
+                    .power
+            } else {
+                petroff(&self.bearing, self.viscosity, w, share).0.power
+            };
+            out[i] = self.count * one;
+        }
+        Ok(())
     }
 }
 
@@ -342,32 +357,38 @@ pub struct Mesh {
 }
 
 impl Loss for Mesh {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        if let Some(&(_, loss)) = at.rated_meshes.iter().find(|(j, _)| *j == self.joint) {
-            return Ok(loss);
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        if let Some((_, rated)) = at.rated_meshes.iter().find(|(j, _)| *j == self.joint) {
+            out[at.lanes.clone()].copy_from_slice(&rated[at.lanes.clone()]);
+            return Ok(());
         }
-        let (state, joint) = (at.state, self.joint);
-        let ft = tangential(at.total.joints[joint].force, &state.joints[joint]);
-        let speeds = mesh_speeds(state, joint, self.body, self.pitch_radius);
-        let sets = self.sets;
-        let loss = self
-            .loss
-            .loss(&speeds, ft / sets)
-            .map_err(|e| format!("gear mesh loss: {e}"))?;
-        Ok(sets * loss.total_power)
+        let (joint, sets) = (self.joint, self.sets);
+        let (load, motion) = (&at.total.joints[joint], &at.states.joints[joint]);
+        for i in at.lanes.clone() {
+            let ft = tangential(load.at(i).force, &motion.at(i));
+            let pinion = at.states.bodies[self.body].angular_velocity[i];
+            let speeds = mesh_speeds(pinion, motion.relative_speed[i], self.pitch_radius);
+            let loss = self
+                .loss
+                .loss(&speeds, ft / sets)
+                .map_err(|e| LaneFailure {
+                    lane: i,
+                    why: format!("gear mesh loss: {e}"),
+                })?;
+            out[i] = sets * loss.total_power;
+        }
+        Ok(())
     }
 }
 
 /// The cylinder's valve train at the step's crank angle, speed and acceleration.
 impl Loss for ValveTrainLoss {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        let c = &at.state.crank;
-        Ok(ValveTrainLoss::power(
-            self,
-            c.angle,
-            c.speed,
-            c.acceleration,
-        ))
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        let c = &at.states.crank;
+        for i in at.lanes.clone() {
+            out[i] = ValveTrainLoss::power(self, c.angle[i], c.speed[i], c.acceleration[i]);
+        }
+        Ok(())
     }
 }
 
@@ -379,8 +400,11 @@ pub struct Accessories {
 }
 
 impl Loss for Accessories {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        Ok(accessories_power(self.displacement, at.state.crank.speed))
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        for i in at.lanes.clone() {
+            out[i] = accessories_power(self.displacement, at.states.crank.speed[i]);
+        }
+        Ok(())
     }
 }
 
@@ -393,11 +417,10 @@ pub struct Pumping {
 }
 
 impl Loss for Pumping {
-    fn power(&mut self, at: &LossInput) -> Result<f64, String> {
-        Ok(pumping_power(
-            &self.engine,
-            self.displacement,
-            at.state.crank.speed,
-        ))
+    fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
+        for i in at.lanes.clone() {
+            out[i] = pumping_power(&self.engine, self.displacement, at.states.crank.speed[i]);
+        }
+        Ok(())
     }
 }
