@@ -32,8 +32,8 @@
 
 use crate::counterweight::Rotor;
 use crate::harmonics::{factors, orders_on, revolution, Order};
-use crate::shaking::{shaking, Shaking};
-use cardan_mechanism::{CrankState, Mechanism, C};
+use crate::shaking::{shaking, shaking_lane, Shaking};
+use cardan_mechanism::{CrankState, Mechanism, StateBlock, C, LANES};
 use std::f64::consts::TAU;
 
 /// One cylinder's place on the crankshaft (module note).
@@ -274,14 +274,19 @@ impl Layout {
         max_order: usize,
     ) -> MachineOrders {
         let cranks = revolution(0.0, speed, steps);
-        // Each cylinder's states over the revolution, made a block at a time.
+        // Each cylinder's shaking over the revolution from its states' columns, filled a block
+        // at a time into one block.
+        let t = mechanism.topology();
+        let mut block = StateBlock::for_topology(t);
         let per_cylinder: Vec<Vec<Shaking>> = (0..self.cylinders.len())
             .map(|i| {
                 let own: Vec<CrankState> =
                     cranks.iter().map(|c| self.cylinder_crank(i, c)).collect();
-                let t = mechanism.topology();
                 let mut out = Vec::with_capacity(own.len());
-                mechanism.each_state(&own, &mut |s| out.push(shaking(t, s)));
+                for chunk in own.chunks(LANES) {
+                    block.fill(mechanism, chunk);
+                    out.extend((0..chunk.len()).map(|k| shaking_lane(t, &block, k)));
+                }
                 out
             })
             .collect();
