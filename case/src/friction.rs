@@ -2,8 +2,9 @@
 //! [`FrictionTable`] (units, signs and words checked by the schema) and built into a
 //! [`Friction`] by [`build`]. Without `[friction]` a case has no losses; an empty `[friction]`
 //! table is Karhula's (2008) App. 9.1 set ([`Friction::karhula`]). The models' words come from
-//! the registry [`cardan_dynamics::LOSS_MODELS`], their defaults from
-//! [`cardan_dynamics::Parameters::default`]. An engine's `[friction]` also reads the engine
+//! the registry [`cardan_dynamics::LOSS_MODELS`], their parameters' defaults from
+//! [`cardan_dynamics::LossParameter::default`]; a parameter no chosen model reads is refused.
+//! An engine's `[friction]` also reads the engine
 //! components (valve train, accessories, pumping; all off by default) and the settings of the
 //! fmep cross-check ([`cardan_dynamics::EngineLosses`]).
 
@@ -18,10 +19,11 @@ use crate::quantity::{
     Ranged,
 };
 use crate::units::{to_si, Dimension};
-use cardan_dynamics::loss_models::{self, words, Attachment, Bind, Parameters, NONE};
+use cardan_dynamics::loss_models::{self, words, Attachment, Bind, NONE};
 use cardan_dynamics::{
     BearingSize, EngineLosses, FmepModel, Friction, GearSpec, LossModel, ValveTrain,
 };
+use cardan_dynamics::{LossParameter, ParameterValues};
 use cardan_mechanism::{JointKind, Mechanism};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Error as _, MapAccess, Visitor};
@@ -31,8 +33,8 @@ use std::marker::PhantomData;
 use std::sync::Arc;
 
 /// The `[friction]` table: each model's word and parameters, the oil, per-joint bearings, and
-/// an engine's components. Every field is optional; its default is the model's
-/// ([`Parameters::default`]).
+/// an engine's components. Every field is optional; a parameter's default is the model's
+/// ([`cardan_dynamics::LossParameter::default`]).
 #[derive(Debug, Clone, Default, Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionTable {
@@ -344,13 +346,11 @@ pub fn build(
     gas: Option<&GasCase>,
     invalid: &Invalid,
 ) -> Result<Friction, CaseError> {
-    let p = parameters(table);
     // A model written (`Some(None)`: "none"), else the attachment's default.
     let model = |written: Option<Option<&'static LossModel>>, attachment| {
         written.unwrap_or_else(|| loss_models::default_model(attachment))
     };
     let mut f = Friction::karhula();
-    f.parameters = p;
     if let Some(q) = &table.oil_viscosity {
         f.oil.kinematic_viscosity = q.si;
     }
@@ -380,64 +380,122 @@ pub fn build(
             }
         }
     }
-    f.engine = match machine {
-        Machine::Engine => Some(engine(table, &p, gas, invalid)?),
-        Machine::Pump => {
-            if let Some((field, written)) = engine_fields(table).into_iter().next() {
-                return Err(invalid(
-                    &format!("friction.{field}"),
-                    &written,
-                    "only an engine has a valve train, accessories and pumping losses (and an fmep): this case has machine = \"pump\"",
-                ));
-            }
-            None
-        }
-    };
     f.gear_mesh = model(table.gear_mesh.map(|m| m.model), Attachment::GearMesh);
+    if machine == Machine::Pump {
+        if let Some((field, written)) = engine_fields(table).into_iter().next() {
+            return Err(invalid(
+                &format!("friction.{field}"),
+                &written,
+                "only an engine has a valve train, accessories and pumping losses (and an fmep): this case has machine = \"pump\"",
+            ));
+        }
+    }
+    let joints = f.joint_bearings.iter().map(|(_, m)| *m);
+    let train = table.valve_train.and_then(|m| m.model);
+    let chosen: Vec<&'static LossModel> = [f.rings, f.skirt, f.bearings, f.gear_mesh, train]
+        .into_iter()
+        .chain(joints)
+        .flatten()
+        .collect();
+    f.parameters = parameters(table, &chosen, invalid)?;
+    f.engine = match machine {
+        Machine::Engine => Some(engine(table, &f.parameters, gas, invalid)?),
+        Machine::Pump => None,
+    };
     f.pair = gear.copied().unwrap_or_default();
     Ok(f)
 }
 
-/// A quantity's value in SI, else `default`.
-fn si_or<D, const RULE: u8>(q: &Option<Quantity<D, RULE>>, default: f64) -> f64 {
-    q.as_ref().map_or(default, |q| q.si)
-}
+/// A value of `[friction]` where the table sets it: SI, and as written.
+type Set<'a> = Option<(f64, &'a str)>;
 
-fn ranged_or<R, D>(q: &Option<Ranged<R, D>>, default: f64) -> f64 {
-    q.as_ref().map_or(default, |q| q.si)
-}
-
-/// The models' parameters: the table's, else the defaults.
-fn parameters(t: &FrictionTable) -> Parameters {
-    let d = Parameters::default();
-    Parameters {
-        ring_friction_coefficient: ranged_or(
-            &t.ring_friction_coefficient,
-            d.ring_friction_coefficient,
-        ),
-        ring_crown_height: si_or(&t.ring_crown_height, d.ring_crown_height),
-        skirt_friction_coefficient: ranged_or(
-            &t.skirt_friction_coefficient,
-            d.skirt_friction_coefficient,
-        ),
-        skirt_length: t.skirt_length.as_ref().map(|q| q.si).or(d.skirt_length),
-        skirt_clearance: si_or(&t.skirt_clearance, d.skirt_clearance),
-        lubrication_factor: ranged_or(&t.lubrication_factor, d.lubrication_factor),
-        bearing_load_constant: ranged_or(&t.bearing_load_constant, d.bearing_load_constant),
-        journal_length_ratio: ranged_or(&t.journal_length_ratio, d.journal_length_ratio),
-        journal_clearance_ratio: ranged_or(&t.journal_clearance_ratio, d.journal_clearance_ratio),
-        cam_friction_coefficient: ranged_or(
-            &t.cam_friction_coefficient,
-            d.cam_friction_coefficient,
-        ),
+/// Each loss-model parameter of `[friction]`: its field, and its value where the table sets it.
+fn parameter_fields(t: &FrictionTable) -> Vec<(LossParameter, &'static str, Set<'_>)> {
+    fn set<D, const RULE: u8>(q: &Option<Quantity<D, RULE>>) -> Set<'_> {
+        q.as_ref().map(|q| (q.si, q.written.as_str()))
     }
+    fn ranged<R, D>(q: &Option<Ranged<R, D>>) -> Set<'_> {
+        q.as_ref().map(|q| (q.si, q.written.as_str()))
+    }
+    use LossParameter::*;
+    vec![
+        (
+            RingFrictionCoefficient,
+            "ring_friction_coefficient",
+            ranged(&t.ring_friction_coefficient),
+        ),
+        (
+            RingCrownHeight,
+            "ring_crown_height",
+            set(&t.ring_crown_height),
+        ),
+        (
+            SkirtFrictionCoefficient,
+            "skirt_friction_coefficient",
+            ranged(&t.skirt_friction_coefficient),
+        ),
+        (SkirtLength, "skirt_length", set(&t.skirt_length)),
+        (SkirtClearance, "skirt_clearance", set(&t.skirt_clearance)),
+        (
+            LubricationFactor,
+            "lubrication_factor",
+            ranged(&t.lubrication_factor),
+        ),
+        (
+            BearingLoadConstant,
+            "bearing_load_constant",
+            ranged(&t.bearing_load_constant),
+        ),
+        (
+            JournalLengthRatio,
+            "journal_length_ratio",
+            ranged(&t.journal_length_ratio),
+        ),
+        (
+            JournalClearanceRatio,
+            "journal_clearance_ratio",
+            ranged(&t.journal_clearance_ratio),
+        ),
+        (
+            CamFrictionCoefficient,
+            "cam_friction_coefficient",
+            ranged(&t.cam_friction_coefficient),
+        ),
+    ]
+}
+
+/// The loss-model parameters `[friction]` sets, each refused where no model of the case
+/// (`chosen`) reads it: a value that would change nothing is a mistake (a model word left
+/// out or misremembered).
+fn parameters(
+    t: &FrictionTable,
+    chosen: &[&'static LossModel],
+    invalid: &Invalid,
+) -> Result<ParameterValues, CaseError> {
+    let mut values = ParameterValues::default();
+    for (parameter, field, set) in parameter_fields(t) {
+        let Some((si, written)) = set else { continue };
+        if !chosen.iter().any(|m| m.parameters.contains(&parameter)) {
+            let readers: Vec<String> = (loss_models::LOSS_MODELS.iter())
+                .filter(|m| m.parameters.contains(&parameter))
+                .map(|m| format!("{} = \"{}\"", m.attachment.field(), m.name))
+                .collect();
+            let rule = format!(
+                "is read only with {}: no model of this case reads it (choose that model, or leave the value out)",
+                readers.join(" or ")
+            );
+            return Err(invalid(&format!("friction.{field}"), &written, &rule));
+        }
+        values.set(parameter, si);
+    }
+    Ok(values)
 }
 
 /// The engine components of `[friction]` (every one off by default) and the settings of the
 /// fmep cross-check.
 fn engine(
     t: &FrictionTable,
-    p: &Parameters,
+    p: &ParameterValues,
     gas: Option<&GasCase>,
     invalid: &Invalid,
 ) -> Result<EngineLosses, CaseError> {
@@ -447,32 +505,24 @@ fn engine(
         _ => DEFAULT_COMPRESSION_RATIO,
     };
     let train = t.valve_train.and_then(|m| m.model);
-    // A field that only one valve train reads is an error with any other.
-    let cam = t.cam_friction_coefficient.as_ref().map(|q| &q.written);
+    // The cam's μ is a model parameter (refused where no model reads it, [`parameters`]); the
+    // springs' speed is the valve train's own.
     let spring = t.valve_spring_speed.as_ref();
-    let only = |field: &str, written: Option<&String>, rule: &str| match written {
-        Some(w) => Err(invalid(&format!("friction.{field}"), w, rule)),
-        None => Ok(()),
-    };
     e.valve_train = match train {
         None => {
-            let rule =
-                "is read only with valve_train = \"flat\" or \"roller\" (the valve train is off)";
-            only("cam_friction_coefficient", cam, rule)?;
-            only("valve_spring_speed", spring.map(|q| &q.written), rule)?;
+            if let Some(q) = spring {
+                return Err(invalid(
+                    "friction.valve_spring_speed",
+                    &q.written,
+                    "is read only with valve_train = \"flat\" or \"roller\" (the valve train is off)",
+                ));
+            }
             None
         }
         Some(model) => {
             let Bind::Follower(follower) = model.bind else {
                 unreachable!("a valve-train model gives a follower (the registry's test)")
             };
-            if model.name != "flat" {
-                only(
-                    "cam_friction_coefficient",
-                    cam,
-                    "is read only with valve_train = \"flat\" (a roller follower rolls: its loss is rolling resistance and the roller's pin bearing)",
-                )?;
-            }
             let mut v = ValveTrain::new(follower(p));
             if let Some(q) = spring {
                 v.spring_speed = q.si;
@@ -592,10 +642,10 @@ mod tests {
         );
     }
 
-    #[test]
-    fn an_empty_table_is_karhulas_set() {
-        let t: FrictionTable =
-            crate::schema::read(toml::Value::Table(Default::default()), "friction").unwrap();
+    /// The friction of `[friction]` `text` of a pump or an engine.
+    fn built(text: &str, machine: Machine) -> Result<Friction, CaseError> {
+        let value: toml::Value = toml::from_str(text).unwrap();
+        let t: FrictionTable = crate::schema::read(value, "friction").unwrap();
         let invalid = |field: &str, value: &dyn std::fmt::Display, rule: &str| CaseError::Invalid {
             file: "x.toml".into(),
             case: "x".into(),
@@ -603,8 +653,87 @@ mod tests {
             value: value.to_string(),
             rule: rule.into(),
         };
-        let f = build(&t, None, Machine::Pump, None, &invalid).unwrap();
-        assert_eq!(f, Friction::karhula());
+        build(&t, None, machine, None, &invalid)
+    }
+
+    #[test]
+    fn an_empty_table_is_karhulas_set() {
+        assert_eq!(built("", Machine::Pump).unwrap(), Friction::karhula());
+    }
+
+    /// A model parameter is taken where a model of the case reads it (at any attachment, a
+    /// named joint's too) and refused where none does, naming the models that read it.
+    #[test]
+    fn a_parameter_no_chosen_model_reads_is_refused() {
+        use LossParameter::*;
+        let taken = [
+            (
+                "rings = \"film\"\nring_crown_height = \"8 um\"",
+                RingCrownHeight,
+                8e-6,
+            ),
+            (
+                "ring_friction_coefficient = 0.05",
+                RingFrictionCoefficient,
+                0.05,
+            ),
+            (
+                "skirt = \"viscous\"\nskirt_length = \"70 mm\"",
+                SkirtLength,
+                0.07,
+            ),
+            (
+                "bearings = \"palmgren\"\nlubrication_factor = 3",
+                LubricationFactor,
+                3.0,
+            ),
+            (
+                "journal_length_ratio = 0.8\n[joints]\ncrank_pin = \"petroff\"",
+                JournalLengthRatio,
+                0.8,
+            ),
+        ];
+        for (text, parameter, value) in taken {
+            let f = built(text, Machine::Pump).unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert_eq!(f.parameters.get(parameter), Some(value), "{text}");
+        }
+        let refused = [
+            (
+                "ring_crown_height = \"8 um\"",
+                "ring_crown_height",
+                "rings = \"film\"",
+            ),
+            (
+                "rings = \"none\"\nring_friction_coefficient = 0.05",
+                "ring_friction_coefficient",
+                "rings = \"karhula\"",
+            ),
+            (
+                "skirt_clearance = \"30 um\"",
+                "skirt_clearance",
+                "skirt = \"viscous\"",
+            ),
+            (
+                "bearings = \"skf\"\nlubrication_factor = 3",
+                "lubrication_factor",
+                "bearings = \"karhula\" or bearings = \"palmgren\"",
+            ),
+            (
+                "journal_clearance_ratio = 0.002",
+                "journal_clearance_ratio",
+                "bearings = \"petroff\" or bearings = \"short_bearing\"",
+            ),
+            (
+                "valve_train = \"roller\"\ncam_friction_coefficient = 0.1",
+                "cam_friction_coefficient",
+                "valve_train = \"flat\"",
+            ),
+        ];
+        for (text, field, readers) in refused {
+            let e = built(text, Machine::Engine).unwrap_err().to_string();
+            assert!(e.contains(&format!("friction.{field}")), "{e}");
+            assert!(e.contains(&format!("is read only with {readers}:")), "{e}");
+        }
     }
 
     #[test]

@@ -558,6 +558,7 @@ fn mesh_loss(
         .expect("the registry has the corrected mesh loss");
     let site = BindInput {
         parameters: &f.parameters,
+        declared: &[],
         oil: &f.oil,
         pair: spec,
         mechanism,

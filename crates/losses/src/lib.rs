@@ -23,7 +23,7 @@ pub use engine_losses::{
     ValveTrainLoss,
 };
 pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
-pub use loss::{BindInput, LaneFailure, Loss, LossLanes, Oil, Parameters};
+pub use loss::{BindInput, LaneFailure, Loss, LossLanes, LossParameter, Oil, ParameterValues};
 pub use loss_models::{Attachment, Bind, LossModel, LOSS_MODELS};
 pub use losses::{BearingSize, Friction, LossBudget};
 pub use machine_kind::MachineKind;

@@ -1,7 +1,8 @@
 //! What a loss model is, below every module that binds or registers one: the trait of a bound
 //! model ([`Loss`]), what it reads over a block's lanes ([`LossLanes`]), what it is bound with ([`BindInput`]:
-//! where it attaches and what a registry entry's `bind` reads), the oil and the parameters of `[friction]` ([`Parameters`],
-//! each default once, next to its source). The models are in [`crate::losses::models`], the
+//! where it attaches and what a registry entry's `bind` reads), the oil and the models'
+//! parameters ([`LossParameter`], each default once, next to its source; the values a case
+//! sets, [`ParameterValues`]). The models are in [`crate::losses::models`], the
 //! registry in [`crate::loss_models`], the budget that binds them in [`crate::losses`].
 
 use crate::engine_losses::FollowerContact;
@@ -27,57 +28,103 @@ impl Oil {
     }
 }
 
-/// The parameters of the loss models, SI: what `[friction]` may set besides the models' words
-/// and the oil. [`Parameters::default`] holds every default, with its source.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Parameters {
-    /// μ_ring of Karhula's ring pack (A9.1.4; Andersson et al. 2002: 0.07).
-    pub ring_friction_coefficient: f64,
-    /// Crown height of the film model's barrel ring faces, m (5 µm: this project's choice, the
-    /// order of the h_s of the Thai thesis's ring example, `docs/validation/thai-thesis.md`).
-    pub ring_crown_height: f64,
-    /// μ_skirt of Karhula's Coulomb skirt (A9.1.5; Andersson et al. 2002: 0.09).
-    pub skirt_friction_coefficient: f64,
-    /// Skirt length of the viscous skirt, m; `None`: 0.6 × bore (the Thai thesis's example
-    /// proportions).
-    pub skirt_length: Option<f64>,
-    /// Radial skirt-to-liner clearance of the viscous skirt, m (20 µm, the Thai thesis's
-    /// example).
-    pub skirt_clearance: f64,
-    /// Lubrication factor f0 of the Karhula and Palmgren bearings (Karhula App. 9.1: 2).
-    pub lubrication_factor: f64,
-    /// Constant of Karhula's bearing load term ([`KARHULA_LOAD_CONSTANT`]: 0.0009, which
-    /// reproduces the thesis's tables; the print's 0.009 is `KARHULA_LOAD_CONSTANT_PRINTED`).
-    pub bearing_load_constant: f64,
-    /// Length over diameter L/D of a plain journal bearing (0.5: this project's choice, a
-    /// short bearing, one of the ratios tabulated in `docs/validation/journal-bearings.md`).
-    pub journal_length_ratio: f64,
-    /// Radial clearance over journal radius c/R of a plain journal bearing (0.001: this
-    /// project's choice, the usual design ratio).
-    pub journal_clearance_ratio: f64,
-    /// μ at a flat follower's cam contact ([`FollowerContact::FLAT`]: 0.08).
-    pub cam_friction_coefficient: f64,
+/// A parameter of a loss model, by what it is. Each model declares those it reads
+/// ([`crate::LossModel::parameters`]; several models may read one, as both rolling readings of
+/// f0) and is bound with their values ([`BindInput::parameter`]): a value the case sets, else
+/// the parameter's default ([`LossParameter::default`], with its source).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LossParameter {
+    /// μ_ring of Karhula's ring pack.
+    RingFrictionCoefficient,
+    /// Crown height of the film model's barrel ring faces, m.
+    RingCrownHeight,
+    /// μ_skirt of Karhula's Coulomb skirt.
+    SkirtFrictionCoefficient,
+    /// Skirt length of the viscous skirt, m.
+    SkirtLength,
+    /// Radial skirt-to-liner clearance of the viscous skirt, m.
+    SkirtClearance,
+    /// Lubrication factor f0 of the Karhula and Palmgren bearings.
+    LubricationFactor,
+    /// Constant of Karhula's bearing load term.
+    BearingLoadConstant,
+    /// Length over diameter L/D of a plain journal bearing.
+    JournalLengthRatio,
+    /// Radial clearance over journal radius c/R of a plain journal bearing.
+    JournalClearanceRatio,
+    /// μ at a flat follower's cam contact.
+    CamFrictionCoefficient,
 }
 
-impl Default for Parameters {
-    fn default() -> Self {
-        Self {
-            ring_friction_coefficient: KARHULA_RING_MU,
-            ring_crown_height: 5e-6,
-            skirt_friction_coefficient: KARHULA_SKIRT_MU,
-            skirt_length: None,
-            skirt_clearance: 20e-6,
-            lubrication_factor: 2.0,
-            bearing_load_constant: KARHULA_LOAD_CONSTANT,
-            journal_length_ratio: 0.5,
-            journal_clearance_ratio: 1e-3,
-            cam_friction_coefficient: match FollowerContact::FLAT {
+impl LossParameter {
+    /// Every parameter.
+    pub const ALL: [LossParameter; 10] = [
+        LossParameter::RingFrictionCoefficient,
+        LossParameter::RingCrownHeight,
+        LossParameter::SkirtFrictionCoefficient,
+        LossParameter::SkirtLength,
+        LossParameter::SkirtClearance,
+        LossParameter::LubricationFactor,
+        LossParameter::BearingLoadConstant,
+        LossParameter::JournalLengthRatio,
+        LossParameter::JournalClearanceRatio,
+        LossParameter::CamFrictionCoefficient,
+    ];
+
+    /// Its value where a case does not set it, SI; `None`: the model's own rule (the viscous
+    /// skirt's length, 0.6 × bore).
+    pub fn default(self) -> Option<f64> {
+        Some(match self {
+            // Karhula A9.1.4 after Andersson et al. 2002.
+            LossParameter::RingFrictionCoefficient => KARHULA_RING_MU,
+            // This project's choice, the order of the h_s of the Thai thesis's ring example
+            // (`docs/validation/thai-thesis.md`).
+            LossParameter::RingCrownHeight => 5e-6,
+            // Karhula A9.1.5 after Andersson et al. 2002.
+            LossParameter::SkirtFrictionCoefficient => KARHULA_SKIRT_MU,
+            // The Thai thesis's example proportions, 0.6 × bore (the viscous skirt's bind).
+            LossParameter::SkirtLength => return None,
+            // The Thai thesis's example.
+            LossParameter::SkirtClearance => 20e-6,
+            // Karhula App. 9.1.
+            LossParameter::LubricationFactor => 2.0,
+            // 0.0009, which reproduces the thesis's tables (the print's 0.009 is
+            // `KARHULA_LOAD_CONSTANT_PRINTED`).
+            LossParameter::BearingLoadConstant => KARHULA_LOAD_CONSTANT,
+            // This project's choice: a short bearing, one of the ratios tabulated in
+            // `docs/validation/journal-bearings.md`.
+            LossParameter::JournalLengthRatio => 0.5,
+            // This project's choice, the usual design ratio.
+            LossParameter::JournalClearanceRatio => 1e-3,
+            // [`FollowerContact::FLAT`].
+            LossParameter::CamFrictionCoefficient => match FollowerContact::FLAT {
                 FollowerContact::Flat {
                     friction_coefficient,
                 } => friction_coefficient,
                 FollowerContact::Roller { .. } => unreachable!(),
             },
-        }
+        })
+    }
+}
+
+/// The loss-model parameters a case sets, SI (the others take their defaults).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ParameterValues(Vec<(LossParameter, f64)>);
+
+impl ParameterValues {
+    /// Sets `parameter` to `value`.
+    pub fn set(&mut self, parameter: LossParameter, value: f64) {
+        self.0.retain(|(p, _)| *p != parameter);
+        self.0.push((parameter, value));
+    }
+
+    /// The value of `parameter`: the one set, else its default.
+    pub fn get(&self, parameter: LossParameter) -> Option<f64> {
+        self.0
+            .iter()
+            .find(|(p, _)| *p == parameter)
+            .map(|(_, v)| *v)
+            .or_else(|| parameter.default())
     }
 }
 
@@ -86,8 +133,11 @@ impl Default for Parameters {
 /// `bind` ([`crate::loss_models::Bind::Loss`]).
 #[derive(Clone, Copy)]
 pub struct BindInput<'a> {
-    /// The models' parameters (`[friction]`'s, else their defaults).
-    pub parameters: &'a Parameters,
+    /// The parameters the case sets.
+    pub parameters: &'a ParameterValues,
+    /// Those the model being bound declares ([`crate::LossModel::parameters`]): the only ones
+    /// it may read (set by [`crate::LossModel::bind_at`]; a caller gives none).
+    pub declared: &'static [LossParameter],
     /// The oil.
     pub oil: &'a Oil,
     /// The gear pair a mesh's loss is computed on (the case's `[gear]`).
@@ -102,6 +152,24 @@ pub struct BindInput<'a> {
     /// A revolute joint's bearings, the case's catalogue values put in (`None` at any other
     /// site).
     pub bearings: Option<Bearings>,
+}
+
+impl BindInput<'_> {
+    /// The value of `parameter`, which the model being bound declares: the case's, else its
+    /// default (`None`: the model's own rule).
+    pub fn parameter(&self, parameter: LossParameter) -> Option<f64> {
+        debug_assert!(
+            self.declared.contains(&parameter),
+            "{parameter:?} is read by a model that does not declare it"
+        );
+        self.parameters.get(parameter)
+    }
+
+    /// The value of `parameter`, which has a default ([`LossParameter::default`]).
+    pub fn value(&self, parameter: LossParameter) -> f64 {
+        self.parameter(parameter)
+            .unwrap_or_else(|| unreachable!("{parameter:?} has a default"))
+    }
 }
 
 /// A setup that failed: the case field at fault and why.

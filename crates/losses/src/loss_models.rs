@@ -5,19 +5,18 @@
 //! pistons and joints by kind.
 //!
 //! Adding a loss model: its physics in `cardan-friction`, its [`crate::Loss`] impl and the
-//! function that binds it ([`crate::losses::models`]), one line in [`LOSS_MODELS`]; a parameter
-//! of its own is a field of [`Parameters`] and of the case's `[friction]` table.
+//! function that binds it ([`crate::losses::models`]), one line in [`LOSS_MODELS`] with the
+//! parameters it reads; a parameter of its own is a [`LossParameter`] with its default and a
+//! field of the case's `[friction]` table.
 
 use crate::engine_losses::FollowerContact;
-use crate::loss::BindInput;
+use crate::loss::{BindInput, LossParameter, ParameterValues};
 use crate::losses::models::{
     bind_coulomb, bind_journal, bind_mesh, bind_ring_films, bind_ring_pack, bind_rolling,
     bind_viscous_skirt, BoundLoss,
 };
 use cardan_friction::{PalmgrenCoefficients, RollingReading, SkfDeepGrooveBall};
 use cardan_gears::mesh_loss::Reading;
-
-pub use crate::loss::Parameters;
 
 /// Where a loss model attaches.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -59,7 +58,7 @@ pub enum Bind {
     /// An engine's valve train: its cam/follower contact from the parameters, which the engine's
     /// valve train ([`crate::ValveTrain`], with its springs and geometry) binds to the crank
     /// and the fmep cross-check reads (its PNH follower).
-    Follower(fn(&Parameters) -> FollowerContact),
+    Follower(fn(&ParameterValues) -> FollowerContact),
 }
 
 /// A loss model as the registry knows it.
@@ -70,6 +69,8 @@ pub struct LossModel {
     pub attachment: Attachment,
     /// What it computes, with its source, in one line (the documentation's).
     pub summary: &'static str,
+    /// The parameters it reads (the only ones its bind may read: [`BindInput::parameter`]).
+    pub parameters: &'static [LossParameter],
     /// How it is bound.
     pub bind: Bind,
 }
@@ -78,8 +79,12 @@ impl LossModel {
     /// The model bound at `site`; `None` for a valve train, which the engine binds
     /// ([`Bind::Follower`]).
     pub fn bind_at(&self, site: &BindInput) -> Option<BoundLoss> {
+        let site = BindInput {
+            declared: self.parameters,
+            ..*site
+        };
         match self.bind {
-            Bind::Loss(bind) => Some(bind(site)),
+            Bind::Loss(bind) => Some(bind(&site)),
             Bind::Follower(_) => None,
         }
     }
@@ -98,50 +103,58 @@ impl std::fmt::Debug for LossModel {
     }
 }
 
+use LossParameter::*;
+
 /// Every loss model a case file can name, one line each.
 pub const LOSS_MODELS: &[LossModel] = &[
     LossModel {
         name: "karhula",
         attachment: Attachment::Rings,
         summary: "2 compression rings (2 mm, 0.19 MPa) and an oil ring (4 mm, 1 MPa), μ = ring_friction_coefficient (Karhula A9.1.2-4, A9.1.8)",
-        bind: Bind::Loss(|s| bind_ring_pack(s, s.parameters.ring_friction_coefficient)),
+        parameters: &[RingFrictionCoefficient],
+        bind: Bind::Loss(|s| bind_ring_pack(s, s.value(RingFrictionCoefficient))),
     },
     LossModel {
         name: "film",
         attachment: Attachment::Rings,
         summary: "each ring of the pack on its oil film (Reynolds with squeeze film, Greenwood-Tripp asperities), faces crowned by ring_crown_height",
-        bind: Bind::Loss(|s| bind_ring_films(s, s.parameters.ring_crown_height)),
+        parameters: &[RingCrownHeight],
+        bind: Bind::Loss(|s| bind_ring_films(s, s.value(RingCrownHeight))),
     },
     LossModel {
         name: "karhula",
         attachment: Attachment::Skirt,
         summary: "Coulomb friction on the side force, μ = skirt_friction_coefficient (Karhula A9.1.5)",
-        bind: Bind::Loss(|s| bind_coulomb(s, s.parameters.skirt_friction_coefficient)),
+        parameters: &[SkirtFrictionCoefficient],
+        bind: Bind::Loss(|s| bind_coulomb(s, s.value(SkirtFrictionCoefficient))),
     },
     LossModel {
         name: "viscous",
         attachment: Attachment::Skirt,
         summary: "Couette shear of a skirt of skirt_length and skirt_clearance (Thai thesis 2.5.c.1-3)",
+        parameters: &[SkirtLength, SkirtClearance],
         bind: Bind::Loss(|s| {
-            let p = s.parameters;
-            bind_viscous_skirt(s, p.skirt_length.unwrap_or(0.6 * s.bore), p.skirt_clearance)
+            let length = s.parameter(SkirtLength).unwrap_or(0.6 * s.bore);
+            bind_viscous_skirt(s, length, s.value(SkirtClearance))
         }),
     },
     LossModel {
         name: "karhula",
         attachment: Attachment::Bearing,
         summary: "rolling bearings as printed (Karhula A9.1.26-33), f0 = lubrication_factor, bearing_load_constant",
+        parameters: &[LubricationFactor, BearingLoadConstant],
         bind: Bind::Loss(|s| bind_rolling(s, RollingReading::Karhula {
-            f0: s.parameters.lubrication_factor,
-            load_constant: s.parameters.bearing_load_constant,
+            f0: s.value(LubricationFactor),
+            load_constant: s.value(BearingLoadConstant),
         })),
     },
     LossModel {
         name: "palmgren",
         attachment: Attachment::Bearing,
         summary: "Palmgren's M0 + M1 of a deep-groove ball bearing, f0 = lubrication_factor",
+        parameters: &[LubricationFactor],
         bind: Bind::Loss(|s| bind_rolling(s, RollingReading::Palmgren(PalmgrenCoefficients {
-            f0: s.parameters.lubrication_factor,
+            f0: s.value(LubricationFactor),
             ..PalmgrenCoefficients::DEEP_GROOVE_BALL
         }))),
     },
@@ -149,44 +162,53 @@ pub const LOSS_MODELS: &[LossModel] = &[
         name: "skf",
         attachment: Attachment::Bearing,
         summary: "SKF's rolling and sliding moments of a series-62 deep-groove ball bearing",
+        parameters: &[],
         bind: Bind::Loss(|s| bind_rolling(s, RollingReading::Skf(SkfDeepGrooveBall::SERIES_62))),
     },
     LossModel {
         name: "petroff",
         attachment: Attachment::Bearing,
         summary: "Petroff's concentric plain journal of journal_length_ratio and journal_clearance_ratio",
+        parameters: &[JournalLengthRatio, JournalClearanceRatio],
         bind: Bind::Loss(|s| bind_journal(s, false)),
     },
     LossModel {
         name: "short_bearing",
         attachment: Attachment::Bearing,
         summary: "Ocvirk's short plain journal, the eccentricity from the instantaneous load",
+        parameters: &[JournalLengthRatio, JournalClearanceRatio],
         bind: Bind::Loss(|s| bind_journal(s, true)),
     },
     LossModel {
         name: "karhula",
         attachment: Attachment::GearMesh,
         summary: "Anderson & Loewenthal's sliding, rolling and windage loss as printed (Karhula A9.1.36-55)",
+        parameters: &[],
         bind: Bind::Loss(|s| bind_mesh(s, Reading::Karhula)),
     },
     LossModel {
         name: "corrected",
         attachment: Attachment::GearMesh,
         summary: "the same in centipoise, with carrier-relative internal-mesh kinematics and the pair's real geometry",
+        parameters: &[],
         bind: Bind::Loss(|s| bind_mesh(s, Reading::Corrected)),
     },
     LossModel {
         name: "flat",
         attachment: Attachment::ValveTrain,
         summary: "two valves on circular-arc cams, flat followers, μ = cam_friction_coefficient (Thai thesis 2.5.d.15, 2.5.d.18)",
+        parameters: &[CamFrictionCoefficient],
         bind: Bind::Follower(|p| FollowerContact::Flat {
-            friction_coefficient: p.cam_friction_coefficient,
+            friction_coefficient: p
+                .get(CamFrictionCoefficient)
+                .unwrap_or_else(|| unreachable!("a default")),
         }),
     },
     LossModel {
         name: "roller",
         attachment: Attachment::ValveTrain,
         summary: "the same with roller followers: rolling resistance and the roller's pin bearing",
+        parameters: &[],
         bind: Bind::Follower(|_| FollowerContact::ROLLER),
     },
 ];
@@ -232,7 +254,7 @@ mod tests {
             bore: 0.12,
             pin_offset: 0.0,
         };
-        let (p, pair) = (Parameters::default(), GearSpec::default());
+        let (p, pair) = (ParameterValues::default(), GearSpec::default());
         let oil = Oil {
             kinematic_viscosity: 5e-6,
             density: 900.0,
@@ -243,6 +265,9 @@ mod tests {
                 .filter(|n| n.attachment == m.attachment && n.name == m.name);
             assert_eq!(same.count(), 1, "{} twice", m.name);
             assert_ne!(m.name, NONE);
+            let ps = m.parameters;
+            let once = (0..ps.len()).all(|i| !ps[..i].contains(&ps[i]));
+            assert!(once, "{m:?} declares a parameter twice");
             // Only a valve train is bound by the engine; every other model binds at a site of
             // its attachment on every registered mechanism that has one.
             assert_eq!(
@@ -253,8 +278,10 @@ mod tests {
             for entry in MECHANISMS {
                 let mechanism = (entry.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
                 let t = mechanism.topology();
+                // `bind_at` declares the model's parameters: reading any other one panics.
                 let site = |joint, bearings| BindInput {
                     parameters: &p,
+                    declared: &[],
                     oil: &oil,
                     pair: &pair,
                     mechanism: mechanism.as_ref(),

@@ -20,7 +20,7 @@
 pub mod models;
 
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
-use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil, Parameters};
+use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil, ParameterValues};
 use crate::loss_models::{default_model, Attachment, LossModel};
 use crate::mesh::GearSpec;
 use crate::MachineKind;
@@ -59,8 +59,8 @@ impl BearingSize {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Friction {
     pub oil: Oil,
-    /// The models' parameters.
-    pub parameters: Parameters,
+    /// The models' parameters the case sets (the others take their defaults).
+    pub parameters: ParameterValues,
     /// Model of the rings of every piston in a cylinder.
     pub rings: Option<&'static LossModel>,
     /// Model of a piston's slide on the frame.
@@ -86,7 +86,7 @@ pub struct Friction {
 }
 
 impl Friction {
-    /// Karhula's (2008) App. 9.1 models and values ([`Parameters::default`],
+    /// Karhula's (2008) App. 9.1 models and values ([`crate::LossParameter::default`],
     /// [`default_model`]): ring pack with μ = 0.07, Coulomb skirt (and other slides) with
     /// μ = 0.09, rolling bearings in his reading with f0 = 2, mesh loss as printed with z1 = 20,
     /// oil of 5 mm²/s and 900 kg/m³; no engine components (the thesis has none).
@@ -96,7 +96,7 @@ impl Friction {
                 kinematic_viscosity: 5e-6,
                 density: 900.0,
             },
-            parameters: Parameters::default(),
+            parameters: ParameterValues::default(),
             rings: default_model(Attachment::Rings),
             skirt: default_model(Attachment::Skirt),
             slide_friction_coefficient: KARHULA_SKIRT_MU,
@@ -121,6 +121,7 @@ impl Friction {
     ) -> Result<Box<dyn Loss>, SetupError> {
         let site = BindInput {
             parameters: &self.parameters,
+            declared: &[],
             oil: &self.oil,
             pair: &self.pair,
             mechanism,
@@ -321,7 +322,10 @@ mod tests {
     fn budget(parts: &[FailsAt]) -> LossBudget {
         LossBudget {
             names: (0..parts.len()).map(|k| k.to_string()).collect(),
-            parts: parts.iter().map(|p| Box::new(p.clone()) as Box<dyn Loss>).collect(),
+            parts: parts
+                .iter()
+                .map(|p| Box::new(p.clone()) as Box<dyn Loss>)
+                .collect(),
             kind: MachineKind::Pump,
         }
     }
@@ -342,11 +346,21 @@ mod tests {
             lanes: 0..LANES,
             ..LossLanes::one(&states, &total)
         };
-        let cases: [(&[FailsAt], Option<(usize, &str)>); 4] = [
+        type Failure = Option<(usize, &'static str)>;
+        let cases: [(&[FailsAt], Failure); 4] = [
             (&[FailsAt(None, "a"), FailsAt(None, "b")], None),
-            (&[FailsAt(Some(20), "a"), FailsAt(Some(9), "b")], Some((9, "b"))),
-            (&[FailsAt(Some(9), "a"), FailsAt(Some(20), "b")], Some((9, "a"))),
-            (&[FailsAt(Some(9), "a"), FailsAt(Some(9), "b")], Some((9, "a"))),
+            (
+                &[FailsAt(Some(20), "a"), FailsAt(Some(9), "b")],
+                Some((9, "b")),
+            ),
+            (
+                &[FailsAt(Some(9), "a"), FailsAt(Some(20), "b")],
+                Some((9, "a")),
+            ),
+            (
+                &[FailsAt(Some(9), "a"), FailsAt(Some(9), "b")],
+                Some((9, "a")),
+            ),
         ];
         for (parts, want) in cases {
             let mut out = vec![[f64::NAN; LANES]; parts.len()];

@@ -7,7 +7,7 @@
 use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes};
+use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, LossParameter};
 use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::SetupError;
 use cardan_friction::{
@@ -114,13 +114,16 @@ pub fn bind_rolling(site: &BindInput, reading: RollingReading) -> BoundLoss {
 /// Ocvirk's short bearing (`short`), else Petroff's concentric journal.
 pub fn bind_journal(site: &BindInput, short: bool) -> BoundLoss {
     let b = bearings(site)?;
-    let p = site.parameters;
+    let (length_ratio, clearance_ratio) = (
+        site.value(LossParameter::JournalLengthRatio),
+        site.value(LossParameter::JournalClearanceRatio),
+    );
     Ok(Box::new(Journal {
         joint: site.joint,
         bearing: JournalBearing::new(
             b.radius,
-            2.0 * b.radius * p.journal_length_ratio,
-            b.radius * p.journal_clearance_ratio,
+            2.0 * b.radius * length_ratio,
+            b.radius * clearance_ratio,
         )
         .map_err(|e| failed("friction.journal_length_ratio", &e))?,
         count: f64::from(b.count.max(1)),
