@@ -3,6 +3,7 @@
 //! registry of `cardan-mechanism`; each builds itself from the shared geometry, the mass fields
 //! and its own table (`[cardan_gear]`, ...).
 
+use crate::digest::InputDigest;
 use crate::error::Invalid;
 use crate::error::{CaseError, Machine};
 use crate::gas::GasCase;
@@ -96,9 +97,9 @@ pub struct Case {
     pub sweep: Option<(String, Vec<(String, String)>)>,
     /// The digest of the case's whole input as read ([`crate::digest`]): its typed document
     /// ([`CaseFile`], every field, a quantity in SI), its mechanisms' own tables, and the
-    /// name and bytes of every file it read (a `[gas]` pressure trace). The runner's input
-    /// hash (`run.json`, `shard.json`) is made from it.
-    pub input_digest: String,
+    /// name and bytes of every file it read (a `[gas]` pressure trace), made when first read.
+    /// The runner's input hash (`run.json`, `shard.json`) is made from it.
+    pub input_digest: InputDigest,
     /// Notes on inputs taken as written that were likely meant otherwise (a bare whole
     /// `initial_speed` of rpm's size taken as rad/s): printed by `cardan check`, and meant for
     /// summary.json's `warnings`.
@@ -433,15 +434,7 @@ fn from_table(
             error,
         }
     })?;
-    let document = crate::digest::canonical(&(&raw, &own.options, &own.masses));
-    let mut case = validate(file, raw, own, read_once)?;
-    let mut digest = crate::digest::Fnv::default();
-    digest.update(&document);
-    for (name, bytes) in case.gas.iter().flat_map(|g| &g.files) {
-        digest.update(name.as_bytes()).update(bytes.as_bytes());
-    }
-    case.input_digest = digest.hex();
-    Ok(case)
+    validate(file, raw, own, read_once)
 }
 
 fn mechanism_names() -> Vec<&'static str> {
@@ -575,7 +568,7 @@ fn validate(
         &machines,
         geometry.bore,
         (friction.as_ref(), gear.as_ref(), gas.is_some()),
-        motion.initial_speed,
+        (motion.initial_speed, read_once.bending_j()),
         &invalid,
     )?;
     if dynamics.is_some() {
@@ -590,9 +583,11 @@ fn validate(
     );
     let listed = raw.output.metrics.as_deref();
     let table_metrics = crate::output_metrics::build(listed, &computed, &invalid)?;
+    let (output, notes) = ((&raw.output).into(), speed_note(&m.initial_speed));
+    let files = gas.iter().flat_map(|g| g.files.clone()).collect();
     Ok(Case {
         file: file.into(),
-        name: raw.name.0,
+        name: raw.name.0.clone(),
         machine,
         geometry,
         pistons,
@@ -606,12 +601,12 @@ fn validate(
         gear,
         setups,
         dynamics,
-        output: (&raw.output).into(),
+        output,
         table_metrics,
         balance,
         sweep: None,
-        input_digest: String::new(),
-        notes: speed_note(&m.initial_speed).into_iter().collect(),
+        input_digest: InputDigest::new((raw, own.options, own.masses), files),
+        notes: notes.into_iter().collect(),
     })
 }
 
@@ -787,7 +782,7 @@ impl Case {
             &machines,
             self.geometry.bore,
             tables,
-            self.motion.initial_speed,
+            (self.motion.initial_speed, &Default::default()),
             &invalid,
         )?;
         self.setups = setups;

@@ -61,7 +61,7 @@ pub use agma::factors::{
 };
 pub use agma::geometry_factors::{agma908_table, pitting_geometry_factor, IForm, ShiftCase};
 pub use agma::{FaceWidths, GearSetRating, MemberData, PreparedRating, Rating, SizeFactor};
-pub use agma908::{bending_geometry_factor, BendingJ, JMethod};
+pub use agma908::{bending_geometry_factor, BendingJ, BendingJMemo, JMethod};
 pub use buckingham::{BuckinghamPair, DynamicLoad, ToothForm, FULL_DEPTH_20};
 pub use error::GearError;
 pub use gear_set::{GearSet, MeshStep, StepResult};
