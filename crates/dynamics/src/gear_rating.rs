@@ -18,8 +18,8 @@ use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
 use cardan_gears::mesh_loss::Lubricant;
 use cardan_gears::{
-    pitting_geometry_factor, BendingJMemo, GearPair, GearSet, GeneratedMember, IForm,
-    MeshStep, PairMember,
+    pitting_geometry_factor, BendingJMemo, GearPair, GearSet, GeneratedMember, IForm, MeshStep,
+    PairMember,
 };
 use cardan_mechanism::{Column, JointKind, Loads, Material, Mechanism, MeshForce, State, C};
 

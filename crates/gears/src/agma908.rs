@@ -225,28 +225,3 @@ pub fn bending_geometry_factor(
         })
     }
 }
-
-/// The [`bending_geometry_factor`]s computed so far, by the exact pair and member (every field,
-/// every float to the bit: the text of `{:?}`, which tells `-0.0` from `0.0` and reads back
-/// to each float): the same inputs give the same factor, taken from here instead of another
-/// fillet search. The points of a sweep share one (a sweep over the crank speed or the rod
-/// length has one pair), each worker thread using it; there is no global memo.
-#[derive(Debug, Default)]
-pub struct BendingJMemo {
-    computed: std::sync::Mutex<std::collections::HashMap<String, Result<BendingJ, GearError>>>,
-}
-
-impl BendingJMemo {
-    /// [`bending_geometry_factor`] of `pair`'s `member`: computed the first time, the kept
-    /// result after (an error too: the same inputs fail the same way).
-    pub fn get(&self, pair: &GearPair, member: GeneratedMember) -> Result<BendingJ, GearError> {
-        let key = format!("{pair:?} {member:?}");
-        // Held while computing: the points of a sweep on other threads wait for the one search
-        // instead of each starting its own.
-        let mut computed = self.computed.lock().unwrap_or_else(|e| e.into_inner());
-        computed
-            .entry(key)
-            .or_insert_with(|| bending_geometry_factor(pair, member))
-            .clone()
-    }
-}
