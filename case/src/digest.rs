@@ -112,6 +112,24 @@ mod tests {
         assert_eq!(ab_c, Fnv::default().update(b"ab").update(b"c").hex());
     }
 
+    /// The digest made when read is the hash of the document's canonical bytes, then of each
+    /// file's name and digest (as it was made at validation before issue 37), and shows as its
+    /// text does (the runner's input hash reads the case's `{:?}`); its clones share it.
+    #[test]
+    fn the_digest_made_when_read_is_the_digest_of_the_input() {
+        let document: toml::Table = toml::from_str("x = 1.5\ny = { b = \"2 mm\" }").unwrap();
+        let files = vec![("trace.csv".to_string(), of_bytes(b"0,1\n"))];
+        let mut eager = Fnv::default();
+        eager.update(&canonical(&document));
+        eager.update(b"trace.csv").update(files[0].1.as_bytes());
+        let lazy = InputDigest::new(document.clone(), files.clone());
+        let copy = lazy.clone();
+        assert_eq!(lazy.hex(), eager.hex());
+        assert_eq!(format!("{lazy:?}"), format!("{:?}", eager.hex()));
+        assert!(std::ptr::eq(lazy.hex(), copy.hex()));
+        assert_ne!(InputDigest::new(document, Vec::new()).hex(), eager.hex());
+    }
+
     /// A table's keys in another order are the same input.
     #[test]
     fn the_order_of_keys_does_not_count() {
