@@ -5,7 +5,7 @@
 //! setups with their J, and every summary metric to the bit), and the points with another pair
 //! have other factors (the memo tells the pairs apart).
 
-use cardan_case::case::{case_of_table, point_case};
+use cardan_case::case::{case_of_table, point_to_run};
 use cardan_case::sweep::Sweep;
 use cardan_runner::run_case;
 use rayon::prelude::*;
@@ -62,7 +62,7 @@ fn every_point_of_a_sweep_over_the_gear_is_its_case_made_alone() {
     // The points made as a table sweep makes them: on the worker threads, one sweep's memo.
     let shared: Vec<cardan_case::Case> = (0..sweep.len())
         .into_par_iter()
-        .map(|k| point_case(&sweep, k).unwrap())
+        .map(|k| point_to_run(&sweep, k).unwrap())
         .collect();
     let mut ratings = Vec::new();
     for (k, point) in shared.iter().enumerate() {
