@@ -127,7 +127,7 @@ fn speed_note(speed: &Quantity<AngularSpeed>) -> Option<String> {
 
 /// A case file as written: the typed schema of its top level. The mechanisms' own tables
 /// (`[cardan_gear]`, ...) and their mass tables (`[masses.cardan_gear]`) are named by the
-/// registry of `cardan-mechanism` and read apart ([`crate::mechanism_table::take`]).
+/// registry of `cardan-mechanism` and read apart (`mechanism_tables`).
 #[derive(Deserialize, JsonSchema, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct CaseFile {
@@ -404,7 +404,7 @@ fn from_table(
             rule: "an optimisation is run by `cardan run` (or `cardan.optimize` in Python), not as a single case: run the file with `cardan run`".into(),
         });
     }
-    let own = crate::mechanism_table::take(&mut table);
+    let own = crate::mechanism_table::mechanism_tables(&mut table);
     let raw: CaseFile = crate::schema::read(toml::Value::Table(table), "").map_err(|error| {
         // The mechanisms' tables are valid names at the top level and in [masses].
         let error = match error.field.rsplit_once('.') {

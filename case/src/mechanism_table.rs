@@ -105,7 +105,7 @@ pub(crate) struct MechanismTables {
 }
 
 /// Takes the mechanisms' own tables and their mass tables out of a case's `table`.
-pub(crate) fn take(table: &mut toml::Table) -> MechanismTables {
+pub(crate) fn mechanism_tables(table: &mut toml::Table) -> MechanismTables {
     let mut own = MechanismTables::default();
     let registered = |k: &String| cardan_mechanism::entry(k).is_some();
     let move_registered = |from: &mut toml::Table, into: &mut toml::Table| {
