@@ -3,6 +3,7 @@
 //! registry of `cardan-mechanism`; each builds itself from the shared geometry, the mass fields
 //! and its own table (`[cardan_gear]`, ...).
 
+use crate::digest::InputDigest;
 use crate::error::Invalid;
 use crate::error::{CaseError, Machine};
 use crate::gas::GasCase;
@@ -96,9 +97,10 @@ pub struct Case {
     pub sweep: Option<(String, Vec<(String, String)>)>,
     /// The digest of the case's whole input as read ([`crate::digest`]): its typed document
     /// ([`CaseFile`], every field, a quantity in SI), its mechanisms' own tables, and the
-    /// name and bytes of every file it read (a `[gas]` pressure trace). The runner's input
-    /// hash (`run.json`, `shard.json`) is made from it.
-    pub input_digest: String,
+    /// name and bytes of every file it read (a `[gas]` pressure trace); made at once, but by
+    /// [`point_to_run`] when first read. The runner's input hash (`run.json`, `shard.json`)
+    /// is made from it.
+    pub input_digest: InputDigest,
     /// Notes on inputs taken as written that were likely meant otherwise (a bare whole
     /// `initial_speed` of rpm's size taken as rad/s): printed by `cardan check`, and meant for
     /// summary.json's `warnings`.
@@ -320,7 +322,7 @@ pub fn load_file(file: &Path) -> Result<Vec<Case>, CaseError> {
 /// messages. The same reader as [`load_file`]'s, so the same errors.
 pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, CaseError> {
     match crate::sweep::expand(file, table.clone())? {
-        None => Ok(vec![from_table(file, table, &ReadOnce::default())?]),
+        None => from_table(file, table, &ReadOnce::default()).map(|c| vec![digested(c)]),
         Some((sweep, points)) => {
             let read_once = ReadOnce::default();
             // Each point's table read as it is (written out as TOML text and parsed again, it
@@ -329,7 +331,7 @@ pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, Case
             let cases: Vec<Result<Case, CaseError>> = points
                 .into_par_iter()
                 .map(|p| {
-                    let mut case = from_table(file, p.table, &read_once)?;
+                    let mut case = digested(from_table(file, p.table, &read_once)?);
                     case.sweep = Some((sweep.clone(), p.values));
                     Ok(case)
                 })
@@ -342,6 +344,12 @@ pub fn cases_of_table(file: &Path, table: toml::Table) -> Result<Vec<Case>, Case
 /// Point `k` of `sweep` (from 0) validated: the case it runs as, with its sweep's name and its
 /// swept values; the errors are those of a case file of that point's table.
 pub fn point_case(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseError> {
+    point_to_run(sweep, k).map(digested)
+}
+
+/// [`point_case`], its input digest made only when read, for a point run and dropped (a sweep
+/// written as a table never reads its points' digests: issue 37).
+pub fn point_to_run(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseError> {
     let point = sweep.point(k)?;
     let mut case = from_table(&sweep.file, point.table, sweep.read_once())?;
     case.sweep = Some((sweep.name.clone(), point.values));
@@ -352,12 +360,19 @@ pub fn point_case(sweep: &crate::sweep::Sweep, k: usize) -> Result<Case, CaseErr
 /// [`crate::sweep::Sweep::define`]'s caller, or read by [`toml_table`]); `file` is only for the
 /// messages.
 pub fn case_of_table(file: &Path, table: toml::Table) -> Result<Case, CaseError> {
-    from_table(file, table, &ReadOnce::default())
+    from_table(file, table, &ReadOnce::default()).map(digested)
 }
 
 /// Validates the text of a case file; `file` is only for the messages.
 pub fn parse(file: &Path, text: &str) -> Result<Case, CaseError> {
-    from_table(file, toml_table(file, text)?, &ReadOnce::default())
+    from_table(file, toml_table(file, text)?, &ReadOnce::default()).map(digested)
+}
+
+/// `case` with its input digest made: a case kept drops its typed document now (4 kB), not
+/// when its digest is first read.
+fn digested(case: Case) -> Case {
+    case.input_digest.hex();
+    case
 }
 
 /// The TOML of a case file; a syntax error as the TOML reader says it, with line and column.
@@ -366,37 +381,6 @@ pub fn toml_table(file: &Path, text: &str) -> Result<toml::Table, CaseError> {
         file: file.into(),
         message: e.to_string().trim_end().to_string(),
     })
-}
-
-/// The mechanisms' own tables of a case (`[cardan_gear]`) and their mass tables
-/// (`[masses.cardan_gear]`), taken out of `table` (named by the registry, they are not part of
-/// the typed schema).
-#[derive(Default)]
-pub(crate) struct MechanismTables {
-    pub options: toml::Table,
-    pub masses: toml::Table,
-}
-
-fn mechanism_tables(table: &mut toml::Table) -> MechanismTables {
-    let mut own = MechanismTables::default();
-    let registered = |k: &String| cardan_mechanism::entry(k).is_some();
-    let take = |from: &mut toml::Table, into: &mut toml::Table| {
-        for key in from
-            .keys()
-            .filter(|k| registered(k))
-            .cloned()
-            .collect::<Vec<_>>()
-        {
-            if let Some(value) = from.remove(&key) {
-                into.insert(key, value);
-            }
-        }
-    };
-    take(table, &mut own.options);
-    if let Some(toml::Value::Table(masses)) = table.get_mut("masses") {
-        take(masses, &mut own.masses);
-    }
-    own
 }
 
 /// Reads a case's table (a file's, or a sweep point's) into the schema, then validates it; the
@@ -420,7 +404,7 @@ fn from_table(
             rule: "an optimisation is run by `cardan run` (or `cardan.optimize` in Python), not as a single case: run the file with `cardan run`".into(),
         });
     }
-    let own = mechanism_tables(&mut table);
+    let own = crate::mechanism_table::mechanism_tables(&mut table);
     let raw: CaseFile = crate::schema::read(toml::Value::Table(table), "").map_err(|error| {
         // The mechanisms' tables are valid names at the top level and in [masses].
         let error = match error.field.rsplit_once('.') {
@@ -433,15 +417,7 @@ fn from_table(
             error,
         }
     })?;
-    let document = crate::digest::canonical(&(&raw, &own.options, &own.masses));
-    let mut case = validate(file, raw, own, read_once)?;
-    let mut digest = crate::digest::Fnv::default();
-    digest.update(&document);
-    for (name, bytes) in case.gas.iter().flat_map(|g| &g.files) {
-        digest.update(name.as_bytes()).update(bytes.as_bytes());
-    }
-    case.input_digest = digest.hex();
-    Ok(case)
+    validate(file, raw, own, read_once)
 }
 
 fn mechanism_names() -> Vec<&'static str> {
@@ -517,7 +493,7 @@ fn motion_of(
 fn validate(
     file: &Path,
     raw: CaseFile,
-    own: MechanismTables,
+    own: crate::mechanism_table::MechanismTables,
     read_once: &ReadOnce,
 ) -> Result<Case, CaseError> {
     let case_name = raw.name.0.clone();
@@ -575,7 +551,7 @@ fn validate(
         &machines,
         geometry.bore,
         (friction.as_ref(), gear.as_ref(), gas.is_some()),
-        motion.initial_speed,
+        (motion.initial_speed, read_once.bending_j()),
         &invalid,
     )?;
     if dynamics.is_some() {
@@ -590,9 +566,11 @@ fn validate(
     );
     let listed = raw.output.metrics.as_deref();
     let table_metrics = crate::output_metrics::build(listed, &computed, &invalid)?;
+    let (output, notes) = ((&raw.output).into(), speed_note(&m.initial_speed));
+    let files = gas.iter().flat_map(|g| g.files.clone()).collect();
     Ok(Case {
         file: file.into(),
-        name: raw.name.0,
+        name: raw.name.0.clone(),
         machine,
         geometry,
         pistons,
@@ -606,12 +584,12 @@ fn validate(
         gear,
         setups,
         dynamics,
-        output: (&raw.output).into(),
+        output,
         table_metrics,
         balance,
         sweep: None,
-        input_digest: String::new(),
-        notes: speed_note(&m.initial_speed).into_iter().collect(),
+        input_digest: InputDigest::new((raw, own.options, own.masses), files),
+        notes: notes.into_iter().collect(),
     })
 }
 
@@ -702,7 +680,7 @@ fn solved_friction(setups: &[Setup], invalid: &Invalid) -> Result<(), CaseError>
 /// run's angles (`start`, `step`, `steps`).
 fn build_mechanisms(
     raw: &CaseFile,
-    own: &MechanismTables,
+    own: &crate::mechanism_table::MechanismTables,
     geometry: &MachineGeometry,
     (start, step, steps): (f64, f64, usize),
     invalid: &Invalid,
@@ -787,7 +765,7 @@ impl Case {
             &machines,
             self.geometry.bore,
             tables,
-            self.motion.initial_speed,
+            (self.motion.initial_speed, &Default::default()),
             &invalid,
         )?;
         self.setups = setups;

@@ -4,6 +4,7 @@
 //! its SI value), its mechanisms' own tables, and the bytes of every file the case reads.
 
 use serde_json::Value;
+use std::sync::{Arc, LazyLock};
 
 /// FNV-1a, 128 bits (Fowler, Noll and Vo; IETF draft-eastlake-fnv, section 2 and the 128-bit
 /// offset basis and prime of section 5): a stable hash of the inputs, the same in every build
@@ -32,6 +33,43 @@ impl Fnv {
     /// The hash as 32 hexadecimal digits.
     pub fn hex(&self) -> String {
         format!("{:032x}", self.0)
+    }
+}
+
+/// The digest of a case's whole input, made when it is first read (issue 37: a point of a sweep
+/// written as a table is validated and run, its digest never read; making it was 2.5 % of the
+/// point's time): the hash of its document's canonical bytes ([`canonical`]), then of the name
+/// and digest of each file it read. Its clones share it, made once. It shows (`{:?}`) as the
+/// digest's text does, which the runner's input hash reads.
+#[derive(Clone)]
+pub struct InputDigest(Arc<LazyLock<String, Box<dyn FnOnce() -> String + Send>>>);
+
+impl InputDigest {
+    /// The digest of `document` (the typed case as read, and its mechanisms' tables) and the
+    /// files it read (`files`: each as named, and the digest of its bytes), in that order.
+    pub fn new<T>(document: T, files: Vec<(String, String)>) -> Self
+    where
+        T: serde::Serialize + Send + 'static,
+    {
+        Self(Arc::new(LazyLock::new(Box::new(move || {
+            let mut digest = Fnv::default();
+            digest.update(&canonical(&document));
+            for (name, bytes) in &files {
+                digest.update(name.as_bytes()).update(bytes.as_bytes());
+            }
+            digest.hex()
+        }))))
+    }
+
+    /// The digest as 32 hexadecimal digits.
+    pub fn hex(&self) -> &str {
+        LazyLock::force(&self.0).as_str()
+    }
+}
+
+impl std::fmt::Debug for InputDigest {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Debug::fmt(self.hex(), f)
     }
 }
 
@@ -72,6 +110,24 @@ mod tests {
         let a_bc = Fnv::default().update(b"a").update(b"bc").hex();
         assert_ne!(ab_c, a_bc);
         assert_eq!(ab_c, Fnv::default().update(b"ab").update(b"c").hex());
+    }
+
+    /// The digest made when read is the hash of the document's canonical bytes, then of each
+    /// file's name and digest (as it was made at validation before issue 37), and shows as its
+    /// text does (the runner's input hash reads the case's `{:?}`); its clones share it.
+    #[test]
+    fn the_digest_made_when_read_is_the_digest_of_the_input() {
+        let document: toml::Table = toml::from_str("x = 1.5\ny = { b = \"2 mm\" }").unwrap();
+        let files = vec![("trace.csv".to_string(), of_bytes(b"0,1\n"))];
+        let mut eager = Fnv::default();
+        eager.update(&canonical(&document));
+        eager.update(b"trace.csv").update(files[0].1.as_bytes());
+        let lazy = InputDigest::new(document.clone(), files.clone());
+        let copy = lazy.clone();
+        assert_eq!(lazy.hex(), eager.hex());
+        assert_eq!(format!("{lazy:?}"), format!("{:?}", eager.hex()));
+        assert!(std::ptr::eq(lazy.hex(), copy.hex()));
+        assert_ne!(InputDigest::new(document, Vec::new()).hex(), eager.hex());
     }
 
     /// A table's keys in another order are the same input.

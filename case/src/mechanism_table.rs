@@ -94,3 +94,35 @@ pub fn json_schema(entry: &Entry) -> Value {
         "additionalProperties": false,
     })
 }
+
+/// The mechanisms' own tables of a case (`[cardan_gear]`) and their mass tables
+/// (`[masses.cardan_gear]`), taken out of `table` (named by the registry, they are not part of
+/// the typed schema).
+#[derive(Default)]
+pub(crate) struct MechanismTables {
+    pub options: toml::Table,
+    pub masses: toml::Table,
+}
+
+/// Takes the mechanisms' own tables and their mass tables out of a case's `table`.
+pub(crate) fn mechanism_tables(table: &mut toml::Table) -> MechanismTables {
+    let mut own = MechanismTables::default();
+    let registered = |k: &String| cardan_mechanism::entry(k).is_some();
+    let move_registered = |from: &mut toml::Table, into: &mut toml::Table| {
+        for key in from
+            .keys()
+            .filter(|k| registered(k))
+            .cloned()
+            .collect::<Vec<_>>()
+        {
+            if let Some(value) = from.remove(&key) {
+                into.insert(key, value);
+            }
+        }
+    };
+    move_registered(table, &mut own.options);
+    if let Some(toml::Value::Table(masses)) = table.get_mut("masses") {
+        move_registered(masses, &mut own.masses);
+    }
+    own
+}

@@ -8,6 +8,7 @@
 use crate::error::{CaseError, Invalid};
 use crate::stage_registry::{StageEntry, StageInputs, STAGES};
 use cardan_dynamics::{Friction, GearSpec, LossBudget, Machine, Stage};
+use cardan_gears::BendingJMemo;
 use cardan_mechanism::Mechanism;
 use std::sync::Arc;
 
@@ -30,12 +31,14 @@ pub struct Setup {
 impl Setup {
     /// The setup of the machine `machine.0`'s mechanism in a cylinder of `bore` (m) under the
     /// case's `friction` and `gear`, the machine's orders taken at the speed `machine.1`
-    /// (rad/s), `gas`: whether the case has a gas model; a stage that cannot be set up is the
+    /// (rad/s), `gas`: whether the case has a gas model, the gear pairs' bending geometry
+    /// factors taken from `bending_j` where it holds them; a stage that cannot be set up is the
     /// case field at fault, for this mechanism.
     pub fn build(
         machine: (&Arc<Machine>, f64),
         bore: f64,
         (friction, gear, gas): (Option<&Friction>, Option<&GearSpec>, bool),
+        bending_j: &BendingJMemo,
         invalid: &Invalid,
     ) -> Result<Self, CaseError> {
         let mechanism = machine.0.mechanism().as_ref();
@@ -57,6 +60,7 @@ impl Setup {
             gear,
             gas,
             order_speed: machine.1,
+            bending_j,
         };
         let mut stages = Vec::with_capacity(STAGES.len());
         for entry in STAGES {
@@ -147,18 +151,18 @@ pub(crate) fn check_machine(
 }
 
 /// Each machine's setup ([`Setup::build`]), built with the case's `friction`, `gear` and gas
-/// (`tables`), its orders at `speed` (rad/s); `[gear]` is refused if no mechanism has a gear
-/// mesh to rate.
+/// (`tables`), its orders at `speed` (rad/s), the bending geometry factors through
+/// `bending_j`; `[gear]` is refused if no mechanism has a gear mesh to rate.
 pub(crate) fn setups(
     machines: &[Arc<cardan_dynamics::Machine>],
     bore: f64,
     tables: (Option<&Friction>, Option<&GearSpec>, bool),
-    speed: f64,
+    (speed, bending_j): (f64, &BendingJMemo),
     invalid: &Invalid,
 ) -> Result<Vec<Setup>, CaseError> {
     let setups = machines
         .iter()
-        .map(|m| Setup::build((m, speed), bore, tables, invalid))
+        .map(|m| Setup::build((m, speed), bore, tables, bending_j, invalid))
         .collect::<Result<Vec<_>, _>>()?;
     if tables.1.is_some() && !setups.iter().any(|s| s.has_stage("gear_rating")) {
         return Err(invalid(

@@ -29,6 +29,8 @@ pub struct StageInputs<'a> {
     pub gas: bool,
     /// Speed the machine's orders are taken at, rad/s.
     pub order_speed: f64,
+    /// The bending geometry factors computed so far (shared by a sweep's points).
+    pub bending_j: &'a cardan_gears::BendingJMemo,
 }
 
 /// A stage built for one machine, `None` where it has nothing to do; or the case field at
@@ -97,7 +99,7 @@ fn gear_rating(x: &StageInputs) -> Built {
         return Ok(None);
     };
     let m = x.machine.mechanism();
-    let ratings = GearRatings::new(spec, m.as_ref(), x.friction)?;
+    let ratings = GearRatings::with_memo(spec, m.as_ref(), x.friction, x.bending_j)?;
     if ratings.names().is_empty() {
         return Ok(None);
     }

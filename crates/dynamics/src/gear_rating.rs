@@ -18,8 +18,8 @@ use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
 use cardan_gears::mesh_loss::Lubricant;
 use cardan_gears::{
-    bending_geometry_factor, pitting_geometry_factor, GearPair, GearSet, GeneratedMember, IForm,
-    MeshStep, PairMember,
+    pitting_geometry_factor, BendingJMemo, GearPair, GearSet, GeneratedMember, IForm, MeshStep,
+    PairMember,
 };
 use cardan_mechanism::{
     Column, JointKind, Loads, LoadsBlock, Material, Mechanism, MeshForce, State, StateBlock,
@@ -39,14 +39,15 @@ use cardan_gears::materials::material;
 /// The bending geometry factors `[pinion, gear]` of a mesh whose `[gear] j` is not given,
 /// computed from the tooth form with the default generating rack (ISO 53, tip radius 0.25 m):
 /// AGMA 908-B89 for an external member, ISO 6336-3 method B for an internal ring
-/// ([`cardan_gears::agma908`]).
-fn computed_j(pair: &GearPair) -> Result<[f64; 2], SetupError> {
+/// ([`cardan_gears::agma908`]), through `memo` (the same pair's factors computed once).
+fn computed_j(pair: &GearPair, memo: &BendingJMemo) -> Result<[f64; 2], SetupError> {
     let mut j = [0.0; 2];
     for (k, (which, name)) in [(PairMember::Pinion, "pinion"), (PairMember::Gear, "gear")]
         .into_iter()
         .enumerate()
     {
-        j[k] = bending_geometry_factor(pair, GeneratedMember::new(which))
+        j[k] = memo
+            .get(pair, GeneratedMember::new(which))
             .map_err(|e| SetupError {
                 field: "gear.j".into(),
                 rule: format!(
@@ -177,6 +178,17 @@ impl GearRatings {
         mechanism: &dyn Mechanism,
         friction: Option<&Friction>,
     ) -> Result<Self, SetupError> {
+        Self::with_memo(spec, mechanism, friction, &BendingJMemo::default())
+    }
+
+    /// [`GearRatings::new`], the bending geometry factors computed from the tooth form taken
+    /// from `memo` where it holds them (the points of a sweep share one: issue 37).
+    pub fn with_memo(
+        spec: &GearSpec,
+        mechanism: &dyn Mechanism,
+        friction: Option<&Friction>,
+        memo: &BendingJMemo,
+    ) -> Result<Self, SetupError> {
         let oil = friction.map_or(Friction::karhula().oil, |f| f.oil);
         let topology = mechanism.topology();
         let mut meshes = Vec::new();
@@ -194,7 +206,7 @@ impl GearRatings {
             let axis = tooth_load_axis(spec.tooth_load, force, j.name)?;
             let (pair, face_width) =
                 mesh_pair(spec, ratio, pitch_radius, internal, pressure_angle)?;
-            let set = gear_set(spec, pair, (face_width, internal), oil)?;
+            let set = gear_set(spec, pair, (face_width, internal), oil, memo)?;
             let loss = mesh_loss(spec, mechanism, friction, k)?;
             let prepared = PreparedRating::new(&set.rating, set.face_width);
             let iso = if spec.standard.iso() {
@@ -336,13 +348,15 @@ pub(crate) fn lane_losses<'a>(
 
 /// The AGMA 2001 gear set of one mesh of `spec`: the pair `pair`, its face width and whether
 /// the gear is internal (`mesh`), the oil `oil` (its viscosity and density for the mesh loss
-/// and the film), with the case's materials, J factors (given or computed) and the factors a
-/// case run takes as 1; the face width refused where AGMA's load distribution does not hold.
+/// and the film), with the case's materials, J factors (given, or computed through `memo`) and
+/// the factors a case run takes as 1; the face width refused where AGMA's load distribution
+/// does not hold.
 fn gear_set(
     spec: &GearSpec,
     pair: GearPair,
     (face_width, internal): (f64, bool),
     oil: Oil,
+    memo: &BendingJMemo,
 ) -> Result<GearSet, SetupError> {
     // The load distribution's empirical Cpf holds up to 40 in (AGMA 2001-D04 eq. 28-30):
     // a wider face is refused here, before any step, not at the first step's rating.
@@ -350,7 +364,7 @@ fn gear_set(
         .map_err(|e| failed("gear.face_width", &e))?;
     let j_factors = match spec.j {
         Some(j) => j,
-        None => computed_j(&pair)?,
+        None => computed_j(&pair, memo)?,
     };
     let member = |m: usize| -> Result<MemberData, SetupError> {
         let (bending_allowable, contact_allowable) = match spec.material {

@@ -17,7 +17,8 @@
 //!   the internal pair ([`agma::nunes`]).
 //! * [`agma908`] — AGMA 908-B89's `J` of external gears computed from the generated tooth
 //!   form (Lewis parabola in the trochoid fillet, load at HPSTC, `K_f`); for an internal ring
-//!   `J` from ISO 6336-3 method B.
+//!   `J` from ISO 6336-3 method B; [`bending_memo`] keeps them by their exact inputs for the
+//!   points of a sweep.
 //! * [`tooth_root`] — the generated fillet and ISO 6336-3 method B's `Y_F`, `Y_S` and critical
 //!   section (`s_Fn`, `h_Fe`, `ρ_F`, `α_Fen`), external and internal.
 //! * [`mod@mesh_loss`] — Anderson & Loewenthal mesh power loss (sliding with Benedict & Kelley,
@@ -38,6 +39,7 @@
 
 pub mod agma;
 pub mod agma908;
+pub mod bending_memo;
 pub mod buckingham;
 pub mod error;
 pub mod gear_set;
@@ -62,6 +64,7 @@ pub use agma::factors::{
 pub use agma::geometry_factors::{agma908_table, pitting_geometry_factor, IForm, ShiftCase};
 pub use agma::{FaceWidths, GearSetRating, MemberData, PreparedRating, Rating, SizeFactor};
 pub use agma908::{bending_geometry_factor, BendingJ, JMethod};
+pub use bending_memo::BendingJMemo;
 pub use buckingham::{BuckinghamPair, DynamicLoad, ToothForm, FULL_DEPTH_20};
 pub use error::GearError;
 pub use gear_set::{GearSet, MeshStep, StepResult};

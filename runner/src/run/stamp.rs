@@ -39,7 +39,7 @@ pub fn input_hash(case: &Case, report: bool) -> String {
     };
     Fnv::default()
         .update(PROGRAM.as_bytes())
-        .update(case.input_digest.as_bytes())
+        .update(case.input_digest.hex().as_bytes())
         .update(format!("{case:?}").as_bytes())
         .update(if report { b"report" } else { b"no report" })
         .hex()
@@ -97,7 +97,7 @@ pub fn optimization_hash(o: &Optimization, report: bool) -> String {
         .update(o.definition().as_bytes());
     for m in &o.mechanisms {
         match o.case_at(m, &vec![None; o.variables.len()]) {
-            Ok(case) => hash.update(case.input_digest.as_bytes()),
+            Ok(case) => hash.update(case.input_digest.hex().as_bytes()),
             Err(e) => hash.update(e.to_string().as_bytes()),
         };
     }

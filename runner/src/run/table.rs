@@ -14,7 +14,7 @@ use super::options::RunOptions;
 use super::train::{run_trains, StepsTo};
 use crate::output::MechanismResult;
 use anyhow::Context;
-use cardan_case::case::{point_case, Case};
+use cardan_case::case::{point_to_run, Case};
 use cardan_case::sweep::Sweep;
 use cardan_case::CaseError;
 use cardan_report::files;
@@ -80,7 +80,7 @@ impl TableSweep {
             let end = (start + CHECK_CHUNK).min(n);
             let first_error = (start..end)
                 .into_par_iter()
-                .map(|k| point_case(&self.sweep, k).err())
+                .map(|k| point_to_run(&self.sweep, k).err())
                 .find_first(Option::is_some)
                 .flatten();
             if let Some(e) = first_error {
@@ -313,7 +313,7 @@ pub(super) fn write_header(dir: &Path, header: &serde_json::Value) -> anyhow::Re
 /// Point `k` of `table` validated and run to its summaries (a panic is its failure).
 fn run_point(table: &TableSweep, k: usize) -> Result<Vec<MechanismResult>, String> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        let case = point_case(&table.sweep, k).map_err(|e| e.to_string())?;
+        let case = point_to_run(&table.sweep, k).map_err(|e| e.to_string())?;
         run_trains(&case, StepsTo::Summary)
     }))
     .unwrap_or_else(|_| {
