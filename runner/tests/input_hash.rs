@@ -183,6 +183,15 @@ crank_pin = { model = "palmgren", pitch_diameter = "50 mm", static_load_rating =
         configs().join("joints.toml"),
         toml::from_str(joints).unwrap(),
     ));
+    // The other loss models' parameters (each refused where no model of the case reads it).
+    let models = "rings = \"film\"\nskirt = \"viscous\"\nbearings = \"petroff\"\n[friction.joints]";
+    let films = joints
+        .replace("[friction.joints]", models)
+        .replace("\"joints\"", "\"films\"");
+    bases.push((
+        configs().join("films.toml"),
+        toml::from_str(&films).unwrap(),
+    ));
     // An engine with a valve train (the fields of the valve train's models).
     let engine = "karhula-engine-r60-l140-a0-w200pi-titanium.toml";
     let (file, table) = bases.iter().find(|(f, _)| f.ends_with(engine)).unwrap();
