@@ -501,7 +501,6 @@ mod tests {
         for entry in MECHANISMS {
             let m = (entry.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
             let mut stages: Vec<Box<dyn Stage>> = Vec::new();
-            let t = m.topology();
             // AGMA alone, ISO alone and both: each declares the columns and metrics it gives.
             let iso = |standard| GearSpec {
                 standard,
