@@ -103,7 +103,7 @@ fn gear_rating(x: &StageInputs) -> Built {
     if ratings.names().is_empty() {
         return Ok(None);
     }
-    Ok(Some(Box::new(GearStage::new(ratings, m.topology()))))
+    Ok(Some(Box::new(GearStage::new(ratings))))
 }
 
 /// The train's loss budget (`[friction]`).

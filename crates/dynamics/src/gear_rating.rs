@@ -9,6 +9,12 @@
 //! Karhula's published dynamic tooth loads (App. 11.6.1); [`ToothLoad::RingForce`] rates the
 //! magnitude of the mesh force. The mesh loss is always charged on the tangential load, whatever
 //! load is rated, so that it equals the loss budget's mesh component.
+//!
+//! The rating reads a block of steps from its columns ([`GearRatings::evaluate_block`]: the
+//! mesh joint's motion, its force in the total and the inertial family, the pinion's angular
+//! velocity and the wheel's acceleration), as its mesh loss model does ([`Loss`]), so that a
+//! run gathers no step for it; a single state is rated as a block of one lane
+//! ([`GearRatings::evaluate`]).
 
 use cardan_gears::agma::factors::{
     bending_allowable_through_hardened, carburized_allowables, contact_allowable_through_hardened,
@@ -22,8 +28,8 @@ use cardan_gears::{
     PairMember,
 };
 use cardan_mechanism::{
-    Column, JointKind, Loads, LoadsBlock, Material, Mechanism, MeshForce, State, StateBlock,
-    Topology, C, ZERO,
+    Column, JointKind, JointMotion, Loads, LoadsBlock, Material, Mechanism, MeshForce, State,
+    StateBlock, Topology, C, ZERO,
 };
 
 use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil};
@@ -32,7 +38,7 @@ use crate::losses::Friction;
 use crate::mesh::{
     mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, GearStandard, ToothLoad,
 };
-use crate::stage::SetupError;
+use crate::stage::{Block, SetupError};
 use cardan_gears::iso6336::{IsoDynamic, IsoInputs, IsoMember, PreparedIso, STEEL_DENSITY};
 use cardan_gears::materials::material;
 
@@ -277,9 +283,46 @@ impl GearRatings {
         self.meshes.iter().map(|m| m.bending).collect()
     }
 
+    /// Each mesh's rating at the first [`Block::len`] lanes of `block` (the inertial family's
+    /// loads, which [`ToothLoad::Thesis`] reads, `None` without one): per mesh, in rating
+    /// order, the first `per_mesh` of its [values](MeshRating::values) into a column each of
+    /// `out`, and its loss, W, into its column of `losses` (a column per mesh, in rating
+    /// order). The losses are taken over the block first, then the lanes in order, every mesh
+    /// at a lane before the next lane; `Err`: the first lane a mesh cannot be rated at (its
+    /// loss included), and why; the lanes from there on are not rated.
+    pub fn evaluate_block(
+        &mut self,
+        block: &Block,
+        out: &mut [Column],
+        per_mesh: usize,
+        losses: &mut [(usize, Column)],
+    ) -> Result<(), (usize, String)> {
+        let at = LossLanes {
+            lanes: 0..block.len,
+            ..LossLanes::one(block.states, block.total)
+        };
+        let failed: Vec<Option<LaneFailure>> = (self.meshes.iter_mut().zip(losses.iter_mut()))
+            .map(|(m, (_, loss))| m.loss.power(&at, loss).err())
+            .collect();
+        for i in 0..block.len {
+            let meshes = self.meshes.iter_mut().zip(losses.iter()).zip(&failed);
+            for (((m, (_, loss)), failed), out) in meshes.zip(out.chunks_exact_mut(per_mesh)) {
+                let loss = match failed {
+                    Some(f) if f.lane == i => Err(f.why.clone()),
+                    _ => Ok(loss[i]),
+                };
+                let r = m.rate(block, i, loss).map_err(|e| (i, e))?;
+                for (c, v) in out.iter_mut().zip(r.values()) {
+                    c[i] = v;
+                }
+            }
+        }
+        Ok(())
+    }
+
     /// Each mesh's rating at `state` of a mechanism of `topology` under the `total` loads (and
     /// the `inertial` family's, which [`ToothLoad::Thesis`] needs; `None` without one), into
-    /// `out`.
+    /// `out`: [`GearRatings::evaluate_block`] on a block of one lane holding them.
     pub fn evaluate(
         &mut self,
         topology: &Topology,
@@ -288,62 +331,33 @@ impl GearRatings {
         inertial: Option<&Loads>,
         out: &mut [MeshRating],
     ) -> Result<(), String> {
-        let (mut states, mut totals) = (
-            StateBlock::for_topology(topology),
-            LoadsBlock::for_topology(topology),
-        );
+        let mut states = StateBlock::for_topology(topology);
+        states.len = 1;
         states.scatter(0, state);
-        totals.scatter(0, total);
-        let mut losses = vec![ZERO; self.meshes.len()];
-        let failed = self.mesh_losses(&LossLanes::one(&states, &totals), &mut losses);
-        let losses = lane_losses(&losses, &failed, 0);
-        for ((_, r), out) in self
-            .ratings(state, total, inertial, losses)
-            .zip(out.iter_mut())
-        {
-            *out = r?;
+        let lane = |loads: &Loads| {
+            let mut block = LoadsBlock::for_topology(topology);
+            block.scatter(0, loads);
+            block
+        };
+        let (total, inertial) = (lane(total), inertial.map(lane));
+        let block = Block {
+            len: 1,
+            states: &states,
+            total: &total,
+            inertial: inertial.as_ref(),
+            pressure: None,
+            force: None,
+            gas: None,
+        };
+        let width = MeshRating::WIDTH;
+        let mut values = vec![ZERO; width * self.meshes.len()];
+        let mut losses: Vec<_> = self.joints().map(|j| (j, ZERO)).collect();
+        (self.evaluate_block(&block, &mut values, width, &mut losses)).map_err(|(_, e)| e)?;
+        for (out, columns) in out.iter_mut().zip(values.chunks_exact(width)) {
+            *out = MeshRating::at_lane(columns, 0);
         }
         Ok(())
     }
-
-    /// Each mesh's loss at the lanes `at.lanes` into its column of `out`, W; each mesh's
-    /// failure, if it fails at a lane (the lanes from there on unset).
-    pub(crate) fn mesh_losses(
-        &mut self,
-        at: &LossLanes,
-        out: &mut [Column],
-    ) -> Vec<Option<LaneFailure>> {
-        (self.meshes.iter_mut().zip(out))
-            .map(|(m, out)| m.loss.power(at, out).err())
-            .collect()
-    }
-
-    /// Each mesh's joint and rating at `state` (as [`GearRatings::evaluate`] gives them), in
-    /// rating order, each with its mesh loss at the state (`losses`, in the same order: from
-    /// [`GearRatings::mesh_losses`] by [`lane_losses`]).
-    pub(crate) fn ratings<'s>(
-        &'s mut self,
-        state: &'s State,
-        total: &'s Loads,
-        inertial: Option<&'s Loads>,
-        losses: impl Iterator<Item = Result<f64, String>> + 's,
-    ) -> impl Iterator<Item = (usize, Result<MeshRating, String>)> + 's {
-        (self.meshes.iter_mut().zip(losses))
-            .map(move |(m, loss)| (m.joint, m.rate(state, total, inertial, loss)))
-    }
-}
-
-/// Each mesh's loss at lane `i` of its column of `losses`, or its failure there (`failed`, from
-/// [`GearRatings::mesh_losses`]).
-pub(crate) fn lane_losses<'a>(
-    losses: &'a [Column],
-    failed: &'a [Option<LaneFailure>],
-    i: usize,
-) -> impl Iterator<Item = Result<f64, String>> + 'a {
-    losses.iter().zip(failed).map(move |(c, f)| match f {
-        Some(f) if f.lane == i => Err(f.why.clone()),
-        _ => Ok(c[i]),
-    })
 }
 
 /// The AGMA 2001 gear set of one mesh of `spec`: the pair `pair`, its face width and whether
@@ -607,16 +621,18 @@ impl RatedMesh {
         }
     }
 
-    /// The thesis's tooth load (Karhula A5.2.1.48-51, [`ToothLoad::Thesis`]): the mesh force
-    /// `force` less twice the inertial family's (its `inertial` loads; none: zero) plus the
+    /// The thesis's tooth load (Karhula A5.2.1.48-51, [`ToothLoad::Thesis`]) at lane `i` of
+    /// `block`: the mesh force `force` less twice the inertial family's (none: zero) plus the
     /// wheel disc's inertia, its part along the mesh's tied axis, tangential to the pitch
-    /// circle, per set of teeth.
-    fn thesis_load(&self, state: &State, force: C, inertial: Option<&Loads>) -> f64 {
-        let inertial = inertial.map_or(C::new(0.0, 0.0), |l| l.joints[self.joint].force);
-        let wheel = self.disc_mass * state.bodies[self.body].cg.acceleration;
+    /// circle (the mesh joint's `motion`), per set of teeth.
+    fn thesis_load(&self, block: &Block, i: usize, force: C, motion: &JointMotion) -> f64 {
+        let inertial =
+            (block.inertial).map_or(C::new(0.0, 0.0), |l| l.joints[self.joint].at(i).force);
+        let cg = &block.states.bodies[self.body].cg;
+        let wheel = self.disc_mass * C::new(cg.ax[i], cg.ay[i]);
         let slipped = force - 2.0 * inertial + wheel;
         let axial = self.axis * (slipped.re * self.axis.re + slipped.im * self.axis.im);
-        tangential(axial, &state.joints[self.joint]).abs() / self.sets
+        tangential(axial, motion).abs() / self.sets
     }
 
     /// ISO 6336 at the rated load `load` (at the reference circle, the joint's pitch circle:
@@ -644,24 +660,22 @@ impl RatedMesh {
         })
     }
 
-    /// The mesh's rating at `state` under the `total` loads (and the `inertial` family's), its
-    /// mesh loss `loss` (W) at the state.
+    /// The mesh's rating at lane `i` of `block`, its mesh loss `loss` (W) at the lane.
     fn rate(
         &mut self,
-        state: &State,
-        total: &Loads,
-        inertial: Option<&Loads>,
+        block: &Block,
+        i: usize,
         loss: Result<f64, String>,
     ) -> Result<MeshRating, String> {
         let m = self;
-        let motion = &state.joints[m.joint];
-        let force = total.joints[m.joint].force;
+        let motion = &block.states.joints[m.joint].at(i);
+        let force = block.total.joints[m.joint].at(i).force;
         let tangential_load = tangential(force, motion).abs() / m.sets;
         let step = MeshStep {
             tangential_load,
             pitch_line_velocity: motion.relative_speed,
             speeds: mesh_speeds(
-                state.bodies[m.body].angular_velocity,
+                block.states.bodies[m.body].angular_velocity[i],
                 motion.relative_speed,
                 m.pitch_radius,
             ),
@@ -682,7 +696,7 @@ impl RatedMesh {
         let load = match m.tooth_load {
             ToothLoad::Tangential => tangential_load,
             ToothLoad::RingForce => force.norm() / m.sets,
-            ToothLoad::Thesis => m.thesis_load(state, force, inertial),
+            ToothLoad::Thesis => m.thesis_load(block, i, force, motion),
         };
         // Another rated load: the rating and Buckingham's load at it (the loss stays on the
         // tangential load).

@@ -1,10 +1,9 @@
-//! The per-step stages of a run ([`Stage`]) around the models written for one state at a time:
-//! the gear ratings ([`GearStage`]) and the loss budget ([`LossStage`]), each evaluated lane
-//! by lane from the block's columns, with the accumulator that totals its values into the
-//! summary. A run takes the ratings before the budget, which charges a rated mesh's loss as
-//! the rating computed it ([`PassedOn::mesh_losses`]).
+//! The per-step stages of a run ([`Stage`]): the gear ratings ([`GearStage`]) and the loss
+//! budget ([`LossStage`]), each evaluated on the block's columns, with the accumulator that
+//! totals its values into the summary. A run takes the ratings before the budget, which
+//! charges a rated mesh's loss as the rating computed it ([`PassedOn::mesh_losses`]).
 
-use crate::gear_rating::{lane_losses, GearRatings, MeshRating};
+use crate::gear_rating::{GearRatings, MeshRating};
 use crate::losses::LossBudget;
 use crate::machine::MachineKind;
 use crate::metrics::{self, MetricDef, Summary};
@@ -15,45 +14,9 @@ use crate::step::StepBlock;
 use crate::summary::peaks::raise;
 use crate::summary::Integral;
 use crate::LossLanes;
-use cardan_mechanism::{Column, Loads, State, Topology, ZERO};
+use cardan_mechanism::{Column, ZERO};
 use std::any::Any;
 use std::ops::Range;
-
-/// One step of a block gathered from its columns, for a model written for one state at a time.
-#[derive(Debug, Clone)]
-struct LaneRoom {
-    state: State,
-    total: Loads,
-    inertial: Loads,
-}
-
-impl LaneRoom {
-    fn for_topology(topology: &Topology) -> Self {
-        Self {
-            state: State::for_topology(topology),
-            total: Loads::for_topology(topology),
-            inertial: Loads::for_topology(topology),
-        }
-    }
-
-    /// Lane `i` of `block`: its state and total loads, and the inertial family's loads where
-    /// `inertial` (`None` in a run without them).
-    fn take(
-        &mut self,
-        block: &Block,
-        i: usize,
-        inertial: bool,
-    ) -> (&State, &Loads, Option<&Loads>) {
-        block.states.gather(i, &mut self.state);
-        block.total.gather(i, &mut self.total);
-        let family = block.inertial.filter(|_| inertial);
-        if let Some(f) = family {
-            f.gather(i, &mut self.inertial);
-        }
-        let inertial = family.map(|_| &self.inertial);
-        (&self.state, &self.total, inertial)
-    }
-}
 
 /// The loss budget as a stage. Its values at a step: the drive torque that covers the losses,
 /// Σ losses / |ω|, N·m (0 at rest, where the losses are 0 too), then the power loss of each
@@ -255,33 +218,26 @@ impl StageTotals for LossTotals {
     }
 }
 
-/// The gear ratings as a stage. Its values at a step: each rated mesh's [`MeshRating`] as its
-/// [values](MeshRating::values); it passes each mesh's loss on ([`PassedOn::mesh_losses`]).
+/// The gear ratings as a stage, on the block's columns ([`GearRatings::evaluate_block`]). Its
+/// values at a step: each rated mesh's [`MeshRating`] as its [values](MeshRating::values); it
+/// passes each mesh's loss on ([`PassedOn::mesh_losses`]).
 #[derive(Debug, Clone)]
 pub struct GearStage {
     ratings: GearRatings,
-    room: LaneRoom,
-    /// Each mesh's loss at each lane of the block, W.
-    losses: Vec<Column>,
     /// The values of each mesh: [`MeshRating::WIDTH`] with an ISO 6336 rating, else
     /// [`MeshRating::AGMA_WIDTH`] (a run rated by AGMA alone keeps the columns it had).
     per_mesh: usize,
 }
 
 impl GearStage {
-    /// The stage of `ratings`, the ratings of a mechanism of `topology`.
-    pub fn new(ratings: GearRatings, topology: &Topology) -> Self {
+    /// The stage of `ratings`.
+    pub fn new(ratings: GearRatings) -> Self {
         let per_mesh = if ratings.iso() {
             MeshRating::WIDTH
         } else {
             MeshRating::AGMA_WIDTH
         };
-        Self {
-            ratings,
-            room: LaneRoom::for_topology(topology),
-            losses: Vec::new(),
-            per_mesh,
-        }
+        Self { ratings, per_mesh }
     }
 }
 
@@ -300,27 +256,10 @@ impl Stage for GearStage {
         passed
             .mesh_losses
             .extend(self.ratings.joints().map(|joint| (joint, ZERO)));
-        let passed = &mut passed.mesh_losses[first..];
-        let at = LossLanes {
-            lanes: 0..block.len,
-            ..LossLanes::one(block.states, block.total)
-        };
-        self.losses.resize(passed.len(), ZERO);
-        let failed = self.ratings.mesh_losses(&at, &mut self.losses);
-        for i in 0..block.len {
-            let (state, total, inertial) = self.room.take(block, i, true);
-            let losses = lane_losses(&self.losses, &failed, i);
-            let ratings = self.ratings.ratings(state, total, inertial, losses);
-            let outs = out.chunks_exact_mut(self.per_mesh);
-            for (((_, r), out), (_, loss)) in ratings.zip(outs).zip(passed.iter_mut()) {
-                let r = r.map_err(|e| StageError::Failed(e).at_lane(i))?;
-                for (c, v) in out.iter_mut().zip(r.values()) {
-                    c[i] = v;
-                }
-                loss[i] = r.loss;
-            }
-        }
-        Ok(())
+        let losses = &mut passed.mesh_losses[first..];
+        (self.ratings)
+            .evaluate_block(block, out, self.per_mesh, losses)
+            .map_err(|(i, e)| StageError::Failed(e).at_lane(i))
     }
 
     /// Each mesh's dynamic tooth load; by AGMA its contact stress, and its bending stress where
@@ -562,7 +501,6 @@ mod tests {
         for entry in MECHANISMS {
             let m = (entry.build)(&g, &MassInputs::default(), &Options::new()).unwrap();
             let mut stages: Vec<Box<dyn Stage>> = Vec::new();
-            let t = m.topology();
             // AGMA alone, ISO alone and both: each declares the columns and metrics it gives.
             let iso = |standard| GearSpec {
                 standard,
@@ -575,7 +513,7 @@ mod tests {
                 iso(GearStandard::Both),
             ] {
                 if let Ok(r) = GearRatings::new(&spec, m.as_ref(), None) {
-                    stages.push(Box::new(GearStage::new(r, t)));
+                    stages.push(Box::new(GearStage::new(r)));
                 }
             }
             let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();

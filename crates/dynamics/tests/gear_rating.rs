@@ -5,9 +5,15 @@
 
 mod common;
 
-use cardan_dynamics::{GearRatings, GearSpec, MeshRating, ToothLoad};
-use cardan_mechanism::{CrankState, Loads, Material, C};
-use common::thesis;
+use cardan_dynamics::mesh::GearStandard;
+use cardan_dynamics::{
+    run, Gas, GasAt, GearRatings, GearSpec, GearStage, Inertial, LoadFamily, MeshRating, Solver,
+    Steps, ToothLoad,
+};
+use cardan_mechanism::{
+    CrankMotion, CrankState, Grid, Loads, Material, MotionError, MotionSource, C,
+};
+use common::{every_machine, pump_gas, thesis};
 use std::f64::consts::PI;
 
 /// Karhula's Buckingham chain in US units as printed (A8.1.3-14) for the cardan pair of crank
@@ -191,4 +197,109 @@ fn the_iso_rating_stands_beside_agma_s_without_changing_it() {
     assert_eq!(none.iso_contact_stress, 0.0);
     assert_eq!(none.iso_contact_safety, f64::INFINITY);
     assert_eq!(none.iso_bending_safety, f64::INFINITY);
+}
+
+/// The same states handed out one at a time, as a solved motion's: blocks of one lane.
+struct OneByOne(Grid);
+
+impl MotionSource for OneByOne {
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn next(&mut self, previous: Option<f64>) -> Option<Result<CrankState, MotionError>> {
+        self.0.next(previous)
+    }
+}
+
+/// The gear stage rates a block from its columns (`GearRatings::evaluate_block`): each lane's
+/// values are those of its step rated in a block of its own (the steps handed out one at a
+/// time, as a solved motion's), bit for bit, on every mechanism with a mesh, in every
+/// tooth-load reading (the thesis's reads the inertial family's mesh force and the wheel's
+/// acceleration) and standard, at an accelerating crank (every lane a different state).
+#[test]
+fn a_block_is_rated_lane_by_lane_as_each_step_alone() {
+    let motion = CrankMotion {
+        start_angle: 1.0,
+        initial_speed: 100.0,
+        angular_acceleration: 500.0,
+    };
+    let specs = [
+        GearSpec::default(),
+        GearSpec {
+            standard: GearStandard::Both,
+            accuracy_grade: Some(7.0),
+            tooth_load: ToothLoad::RingForce,
+            twin: true,
+            ..GearSpec::default()
+        },
+        GearSpec {
+            standard: GearStandard::Iso6336,
+            accuracy_grade: Some(6.0),
+            tooth_load: ToothLoad::Thesis,
+            ..GearSpec::default()
+        },
+    ];
+    let inertial = Inertial::new(Solver::ClosedForm);
+    let gas = Gas(Solver::ClosedForm);
+    let mut rated = Vec::new();
+    for (name, m) in every_machine() {
+        // The gas only where there is a cylinder (the hypotrochoid's pistons are in none).
+        let cylinder = m.has_cylinder();
+        let families: Vec<&dyn LoadFamily> = match cylinder {
+            true => vec![&inertial, &gas],
+            false => vec![&inertial],
+        };
+        let gas_at: Option<GasAt> = cylinder.then_some(&pump_gas);
+        for spec in &specs {
+            // (the thesis's reading is refused on an involute mesh)
+            let Ok(ratings) = GearRatings::new(spec, m.as_ref(), None) else {
+                continue;
+            };
+            if ratings.names().is_empty() {
+                continue;
+            }
+            let stage = GearStage::new(ratings);
+            let mut runs = Vec::new();
+            for blocks in [true, false] {
+                let grid = Grid::new(motion, 1.0, 20.0, 2 * 64 + 11);
+                let mut one_by_one = OneByOne(grid.clone());
+                let mut grid = grid;
+                let source: &mut dyn MotionSource = match blocks {
+                    true => &mut grid,
+                    false => &mut one_by_one,
+                };
+                let mut s = stage.clone();
+                let mut kept = Steps::default();
+                run(
+                    m.as_ref(),
+                    source,
+                    &families,
+                    gas_at,
+                    &mut [&mut s],
+                    &mut [&mut kept],
+                )
+                .unwrap();
+                let values: Vec<Vec<u64>> = (kept.0.iter())
+                    .map(|r| r.stages[0].iter().map(|v| v.to_bits()).collect())
+                    .collect();
+                runs.push(values);
+            }
+            assert_eq!(runs[0].len(), 2 * 64 + 12, "{name}");
+            assert!(runs[0].iter().all(|v| !v.is_empty()), "{name}");
+            // The lanes differ (a block is not one state repeated).
+            assert_ne!(runs[0][0], runs[0][70], "{name}");
+            assert_eq!(runs[0], runs[1], "{name} {:?}", spec.tooth_load);
+            rated.push((name.clone(), spec.tooth_load));
+        }
+    }
+    // The cardan gear in both mesh-force readings and the hypotrochoid, in each tooth-load
+    // reading they take.
+    let has = |name: &str, load| rated.iter().any(|r| r.0 == name && r.1 == load);
+    assert!(has("cardan_gear", ToothLoad::Thesis), "{rated:?}");
+    assert!(
+        has("cardan_gear involute", ToothLoad::RingForce),
+        "{rated:?}"
+    );
+    assert!(has("hypotrochoid", ToothLoad::Tangential), "{rated:?}");
 }

@@ -30,7 +30,7 @@ fn summary(
     let mut gears = GearRatings::new(&GearSpec::default(), m, None)
         .ok()
         .filter(|g| !g.names().is_empty())
-        .map(|g| GearStage::new(g, m.topology()));
+        .map(GearStage::new);
     // The ratings first: the budget takes their mesh losses.
     let mut stages: Vec<&mut dyn Stage> = Vec::new();
     if let Some(g) = &mut gears {

@@ -3,8 +3,8 @@
 //! step loop fills a block at a time and the summary reads its columns, so that a quantity's
 //! values over the block lie side by side (peaks and sums over them vectorise) and no step is
 //! reached through a chain of pointers. A lane `i` of a block is one step; [`StateBlock::gather`]
-//! gives it as a [`State`] for the code that works a step at a time (per-step files, losses,
-//! gear ratings, the general solve).
+//! gives it as a [`State`] for the code that works a step at a time (per-step files, the
+//! general solve).
 
 use crate::model::{BodyMotion, JointLoad, JointMotion, Loads, PistonMotion, PointMotion, State};
 use crate::{CrankState, Topology, C};

@@ -5,9 +5,9 @@
 //! A stage evaluates a whole block at a time from the block's columns into columns of its own
 //! ([`crate::StepBlock::stage_columns`]); declares the per-step columns it fills and the
 //! summary metrics it defines (its part of the registry, [`cardan_metrics`]); and makes the
-//! accumulator that totals its values into the summary ([`StageTotals`]). A model that is
-//! written for one state at a time (a loss model, a gear rating) is evaluated lane by lane
-//! inside its stage; the step loop knows one path.
+//! accumulator that totals its values into the summary ([`StageTotals`]). A model of one
+//! step (a loss model, a gear rating) reads its lanes from the block's columns, and a single
+//! step is a block of one lane; the step loop knows one path.
 
 use crate::step::StepBlock;
 use cardan_mechanism::{Column, LoadsBlock, StateBlock};
