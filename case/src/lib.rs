@@ -10,6 +10,7 @@ pub mod error;
 pub mod friction;
 pub mod gas;
 pub mod gear;
+mod input_field;
 mod gear_speed;
 pub mod json_schema;
 pub mod machine_motion;

@@ -44,7 +44,7 @@ impl Setup {
         let mechanism = machine.0.mechanism().as_ref();
         let failed = |e: cardan_dynamics::SetupError| {
             invalid(
-                &e.field,
+                &crate::input_field::setup_field(e.field),
                 &format!("(for the {})", mechanism.name()),
                 &e.rule,
             )

@@ -31,6 +31,7 @@ use cardan_friction::{
     bishop_pumps_misc_mep, bishop_throttling_mep, flat_follower_friction, follower_load, mep_power,
     roller_follower_friction, Follower, Valvetrain,
 };
+use crate::SetupInput;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Ambient pressure p_a of the pumping loss and of the PNH gas-loading term, Pa.
@@ -316,19 +317,19 @@ impl EngineLosses {
         }
     }
 
-    /// Checks the pressures and the compression ratio: field and rule of the first broken one.
-    pub fn check(&self) -> Result<(), (&'static str, String)> {
+    /// Checks the pressures and the compression ratio: input and rule of the first broken one.
+    pub fn check(&self) -> Result<(), (SetupInput, String)> {
         let pa = self.ambient_pressure;
         if !(pa > 0.0 && pa.is_finite()) {
             return Err((
-                "friction.ambient_pressure",
+                SetupInput::AmbientPressure,
                 format!("must be positive, got {pa} Pa"),
             ));
         }
         let pi = self.intake_pressure;
         if !(pi > 0.1 * pa && pi <= pa) {
             return Err((
-                "friction.intake_pressure",
+                SetupInput::IntakePressure,
                 format!(
                     "must be above 0.1 × ambient ({} Pa, where Bishop's standard imep is zero) and at most ambient ({pa} Pa, wide-open throttle: Bishop's engines are not boosted), got {pi} Pa",
                     0.1 * pa
@@ -337,7 +338,7 @@ impl EngineLosses {
         }
         if !(self.exhaust_back_pressure >= 0.0 && self.exhaust_back_pressure.is_finite()) {
             return Err((
-                "friction.exhaust_back_pressure",
+                SetupInput::ExhaustBackPressure,
                 format!(
                     "must not be negative, got {} Pa",
                     self.exhaust_back_pressure
@@ -346,7 +347,7 @@ impl EngineLosses {
         }
         if !(self.compression_ratio > 1.0 && self.compression_ratio.is_finite()) {
             return Err((
-                "gas.compression_ratio",
+                SetupInput::CompressionRatio,
                 format!("must exceed 1, got {}", self.compression_ratio),
             ));
         }

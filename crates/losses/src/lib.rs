@@ -28,4 +28,4 @@ pub use loss_models::{Attachment, Bind, LossModel, LOSS_MODELS};
 pub use losses::{BearingSize, Friction, LossBudget};
 pub use machine_kind::MachineKind;
 pub use mesh::{radial, tangential, GearMaterial, GearSpec, IsoOverrides, ToothLoad};
-pub use setup_error::SetupError;
+pub use setup_error::{GearInput, SetupError, SetupInput};

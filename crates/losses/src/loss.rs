@@ -7,7 +7,7 @@
 
 use crate::engine_losses::FollowerContact;
 use crate::mesh::GearSpec;
-use crate::SetupError;
+use crate::{SetupError, SetupInput};
 use cardan_friction::{KARHULA_LOAD_CONSTANT, KARHULA_RING_MU, KARHULA_SKIRT_MU};
 use cardan_mechanism::{Bearings, Column, LoadsBlock, Mechanism, StateBlock};
 use std::ops::Range;
@@ -172,10 +172,10 @@ impl BindInput<'_> {
     }
 }
 
-/// A setup that failed: the case field at fault and why.
-pub fn failed(field: &str, e: &dyn std::fmt::Display) -> SetupError {
+/// A setup that failed: the input at fault and why.
+pub fn failed(field: SetupInput, e: &dyn std::fmt::Display) -> SetupError {
     SetupError {
-        field: field.to_string(),
+        field,
         rule: e.to_string(),
     }
 }

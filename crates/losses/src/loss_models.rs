@@ -34,16 +34,14 @@ pub enum Attachment {
 }
 
 impl Attachment {
-    /// The field of `[friction]` that chooses this attachment's model.
-    pub fn field(self) -> &'static str {
-        match self {
-            Attachment::Rings => "rings",
-            Attachment::Skirt => "skirt",
-            Attachment::Bearing => "bearings",
-            Attachment::GearMesh => "gear_mesh",
-            Attachment::ValveTrain => "valve_train",
-        }
-    }
+    /// Every attachment.
+    pub const ALL: [Attachment; 5] = [
+        Attachment::Rings,
+        Attachment::Skirt,
+        Attachment::Bearing,
+        Attachment::GearMesh,
+        Attachment::ValveTrain,
+    ];
 }
 
 /// The word that switches an attachment's loss off.
@@ -99,7 +97,7 @@ impl PartialEq for LossModel {
 
 impl std::fmt::Debug for LossModel {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        write!(f, "{} = \"{}\"", self.attachment.field(), self.name)
+        write!(f, "{:?} = \"{}\"", self.attachment, self.name)
     }
 }
 

@@ -16,6 +16,7 @@ pub mod block;
 pub mod cardan_gear;
 mod crank;
 pub mod hypotrochoid;
+mod input;
 mod interface;
 pub mod mass;
 pub mod model;
@@ -32,6 +33,7 @@ pub use cardan_gear::{CardanGear, MeshModel};
 pub use crank::CrankState;
 pub use crank::C;
 pub use hypotrochoid::Hypotrochoid;
+pub use input::Input;
 pub(crate) use interface::{check_length, check_rod_cg, number, word};
 pub use interface::{
     Build, Entry, MachineGeometry, Mechanism, MechanismError, OptionKind, OptionSpec, OptionValue,
