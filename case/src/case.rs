@@ -7,6 +7,7 @@ use crate::digest::InputDigest;
 use crate::error::Invalid;
 use crate::error::{CaseError, Machine};
 use crate::gas::GasCase;
+use crate::input_field::mechanism_field;
 use crate::masses::MassTable;
 use crate::quantity::{
     Angle, AngularAcceleration, AngularSpeed, Length, Positive, Quantity, Whole,
@@ -15,7 +16,6 @@ use crate::read_once::ReadOnce;
 use crate::setup::Setup;
 use crate::units::is_folder_name;
 use cardan_dynamics::{Friction, GearSpec};
-use crate::input_field::mechanism_field;
 use cardan_mechanism::{CrankMotion, Input, MachineGeometry, Mechanism};
 use rayon::prelude::*;
 use schemars::JsonSchema;

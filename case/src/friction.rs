@@ -420,9 +420,15 @@ fn parameter_fields(t: &FrictionTable) -> Vec<(LossParameter, Set<'_>)> {
     }
     use LossParameter::*;
     vec![
-        (RingFrictionCoefficient, ranged(&t.ring_friction_coefficient)),
+        (
+            RingFrictionCoefficient,
+            ranged(&t.ring_friction_coefficient),
+        ),
         (RingCrownHeight, set(&t.ring_crown_height)),
-        (SkirtFrictionCoefficient, ranged(&t.skirt_friction_coefficient)),
+        (
+            SkirtFrictionCoefficient,
+            ranged(&t.skirt_friction_coefficient),
+        ),
         (SkirtLength, set(&t.skirt_length)),
         (SkirtClearance, set(&t.skirt_clearance)),
         (LubricationFactor, ranged(&t.lubrication_factor)),

@@ -1,9 +1,11 @@
 //! The case-file field of each physics input an error names (issue 37): the mechanisms'
 //! [`cardan_mechanism::Input`], the stages' [`cardan_dynamics::SetupInput`] (a loss model's
-//! parameter and attachment, a gear pair's input, an engine's pressures). The physics crates
+//! parameter and attachment, a gear pair's input, an engine's pressures), the balancing
+//! devices' [`cardan_balance::Device`]. The physics crates
 //! name the input; this module alone knows where a case file gives it, one exhaustive match
 //! per kind of input, so that a field renamed in the case file is renamed here.
 
+use cardan_balance::Device;
 use cardan_dynamics::loss_models::Attachment;
 use cardan_dynamics::{GearInput, LossParameter, SetupInput};
 use cardan_mechanism::Input;
@@ -35,6 +37,14 @@ pub(crate) fn setup_field(input: SetupInput) -> String {
         SetupInput::AmbientPressure | SetupInput::ExhaustBackPressure => "friction".into(),
         SetupInput::IntakePressure => "friction.intake_pressure".into(),
         SetupInput::CompressionRatio => "gas.compression_ratio".into(),
+    }
+}
+
+/// The field of the balancing device `device`.
+pub(crate) fn device_field(device: Device) -> &'static str {
+    match device {
+        Device::Counterweight => "balance.counterweight",
+        Device::CardanCounterweights => "balance.cardan_counterweights",
     }
 }
 
@@ -125,10 +135,14 @@ mod tests {
     fn every_input_maps_to_a_field_of_the_schema() {
         let schema = crate::json_schema::case_schema();
         let fields = (Input::all().into_iter().map(mechanism_field))
-            .chain(SetupInput::all().into_iter().map(setup_field));
+            .chain(SetupInput::all().into_iter().map(setup_field))
+            .chain(Device::ALL.into_iter().map(|d| device_field(d).to_string()));
         let mut n = 0;
         for field in fields {
-            assert!(node(&schema, &field).is_some(), "{field} is not in the case's schema");
+            assert!(
+                node(&schema, &field).is_some(),
+                "{field} is not in the case's schema"
+            );
             n += 1;
         }
         assert!(n > 30, "{n} inputs");
@@ -145,7 +159,10 @@ mod tests {
             mechanism: "cardan_gear",
             name: "pressure_angle",
         };
-        assert_eq!(mechanism_field(pressure_angle), "cardan_gear.pressure_angle");
+        assert_eq!(
+            mechanism_field(pressure_angle),
+            "cardan_gear.pressure_angle"
+        );
         let crown = SetupInput::Parameter(LossParameter::RingCrownHeight);
         assert_eq!(setup_field(crown), "friction.ring_crown_height");
         let bearings = SetupInput::Model(Attachment::Bearing);

@@ -413,7 +413,8 @@ fn gear_set(
         },
         size: SizeFactor::Given([1.0, 1.0]),
         surface_condition: 1.0,
-        geometry_i: pitting_geometry_factor(&pair, IForm::Lpstc).map_err(|e| failed(SetupInput::Gear(GearInput::Pair), &e))?,
+        geometry_i: pitting_geometry_factor(&pair, IForm::Lpstc)
+            .map_err(|e| failed(SetupInput::Gear(GearInput::Pair), &e))?,
         elastic_coefficient: elastic_coefficient(
             spec.youngs_modulus,
             0.3,
@@ -567,7 +568,8 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
         lubrication: None,
         members: [member(0)?, member(1)?],
     };
-    PreparedIso::new(pair, &inputs).map_err(|e| failed(SetupInput::Gear(GearInput::Pair), &format!("ISO 6336: {e}")))
+    PreparedIso::new(pair, &inputs)
+        .map_err(|e| failed(SetupInput::Gear(GearInput::Pair), &format!("ISO 6336: {e}")))
 }
 
 /// The mesh loss of gear-mesh joint `joint` of `mechanism` on the pair of `spec`: the model of
@@ -595,9 +597,12 @@ fn mesh_loss(
         joint,
         bearings: None,
     };
-    model
-        .bind_at(&site)
-        .unwrap_or_else(|| Err(failed(SetupInput::Model(Attachment::GearMesh), &"is not a gear-mesh loss")))
+    model.bind_at(&site).unwrap_or_else(|| {
+        Err(failed(
+            SetupInput::Model(Attachment::GearMesh),
+            &"is not a gear-mesh loss",
+        ))
+    })
 }
 
 impl RatedMesh {

@@ -26,12 +26,12 @@
 //!
 //! The whole-engine fmep cross-check after a run is [`crate::fmep`]'s.
 
+use crate::SetupInput;
 use cardan_friction::engine::BISHOP_EXHAUST_FULL_LOAD;
 use cardan_friction::{
     bishop_pumps_misc_mep, bishop_throttling_mep, flat_follower_friction, follower_load, mep_power,
     roller_follower_friction, Follower, Valvetrain,
 };
-use crate::SetupInput;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Ambient pressure p_a of the pumping loss and of the PNH gas-loading term, Pa.

@@ -53,7 +53,12 @@ impl SetupInput {
         let parameters = LossParameter::ALL.into_iter().map(SetupInput::Parameter);
         let models = Attachment::ALL.into_iter().map(SetupInput::Model);
         let gear = GearInput::ALL.into_iter().map(SetupInput::Gear);
-        fixed.into_iter().chain(parameters).chain(models).chain(gear).collect()
+        fixed
+            .into_iter()
+            .chain(parameters)
+            .chain(models)
+            .chain(gear)
+            .collect()
     }
 }
 

@@ -55,7 +55,7 @@ use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
     cross, Bearings, Body, Joint, JointKind, JointMotion, MeshForce, Piston, PistonMotion, Topology,
 };
-use crate::{Input, check_length, check_rod_cg, number, word, Entry, MachineGeometry, Mechanism};
+use crate::{check_length, check_rod_cg, number, word, Entry, Input, MachineGeometry, Mechanism};
 use crate::{vectorised, Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 

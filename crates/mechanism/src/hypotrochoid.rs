@@ -78,7 +78,9 @@ use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
     Bearings, Body, ExtraColumn, Joint, JointKind, MeshForce, Piston, State, Topology,
 };
-use crate::{Input, check_length, number, CrankState, Entry, MachineGeometry, Mechanism, StateBlock};
+use crate::{
+    check_length, number, CrankState, Entry, Input, MachineGeometry, Mechanism, StateBlock,
+};
 use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 

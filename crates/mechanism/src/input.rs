@@ -66,7 +66,10 @@ mod tests {
             ("hypotrochoid", "piston_link_length"),
             ("hypotrochoid", "planet_radius"),
         ] {
-            assert!(all.contains(&Input::Option { mechanism, name }), "{mechanism}.{name}");
+            assert!(
+                all.contains(&Input::Option { mechanism, name }),
+                "{mechanism}.{name}"
+            );
         }
     }
 }

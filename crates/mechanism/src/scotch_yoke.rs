@@ -16,7 +16,7 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{cross, Bearings, Body, Joint, Piston, PistonMotion, Topology};
-use crate::{Input, check_length, check_rod_cg, Entry, MachineGeometry, Mechanism};
+use crate::{check_length, check_rod_cg, Entry, Input, MachineGeometry, Mechanism};
 use crate::{vectorised, Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, Options, PointMotion, C};
 

@@ -15,7 +15,7 @@ use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
     cross, Bearings, Body, ExtraColumn, Joint, Piston, PistonMotion, State, Topology,
 };
-use crate::{Input, check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::{check_length, check_rod_cg, CrankState, Entry, Input, MachineGeometry, Mechanism};
 use crate::{
     vectorised, BodyColumns, Column, CrankColumns, JointColumns, LoadsBlock, PistonColumns,
     StateBlock, LANES, ZERO,

@@ -395,26 +395,11 @@ fn defaults_are_the_validation_model() {
 #[test]
 fn bad_options_name_their_field() {
     for (options, field) in [
-        (
-            vec![("angular_modulus", 1.0)],
-            "angular_modulus",
-        ),
-        (
-            vec![("angular_modulus", 2.5)],
-            "angular_modulus",
-        ),
-        (
-            vec![("angular_modulus", 9.0)],
-            "angular_modulus",
-        ),
-        (
-            vec![("piston_link_length", 0.07)],
-            "piston_link_length",
-        ),
-        (
-            vec![("piston_link_length", -1.0)],
-            "piston_link_length",
-        ),
+        (vec![("angular_modulus", 1.0)], "angular_modulus"),
+        (vec![("angular_modulus", 2.5)], "angular_modulus"),
+        (vec![("angular_modulus", 9.0)], "angular_modulus"),
+        (vec![("piston_link_length", 0.07)], "piston_link_length"),
+        (vec![("piston_link_length", -1.0)], "piston_link_length"),
         (vec![("planet_radius", 0.0)], "planet_radius"),
     ] {
         let e = build(&options).unwrap_err();

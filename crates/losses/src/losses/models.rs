@@ -8,8 +8,8 @@ use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
 use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, LossParameter};
-use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::loss_models::Attachment;
+use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::{GearInput, SetupError, SetupInput};
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
@@ -91,8 +91,12 @@ pub fn bind_viscous_skirt(site: &BindInput, length: f64, clearance: f64) -> Boun
 
 /// The site's revolute-joint bearings.
 fn bearings(site: &BindInput) -> Result<Bearings, SetupError> {
-    site.bearings
-        .ok_or_else(|| failed(SetupInput::Model(Attachment::Bearing), &"attaches to a revolute joint only"))
+    site.bearings.ok_or_else(|| {
+        failed(
+            SetupInput::Model(Attachment::Bearing),
+            &"attaches to a revolute joint only",
+        )
+    })
 }
 
 /// The site's rolling bearings in `reading` of [`cardan_friction::rolling_bearing_loss`].
@@ -151,8 +155,8 @@ pub fn bind_mesh(site: &BindInput, reading: Reading) -> BoundLoss {
         ));
     };
     let (pair, face_width) = mesh_pair(site.pair, ratio, pitch_radius, internal, pressure_angle)?;
-    let geometry =
-        MeshGeometry::from_pair(&pair, face_width).map_err(|e| failed(SetupInput::Gear(GearInput::FaceWidth), &e))?;
+    let geometry = MeshGeometry::from_pair(&pair, face_width)
+        .map_err(|e| failed(SetupInput::Gear(GearInput::FaceWidth), &e))?;
     let lubricant = Lubricant {
         kinematic_viscosity: site.oil.kinematic_viscosity,
         density: site.oil.density,
