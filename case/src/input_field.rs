@@ -7,7 +7,7 @@
 
 use cardan_balance::Device;
 use cardan_dynamics::loss_models::Attachment;
-use cardan_dynamics::{GearInput, LossParameter, SetupInput};
+use cardan_dynamics::{EngineInput, GearInput, LossParameter, SetupInput};
 use cardan_mechanism::Input;
 
 /// The field of the mechanism input `input`, as a case file's path: a mechanism's option is
@@ -30,13 +30,20 @@ pub(crate) fn setup_field(input: SetupInput) -> String {
         SetupInput::Parameter(p) => format!("friction.{}", parameter_field(p)),
         SetupInput::Model(a) => format!("friction.{}", attachment_field(a)),
         SetupInput::Gear(g) => gear_field(g).into(),
+        SetupInput::Engine(e) => engine_field(e).into(),
+    }
+}
+
+/// The field of the engine input `input`.
+fn engine_field(input: EngineInput) -> &'static str {
+    match input {
         // No case sets these two (the engine takes the standard atmosphere and Bishop's
         // full-load back pressure, `EngineLosses::off`): the table whose engine components
         // read them. Before issue 37 they were named `friction.ambient_pressure` and
         // `friction.exhaust_back_pressure`, fields `[friction]` does not have.
-        SetupInput::AmbientPressure | SetupInput::ExhaustBackPressure => "friction".into(),
-        SetupInput::IntakePressure => "friction.intake_pressure".into(),
-        SetupInput::CompressionRatio => "gas.compression_ratio".into(),
+        EngineInput::AmbientPressure | EngineInput::ExhaustBackPressure => "friction",
+        EngineInput::IntakePressure => "friction.intake_pressure",
+        EngineInput::CompressionRatio => "gas.compression_ratio",
     }
 }
 
@@ -155,14 +162,17 @@ mod tests {
     #[test]
     fn fields_are_the_case_files_paths() {
         assert_eq!(mechanism_field(Input::RodCg), "masses.rod_cg");
-        let pressure_angle = Input::Option {
-            mechanism: "cardan_gear",
-            name: "pressure_angle",
-        };
-        assert_eq!(
-            mechanism_field(pressure_angle),
-            "cardan_gear.pressure_angle"
-        );
+        // A mechanism's option is in the table named after the mechanism.
+        for entry in cardan_mechanism::MECHANISMS {
+            for option in entry.options {
+                let input = Input::Option {
+                    mechanism: entry.name,
+                    name: option.name,
+                };
+                let field = format!("{}.{}", entry.name, option.name);
+                assert_eq!(mechanism_field(input), field);
+            }
+        }
         let crown = SetupInput::Parameter(LossParameter::RingCrownHeight);
         assert_eq!(setup_field(crown), "friction.ring_crown_height");
         let bearings = SetupInput::Model(Attachment::Bearing);

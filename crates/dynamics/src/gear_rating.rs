@@ -32,14 +32,14 @@ use cardan_mechanism::{
     StateBlock, Topology, C, ZERO,
 };
 
-use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil};
+use crate::loss::{BindInput, LaneFailure, Loss, LossLanes, Oil};
 use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
 use crate::mesh::{
     mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, GearStandard, ToothLoad,
 };
 use crate::stage::{Block, SetupError};
-use crate::{GearInput, SetupInput};
+use crate::{failed, GearInput, SetupInput};
 use cardan_gears::iso6336::{IsoDynamic, IsoInputs, IsoMember, PreparedIso, STEEL_DENSITY};
 use cardan_gears::materials::material;
 

@@ -9,6 +9,7 @@
 //! parameters it reads; a parameter of its own is a [`LossParameter`] with its default and a
 //! field of the case's `[friction]` table.
 
+pub use crate::attachment::Attachment;
 use crate::engine_losses::FollowerContact;
 use crate::loss::{BindInput, LossParameter, ParameterValues};
 use crate::losses::models::{
@@ -17,32 +18,6 @@ use crate::losses::models::{
 };
 use cardan_friction::{PalmgrenCoefficients, RollingReading, SkfDeepGrooveBall};
 use cardan_gears::mesh_loss::Reading;
-
-/// Where a loss model attaches.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Attachment {
-    /// The rings of every piston in a cylinder (`rings`).
-    Rings,
-    /// A piston's slide on the frame (`skirt`).
-    Skirt,
-    /// The bearings of a revolute joint (`bearings`, `joints.<name>`).
-    Bearing,
-    /// A gear mesh (`gear_mesh`).
-    GearMesh,
-    /// An engine's valve train (`valve_train`).
-    ValveTrain,
-}
-
-impl Attachment {
-    /// Every attachment.
-    pub const ALL: [Attachment; 5] = [
-        Attachment::Rings,
-        Attachment::Skirt,
-        Attachment::Bearing,
-        Attachment::GearMesh,
-        Attachment::ValveTrain,
-    ];
-}
 
 /// The word that switches an attachment's loss off.
 pub const NONE: &str = "none";

@@ -20,11 +20,11 @@
 pub mod models;
 
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
-use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil, ParameterValues};
+use crate::loss::{BindInput, LaneFailure, Loss, LossLanes, Oil, ParameterValues};
 use crate::loss_models::{default_model, Attachment, LossModel};
 use crate::mesh::GearSpec;
+use crate::setup_error::{failed, SetupError, SetupInput};
 use crate::MachineKind;
-use crate::{SetupError, SetupInput};
 use cardan_friction::KARHULA_SKIRT_MU;
 use cardan_mechanism::{
     Bearings, Column, JointKind, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, LANES,
@@ -209,7 +209,7 @@ impl LossBudget {
         if let (Some(engine), true) = (&friction.engine, mechanism.has_cylinder()) {
             engine
                 .check()
-                .map_err(|(field, rule)| failed(field, &rule))?;
+                .map_err(|(field, rule)| failed(SetupInput::Engine(field), &rule))?;
             let volume = displacement(bore, mechanism.stroke());
             if let Some(train) = &engine.valve_train {
                 let part = ValveTrainLoss::new(train, bore, mechanism.top_dead_centre())

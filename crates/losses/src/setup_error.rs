@@ -1,8 +1,9 @@
 //! A model that cannot be set up for a mechanism: the input at fault and why. The input is the
 //! physics', typed ([`SetupInput`]); the case maps it to its field.
 
-use crate::loss::LossParameter;
-use crate::loss_models::Attachment;
+use crate::attachment::Attachment;
+use crate::engine_losses::EngineInput;
+use crate::loss_parameter::LossParameter;
 
 /// A stage that cannot be set up for a mechanism (a loss model, a gear pair): the input at
 /// fault and why.
@@ -19,6 +20,14 @@ impl std::fmt::Display for SetupError {
     }
 }
 
+/// A setup that failed: the input at fault and why.
+pub fn failed(field: SetupInput, e: &dyn std::fmt::Display) -> SetupError {
+    SetupError {
+        field,
+        rule: e.to_string(),
+    }
+}
+
 /// An input a stage is set up from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SetupInput {
@@ -30,35 +39,21 @@ pub enum SetupInput {
     Model(Attachment),
     /// An input of the gear pairs ([`crate::GearSpec`]).
     Gear(GearInput),
-    /// [`crate::EngineLosses::ambient_pressure`].
-    AmbientPressure,
-    /// [`crate::EngineLosses::intake_pressure`].
-    IntakePressure,
-    /// [`crate::EngineLosses::exhaust_back_pressure`].
-    ExhaustBackPressure,
-    /// [`crate::EngineLosses::compression_ratio`].
-    CompressionRatio,
+    /// An input of the engine's losses ([`crate::EngineLosses`]).
+    Engine(EngineInput),
 }
 
 impl SetupInput {
     /// Every input, each parameter and attachment once.
     pub fn all() -> Vec<SetupInput> {
-        let fixed = [
-            SetupInput::Bore,
-            SetupInput::AmbientPressure,
-            SetupInput::IntakePressure,
-            SetupInput::ExhaustBackPressure,
-            SetupInput::CompressionRatio,
-        ];
+        let engine = EngineInput::ALL.into_iter().map(SetupInput::Engine);
         let parameters = LossParameter::ALL.into_iter().map(SetupInput::Parameter);
         let models = Attachment::ALL.into_iter().map(SetupInput::Model);
         let gear = GearInput::ALL.into_iter().map(SetupInput::Gear);
-        fixed
-            .into_iter()
-            .chain(parameters)
-            .chain(models)
-            .chain(gear)
-            .collect()
+        let inputs = std::iter::once(SetupInput::Bore)
+            .chain(engine)
+            .chain(parameters);
+        inputs.chain(models).chain(gear).collect()
     }
 }
 

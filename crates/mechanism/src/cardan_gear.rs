@@ -144,7 +144,10 @@ impl CardanGear {
         let pressure_angle = number(options, "pressure_angle", 20f64.to_radians());
         if !(pressure_angle > 0.0 && pressure_angle < 45f64.to_radians()) {
             return Err(MechanismError::new(
-                Input::option(&ENTRY, "pressure_angle"),
+                Input::Option {
+                    mechanism: ENTRY.name,
+                    name: "pressure_angle",
+                },
                 format!("{}°", pressure_angle.to_degrees()),
                 "must be between 0° and 45°",
             ));

@@ -206,19 +206,37 @@ fn check_dimensions(
 ) -> Result<(), MechanismError> {
     if !(2..=MAX_MODULUS).contains(&m) {
         return Err(MechanismError::new(
-            Input::option(&ENTRY, "angular_modulus"),
+            Input::Option {
+                mechanism: ENTRY.name,
+                name: "angular_modulus",
+            },
             m,
             format!("must be an integer from 2 to {MAX_MODULUS}"),
         ));
     }
     check_length(Input::CrankLength, p)?;
-    check_length(Input::option(&ENTRY, "piston_link_length"), r)?;
-    check_length(Input::option(&ENTRY, "planet_radius"), u)?;
+    check_length(
+        Input::Option {
+            mechanism: ENTRY.name,
+            name: "piston_link_length",
+        },
+        r,
+    )?;
+    check_length(
+        Input::Option {
+            mechanism: ENTRY.name,
+            name: "planet_radius",
+        },
+        u,
+    )?;
     // Eq 11 has a real branch for every θ, and the rod AB keeps a positive length
     // q ∈ [r − p, r + p] (eq 13), only if r > p.
     if r <= p {
         return Err(MechanismError::new(
-            Input::option(&ENTRY, "piston_link_length"),
+            Input::Option {
+                mechanism: ENTRY.name,
+                name: "piston_link_length",
+            },
             r,
             format!("must be longer than geometry.crank_length ({p} m): ψ(θ) = θ − asin(p·sin((m+1)θ)/r) (Vidinsky eq 11) needs r > p, and B would reach A"),
         ));
@@ -387,15 +405,30 @@ impl Hypotrochoid {
         let m = number(options, "angular_modulus", 2.0);
         if !(m.fract() == 0.0 && (2.0..=MAX_MODULUS as f64).contains(&m)) {
             return Err(MechanismError::new(
-                Input::option(&ENTRY, "angular_modulus"),
+                Input::Option {
+                mechanism: ENTRY.name,
+                name: "angular_modulus",
+            },
                 m,
                 format!("must be an integer from 2 to {MAX_MODULUS}: the ring gear has m+1 ≥ 3 planet radii (Vidinsky eqs 3, 6)"),
             ));
         }
         let u = number(options, "planet_radius", p * MODEL_PLANET / MODEL_CRANK);
-        check_length(Input::option(&ENTRY, "planet_radius"), u)?;
+        check_length(
+            Input::Option {
+                mechanism: ENTRY.name,
+                name: "planet_radius",
+            },
+            u,
+        )?;
         let r = number(options, "piston_link_length", 1.7 * m * u);
-        check_length(Input::option(&ENTRY, "piston_link_length"), r)?;
+        check_length(
+            Input::Option {
+                mechanism: ENTRY.name,
+                name: "piston_link_length",
+            },
+            r,
+        )?;
         let mut estimate = mass::estimate_for(inputs, p, r, geometry.bore);
         estimate.wheel_inertia = mass::cardan_wheel_inertia(2.0 * u);
         estimate.piston_mass = 0.0;

@@ -25,7 +25,8 @@ pub enum Input {
 }
 
 impl Input {
-    /// Every input but the options: those are listed by the registry ([`crate::MECHANISMS`]).
+    /// Every input but the options: those are listed by the registry ([`crate::MECHANISMS`],
+    /// `Input::all` at the crate's root).
     pub const SHARED: [Input; 5] = [
         Input::CrankLength,
         Input::RodLength,
@@ -33,23 +34,6 @@ impl Input {
         Input::RodCg,
         Input::Steps,
     ];
-
-    /// The option `name` of the registry entry `entry`.
-    pub(crate) const fn option(entry: &crate::Entry, name: &'static str) -> Input {
-        Input::Option {
-            mechanism: entry.name,
-            name,
-        }
-    }
-
-    /// Every input a mechanism error can name: [`Input::SHARED`] and every option of every
-    /// registry entry.
-    pub fn all() -> Vec<Input> {
-        let options = crate::MECHANISMS
-            .iter()
-            .flat_map(|e| e.options.iter().map(move |o| Input::option(e, o.name)));
-        Input::SHARED.into_iter().chain(options).collect()
-    }
 }
 
 #[cfg(test)]

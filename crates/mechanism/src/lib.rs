@@ -57,6 +57,20 @@ pub const MECHANISMS: &[Entry] = &[
     hypotrochoid::ENTRY,
 ];
 
+impl Input {
+    /// Every input a mechanism error can name: [`Input::SHARED`] and every option of every
+    /// registry entry (here, at the root, since it reads the registry).
+    pub fn all() -> Vec<Input> {
+        let options = MECHANISMS.iter().flat_map(|e| {
+            e.options.iter().map(move |o| Input::Option {
+                mechanism: e.name,
+                name: o.name,
+            })
+        });
+        Input::SHARED.into_iter().chain(options).collect()
+    }
+}
+
 /// The registry entry called `name`.
 pub fn entry(name: &str) -> Option<&'static Entry> {
     MECHANISMS.iter().find(|e| e.name == name)

@@ -4,13 +4,13 @@
 //! [`crate::loss_models::LOSS_MODELS`], call them); [`crate::LossBudget`] binds them by joint
 //! kind.
 
+use crate::attachment::Attachment;
 use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, LossParameter};
-use crate::loss_models::Attachment;
+use crate::loss::{BindInput, LaneFailure, Loss, LossLanes, LossParameter};
 use crate::mesh::{mesh_pair, mesh_speeds, tangential};
-use crate::{GearInput, SetupError, SetupInput};
+use crate::setup_error::{failed, GearInput, SetupError, SetupInput};
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
     KarhulaRingPack, KeptPower, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel,
