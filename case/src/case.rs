@@ -7,6 +7,7 @@ use crate::digest::InputDigest;
 use crate::error::Invalid;
 use crate::error::{CaseError, Machine};
 use crate::gas::GasCase;
+use crate::input_field::mechanism_field;
 use crate::masses::MassTable;
 use crate::quantity::{
     Angle, AngularAcceleration, AngularSpeed, Length, Positive, Quantity, Whole,
@@ -15,7 +16,7 @@ use crate::read_once::ReadOnce;
 use crate::setup::Setup;
 use crate::units::is_folder_name;
 use cardan_dynamics::{Friction, GearSpec};
-use cardan_mechanism::{CrankMotion, MachineGeometry, Mechanism};
+use cardan_mechanism::{CrankMotion, Input, MachineGeometry, Mechanism};
 use rayon::prelude::*;
 use schemars::JsonSchema;
 use serde::Deserialize;
@@ -715,18 +716,18 @@ fn build_mechanisms(
         let options = crate::mechanism_table::options(own.options.get(entry.name), entry)
             .map_err(field_error)?;
         let mechanism = (entry.build)(geometry, &inputs, &options).map_err(|e| {
-            let field = match e.field.as_str() {
+            let field = match e.field {
                 // The rod's centre of gravity may come from either mass table.
-                "masses.rod_cg" if own_masses.as_ref().is_some_and(|t| t.rod_cg.is_some()) => {
+                Input::RodCg if own_masses.as_ref().is_some_and(|t| t.rod_cg.is_some()) => {
                     format!("masses.{}.rod_cg", entry.name)
                 }
-                f => f.to_string(),
+                f => mechanism_field(f),
             };
             invalid(&field, &e.value, &e.rule)
         })?;
         mechanism
             .check_angles(start, step, steps)
-            .map_err(|e| invalid(&e.field, &e.value, &e.rule))?;
+            .map_err(|e| invalid(&mechanism_field(e.field), &e.value, &e.rule))?;
         mechanisms.push(Arc::from(mechanism));
     }
     let offset = raw.geometry.pin_offset.as_ref();

@@ -10,6 +10,7 @@
 
 use crate::error::{CaseError, Invalid, Machine};
 use crate::gas::{Clearance, GasCase};
+use crate::input_field::{attachment_field, parameter_field};
 use crate::plausible::{
     BearingLoadConstant, FrictionCoefficient, JournalClearanceRatio, JournalLengthRatio,
     LubricationFactor,
@@ -409,8 +410,8 @@ pub fn build(
 /// A value of `[friction]` where the table sets it: SI, and as written.
 type Set<'a> = Option<(f64, &'a str)>;
 
-/// Each loss-model parameter of `[friction]`: its field, and its value where the table sets it.
-fn parameter_fields(t: &FrictionTable) -> Vec<(LossParameter, &'static str, Set<'_>)> {
+/// Each loss-model parameter of `[friction]`, and its value where the table sets it.
+fn parameter_fields(t: &FrictionTable) -> Vec<(LossParameter, Set<'_>)> {
     fn set<D, const RULE: u8>(q: &Option<Quantity<D, RULE>>) -> Set<'_> {
         q.as_ref().map(|q| (q.si, q.written.as_str()))
     }
@@ -421,46 +422,20 @@ fn parameter_fields(t: &FrictionTable) -> Vec<(LossParameter, &'static str, Set<
     vec![
         (
             RingFrictionCoefficient,
-            "ring_friction_coefficient",
             ranged(&t.ring_friction_coefficient),
         ),
-        (
-            RingCrownHeight,
-            "ring_crown_height",
-            set(&t.ring_crown_height),
-        ),
+        (RingCrownHeight, set(&t.ring_crown_height)),
         (
             SkirtFrictionCoefficient,
-            "skirt_friction_coefficient",
             ranged(&t.skirt_friction_coefficient),
         ),
-        (SkirtLength, "skirt_length", set(&t.skirt_length)),
-        (SkirtClearance, "skirt_clearance", set(&t.skirt_clearance)),
-        (
-            LubricationFactor,
-            "lubrication_factor",
-            ranged(&t.lubrication_factor),
-        ),
-        (
-            BearingLoadConstant,
-            "bearing_load_constant",
-            ranged(&t.bearing_load_constant),
-        ),
-        (
-            JournalLengthRatio,
-            "journal_length_ratio",
-            ranged(&t.journal_length_ratio),
-        ),
-        (
-            JournalClearanceRatio,
-            "journal_clearance_ratio",
-            ranged(&t.journal_clearance_ratio),
-        ),
-        (
-            CamFrictionCoefficient,
-            "cam_friction_coefficient",
-            ranged(&t.cam_friction_coefficient),
-        ),
+        (SkirtLength, set(&t.skirt_length)),
+        (SkirtClearance, set(&t.skirt_clearance)),
+        (LubricationFactor, ranged(&t.lubrication_factor)),
+        (BearingLoadConstant, ranged(&t.bearing_load_constant)),
+        (JournalLengthRatio, ranged(&t.journal_length_ratio)),
+        (JournalClearanceRatio, ranged(&t.journal_clearance_ratio)),
+        (CamFrictionCoefficient, ranged(&t.cam_friction_coefficient)),
     ]
 }
 
@@ -473,18 +448,19 @@ fn parameters(
     invalid: &Invalid,
 ) -> Result<ParameterValues, CaseError> {
     let mut values = ParameterValues::default();
-    for (parameter, field, set) in parameter_fields(t) {
+    for (parameter, set) in parameter_fields(t) {
         let Some((si, written)) = set else { continue };
         if !chosen.iter().any(|m| m.parameters.contains(&parameter)) {
             let readers: Vec<String> = (loss_models::LOSS_MODELS.iter())
                 .filter(|m| m.parameters.contains(&parameter))
-                .map(|m| format!("{} = \"{}\"", m.attachment.field(), m.name))
+                .map(|m| format!("{} = \"{}\"", attachment_field(m.attachment), m.name))
                 .collect();
             let rule = format!(
                 "is read only with {}: no model of this case reads it (choose that model, or leave the value out)",
                 readers.join(" or ")
             );
-            return Err(invalid(&format!("friction.{field}"), &written, &rule));
+            let field = format!("friction.{}", parameter_field(parameter));
+            return Err(invalid(&field, &written, &rule));
         }
         values.set(parameter, si);
     }

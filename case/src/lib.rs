@@ -11,6 +11,7 @@ pub mod friction;
 pub mod gas;
 pub mod gear;
 mod gear_speed;
+mod input_field;
 pub mod json_schema;
 pub mod machine_motion;
 pub mod masses;

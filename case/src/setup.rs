@@ -44,7 +44,7 @@ impl Setup {
         let mechanism = machine.0.mechanism().as_ref();
         let failed = |e: cardan_dynamics::SetupError| {
             invalid(
-                &e.field,
+                &crate::input_field::setup_field(e.field),
                 &format!("(for the {})", mechanism.name()),
                 &e.rule,
             )
@@ -142,8 +142,8 @@ pub(crate) fn check_machine(
         match cardan_dynamics::Machine::build(machine, Arc::clone(&m), kind) {
             Ok(built) => machines.push(Arc::new(built)),
             Err(e) => {
-                let (field, rule) = e.split_once(": ").unwrap_or(("balance", &e));
-                return Err(invalid(field, &format!("(for the {})", m.name()), rule));
+                let field = crate::input_field::device_field(e.device);
+                return Err(invalid(field, &format!("(for the {})", m.name()), &e.rule));
             }
         }
     }

@@ -22,6 +22,7 @@
 //!   [`CardanCounterweights`] (from [`CardanMasses`]).
 
 pub mod counterweight;
+mod device_error;
 pub mod harmonics;
 pub mod layout;
 pub mod machine;
@@ -31,6 +32,7 @@ pub use counterweight::{
     crank_counterweight, lanchester_shafts, CardanCounterweights, CardanMasses, FirstOrderMasses,
     Rotor,
 };
+pub use device_error::{Device, DeviceError};
 pub use harmonics::{orders, revolution, Order};
 pub use layout::{throws_from_firing_order, Cylinder, Layout, MachineOrders, MachineShaking};
 pub use machine::{

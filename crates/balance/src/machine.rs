@@ -13,6 +13,7 @@ use crate::counterweight::{
     crank_counterweight, lanchester_shafts, CardanCounterweights, CardanMasses, FirstOrderMasses,
     Rotor,
 };
+use crate::device_error::{Device, DeviceError};
 use crate::layout::{Layout, MachineOrders, MachineShaking};
 use crate::shaking::{shaking_lane, Shaking};
 use cardan_mechanism::{Column, CrankState, Mechanism, State, StateBlock, C};
@@ -140,7 +141,7 @@ impl MachineBalance {
     /// backward rotor m₂·o₀·d cancels B₁/ω² (o₀ the body's orientation at θ = 0: a point
     /// z + o₀·e^{−iθ}·d of a body turning at −ω is a backward rotor of m·o₀·d): opposite the
     /// wheel pin T for the cardan gear.
-    pub fn equip(&self, mechanism: Arc<dyn Mechanism>) -> Result<Arc<dyn Mechanism>, String> {
+    pub fn equip(&self, mechanism: Arc<dyn Mechanism>) -> Result<Arc<dyn Mechanism>, DeviceError> {
         if !self.cardan_counterweights {
             return Ok(mechanism);
         }
@@ -166,17 +167,18 @@ impl MachineBalance {
         let offset = -backward / (pair.wheel_mass * o0);
         m.with_added_mass(body, pair.wheel_mass, offset, 0.0)
             .map(Arc::from)
-            .ok_or_else(|| {
-                format!(
-                    "balance.cardan_counterweights: the {} cannot carry a counterweight on its body turning against the crank",
+            .ok_or_else(|| DeviceError {
+                device: Device::CardanCounterweights,
+                rule: format!(
+                    "the {} cannot carry a counterweight on its body turning against the crank",
                     m.name()
-                )
+                ),
             })
     }
 
     /// The machine of `mechanism` ([`MachineBalance::equip`]ped first, which it may already
     /// be): its rotors sized (module note), or why a device cannot be formed with it.
-    pub fn prepare(&self, mechanism: Arc<dyn Mechanism>) -> Result<PreparedBalance, String> {
+    pub fn prepare(&self, mechanism: Arc<dyn Mechanism>) -> Result<PreparedBalance, DeviceError> {
         let mechanism = self.equip(mechanism)?;
         let m = mechanism.as_ref();
         let (own, carried) = self.cylinder_rotors(m)?;
@@ -202,7 +204,7 @@ impl MachineBalance {
     /// counterweight or the cardan pair's crank counterweight (the wheel's is the equipped
     /// mechanism's own mass, [`MachineBalance::equip`]); and the Σ m·ρ of those the crankshaft
     /// carries alone ([`PreparedBalance::crank_masses`]).
-    fn cylinder_rotors(&self, m: &dyn Mechanism) -> Result<(Vec<Rotor>, C), String> {
+    fn cylinder_rotors(&self, m: &dyn Mechanism) -> Result<(Vec<Rotor>, C), DeviceError> {
         let unbalance = m.masses().crank_unbalance;
         let mut own = Vec::new();
         if unbalance != 0.0 {
@@ -212,7 +214,10 @@ impl MachineBalance {
         let first = |own: &[Rotor]| Layout::single().orders(m, own, 1.0, ORDER_STEPS, 1).force[1];
         if let Some(fraction) = self.counterweight {
             if self.cardan_counterweights {
-                return Err("balance.counterweight: cannot be combined with cardan_counterweights = true (the pair already cancels the whole first order)".into());
+                return Err(DeviceError {
+                    device: Device::Counterweight,
+                    rule: "cannot be combined with cardan_counterweights = true (the pair already cancels the whole first order)".into(),
+                });
             }
             let masses = FirstOrderMasses::from_first_order(&first(&own), 1.0);
             let counterweight = crank_counterweight(&masses, fraction, 0.0);

@@ -122,3 +122,33 @@ fn the_balance_of_a_step_with_a_kept_block_is_the_layout_sum_bit_for_bit() {
         }
     }
 }
+
+/// A device that cannot be formed names the device (the case maps it to its field): the crank
+/// counterweight beside the cardan pair, with every mechanism (the pair, where a mechanism
+/// could not carry it, refused first).
+#[test]
+fn a_device_that_cannot_be_formed_names_the_device() {
+    use cardan_balance::Device;
+    let both = MachineBalance {
+        counterweight: Some(0.5),
+        cardan_counterweights: true,
+        ..MachineBalance::default()
+    };
+    let pair = MachineBalance {
+        cardan_counterweights: true,
+        ..MachineBalance::default()
+    };
+    for entry in MECHANISMS {
+        let m: Arc<dyn Mechanism> = machine(entry.name, &THESIS, &Default::default()).into();
+        let e = both.prepare(Arc::clone(&m)).err();
+        // The pair is equipped first: a mechanism that cannot carry it is refused for it.
+        let device = e.map(|e| e.device);
+        assert!(device.is_some(), "{}", entry.name);
+        if let Err(e) = pair.prepare(Arc::clone(&m)) {
+            assert_eq!(e.device, Device::CardanCounterweights, "{}", entry.name);
+            assert_eq!(device, Some(Device::CardanCounterweights), "{}", entry.name);
+        } else {
+            assert_eq!(device, Some(Device::Counterweight), "{}", entry.name);
+        }
+    }
+}

@@ -32,13 +32,14 @@ use cardan_mechanism::{
     StateBlock, Topology, C, ZERO,
 };
 
-use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil};
+use crate::loss::{BindInput, LaneFailure, Loss, LossLanes, Oil};
 use crate::loss_models::{find, Attachment};
 use crate::losses::Friction;
 use crate::mesh::{
     mesh_pair, mesh_speeds, tangential, GearMaterial, GearSpec, GearStandard, ToothLoad,
 };
 use crate::stage::{Block, SetupError};
+use crate::{failed, GearInput, SetupInput};
 use cardan_gears::iso6336::{IsoDynamic, IsoInputs, IsoMember, PreparedIso, STEEL_DENSITY};
 use cardan_gears::materials::material;
 
@@ -55,7 +56,7 @@ fn computed_j(pair: &GearPair, memo: &BendingJMemo) -> Result<[f64; 2], SetupErr
         j[k] = memo
             .get(pair, GeneratedMember::new(which))
             .map_err(|e| SetupError {
-                field: "gear.j".into(),
+                field: SetupInput::Gear(GearInput::J),
                 rule: format!(
                     "the {name}'s bending geometry factor J cannot be computed from the tooth form ({e}): give [gear] j"
                 ),
@@ -375,7 +376,7 @@ fn gear_set(
     // The load distribution's empirical Cpf holds up to 40 in (AGMA 2001-D04 eq. 28-30):
     // a wider face is refused here, before any step, not at the first step's rating.
     cardan_gears::agma::factors::pinion_proportion_factor(face_width, pair.pinion.working)
-        .map_err(|e| failed("gear.face_width", &e))?;
+        .map_err(|e| failed(SetupInput::Gear(GearInput::FaceWidth), &e))?;
     let j_factors = match spec.j {
         Some(j) => j,
         None => computed_j(&pair, memo)?,
@@ -384,9 +385,9 @@ fn gear_set(
         let (bending_allowable, contact_allowable) = match spec.material {
             GearMaterial::ThroughHardened => (
                 bending_allowable_through_hardened(spec.hardness[m], Grade::Two)
-                    .map_err(|e| failed("gear.hardness", &e))?,
+                    .map_err(|e| failed(SetupInput::Gear(GearInput::Hardness), &e))?,
                 contact_allowable_through_hardened(spec.hardness[m], Grade::Two)
-                    .map_err(|e| failed("gear.hardness", &e))?,
+                    .map_err(|e| failed(SetupInput::Gear(GearInput::Hardness), &e))?,
             ),
             GearMaterial::Carburized => carburized_allowables(Grade::Two),
         };
@@ -412,14 +413,15 @@ fn gear_set(
         },
         size: SizeFactor::Given([1.0, 1.0]),
         surface_condition: 1.0,
-        geometry_i: pitting_geometry_factor(&pair, IForm::Lpstc).map_err(|e| failed("gear", &e))?,
+        geometry_i: pitting_geometry_factor(&pair, IForm::Lpstc)
+            .map_err(|e| failed(SetupInput::Gear(GearInput::Pair), &e))?,
         elastic_coefficient: elastic_coefficient(
             spec.youngs_modulus,
             0.3,
             spec.youngs_modulus,
             0.3,
         )
-        .map_err(|e| failed("gear.youngs_modulus", &e))?,
+        .map_err(|e| failed(SetupInput::Gear(GearInput::YoungsModulus), &e))?,
         temperature: 1.0,
         reliability: 1.0,
         pinion: member(0)?,
@@ -457,7 +459,7 @@ fn tooth_load_axis(tooth_load: ToothLoad, force: MeshForce, name: &str) -> Resul
     match (tooth_load, force) {
         (_, MeshForce::Tied { direction, .. }) => Ok(direction),
         (ToothLoad::Thesis, MeshForce::Involute) => Err(SetupError {
-            field: "gear.tooth_load".into(),
+            field: SetupInput::Gear(GearInput::ToothLoad),
             rule: format!(
                 "\"thesis\" is Karhula's reading of his own mesh force, which acts \
                  along a fixed direction; the mesh {name} has involute teeth pushing \
@@ -496,7 +498,7 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
     if grade.is_none() && (given.dynamic_factor.is_none() || given.transverse_load_factor.is_none())
     {
         return Err(failed(
-            "gear.accuracy_grade",
+            SetupInput::Gear(GearInput::AccuracyGrade),
             &"an ISO 6336 rating needs the ISO 1328-1 accuracy grade of both gears (1-12) for \
               K_v and K_Hα by ISO 6336-1 method B: give [gear] accuracy_grade",
         ));
@@ -511,7 +513,7 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
         None => {
             (set.rating.load_distribution)
                 .factor(set.face_width, pair.pinion.working)
-                .map_err(|e| failed("gear.face_width", &e))?
+                .map_err(|e| failed(SetupInput::Gear(GearInput::FaceWidth), &e))?
                 .km
         }
     };
@@ -521,7 +523,7 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
         let hardness = (spec.material == GearMaterial::ThroughHardened).then_some(spec.hardness[k]);
         let limits = table.iso_limits(hardness, spec.iso_quality).map_err(|e| {
             failed(
-                "gear.hardness",
+                SetupInput::Gear(GearInput::Hardness),
                 &format!(
                     "{e} (the {name}'s {} HB): give a hardness within it, or rate by AGMA alone \
                      (standard = \"agma2001\")",
@@ -531,7 +533,7 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
         })?;
         let root = cardan_gears::iso6336_method_b(pair, GeneratedMember::new(which)).map_err(|e| {
             failed(
-                "gear",
+                SetupInput::Gear(GearInput::Pair),
                 &format!("the {name}'s ISO 6336-3 Y_F and Y_S cannot be computed from the tooth form ({e})"),
             )
         })?;
@@ -566,7 +568,8 @@ fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError>
         lubrication: None,
         members: [member(0)?, member(1)?],
     };
-    PreparedIso::new(pair, &inputs).map_err(|e| failed("gear", &format!("ISO 6336: {e}")))
+    PreparedIso::new(pair, &inputs)
+        .map_err(|e| failed(SetupInput::Gear(GearInput::Pair), &format!("ISO 6336: {e}")))
 }
 
 /// The mesh loss of gear-mesh joint `joint` of `mechanism` on the pair of `spec`: the model of
@@ -594,9 +597,12 @@ fn mesh_loss(
         joint,
         bearings: None,
     };
-    model
-        .bind_at(&site)
-        .unwrap_or_else(|| Err(failed("friction.gear_mesh", &"is not a gear-mesh loss")))
+    model.bind_at(&site).unwrap_or_else(|| {
+        Err(failed(
+            SetupInput::Model(Attachment::GearMesh),
+            &"is not a gear-mesh loss",
+        ))
+    })
 }
 
 impl RatedMesh {

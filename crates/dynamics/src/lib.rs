@@ -44,10 +44,11 @@ pub use cardan_loads::{
     Solver,
 };
 pub use cardan_losses::{
-    engine_metrics, fmep_breakdown, pnh_engine, radial, tangential, Attachment, BearingSize, Bind,
-    BindInput, CircularArcCam, EngineLosses, FmepModel, FollowerContact, Friction, GearMaterial,
-    GearSpec, LaneFailure, Loss, LossBudget, LossLanes, LossModel, LossParameter, Oil,
-    ParameterValues, ToothLoad, ValveTrain, ValveTrainGeometry, ValveTrainLoss, LOSS_MODELS,
+    engine_metrics, failed, fmep_breakdown, pnh_engine, radial, tangential, Attachment,
+    BearingSize, Bind, BindInput, CircularArcCam, EngineInput, EngineLosses, FmepModel,
+    FollowerContact, Friction, GearInput, GearMaterial, GearSpec, LaneFailure, Loss, LossBudget,
+    LossLanes, LossModel, LossParameter, Oil, ParameterValues, SetupInput, ToothLoad, ValveTrain,
+    ValveTrainGeometry, ValveTrainLoss, LOSS_MODELS,
 };
 pub use cardan_pipeline::{
     run, run_parallel, run_summary, summary_chunk, Block, GasAt, Joinable, LaneError, PassedOn,

@@ -69,7 +69,7 @@ impl Machine {
         machine: &MachineBalance,
         mechanism: Arc<dyn Mechanism>,
         kind: MachineKind,
-    ) -> Result<Self, String> {
+    ) -> Result<Self, cardan_balance::DeviceError> {
         let mut notes = Vec::new();
         if machine.cardan_counterweights && !machine.cardan_pair_applies(mechanism.as_ref()) {
             notes.push(format!(

@@ -342,7 +342,10 @@ fn switched_off_components_leave_the_budget_as_it_was() {
         ..EngineLosses::off()
     });
     let e = LossBudget::new(&bad, m.as_ref(), BORE).unwrap_err();
-    assert_eq!(e.field, "friction.intake_pressure");
+    assert_eq!(
+        e.field,
+        cardan_dynamics::SetupInput::Engine(cardan_dynamics::EngineInput::IntakePressure)
+    );
 }
 
 /// The round engine of `docs/validation/engine-friction.md` through the cross-check's own scaling:

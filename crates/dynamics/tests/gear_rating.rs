@@ -138,7 +138,10 @@ fn an_interfering_pair_is_refused_with_its_remedy() {
         ..GearSpec::default()
     };
     let e = GearRatings::new(&spec, m.as_ref(), None).unwrap_err();
-    assert_eq!(e.field, "gear.ring_addendum");
+    assert_eq!(
+        e.field,
+        cardan_dynamics::SetupInput::Gear(cardan_dynamics::GearInput::RingAddendum)
+    );
     assert!(e.rule.contains("shorten the ring addendum"), "{}", e.rule);
     // 25 teeth on the wheel do not (the module follows: 2·30 mm / 25).
     let spec = GearSpec {

@@ -316,19 +316,19 @@ impl EngineLosses {
         }
     }
 
-    /// Checks the pressures and the compression ratio: field and rule of the first broken one.
-    pub fn check(&self) -> Result<(), (&'static str, String)> {
+    /// Checks the pressures and the compression ratio: input and rule of the first broken one.
+    pub fn check(&self) -> Result<(), (EngineInput, String)> {
         let pa = self.ambient_pressure;
         if !(pa > 0.0 && pa.is_finite()) {
             return Err((
-                "friction.ambient_pressure",
+                EngineInput::AmbientPressure,
                 format!("must be positive, got {pa} Pa"),
             ));
         }
         let pi = self.intake_pressure;
         if !(pi > 0.1 * pa && pi <= pa) {
             return Err((
-                "friction.intake_pressure",
+                EngineInput::IntakePressure,
                 format!(
                     "must be above 0.1 × ambient ({} Pa, where Bishop's standard imep is zero) and at most ambient ({pa} Pa, wide-open throttle: Bishop's engines are not boosted), got {pi} Pa",
                     0.1 * pa
@@ -337,7 +337,7 @@ impl EngineLosses {
         }
         if !(self.exhaust_back_pressure >= 0.0 && self.exhaust_back_pressure.is_finite()) {
             return Err((
-                "friction.exhaust_back_pressure",
+                EngineInput::ExhaustBackPressure,
                 format!(
                     "must not be negative, got {} Pa",
                     self.exhaust_back_pressure
@@ -346,12 +346,35 @@ impl EngineLosses {
         }
         if !(self.compression_ratio > 1.0 && self.compression_ratio.is_finite()) {
             return Err((
-                "gas.compression_ratio",
+                EngineInput::CompressionRatio,
                 format!("must exceed 1, got {}", self.compression_ratio),
             ));
         }
         Ok(())
     }
+}
+
+/// An input of [`EngineLosses`] its check can refuse.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EngineInput {
+    /// [`EngineLosses::ambient_pressure`].
+    AmbientPressure,
+    /// [`EngineLosses::intake_pressure`].
+    IntakePressure,
+    /// [`EngineLosses::exhaust_back_pressure`].
+    ExhaustBackPressure,
+    /// [`EngineLosses::compression_ratio`].
+    CompressionRatio,
+}
+
+impl EngineInput {
+    /// Every input.
+    pub const ALL: [EngineInput; 4] = [
+        EngineInput::AmbientPressure,
+        EngineInput::IntakePressure,
+        EngineInput::ExhaustBackPressure,
+        EngineInput::CompressionRatio,
+    ];
 }
 
 /// The valve train of one cylinder bound to a mechanism's crank.

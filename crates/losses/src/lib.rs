@@ -9,18 +9,20 @@
 //! efficiency ([`MachineKind`]). `cardan-dynamics` evaluates the budget at every step (its
 //! loss stage) and re-exports this crate's items.
 
+mod attachment;
 pub mod engine_losses;
 pub mod fmep;
 pub mod loss;
 pub mod loss_models;
+mod loss_parameter;
 pub mod losses;
 mod machine_kind;
 pub mod mesh;
 mod setup_error;
 
 pub use engine_losses::{
-    CircularArcCam, EngineLosses, FmepModel, FollowerContact, ValveTrain, ValveTrainGeometry,
-    ValveTrainLoss,
+    CircularArcCam, EngineInput, EngineLosses, FmepModel, FollowerContact, ValveTrain,
+    ValveTrainGeometry, ValveTrainLoss,
 };
 pub use fmep::{engine_metrics, fmep_breakdown, pnh_engine};
 pub use loss::{BindInput, LaneFailure, Loss, LossLanes, LossParameter, Oil, ParameterValues};
@@ -28,4 +30,4 @@ pub use loss_models::{Attachment, Bind, LossModel, LOSS_MODELS};
 pub use losses::{BearingSize, Friction, LossBudget};
 pub use machine_kind::MachineKind;
 pub use mesh::{radial, tangential, GearMaterial, GearSpec, IsoOverrides, ToothLoad};
-pub use setup_error::SetupError;
+pub use setup_error::{failed, GearInput, SetupError, SetupInput};

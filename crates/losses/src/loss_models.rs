@@ -9,6 +9,7 @@
 //! parameters it reads; a parameter of its own is a [`LossParameter`] with its default and a
 //! field of the case's `[friction]` table.
 
+pub use crate::attachment::Attachment;
 use crate::engine_losses::FollowerContact;
 use crate::loss::{BindInput, LossParameter, ParameterValues};
 use crate::losses::models::{
@@ -17,34 +18,6 @@ use crate::losses::models::{
 };
 use cardan_friction::{PalmgrenCoefficients, RollingReading, SkfDeepGrooveBall};
 use cardan_gears::mesh_loss::Reading;
-
-/// Where a loss model attaches.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Attachment {
-    /// The rings of every piston in a cylinder (`rings`).
-    Rings,
-    /// A piston's slide on the frame (`skirt`).
-    Skirt,
-    /// The bearings of a revolute joint (`bearings`, `joints.<name>`).
-    Bearing,
-    /// A gear mesh (`gear_mesh`).
-    GearMesh,
-    /// An engine's valve train (`valve_train`).
-    ValveTrain,
-}
-
-impl Attachment {
-    /// The field of `[friction]` that chooses this attachment's model.
-    pub fn field(self) -> &'static str {
-        match self {
-            Attachment::Rings => "rings",
-            Attachment::Skirt => "skirt",
-            Attachment::Bearing => "bearings",
-            Attachment::GearMesh => "gear_mesh",
-            Attachment::ValveTrain => "valve_train",
-        }
-    }
-}
 
 /// The word that switches an attachment's loss off.
 pub const NONE: &str = "none";
@@ -99,7 +72,7 @@ impl PartialEq for LossModel {
 
 impl std::fmt::Debug for LossModel {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        write!(f, "{} = \"{}\"", self.attachment.field(), self.name)
+        write!(f, "{:?} = \"{}\"", self.attachment, self.name)
     }
 }
 

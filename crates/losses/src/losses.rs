@@ -20,11 +20,11 @@
 pub mod models;
 
 use crate::engine_losses::{displacement, EngineLosses, ValveTrainLoss};
-use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, Oil, ParameterValues};
+use crate::loss::{BindInput, LaneFailure, Loss, LossLanes, Oil, ParameterValues};
 use crate::loss_models::{default_model, Attachment, LossModel};
 use crate::mesh::GearSpec;
+use crate::setup_error::{failed, SetupError, SetupInput};
 use crate::MachineKind;
-use crate::SetupError;
 use cardan_friction::KARHULA_SKIRT_MU;
 use cardan_mechanism::{
     Bearings, Column, JointKind, Loads, LoadsBlock, Mechanism, State, StateBlock, Topology, LANES,
@@ -131,7 +131,7 @@ impl Friction {
         };
         model.bind_at(&site).unwrap_or_else(|| {
             Err(failed(
-                model.attachment.field(),
+                SetupInput::Model(model.attachment),
                 &"is bound by the engine, not at a joint",
             ))
         })
@@ -209,11 +209,11 @@ impl LossBudget {
         if let (Some(engine), true) = (&friction.engine, mechanism.has_cylinder()) {
             engine
                 .check()
-                .map_err(|(field, rule)| failed(field, &rule))?;
+                .map_err(|(field, rule)| failed(SetupInput::Engine(field), &rule))?;
             let volume = displacement(bore, mechanism.stroke());
             if let Some(train) = &engine.valve_train {
                 let part = ValveTrainLoss::new(train, bore, mechanism.top_dead_centre())
-                    .map_err(|e| failed("friction.valve_train", &e))?;
+                    .map_err(|e| failed(SetupInput::Model(Attachment::ValveTrain), &e))?;
                 names.push("valve_train".to_string());
                 parts.push(Box::new(part));
             }

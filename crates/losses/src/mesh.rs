@@ -3,7 +3,7 @@
 //! the gear pair built from the joint's declared pitch radius, ratio, pressure angle and
 //! internal ring with the case's [`GearSpec`] (ISO 21771 through [`cardan_gears::geometry`]).
 
-use crate::SetupError;
+use crate::{GearInput, SetupError, SetupInput};
 use cardan_gears::geometry::{GearPair, PairSpec};
 pub use cardan_gears::materials::IsoQuality;
 use cardan_gears::mesh_loss::MeshSpeeds;
@@ -187,8 +187,8 @@ pub fn mesh_pair(
     internal: bool,
     pressure_angle: f64,
 ) -> Result<(GearPair, f64), SetupError> {
-    let failed = |field: &str, rule: String| SetupError {
-        field: field.into(),
+    let failed = |field: GearInput, rule: String| SetupError {
+        field: SetupInput::Gear(field),
         rule,
     };
     let z1 = spec.teeth as i32;
@@ -196,7 +196,7 @@ pub fn mesh_pair(
     let z2 = z2_real.round() as i32;
     if (f64::from(z2) - z2_real).abs() > 1e-9 {
         return Err(failed(
-            "gear.teeth",
+            GearInput::Teeth,
             format!("{z1} teeth on the pinion give {z2_real} on the gear of ratio {ratio}: choose a number of teeth that makes it whole"),
         ));
     }
@@ -213,10 +213,10 @@ pub fn mesh_pair(
     if internal {
         pair_spec.gear = pair_spec.gear.with_addendum(spec.ring_addendum);
     }
-    let pair = GearPair::new(pair_spec).map_err(|e| failed("gear", e.to_string()))?;
+    let pair = GearPair::new(pair_spec).map_err(|e| failed(GearInput::Pair, e.to_string()))?;
     pair.verify().map_err(|e| {
         failed(
-            "gear.ring_addendum",
+            GearInput::RingAddendum,
             format!(
                 "{e} (ring addendum {} modules, {z1}/{z2} teeth): shorten the ring addendum, shift the profiles or raise the pressure angle",
                 spec.ring_addendum

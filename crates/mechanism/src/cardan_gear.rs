@@ -55,7 +55,7 @@ use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
     cross, Bearings, Body, Joint, JointKind, JointMotion, MeshForce, Piston, PistonMotion, Topology,
 };
-use crate::{check_length, check_rod_cg, number, word, Entry, MachineGeometry, Mechanism};
+use crate::{check_length, check_rod_cg, number, word, Entry, Input, MachineGeometry, Mechanism};
 use crate::{vectorised, Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 
@@ -134,7 +134,7 @@ impl CardanGear {
         options: &Options,
     ) -> Result<Self, MechanismError> {
         let (crank, rod) = (geometry.crank_length, geometry.rod_length);
-        check_length("geometry.crank_length", crank)?;
+        check_length(Input::CrankLength, crank)?;
         let mut estimate = mass::estimate_for(inputs, crank, rod, geometry.bore);
         estimate.wheel_inertia = mass::cardan_wheel_inertia(crank);
         let mesh = match word(options, "gear_mesh_model", "karhula") {
@@ -144,7 +144,10 @@ impl CardanGear {
         let pressure_angle = number(options, "pressure_angle", 20f64.to_radians());
         if !(pressure_angle > 0.0 && pressure_angle < 45f64.to_radians()) {
             return Err(MechanismError::new(
-                "cardan_gear.pressure_angle",
+                Input::Option {
+                    mechanism: ENTRY.name,
+                    name: "pressure_angle",
+                },
                 format!("{}°", pressure_angle.to_degrees()),
                 "must be between 0° and 45°",
             ));
@@ -168,8 +171,8 @@ impl CardanGear {
         masses: MassProperties,
         bearings: [Bearings; 3],
     ) -> Result<Self, MechanismError> {
-        check_length("geometry.crank_length", crank)?;
-        check_length("geometry.rod_length", rod)?;
+        check_length(Input::CrankLength, crank)?;
+        check_length(Input::RodLength, rod)?;
         check_rod_cg(masses.rod_cg, rod)?;
         let [r_pis, r_crank, r_main] = bearings;
         // In the thesis reading the wheel's inertia rides with the crankshaft's (module note).
@@ -566,6 +569,12 @@ mod tests {
         let mut o = Options::new();
         o.insert("pressure_angle".into(), crate::OptionValue::Number(0.0));
         let e = CardanGear::build(&g, &MassInputs::default(), &o).unwrap_err();
-        assert_eq!(e.field, "cardan_gear.pressure_angle");
+        assert_eq!(
+            e.field,
+            Input::Option {
+                mechanism: "cardan_gear",
+                name: "pressure_angle"
+            }
+        );
     }
 }

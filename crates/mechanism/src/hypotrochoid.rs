@@ -78,7 +78,9 @@ use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
     Bearings, Body, ExtraColumn, Joint, JointKind, MeshForce, Piston, State, Topology,
 };
-use crate::{check_length, number, CrankState, Entry, MachineGeometry, Mechanism, StateBlock};
+use crate::{
+    check_length, number, CrankState, Entry, Input, MachineGeometry, Mechanism, StateBlock,
+};
 use crate::{BodyMotion, MechanismError, OptionKind, OptionSpec, Options, PointMotion, C};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -204,26 +206,44 @@ fn check_dimensions(
 ) -> Result<(), MechanismError> {
     if !(2..=MAX_MODULUS).contains(&m) {
         return Err(MechanismError::new(
-            "hypotrochoid.angular_modulus",
+            Input::Option {
+                mechanism: ENTRY.name,
+                name: "angular_modulus",
+            },
             m,
             format!("must be an integer from 2 to {MAX_MODULUS}"),
         ));
     }
-    check_length("geometry.crank_length", p)?;
-    check_length("hypotrochoid.piston_link_length", r)?;
-    check_length("hypotrochoid.planet_radius", u)?;
+    check_length(Input::CrankLength, p)?;
+    check_length(
+        Input::Option {
+            mechanism: ENTRY.name,
+            name: "piston_link_length",
+        },
+        r,
+    )?;
+    check_length(
+        Input::Option {
+            mechanism: ENTRY.name,
+            name: "planet_radius",
+        },
+        u,
+    )?;
     // Eq 11 has a real branch for every θ, and the rod AB keeps a positive length
     // q ∈ [r − p, r + p] (eq 13), only if r > p.
     if r <= p {
         return Err(MechanismError::new(
-            "hypotrochoid.piston_link_length",
+            Input::Option {
+                mechanism: ENTRY.name,
+                name: "piston_link_length",
+            },
             r,
             format!("must be longer than geometry.crank_length ({p} m): ψ(θ) = θ − asin(p·sin((m+1)θ)/r) (Vidinsky eq 11) needs r > p, and B would reach A"),
         ));
     }
     if !(0.0..=r).contains(&masses.rod_cg) {
         return Err(MechanismError::new(
-            "masses.rod_cg",
+            Input::RodCg,
             masses.rod_cg,
             format!("the piston link's centre of gravity must lie on it, between 0 and hypotrochoid.piston_link_length ({r} m)"),
         ));
@@ -381,19 +401,34 @@ impl Hypotrochoid {
         inputs: &MassInputs,
         options: &Options,
     ) -> Result<Self, MechanismError> {
-        let p = check_length("geometry.crank_length", geometry.crank_length)?;
+        let p = check_length(Input::CrankLength, geometry.crank_length)?;
         let m = number(options, "angular_modulus", 2.0);
         if !(m.fract() == 0.0 && (2.0..=MAX_MODULUS as f64).contains(&m)) {
             return Err(MechanismError::new(
-                "hypotrochoid.angular_modulus",
+                Input::Option {
+                mechanism: ENTRY.name,
+                name: "angular_modulus",
+            },
                 m,
                 format!("must be an integer from 2 to {MAX_MODULUS}: the ring gear has m+1 ≥ 3 planet radii (Vidinsky eqs 3, 6)"),
             ));
         }
         let u = number(options, "planet_radius", p * MODEL_PLANET / MODEL_CRANK);
-        check_length("hypotrochoid.planet_radius", u)?;
+        check_length(
+            Input::Option {
+                mechanism: ENTRY.name,
+                name: "planet_radius",
+            },
+            u,
+        )?;
         let r = number(options, "piston_link_length", 1.7 * m * u);
-        check_length("hypotrochoid.piston_link_length", r)?;
+        check_length(
+            Input::Option {
+                mechanism: ENTRY.name,
+                name: "piston_link_length",
+            },
+            r,
+        )?;
         let mut estimate = mass::estimate_for(inputs, p, r, geometry.bore);
         estimate.wheel_inertia = mass::cardan_wheel_inertia(2.0 * u);
         estimate.piston_mass = 0.0;
@@ -656,7 +691,7 @@ impl Mechanism for Hypotrochoid {
                 let angle = first + i * step;
                 if self.fold_sine(self.carrier_angle(angle)).abs() < 1e-6 {
                     return Err(MechanismError::new(
-                        "motion.steps",
+                        Input::Steps,
                         steps,
                         format!(
                             "step {i} (crank angle {:.4}°) lands on a fold of the hypotrochoid's parallelogram chain, sin((m+1)θ) = 0, where its loads are singular; choose a number of steps or a start angle that avoids it (e.g. steps = {})",

@@ -4,26 +4,29 @@
 //! modules and above the block, model and motion ones (the registry, naming every mechanism,
 //! is the crate root's).
 
+use crate::input::Input;
 use crate::mass::{MassInputs, MassProperties};
 use crate::model::{Bearings, Loads, State, Topology};
 use crate::motion::{MotionError, MotionSource};
 use crate::{Column, CrankState, LoadsBlock, StateBlock, C, LANES};
 use std::collections::BTreeMap;
 
-/// A physically impossible or ill-posed machine: the case-file field, its value, the rule.
+/// A physically impossible or ill-posed machine: the input at fault, its value, the rule (the
+/// case maps the input to its field).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{field} = {value}: {rule}")]
+#[error("{field:?} = {value}: {rule}")]
 pub struct MechanismError {
-    /// The case-file field, e.g. `geometry.rod_length`, `cardan_gear.pressure_angle`.
-    pub field: String,
+    /// The input at fault, e.g. [`Input::RodLength`], the cardan gear's option
+    /// `pressure_angle`.
+    pub field: Input,
     pub value: String,
     pub rule: String,
 }
 
 impl MechanismError {
-    pub fn new(field: &str, value: impl std::fmt::Display, rule: impl Into<String>) -> Self {
+    pub fn new(field: Input, value: impl std::fmt::Display, rule: impl Into<String>) -> Self {
         Self {
-            field: field.to_string(),
+            field,
             value: value.to_string(),
             rule: rule.into(),
         }
@@ -268,7 +271,7 @@ pub struct Entry {
     pub build: Build,
 }
 
-pub(crate) fn check_length(field: &str, value: f64) -> Result<f64, MechanismError> {
+pub(crate) fn check_length(field: Input, value: f64) -> Result<f64, MechanismError> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
@@ -286,7 +289,7 @@ pub(crate) fn check_rod_cg(rod_cg: f64, rod: f64) -> Result<(), MechanismError> 
         Ok(())
     } else {
         Err(MechanismError::new(
-            "masses.rod_cg",
+            Input::RodCg,
             rod_cg,
             format!("the rod's centre of gravity must lie on the rod, between 0 and geometry.rod_length ({rod} m)"),
         ))

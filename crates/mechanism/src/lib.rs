@@ -16,6 +16,7 @@ pub mod block;
 pub mod cardan_gear;
 mod crank;
 pub mod hypotrochoid;
+mod input;
 mod interface;
 pub mod mass;
 pub mod model;
@@ -32,6 +33,7 @@ pub use cardan_gear::{CardanGear, MeshModel};
 pub use crank::CrankState;
 pub use crank::C;
 pub use hypotrochoid::Hypotrochoid;
+pub use input::Input;
 pub(crate) use interface::{check_length, check_rod_cg, number, word};
 pub use interface::{
     Build, Entry, MachineGeometry, Mechanism, MechanismError, OptionKind, OptionSpec, OptionValue,
@@ -54,6 +56,20 @@ pub const MECHANISMS: &[Entry] = &[
     scotch_yoke::ENTRY,
     hypotrochoid::ENTRY,
 ];
+
+impl Input {
+    /// Every input a mechanism error can name: [`Input::SHARED`] and every option of every
+    /// registry entry (here, at the root, since it reads the registry).
+    pub fn all() -> Vec<Input> {
+        let options = MECHANISMS.iter().flat_map(|e| {
+            e.options.iter().map(move |o| Input::Option {
+                mechanism: e.name,
+                name: o.name,
+            })
+        });
+        Input::SHARED.into_iter().chain(options).collect()
+    }
+}
 
 /// The registry entry called `name`.
 pub fn entry(name: &str) -> Option<&'static Entry> {

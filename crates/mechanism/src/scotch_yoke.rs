@@ -16,7 +16,7 @@
 
 use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{cross, Bearings, Body, Joint, Piston, PistonMotion, Topology};
-use crate::{check_length, check_rod_cg, Entry, MachineGeometry, Mechanism};
+use crate::{check_length, check_rod_cg, Entry, Input, MachineGeometry, Mechanism};
 use crate::{vectorised, Column, LoadsBlock, StateBlock, LANES, ZERO};
 use crate::{MechanismError, Options, PointMotion, C};
 
@@ -72,11 +72,11 @@ impl ScotchYoke {
         masses: MassProperties,
         bearings: [Bearings; 3],
     ) -> Result<Self, MechanismError> {
-        check_length("geometry.crank_length", crank)?;
-        check_length("geometry.rod_length", rod)?;
+        check_length(Input::CrankLength, crank)?;
+        check_length(Input::RodLength, rod)?;
         if rod <= crank {
             return Err(MechanismError::new(
-                "geometry.rod_length",
+                Input::RodLength,
                 rod,
                 format!("must be longer than geometry.crank_length ({crank} m): the piston would reach the crank"),
             ));

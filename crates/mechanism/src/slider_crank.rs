@@ -15,7 +15,7 @@ use crate::mass::{self, MassInputs, MassProperties};
 use crate::model::{
     cross, Bearings, Body, ExtraColumn, Joint, Piston, PistonMotion, State, Topology,
 };
-use crate::{check_length, check_rod_cg, CrankState, Entry, MachineGeometry, Mechanism};
+use crate::{check_length, check_rod_cg, CrankState, Entry, Input, MachineGeometry, Mechanism};
 use crate::{
     vectorised, BodyColumns, Column, CrankColumns, JointColumns, LoadsBlock, PistonColumns,
     StateBlock, LANES, ZERO,
@@ -90,25 +90,25 @@ impl SliderCrank {
         masses: MassProperties,
         bearings: [Bearings; 3],
     ) -> Result<Self, MechanismError> {
-        check_length("geometry.crank_length", crank)?;
-        check_length("geometry.rod_length", rod)?;
+        check_length(Input::CrankLength, crank)?;
+        check_length(Input::RodLength, rod)?;
         if !pin_offset.is_finite() {
             return Err(MechanismError::new(
-                "geometry.pin_offset",
+                Input::PinOffset,
                 pin_offset,
                 "must be finite",
             ));
         }
         if rod <= crank {
             return Err(MechanismError::new(
-                "geometry.rod_length",
+                Input::RodLength,
                 rod,
                 format!("must be longer than geometry.crank_length ({crank} m): a rod no longer than its crank cannot turn it"),
             ));
         }
         if rod <= crank + pin_offset.abs() {
             return Err(MechanismError::new(
-                "geometry.pin_offset",
+                Input::PinOffset,
                 pin_offset,
                 format!(
                     "geometry.rod_length {rod} m must be longer than geometry.crank_length {crank} m \
@@ -458,10 +458,10 @@ mod tests {
             SliderCrank::new(crank, rod, offset, masses, [Bearings::single(0.01, 1e4); 3])
         };
         let field = |r: Result<SliderCrank, MechanismError>| r.unwrap_err().field;
-        assert_eq!(field(new(0.06, 0.06, 0.0)), "geometry.rod_length");
-        assert_eq!(field(new(0.06, 0.1, 0.05)), "geometry.pin_offset");
-        assert_eq!(field(new(-0.06, 0.14, 0.0)), "geometry.crank_length");
-        assert_eq!(field(new(0.06, f64::NAN, 0.0)), "geometry.rod_length");
+        assert_eq!(field(new(0.06, 0.06, 0.0)), Input::RodLength);
+        assert_eq!(field(new(0.06, 0.1, 0.05)), Input::PinOffset);
+        assert_eq!(field(new(-0.06, 0.14, 0.0)), Input::CrankLength);
+        assert_eq!(field(new(0.06, f64::NAN, 0.0)), Input::RodLength);
         let mut far = masses;
         far.rod_cg = 0.2;
         assert_eq!(
@@ -472,7 +472,7 @@ mod tests {
                 far,
                 [Bearings::single(0.01, 1e4); 3]
             )),
-            "masses.rod_cg"
+            Input::RodCg
         );
     }
 }

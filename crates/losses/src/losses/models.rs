@@ -4,12 +4,13 @@
 //! [`crate::loss_models::LOSS_MODELS`], call them); [`crate::LossBudget`] binds them by joint
 //! kind.
 
+use crate::attachment::Attachment;
 use crate::engine_losses::{
     accessories_power, pumping_power, EngineLosses, ValveTrainLoss, AMBIENT_PRESSURE,
 };
-use crate::loss::{failed, BindInput, LaneFailure, Loss, LossLanes, LossParameter};
+use crate::loss::{BindInput, LaneFailure, Loss, LossLanes, LossParameter};
 use crate::mesh::{mesh_pair, mesh_speeds, tangential};
-use crate::SetupError;
+use crate::setup_error::{failed, GearInput, SetupError, SetupInput};
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
     KarhulaRingPack, KeptPower, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel,
@@ -24,7 +25,7 @@ pub type BoundLoss = Result<Box<dyn Loss>, SetupError>;
 /// Karhula's ring pack (2 compression rings of 2 mm at 0.19 MPa, 1 oil ring of 4 mm at 1 MPa)
 /// in a cylinder of the site's bore.
 fn ring_pack(site: &BindInput) -> Result<KarhulaRingPack, SetupError> {
-    KarhulaRingPack::karhula(site.bore).map_err(|e| failed("geometry.bore", &e))
+    KarhulaRingPack::karhula(site.bore).map_err(|e| failed(SetupInput::Bore, &e))
 }
 
 /// Karhula's ring pack with a constant friction coefficient μ (A9.1.2-4, A9.1.8).
@@ -50,7 +51,7 @@ pub fn bind_ring_films(site: &BindInput, crown_height: f64) -> BoundLoss {
         };
         RingFilm::new(profile, bore, AsperityContact::typical())
             .map(|f| (f, pressure, top))
-            .map_err(|e| failed("friction.ring_crown_height", &e))
+            .map_err(|e| failed(SetupInput::Parameter(LossParameter::RingCrownHeight), &e))
     };
     let mut rings = Vec::new();
     for k in 0..pack.compression_rings {
@@ -83,15 +84,19 @@ pub fn bind_viscous_skirt(site: &BindInput, length: f64, clearance: f64) -> Boun
     Ok(Box::new(ViscousSkirtLoss {
         joint: site.joint,
         skirt: ViscousSkirt::new(site.bore, length, clearance)
-            .map_err(|e| failed("friction.skirt_length", &e))?,
+            .map_err(|e| failed(SetupInput::Parameter(LossParameter::SkirtLength), &e))?,
         viscosity: site.oil.dynamic_viscosity(),
     }))
 }
 
 /// The site's revolute-joint bearings.
 fn bearings(site: &BindInput) -> Result<Bearings, SetupError> {
-    site.bearings
-        .ok_or_else(|| failed("friction.bearings", &"attaches to a revolute joint only"))
+    site.bearings.ok_or_else(|| {
+        failed(
+            SetupInput::Model(Attachment::Bearing),
+            &"attaches to a revolute joint only",
+        )
+    })
 }
 
 /// The site's rolling bearings in `reading` of [`cardan_friction::rolling_bearing_loss`].
@@ -101,7 +106,7 @@ pub fn bind_rolling(site: &BindInput, reading: RollingReading) -> BoundLoss {
         joint: site.joint,
         model: RollingModel::new(
             RollingBearing::new(2.0 * b.radius, b.static_load_rating)
-                .map_err(|e| failed("friction.bearings", &e))?,
+                .map_err(|e| failed(SetupInput::Model(Attachment::Bearing), &e))?,
             reading,
         ),
         count: f64::from(b.count.max(1)),
@@ -125,7 +130,7 @@ pub fn bind_journal(site: &BindInput, short: bool) -> BoundLoss {
             2.0 * b.radius * length_ratio,
             b.radius * clearance_ratio,
         )
-        .map_err(|e| failed("friction.journal_length_ratio", &e))?,
+        .map_err(|e| failed(SetupInput::Parameter(LossParameter::JournalLengthRatio), &e))?,
         count: f64::from(b.count.max(1)),
         short,
         viscosity: site.oil.dynamic_viscosity(),
@@ -145,13 +150,13 @@ pub fn bind_mesh(site: &BindInput, reading: Reading) -> BoundLoss {
     } = j.kind
     else {
         return Err(failed(
-            "friction.gear_mesh",
+            SetupInput::Model(Attachment::GearMesh),
             &"attaches to a gear mesh only",
         ));
     };
     let (pair, face_width) = mesh_pair(site.pair, ratio, pitch_radius, internal, pressure_angle)?;
-    let geometry =
-        MeshGeometry::from_pair(&pair, face_width).map_err(|e| failed("gear.face_width", &e))?;
+    let geometry = MeshGeometry::from_pair(&pair, face_width)
+        .map_err(|e| failed(SetupInput::Gear(GearInput::FaceWidth), &e))?;
     let lubricant = Lubricant {
         kinematic_viscosity: site.oil.kinematic_viscosity,
         density: site.oil.density,
