@@ -38,9 +38,8 @@ pub(crate) fn setup_field(input: SetupInput) -> String {
 fn engine_field(input: EngineInput) -> &'static str {
     match input {
         // No case sets these two (the engine takes the standard atmosphere and Bishop's
-        // full-load back pressure, `EngineLosses::off`): the table whose engine components
-        // read them. Before issue 37 they were named `friction.ambient_pressure` and
-        // `friction.exhaust_back_pressure`, fields `[friction]` does not have.
+        // full-load back pressure, `EngineLosses::off`), and `[friction]` has no field of
+        // them: the table whose engine components read them.
         EngineInput::AmbientPressure | EngineInput::ExhaustBackPressure => "friction",
         EngineInput::IntakePressure => "friction.intake_pressure",
         EngineInput::CompressionRatio => "gas.compression_ratio",
