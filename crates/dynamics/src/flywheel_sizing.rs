@@ -20,28 +20,54 @@ pub const MAX_EVALUATIONS: usize = 120;
 /// of itself.
 pub const INERTIA_TOLERANCE: f64 = 1e-6;
 
+/// Why no flywheel meets the target coefficient of fluctuation.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SizingError {
+    /// The target was not met in [`MAX_EVALUATIONS`] evaluations.
+    NotFound { target: f64 },
+    /// The target is missed still with a flywheel of `largest` kg·m² (2⁶⁰ times the scale).
+    Unreachable { target: f64, largest: f64 },
+    /// An evaluation failed: why.
+    Solve(String),
+}
+
+/// What the target fails by (a [`SizingError::Solve`]: the solve's own words).
+impl std::fmt::Display for SizingError {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        match self {
+            SizingError::NotFound { target } => write!(
+                f,
+                "the flywheel for {target} not found in {MAX_EVALUATIONS} solves"
+            ),
+            SizingError::Unreachable { target, largest } => write!(
+                f,
+                "{target} cannot be reached (still missed with a flywheel of {largest} kg·m²)"
+            ),
+            SizingError::Solve(why) => f.write_str(why),
+        }
+    }
+}
+
 /// The smallest flywheel (kg·m²) at or above `start` whose coefficient of fluctuation
 /// `fluctuation(J)` is at most `target`, to [`INERTIA_TOLERANCE`], and that coefficient: `start`
 /// itself if it meets the target. `fluctuation` gives the coefficient (infinite where the
 /// machine stops) and the largest reduced inertia of the mechanism over the cycle (kg·m²),
 /// the scale of a first step; `scale` is used where that is zero (a mechanism of no inertia
-/// without a flywheel). An unreachable target (still missed at 2⁶⁰ times the scale) is an
-/// error naming the field.
+/// without a flywheel). An unreachable target (still missed at 2⁶⁰ times the scale) is a
+/// [`SizingError`], as is a failed evaluation.
 pub fn inertia_for(
     mut fluctuation: impl FnMut(f64) -> Result<(f64, f64), String>,
     start: f64,
     target: f64,
     scale: f64,
-) -> Result<(f64, f64), String> {
+) -> Result<(f64, f64), SizingError> {
     let mut evaluations = 0;
     let mut at = |j: f64| {
         evaluations += 1;
         if evaluations > MAX_EVALUATIONS {
-            return Err(format!(
-                "flywheel.fluctuation_coefficient: the flywheel for {target} not found in {MAX_EVALUATIONS} solves"
-            ));
+            return Err(SizingError::NotFound { target });
         }
-        fluctuation(j)
+        fluctuation(j).map_err(SizingError::Solve)
     };
     let (bare, carried) = at(start)?;
     if bare <= target {
@@ -65,9 +91,10 @@ pub fn inertia_for(
         next = estimate(lo, delta, target, carried).max(2.0 * lo);
     }
     if hi.is_nan() {
-        return Err(format!(
-            "flywheel.fluctuation_coefficient: {target} cannot be reached (still missed with a flywheel of {lo} kg·m²)"
-        ));
+        return Err(SizingError::Unreachable {
+            target,
+            largest: lo,
+        });
     }
     let mut g_hi = g(at_hi);
     // Illinois: the end kept twice in a row has its value halved, so the false position moves
@@ -182,7 +209,10 @@ mod tests {
         // A coefficient that never falls below 0.1.
         let floor = |j: f64| Ok((0.1 + 1.0 / (1.0 + j), 1.0));
         let e = inertia_for(floor, 0.0, 0.05, 1.0).unwrap_err();
-        assert!(e.starts_with("flywheel.fluctuation_coefficient"), "{e}");
+        assert!(
+            matches!(e, SizingError::Unreachable { target: 0.05, .. }),
+            "{e}"
+        );
         // A flywheel that meets the target already is kept.
         assert_eq!(
             inertia_for(law(1.0, 1.0), 5.0, 0.5, 1.0).unwrap(),

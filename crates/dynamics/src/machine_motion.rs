@@ -26,6 +26,7 @@
 //! A crank that would stop or turn back (e < 0 at any stage of a step) fails the run naming the
 //! step and angle; a total inertia that is not positive fails it too. Every loop is bounded.
 
+use crate::flywheel_sizing::SizingError;
 use crate::machine_friction::{FrictionAt, MotionFriction};
 use crate::reduced_inertia::ReducedInertiaOf;
 use crate::runup::RunUp;
@@ -491,7 +492,7 @@ pub fn size_flywheel(
     torques: &MachineTorques,
     run: &SolvedRun,
     target: f64,
-) -> Result<(f64, f64), String> {
+) -> Result<(f64, f64), SizingError> {
     let cs = |flywheel: f64| {
         let t = MachineTorques {
             flywheel,

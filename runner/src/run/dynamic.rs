@@ -4,6 +4,7 @@
 //! approximation beside them (`cardan_dynamics::machine_motion`).
 
 use cardan_case::machine_motion::Dynamics;
+use cardan_dynamics::flywheel_sizing::SizingError;
 use cardan_dynamics::machine_motion::{
     size_flywheel, solve_cycles, Cycles, MachineTorques, SolvedRun,
 };
@@ -28,7 +29,10 @@ pub(super) fn solve(
     let flywheel = match dynamics.fluctuation_target {
         None => dynamics.flywheel,
         Some(target) => {
-            let (j, _) = size_flywheel(torques, &run, target)?;
+            let (j, _) = size_flywheel(torques, &run, target).map_err(|e| match e {
+                SizingError::Solve(why) => why,
+                e => format!("flywheel.fluctuation_coefficient: {e}"),
+            })?;
             metrics.push(("flywheel_inertia_required", j));
             j
         }
