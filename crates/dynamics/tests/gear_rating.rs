@@ -10,9 +10,8 @@ use cardan_dynamics::{
     run, Gas, GasAt, GearRatings, GearSpec, GearStage, Inertial, LoadFamily, MeshRating, Solver,
     Steps, ToothLoad,
 };
-use cardan_mechanism::{
-    CrankMotion, CrankState, Grid, Loads, Material, MotionError, MotionSource, C,
-};
+use cardan_mechanism::{CrankMotion, CrankState, Grid, Loads, Material, MotionSource, C};
+use cardan_testing::OneByOne;
 use common::{every_machine, pump_gas, thesis};
 use std::f64::consts::PI;
 
@@ -200,19 +199,6 @@ fn the_iso_rating_stands_beside_agma_s_without_changing_it() {
     assert_eq!(none.iso_contact_stress, 0.0);
     assert_eq!(none.iso_contact_safety, f64::INFINITY);
     assert_eq!(none.iso_bending_safety, f64::INFINITY);
-}
-
-/// The same states handed out one at a time, as a solved motion's: blocks of one lane.
-struct OneByOne(Grid);
-
-impl MotionSource for OneByOne {
-    fn len(&self) -> usize {
-        self.0.len()
-    }
-
-    fn next(&mut self, previous: Option<f64>) -> Option<Result<CrankState, MotionError>> {
-        self.0.next(previous)
-    }
 }
 
 /// The gear stage rates a block from its columns (`GearRatings::evaluate_block`): each lane's

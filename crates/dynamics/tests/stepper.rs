@@ -8,23 +8,10 @@ use cardan_dynamics::{
     Steps, Summary, SummarySink,
 };
 use cardan_mechanism::{
-    CrankMotion, CrankState, Grid, MachineGeometry, MassInputs, Mechanism, MotionError,
-    MotionSource, Options, MECHANISMS,
+    CrankMotion, Grid, MachineGeometry, MassInputs, Mechanism, MotionSource, Options, MECHANISMS,
 };
+use cardan_testing::OneByOne;
 use std::sync::Arc;
-
-/// The same states, handed out as a solved motion would (one at a time).
-struct OneByOne(Grid);
-
-impl MotionSource for OneByOne {
-    fn len(&self) -> usize {
-        self.0.len()
-    }
-
-    fn next(&mut self, previous: Option<f64>) -> Option<Result<CrankState, MotionError>> {
-        self.0.next(previous)
-    }
-}
 
 fn steps(
     motion: &mut dyn MotionSource,

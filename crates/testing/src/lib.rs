@@ -1,6 +1,7 @@
 //! Checks for tests: each failure message names the quantity, both values and the tolerance, so
 //! a failing validation test reads like a line of a validation report; and that a message names
-//! what it must. And [`OneThread`], a crank grid the benchmarks run on one thread; and
+//! what it must. And [`OneThread`], a crank grid the benchmarks run on one thread; [`OneByOne`],
+//! a grid handed out a state at a time, as a solved motion's; and
 //! [`chart`], the reports' SVG charts read back; [`cases`], case-file text several tests start from.
 
 pub mod cases;
@@ -27,6 +28,20 @@ impl MotionSource for OneThread {
 
     fn next_block(&mut self, out: &mut CrankColumns) -> (usize, Option<MotionError>) {
         self.0.next_block(out)
+    }
+}
+
+/// A grid's states handed out one at a time, as a solved motion hands them out (it offers no
+/// blocks): the step loop takes blocks of one lane.
+pub struct OneByOne(pub Grid);
+
+impl MotionSource for OneByOne {
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn next(&mut self, previous: Option<f64>) -> Option<Result<CrankState, MotionError>> {
+        self.0.next(previous)
     }
 }
 
