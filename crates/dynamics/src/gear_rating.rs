@@ -332,14 +332,8 @@ impl GearRatings {
         inertial: Option<&Loads>,
         out: &mut [MeshRating],
     ) -> Result<(), String> {
-        let mut states = StateBlock::for_topology(topology);
-        states.len = 1;
-        states.scatter(0, state);
-        let lane = |loads: &Loads| {
-            let mut block = LoadsBlock::for_topology(topology);
-            block.scatter(0, loads);
-            block
-        };
+        let states = StateBlock::of_state(topology, state);
+        let lane = |loads: &Loads| LoadsBlock::of_loads(topology, loads);
         let (total, inertial) = (lane(total), inertial.map(lane));
         let block = Block {
             len: 1,

@@ -264,10 +264,8 @@ impl LossBudget {
         pressure: Option<f64>,
         out: &mut [f64],
     ) -> Result<(), String> {
-        let mut states = StateBlock::for_topology(topology);
-        let mut totals = LoadsBlock::for_topology(topology);
-        states.scatter(0, state);
-        totals.scatter(0, total);
+        let states = StateBlock::of_state(topology, state);
+        let totals = LoadsBlock::of_loads(topology, total);
         let pressure = pressure.map(|p| [p; LANES]);
         let at = LossLanes {
             pressure: pressure.as_ref(),

@@ -303,6 +303,15 @@ impl StateBlock {
         }
     }
 
+    /// A block of one lane holding `st`, a state of a mechanism of `topology`: a single step
+    /// as a block, for the code written for blocks.
+    pub fn of_state(topology: &Topology, st: &State) -> Self {
+        let mut block = Self::for_topology(topology);
+        block.len = 1;
+        block.scatter(0, st);
+        block
+    }
+
     /// Sets lane `i` to the state `st`.
     pub fn scatter(&mut self, i: usize, st: &State) {
         self.crank.set(i, &st.crank);
@@ -401,6 +410,13 @@ impl LoadsBlock {
             *j = c.at(i);
         }
         out.crank_torque = self.crank_torque[i];
+    }
+
+    /// A block whose lane 0 holds `loads`, loads of a mechanism of `topology` (a single step's).
+    pub fn of_loads(topology: &Topology, loads: &Loads) -> Self {
+        let mut block = Self::for_topology(topology);
+        block.scatter(0, loads);
+        block
     }
 
     /// Sets lane `i` to `loads`.

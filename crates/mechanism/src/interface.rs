@@ -141,9 +141,7 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
         piston_forces: &[f64],
         out: &mut Loads,
     ) -> bool {
-        let mut block = StateBlock::for_topology(self.topology());
-        block.len = 1;
-        block.scatter(0, state);
+        let block = StateBlock::of_state(self.topology(), state);
         let force = piston_forces.first().map(|&f| [f; LANES]);
         let mut loads = LoadsBlock::for_topology(self.topology());
         if !self.closed_form_block(&block, inertia, force.as_ref(), &mut loads) {
