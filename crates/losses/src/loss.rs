@@ -45,6 +45,12 @@ impl ParameterValues {
             .map(|(_, v)| *v)
             .or_else(|| parameter.default())
     }
+
+    /// The value of `parameter`, which has a default ([`LossParameter::default`]).
+    pub fn value(&self, parameter: LossParameter) -> f64 {
+        self.get(parameter)
+            .unwrap_or_else(|| unreachable!("{parameter:?} has a default"))
+    }
 }
 
 /// What a loss model is bound with: where it attaches (the joint, its bearings, the bore) and
@@ -77,17 +83,23 @@ impl BindInput<'_> {
     /// The value of `parameter`, which the model being bound declares: the case's, else its
     /// default (`None`: the model's own rule).
     pub fn parameter(&self, parameter: LossParameter) -> Option<f64> {
+        self.declares(parameter);
+        self.parameters.get(parameter)
+    }
+
+    /// The value of `parameter`, which the model being bound declares and which has a default
+    /// ([`ParameterValues::value`]).
+    pub fn value(&self, parameter: LossParameter) -> f64 {
+        self.declares(parameter);
+        self.parameters.value(parameter)
+    }
+
+    /// Refuses (in a debug build) a parameter the model being bound does not declare.
+    fn declares(&self, parameter: LossParameter) {
         debug_assert!(
             self.declared.contains(&parameter),
             "{parameter:?} is read by a model that does not declare it"
         );
-        self.parameters.get(parameter)
-    }
-
-    /// The value of `parameter`, which has a default ([`LossParameter::default`]).
-    pub fn value(&self, parameter: LossParameter) -> f64 {
-        self.parameter(parameter)
-            .unwrap_or_else(|| unreachable!("{parameter:?} has a default"))
     }
 }
 

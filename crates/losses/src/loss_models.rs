@@ -172,9 +172,7 @@ pub const LOSS_MODELS: &[LossModel] = &[
         summary: "two valves on circular-arc cams, flat followers, μ = cam_friction_coefficient (Thai thesis 2.5.d.15, 2.5.d.18)",
         parameters: &[CamFrictionCoefficient],
         bind: Bind::Follower(|p| FollowerContact::Flat {
-            friction_coefficient: p
-                .get(CamFrictionCoefficient)
-                .unwrap_or_else(|| unreachable!("a default")),
+            friction_coefficient: p.value(CamFrictionCoefficient),
         }),
     },
     LossModel {
