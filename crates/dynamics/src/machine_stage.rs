@@ -29,6 +29,7 @@ use crate::stage::{
 use crate::stepper::Loading;
 use crate::LossLanes;
 use cardan_balance::{shaking_lane, Shaking};
+use cardan_mechanism::vectorised;
 use cardan_mechanism::{Column, CrankState, LoadsBlock, Mechanism, StateBlock, C, LANES, ZERO};
 use std::sync::Arc;
 
@@ -339,7 +340,7 @@ impl Stage for MachineStage {
         let n = input.len;
         let train_loss = passed.loss_power.as_ref();
         if self.machine.cylinders() == 1 && self.machine.train_is_first() {
-            self.one_cylinder_block(input, train_loss, out);
+            one_cylinder_block(self, input, train_loss, out);
             return self.check_block(n, out);
         }
         let room = self.room();
@@ -421,22 +422,28 @@ impl Stage for MachineStage {
 }
 
 /// The first `n` values of the neighbouring columns `k` and `k + 1` of `out` (a load's x and y).
+#[inline(always)]
 fn column_pair(out: &mut [Column], k: usize, n: usize) -> (&mut [f64], &mut [f64]) {
     let (x, rest) = out[k..].split_at_mut(1);
     (&mut x[0][..n], &mut rest[0][..n])
 }
 
-impl MachineStage {
+vectorised! {
     /// A block of a machine of one cylinder, the run's train (module note): its values from the
-    /// train's columns a column at a time, with the operations of [`MachineStage::values`] in
+    /// train's columns a column at a time, with the operations of `MachineStage::values` in
     /// its order (the same bits) but without gathering each lane's cylinder and row;
     /// `train_loss`: the train's power loss at each lane (with `[friction]`), W.
     // A lane index runs over several columns of `out` and of the inputs at once.
     #[allow(clippy::needless_range_loop)]
-    fn one_cylinder_block(&self, input: &Block, train_loss: Option<&Column>, out: &mut [Column]) {
-        let n = input.len;
-        let p = self.places;
-        let m = &*self.machine;
+    fn one_cylinder_block(
+        stage: &MachineStage,
+        input: &Block,
+        train_loss: Option<&Column>,
+        out: &mut [Column],
+    ) {
+        let n = input.len.min(LANES);
+        let p = stage.places;
+        let m = &*stage.machine;
         let t = m.mechanism().topology();
         let total = input.total;
         if p.shaking {
@@ -459,7 +466,7 @@ impl MachineStage {
         for (t, &c) in torque.iter_mut().zip(&total.crank_torque[..n]) {
             *t = 0.0 + c;
         }
-        if self.friction {
+        if stage.friction {
             let speed = &input.states.crank.speed[..n];
             for (i, (t, &w)) in torque.iter_mut().zip(speed).enumerate() {
                 let loss = 0.0 + train_loss.map_or(0.0, |l| l[i]);
@@ -503,13 +510,12 @@ impl MachineStage {
             }
         }
     }
+}
 
+impl MachineStage {
     /// Checks a block's `n` lanes of values `out`: the error of the first value not finite.
     fn check_block(&self, n: usize, out: &[Column]) -> Result<(), LaneError> {
-        // One sum of every value first: a NaN or an infinity makes it so (as the stepper's
-        // `all_finite`); only then, or when finite values overflow it, the lanes one by one.
-        let sum: f64 = out.iter().map(|c| c[..n].iter().sum::<f64>()).sum();
-        if sum.is_finite() {
+        if sum_is_finite(out, n) {
             return Ok(());
         }
         for i in 0..n {
@@ -532,5 +538,28 @@ impl MachineStage {
             .to_string(),
         };
         StageError::NonFinite { quantity, value }
+    }
+}
+
+vectorised! {
+    /// Whether the sum of the first `n` values of every column of `out` is finite, in eight
+    /// running sums: a NaN or an infinity makes it not (as the stepper's `all_finite`); only
+    /// then, or when finite values overflow it, are the lanes checked one by one.
+    fn sum_is_finite(out: &[Column], n: usize) -> bool {
+        let n = n.min(LANES);
+        let mut acc = [0.0; 8];
+        for c in out {
+            let chunks = c[..n].chunks_exact(8);
+            let rest = chunks.remainder();
+            for chunk in chunks {
+                for (a, v) in acc.iter_mut().zip(chunk) {
+                    *a += v;
+                }
+            }
+            for (a, v) in acc.iter_mut().zip(rest) {
+                *a += v;
+            }
+        }
+        acc.iter().sum::<f64>().is_finite()
     }
 }
