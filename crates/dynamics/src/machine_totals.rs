@@ -197,22 +197,29 @@ impl MachineTotals {
         }
         let torques = column(p.torque());
         if let Some(&first) = torques.first() {
-            // Eight running extremes side by side (vector registers): the order does not
-            // matter, for the values are finite and never −0 (each is a sum begun at +0).
+            // Eight running extremes side by side (vector registers), by comparisons (as
+            // `raise`): the order does not matter, and they are `f64::min`'s and `max`'s, for
+            // the values are finite and never −0 (each is a sum begun at +0).
             let (lo, hi) = self.torque.unwrap_or((first, first));
             let (mut lows, mut highs) = ([lo; 8], [hi; 8]);
+            let lower = |l: &mut f64, t: f64| *l = if t < *l { t } else { *l };
             let chunks = torques.chunks_exact(8);
             let rest = chunks.remainder();
             for chunk in chunks {
                 for k in 0..8 {
-                    (lows[k], highs[k]) = (lows[k].min(chunk[k]), highs[k].max(chunk[k]));
+                    lower(&mut lows[k], chunk[k]);
+                    raise(&mut highs[k], chunk[k]);
                 }
             }
             for (k, &t) in rest.iter().enumerate() {
-                (lows[k], highs[k]) = (lows[k].min(t), highs[k].max(t));
+                lower(&mut lows[k], t);
+                raise(&mut highs[k], t);
             }
-            let lo = lows.iter().fold(lo, |a, &b| a.min(b));
-            let hi = highs.iter().fold(hi, |a, &b| a.max(b));
+            let (mut lo, mut hi) = (lo, hi);
+            for k in 0..8 {
+                lower(&mut lo, lows[k]);
+                raise(&mut hi, highs[k]);
+            }
             self.torque = Some((lo, hi));
         }
         if p.pins && self.own_pins {

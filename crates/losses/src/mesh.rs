@@ -12,12 +12,14 @@ use cardan_mechanism::{JointMotion, C};
 /// The component of a mesh force along the pitch-circle tangent t = i·d (d: from the pitch
 /// point towards the centre of the mesh's first gear): the tooth load that transmits torque
 /// (Karhula A8.1.10).
+#[inline]
 pub fn tangential(force: C, mesh: &JointMotion) -> f64 {
     let t = C::i() * mesh.direction;
     force.re * t.re + force.im * t.im
 }
 
 /// The component of a mesh force along d, towards the centre of the mesh's first gear.
+#[inline]
 pub fn radial(force: C, mesh: &JointMotion) -> f64 {
     force.re * mesh.direction.re + force.im * mesh.direction.im
 }
