@@ -11,8 +11,8 @@ use crate::stage::{
     Block, LaneError, PassedOn, RunTotals, Stage, StageColumn, StageError, StageTotals,
 };
 use crate::step::StepBlock;
-use crate::summary::peaks::raise;
-use crate::summary::Integral;
+use crate::summary::peaks::{raise, raise_over};
+use crate::summary::{add_trapezoids, Integral};
 use crate::LossLanes;
 use cardan_mechanism::{Column, ZERO};
 use std::any::Any;
@@ -134,23 +134,27 @@ impl StageTotals for LossTotals {
         stage: usize,
         previous: Option<f64>,
     ) {
-        let (mut started, mut t0) = (previous.is_some(), previous.unwrap_or(0.0));
+        let Some(last) = lanes.end.checked_sub(1) else {
+            return;
+        };
         let (torque, losses) = block.stage_columns[stage]
             .split_first()
             .expect("a friction torque");
-        for i in lanes {
-            let (k, time) = (block.first + i, block.state.crank.time[i]);
-            let dt = time - t0;
-            for ((w, p0), c) in self.work.iter_mut().zip(&mut self.previous).zip(losses) {
-                let p = c[i];
-                if started {
-                    w.add(k, 0.5 * dt * (p + *p0));
-                }
-                *p0 = p;
-            }
-            raise(&mut self.friction_torque, torque[i]);
-            (started, t0) = (true, time);
+        let time = &block.state.crank.time;
+        // Each component's ∫ P dt over the lanes, a column at a time (the terms of the
+        // trapezoids in the steps' order, as `Integral::add` step by step).
+        for ((w, p0), c) in self.work.iter_mut().zip(&mut self.previous).zip(losses) {
+            let before = *p0;
+            add_trapezoids(
+                w,
+                block.first,
+                lanes.clone(),
+                || previous.map(|t0| 0.5 * (time[0] - t0) * (c[0] + before)),
+                |i| 0.5 * (time[i] - time[i - 1]) * (c[i] + c[i - 1]),
+            );
+            *p0 = c[last];
         }
+        raise_over(&mut self.friction_torque, lanes, |i| torque[i]);
     }
 
     fn close_chunk(&mut self) {

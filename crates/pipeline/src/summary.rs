@@ -13,7 +13,7 @@ mod lever;
 pub mod peaks;
 mod work;
 
-pub use integral::Integral;
+pub use integral::{add_trapezoids, Integral};
 
 use crate::stage::{RunTotals, Stage, StageTotals};
 use crate::step::{Sink, StepBlock};

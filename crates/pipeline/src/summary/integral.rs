@@ -67,7 +67,7 @@ impl Integral {
 /// step (a run's blocks do) takes lane 0's term with lanes 1 to 3 (the term a summary's first
 /// step lacks counted as +0, which leaves the fresh sums' bits as they are).
 #[inline(always)]
-pub(crate) fn add_trapezoids(
+pub fn add_trapezoids(
     integral: &mut Integral,
     first: usize,
     lanes: Range<usize>,

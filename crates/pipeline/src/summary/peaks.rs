@@ -22,7 +22,7 @@ pub fn raise(peak: &mut f64, value: f64) {
 /// largest of them (the same result as raising one at a time: a maximum does not depend on
 /// the order).
 #[inline(always)]
-pub(crate) fn raise_over(peak: &mut f64, lanes: Range<usize>, value: impl Fn(usize) -> f64) {
+pub fn raise_over(peak: &mut f64, lanes: Range<usize>, value: impl Fn(usize) -> f64) {
     // Lanes of a block: bounded so, the compiler drops the columns' bounds checks.
     let end = lanes.end.min(LANES);
     let mut m = [*peak; 8];
