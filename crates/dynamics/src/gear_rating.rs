@@ -21,7 +21,7 @@ use cardan_gears::agma::factors::{
     elastic_coefficient, DynamicFactor, Enclosure, Grade, LoadDistribution, Quality,
 };
 use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
-use cardan_gears::buckingham::{BuckinghamPair, FULL_DEPTH_20};
+use cardan_gears::buckingham::{BuckinghamPair, SaturatedLoad, FULL_DEPTH_20};
 use cardan_gears::mesh_loss::Lubricant;
 use cardan_gears::{
     pitting_geometry_factor, BendingJMemo, GearPair, GearSet, GeneratedMember, IForm, MeshStep,
@@ -173,6 +173,9 @@ struct RatedMesh {
     rating: PreparedRating,
     /// The ISO 6336 rating of the pair, prepared once (`None`: AGMA alone).
     iso: Option<PreparedIso>,
+    /// Buckingham's saturated load of the set ([`ToothLoad::Thesis`]), its checks made once
+    /// (a failed one fails the first step rated, as the load's own checks would).
+    saturated: Result<SaturatedLoad, cardan_gears::GearError>,
 }
 
 impl GearRatings {
@@ -225,7 +228,6 @@ impl GearRatings {
                 joint: k,
                 body: j.body,
                 name: j.name,
-                set,
                 pitch_radius,
                 sets: if spec.twin { 2.0 } else { 1.0 },
                 // J is given or computed for every mesh (a J that cannot be computed is a
@@ -242,6 +244,8 @@ impl GearRatings {
                 kv: None,
                 rating: prepared,
                 iso,
+                saturated: set.buckingham.saturated(),
+                set,
             });
         }
         Ok(Self {
@@ -704,7 +708,10 @@ impl RatedMesh {
             Some(r) => (r.dynamic, r.rating),
             None => (
                 if m.tooth_load == ToothLoad::Thesis {
-                    m.set.buckingham.saturated_dynamic_load(load)
+                    m.saturated
+                        .as_ref()
+                        .map_err(Clone::clone)
+                        .and_then(|s| s.at(load))
                 } else {
                     m.set
                         .buckingham

@@ -146,17 +146,49 @@ impl BuckinghamPair {
     /// slip in A8.1.5-8 must have made f1 huge, and the table cannot tell which. For
     /// [`crate::GearSet`] users who reproduce the thesis; [`Self::dynamic_load`] is the chain.
     pub fn saturated_dynamic_load(&self, ft: f64) -> Result<DynamicLoad, GearError> {
+        self.saturated()?.at(ft)
+    }
+
+    /// [`Self::saturated_dynamic_load`] with the pair's checks made and its constants taken
+    /// once, for a load rated step after step.
+    pub fn saturated(&self) -> Result<SaturatedLoad, GearError> {
         positive("face_width", self.face_width)?;
         non_negative("error", self.error)?;
         positive("e1", self.e1)?;
         positive("e2", self.e2)?;
         positive("form.deformation", self.form.deformation)?;
-        non_negative("tangential load", ft)?;
         let compliance = 1.0 / self.e1 + 1.0 / self.e2;
-        let f2 = self.face_width * self.error / (self.form.deformation * compliance) + ft;
+        Ok(SaturatedLoad {
+            face_width: self.face_width,
+            deformation: self.form.deformation,
+            compliance,
+            f2_unloaded: self.face_width * self.error / (self.form.deformation * compliance),
+        })
+    }
+}
+
+/// Buckingham's load at the limit f1 → ∞ ([`BuckinghamPair::saturated_dynamic_load`]) of a
+/// checked pair: its constants, the same arithmetic as the pair's (the same bits).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SaturatedLoad {
+    /// Face width `b` \[m\].
+    face_width: f64,
+    /// The tooth form's deformation factor `k` \[-\].
+    deformation: f64,
+    /// `1/E1 + 1/E2` \[1/Pa\].
+    compliance: f64,
+    /// `b·e/(k·(1/E1 + 1/E2))`, f2 at no load \[N\] (A8.1.13).
+    f2_unloaded: f64,
+}
+
+impl SaturatedLoad {
+    /// The load at the tangential load `ft` \[N\] (A8.1.13-14 with f1 → ∞).
+    pub fn at(&self, ft: f64) -> Result<DynamicLoad, GearError> {
+        non_negative("tangential load", ft)?;
+        let f2 = self.f2_unloaded + ft;
         Ok(DynamicLoad {
             f1: f64::INFINITY,
-            deformation: self.form.deformation * ft / self.face_width * compliance,
+            deformation: self.deformation * ft / self.face_width * self.compliance,
             f2,
             fa: f2,
             dynamic_load: if ft == 0.0 { 0.0 } else { ft + f2 },

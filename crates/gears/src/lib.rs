@@ -65,7 +65,7 @@ pub use agma::geometry_factors::{agma908_table, pitting_geometry_factor, IForm, 
 pub use agma::{FaceWidths, GearSetRating, MemberData, PreparedRating, Rating, SizeFactor};
 pub use agma908::{bending_geometry_factor, BendingJ, JMethod};
 pub use bending_memo::BendingJMemo;
-pub use buckingham::{BuckinghamPair, DynamicLoad, ToothForm, FULL_DEPTH_20};
+pub use buckingham::{BuckinghamPair, DynamicLoad, SaturatedLoad, ToothForm, FULL_DEPTH_20};
 pub use error::GearError;
 pub use gear_set::{GearSet, MeshStep, StepResult};
 pub use geometry::checks::{CheckKind, CheckReport, Remedy};
