@@ -154,6 +154,29 @@ pub(crate) fn orders_of<const V: usize>(
     out
 }
 
+/// The orders 0..=`max_order` of `n` samples that are all zeros (+0 or −0, as a free moment
+/// about the plane of the only cylinder is): every component +0, the bits [`orders_on`] gives.
+/// Each of its sums starts at +0 and adds products of a zero and a finite factor, which are
+/// zeros, and +0 + (±0) is +0 when rounding to nearest (IEEE 754 §6.3); +0 / N is +0.
+///
+/// # Panics
+/// If N ≤ 2·`max_order`, as [`orders_on`].
+pub(crate) fn zero_orders(n: usize, max_order: usize) -> Vec<Order> {
+    assert!(
+        n > 2 * max_order,
+        "{n} samples per revolution resolve orders below {}, not {max_order}",
+        n.div_ceil(2)
+    );
+    let zero = C::new(0.0, 0.0);
+    (0..=max_order)
+        .map(|order| Order {
+            order,
+            forward: zero,
+            backward: zero,
+        })
+        .collect()
+}
+
 /// `steps` crank states over one revolution from `start` (rad) at the constant speed `speed`
 /// (rad/s): θ_j = start + 2πj/steps, the angles [`orders`] expects.
 pub fn revolution(start: f64, speed: f64, steps: usize) -> Vec<CrankState> {
@@ -234,6 +257,24 @@ mod tests {
             assert_eq!(a, orders(&x, start, 6));
             assert_eq!(b, orders(&y, start, 6));
         }
+    }
+
+    /// Samples of +0 and −0 (a moment about the only cylinder's plane) have the orders of
+    /// [`zero_orders`], every bit: the transform's sums stay +0.
+    #[test]
+    fn signed_zeros_have_orders_of_positive_zeros() {
+        let z = [0.0, -0.0];
+        let samples: Vec<C> = (0..120).map(|j| C::new(z[j % 2], z[j / 7 % 2])).collect();
+        let bits = |o: &[Order]| -> Vec<(usize, [u64; 4])> {
+            o.iter()
+                .map(|o| {
+                    let parts = [o.forward.re, o.forward.im, o.backward.re, o.backward.im];
+                    (o.order, parts.map(f64::to_bits))
+                })
+                .collect()
+        };
+        assert!(samples.iter().any(|s| s.re.is_sign_negative()));
+        assert_eq!(bits(&orders(&samples, 0.0, 6)), bits(&zero_orders(120, 6)));
     }
 
     #[test]

@@ -31,7 +31,7 @@
 //! depend on it (`docs/validation/balance.md`, free moments).
 
 use crate::counterweight::Rotor;
-use crate::harmonics::{orders_of, revolution_states, Order};
+use crate::harmonics::{orders_of, revolution_states, zero_orders, Order};
 use crate::shaking::{shaking, shaking_lane, Shaking};
 use cardan_mechanism::{CrankState, Mechanism, StateBlock, C, LANES};
 use std::f64::consts::TAU;
@@ -323,17 +323,23 @@ impl Layout {
                     .zip(moments.chunks_mut(LANES)),
             );
             for (chunk, (forces, moments)) in chunks {
-                own.clear();
-                own.extend(chunk.iter().map(|crank| {
-                    let angle = crank.angle + c.throw - c.axis_angle;
-                    match angle.to_bits() == crank.angle.to_bits() {
-                        true => *crank,
-                        false => {
-                            CrankState::new(angle, crank.speed, crank.acceleration, crank.time)
+                // θ ≥ +0 (from θ₀ = 0): (θ + φ) − β is θ for φ = β = ±0.
+                let states = if c.throw == 0.0 && c.axis_angle == 0.0 {
+                    chunk
+                } else {
+                    own.clear();
+                    own.extend(chunk.iter().map(|crank| {
+                        let angle = crank.angle + c.throw - c.axis_angle;
+                        match angle.to_bits() == crank.angle.to_bits() {
+                            true => *crank,
+                            false => {
+                                CrankState::new(angle, crank.speed, crank.acceleration, crank.time)
+                            }
                         }
-                    }
-                }));
-                block.fill(mechanism, own);
+                    }));
+                    own.as_slice()
+                };
+                block.fill(mechanism, states);
                 for (k, (f, m)) in forces.iter_mut().zip(moments.iter_mut()).enumerate() {
                     let force = axis * shaking_lane(t, block, k).force;
                     *f += force;
@@ -351,6 +357,13 @@ impl Layout {
         }
         table.clear();
         table.extend(cranks.iter().map(|c| c.direction));
+        // One cylinder in the plane z₀ without rotors elsewhere: a moment of zeros, whose orders
+        // are zeros ([`crate::harmonics::zero_orders`]).
+        if moments.iter().all(|m| m.re == 0.0 && m.im == 0.0) {
+            let [force] = orders_of([forces], 0.0, max_order, table);
+            let moment = zero_orders(forces.len(), max_order);
+            return MachineOrders { force, moment };
+        }
         let [force, moment] = orders_of([forces, moments], 0.0, max_order, table);
         MachineOrders { force, moment }
     }
