@@ -317,11 +317,9 @@ impl Layout {
         for c in &self.cylinders {
             let axis = C::from_polar(1.0, c.axis_angle);
             let lever = C::i() * (c.axial_position - z0);
-            let chunks = cranks.chunks(LANES).zip(
-                forces
-                    .chunks_mut(LANES)
-                    .zip(moments.chunks_mut(LANES)),
-            );
+            let chunks = cranks
+                .chunks(LANES)
+                .zip(forces.chunks_mut(LANES).zip(moments.chunks_mut(LANES)));
             for (chunk, (forces, moments)) in chunks {
                 // θ ≥ +0 (from θ₀ = 0): (θ + φ) − β is θ for φ = β = ±0.
                 let states = if c.throw == 0.0 && c.axis_angle == 0.0 {

@@ -221,9 +221,8 @@ impl MachineBalance {
         }
         let mut carried = C::new(unbalance, 0.0);
         let single = Layout::single();
-        let mut first = |own: &[Rotor]| {
-            (single.orders_in(m, own, 1.0, ORDER_STEPS, 1, scratch)).force[1]
-        };
+        let mut first =
+            |own: &[Rotor]| (single.orders_in(m, own, 1.0, ORDER_STEPS, 1, scratch)).force[1];
         if let Some(fraction) = self.counterweight {
             if self.cardan_counterweights {
                 return Err(DeviceError {

@@ -147,5 +147,8 @@ fn the_orders_from_a_kept_room_are_the_plain_orders_bit_for_bit() {
             }
         }
     }
-    assert!(compared >= 3 * 7 * MECHANISMS.len().min(2), "{compared} compared");
+    assert!(
+        compared >= 3 * 7 * MECHANISMS.len().min(2),
+        "{compared} compared"
+    );
 }
