@@ -79,13 +79,14 @@ pub fn factors(n: usize, start: f64) -> Vec<C> {
 /// [`orders`] with the factors of [`factors`]`(samples.len(), start)` made beforehand (several
 /// vectors sampled at the same angles share them).
 pub fn orders_on(samples: &[C], start: f64, max_order: usize, table: &[C]) -> Vec<Order> {
-    let [out] = orders_of([samples], start, max_order, table);
+    let [out] = orders_of(samples.iter().map(|&v| [v]), start, max_order, table);
     out
 }
 
-/// [`orders_on`] of `V` vectors sampled at the same angles, in one pass over the samples per
-/// order: each vector's sums take its samples in their order with the same operations as
-/// alone (the same bits), the factor of each sample looked up once for all.
+/// [`orders_on`] of `V` vectors sampled at the same angles (`samples`: each angle's `V`
+/// samples, in the angles' order), in one pass over the samples per order: each vector's sums
+/// take its samples in their order with the same operations as alone (the same bits), the
+/// factor of each sample looked up once for all.
 ///
 /// A sample v times e^{∓ikθ} shares its four products: v·ē = (v_re·e_re + v_im·e_im,
 /// v_im·e_re − v_re·e_im) and v·e = (v_re·e_re − v_im·e_im, v_re·e_im + v_im·e_re), the
@@ -93,18 +94,14 @@ pub fn orders_on(samples: &[C], start: f64, max_order: usize, table: &[C]) -> Ve
 /// (−x) + y is y − x, in IEEE 754: the same bits).
 ///
 /// # Panics
-/// If the vectors differ in length, or N ≤ 2·`max_order`.
+/// If N ≤ 2·`max_order`.
 pub(crate) fn orders_of<const V: usize>(
-    vectors: [&[C]; V],
+    samples: impl ExactSizeIterator<Item = [C; V]> + Clone,
     start: f64,
     max_order: usize,
     table: &[C],
 ) -> [Vec<Order>; V] {
-    let n = vectors.first().map_or(0, |v| v.len());
-    assert!(
-        vectors.iter().all(|v| v.len() == n),
-        "vectors sampled at the same angles"
-    );
+    let n = samples.len();
     assert!(
         n > 2 * max_order,
         "{n} samples per revolution resolve orders below {}, not {max_order}",
@@ -117,14 +114,13 @@ pub(crate) fn orders_of<const V: usize>(
         let (mut forward, mut backward) = ([zero; V], [zero; V]);
         // m = (k·j) mod N, stepped by k (k < N/2) without a division per sample.
         let mut m = 0;
-        for j in 0..n {
+        for at_angle in samples.clone() {
             // e^{ikθ_j} from k·θ_j reduced to one turn: exact to an ulp of 2π.
             let e = match table.get(m) {
                 Some(&e) => e,
                 None => C::from_polar(1.0, m as f64 * step + k as f64 * start),
             };
-            for ((v, f), b) in vectors.iter().zip(&mut forward).zip(&mut backward) {
-                let v = v[j];
+            for ((v, f), b) in at_angle.into_iter().zip(&mut forward).zip(&mut backward) {
                 let (rr, ii) = (v.re * e.re, v.im * e.im);
                 let (ri, ir) = (v.re * e.im, v.im * e.re);
                 *f += C::new(rr + ii, ir - ri);
@@ -253,7 +249,8 @@ mod tests {
         let (x, y): (Vec<C>, Vec<C>) = (0..90).map(|j| (v(j, 0.7), v(j, -1.9))).unzip();
         for start in [0.0, 0.4] {
             let table = factors(x.len(), start);
-            let [a, b] = orders_of([&x, &y], start, 6, &table);
+            let pairs = x.iter().zip(&y).map(|(&x, &y)| [x, y]);
+            let [a, b] = orders_of(pairs, start, 6, &table);
             assert_eq!(a, orders(&x, start, 6));
             assert_eq!(b, orders(&y, start, 6));
         }

@@ -358,11 +358,12 @@ impl Layout {
         // One cylinder in the plane z₀ without rotors elsewhere: a moment of zeros, whose orders
         // are zeros ([`crate::harmonics::zero_orders`]).
         if moments.iter().all(|m| m.re == 0.0 && m.im == 0.0) {
-            let [force] = orders_of([forces], 0.0, max_order, table);
+            let [force] = orders_of(forces.iter().map(|&f| [f]), 0.0, max_order, table);
             let moment = zero_orders(forces.len(), max_order);
             return MachineOrders { force, moment };
         }
-        let [force, moment] = orders_of([forces, moments], 0.0, max_order, table);
+        let samples = forces.iter().zip(moments.iter()).map(|(&f, &m)| [f, m]);
+        let [force, moment] = orders_of(samples, 0.0, max_order, table);
         MachineOrders { force, moment }
     }
 }
