@@ -120,11 +120,12 @@ pub(crate) fn orders_of<const V: usize>(
                 Some(&e) => e,
                 None => C::from_polar(1.0, m as f64 * step + k as f64 * start),
             };
-            for ((v, f), b) in at_angle.into_iter().zip(&mut forward).zip(&mut backward) {
+            for x in 0..V {
+                let v = at_angle[x];
                 let (rr, ii) = (v.re * e.re, v.im * e.im);
                 let (ri, ir) = (v.re * e.im, v.im * e.re);
-                *f += C::new(rr + ii, ir - ri);
-                *b += C::new(rr - ii, ri + ir);
+                forward[x] += C::new(rr + ii, ir - ri);
+                backward[x] += C::new(rr - ii, ri + ir);
             }
             m += k;
             if m >= n {

@@ -394,10 +394,9 @@ mod tests {
 
     /// One room used for revolutions of 120, 70 (a last block of 6 lanes, the rest of the
     /// block stale) and 120 steps again, at other speeds and orders, gives the bits of a fresh
-    /// room each time: nothing of a call is read by the next.
+    /// room each time, for every registered mechanism: nothing of a call is read by the next.
     #[test]
     fn a_kept_room_gives_the_bits_of_a_fresh_one() {
-        let m = cardan_mechanism::entry("slider_crank").unwrap();
         let geometry = cardan_mechanism::MachineGeometry {
             crank_length: 0.06,
             rod_length: 0.14,
@@ -405,25 +404,28 @@ mod tests {
             pin_offset: 0.0,
         };
         let options = cardan_mechanism::Options::new();
-        let m = (m.build)(&geometry, &Default::default(), &options).unwrap();
         let layout = Layout::in_line(&[0.0, 2.1, 4.2], 0.1);
         let rotors = [layout.place(1, &Rotor::on_crank(C::new(0.01, 0.002), 0.02))];
-        let mut kept = OrdersScratch::default();
-        for (steps, speed, max_order) in [(120, 30.0, 4), (70, 300.0, 6), (120, 50.0, 2)] {
-            let a = layout.orders_in(m.as_ref(), &rotors, speed, steps, max_order, &mut kept);
-            let b = layout.orders(m.as_ref(), &rotors, speed, steps, max_order);
-            let bits = |o: &MachineOrders| -> Vec<[u64; 8]> {
-                let parts = |o: &Order| [o.forward.re, o.forward.im, o.backward.re, o.backward.im];
-                (o.force.iter().zip(&o.moment))
-                    .map(|(f, m)| {
-                        let [a, b, c, d] = parts(f);
-                        let [e, f, g, h] = parts(m);
-                        [a, b, c, d, e, f, g, h].map(f64::to_bits)
-                    })
-                    .collect()
-            };
-            assert_eq!(bits(&a), bits(&b), "{steps} steps at {speed} rad/s");
-            assert_eq!(a.force.len(), max_order + 1);
+        let bits = |o: &MachineOrders| -> Vec<[u64; 8]> {
+            let parts = |o: &Order| [o.forward.re, o.forward.im, o.backward.re, o.backward.im];
+            (o.force.iter().zip(&o.moment))
+                .map(|(f, m)| {
+                    let [a, b, c, d] = parts(f);
+                    let [e, f, g, h] = parts(m);
+                    [a, b, c, d, e, f, g, h].map(f64::to_bits)
+                })
+                .collect()
+        };
+        for entry in cardan_mechanism::MECHANISMS {
+            let m = (entry.build)(&geometry, &Default::default(), &options).unwrap();
+            let mut kept = OrdersScratch::default();
+            for (steps, speed, max_order) in [(120, 30.0, 4), (70, 300.0, 6), (120, 50.0, 2)] {
+                let a = layout.orders_in(m.as_ref(), &rotors, speed, steps, max_order, &mut kept);
+                let b = layout.orders(m.as_ref(), &rotors, speed, steps, max_order);
+                let what = format!("{}: {steps} steps at {speed} rad/s", entry.name);
+                assert_eq!(bits(&a), bits(&b), "{what}");
+                assert_eq!(a.force.len(), max_order + 1, "{what}");
+            }
         }
     }
 
