@@ -372,7 +372,7 @@ impl Layout {
 /// ([`crate::PreparedBalance::orders`]): a block of the mechanism's topology (some 30 kB of
 /// columns to zero, made at its first use) and the revolution's crank states, force, moment
 /// and factors, each written whole before it is read.
-#[derive(Debug, Default)]
+#[derive(Default)]
 pub struct OrdersScratch {
     block: Option<Box<StateBlock>>,
     cranks: Vec<CrankState>,
@@ -380,6 +380,13 @@ pub struct OrdersScratch {
     forces: Vec<C>,
     moments: Vec<C>,
     table: Vec<C>,
+}
+
+impl std::fmt::Debug for OrdersScratch {
+    /// Its name only: what a room holds depends on the calls made (and a block is some 30 kB).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("OrdersScratch").finish_non_exhaustive()
+    }
 }
 
 #[cfg(test)]

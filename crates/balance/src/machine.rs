@@ -287,8 +287,15 @@ pub struct PreparedBalance {
 
 /// An [`OrdersScratch`] behind a lock, so that [`PreparedBalance::orders`] takes `&self` and
 /// the prepared machine stays shareable between threads; a clone starts with a room of its own.
-#[derive(Debug, Default)]
+#[derive(Default)]
 struct KeptScratch(Mutex<OrdersScratch>);
+
+impl std::fmt::Debug for KeptScratch {
+    /// Its name only: what a room holds depends on the calls made, not on the machine.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("KeptScratch")
+    }
+}
 
 impl Clone for KeptScratch {
     fn clone(&self) -> Self {
@@ -419,6 +426,7 @@ impl PreparedBalance {
 
     /// The orders 0..=[`MAX_ORDER`] of the shaking force and free moment over one revolution
     /// at the constant speed `speed` (rad/s).
+    ///
     /// Taken in the kept room ([`OrdersScratch`]; a room of its own where another thread holds
     /// it): the bits of [`Layout::orders`].
     pub fn orders(&self, speed: f64) -> MachineOrders {
