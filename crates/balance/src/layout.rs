@@ -31,7 +31,7 @@
 //! depend on it (`docs/validation/balance.md`, free moments).
 
 use crate::counterweight::Rotor;
-use crate::harmonics::{factors, orders_on, revolution, Order};
+use crate::harmonics::{orders_of, revolution_states, zero_orders, Order};
 use crate::shaking::{shaking, shaking_lane, Shaking};
 use cardan_mechanism::{CrankState, Mechanism, StateBlock, C, LANES};
 use std::f64::consts::TAU;
@@ -273,37 +273,119 @@ impl Layout {
         steps: usize,
         max_order: usize,
     ) -> MachineOrders {
-        let cranks = revolution(0.0, speed, steps);
-        // Each cylinder's shaking over the revolution from its states' columns, filled a block
-        // at a time into one block.
+        let mut scratch = OrdersScratch::default();
+        self.orders_in(mechanism, rotors, speed, steps, max_order, &mut scratch)
+    }
+
+    /// [`Layout::orders`] in the room `scratch` (kept between calls with the one `mechanism`:
+    /// its block is of that mechanism's topology, and every call writes what it reads).
+    ///
+    /// The same operations as [`Layout::shaking`] at each step and [`crate::orders`] over the
+    /// steps, in the same order (the same bits): each cylinder's states filled a block at a
+    /// time, its shaking turned by its axis and added into the step's force and moment (every
+    /// cylinder in turn, then the rotors: [`Layout::sum_about`]'s order), the cylinder's crank
+    /// states the revolution's own where its angle ψ = θ + φ − β is θ to the bit (one cylinder
+    /// in its own frame), the factors of the transform the revolution's cos θ and sin θ (the
+    /// same angles j·2π/N: [`crate::harmonics::factors`]).
+    pub(crate) fn orders_in(
+        &self,
+        mechanism: &dyn Mechanism,
+        rotors: &[Rotor],
+        speed: f64,
+        steps: usize,
+        max_order: usize,
+        scratch: &mut OrdersScratch,
+    ) -> MachineOrders {
         let t = mechanism.topology();
-        let mut block = StateBlock::for_topology(t);
-        let per_cylinder: Vec<Vec<Shaking>> = (0..self.cylinders.len())
-            .map(|i| {
-                let own: Vec<CrankState> =
-                    cranks.iter().map(|c| self.cylinder_crank(i, c)).collect();
-                let mut out = Vec::with_capacity(own.len());
-                for chunk in own.chunks(LANES) {
-                    block.fill(mechanism, chunk);
-                    out.extend((0..chunk.len()).map(|k| shaking_lane(t, &block, k)));
+        let OrdersScratch {
+            block,
+            cranks,
+            own,
+            forces,
+            moments,
+            table,
+        } = scratch;
+        let block = block.get_or_insert_with(|| Box::new(StateBlock::for_topology(t)));
+        cranks.clear();
+        cranks.extend(revolution_states(0.0, speed, steps));
+        let zero = C::new(0.0, 0.0);
+        forces.clear();
+        forces.resize(steps, zero);
+        moments.clear();
+        moments.resize(steps, zero);
+        let z0 = self.reference();
+        for c in &self.cylinders {
+            let axis = C::from_polar(1.0, c.axis_angle);
+            let lever = C::i() * (c.axial_position - z0);
+            let chunks = cranks
+                .chunks(LANES)
+                .zip(forces.chunks_mut(LANES).zip(moments.chunks_mut(LANES)));
+            for (chunk, (forces, moments)) in chunks {
+                // θ ≥ +0 (from θ₀ = 0): (θ + φ) − β is θ for φ = β = ±0.
+                let states = if c.throw == 0.0 && c.axis_angle == 0.0 {
+                    chunk
+                } else {
+                    own.clear();
+                    own.extend(chunk.iter().map(|crank| {
+                        let angle = crank.angle + c.throw - c.axis_angle;
+                        match angle.to_bits() == crank.angle.to_bits() {
+                            true => *crank,
+                            false => {
+                                CrankState::new(angle, crank.speed, crank.acceleration, crank.time)
+                            }
+                        }
+                    }));
+                    own.as_slice()
+                };
+                block.fill(mechanism, states);
+                for (k, (f, m)) in forces.iter_mut().zip(moments.iter_mut()).enumerate() {
+                    let force = axis * shaking_lane(t, block, k).force;
+                    *f += force;
+                    *m += lever * force;
                 }
-                out
-            })
-            .collect();
-        let axes = self.axes();
-        let (forces, moments): (Vec<C>, Vec<C>) = cranks
-            .iter()
-            .enumerate()
-            .map(|(j, crank)| {
-                let s = self.sum_on(&axes, per_cylinder.iter().map(|c| c[j]), rotors, crank);
-                (s.force, s.moment)
-            })
-            .unzip();
-        let table = factors(steps, 0.0);
-        MachineOrders {
-            force: orders_on(&forces, 0.0, max_order, &table),
-            moment: orders_on(&moments, 0.0, max_order, &table),
+            }
         }
+        for r in rotors {
+            let lever = C::i() * (r.axial_position - z0);
+            for ((crank, f), m) in cranks.iter().zip(forces.iter_mut()).zip(moments.iter_mut()) {
+                let force = r.force(crank);
+                *f += force;
+                *m += lever * force;
+            }
+        }
+        table.clear();
+        table.extend(cranks.iter().map(|c| c.direction));
+        // One cylinder in the plane z₀ without rotors elsewhere: a moment of zeros, whose orders
+        // are zeros ([`crate::harmonics::zero_orders`]).
+        if moments.iter().all(|m| m.re == 0.0 && m.im == 0.0) {
+            let [force] = orders_of(forces.iter().map(|&f| [f]), 0.0, max_order, table);
+            let moment = zero_orders(forces.len(), max_order);
+            return MachineOrders { force, moment };
+        }
+        let samples = forces.iter().zip(moments.iter()).map(|(&f, &m)| [f, m]);
+        let [force, moment] = orders_of(samples, 0.0, max_order, table);
+        MachineOrders { force, moment }
+    }
+}
+
+/// Room for [`Layout::orders`] kept between calls with one mechanism
+/// ([`crate::PreparedBalance::orders`]): a block of the mechanism's topology (some 30 kB of
+/// columns to zero, made at its first use) and the revolution's crank states, force, moment
+/// and factors, each written whole before it is read.
+#[derive(Default)]
+pub struct OrdersScratch {
+    block: Option<Box<StateBlock>>,
+    cranks: Vec<CrankState>,
+    own: Vec<CrankState>,
+    forces: Vec<C>,
+    moments: Vec<C>,
+    table: Vec<C>,
+}
+
+impl std::fmt::Debug for OrdersScratch {
+    /// Its name only: what a room holds depends on the calls made (and a block is some 30 kB).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("OrdersScratch").finish_non_exhaustive()
     }
 }
 
@@ -315,6 +397,43 @@ mod tests {
     #[should_panic(expected = "not a permutation")]
     fn a_firing_order_that_is_not_a_permutation_is_refused() {
         throws_from_firing_order(&[1, 3, 3, 2], std::f64::consts::PI);
+    }
+
+    /// One room used for revolutions of 120, 70 (a last block of 6 lanes, the rest of the
+    /// block stale) and 120 steps again, at other speeds and orders, gives the bits of a fresh
+    /// room each time, for every registered mechanism: nothing of a call is read by the next.
+    #[test]
+    fn a_kept_room_gives_the_bits_of_a_fresh_one() {
+        let geometry = cardan_mechanism::MachineGeometry {
+            crank_length: 0.06,
+            rod_length: 0.14,
+            bore: 0.12,
+            pin_offset: 0.0,
+        };
+        let options = cardan_mechanism::Options::new();
+        let layout = Layout::in_line(&[0.0, 2.1, 4.2], 0.1);
+        let rotors = [layout.place(1, &Rotor::on_crank(C::new(0.01, 0.002), 0.02))];
+        let bits = |o: &MachineOrders| -> Vec<[u64; 8]> {
+            let parts = |o: &Order| [o.forward.re, o.forward.im, o.backward.re, o.backward.im];
+            (o.force.iter().zip(&o.moment))
+                .map(|(f, m)| {
+                    let [a, b, c, d] = parts(f);
+                    let [e, f, g, h] = parts(m);
+                    [a, b, c, d, e, f, g, h].map(f64::to_bits)
+                })
+                .collect()
+        };
+        for entry in cardan_mechanism::MECHANISMS {
+            let m = (entry.build)(&geometry, &Default::default(), &options).unwrap();
+            let mut kept = OrdersScratch::default();
+            for (steps, speed, max_order) in [(120, 30.0, 4), (70, 300.0, 6), (120, 50.0, 2)] {
+                let a = layout.orders_in(m.as_ref(), &rotors, speed, steps, max_order, &mut kept);
+                let b = layout.orders(m.as_ref(), &rotors, speed, steps, max_order);
+                let what = format!("{}: {steps} steps at {speed} rad/s", entry.name);
+                assert_eq!(bits(&a), bits(&b), "{what}");
+                assert_eq!(a.force.len(), max_order + 1, "{what}");
+            }
+        }
     }
 
     /// A rotor of a cylinder turned by β with its throw at φ: on the crank (k = 1) it turns

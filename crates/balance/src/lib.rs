@@ -34,7 +34,9 @@ pub use counterweight::{
 };
 pub use device_error::{Device, DeviceError};
 pub use harmonics::{orders, revolution, Order};
-pub use layout::{throws_from_firing_order, Cylinder, Layout, MachineOrders, MachineShaking};
+pub use layout::{
+    throws_from_firing_order, Cylinder, Layout, MachineOrders, MachineShaking, OrdersScratch,
+};
 pub use machine::{
     CylinderScratch, MachineBalance, Phase, PreparedBalance, MAX_ORDER, ORDER_STEPS,
 };

@@ -14,10 +14,10 @@ use crate::counterweight::{
     Rotor,
 };
 use crate::device_error::{Device, DeviceError};
-use crate::layout::{Layout, MachineOrders, MachineShaking};
+use crate::layout::{Layout, MachineOrders, MachineShaking, OrdersScratch};
 use crate::shaking::{shaking_lane, Shaking};
 use cardan_mechanism::{Column, CrankState, Mechanism, State, StateBlock, C};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex, TryLockError};
 
 /// Steps of the revolution over which the orders are taken. N samples give order k exactly but
 /// for the orders N − k, N + k, … folded onto it (aliasing); orders up to 6 are asked for, and
@@ -181,13 +181,17 @@ impl MachineBalance {
     pub fn prepare(&self, mechanism: Arc<dyn Mechanism>) -> Result<PreparedBalance, DeviceError> {
         let mechanism = self.equip(mechanism)?;
         let m = mechanism.as_ref();
-        let (own, carried) = self.cylinder_rotors(m)?;
+        // One room for the orders that size the devices and the run's own (the same mechanism).
+        let mut scratch = OrdersScratch::default();
+        let (own, carried) = self.cylinder_rotors(m, &mut scratch)?;
         let mut rotors: Vec<Rotor> = (0..self.layout.cylinders.len())
             .flat_map(|i| own.iter().map(move |r| (i, r)))
             .map(|(i, r)| self.layout.place(i, r))
             .collect();
         if self.lanchester {
-            let second = self.layout.orders(m, &rotors, 1.0, ORDER_STEPS, 2).force[2];
+            let second = (self.layout)
+                .orders_in(m, &rotors, 1.0, ORDER_STEPS, 2, &mut scratch)
+                .force[2];
             rotors.extend(lanchester_shafts(&second, 1.0, self.layout.reference()));
         }
         Ok(PreparedBalance {
@@ -197,6 +201,7 @@ impl MachineBalance {
             layout: self.layout.clone(),
             rotors,
             carried,
+            scratch: KeptScratch(Mutex::new(scratch)),
         })
     }
 
@@ -204,14 +209,20 @@ impl MachineBalance {
     /// counterweight or the cardan pair's crank counterweight (the wheel's is the equipped
     /// mechanism's own mass, [`MachineBalance::equip`]); and the Σ m·ρ of those the crankshaft
     /// carries alone ([`PreparedBalance::crank_masses`]).
-    fn cylinder_rotors(&self, m: &dyn Mechanism) -> Result<(Vec<Rotor>, C), DeviceError> {
+    fn cylinder_rotors(
+        &self,
+        m: &dyn Mechanism,
+        scratch: &mut OrdersScratch,
+    ) -> Result<(Vec<Rotor>, C), DeviceError> {
         let unbalance = m.masses().crank_unbalance;
         let mut own = Vec::new();
         if unbalance != 0.0 {
             own.push(Rotor::crank_unbalance(unbalance));
         }
         let mut carried = C::new(unbalance, 0.0);
-        let first = |own: &[Rotor]| Layout::single().orders(m, own, 1.0, ORDER_STEPS, 1).force[1];
+        let single = Layout::single();
+        let mut first =
+            |own: &[Rotor]| (single.orders_in(m, own, 1.0, ORDER_STEPS, 1, scratch)).force[1];
         if let Some(fraction) = self.counterweight {
             if self.cardan_counterweights {
                 return Err(DeviceError {
@@ -270,6 +281,26 @@ pub struct PreparedBalance {
     axes: Vec<C>,
     /// The plane the moments are taken about ([`Layout::reference`]), m, found once.
     reference: f64,
+    /// Room for [`PreparedBalance::orders`], kept from the sizing of the devices.
+    scratch: KeptScratch,
+}
+
+/// An [`OrdersScratch`] behind a lock, so that [`PreparedBalance::orders`] takes `&self` and
+/// the prepared machine stays shareable between threads; a clone starts with a room of its own.
+#[derive(Default)]
+struct KeptScratch(Mutex<OrdersScratch>);
+
+impl std::fmt::Debug for KeptScratch {
+    /// Its name only: what a room holds depends on the calls made, not on the machine.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("KeptScratch")
+    }
+}
+
+impl Clone for KeptScratch {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
 }
 
 impl PreparedBalance {
@@ -395,14 +426,20 @@ impl PreparedBalance {
 
     /// The orders 0..=[`MAX_ORDER`] of the shaking force and free moment over one revolution
     /// at the constant speed `speed` (rad/s).
+    ///
+    /// Taken in the kept room ([`OrdersScratch`]; a room of its own where another thread holds
+    /// it): the bits of [`Layout::orders`].
     pub fn orders(&self, speed: f64) -> MachineOrders {
-        self.layout.orders(
-            self.mechanism.as_ref(),
-            &self.rotors,
-            speed,
-            ORDER_STEPS,
-            MAX_ORDER,
-        )
+        let m = self.mechanism.as_ref();
+        let orders = |scratch: &mut OrdersScratch| {
+            (self.layout).orders_in(m, &self.rotors, speed, ORDER_STEPS, MAX_ORDER, scratch)
+        };
+        match self.scratch.0.try_lock() {
+            Ok(mut kept) => orders(&mut kept),
+            // A call that panicked left it: every call writes what it reads.
+            Err(TryLockError::Poisoned(kept)) => orders(&mut kept.into_inner()),
+            Err(TryLockError::WouldBlock) => orders(&mut OrdersScratch::default()),
+        }
     }
 }
 
