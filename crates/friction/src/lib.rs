@@ -56,7 +56,8 @@ pub use rings::{
     RingFilmState, RingLoad, RingProfile, KARHULA_RING_MU,
 };
 pub use rolling_bearing::{
-    rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing, RollingLoss,
+    rolling_bearing_loss, KarhulaBearingSizes, LoadPower, PalmgrenCoefficients, RollingBearing,
+    RollingLoss,
     RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
     KARHULA_LOAD_CONSTANT_PRINTED,
 };

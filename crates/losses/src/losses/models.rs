@@ -13,11 +13,12 @@ use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::setup_error::{failed, GearInput, SetupError, SetupInput};
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
-    KarhulaRingPack, KeptPower, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel,
-    RollingReading, ViscousSkirt,
+    KarhulaRingPack, KeptPower, LoadPower, RingFilm, RingLoad, RingProfile, RollingBearing,
+    RollingModel, RollingReading, ViscousSkirt,
 };
 use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, PreparedMeshLoss, Reading};
-use cardan_mechanism::{Bearings, Column, JointKind};
+use cardan_mechanism::{Bearings, Column, JointKind, ZERO};
+use std::ops::Range;
 
 /// What a bound model is: its [`Loss`], or why it cannot be set up.
 pub type BoundLoss = Result<Box<dyn Loss>, SetupError>;
@@ -304,15 +305,47 @@ pub struct Rolling {
 impl Loss for Rolling {
     fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
         let (load, motion) = (&at.total.joints[self.joint], &at.states.joints[self.joint]);
+        let (mut share, mut powers) = (ZERO, [ZERO; 2]);
+        let wanted = self.model.load_powers();
+        let lanes = at.lanes.clone();
+        shares_and_powers(&load.fx, &load.fy, self.count, wanted, lanes, &mut share, &mut powers);
         for i in at.lanes.clone() {
-            let share = load.fx[i].hypot(load.fy[i]) / self.count;
-            let w = motion.relative_speed[i];
-            let loss = self
-                .model
-                .loss_kept(share, w, self.viscosity, &mut self.kept);
+            let loss = self.model.loss_with_powers(
+                share[i],
+                motion.relative_speed[i],
+                self.viscosity,
+                [powers[0][i], powers[1][i]],
+                &mut self.kept,
+            );
             out[i] = self.count * loss.power;
         }
         Ok(())
+    }
+}
+
+cardan_mechanism::vectorised! {
+    /// Each lane's share of the joint load carried by one of `count` bearings (A9.1.23-25),
+    /// |(fx, fy)| / count, and the `wanted` powers of it, every lane at once
+    /// ([`cardan_numeric::powf_lanes`], the bits of [`cardan_friction::LoadPower::of`]).
+    fn shares_and_powers(
+        fx: &Column,
+        fy: &Column,
+        count: f64,
+        wanted: &[LoadPower],
+        lanes: Range<usize>,
+        share: &mut Column,
+        powers: &mut [Column; 2],
+    ) {
+        for i in lanes.clone() {
+            share[i] = fx[i].hypot(fy[i]) / count;
+        }
+        for (p, out) in wanted.iter().zip(powers.iter_mut()) {
+            let mut base = ZERO;
+            for i in lanes.clone() {
+                base[i] = share[i] / p.divisor;
+            }
+            cardan_numeric::powf_lanes(&base[lanes.clone()], p.exponent, &mut out[lanes.clone()]);
+        }
     }
 }
 
