@@ -57,8 +57,7 @@ pub use rings::{
 };
 pub use rolling_bearing::{
     rolling_bearing_loss, KarhulaBearingSizes, LoadPower, PalmgrenCoefficients, RollingBearing,
-    RollingLoss,
-    RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
+    RollingLoss, RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
     KARHULA_LOAD_CONSTANT_PRINTED,
 };
 pub use skirt::{coulomb_sliding, karhula_skirt, viscous_skirt, ViscousSkirt, KARHULA_SKIRT_MU};

@@ -340,6 +340,8 @@ impl RollingModel {
     /// [`RollingModel::loss_kept`] with the powers of the load already taken: `load_powers[j]`
     /// is [`RollingModel::load_powers`]`()[j]` of |`load`| (the rest unused). Every reading
     /// takes its powers of the load from there; the viscous term's (νn)^(2/3) from `kept`.
+    /// Inlined into a block's loop over its lanes (the reading's `match` then leaves the loop).
+    #[inline]
     pub fn loss_with_powers(
         &self,
         load: f64,
@@ -485,7 +487,11 @@ mod tests {
                     [powers[0][i], powers[1][i]],
                     &mut kept,
                 );
-                assert_eq!(lanes, model.loss(load, speed, 5e-6), "{reading:?} at {load} N");
+                assert_eq!(
+                    lanes,
+                    model.loss(load, speed, 5e-6),
+                    "{reading:?} at {load} N"
+                );
             }
         }
     }
@@ -514,7 +520,10 @@ mod tests {
                 );
                 let lanes = model.loss(load, 300.0, 5e-6);
                 let relative = (lanes.power - with_powf.power).abs() / with_powf.power;
-                assert!(relative <= 8.0 * f64::EPSILON, "{reading:?} at {load} N: {relative}");
+                assert!(
+                    relative <= 8.0 * f64::EPSILON,
+                    "{reading:?} at {load} N: {relative}"
+                );
             }
         }
     }

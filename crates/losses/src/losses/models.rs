@@ -308,7 +308,15 @@ impl Loss for Rolling {
         let (mut share, mut powers) = (ZERO, [ZERO; 2]);
         let wanted = self.model.load_powers();
         let lanes = at.lanes.clone();
-        shares_and_powers(&load.fx, &load.fy, self.count, wanted, lanes, &mut share, &mut powers);
+        shares_and_powers(
+            &load.fx,
+            &load.fy,
+            self.count,
+            wanted,
+            lanes,
+            &mut share,
+            &mut powers,
+        );
         for i in at.lanes.clone() {
             let loss = self.model.loss_with_powers(
                 share[i],

@@ -136,10 +136,15 @@ fn the_fallbacks_have_the_bits_of_powf() {
         2.5,
         1.0,
     ];
-    for y in EXPONENTS
-        .into_iter()
-        .chain([0.0, 1.0, 800.0, -800.0, f64::INFINITY, f64::NEG_INFINITY, f64::NAN])
-    {
+    for y in EXPONENTS.into_iter().chain([
+        0.0,
+        1.0,
+        800.0,
+        -800.0,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+    ]) {
         let mut out = [0.0; 13];
         powf_lanes(&odd, y, &mut out);
         for (&x, &p) in odd.iter().zip(&out) {
