@@ -139,7 +139,7 @@ impl Exponent {
         let t_hi = p + q;
         let t_lo = q - (t_hi - p);
         let power = exp_double(t_hi, t_lo);
-        let ok = x >= f64::MIN_POSITIVE && x < f64::INFINITY && t_hi.abs() < T_LIMIT;
+        let ok = (f64::MIN_POSITIVE..f64::INFINITY).contains(&x) && t_hi.abs() < T_LIMIT;
         if ok {
             power
         } else {
