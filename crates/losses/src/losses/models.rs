@@ -473,3 +473,78 @@ impl Loss for Pumping {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cardan_friction::{PalmgrenCoefficients, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT};
+    use cardan_mechanism::{Joint, LoadsBlock, StateBlock, Topology, LANES};
+
+    /// A block through `Rolling::power` (the shares and their powers of all lanes at once)
+    /// gives each lane the bits of the single-step model (`RollingModel::loss` of the lane's
+    /// share, times the bearing count), in every reading, over lanes of zero, tiny, ordinary
+    /// and huge loads and a block that is not full.
+    #[test]
+    fn rolling_over_a_block_has_the_bits_of_single_steps() {
+        let bearings = Bearings {
+            radius: 0.0225,
+            count: 2,
+            static_load_rating: 60_000.0,
+        };
+        let t = Topology {
+            bodies: Vec::new(),
+            joints: vec![Joint::pin("main_bearing", bearings, 0, None)],
+            pistons: Vec::new(),
+            crankshaft: 0,
+            extras: Vec::new(),
+        };
+        let (mut states, mut total) = (StateBlock::for_topology(&t), LoadsBlock::for_topology(&t));
+        for i in 0..LANES {
+            let f = if i == 0 {
+                0.0
+            } else {
+                1e-3 * 1.35f64.powi(i as i32)
+            };
+            let a = 0.1 * i as f64;
+            (total.joints[0].fx[i], total.joints[0].fy[i]) = (f * a.cos(), -f * a.sin());
+            states.joints[0].relative_speed[i] = 300.0 - 10.0 * i as f64;
+        }
+        for reading in [
+            RollingReading::Karhula {
+                f0: 2.0,
+                load_constant: KARHULA_LOAD_CONSTANT,
+            },
+            RollingReading::Palmgren(PalmgrenCoefficients::DEEP_GROOVE_BALL),
+            RollingReading::Palmgren(PalmgrenCoefficients::CYLINDRICAL_ROLLER),
+            RollingReading::Skf(SkfDeepGrooveBall::SERIES_62),
+        ] {
+            let model = RollingModel::new(RollingBearing::new(0.045, 60_000.0).unwrap(), reading);
+            let mut rolling = Rolling {
+                joint: 0,
+                model,
+                count: 2.0,
+                viscosity: 5e-6,
+                kept: KeptPower::default(),
+            };
+            for n in [LANES, 37] {
+                let at = LossLanes {
+                    lanes: 0..n,
+                    ..LossLanes::one(&states, &total)
+                };
+                let mut out = [f64::NAN; LANES];
+                rolling.power(&at, &mut out).unwrap();
+                for i in 0..n {
+                    let (load, j) = (&total.joints[0], &states.joints[0]);
+                    let share = load.fx[i].hypot(load.fy[i]) / 2.0;
+                    let one = model.loss(share, j.relative_speed[i], 5e-6).power;
+                    assert_eq!(
+                        out[i].to_bits(),
+                        (2.0 * one).to_bits(),
+                        "{reading:?} lane {i}"
+                    );
+                }
+                assert!(out[n..].iter().all(|v| v.is_nan()), "lanes past the block");
+            }
+        }
+    }
+}
