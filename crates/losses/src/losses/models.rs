@@ -533,7 +533,7 @@ mod tests {
                 };
                 let mut out = [f64::NAN; LANES];
                 rolling.power(&at, &mut out).unwrap();
-                for i in 0..n {
+                for (i, &got) in out[..n].iter().enumerate() {
                     let (load, j) = (&total.joints[0], &states.joints[0]);
                     let share = load.fx[i].hypot(load.fy[i]) / 2.0;
                     let one = model.loss(share, j.relative_speed[i], 5e-6).power;
