@@ -537,11 +537,7 @@ mod tests {
                     let (load, j) = (&total.joints[0], &states.joints[0]);
                     let share = load.fx[i].hypot(load.fy[i]) / 2.0;
                     let one = model.loss(share, j.relative_speed[i], 5e-6).power;
-                    assert_eq!(
-                        out[i].to_bits(),
-                        (2.0 * one).to_bits(),
-                        "{reading:?} lane {i}"
-                    );
+                    assert_eq!(got.to_bits(), (2.0 * one).to_bits(), "{reading:?} lane {i}");
                 }
                 assert!(out[n..].iter().all(|v| v.is_nan()), "lanes past the block");
             }
