@@ -3,14 +3,17 @@
 //! multiply-add. The same arithmetic therefore gives the same bits whether the loop is compiled
 //! for AVX2 or the baseline SSE2 (the project's block kernels are compiled both ways).
 //!
-//! The method is the textbook one (Muller, *Elementary Functions*, 3rd ed. 2016, ch. 11 "range
-//! reduction" and §2.2 on double-word arithmetic; Dekker 1971 for the exact product of two
-//! numbers of at most 26 significant bits and the exact sum of two numbers ordered by size):
+//! The method is the textbook one (J.-M. Muller, *Elementary Functions: Algorithms and
+//! Implementation*, 3rd ed. 2016, on range reduction and double-word arithmetic; T. J.
+//! Dekker, "A floating-point technique for extending the available precision", Numer. Math.
+//! 18, 1971, for the exact product of two numbers of at most 26 significant bits and the exact
+//! sum of two numbers ordered by size):
 //!
 //! 1. x = 2^k m with m in [√½, √2) from the bits of x.
-//! 2. ln m = 2 atanh s, s = (m − 1)/(m + 1), |s| ≤ 0.1716 (Abramowitz & Stegun, *Handbook of Mathematical Functions*, 1964, 4.1.27), with
-//!    s as a pair s_h + s_l (s_h of 21 significant bits, so that s_h (m + 1) is exact), and the
-//!    series' tail past 2s as a polynomial of degree 7 in s² (error below 2⁻⁶²).
+//! 2. ln m = 2 atanh s, s = (m − 1)/(m + 1), |s| ≤ 0.1716 (Abramowitz & Stegun, *Handbook of
+//!    Mathematical Functions*, 1964, 4.1.27), with s as a pair s_h + s_l (s_h of 21
+//!    significant bits, so that s_h (m + 1) is exact), and the series' tail past 2s as a
+//!    polynomial of degree 7 in s² (error below 2⁻⁶²).
 //! 3. ln x = k ln 2 + ln m as a double-double, ln 2 = ln2_hi + ln2_lo (ln2_hi of 42 bits, so
 //!    k ln2_hi is exact).
 //! 4. t = y ln x as a double-double, from y and ln x cut into 26-bit heads (exact products).
@@ -42,7 +45,7 @@
 //! correct answer.
 
 /// Clears the low 27 bits of the significand: 26 significant bits left, so that the product
-/// of two such numbers is exact (Dekker 1971).
+/// of two such numbers is exact (Dekker 1971; a mask in place of Veltkamp's split).
 const HEAD_26: u64 = 0xFFFF_FFFF_F800_0000;
 /// Clears the low 32 bits of the significand: 21 significant bits left.
 const HEAD_21: u64 = 0xFFFF_FFFF_0000_0000;
