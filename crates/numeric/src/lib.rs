@@ -2,8 +2,10 @@
 //! friction models of `cardan-friction`, the gear physics of `cardan-gears`). Its own crate, at
 //! the bottom, depending on nothing: neither physics crate is the other's natural home.
 
+pub mod lane_hypot;
 pub mod lane_power;
 
+pub use lane_hypot::hypot_lanes;
 pub use lane_power::{powf_lane, powf_lanes};
 
 /// The bits of a signalling NaN: no arithmetic result has them (a NaN that an operation

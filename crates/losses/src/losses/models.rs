@@ -333,8 +333,9 @@ impl Loss for Rolling {
 
 cardan_mechanism::vectorised! {
     /// Each lane's share of the joint load carried by one of `count` bearings (A9.1.23-25),
-    /// |(fx, fy)| / count, and the `wanted` powers of it, every lane at once
-    /// ([`cardan_numeric::powf_lanes`], the bits of [`cardan_friction::LoadPower::of`]).
+    /// |(fx, fy)| / count ([`cardan_numeric::hypot_lanes`]: `f64::hypot`'s bits), and the
+    /// `wanted` powers of it, every lane at once ([`cardan_numeric::powf_lanes`], the bits of
+    /// [`cardan_friction::LoadPower::of`]).
     fn shares_and_powers(
         fx: &Column,
         fy: &Column,
@@ -344,8 +345,10 @@ cardan_mechanism::vectorised! {
         share: &mut Column,
         powers: &mut [Column; 2],
     ) {
-        for i in lanes.clone() {
-            share[i] = fx[i].hypot(fy[i]) / count;
+        let l = lanes.clone();
+        cardan_numeric::hypot_lanes(&fx[l.clone()], &fy[l.clone()], &mut share[l]);
+        for s in &mut share[lanes.clone()] {
+            *s /= count;
         }
         for (p, out) in wanted.iter().zip(powers.iter_mut()) {
             let mut base = ZERO;
