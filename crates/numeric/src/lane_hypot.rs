@@ -9,6 +9,9 @@
 //! bit for bit over 2 · 10⁷ pairs (`lane_hypot::tests`): magnitudes 10⁻³ to 10⁶, ratios
 //! down to 10⁻¹², near-equal pairs, both signs, and the edges; no pair differs.
 //!
+//! Cost (callgrind, a loop of 64 lanes compiled for AVX2): about 14 instructions a pair,
+//! against about 60 for a call of `hypot`.
+//!
 //! Outside the range where the squares can neither overflow nor lose bits to underflow (the
 //! larger magnitude in [2⁻⁴⁵⁰, 2⁴⁵⁰], the smaller 0 or at least 2⁻⁴⁵⁰), and for zeros,
 //! infinities and NaNs, the lane takes `f64::hypot`: the vector loop marks it NaN and a second,

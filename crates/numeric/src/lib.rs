@@ -1,6 +1,8 @@
 //! Numeric helpers shared by the physics crates that depend on nothing of each other (the
 //! friction models of `cardan-friction`, the gear physics of `cardan-gears`). Its own crate, at
-//! the bottom, depending on nothing: neither physics crate is the other's natural home.
+//! the bottom, depending on nothing: neither physics crate is the other's natural home. Also
+//! the block kernels' power and hypot over a block's lanes ([`lane_power`], [`lane_hypot`]),
+//! written to vectorise with the same bits on every instruction set.
 
 pub mod lane_hypot;
 pub mod lane_power;
