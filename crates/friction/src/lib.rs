@@ -56,8 +56,8 @@ pub use rings::{
     RingFilmState, RingLoad, RingProfile, KARHULA_RING_MU,
 };
 pub use rolling_bearing::{
-    rolling_bearing_loss, KarhulaBearingSizes, PalmgrenCoefficients, RollingBearing, RollingLoss,
-    RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
+    rolling_bearing_loss, KarhulaBearingSizes, LoadPower, PalmgrenCoefficients, RollingBearing,
+    RollingLoss, RollingModel, RollingReading, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT,
     KARHULA_LOAD_CONSTANT_PRINTED,
 };
 pub use skirt::{coulomb_sliding, karhula_skirt, viscous_skirt, ViscousSkirt, KARHULA_SKIRT_MU};

@@ -1,6 +1,14 @@
 //! Numeric helpers shared by the physics crates that depend on nothing of each other (the
 //! friction models of `cardan-friction`, the gear physics of `cardan-gears`). Its own crate, at
-//! the bottom, depending on nothing: neither physics crate is the other's natural home.
+//! the bottom, depending on nothing: neither physics crate is the other's natural home. Also
+//! the block kernels' power and hypot over a block's lanes ([`lane_power`], [`lane_hypot`]),
+//! written to vectorise with the same bits on every instruction set.
+
+pub mod lane_hypot;
+pub mod lane_power;
+
+pub use lane_hypot::hypot_lanes;
+pub use lane_power::{powf_lane, powf_lanes};
 
 /// The bits of a signalling NaN: no arithmetic result has them (a NaN that an operation
 /// produces is quiet), so no argument a model computes matches the "nothing kept" state.

@@ -13,11 +13,12 @@ use crate::mesh::{mesh_pair, mesh_speeds, tangential};
 use crate::setup_error::{failed, GearInput, SetupError, SetupInput};
 use cardan_friction::{
     coulomb_sliding, petroff, short_bearing, viscous_skirt, AsperityContact, JournalBearing,
-    KarhulaRingPack, KeptPower, RingFilm, RingLoad, RingProfile, RollingBearing, RollingModel,
-    RollingReading, ViscousSkirt,
+    KarhulaRingPack, KeptPower, LoadPower, RingFilm, RingLoad, RingProfile, RollingBearing,
+    RollingModel, RollingReading, ViscousSkirt,
 };
 use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, PreparedMeshLoss, Reading};
-use cardan_mechanism::{Bearings, Column, JointKind};
+use cardan_mechanism::{Bearings, Column, JointKind, ZERO};
+use std::ops::Range;
 
 /// What a bound model is: its [`Loss`], or why it cannot be set up.
 pub type BoundLoss = Result<Box<dyn Loss>, SetupError>;
@@ -304,15 +305,58 @@ pub struct Rolling {
 impl Loss for Rolling {
     fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
         let (load, motion) = (&at.total.joints[self.joint], &at.states.joints[self.joint]);
+        let (mut share, mut powers) = (ZERO, [ZERO; 2]);
+        let wanted = self.model.load_powers();
+        let lanes = at.lanes.clone();
+        shares_and_powers(
+            &load.fx,
+            &load.fy,
+            self.count,
+            wanted,
+            lanes,
+            &mut share,
+            &mut powers,
+        );
         for i in at.lanes.clone() {
-            let share = load.fx[i].hypot(load.fy[i]) / self.count;
-            let w = motion.relative_speed[i];
-            let loss = self
-                .model
-                .loss_kept(share, w, self.viscosity, &mut self.kept);
+            let loss = self.model.loss_with_powers(
+                share[i],
+                motion.relative_speed[i],
+                self.viscosity,
+                [powers[0][i], powers[1][i]],
+                &mut self.kept,
+            );
             out[i] = self.count * loss.power;
         }
         Ok(())
+    }
+}
+
+cardan_mechanism::vectorised! {
+    /// Each lane's share of the joint load carried by one of `count` bearings (A9.1.23-25),
+    /// |(fx, fy)| / count ([`cardan_numeric::hypot_lanes`]: `f64::hypot`'s bits), and the
+    /// `wanted` powers of it, every lane at once ([`cardan_numeric::powf_lanes`], the bits of
+    /// [`cardan_friction::LoadPower::of`]).
+    fn shares_and_powers(
+        fx: &Column,
+        fy: &Column,
+        count: f64,
+        wanted: &[LoadPower],
+        lanes: Range<usize>,
+        share: &mut Column,
+        powers: &mut [Column; 2],
+    ) {
+        let l = lanes.clone();
+        cardan_numeric::hypot_lanes(&fx[l.clone()], &fy[l.clone()], &mut share[l]);
+        for s in &mut share[lanes.clone()] {
+            *s /= count;
+        }
+        for (p, out) in wanted.iter().zip(powers.iter_mut()) {
+            let mut base = ZERO;
+            for i in lanes.clone() {
+                base[i] = share[i] / p.divisor;
+            }
+            cardan_numeric::powf_lanes(&base[lanes.clone()], p.exponent, &mut out[lanes.clone()]);
+        }
     }
 }
 
@@ -430,5 +474,76 @@ impl Loss for Pumping {
             out[i] = pumping_power(&self.engine, self.displacement, at.states.crank.speed[i]);
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cardan_friction::{PalmgrenCoefficients, SkfDeepGrooveBall, KARHULA_LOAD_CONSTANT};
+    use cardan_mechanism::{Joint, LoadsBlock, StateBlock, Topology, LANES};
+
+    /// A block through `Rolling::power` (the shares and their powers of all lanes at once)
+    /// gives each lane the bits of the single-step model (`RollingModel::loss` of the lane's
+    /// share, times the bearing count), in every reading, over lanes of zero, tiny, ordinary
+    /// and huge loads and a block that is not full.
+    #[test]
+    fn rolling_over_a_block_has_the_bits_of_single_steps() {
+        let bearings = Bearings {
+            radius: 0.0225,
+            count: 2,
+            static_load_rating: 60_000.0,
+        };
+        let t = Topology {
+            bodies: Vec::new(),
+            joints: vec![Joint::pin("main_bearing", bearings, 0, None)],
+            pistons: Vec::new(),
+            crankshaft: 0,
+            extras: Vec::new(),
+        };
+        let (mut states, mut total) = (StateBlock::for_topology(&t), LoadsBlock::for_topology(&t));
+        for i in 0..LANES {
+            let f = if i == 0 {
+                0.0
+            } else {
+                1e-3 * 1.35f64.powi(i as i32)
+            };
+            let a = 0.1 * i as f64;
+            (total.joints[0].fx[i], total.joints[0].fy[i]) = (f * a.cos(), -f * a.sin());
+            states.joints[0].relative_speed[i] = 300.0 - 10.0 * i as f64;
+        }
+        for reading in [
+            RollingReading::Karhula {
+                f0: 2.0,
+                load_constant: KARHULA_LOAD_CONSTANT,
+            },
+            RollingReading::Palmgren(PalmgrenCoefficients::DEEP_GROOVE_BALL),
+            RollingReading::Palmgren(PalmgrenCoefficients::CYLINDRICAL_ROLLER),
+            RollingReading::Skf(SkfDeepGrooveBall::SERIES_62),
+        ] {
+            let model = RollingModel::new(RollingBearing::new(0.045, 60_000.0).unwrap(), reading);
+            let mut rolling = Rolling {
+                joint: 0,
+                model,
+                count: 2.0,
+                viscosity: 5e-6,
+                kept: KeptPower::default(),
+            };
+            for n in [LANES, 37] {
+                let at = LossLanes {
+                    lanes: 0..n,
+                    ..LossLanes::one(&states, &total)
+                };
+                let mut out = [f64::NAN; LANES];
+                rolling.power(&at, &mut out).unwrap();
+                for (i, &got) in out[..n].iter().enumerate() {
+                    let (load, j) = (&total.joints[0], &states.joints[0]);
+                    let share = load.fx[i].hypot(load.fy[i]) / 2.0;
+                    let one = model.loss(share, j.relative_speed[i], 5e-6).power;
+                    assert_eq!(got.to_bits(), (2.0 * one).to_bits(), "{reading:?} lane {i}");
+                }
+                assert!(out[n..].iter().all(|v| v.is_nan()), "lanes past the block");
+            }
+        }
     }
 }
