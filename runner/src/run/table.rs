@@ -198,42 +198,40 @@ impl Table<'_> {
         let only = self.only.clone();
         let wanted =
             |m: &&cardan_dynamics::Metric| only.as_ref().is_none_or(|o| o.contains(&m.name));
+        let metrics = || {
+            results.iter().flat_map(|r| {
+                r.summary
+                    .metrics
+                    .iter()
+                    .filter(wanted)
+                    .map(|m| (r.label.as_str(), m.name.as_str(), m))
+            })
+        };
         if self.metrics.is_empty() || self.part {
-            for r in &results {
-                for m in r.summary.metrics.iter().filter(wanted) {
-                    let name = format!("{}.{}", r.label, m.name);
-                    if self.metrics.iter().all(|c| c.name != name) {
-                        let mut c = Column::create(self.dir, &name, None, self.rows)?;
-                        c.unit = m.unit;
-                        // The rows before: every point failed, or (a part) lacked the metric.
-                        for _ in 0..written {
-                            c.file.write_all(&f64::NAN.to_le_bytes())?;
-                        }
-                        self.metrics.push(c);
+            for (k, (label, metric, m)) in metrics().enumerate() {
+                if column_of(&self.metrics, k, label, metric).is_none() {
+                    let name = format!("{label}.{metric}");
+                    let mut c = Column::create(self.dir, &name, None, self.rows)?;
+                    c.unit = m.unit;
+                    // The rows before: every point failed, or (a part) lacked the metric.
+                    for _ in 0..written {
+                        c.file.write_all(&f64::NAN.to_le_bytes())?;
                     }
+                    self.metrics.push(c);
                 }
             }
             self.first_columns.get_or_insert(self.metrics.len());
         }
         let mut values = vec![f64::NAN; self.metrics.len()];
-        let mut filled = vec![false; self.metrics.len()];
-        for r in &results {
-            for m in r.summary.metrics.iter().filter(wanted) {
-                let name = format!("{}.{}", r.label, m.name);
-                match self.metrics.iter().position(|c| c.name == name) {
-                    // The first of a name, as in sweep.csv.
-                    Some(k) if !filled[k] => {
-                        values[k] = m.value;
-                        filled[k] = true;
-                    }
-                    Some(_) => {}
-                    None if !self.warned => {
-                        tracing::warn!(case = %name, "metric {name} is not a column of the sweep table (the first point's): left out");
-                        self.warned = true;
-                    }
-                    None => {}
-                }
-            }
+        let left_out = place(
+            &self.metrics,
+            metrics().map(|(label, metric, m)| (label, metric, m.value)),
+            &mut values,
+        );
+        if let Some((label, metric)) = left_out.filter(|_| !self.warned) {
+            let name = format!("{label}.{metric}");
+            tracing::warn!(case = %name, "metric {name} is not a column of the sweep table (the first point's): left out");
+            self.warned = true;
         }
         for (c, v) in self.metrics.iter_mut().zip(values) {
             c.file.write_all(&v.to_le_bytes())?;
@@ -269,6 +267,66 @@ impl Table<'_> {
         }
         write_header(self.dir, &header)
     }
+}
+
+impl AsRef<str> for Column {
+    fn as_ref(&self) -> &str {
+        &self.name
+    }
+}
+
+/// Whether `name` is `{label}.{metric}`, told without formatting it.
+fn is_named(name: &str, label: &str, metric: &str) -> bool {
+    name.len() == label.len() + 1 + metric.len()
+        && name.starts_with(label)
+        && name.as_bytes()[label.len()] == b'.'
+        && name.ends_with(metric)
+}
+
+/// The column of `columns` (their names unique) named `{label}.{metric}`, looked for first at
+/// `guess`: the k-th metric of a point is in practice the k-th column, every point of a sweep
+/// giving the same metrics in the same order; any other column is found by search.
+fn column_of<N: AsRef<str>>(
+    columns: &[N],
+    guess: usize,
+    label: &str,
+    metric: &str,
+) -> Option<usize> {
+    if columns
+        .get(guess)
+        .is_some_and(|c| is_named(c.as_ref(), label, metric))
+    {
+        return Some(guess);
+    }
+    columns
+        .iter()
+        .position(|c| is_named(c.as_ref(), label, metric))
+}
+
+/// Puts each of a point's `metrics` (label, metric name, value; in their order) in `values`,
+/// at its column's place among `columns` (`values` is NaN where no metric is): the first
+/// metric of a name fills its column, as in sweep.csv. Returns the first metric (label,
+/// metric name) that no column has.
+fn place<'m, N: AsRef<str>>(
+    columns: &[N],
+    metrics: impl Iterator<Item = (&'m str, &'m str, f64)>,
+    values: &mut [f64],
+) -> Option<(&'m str, &'m str)> {
+    let mut filled = vec![false; columns.len()];
+    let mut left_out = None;
+    for (k, (label, metric, value)) in metrics.enumerate() {
+        match column_of(columns, k, label, metric) {
+            Some(c) if !filled[c] => {
+                values[c] = value;
+                filled[c] = true;
+            }
+            Some(_) => {}
+            None => {
+                left_out.get_or_insert((label, metric));
+            }
+        }
+    }
+    left_out
 }
 
 /// A column's entry in `sweep.json`: text of `width` bytes, or f64 of `unit`.
@@ -470,7 +528,119 @@ fn run_rows(
 
 #[cfg(test)]
 mod tests {
-    use super::npy_header;
+    use super::{npy_header, place};
+
+    /// The columns' values of a point's `metrics` as the table filled them before it matched
+    /// by index: each metric's name formatted and looked for among every column.
+    fn by_search(columns: &[&str], metrics: &[(&str, &str, f64)]) -> Vec<f64> {
+        let mut values = vec![f64::NAN; columns.len()];
+        let mut filled = vec![false; columns.len()];
+        for (label, metric, value) in metrics {
+            let name = format!("{label}.{metric}");
+            if let Some(k) = columns.iter().position(|c| *c == name) {
+                if !filled[k] {
+                    values[k] = *value;
+                    filled[k] = true;
+                }
+            }
+        }
+        values
+    }
+
+    #[test]
+    fn a_point_whose_metrics_differ_from_the_columns_fills_them_by_name() {
+        let columns = ["sc.a", "sc.b", "cg.a", "cg.b", "cg.c.d"];
+        // (metrics, expected values, first metric left out); NaN: no value.
+        let nan = f64::NAN;
+        #[allow(clippy::type_complexity)]
+        let points: [(&[(&str, &str, f64)], [f64; 5], Option<(&str, &str)>); 7] = [
+            // The columns' own order: every metric at its index.
+            (
+                &[
+                    ("sc", "a", 1.),
+                    ("sc", "b", 2.),
+                    ("cg", "a", 3.),
+                    ("cg", "b", 4.),
+                    ("cg", "c.d", 5.),
+                ],
+                [1., 2., 3., 4., 5.],
+                None,
+            ),
+            // sc.b missing: every later metric one index early.
+            (
+                &[
+                    ("sc", "a", 1.),
+                    ("cg", "a", 3.),
+                    ("cg", "b", 4.),
+                    ("cg", "c.d", 5.),
+                ],
+                [1., nan, 3., 4., 5.],
+                None,
+            ),
+            // An extra metric: every later one an index late, the extra left out.
+            (
+                &[
+                    ("sc", "a", 1.),
+                    ("sc", "z", 9.),
+                    ("sc", "b", 2.),
+                    ("cg", "a", 3.),
+                    ("cg", "b", 4.),
+                ],
+                [1., 2., 3., 4., nan],
+                Some(("sc", "z")),
+            ),
+            // A name twice: the first fills the column, at the second's index or not.
+            (
+                &[
+                    ("sc", "a", 1.),
+                    ("sc", "a", 7.),
+                    ("cg", "a", 3.),
+                    ("cg", "a", 8.),
+                    ("cg", "c.d", 5.),
+                ],
+                [1., nan, 3., nan, 5.],
+                None,
+            ),
+            // Another order (the mechanisms swapped).
+            (
+                &[
+                    ("cg", "a", 3.),
+                    ("cg", "b", 4.),
+                    ("cg", "c.d", 5.),
+                    ("sc", "a", 1.),
+                    ("sc", "b", 2.),
+                ],
+                [1., 2., 3., 4., 5.],
+                None,
+            ),
+            // Names that are not a column's, or are one's split at another dot (the first fills it).
+            (
+                &[
+                    ("sc", "ab", 1.),
+                    ("s", "c.b", 2.),
+                    ("cg.c", "d", 5.),
+                    ("cg", "cd", 6.),
+                    ("cg", "c.d", 7.),
+                ],
+                [nan, nan, nan, nan, 5.],
+                Some(("sc", "ab")),
+            ),
+            // No metric: every column NaN.
+            (&[], [nan; 5], None),
+        ];
+        for (metrics, expected, left_out) in points {
+            let mut values = vec![f64::NAN; columns.len()];
+            let out = place(&columns, metrics.iter().copied(), &mut values);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&values), bits(&expected), "{metrics:?}");
+            assert_eq!(
+                bits(&values),
+                bits(&by_search(&columns, metrics)),
+                "{metrics:?}"
+            );
+            assert_eq!(out, left_out, "{metrics:?}");
+        }
+    }
 
     #[test]
     fn the_header_is_aligned_and_names_type_and_length() {
