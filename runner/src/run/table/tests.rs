@@ -4,7 +4,7 @@
 use super::{npy_header, place, Column, Table};
 use crate::output::MechanismResult;
 use cardan_dynamics::{Metric, Summary};
-use cardan_mechanism::{mass, Bearings, Material, SliderCrank};
+use cardan_mechanism::{MachineGeometry, MassInputs, Options, MECHANISMS};
 use std::path::Path;
 use std::sync::Arc;
 
@@ -135,9 +135,16 @@ fn the_header_is_aligned_and_names_type_and_length() {
 
 /// A point's results: each mechanism's label with its metrics (name, value) in their order.
 fn results(mechanisms: &[(&str, &[(&str, f64)])]) -> Result<Vec<MechanismResult>, String> {
-    let masses = mass::estimate(0.06, 0.14, 0.12, Material::Steel);
-    let bearings = [Bearings::single(0.01, 1e4); 3];
-    let mechanism = Arc::new(SliderCrank::new(0.06, 0.14, 0.0, masses, bearings).unwrap());
+    // Any mechanism: the table reads only the label and the summary.
+    let geometry = MachineGeometry {
+        crank_length: 0.06,
+        rod_length: 0.14,
+        bore: 0.12,
+        pin_offset: 0.0,
+    };
+    let build = MECHANISMS[0].build;
+    let mechanism: Arc<dyn cardan_mechanism::Mechanism> =
+        Arc::from(build(&geometry, &MassInputs::default(), &Options::new()).unwrap());
     let result = |(label, metrics): &(&str, &[(&str, f64)])| MechanismResult {
         mechanism: mechanism.clone(),
         label: label.to_string(),
