@@ -5,7 +5,7 @@
 //! a solved motion's is not, and the gear stage refuses a step beyond the limit.
 
 use crate::error::{CaseError, Invalid};
-use cardan_mechanism::{CrankMotion, CrankState, JointKind, Mechanism};
+use cardan_mechanism::{CrankMotion, CrankState, JointKind, Mechanism, StateBlock};
 use std::sync::Arc;
 
 /// Crank angles a turn is sampled at for the meshes' fastest pitch-line velocity: one block of
@@ -35,24 +35,26 @@ pub(crate) fn check(
         if meshes.is_empty() {
             continue;
         }
-        // A turn's states filled a block at a time (`Mechanism::state` would make and zero a
-        // block for each).
+        // A turn's states filled as one block, the meshes' speeds read from its columns (no
+        // state gathered: the extras are not wanted).
         let cranks: Vec<CrankState> = (0..SAMPLES)
             .map(|s| {
                 let angle = std::f64::consts::TAU * s as f64 / SAMPLES as f64;
                 CrankState::new(angle, speed, 0.0, 0.0)
             })
             .collect();
+        let mut block = StateBlock::for_topology(m.topology());
+        block.fill(m.as_ref(), &cranks);
         let mut fastest: (f64, &str) = (0.0, meshes[0].1);
-        m.each_state(&cranks, &mut |state| {
+        for i in 0..block.len {
             for &(k, name) in &meshes {
-                let v = state.joints[k].relative_speed.abs();
+                let v = block.joints[k].relative_speed[i].abs();
                 // Not `max`: a NaN speed is kept, for the rule to refuse.
                 if !fastest.0.is_nan() && (v.is_nan() || v > fastest.0) {
                     fastest = (v, name);
                 }
             }
-        });
+        }
         let (v, name) = fastest;
         if let Err(e) = cardan_gears::check_pitch_line_velocity(v) {
             let rule = match e {

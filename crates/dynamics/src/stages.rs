@@ -81,7 +81,7 @@ impl Stage for LossStage {
             .budget
             .names()
             .iter()
-            .map(|c| format!("power_loss_{c}_w"));
+            .map(|c| ["power_loss_", c.as_str(), "_w"].concat());
         torque
             .chain(losses)
             .enumerate()
@@ -186,7 +186,7 @@ impl StageTotals for LossTotals {
         for (name, work) in self.names.iter().zip(&self.work) {
             m.push_as(
                 "power_loss_mean_{component}",
-                format!("power_loss_mean_{name}"),
+                ["power_loss_mean_", name.as_str()].concat(),
                 work.value() / time,
             );
         }
@@ -279,7 +279,7 @@ impl Stage for GearStage {
             .enumerate();
         for (k, (name, bending)) in meshes {
             let at = |value: usize, what: &str| StageColumn {
-                name: format!("{name}_{what}"),
+                name: [name, "_", what].concat(),
                 value: k * self.per_mesh + value,
             };
             c.push(at(1, "dynamic_tooth_load_n"));

@@ -198,42 +198,40 @@ impl Table<'_> {
         let only = self.only.clone();
         let wanted =
             |m: &&cardan_dynamics::Metric| only.as_ref().is_none_or(|o| o.contains(&m.name));
+        let metrics = || {
+            results.iter().flat_map(|r| {
+                r.summary
+                    .metrics
+                    .iter()
+                    .filter(wanted)
+                    .map(|m| (r.label.as_str(), m.name.as_str(), m))
+            })
+        };
         if self.metrics.is_empty() || self.part {
-            for r in &results {
-                for m in r.summary.metrics.iter().filter(wanted) {
-                    let name = format!("{}.{}", r.label, m.name);
-                    if self.metrics.iter().all(|c| c.name != name) {
-                        let mut c = Column::create(self.dir, &name, None, self.rows)?;
-                        c.unit = m.unit;
-                        // The rows before: every point failed, or (a part) lacked the metric.
-                        for _ in 0..written {
-                            c.file.write_all(&f64::NAN.to_le_bytes())?;
-                        }
-                        self.metrics.push(c);
+            for (k, (label, metric, m)) in metrics().enumerate() {
+                if column_of(&self.metrics, k, label, metric).is_none() {
+                    let name = format!("{label}.{metric}");
+                    let mut c = Column::create(self.dir, &name, None, self.rows)?;
+                    c.unit = m.unit;
+                    // The rows before: every point failed, or (a part) lacked the metric.
+                    for _ in 0..written {
+                        c.file.write_all(&f64::NAN.to_le_bytes())?;
                     }
+                    self.metrics.push(c);
                 }
             }
             self.first_columns.get_or_insert(self.metrics.len());
         }
         let mut values = vec![f64::NAN; self.metrics.len()];
-        let mut filled = vec![false; self.metrics.len()];
-        for r in &results {
-            for m in r.summary.metrics.iter().filter(wanted) {
-                let name = format!("{}.{}", r.label, m.name);
-                match self.metrics.iter().position(|c| c.name == name) {
-                    // The first of a name, as in sweep.csv.
-                    Some(k) if !filled[k] => {
-                        values[k] = m.value;
-                        filled[k] = true;
-                    }
-                    Some(_) => {}
-                    None if !self.warned => {
-                        tracing::warn!(case = %name, "metric {name} is not a column of the sweep table (the first point's): left out");
-                        self.warned = true;
-                    }
-                    None => {}
-                }
-            }
+        let left_out = place(
+            &self.metrics,
+            metrics().map(|(label, metric, m)| (label, metric, m.value)),
+            &mut values,
+        );
+        if let Some((label, metric)) = left_out.filter(|_| !self.warned) {
+            let name = format!("{label}.{metric}");
+            tracing::warn!(case = %name, "metric {name} is not a column of the sweep table (the first point's): left out");
+            self.warned = true;
         }
         for (c, v) in self.metrics.iter_mut().zip(values) {
             c.file.write_all(&v.to_le_bytes())?;
@@ -269,6 +267,66 @@ impl Table<'_> {
         }
         write_header(self.dir, &header)
     }
+}
+
+impl AsRef<str> for Column {
+    fn as_ref(&self) -> &str {
+        &self.name
+    }
+}
+
+/// Whether `name` is `{label}.{metric}`, told without formatting it.
+fn is_named(name: &str, label: &str, metric: &str) -> bool {
+    name.len() == label.len() + 1 + metric.len()
+        && name.starts_with(label)
+        && name.as_bytes()[label.len()] == b'.'
+        && name.ends_with(metric)
+}
+
+/// The column of `columns` (their names unique) named `{label}.{metric}`, looked for first at
+/// `guess`: the k-th metric of a point is in practice the k-th column, every point of a sweep
+/// giving the same metrics in the same order; any other column is found by search.
+fn column_of<N: AsRef<str>>(
+    columns: &[N],
+    guess: usize,
+    label: &str,
+    metric: &str,
+) -> Option<usize> {
+    if columns
+        .get(guess)
+        .is_some_and(|c| is_named(c.as_ref(), label, metric))
+    {
+        return Some(guess);
+    }
+    columns
+        .iter()
+        .position(|c| is_named(c.as_ref(), label, metric))
+}
+
+/// Puts each of a point's `metrics` (label, metric name, value; in their order) in `values`,
+/// at its column's place among `columns` (`values` is NaN where no metric is): the first
+/// metric of a name fills its column, as in sweep.csv. Returns the first metric (label,
+/// metric name) that no column has.
+fn place<'m, N: AsRef<str>>(
+    columns: &[N],
+    metrics: impl Iterator<Item = (&'m str, &'m str, f64)>,
+    values: &mut [f64],
+) -> Option<(&'m str, &'m str)> {
+    let mut filled = vec![false; columns.len()];
+    let mut left_out = None;
+    for (k, (label, metric, value)) in metrics.enumerate() {
+        match column_of(columns, k, label, metric) {
+            Some(c) if !filled[c] => {
+                values[c] = value;
+                filled[c] = true;
+            }
+            Some(_) => {}
+            None => {
+                left_out.get_or_insert((label, metric));
+            }
+        }
+    }
+    left_out
 }
 
 /// A column's entry in `sweep.json`: text of `width` bytes, or f64 of `unit`.
@@ -469,19 +527,4 @@ fn run_rows(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::npy_header;
-
-    #[test]
-    fn the_header_is_aligned_and_names_type_and_length() {
-        for (descr, rows) in [("<f8", 3), ("|S17", 1_000_000)] {
-            let h = npy_header(descr, rows);
-            assert_eq!(h.len() % 64, 0);
-            assert_eq!(&h[..8], b"\x93NUMPY\x01\x00");
-            let text = String::from_utf8_lossy(&h[10..]);
-            assert!(text.contains(&format!("'descr': '{descr}'")), "{text}");
-            assert!(text.contains(&format!("'shape': ({rows},)")), "{text}");
-            assert!(text.ends_with('\n'));
-        }
-    }
-}
+mod tests;

@@ -91,26 +91,27 @@ impl DriveWork {
         self.abs_work.value()
     }
 
-    /// The metrics of the family `family` over a run of crank-angle `span` (rad).
+    /// The metrics of the family `family` over a run of crank-angle `span` (rad) (names joined
+    /// by `concat`, not `format!`: see `MotionPeaks::finish`).
     pub(crate) fn finish(&self, family: &str, span: f64, m: &mut Summary) {
         m.push_as(
             "{family}_torque_max",
-            format!("{family}_torque_max"),
+            [family, "_torque_max"].concat(),
             self.torque,
         );
         let work = self.work.value();
-        m.push_as("{family}_work", format!("{family}_work"), work);
+        m.push_as("{family}_work", [family, "_work"].concat(), work);
         // (A5.2.1.38)
         m.push_as(
             "{family}_torque_mean",
-            format!("{family}_torque_mean"),
+            [family, "_torque_mean"].concat(),
             work / span,
         );
         // (A5.2.1.39) averaged over the crank angle, as the thesis's tables are; at constant
         // speed this is the time average.
         m.push_as(
             "{family}_power_mean",
-            format!("{family}_power_mean"),
+            [family, "_power_mean"].concat(),
             self.energy_flow.value() / span,
         );
     }
