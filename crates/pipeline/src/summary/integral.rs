@@ -62,7 +62,7 @@ impl Integral {
 /// whose lane 0 is step `first`:
 /// `term(i)` that of lane i ≥ 1 (from lane i − 1), `first_term` that of lane 0 (from the step
 /// before the block; `None` at the first step a summary takes, which ends no interval of its
-/// own). Up to a step whose index is a multiple of [`SLOTS`] a term at a time, then [`SLOTS`]
+/// own). Up to a step whose index is a multiple of `SLOTS` (4) a term at a time, then `SLOTS`
 /// at once, each to its own sum, kept in one vector register; a whole block starting on such a
 /// step (a run's blocks do) takes lane 0's term with lanes 1 to 3 (the term a summary's first
 /// step lacks counted as +0, which leaves the fresh sums' bits as they are).
