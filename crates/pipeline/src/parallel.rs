@@ -8,7 +8,7 @@
 
 use crate::stage::Stage;
 use crate::step::{Sink, StepBlock, StepRecord, Steps};
-use crate::stepper::{run, GasAt, RunError};
+use crate::stepper::{run, run_in, GasAt, RunError, RunRoom};
 use crate::summary::{summary_chunk, SummarySink, MAX_CHUNK};
 use cardan_loads::family::{Gas, Inertial, LoadFamily, Solver};
 use cardan_mechanism::{Mechanism, MotionSource};
@@ -132,16 +132,19 @@ pub fn run_parallel(
                     .expect("a splittable motion splits at every chunk start")
             })
             .collect();
+        // A room for the pieces a thread takes one after another (`RunRoom`).
+        let room = || RunRoom::new(mechanism.topology(), families.len());
         let pieces: Vec<Result<_, RunError>> = parts
             .into_par_iter()
-            .map(|mut part| {
+            .map_init(room, |room, mut part| {
                 let mut piece = template.clone();
                 let mut forks: Vec<Box<dyn Stage>> = stages.iter().map(|s| s.fork()).collect();
                 let mut forked: Vec<&mut dyn Stage> = forks
                     .iter_mut()
                     .map(|s| &mut **s as &mut dyn Stage)
                     .collect();
-                run(
+                run_in(
+                    room,
                     mechanism,
                     part.as_mut(),
                     families,

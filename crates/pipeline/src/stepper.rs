@@ -45,16 +45,55 @@ pub fn run(
     stages: &mut [&mut dyn Stage],
     sinks: &mut [&mut dyn Sink],
 ) -> Result<(), RunError> {
+    let room = &mut RunRoom::new(mechanism.topology(), families.len());
+    run_in(room, mechanism, motion, families, gas, stages, sinks)
+}
+
+/// The blocks a run fills, a block at a time: its states, each load family's loads and their
+/// total, made for a topology. A run writes every lane of a block it reads (the mechanism its
+/// columns, which it writes for every state alike; the families their loads), so that the
+/// pieces of a run shared among threads ([`crate::run_parallel`]) take one room after another
+/// as a run takes its blocks, instead of making and zeroing their own (some 40 kB a piece).
+#[derive(Debug, Clone)]
+pub(crate) struct RunRoom {
+    states: StateBlock,
+    loads: Vec<LoadsBlock>,
+    total: LoadsBlock,
+}
+
+impl RunRoom {
+    /// The room of a run of a mechanism of `topology` under `families` load families.
+    pub(crate) fn new(topology: &Topology, families: usize) -> Self {
+        Self {
+            states: StateBlock::for_topology(topology),
+            loads: vec![LoadsBlock::for_topology(topology); families],
+            total: LoadsBlock::for_topology(topology),
+        }
+    }
+}
+
+/// [`run`] in the blocks of `room` (made for `mechanism` and `families`).
+pub(crate) fn run_in(
+    room: &mut RunRoom,
+    mechanism: &dyn Mechanism,
+    motion: &mut dyn MotionSource,
+    families: &[&dyn LoadFamily],
+    gas: Option<GasAt>,
+    stages: &mut [&mut dyn Stage],
+    sinks: &mut [&mut dyn Sink],
+) -> Result<(), RunError> {
     let topology = mechanism.topology();
     // A prescribed motion's states come a block at a time, filled and loaded column by column
     // (`Mechanism::fill_block`, `LoadFamily::loads`) and taken so by the sinks
     // (`Sink::push_block`); a solved motion's one at a time, each after the torque of the one
     // before.
     let block = if motion.prescribed() { LANES } else { 1 };
-    let mut states = StateBlock::for_topology(topology);
+    let RunRoom {
+        states,
+        loads,
+        total,
+    } = room;
     let (mut pressure, mut force) = ([0.0; LANES], [0.0; LANES]);
-    let mut loads = vec![LoadsBlock::for_topology(topology); families.len()];
-    let mut total = LoadsBlock::for_topology(topology);
     let details = sinks.iter().any(|s| s.wants_details());
     let mut staged = StageValues::new(stages);
     // The steps one at a time, for the sinks that take them.
@@ -76,14 +115,7 @@ pub fn run(
     let mut ended = false;
     while !ended {
         let stopped;
-        (stopped, ended) = next_states(
-            &mut states,
-            mechanism,
-            motion,
-            block,
-            index,
-            previous_torque,
-        );
+        (stopped, ended) = next_states(states, mechanism, motion, block, index, previous_torque);
         let n = states.len;
         if let Some(g) = gas {
             for i in 0..n {
@@ -92,15 +124,15 @@ pub fn run(
         }
         let applied = gas.map(|_| &force);
         let gas_pressure = gas.map(|_| &pressure);
-        loading.loads(mechanism, &states, applied, &mut loads, &mut total);
-        let total: &LoadsBlock = if loading.several { &total } else { &loads[0] };
+        loading.loads(mechanism, states, applied, loads, total);
+        let total: &LoadsBlock = if loading.several { total } else { &loads[0] };
         // The first step whose loads are not finite, if one is: the run fails there, unless
         // a stage fails before it.
-        let unclean = match loading.all_finite(&states, gas_pressure, &loads, total) {
+        let unclean = match loading.all_finite(states, gas_pressure, loads, total) {
             true => None,
             false => {
                 let gas = gas.map(|_| (&pressure, &force));
-                loading.first_not_finite(index, &states, gas, &loads, total, mechanism)
+                loading.first_not_finite(index, states, gas, loads, total, mechanism)
             }
         };
         if let Some(t) = total.crank_torque[..n].last() {
@@ -108,7 +140,7 @@ pub fn run(
         }
         let input = Block {
             len: unclean.as_ref().map_or(n, |(lane, _)| *lane),
-            states: &states,
+            states,
             total,
             inertial: loading.inertial.map(|k| &loads[k]),
             pressure: gas_pressure,
@@ -123,10 +155,10 @@ pub fn run(
         }
         for (i, o) in out.iter_mut().take(n).enumerate() {
             let lane = Lane {
-                states: &states,
+                states,
                 i,
                 force: force[i],
-                loads: &loads,
+                loads,
                 total,
             };
             o.take(&lane, &loading, mechanism, details, &staged.columns);
@@ -150,10 +182,10 @@ pub fn run(
         }));
         let taken = StepBlock {
             first: index,
-            state: &states,
+            state: states,
             pressure: gas_pressure,
             piston_force: applied,
-            families: &loads,
+            families: loads,
             total,
             steps: &steps,
             stage_columns: &staged.columns,
