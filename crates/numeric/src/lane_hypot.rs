@@ -66,31 +66,7 @@ pub fn hypot_lanes(x: &[f64], y: &[f64], out: &mut [f64]) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// SplitMix64 (Steele, Lea & Flood 2014): a reproducible stream of 64-bit numbers.
-    struct SplitMix(u64);
-
-    impl SplitMix {
-        fn next(&mut self) -> u64 {
-            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^ (z >> 31)
-        }
-
-        fn unit(&mut self) -> f64 {
-            (self.next() >> 11) as f64 / (1u64 << 53) as f64
-        }
-
-        fn sign(&mut self) -> f64 {
-            if self.next() & 1 == 0 {
-                1.0
-            } else {
-                -1.0
-            }
-        }
-    }
+    use crate::split_mix::SplitMix;
 
     /// Bit for bit `f64::hypot` over 2 · 10⁷ pairs, a quarter each: the smaller 10⁻¹² to 1
     /// times the larger; 0.5 to 1.5 times; within 10⁻⁹ of equal; both independent over

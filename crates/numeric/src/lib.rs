@@ -6,6 +6,8 @@
 
 pub mod lane_hypot;
 pub mod lane_power;
+#[cfg(test)]
+mod split_mix;
 
 pub use lane_hypot::hypot_lanes;
 pub use lane_power::{powf_lane, powf_lanes};

@@ -1,4 +1,5 @@
 use super::*;
+use crate::split_mix::SplitMix;
 
 /// The exponents the rolling-bearing readings take (Karhula 1.55; SKF 0.54, 5/3, 0.6, 1.28,
 /// 0.64, 1.4; Palmgren's y: 0.55, 0.5; the viscous 2/3) and a negative one (SKF's d_m^−0.26).
@@ -15,24 +16,6 @@ const EXPONENTS: [f64; 11] = [
     2.0 / 3.0,
     -0.26,
 ];
-
-/// SplitMix64 (Steele, Lea & Flood 2014): a reproducible stream of 64-bit numbers.
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
 
 /// `n` arguments log-uniform over [10⁻⁶, 10⁹], then the edges: the powers of two of that range,
 /// 1, and the doubles next to each.
