@@ -82,12 +82,17 @@ impl StepBlock<'_> {
         if let Some(f) = self.piston_force {
             forces.resize(state.pistons.len(), f[i]);
         }
-        families.resize(self.families.len(), total.clone());
+        // The room is made at the first step gathered, then only filled (no allocation a step).
+        if families.len() != self.families.len() {
+            families.resize(self.families.len(), total.clone());
+        }
         for (out, columns) in families.iter_mut().zip(self.families) {
             columns.gather(i, out);
         }
         self.total.gather(i, total);
-        shares.resize(self.families.len(), vec![0.0; state.bodies.len()]);
+        if shares.len() != self.families.len() {
+            shares.resize(self.families.len(), vec![0.0; state.bodies.len()]);
+        }
         stages.resize(self.stage_columns.len(), Vec::new());
         for (values, columns) in stages.iter_mut().zip(self.stage_columns) {
             values.clear();
