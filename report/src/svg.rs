@@ -94,25 +94,56 @@ pub struct Band {
     pub label: String,
 }
 
-/// Fixed formatting of a coordinate (one decimal).
-pub(super) fn c(v: f64) -> String {
-    let mut s = String::with_capacity(8);
-    push_coord(&mut s, v);
-    s
+/// Fixed formatting of a coordinate (one decimal), as [`push_coord`] writes it.
+pub(super) fn c(v: f64) -> Coord {
+    Coord(v)
+}
+
+/// A coordinate written with one decimal ([`push_coord`]) where it is formatted (`{}`): no
+/// string of its own, no integer formatting (most of a report's formatting: issue 37).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Coord(f64);
+
+impl std::fmt::Display for Coord {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(coord_text(self.0, &mut [0; 24]))
+    }
 }
 
 /// Appends `v` with one decimal (integer arithmetic: fast, and the same on every machine).
 pub(super) fn push_coord(o: &mut String, v: f64) {
+    o.push_str(coord_text(v, &mut [0; 24]));
+}
+
+/// `v` with one decimal, written at the end of `digits`: the tenths rounded to an integer
+/// and its digits with the point before the last; "0" beyond ±1e14 or not finite. By hand
+/// rather than `{}` of the integers (the same digits: tested).
+fn coord_text(v: f64, digits: &mut [u8; 24]) -> &str {
     let t = (v * 10.0).round();
     if !t.is_finite() || t.abs() > 1e15 {
-        o.push('0');
-        return;
+        return "0";
     }
+    // At most 1e15 tenths: a sign, 15 digits, the point and the tenth.
     let t = t as i64;
-    if t < 0 {
-        o.push('-');
+    let tenths = t.unsigned_abs();
+    let mut k = digits.len() - 2;
+    digits[k] = b'.';
+    digits[k + 1] = b'0' + (tenths % 10) as u8;
+    let mut n = tenths / 10;
+    loop {
+        k -= 1;
+        digits[k] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
     }
-    let _ = write!(o, "{}.{}", t.abs() / 10, t.abs() % 10);
+    if t < 0 {
+        k -= 1;
+        digits[k] = b'-';
+    }
+    // Only ASCII digits, the point and the sign were written.
+    std::str::from_utf8(&digits[k..]).unwrap_or("0")
 }
 
 /// Fixed formatting of a data value in an attribute (round-trip exact, reproducible).
@@ -230,12 +261,43 @@ pub(super) fn prefix(max_abs: f64, unit: &str) -> (f64, &'static str) {
 pub(super) fn tick_label(v: f64, step: f64) -> String {
     let decimals = (-(step.log10().floor()) + if is_quarter(step) { 1.0 } else { 0.0 })
         .clamp(0.0, 8.0) as usize;
-    let s = format!("{v:.decimals$}");
+    let s = fixed_decimals(v, decimals);
     if s.starts_with('-') && s[1..].chars().all(|ch| ch == '0' || ch == '.') {
         s[1..].to_string()
     } else {
         s
     }
+}
+
+/// `format!("{v:.decimals$}")` (decimals ≤ 8), by integer arithmetic where `v` is a whole
+/// number of the last decimal's units, as a chart's ticks mostly are (issue 37): where
+/// `v·10^decimals` rounds to an integer below 2^50 in floating point, the exact product is
+/// within 1/8 of it, so the exact decimal rounding that `{:.N}` does gives that integer.
+fn fixed_decimals(v: f64, decimals: usize) -> String {
+    const POWERS: [f64; 9] = [1.0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8];
+    let scaled = POWERS.get(decimals).map_or(f64::NAN, |p| v * p);
+    if !(scaled.abs() < (1u64 << 50) as f64 && scaled == scaled.trunc()) {
+        return format!("{v:.decimals$}");
+    }
+    let mut digits = scaled.abs() as u64;
+    // The digits from the last, at least one before the point.
+    let mut text = Vec::with_capacity(24);
+    for k in 0.. {
+        if k == decimals && decimals > 0 {
+            text.push(b'.');
+        }
+        text.push(b'0' + (digits % 10) as u8);
+        digits /= 10;
+        if digits == 0 && k >= decimals {
+            break;
+        }
+    }
+    if v.is_sign_negative() {
+        text.push(b'-');
+    }
+    text.reverse();
+    // Only ASCII digits, the point and the sign were written.
+    String::from_utf8(text).unwrap_or_else(|_| format!("{v:.decimals$}"))
 }
 
 fn is_quarter(step: f64) -> bool {
@@ -667,6 +729,126 @@ mod tests {
         assert!(dx.windows(2).all(|w| w[0] < w[1]));
         let (sx, _) = decimate(&x[..500], &y[..500], 1000);
         assert_eq!(sx.len(), 500);
+    }
+
+    #[test]
+    fn coordinates_are_written_as_the_formatting_machinery_wrote_them() {
+        // The format `push_coord` had, `{}.{}` of the tenths' quotient and remainder.
+        let by_format = |v: f64| {
+            let t = (v * 10.0).round();
+            if !t.is_finite() || t.abs() > 1e15 {
+                return "0".to_string();
+            }
+            let t = t as i64;
+            let sign = if t < 0 { "-" } else { "" };
+            format!("{sign}{}.{}", t.abs() / 10, t.abs() % 10)
+        };
+        let mut values = vec![
+            0.0,
+            -0.0,
+            0.04,
+            -0.04,
+            0.05,
+            -0.05,
+            0.95,
+            -0.95,
+            9.95,
+            99.95,
+            1e14,
+            -1e14,
+            99_999_999_999_999.9,
+            1e15,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+            u64::MAX as f64,
+        ];
+        // A SplitMix64 stream over many magnitudes, signs and fractions.
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        for _ in 0..200_000 {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            z ^= z >> 31;
+            let unit = (z >> 11) as f64 / (1u64 << 53) as f64;
+            let scale = 10f64.powi((z % 18) as i32 - 2);
+            let sign = if z & (1 << 7) == 0 { 1.0 } else { -1.0 };
+            values.push(sign * unit * scale);
+        }
+        for k in 0..=20_000 {
+            values.push(k as f64 * 0.05 - 500.0);
+        }
+        for v in values {
+            assert_eq!(c(v).to_string(), by_format(v), "{v:e}");
+            let mut pushed = String::from("x");
+            push_coord(&mut pushed, v);
+            assert_eq!(pushed, format!("x{}", by_format(v)));
+            assert_eq!(format!("[{:>12}]", c(v)), format!("[{:>12}]", by_format(v)));
+        }
+    }
+
+    #[test]
+    fn fixed_decimals_are_the_formatting_machinery_s() {
+        let mut values = vec![
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.5,
+            2.5,
+            -2.5,
+            0.125,
+            1e-9,
+            -1e-9,
+            0.1,
+            0.3,
+            1e15,
+            -1e15,
+            (1u64 << 50) as f64,
+            (1u64 << 50) as f64 - 1.0,
+            1e300,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ];
+        // Ticks as the charts make them, lo + k·step over nice ranges of many magnitudes.
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            z ^ (z >> 31)
+        };
+        for _ in 0..20_000 {
+            let z = next();
+            let scale = 10f64.powi((z % 24) as i32 - 12);
+            let a = ((z >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * scale;
+            let b = a + ((next() >> 11) as f64 / (1u64 << 53) as f64) * scale;
+            let (lo, hi, step) = nice_range(a, b, 5.0);
+            let ticks = ((hi - lo) / step).round() as usize;
+            for k in 0..=ticks {
+                values.push(lo + k as f64 * step);
+                values.push((lo + k as f64 * step) / 1e3);
+            }
+            values.push(a);
+        }
+        // Both ways are taken: by integers, and by `format!`.
+        let whole = |v: f64, d: i32| (v * 10f64.powi(d)).fract() == 0.0;
+        let by_integers = values.iter().filter(|v| whole(**v, 2)).count();
+        assert!(by_integers > 10_000 && by_integers + 10_000 < values.len());
+        for v in values {
+            for decimals in 0..=8 {
+                assert_eq!(
+                    fixed_decimals(v, decimals),
+                    format!("{v:.decimals$}"),
+                    "{v:e} to {decimals} decimals"
+                );
+            }
+        }
     }
 
     #[test]
