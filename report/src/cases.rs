@@ -576,14 +576,21 @@ fn chart_data_from_csv(path: &Path, joints: &[String], file: String) -> anyhow::
     Ok(recorder.finish())
 }
 
-/// The report of the case in `case_dir`; a mechanism's charts from `from_run` (keyed by its
-/// name in `summary.json`) when it is there, else from its CSV if the folder has one.
+/// The report of the case in `case_dir`: of its `summary.json`, whose contents are `summary`
+/// when given (a run's, which need not read back what it wrote), else as read; a
+/// mechanism's charts from `from_run` (keyed by its name in `summary.json`) when it is
+/// there, else from its CSV if the folder has one.
 pub(super) fn case_report(
     case_dir: &Path,
+    summary: Option<&serde_json::Value>,
     reference: Option<&str>,
     from_run: BTreeMap<String, ChartData>,
 ) -> anyhow::Result<()> {
-    let (s, reference) = data::read_summary(&case_dir.join("summary.json"), reference)?;
+    let path = case_dir.join("summary.json");
+    let (s, reference) = match summary {
+        Some(json) => data::summary_of(json, &path, reference)?,
+        None => data::read_summary(&path, reference)?,
+    };
     let data = chart_data(case_dir, &s, from_run)?;
     let plots = case_charts(&s, &data);
 

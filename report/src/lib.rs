@@ -80,20 +80,23 @@ use std::path::Path;
 /// taken to `reference` (a mechanism of the case), by default the first registered mechanism
 /// present (the slider-crank when the case has it).
 pub fn case_report(case_dir: &Path, reference: Option<&str>) -> anyhow::Result<()> {
-    cases::case_report(case_dir, reference, BTreeMap::new())
+    cases::case_report(case_dir, None, reference, BTreeMap::new())
         .with_context(|| format!("report of {}", case_dir.display()))
 }
 
-/// [`case_report`] with the charts of the crank trains in `charts` (keyed by their names in
-/// `summary.json`) drawn from the series their run recorded ([`ChartRecorder`]) instead of
-/// their CSVs, which need not exist (`[output] csv = false`). A crank train not in `charts`
-/// is drawn from its CSV, if any.
+/// [`case_report`] of a run: `summary` is what it wrote to `case_dir`'s `summary.json`
+/// (not read back: serde_json's `float_roundtrip` reads its numbers back as they are, so the
+/// report is the same), and the charts of the crank trains in `charts` (keyed by their names
+/// in `summary.json`) are drawn from the series their run recorded ([`ChartRecorder`])
+/// instead of their CSVs, which need not exist (`[output] csv = false`). A crank train not in
+/// `charts` is drawn from its CSV, if any.
 pub fn case_report_from_run(
     case_dir: &Path,
+    summary: &serde_json::Value,
     reference: Option<&str>,
     charts: BTreeMap<String, ChartData>,
 ) -> anyhow::Result<()> {
-    cases::case_report(case_dir, reference, charts)
+    cases::case_report(case_dir, Some(summary), reference, charts)
         .with_context(|| format!("report of {}", case_dir.display()))
 }
 

@@ -79,13 +79,14 @@ pub(super) fn run_and_write(
         } else {
             Vec::new()
         };
-        let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
-            .map_err(|e| e.to_string())?;
+        let json = output::summary_json(case, &results);
+        let mut summary = serde_json::to_string_pretty(&json).map_err(|e| e.to_string())?;
         summary.push('\n');
         files::write_file(&tmp.join("summary.json"), summary.as_bytes())
             .and_then(|()| {
                 if report {
-                    cardan_report::case_report_from_run(&tmp, None, charts)
+                    // The summary as written, not read back (issue 37).
+                    cardan_report::case_report_from_run(&tmp, &json, None, charts)
                         .context("the report")?;
                 }
                 stamp::write(&tmp, case, report, &cells)?;
