@@ -106,29 +106,36 @@ pub(super) struct Coord(f64);
 
 impl std::fmt::Display for Coord {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.pad(coord_text(self.0, &mut [0; 24]))
+        let mut digits = [0; 24];
+        let start = coord_digits(self.0, &mut digits);
+        // Only ASCII digits, the point and the sign were written.
+        f.pad(std::str::from_utf8(&digits[start..]).unwrap_or("0"))
     }
 }
 
 /// Appends `v` with one decimal (integer arithmetic: fast, and the same on every machine).
 pub(super) fn push_coord(o: &mut String, v: f64) {
-    o.push_str(coord_text(v, &mut [0; 24]));
+    let mut digits = [0; 24];
+    let start = coord_digits(v, &mut digits);
+    o.extend(digits[start..].iter().map(|&b| char::from(b)));
 }
 
-/// `v` with one decimal, written at the end of `digits`: the tenths rounded to an integer
-/// and its digits with the point before the last; "0" beyond ±1e14 or not finite. By hand
-/// rather than `{}` of the integers (the same digits: tested).
-fn coord_text(v: f64, digits: &mut [u8; 24]) -> &str {
+/// `v` with one decimal, written at the end of `digits` from the returned index: the tenths
+/// rounded to an integer and its digits with the point before the last; "0" beyond ±1e14 or
+/// not finite. By hand rather than `{}` of the integers (the same digits: tested).
+fn coord_digits(v: f64, digits: &mut [u8; 24]) -> usize {
     let t = (v * 10.0).round();
+    let mut k = digits.len() - 1;
     if !t.is_finite() || t.abs() > 1e15 {
-        return "0";
+        digits[k] = b'0';
+        return k;
     }
     // At most 1e15 tenths: a sign, 15 digits, the point and the tenth.
     let t = t as i64;
     let tenths = t.unsigned_abs();
-    let mut k = digits.len() - 2;
+    digits[k] = b'0' + (tenths % 10) as u8;
+    k -= 1;
     digits[k] = b'.';
-    digits[k + 1] = b'0' + (tenths % 10) as u8;
     let mut n = tenths / 10;
     loop {
         k -= 1;
@@ -142,8 +149,7 @@ fn coord_text(v: f64, digits: &mut [u8; 24]) -> &str {
         k -= 1;
         digits[k] = b'-';
     }
-    // Only ASCII digits, the point and the sign were written.
-    std::str::from_utf8(&digits[k..]).unwrap_or("0")
+    k
 }
 
 /// Fixed formatting of a data value in an attribute (round-trip exact, reproducible).
@@ -158,16 +164,27 @@ pub fn attr_num(v: f64) -> String {
 /// Escapes text for XML.
 pub fn esc(s: &str) -> String {
     let mut o = String::with_capacity(s.len());
-    for ch in s.chars() {
-        match ch {
-            '&' => o.push_str("&amp;"),
-            '<' => o.push_str("&lt;"),
-            '>' => o.push_str("&gt;"),
-            '"' => o.push_str("&quot;"),
-            _ => o.push(ch),
-        }
-    }
+    push_esc(&mut o, s);
     o
+}
+
+/// Appends `s` escaped for XML: `&`, `<`, `>` and `"` as entities, the runs between them
+/// whole (they are ASCII, so every other byte, of any character, is copied as it is).
+pub fn push_esc(o: &mut String, s: &str) {
+    let mut start = 0;
+    for (k, b) in s.bytes().enumerate() {
+        let entity = match b {
+            b'&' => "&amp;",
+            b'<' => "&lt;",
+            b'>' => "&gt;",
+            b'"' => "&quot;",
+            _ => continue,
+        };
+        o.push_str(&s[start..k]);
+        o.push_str(entity);
+        start = k + 1;
+    }
+    o.push_str(&s[start..]);
 }
 
 /// At most `max` points of (x, y), NaNs dropped: all of them if few enough, else per bucket
@@ -848,6 +865,37 @@ mod tests {
                     "{v:e} to {decimals} decimals"
                 );
             }
+        }
+    }
+
+    #[test]
+    fn escaping_is_by_character() {
+        // The escape as it was, a character at a time.
+        let by_chars = |s: &str| {
+            let mut o = String::new();
+            for ch in s.chars() {
+                match ch {
+                    '&' => o.push_str("&amp;"),
+                    '<' => o.push_str("&lt;"),
+                    '>' => o.push_str("&gt;"),
+                    '"' => o.push_str("&quot;"),
+                    _ => o.push(ch),
+                }
+            }
+            o
+        };
+        for s in [
+            "",
+            "plain",
+            "&",
+            "<>\"&",
+            "a < b & c > \"d\"",
+            "Δ `x` → 10⁵ Pa & ° <µ>",
+            "&&&",
+            "é&é",
+            "end&",
+        ] {
+            assert_eq!(esc(s), by_chars(s), "{s}");
         }
     }
 
