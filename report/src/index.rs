@@ -5,6 +5,7 @@
 use crate::data;
 use crate::doc::{href, Align, Block, Doc};
 use crate::numbers::fmt_num;
+use std::collections::BTreeMap;
 use std::path::Path;
 
 /// How a headline cell is read from a mechanism's metrics.
@@ -141,8 +142,8 @@ fn target(dir: &Path, name: &str, results: &str) -> String {
 }
 
 /// Writes `<out>/index.html`: the folders listed, then a section for each kind that has any.
-pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
-    let listing = Listing::read(out_dir)?;
+pub(super) fn index(out_dir: &Path, known: &Known) -> anyhow::Result<()> {
+    let listing = Listing::read(out_dir, known)?;
     let mut doc = Doc {
         title: "cardan results".into(),
         blocks: Vec::new(),
@@ -172,6 +173,10 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
     crate::files::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
 }
 
+/// The summaries of case folders known without reading them (a run's own, as it wrote
+/// them), by folder name, mechanisms in the order of the default reference.
+pub(super) type Known<'a> = BTreeMap<&'a str, &'a data::CaseSummary>;
+
 /// An output folder's folders by kind, each kind in the order of [`folders`].
 struct Listing {
     /// The case folders whose summary was read.
@@ -185,8 +190,8 @@ struct Listing {
 }
 
 impl Listing {
-    /// Sorts `out_dir`'s folders by kind, reading each case's summary.
-    fn read(out_dir: &Path) -> anyhow::Result<Self> {
+    /// Sorts `out_dir`'s folders by kind, reading each case's summary but those `known`.
+    fn read(out_dir: &Path, known: &Known) -> anyhow::Result<Self> {
         let mut listing = Listing {
             cases: Vec::new(),
             summaries: Vec::new(),
@@ -199,6 +204,9 @@ impl Listing {
                 listing.sweeps.push(name);
             } else if dir.join(OPTIMUM_CHART).is_file() && dir.join("report.md").is_file() {
                 listing.optimizations.push(name);
+            } else if let Some(s) = known.get(name.as_str()) {
+                listing.cases.push(name);
+                listing.summaries.push((*s).clone());
             } else if dir.join("summary.json").is_file() {
                 match data::read_summary(&dir.join("summary.json"), None) {
                     Ok((s, _)) => {

@@ -224,7 +224,13 @@ fn record_outcomes<'a>(
                             .push((name, values, &written.cells));
                         out.join(sweep).join(name)
                     }
-                    None => written.dir.clone(),
+                    None => {
+                        // The index lists it as its report read it (issue 37).
+                        if let Some(summary) = &written.summary {
+                            (report.summaries).insert(name.clone(), summary.clone());
+                        }
+                        written.dir.clone()
+                    }
                 };
                 if written.reused {
                     tracing::info!(case = %name, folder = %dir.display(), "kept (--resume)");
