@@ -11,7 +11,7 @@
 
 use crate::svg::{
     axis_titles, c, chart_heading, esc, legend_layout, legend_lines, nice_range, open_plot,
-    open_svg, pretty_unit_prefixed, push_coord, tick_label, Series, DASHES, LEFT, PALETTE,
+    open_svg, points_text, pretty_unit_prefixed, tick_label, Series, DASHES, LEFT, PALETTE,
     PLOT_HEIGHT, TOP,
 };
 use std::fmt::Write as _;
@@ -147,18 +147,13 @@ fn square_grid(o: &mut String, square: &Square, step: f64, scale: f64) {
 /// at its first finite point.
 fn locus_series(o: &mut String, chart: &LocusChart, k: usize, s: &Series, square: &Square) {
     let colour = PALETTE[s.colour % PALETTE.len()];
-    let mut points = String::with_capacity(s.x.len() * 14);
-    let mut n = 0;
-    for (a, b) in s.x.iter().zip(&s.y) {
-        if a.is_finite() && b.is_finite() {
-            push_coord(&mut points, square.px(*a));
-            points.push(',');
-            push_coord(&mut points, square.py(*b));
-            points.push(' ');
-            n += 1;
-        }
-    }
-    points.pop();
+    let finite = || {
+        (s.x.iter().zip(&s.y))
+            .filter(|(a, b)| a.is_finite() && b.is_finite())
+            .map(|(a, b)| (*a, *b))
+    };
+    let n = finite().count();
+    let points = points_text(finite().map(|(a, b)| (square.px(a), square.py(b))), n);
     let x_column = chart.x_columns.get(k).map_or("", String::as_str);
     let dash = DASHES[s.dash % DASHES.len()];
     let dash = if dash.is_empty() {

@@ -94,12 +94,13 @@ pub struct Band {
     pub label: String,
 }
 
-/// Fixed formatting of a coordinate (one decimal), as [`push_coord`] writes it.
+/// Fixed formatting of a coordinate (one decimal: integer arithmetic, fast, and the same on
+/// every machine; [`coord_digits`]).
 pub(super) fn c(v: f64) -> Coord {
     Coord(v)
 }
 
-/// A coordinate written with one decimal ([`push_coord`]) where it is formatted (`{}`): no
+/// A coordinate written with one decimal ([`coord_digits`]) where it is formatted (`{}`): no
 /// string of its own, no integer formatting (most of a report's formatting: issue 37).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Coord(f64);
@@ -113,11 +114,22 @@ impl std::fmt::Display for Coord {
     }
 }
 
-/// Appends `v` with one decimal (integer arithmetic: fast, and the same on every machine).
-pub(super) fn push_coord(o: &mut String, v: f64) {
+/// A polyline's `points`: each (x, y) of `xy` as `x,y` ([`c`]), separated by
+/// spaces; `n` points expected. Written as bytes and made a string once (issue 37).
+pub(super) fn points_text(xy: impl Iterator<Item = (f64, f64)>, n: usize) -> String {
+    let mut text = Vec::with_capacity(n * 14);
     let mut digits = [0; 24];
-    let start = coord_digits(v, &mut digits);
-    o.extend(digits[start..].iter().map(|&b| char::from(b)));
+    for (x, y) in xy {
+        let start = coord_digits(x, &mut digits);
+        text.extend_from_slice(&digits[start..]);
+        text.push(b',');
+        let start = coord_digits(y, &mut digits);
+        text.extend_from_slice(&digits[start..]);
+        text.push(b' ');
+    }
+    text.pop();
+    // Only ASCII digits, points, signs, commas and spaces were written.
+    String::from_utf8(text).unwrap_or_default()
 }
 
 /// `v` with one decimal, written at the end of `digits` from the returned index: the tenths
@@ -650,14 +662,7 @@ pub(crate) fn series_lines(
     for (s, (x, y)) in series.iter().zip(decimated) {
         let colour = PALETTE[s.colour % PALETTE.len()];
         let dash = DASHES[s.dash % DASHES.len()];
-        let mut points = String::with_capacity(x.len() * 14);
-        for (a, b) in x.iter().zip(y) {
-            push_coord(&mut points, px(*a));
-            points.push(',');
-            push_coord(&mut points, py(*b));
-            points.push(' ');
-        }
-        points.pop();
+        let points = points_text(x.iter().zip(y).map(|(a, b)| (px(*a), py(*b))), x.len());
         let x_column = s
             .x_column
             .as_ref()
@@ -716,6 +721,8 @@ pub(super) fn legend_lines(o: &mut String, series: &[Series], legend: &[(f64, f6
 pub fn pretty_unit(unit: &str) -> String {
     match unit {
         "1" => String::new(),
+        // Nothing to replace: most units (issue 37).
+        u if !u.bytes().any(|b| b == b'*' || b == b'^') => u.to_string(),
         u => u.replace('*', "·").replace("^2", "²").replace("^3", "³"),
     }
 }
@@ -750,7 +757,7 @@ mod tests {
 
     #[test]
     fn coordinates_are_written_as_the_formatting_machinery_wrote_them() {
-        // The format `push_coord` had, `{}.{}` of the tenths' quotient and remainder.
+        // The format coordinates had, `{}.{}` of the tenths' quotient and remainder.
         let by_format = |v: f64| {
             let t = (v * 10.0).round();
             if !t.is_finite() || t.abs() > 1e15 {
@@ -800,9 +807,6 @@ mod tests {
         }
         for v in values {
             assert_eq!(c(v).to_string(), by_format(v), "{v:e}");
-            let mut pushed = String::from("x");
-            push_coord(&mut pushed, v);
-            assert_eq!(pushed, format!("x{}", by_format(v)));
             assert_eq!(format!("[{:>12}]", c(v)), format!("[{:>12}]", by_format(v)));
         }
     }
@@ -896,6 +900,35 @@ mod tests {
             "end&",
         ] {
             assert_eq!(esc(s), by_chars(s), "{s}");
+        }
+    }
+
+    #[test]
+    fn points_are_coordinates_pairs_by_spaces() {
+        let xy = [(1.0, -2.25), (0.04, 1e20), (f64::NAN, -0.04), (123.45, 6.0)];
+        let mut by_push = String::new();
+        for (x, y) in xy {
+            by_push.push_str(&format!("{},{} ", c(x), c(y)));
+        }
+        by_push.pop();
+        assert_eq!(points_text(xy.into_iter(), 4), by_push);
+        assert_eq!(by_push, "1.0,-2.3 0.0,0 0,0.0 123.5,6.0");
+        assert_eq!(points_text(std::iter::empty(), 0), "");
+    }
+
+    #[test]
+    fn units_are_printed_with_their_signs() {
+        for (unit, printed) in [
+            ("1", ""),
+            ("N*m", "N·m"),
+            ("m/s^2", "m/s²"),
+            ("m^3", "m³"),
+            ("kg*m^2", "kg·m²"),
+            ("Pa", "Pa"),
+            ("", ""),
+            ("rad/s", "rad/s"),
+        ] {
+            assert_eq!(pretty_unit(unit), printed, "{unit}");
         }
     }
 
