@@ -164,6 +164,42 @@ fn coord_digits(v: f64, digits: &mut [u8; 24]) -> usize {
     k
 }
 
+/// A piece of a chart's text that [`put!`] appends: text as it is, a coordinate ([`c`]).
+pub(super) trait Piece {
+    fn put(&self, o: &mut String);
+}
+
+impl Piece for &str {
+    fn put(&self, o: &mut String) {
+        o.push_str(self);
+    }
+}
+
+impl Piece for String {
+    fn put(&self, o: &mut String) {
+        o.push_str(self);
+    }
+}
+
+impl Piece for Coord {
+    fn put(&self, o: &mut String) {
+        let mut digits = [0; 24];
+        let start = coord_digits(self.0, &mut digits);
+        o.extend(digits[start..].iter().map(|&b| char::from(b)));
+    }
+}
+
+/// Appends each piece ([`Piece`]) to the string, as `write!` of them one after another
+/// would, without the formatting machinery: the lines a chart repeats, its grid and legend
+/// (issue 37).
+macro_rules! put {
+    ($o:expr; $($piece:expr),+ $(,)?) => {{
+        let o: &mut String = $o;
+        $( $crate::svg::Piece::put(&$piece, o); )+
+    }};
+}
+pub(crate) use put;
+
 /// Fixed formatting of a data value in an attribute (round-trip exact, reproducible).
 pub fn attr_num(v: f64) -> String {
     if v.is_finite() {
@@ -483,16 +519,10 @@ fn y_grid(
     for k in 0..=y_ticks {
         let v = y_lo + k as f64 * y_step;
         let y = py(v);
-        let _ = writeln!(
-            o,
-            "<line x1=\"{}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
-            c(LEFT),
-            c(LEFT + plot_w),
-            c(LEFT - 6.0),
-            c(y + 4.0),
-            tick_label(v / scale, y_step / scale),
-            y = c(y)
-        );
+        put!(o; "<line x1=\"", c(LEFT), "\" y1=\"", c(y), "\" x2=\"", c(LEFT + plot_w),
+            "\" y2=\"", c(y), "\" stroke=\"#ddd\"/><text x=\"", c(LEFT - 6.0), "\" y=\"",
+            c(y + 4.0), "\" text-anchor=\"end\">", tick_label(v / scale, y_step / scale),
+            "</text>\n");
     }
 }
 
@@ -506,14 +536,9 @@ fn x_grid(
 ) {
     // A vertical grid line at x with its label under the plot.
     let x_tick = |o: &mut String, x: f64, label: &str| {
-        let _ = writeln!(
-            o,
-            "<line x1=\"{x}\" y1=\"{}\" x2=\"{x}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x}\" y=\"{}\" text-anchor=\"middle\">{label}</text>",
-            c(TOP),
-            c(TOP + PLOT_HEIGHT),
-            c(TOP + PLOT_HEIGHT + 16.0),
-            x = c(x)
-        );
+        put!(o; "<line x1=\"", c(x), "\" y1=\"", c(TOP), "\" x2=\"", c(x), "\" y2=\"",
+            c(TOP + PLOT_HEIGHT), "\" stroke=\"#ddd\"/><text x=\"", c(x), "\" y=\"",
+            c(TOP + PLOT_HEIGHT + 16.0), "\" text-anchor=\"middle\">", label, "</text>\n");
     };
     match categories {
         Some(cats) => {
@@ -698,22 +723,14 @@ pub(super) fn legend_lines(o: &mut String, series: &[Series], legend: &[(f64, f6
     for (s, (x, y)) in series.iter().zip(legend) {
         let colour = PALETTE[s.colour % PALETTE.len()];
         let dash = DASHES[s.dash % DASHES.len()];
-        let _ = writeln!(
-            o,
-            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{colour}\" stroke-width=\"2.5\"{}/><text x=\"{}\" y=\"{}\">{}</text>",
-            c(*x),
-            c(y - 4.0),
-            c(x + 28.0),
-            c(y - 4.0),
-            if dash.is_empty() {
-                String::new()
-            } else {
-                format!(" stroke-dasharray=\"{dash}\"")
-            },
-            c(x + 34.0),
-            c(*y),
-            esc(&s.label)
-        );
+        put!(o; "<line x1=\"", c(*x), "\" y1=\"", c(y - 4.0), "\" x2=\"", c(x + 28.0),
+            "\" y2=\"", c(y - 4.0), "\" stroke=\"", colour, "\" stroke-width=\"2.5\"");
+        if !dash.is_empty() {
+            put!(o; " stroke-dasharray=\"", dash, "\"");
+        }
+        put!(o; "/><text x=\"", c(x + 34.0), "\" y=\"", c(*y), "\">");
+        push_esc(o, &s.label);
+        o.push_str("</text>\n");
     }
 }
 
