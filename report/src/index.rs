@@ -5,6 +5,7 @@
 use crate::data;
 use crate::doc::{href, Align, Block, Doc};
 use crate::numbers::fmt_num;
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -178,20 +179,20 @@ pub(super) fn index(out_dir: &Path, known: &Known) -> anyhow::Result<()> {
 pub(super) type Known<'a> = BTreeMap<&'a str, &'a data::CaseSummary>;
 
 /// An output folder's folders by kind, each kind in the order of [`folders`].
-struct Listing {
+struct Listing<'a> {
     /// The case folders whose summary was read.
     cases: Vec<String>,
-    /// Their summaries, one per case, in the same order.
-    summaries: Vec<data::CaseSummary>,
+    /// Their summaries, one per case, in the same order: those known, and those read.
+    summaries: Vec<Cow<'a, data::CaseSummary>>,
     /// The sweep folders (those holding `sweep.csv`).
     sweeps: Vec<String>,
     /// The optimisation folders (see [`OPTIMUM_CHART`]).
     optimizations: Vec<String>,
 }
 
-impl Listing {
+impl<'a> Listing<'a> {
     /// Sorts `out_dir`'s folders by kind, reading each case's summary but those `known`.
-    fn read(out_dir: &Path, known: &Known) -> anyhow::Result<Self> {
+    fn read(out_dir: &Path, known: &Known<'a>) -> anyhow::Result<Self> {
         let mut listing = Listing {
             cases: Vec::new(),
             summaries: Vec::new(),
@@ -206,12 +207,12 @@ impl Listing {
                 listing.optimizations.push(name);
             } else if let Some(s) = known.get(name.as_str()) {
                 listing.cases.push(name);
-                listing.summaries.push((*s).clone());
+                listing.summaries.push(Cow::Borrowed(*s));
             } else if dir.join("summary.json").is_file() {
                 match data::read_summary(&dir.join("summary.json"), None) {
                     Ok((s, _)) => {
                         listing.cases.push(name);
-                        listing.summaries.push(s);
+                        listing.summaries.push(Cow::Owned(s));
                     }
                     // Gone since it was listed: another run is replacing this folder (and writes
                     // the index again when it has). The file may be back by the time this looks,
@@ -230,7 +231,12 @@ impl Listing {
 }
 
 /// The cases' section: their links, the headline table and what its peaks mean.
-fn push_cases(doc: &mut Doc, out_dir: &Path, cases: &[String], summaries: &[data::CaseSummary]) {
+fn push_cases(
+    doc: &mut Doc,
+    out_dir: &Path,
+    cases: &[String],
+    summaries: &[Cow<data::CaseSummary>],
+) {
     doc.push(Block::Heading(2, "Cases".into()));
     doc.push(Block::Links(
         cases
@@ -252,7 +258,7 @@ fn push_cases(doc: &mut Doc, out_dir: &Path, cases: &[String], summaries: &[data
 }
 
 /// The headline table: a row per case and mechanism, a column per [`HEADLINES`] entry.
-fn headline_table(cases: &[String], summaries: &[data::CaseSummary]) -> Block {
+fn headline_table(cases: &[String], summaries: &[Cow<data::CaseSummary>]) -> Block {
     let mut header = vec![
         "case".to_string(),
         "machine".to_string(),
