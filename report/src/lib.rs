@@ -61,6 +61,7 @@ mod log_chart;
 mod numbers;
 mod rows;
 mod svg;
+mod svg_text;
 mod sweep_axis;
 mod sweeps;
 mod thinning;
