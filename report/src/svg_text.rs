@@ -5,6 +5,7 @@
 
 /// Fixed formatting of a coordinate (one decimal: integer arithmetic, fast, and the same on
 /// every machine; [`coord_digits`]).
+#[inline]
 pub(super) fn c(v: f64) -> Coord {
     Coord(v)
 }
@@ -79,18 +80,21 @@ pub(crate) trait Piece {
 }
 
 impl Piece for &str {
+    #[inline]
     fn put(&self, o: &mut String) {
         o.push_str(self);
     }
 }
 
 impl Piece for String {
+    #[inline]
     fn put(&self, o: &mut String) {
         o.push_str(self);
     }
 }
 
 impl Piece for Coord {
+    #[inline]
     fn put(&self, o: &mut String) {
         let mut digits = [0; 24];
         let start = coord_digits(self.0, &mut digits);
