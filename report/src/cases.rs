@@ -576,14 +576,21 @@ fn chart_data_from_csv(path: &Path, joints: &[String], file: String) -> anyhow::
     Ok(recorder.finish())
 }
 
-/// The report of the case in `case_dir`; a mechanism's charts from `from_run` (keyed by its
-/// name in `summary.json`) when it is there, else from its CSV if the folder has one.
+/// The report of the case in `case_dir`: of its `summary.json`, whose contents are `summary`
+/// when given (a run's, which need not read back what it wrote), else as read; a
+/// mechanism's charts from `from_run` (keyed by its name in `summary.json`) when it is
+/// there, else from its CSV if the folder has one. Returns the summary as it was read.
 pub(super) fn case_report(
     case_dir: &Path,
+    summary: Option<&serde_json::Value>,
     reference: Option<&str>,
     from_run: BTreeMap<String, ChartData>,
-) -> anyhow::Result<()> {
-    let (s, reference) = data::read_summary(&case_dir.join("summary.json"), reference)?;
+) -> anyhow::Result<CaseSummary> {
+    let path = case_dir.join("summary.json");
+    let (s, reference) = match summary {
+        Some(json) => data::summary_of(json, &path, reference)?,
+        None => data::read_summary(&path, reference)?,
+    };
     let data = chart_data(case_dir, &s, from_run)?;
     let plots = case_charts(&s, &data);
 
@@ -604,7 +611,8 @@ pub(super) fn case_report(
     push_metrics(&mut doc, &s);
     push_charts(&mut doc, &plots);
     let files: Vec<(String, String)> = plots.into_iter().map(|(f, s, _)| (f, s)).collect();
-    write_report(case_dir, &doc, &files)
+    write_report(case_dir, &doc, &files)?;
+    Ok(s)
 }
 
 /// Each mechanism's chart data, in the summary's order: the run's where it gave them, else

@@ -175,6 +175,17 @@ pub fn read_summary(path: &Path, reference: Option<&str>) -> anyhow::Result<(Cas
         .with_context(|| format!("read {}", path.display()))?;
     let json: Value =
         serde_json::from_str(&text).with_context(|| format!("parse {}", path.display()))?;
+    summary_of(&json, path, reference)
+}
+
+/// [`read_summary`] of the `summary.json` at `path` whose contents are `json`: the run's
+/// own, which writes `json` there (its numbers read back as they are: serde_json's
+/// `float_roundtrip`), or the file's as read.
+pub fn summary_of(
+    json: &Value,
+    path: &Path,
+    reference: Option<&str>,
+) -> anyhow::Result<(CaseSummary, String)> {
     let string = |key: &str| json.get(key).and_then(Value::as_str).map(String::from);
     let Some(mechanisms) = json.get("mechanisms").and_then(Value::as_object) else {
         bail!("{}: no \"mechanisms\" object", path.display());

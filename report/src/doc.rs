@@ -2,7 +2,7 @@
 //! `plots/`) and as one self-contained HTML page (`report.html`: inline CSS, charts inlined as
 //! SVG, no script, no network). Text may hold `` `code` `` and `**bold**` spans.
 
-use crate::svg::esc;
+use crate::svg::{esc, push_esc};
 use anyhow::Context;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -122,15 +122,21 @@ impl Doc {
         for b in &self.blocks {
             match b {
                 Block::Heading(level, t) => {
-                    let _ = writeln!(o, "<h{level}>{}</h{level}>", inline(t));
+                    let _ = write!(o, "<h{level}>");
+                    push_inline(&mut o, t);
+                    let _ = writeln!(o, "</h{level}>");
                 }
                 Block::Paragraph(t) => {
-                    let _ = writeln!(o, "<p>{}</p>", inline(t));
+                    o.push_str("<p>");
+                    push_inline(&mut o, t);
+                    o.push_str("</p>\n");
                 }
                 Block::List(items) => {
                     o.push_str("<ul>\n");
                     for i in items {
-                        let _ = writeln!(o, "<li>{}</li>", inline(i));
+                        o.push_str("<li>");
+                        push_inline(&mut o, i);
+                        o.push_str("</li>\n");
                     }
                     o.push_str("</ul>\n");
                 }
@@ -141,17 +147,20 @@ impl Doc {
                 } => {
                     o.push_str("<table>\n<thead><tr>");
                     for h in header {
-                        let _ = write!(o, "<th>{}</th>", inline(h));
+                        o.push_str("<th>");
+                        push_inline(&mut o, h);
+                        o.push_str("</th>");
                     }
                     o.push_str("</tr></thead>\n<tbody>\n");
                     for r in rows {
                         o.push_str("<tr>");
                         for (k, cell) in r.iter().enumerate() {
-                            let class = match align.get(k) {
-                                Some(Align::Right) => " class=\"num\"",
-                                _ => "",
-                            };
-                            let _ = write!(o, "<td{class}>{}</td>", inline(cell));
+                            o.push_str(match align.get(k) {
+                                Some(Align::Right) => "<td class=\"num\">",
+                                _ => "<td>",
+                            });
+                            push_inline(&mut o, cell);
+                            o.push_str("</td>");
                         }
                         o.push_str("</tr>\n");
                     }
@@ -197,20 +206,37 @@ fn note_suffix(note: &str) -> String {
 /// Escapes `text` and turns `` `code` `` and `**bold**` spans into HTML.
 pub fn inline(text: &str) -> String {
     let mut o = String::with_capacity(text.len() + 16);
+    push_inline(&mut o, text);
+    o
+}
+
+/// Appends [`inline`] of `text` to `o`, without a string of its own (issue 37).
+fn push_inline(o: &mut String, text: &str) {
     for (k, part) in text.split('`').enumerate() {
         if k % 2 == 1 {
-            let _ = write!(o, "<code>{}</code>", esc(part));
-        } else {
-            for (j, p) in part.split("**").enumerate() {
-                if j % 2 == 1 {
-                    let _ = write!(o, "<strong>{}</strong>", esc(p));
-                } else {
-                    o.push_str(&esc(p));
-                }
+            o.push_str("<code>");
+            push_esc(o, part);
+            o.push_str("</code>");
+            continue;
+        }
+        // The pieces between `**`s, left to right (as `split("**")`, by bytes).
+        let mut rest = part;
+        for j in 0.. {
+            let at = rest.as_bytes().windows(2).position(|w| w == b"**");
+            let piece = at.map_or(rest, |k| &rest[..k]);
+            if j % 2 == 1 {
+                o.push_str("<strong>");
+                push_esc(o, piece);
+                o.push_str("</strong>");
+            } else {
+                push_esc(o, piece);
+            }
+            match at {
+                Some(k) => rest = &rest[k + 2..],
+                None => break,
             }
         }
     }
-    o
 }
 
 /// The page style: readable tables, charts scaled to the page width.
@@ -258,4 +284,49 @@ pub(crate) fn write_report(
     crate::files::write_file(&dir.join("report.md"), doc.markdown().as_bytes())?;
     crate::files::write_file(&dir.join("report.html"), doc.html().as_bytes())?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inline_spans_are_as_split_made_them() {
+        // `inline` as it was: `split('`')`, then `split("**")`, each piece escaped.
+        let by_split = |text: &str| {
+            let mut o = String::new();
+            for (k, part) in text.split('`').enumerate() {
+                if k % 2 == 1 {
+                    o.push_str(&format!("<code>{}</code>", esc(part)));
+                } else {
+                    for (j, p) in part.split("**").enumerate() {
+                        if j % 2 == 1 {
+                            o.push_str(&format!("<strong>{}</strong>", esc(p)));
+                        } else {
+                            o.push_str(&esc(p));
+                        }
+                    }
+                }
+            }
+            o
+        };
+        for text in [
+            "",
+            "plain",
+            "**bold**",
+            "a **b** c `d` e",
+            "***",
+            "****",
+            "a***b",
+            "**a**b**",
+            "`code **not bold**`",
+            "`unclosed",
+            "**unclosed",
+            "Δ = (mechanism − reference) / |reference| × 100 %, to `slider_crank` & <x>",
+            "*",
+            "x*y**z",
+        ] {
+            assert_eq!(inline(text), by_split(text), "{text}");
+        }
+    }
 }

@@ -5,6 +5,8 @@
 use crate::data;
 use crate::doc::{href, Align, Block, Doc};
 use crate::numbers::fmt_num;
+use std::borrow::Cow;
+use std::collections::BTreeMap;
 use std::path::Path;
 
 /// How a headline cell is read from a mechanism's metrics.
@@ -141,8 +143,8 @@ fn target(dir: &Path, name: &str, results: &str) -> String {
 }
 
 /// Writes `<out>/index.html`: the folders listed, then a section for each kind that has any.
-pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
-    let listing = Listing::read(out_dir)?;
+pub(super) fn index(out_dir: &Path, known: &Known) -> anyhow::Result<()> {
+    let listing = Listing::read(out_dir, known)?;
     let mut doc = Doc {
         title: "cardan results".into(),
         blocks: Vec::new(),
@@ -172,21 +174,25 @@ pub(super) fn index(out_dir: &Path) -> anyhow::Result<()> {
     crate::files::write_file_replacing(&out_dir.join("index.html"), doc.html().as_bytes())
 }
 
+/// The summaries of case folders known without reading them (a run's own, as it wrote
+/// them), by folder name, mechanisms in the order of the default reference.
+pub(super) type Known<'a> = BTreeMap<&'a str, &'a data::CaseSummary>;
+
 /// An output folder's folders by kind, each kind in the order of [`folders`].
-struct Listing {
+struct Listing<'a> {
     /// The case folders whose summary was read.
     cases: Vec<String>,
-    /// Their summaries, one per case, in the same order.
-    summaries: Vec<data::CaseSummary>,
+    /// Their summaries, one per case, in the same order: those known, and those read.
+    summaries: Vec<Cow<'a, data::CaseSummary>>,
     /// The sweep folders (those holding `sweep.csv`).
     sweeps: Vec<String>,
     /// The optimisation folders (see [`OPTIMUM_CHART`]).
     optimizations: Vec<String>,
 }
 
-impl Listing {
-    /// Sorts `out_dir`'s folders by kind, reading each case's summary.
-    fn read(out_dir: &Path) -> anyhow::Result<Self> {
+impl<'a> Listing<'a> {
+    /// Sorts `out_dir`'s folders by kind, reading each case's summary but those `known`.
+    fn read(out_dir: &Path, known: &Known<'a>) -> anyhow::Result<Self> {
         let mut listing = Listing {
             cases: Vec::new(),
             summaries: Vec::new(),
@@ -199,11 +205,14 @@ impl Listing {
                 listing.sweeps.push(name);
             } else if dir.join(OPTIMUM_CHART).is_file() && dir.join("report.md").is_file() {
                 listing.optimizations.push(name);
+            } else if let Some(s) = known.get(name.as_str()) {
+                listing.cases.push(name);
+                listing.summaries.push(Cow::Borrowed(*s));
             } else if dir.join("summary.json").is_file() {
                 match data::read_summary(&dir.join("summary.json"), None) {
                     Ok((s, _)) => {
                         listing.cases.push(name);
-                        listing.summaries.push(s);
+                        listing.summaries.push(Cow::Owned(s));
                     }
                     // Gone since it was listed: another run is replacing this folder (and writes
                     // the index again when it has). The file may be back by the time this looks,
@@ -222,7 +231,12 @@ impl Listing {
 }
 
 /// The cases' section: their links, the headline table and what its peaks mean.
-fn push_cases(doc: &mut Doc, out_dir: &Path, cases: &[String], summaries: &[data::CaseSummary]) {
+fn push_cases(
+    doc: &mut Doc,
+    out_dir: &Path,
+    cases: &[String],
+    summaries: &[Cow<data::CaseSummary>],
+) {
     doc.push(Block::Heading(2, "Cases".into()));
     doc.push(Block::Links(
         cases
@@ -244,7 +258,7 @@ fn push_cases(doc: &mut Doc, out_dir: &Path, cases: &[String], summaries: &[data
 }
 
 /// The headline table: a row per case and mechanism, a column per [`HEADLINES`] entry.
-fn headline_table(cases: &[String], summaries: &[data::CaseSummary]) -> Block {
+fn headline_table(cases: &[String], summaries: &[Cow<data::CaseSummary>]) -> Block {
     let mut header = vec![
         "case".to_string(),
         "machine".to_string(),

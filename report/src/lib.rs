@@ -61,6 +61,7 @@ mod log_chart;
 mod numbers;
 mod rows;
 mod svg;
+mod svg_text;
 mod sweep_axis;
 mod sweeps;
 mod thinning;
@@ -80,20 +81,38 @@ use std::path::Path;
 /// taken to `reference` (a mechanism of the case), by default the first registered mechanism
 /// present (the slider-crank when the case has it).
 pub fn case_report(case_dir: &Path, reference: Option<&str>) -> anyhow::Result<()> {
-    cases::case_report(case_dir, reference, BTreeMap::new())
+    cases::case_report(case_dir, None, reference, BTreeMap::new())
+        .map(drop)
         .with_context(|| format!("report of {}", case_dir.display()))
 }
 
-/// [`case_report`] with the charts of the crank trains in `charts` (keyed by their names in
-/// `summary.json`) drawn from the series their run recorded ([`ChartRecorder`]) instead of
-/// their CSVs, which need not exist (`[output] csv = false`). A crank train not in `charts`
-/// is drawn from its CSV, if any.
+/// A case's summary as its report read it, which [`index_with`] lists without reading its
+/// `summary.json` again.
+#[derive(Debug, Clone)]
+pub struct CaseSummary {
+    summary: data::CaseSummary,
+    /// Whether its mechanisms are in the order of the default reference, the index's.
+    default_order: bool,
+}
+
+/// [`case_report`] of a run: `summary` is what it wrote to `case_dir`'s `summary.json`
+/// (not read back: serde_json's `float_roundtrip` reads its numbers back as they are, so the
+/// report is the same), and the charts of the crank trains in `charts` (keyed by their names
+/// in `summary.json`) are drawn from the series their run recorded ([`ChartRecorder`])
+/// instead of their CSVs, which need not exist (`[output] csv = false`). A crank train not in
+/// `charts` is drawn from its CSV, if any. Returns the summary as the report read it, for
+/// [`index_with`].
 pub fn case_report_from_run(
     case_dir: &Path,
+    summary: &serde_json::Value,
     reference: Option<&str>,
     charts: BTreeMap<String, ChartData>,
-) -> anyhow::Result<()> {
-    cases::case_report(case_dir, reference, charts)
+) -> anyhow::Result<CaseSummary> {
+    cases::case_report(case_dir, Some(summary), reference, charts)
+        .map(|summary| CaseSummary {
+            summary,
+            default_order: reference.is_none(),
+        })
         .with_context(|| format!("report of {}", case_dir.display()))
 }
 
@@ -113,5 +132,18 @@ pub fn sweep_report(sweep_dir: &Path, name: &str, reference: Option<&str>) -> an
 /// one, its results), and a table of headline metrics per case and mechanism. Call it after
 /// the reports.
 pub fn index(out_dir: &Path) -> anyhow::Result<()> {
-    index::index(out_dir).with_context(|| format!("index of {}", out_dir.display()))
+    index_with(out_dir, &BTreeMap::new())
+}
+
+/// [`index`], the case folders named in `known` (by folder name) listed with the summary
+/// given there instead of their `summary.json` read again: a run's, which has just written
+/// those folders and reported them ([`case_report_from_run`]; one reported to another
+/// reference than the default is read again).
+pub fn index_with(out_dir: &Path, known: &BTreeMap<String, CaseSummary>) -> anyhow::Result<()> {
+    let known = known
+        .iter()
+        .filter(|(_, s)| s.default_order)
+        .map(|(name, s)| (name.as_str(), &s.summary))
+        .collect();
+    index::index(out_dir, &known).with_context(|| format!("index of {}", out_dir.display()))
 }

@@ -11,7 +11,7 @@
 
 use crate::svg::{
     axis_titles, c, chart_heading, esc, legend_layout, legend_lines, nice_range, open_plot,
-    open_svg, pretty_unit_prefixed, push_coord, tick_label, Series, DASHES, LEFT, PALETTE,
+    open_svg, points_text, pretty_unit_prefixed, put, tick_label, Series, DASHES, LEFT, PALETTE,
     PLOT_HEIGHT, TOP,
 };
 use std::fmt::Write as _;
@@ -113,23 +113,13 @@ fn square_grid(o: &mut String, square: &Square, step: f64, scale: f64) {
     for k in 0..=ticks {
         let v = lo + k as f64 * step;
         let label = tick_label(v / scale, step / scale);
-        let _ = writeln!(
-            o,
-            "<line x1=\"{}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{}\" text-anchor=\"end\">{label}</text>",
-            c(LEFT),
-            c(LEFT + side),
-            c(LEFT - 6.0),
-            c(square.py(v) + 4.0),
-            y = c(square.py(v))
-        );
-        let _ = writeln!(
-            o,
-            "<line x1=\"{x}\" y1=\"{}\" x2=\"{x}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x}\" y=\"{}\" text-anchor=\"middle\">{label}</text>",
-            c(TOP),
-            c(TOP + side),
-            c(TOP + side + 16.0),
-            x = c(square.px(v))
-        );
+        let (x, y) = (square.px(v), square.py(v));
+        put!(o; "<line x1=\"", c(LEFT), "\" y1=\"", c(y), "\" x2=\"", c(LEFT + side),
+            "\" y2=\"", c(y), "\" stroke=\"#ddd\"/><text x=\"", c(LEFT - 6.0), "\" y=\"",
+            c(y + 4.0), "\" text-anchor=\"end\">", label.as_str(), "</text>\n");
+        put!(o; "<line x1=\"", c(x), "\" y1=\"", c(TOP), "\" x2=\"", c(x), "\" y2=\"",
+            c(TOP + side), "\" stroke=\"#ddd\"/><text x=\"", c(x), "\" y=\"",
+            c(TOP + side + 16.0), "\" text-anchor=\"middle\">", label, "</text>\n");
     }
     let _ = writeln!(
         o,
@@ -147,18 +137,13 @@ fn square_grid(o: &mut String, square: &Square, step: f64, scale: f64) {
 /// at its first finite point.
 fn locus_series(o: &mut String, chart: &LocusChart, k: usize, s: &Series, square: &Square) {
     let colour = PALETTE[s.colour % PALETTE.len()];
-    let mut points = String::with_capacity(s.x.len() * 14);
-    let mut n = 0;
-    for (a, b) in s.x.iter().zip(&s.y) {
-        if a.is_finite() && b.is_finite() {
-            push_coord(&mut points, square.px(*a));
-            points.push(',');
-            push_coord(&mut points, square.py(*b));
-            points.push(' ');
-            n += 1;
-        }
-    }
-    points.pop();
+    let finite = || {
+        (s.x.iter().zip(&s.y))
+            .filter(|(a, b)| a.is_finite() && b.is_finite())
+            .map(|(a, b)| (*a, *b))
+    };
+    let n = finite().count();
+    let points = points_text(finite().map(|(a, b)| (square.px(a), square.py(b))), n);
     let x_column = chart.x_columns.get(k).map_or("", String::as_str);
     let dash = DASHES[s.dash % DASHES.len()];
     let dash = if dash.is_empty() {

@@ -9,6 +9,8 @@
 //! (`data-source`, `file:column`) and its number of points (`data-n`). Heat maps are in
 //! `heatmap.rs`.
 
+use crate::svg_text::fixed_decimals;
+pub(crate) use crate::svg_text::{c, esc, points_text, push_esc, put};
 use std::fmt::Write as _;
 
 /// Most points a plotted series keeps (min/max per bucket beyond that).
@@ -94,27 +96,6 @@ pub struct Band {
     pub label: String,
 }
 
-/// Fixed formatting of a coordinate (one decimal).
-pub(super) fn c(v: f64) -> String {
-    let mut s = String::with_capacity(8);
-    push_coord(&mut s, v);
-    s
-}
-
-/// Appends `v` with one decimal (integer arithmetic: fast, and the same on every machine).
-pub(super) fn push_coord(o: &mut String, v: f64) {
-    let t = (v * 10.0).round();
-    if !t.is_finite() || t.abs() > 1e15 {
-        o.push('0');
-        return;
-    }
-    let t = t as i64;
-    if t < 0 {
-        o.push('-');
-    }
-    let _ = write!(o, "{}.{}", t.abs() / 10, t.abs() % 10);
-}
-
 /// Fixed formatting of a data value in an attribute (round-trip exact, reproducible).
 pub fn attr_num(v: f64) -> String {
     if v.is_finite() {
@@ -122,21 +103,6 @@ pub fn attr_num(v: f64) -> String {
     } else {
         "NaN".into()
     }
-}
-
-/// Escapes text for XML.
-pub fn esc(s: &str) -> String {
-    let mut o = String::with_capacity(s.len());
-    for ch in s.chars() {
-        match ch {
-            '&' => o.push_str("&amp;"),
-            '<' => o.push_str("&lt;"),
-            '>' => o.push_str("&gt;"),
-            '"' => o.push_str("&quot;"),
-            _ => o.push(ch),
-        }
-    }
-    o
 }
 
 /// At most `max` points of (x, y), NaNs dropped: all of them if few enough, else per bucket
@@ -230,7 +196,7 @@ pub(super) fn prefix(max_abs: f64, unit: &str) -> (f64, &'static str) {
 pub(super) fn tick_label(v: f64, step: f64) -> String {
     let decimals = (-(step.log10().floor()) + if is_quarter(step) { 1.0 } else { 0.0 })
         .clamp(0.0, 8.0) as usize;
-    let s = format!("{v:.decimals$}");
+    let s = fixed_decimals(v, decimals);
     if s.starts_with('-') && s[1..].chars().all(|ch| ch == '0' || ch == '.') {
         s[1..].to_string()
     } else {
@@ -392,16 +358,10 @@ fn y_grid(
     for k in 0..=y_ticks {
         let v = y_lo + k as f64 * y_step;
         let y = py(v);
-        let _ = writeln!(
-            o,
-            "<line x1=\"{}\" y1=\"{y}\" x2=\"{}\" y2=\"{y}\" stroke=\"#ddd\"/><text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
-            c(LEFT),
-            c(LEFT + plot_w),
-            c(LEFT - 6.0),
-            c(y + 4.0),
-            tick_label(v / scale, y_step / scale),
-            y = c(y)
-        );
+        put!(o; "<line x1=\"", c(LEFT), "\" y1=\"", c(y), "\" x2=\"", c(LEFT + plot_w),
+            "\" y2=\"", c(y), "\" stroke=\"#ddd\"/><text x=\"", c(LEFT - 6.0), "\" y=\"",
+            c(y + 4.0), "\" text-anchor=\"end\">", tick_label(v / scale, y_step / scale),
+            "</text>\n");
     }
 }
 
@@ -415,14 +375,9 @@ fn x_grid(
 ) {
     // A vertical grid line at x with its label under the plot.
     let x_tick = |o: &mut String, x: f64, label: &str| {
-        let _ = writeln!(
-            o,
-            "<line x1=\"{x}\" y1=\"{}\" x2=\"{x}\" y2=\"{}\" stroke=\"#ddd\"/><text x=\"{x}\" y=\"{}\" text-anchor=\"middle\">{label}</text>",
-            c(TOP),
-            c(TOP + PLOT_HEIGHT),
-            c(TOP + PLOT_HEIGHT + 16.0),
-            x = c(x)
-        );
+        put!(o; "<line x1=\"", c(x), "\" y1=\"", c(TOP), "\" x2=\"", c(x), "\" y2=\"",
+            c(TOP + PLOT_HEIGHT), "\" stroke=\"#ddd\"/><text x=\"", c(x), "\" y=\"",
+            c(TOP + PLOT_HEIGHT + 16.0), "\" text-anchor=\"middle\">", label, "</text>\n");
     };
     match categories {
         Some(cats) => {
@@ -571,14 +526,7 @@ pub(crate) fn series_lines(
     for (s, (x, y)) in series.iter().zip(decimated) {
         let colour = PALETTE[s.colour % PALETTE.len()];
         let dash = DASHES[s.dash % DASHES.len()];
-        let mut points = String::with_capacity(x.len() * 14);
-        for (a, b) in x.iter().zip(y) {
-            push_coord(&mut points, px(*a));
-            points.push(',');
-            push_coord(&mut points, py(*b));
-            points.push(' ');
-        }
-        points.pop();
+        let points = points_text(x.iter().zip(y).map(|(a, b)| (px(*a), py(*b))), x.len());
         let x_column = s
             .x_column
             .as_ref()
@@ -614,22 +562,14 @@ pub(super) fn legend_lines(o: &mut String, series: &[Series], legend: &[(f64, f6
     for (s, (x, y)) in series.iter().zip(legend) {
         let colour = PALETTE[s.colour % PALETTE.len()];
         let dash = DASHES[s.dash % DASHES.len()];
-        let _ = writeln!(
-            o,
-            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{colour}\" stroke-width=\"2.5\"{}/><text x=\"{}\" y=\"{}\">{}</text>",
-            c(*x),
-            c(y - 4.0),
-            c(x + 28.0),
-            c(y - 4.0),
-            if dash.is_empty() {
-                String::new()
-            } else {
-                format!(" stroke-dasharray=\"{dash}\"")
-            },
-            c(x + 34.0),
-            c(*y),
-            esc(&s.label)
-        );
+        put!(o; "<line x1=\"", c(*x), "\" y1=\"", c(y - 4.0), "\" x2=\"", c(x + 28.0),
+            "\" y2=\"", c(y - 4.0), "\" stroke=\"", colour, "\" stroke-width=\"2.5\"");
+        if !dash.is_empty() {
+            put!(o; " stroke-dasharray=\"", dash, "\"");
+        }
+        put!(o; "/><text x=\"", c(x + 34.0), "\" y=\"", c(*y), "\">");
+        push_esc(o, &s.label);
+        o.push_str("</text>\n");
     }
 }
 
@@ -637,6 +577,8 @@ pub(super) fn legend_lines(o: &mut String, series: &[Series], legend: &[(f64, f6
 pub fn pretty_unit(unit: &str) -> String {
     match unit {
         "1" => String::new(),
+        // Nothing to replace: most units (issue 37).
+        u if !u.bytes().any(|b| b == b'*' || b == b'^') => u.to_string(),
         u => u.replace('*', "·").replace("^2", "²").replace("^3", "³"),
     }
 }
@@ -667,6 +609,22 @@ mod tests {
         assert!(dx.windows(2).all(|w| w[0] < w[1]));
         let (sx, _) = decimate(&x[..500], &y[..500], 1000);
         assert_eq!(sx.len(), 500);
+    }
+
+    #[test]
+    fn units_are_printed_with_their_signs() {
+        for (unit, printed) in [
+            ("1", ""),
+            ("N*m", "N·m"),
+            ("m/s^2", "m/s²"),
+            ("m^3", "m³"),
+            ("kg*m^2", "kg·m²"),
+            ("Pa", "Pa"),
+            ("", ""),
+            ("rad/s", "rad/s"),
+        ] {
+            assert_eq!(pretty_unit(unit), printed, "{unit}");
+        }
     }
 
     #[test]

@@ -466,7 +466,30 @@ const fn concat<const N: usize>(parts: &[&[MetricDef]]) -> [MetricDef; N] {
 /// A template without placeholders equal to the name has the most (a placeholder takes at least
 /// one character): it is looked for first, by plain comparison.
 pub fn find(name: &str) -> Option<&'static MetricDef> {
-    find_in(METRICS, name)
+    // As `find_in(METRICS, name)` (tested), with the templates and their first and last
+    // fixed texts found once (a report looks up every metric name: issue 37).
+    static TEMPLATES: std::sync::OnceLock<Vec<(&'static MetricDef, &'static str, &'static str)>> =
+        std::sync::OnceLock::new();
+    if let Some(exact) = METRICS.iter().find(|d| d.name == name) {
+        return Some(exact);
+    }
+    let templates = TEMPLATES.get_or_init(|| {
+        METRICS
+            .iter()
+            .filter_map(|d| {
+                let open = d.name.find('{')?;
+                let close = d.name.rfind('}')?;
+                Some((d, &d.name[..open], &d.name[close + 1..]))
+            })
+            .collect()
+    });
+    templates
+        .iter()
+        .filter(|(d, first, last)| {
+            name.starts_with(first) && name.ends_with(last) && matches_template(d.name, name)
+        })
+        .map(|(d, _, _)| *d)
+        .max_by_key(|d| fixed_length(d.name))
 }
 
 /// The definition of `defs` a metric name falls under, as [`find`] looks for it in the registry.
@@ -474,14 +497,32 @@ pub fn find_in<'d>(defs: &'d [MetricDef], name: &str) -> Option<&'d MetricDef> {
     if let Some(exact) = defs.iter().find(|d| d.name == name) {
         return Some(exact);
     }
-    let fixed = |t: &str| t.split(['{', '}']).step_by(2).map(str::len).sum::<usize>();
     defs.iter()
         .filter(|d| matches_template(d.name, name))
-        .max_by_key(|d| fixed(d.name))
+        .max_by_key(|d| fixed_length(d.name))
+}
+
+/// The characters of a template outside its placeholders.
+fn fixed_length(template: &str) -> usize {
+    template.split(['{', '}']).step_by(2).map(str::len).sum()
 }
 
 /// Whether `name` is `template` with each `{...}` replaced by one or more characters.
 fn matches_template(template: &str, name: &str) -> bool {
+    // Two byte comparisons first, which reject nearly every template (a report's metric
+    // tables look every name up: 20 000 instructions a name before, issue 37): a template
+    // without placeholders is the name itself, and the fixed texts before its first and after
+    // its last placeholder begin and end the name (the registry's templates alternate `{` and
+    // `}`: tested). Bytes, not chars: the braces are ASCII.
+    let brace = |b: &u8| *b == b'{' || *b == b'}';
+    let bytes = template.as_bytes();
+    let Some(close) = bytes.iter().rposition(brace) else {
+        return template == name;
+    };
+    let open = bytes.iter().position(brace).unwrap_or(close);
+    if !name.ends_with(&template[close + 1..]) || !name.starts_with(&template[..open]) {
+        return false;
+    }
     let mut fixed = template.split(['{', '}']).step_by(2);
     let first = fixed.next().unwrap_or("");
     let Some(mut rest) = name.strip_prefix(first) else {
@@ -571,121 +612,4 @@ impl Summary {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn templates_match_filled_names_only() {
-        assert_eq!(find("inertial_crank_pin_force_max").unwrap().unit, "N");
-        assert_eq!(find("total_piston_side_moment_max").unwrap().unit, "N*m");
-        assert_eq!(
-            find("rod_cg_velocity_max").unwrap().name,
-            "{body}_cg_velocity_max"
-        );
-        assert_eq!(
-            find("piston_velocity_max").unwrap().name,
-            "{piston}_velocity_max"
-        );
-        assert_eq!(find("gas_force_max").unwrap().name, "gas_force_max");
-        assert_eq!(find("gas_torque_mean").unwrap().unit, "N*m");
-        assert_eq!(find("imep").unwrap().unit, "Pa");
-        assert!(find("_force_max").is_none());
-        assert!(find("nonsense").is_none());
-        // Names are unique.
-        for (k, d) in METRICS.iter().enumerate() {
-            assert!(METRICS[..k].iter().all(|e| e.name != d.name), "{}", d.name);
-        }
-    }
-
-    #[test]
-    fn the_iso_gear_metrics_are_the_iso_rating_s_and_the_agma_ones_are_registered() {
-        assert_eq!(GEAR_RATING_ISO.len(), 4);
-        for d in GEAR_RATING_ISO {
-            assert!(
-                d.name.starts_with("iso_") && d.meaning.contains("ISO 6336"),
-                "{}",
-                d.name
-            );
-        }
-        for n in GEAR_RATING_AGMA {
-            let d = find_in(GEAR_RATING, n).unwrap();
-            assert!(d.meaning.contains("AGMA"), "{n}");
-        }
-    }
-
-    #[test]
-    fn groups_and_directions_follow_the_meaning() {
-        // Every group is used, and every metric's group and direction follow from its kind.
-        for g in Group::ALL {
-            assert!(METRICS.iter().any(|d| d.group == g), "{g:?} unused");
-        }
-        for d in METRICS {
-            let n = d.name;
-            let gear = d.meaning.starts_with("gear rating");
-            assert_eq!(gear, d.group == Group::GearRating, "{n}");
-            if d.aggregation == Aggregation::Cylinder {
-                assert_eq!(d.group, Group::Gas, "{n}");
-            }
-            if n.starts_with("{family}_{joint}_") {
-                assert_eq!(
-                    (d.group, d.better),
-                    (Group::JointLoads, Better::Lower),
-                    "{n}"
-                );
-            }
-            if n.starts_with("{piston}_") || n.starts_with("{body}_") {
-                assert_eq!(
-                    (d.group, d.better),
-                    (Group::Kinematics, Better::Neither),
-                    "{n}"
-                );
-            }
-            if n.ends_with("efficiency")
-                || n.starts_with("output_")
-                || n.ends_with("_safety_factor")
-                || n.starts_with("mechanical_advantage")
-                || n == "contact_ratio"
-            {
-                assert_eq!(d.better, Better::Higher, "{n}");
-            }
-            if n.starts_with("power_loss")
-                || n.contains("power_loss")
-                || n.starts_with("fmep")
-                || n.starts_with("friction_")
-                || n.ends_with("_need_mean")
-                || n.ends_with("_stress_max")
-                || n.ends_with("_load_max")
-                || n.ends_with("_torque_max") && n != "machine_torque_max"
-                || n.ends_with("_error")
-                || n == "loss_work"
-            {
-                assert_eq!(d.better, Better::Lower, "{n}");
-            }
-            // The whole machine's figures are its group's, whatever their kind.
-            if n.starts_with("machine_") {
-                assert_eq!(d.group, Group::Machine, "{n}");
-            }
-            if !gear
-                && !n.starts_with("machine_")
-                && (n.starts_with("power_loss")
-                    || n.starts_with("fmep")
-                    || n.starts_with("friction_")
-                    || n.ends_with("_efficiency") && d.aggregation != Aggregation::Cylinder)
-            {
-                assert_eq!(d.group, Group::Losses, "{n}");
-            }
-            // Signed sums and means of the drive are no verdict: their sign is the direction
-            // of the energy flow.
-            if ["_work", "_torque_mean", "_power_mean"]
-                .iter()
-                .any(|s| n.starts_with("{family}") && n.ends_with(s))
-            {
-                assert_eq!(
-                    (d.group, d.better),
-                    (Group::DriveTorque, Better::Neither),
-                    "{n}"
-                );
-            }
-        }
-    }
-}
+mod tests;

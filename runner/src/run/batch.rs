@@ -100,11 +100,12 @@ pub fn run_paths(paths: &[PathBuf], out: &Path, options: RunOptions) -> Report {
             None => out.to_path_buf(),
         }
     };
-    let Some((outcomes, tables)) =
+    let Some((mut outcomes, tables)) =
         run_all(&cases, &tables, out, &base, &options, &mut report.failures)
     else {
         return report;
     };
+    keep_summaries(&cases, &mut outcomes, &mut report);
     record_tables(tables, out, &mut report);
     let (points, failed) = record_outcomes(&cases, &outcomes, out, &mut report);
     write_sweeps(
@@ -201,6 +202,18 @@ type Outcome = Result<Written, String>;
 
 /// A sweep written as a table: its name, how many of its points ran, its failures.
 type TableOutcome = (String, usize, Vec<String>);
+
+/// The summaries the reports of the cases (not sweep points) read, moved into `report` by
+/// case name: the index lists those folders without reading them again (issue 37).
+fn keep_summaries(cases: &[Case], outcomes: &mut [Outcome], report: &mut Report) {
+    for (case, outcome) in cases.iter().zip(outcomes) {
+        if let (None, Ok(written)) = (&case.sweep, outcome) {
+            if let Some(summary) = written.summary.take() {
+                report.summaries.insert(case.name.clone(), summary);
+            }
+        }
+    }
+}
 
 /// Each case's outcome into `report` (its folder written or kept, or its failure), and the
 /// points of each sweep that ran and the count of those that failed, for the sweep tables.

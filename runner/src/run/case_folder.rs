@@ -8,15 +8,17 @@ use super::train::{run_trains, StepsTo};
 use crate::output::{self, MechanismResult};
 use anyhow::Context;
 use cardan_case::case::Case;
-use cardan_report::{files, ChartData};
+use cardan_report::{files, CaseSummary, ChartData};
 use std::path::{Path, PathBuf};
 
-/// A case written: its folder, its sweep row ([`stamp::cells`]), and whether `--resume` kept
-/// the folder of an earlier run instead of running the case.
+/// A case written: its folder, its sweep row ([`stamp::cells`]), whether `--resume` kept
+/// the folder of an earlier run instead of running the case, and the summary its report
+/// read (for the index: [`cardan_report::index_with`]), if it has one.
 pub(super) struct Written {
     pub dir: PathBuf,
     pub cells: Vec<Cell>,
     pub reused: bool,
+    pub summary: Option<CaseSummary>,
 }
 
 /// Runs one case into `out/<case name>/`, replacing that folder as a whole, its record
@@ -54,6 +56,7 @@ pub(super) fn run_and_write(
                 dir,
                 cells,
                 reused: true,
+                summary: None,
             });
         }
     }
@@ -79,27 +82,30 @@ pub(super) fn run_and_write(
         } else {
             Vec::new()
         };
-        let mut summary = serde_json::to_string_pretty(&output::summary_json(case, &results))
-            .map_err(|e| e.to_string())?;
+        let json = output::summary_json(case, &results);
+        let mut summary = serde_json::to_string_pretty(&json).map_err(|e| e.to_string())?;
         summary.push('\n');
-        files::write_file(&tmp.join("summary.json"), summary.as_bytes())
+        let reported = files::write_file(&tmp.join("summary.json"), summary.as_bytes())
             .and_then(|()| {
-                if report {
-                    cardan_report::case_report_from_run(&tmp, None, charts)
-                        .context("the report")?;
-                }
+                // The summary as written, not read back (issue 37).
+                let reported = report
+                    .then(|| cardan_report::case_report_from_run(&tmp, &json, None, charts))
+                    .transpose()
+                    .context("the report")?;
                 stamp::write(&tmp, case, report, &cells)?;
-                files::replace_dir(&tmp, &dir)
+                files::replace_dir(&tmp, &dir)?;
+                Ok(reported)
             })
             .map_err(cannot_write)?;
-        Ok(cells)
+        Ok((cells, reported))
     });
     if result.is_err() {
         let _ = std::fs::remove_dir_all(&tmp);
     }
-    result.map(|cells| Written {
+    result.map(|(cells, summary)| Written {
         dir,
         cells,
         reused: false,
+        summary,
     })
 }

@@ -1,5 +1,6 @@
 //! How a batch runs ([`RunOptions`]) and what it did ([`Report`]).
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// Called after each case with (cases finished, cases in the batch).
@@ -55,6 +56,9 @@ impl std::fmt::Debug for RunOptions {
 pub struct Report {
     /// Cases run and written: (case name, output folder).
     pub written: Vec<(String, PathBuf)>,
+    /// The summaries of the case folders written with their report, as it read them, by
+    /// folder name: the index lists them without reading them again (issue 37).
+    pub summaries: BTreeMap<String, cardan_report::CaseSummary>,
     /// Each failure: a path that does not exist, a case file that could not be read or
     /// validated, a case that failed to run or could not be written.
     pub failures: Vec<String>,
@@ -74,7 +78,7 @@ impl Report {
         let changed = !self.written.is_empty() || !self.sweeps.is_empty();
         let index = out.join("index.html");
         if changed && (reports || index.symlink_metadata().is_ok()) {
-            if let Err(e) = cardan_report::index(out) {
+            if let Err(e) = cardan_report::index_with(out, &self.summaries) {
                 (self.failures).push(format!("cannot write {}: {e:#}", index.display()));
             }
         }
