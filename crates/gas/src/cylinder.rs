@@ -101,14 +101,23 @@ impl Cylinder {
         &self,
         mechanism: &'a dyn Mechanism,
     ) -> impl Fn(f64) -> Volume + Sync + 'a {
-        let (clearance, area) = (self.clearance_volume, f64::from(self.pistons) * self.area);
-        let top = mechanism.piston_top();
+        let piston = self.piston_volume(mechanism);
         move |theta| {
             let (x, dx) = mechanism.piston_position(theta);
             Volume {
-                volume: clearance + area * (top - x),
-                rate: -area * dx,
+                volume: piston.volume(x),
+                rate: -piston.area * dx,
             }
+        }
+    }
+
+    /// The volume of this cylinder as a function of the position of its pistons, each moved
+    /// by `mechanism` in phase (A6.1.1.7-A6.1.1.10 with h_deck eliminated).
+    pub fn piston_volume(&self, mechanism: &dyn Mechanism) -> PistonVolume {
+        PistonVolume {
+            clearance: self.clearance_volume,
+            area: f64::from(self.pistons) * self.area,
+            top: mechanism.piston_top(),
         }
     }
 
@@ -120,6 +129,7 @@ impl Cylinder {
             cylinder: self,
             tdc_angle: mechanism.top_dead_centre(),
             volume: &volume,
+            piston: Some(self.piston_volume(mechanism)),
         })
     }
 
@@ -153,6 +163,7 @@ impl Cylinder {
             cylinder: self,
             tdc_angle: mechanism.top_dead_centre() - phase / 2.0,
             volume: &volume,
+            piston: None,
         })
     }
 
@@ -172,6 +183,29 @@ pub struct Volume {
     pub rate: f64,
 }
 
+/// The chamber volume as a function of the position x of the first piston (all its pistons
+/// moving in phase): V = V_comp + pistons·A_pis·(x_TDC − x) (A6.1.1.7-A6.1.1.10 with h_deck
+/// eliminated). [`Cylinder::volume_curve`] is this at the mechanism's
+/// [`Mechanism::piston_position`]; a block's steps, whose piston positions the mechanism has
+/// filled, take it from there (the same arithmetic: the same bits for the same x).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PistonVolume {
+    /// V_comp, m³.
+    pub clearance: f64,
+    /// pistons·A_pis, m².
+    pub area: f64,
+    /// The first piston's position at top dead centre x_TDC, m.
+    pub top: f64,
+}
+
+impl PistonVolume {
+    /// V at the first piston's position `x` (m), m³.
+    #[inline(always)]
+    pub fn volume(&self, x: f64) -> f64 {
+        self.clearance + self.area * (self.top - x)
+    }
+}
+
 /// The working chamber a gas model sees: the cylinder, the volume curve of the mechanism that
 /// moves its piston(s), and where the cycle starts.
 #[derive(Clone, Copy)]
@@ -182,12 +216,31 @@ pub struct Chamber<'a> {
     pub tdc_angle: f64,
     /// V(θ) and dV/dθ for any crank angle θ (rad).
     pub volume: &'a (dyn Fn(f64) -> Volume + Sync),
+    /// V as a function of the first piston's position alone, where the chamber has it (its
+    /// pistons move in phase: [`Cylinder::with_chamber`]; `None` for a phased opposed-piston
+    /// chamber, whose second piston is elsewhere): `volume` is then this at the mechanism's
+    /// [`Mechanism::piston_position`], bit for bit.
+    pub piston: Option<PistonVolume>,
 }
 
 impl Chamber<'_> {
     /// Crank angle from the opening top dead centre, in [0, 4π) (a four-stroke cycle), rad.
+    #[inline(always)]
     pub fn cycle_angle(&self, theta: f64) -> f64 {
-        (theta - self.tdc_angle).rem_euclid(4.0 * PI)
+        const CYCLE: f64 = 4.0 * PI;
+        let x = theta - self.tdc_angle;
+        // `rem_euclid`'s own result without its `fmod` call over the first cycles: the
+        // remainder is x itself on [0, 4π), x − 4π on [4π, 8π) (exact, Sterbenz), and
+        // `rem_euclid` adds 4π on (−4π, 0).
+        if (0.0..CYCLE).contains(&x) {
+            x
+        } else if (CYCLE..2.0 * CYCLE).contains(&x) {
+            x - CYCLE
+        } else if x > -CYCLE && x < 0.0 {
+            x + CYCLE
+        } else {
+            x.rem_euclid(CYCLE)
+        }
     }
 }
 
