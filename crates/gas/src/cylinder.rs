@@ -252,3 +252,45 @@ impl std::fmt::Debug for Chamber<'_> {
             .finish_non_exhaustive()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cycle angle is `rem_euclid`'s, bit for bit, on its fast paths' ranges, at their
+    /// edges and beyond them.
+    #[test]
+    fn the_cycle_angle_is_rem_euclids() {
+        let volume = |_: f64| Volume {
+            volume: 1.0,
+            rate: 0.0,
+        };
+        let cycle = 4.0 * PI;
+        let mut xs = vec![0.0, -0.0, cycle, 2.0 * cycle, -cycle, 3.0 * cycle, f64::NAN];
+        for edge in [0.0, cycle, 2.0 * cycle, -cycle] {
+            for k in 1..=4_u64 {
+                xs.push(f64::from_bits(f64::to_bits(edge.abs().max(1e-300)) + k) * edge.signum());
+                xs.push(f64::from_bits(f64::to_bits(edge.abs().max(1e-300)) - k) * edge.signum());
+            }
+        }
+        xs.extend((0..20_000).map(|k| -60.0 + 0.006_1 * f64::from(k)));
+        xs.extend([1e6, -1e6, 1e300, f64::INFINITY]);
+        for tdc in [0.0, std::f64::consts::FRAC_PI_2, 1.234] {
+            let chamber = Chamber {
+                cylinder: Cylinder::with_compression_ratio(0.1, 1e-3, 10.0).unwrap(),
+                tdc_angle: tdc,
+                volume: &volume,
+                piston: None,
+            };
+            for &x in &xs {
+                let theta = x + tdc;
+                let want = (theta - tdc).rem_euclid(cycle);
+                let got = chamber.cycle_angle(theta);
+                assert!(
+                    got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                    "θ = {theta}: {got} vs {want}"
+                );
+            }
+        }
+    }
+}

@@ -118,6 +118,14 @@ fn piston_position_is_the_states_and_dead_centres() {
                 m.name()
             );
             if m.has_cylinder() {
+                // Bit for bit where the crank direction is e^{iθ}: a gas model takes a block's
+                // chamber volumes from its positions (`cardan_gas::PreparedGas::lanes`).
+                assert_eq!(
+                    x.to_bits(),
+                    p.position.to_bits(),
+                    "{} θ = {theta}",
+                    m.name()
+                );
                 assert!(p.position <= m.piston_top() * (1.0 + 1e-15));
                 assert!(p.position >= m.piston_bottom() * (1.0 - 1e-15));
             }
