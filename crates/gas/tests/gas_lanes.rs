@@ -4,7 +4,7 @@
 //! bits of the single step at the same position; the models and chambers it does not fit say
 //! so. No paper needed: the two paths are the one formula (A6.1.1.11, A6.2.1.1).
 
-use cardan_gas::{Cylinder, GasModel, KarhulaEngine, KarhulaPump, Polytropic, PreparedGas};
+use cardan_gas::{Cylinder, GasModel, KarhulaEngine, KarhulaPump, Polytropic};
 use cardan_mechanism::{
     CrankMotion, CrankState, MachineGeometry, MassInputs, Mechanism, Options, StateBlock, LANES,
     MECHANISMS,
