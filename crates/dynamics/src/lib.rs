@@ -51,9 +51,9 @@ pub use cardan_losses::{
     ValveTrainGeometry, ValveTrainLoss, LOSS_MODELS,
 };
 pub use cardan_pipeline::{
-    run, run_parallel, run_summary, summary_chunk, Block, GasAt, Joinable, LaneError, PassedOn,
-    RunError, RunTotals, SetupError, Sink, Stage, StageColumn, StageError, StageTotals, Step,
-    StepBlock, StepRecord, StepScratch, Steps, SummarySink, MAX_CHUNK,
+    run, run_parallel, run_summary, summary_chunk, Block, CylinderGas, GasAt, Joinable, LaneError,
+    PassedOn, RunError, RunTotals, SetupError, Sink, Stage, StageColumn, StageError, StageTotals,
+    Step, StepBlock, StepRecord, StepScratch, Steps, SummarySink, MAX_CHUNK,
 };
 pub use gear_rating::{GearRatings, MeshRating};
 pub use machine::{Machine, MachineKind};

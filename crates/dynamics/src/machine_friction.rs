@@ -95,7 +95,7 @@ impl<'a> FrictionAt<'a> {
             .fill(self.mechanism, std::slice::from_ref(&crank));
         let (mut force, mut pressure): (Column, Option<f64>) = ([0.0; LANES], None);
         if let Some(g) = self.gas {
-            let (p, f) = g(gas_angle);
+            let (p, f) = g.at(gas_angle);
             (force[0], pressure) = (f, Some(p));
         }
         let applied = self.gas.map(|_| &force);

@@ -170,7 +170,7 @@ impl<'a> Acceleration<'a> {
             inertia += r.inertia;
             derivative += r.derivative;
             if let Some(f) = self.torques.gas {
-                gas += f(angle - c.firing_delay).1 * r.piston_lever;
+                gas += f.at(angle - c.firing_delay).1 * r.piston_lever;
             }
         }
         let j = inertia + self.torques.flywheel;

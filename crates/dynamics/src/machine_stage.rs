@@ -172,7 +172,7 @@ impl MachineStage {
             let mut pressure = [0.0; LANES];
             if let Some(g) = gas {
                 for (k, c) in room.cranks[..lanes].iter().enumerate() {
-                    (pressure[k], room.force[k]) = g(c.angle - phase.firing_delay);
+                    (pressure[k], room.force[k]) = g.at(c.angle - phase.firing_delay);
                 }
             }
             let applied = gas.map(|_| &room.force);

@@ -739,6 +739,7 @@ mod tests {
             cylinder: c,
             tdc_angle: 0.0,
             volume: &good,
+            piston: None,
         };
         assert!(e.cycle(&ch, 100.0, &[0.0, 1.0]).is_ok());
         for speed in [0.0, -1.0, f64::NAN] {

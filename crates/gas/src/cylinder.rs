@@ -101,14 +101,23 @@ impl Cylinder {
         &self,
         mechanism: &'a dyn Mechanism,
     ) -> impl Fn(f64) -> Volume + Sync + 'a {
-        let (clearance, area) = (self.clearance_volume, f64::from(self.pistons) * self.area);
-        let top = mechanism.piston_top();
+        let piston = self.piston_volume(mechanism);
         move |theta| {
             let (x, dx) = mechanism.piston_position(theta);
             Volume {
-                volume: clearance + area * (top - x),
-                rate: -area * dx,
+                volume: piston.volume(x),
+                rate: -piston.area * dx,
             }
+        }
+    }
+
+    /// The volume of this cylinder as a function of the position of its pistons, each moved
+    /// by `mechanism` in phase (A6.1.1.7-A6.1.1.10 with h_deck eliminated).
+    pub fn piston_volume(&self, mechanism: &dyn Mechanism) -> PistonVolume {
+        PistonVolume {
+            clearance: self.clearance_volume,
+            area: f64::from(self.pistons) * self.area,
+            top: mechanism.piston_top(),
         }
     }
 
@@ -120,6 +129,7 @@ impl Cylinder {
             cylinder: self,
             tdc_angle: mechanism.top_dead_centre(),
             volume: &volume,
+            piston: Some(self.piston_volume(mechanism)),
         })
     }
 
@@ -153,6 +163,7 @@ impl Cylinder {
             cylinder: self,
             tdc_angle: mechanism.top_dead_centre() - phase / 2.0,
             volume: &volume,
+            piston: None,
         })
     }
 
@@ -172,6 +183,29 @@ pub struct Volume {
     pub rate: f64,
 }
 
+/// The chamber volume as a function of the position x of the first piston (all its pistons
+/// moving in phase): V = V_comp + pistons·A_pis·(x_TDC − x) (A6.1.1.7-A6.1.1.10 with h_deck
+/// eliminated). [`Cylinder::volume_curve`] is this at the mechanism's
+/// [`Mechanism::piston_position`]; a block's steps, whose piston positions the mechanism has
+/// filled, take it from there (the same arithmetic: the same bits for the same x).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PistonVolume {
+    /// V_comp, m³.
+    pub clearance: f64,
+    /// pistons·A_pis, m².
+    pub area: f64,
+    /// The first piston's position at top dead centre x_TDC, m.
+    pub top: f64,
+}
+
+impl PistonVolume {
+    /// V at the first piston's position `x` (m), m³.
+    #[inline(always)]
+    pub fn volume(&self, x: f64) -> f64 {
+        self.clearance + self.area * (self.top - x)
+    }
+}
+
 /// The working chamber a gas model sees: the cylinder, the volume curve of the mechanism that
 /// moves its piston(s), and where the cycle starts.
 #[derive(Clone, Copy)]
@@ -182,12 +216,31 @@ pub struct Chamber<'a> {
     pub tdc_angle: f64,
     /// V(θ) and dV/dθ for any crank angle θ (rad).
     pub volume: &'a (dyn Fn(f64) -> Volume + Sync),
+    /// V as a function of the first piston's position alone, where the chamber has it (its
+    /// pistons move in phase: [`Cylinder::with_chamber`]; `None` for a phased opposed-piston
+    /// chamber, whose second piston is elsewhere): `volume` is then this at the mechanism's
+    /// [`Mechanism::piston_position`], bit for bit.
+    pub piston: Option<PistonVolume>,
 }
 
 impl Chamber<'_> {
     /// Crank angle from the opening top dead centre, in [0, 4π) (a four-stroke cycle), rad.
+    #[inline(always)]
     pub fn cycle_angle(&self, theta: f64) -> f64 {
-        (theta - self.tdc_angle).rem_euclid(4.0 * PI)
+        const CYCLE: f64 = 4.0 * PI;
+        let x = theta - self.tdc_angle;
+        // `rem_euclid`'s own result without its `fmod` call over the first cycles: the
+        // remainder is x itself on [0, 4π), x − 4π on [4π, 8π) (exact, Sterbenz), and
+        // `rem_euclid` adds 4π on (−4π, 0).
+        if (0.0..CYCLE).contains(&x) {
+            x
+        } else if (CYCLE..2.0 * CYCLE).contains(&x) {
+            x - CYCLE
+        } else if x > -CYCLE && x < 0.0 {
+            x + CYCLE
+        } else {
+            x.rem_euclid(CYCLE)
+        }
     }
 }
 
@@ -197,5 +250,47 @@ impl std::fmt::Debug for Chamber<'_> {
             .field("cylinder", &self.cylinder)
             .field("tdc_angle", &self.tdc_angle)
             .finish_non_exhaustive()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cycle angle is `rem_euclid`'s, bit for bit, on its fast paths' ranges, at their
+    /// edges and beyond them.
+    #[test]
+    fn the_cycle_angle_is_rem_euclids() {
+        let volume = |_: f64| Volume {
+            volume: 1.0,
+            rate: 0.0,
+        };
+        let cycle = 4.0 * PI;
+        let mut xs = vec![0.0, -0.0, cycle, 2.0 * cycle, -cycle, 3.0 * cycle, f64::NAN];
+        for edge in [0.0, cycle, 2.0 * cycle, -cycle] {
+            for k in 1..=4_u64 {
+                xs.push(f64::from_bits(f64::to_bits(edge.abs().max(1e-300)) + k) * edge.signum());
+                xs.push(f64::from_bits(f64::to_bits(edge.abs().max(1e-300)) - k) * edge.signum());
+            }
+        }
+        xs.extend((0..20_000).map(|k| -60.0 + 0.006_1 * f64::from(k)));
+        xs.extend([1e6, -1e6, 1e300, f64::INFINITY]);
+        for tdc in [0.0, std::f64::consts::FRAC_PI_2, 1.234] {
+            let chamber = Chamber {
+                cylinder: Cylinder::with_compression_ratio(0.1, 1e-3, 10.0).unwrap(),
+                tdc_angle: tdc,
+                volume: &volume,
+                piston: None,
+            };
+            for &x in &xs {
+                let theta = x + tdc;
+                let want = (theta - tdc).rem_euclid(cycle);
+                let got = chamber.cycle_angle(theta);
+                assert!(
+                    got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                    "θ = {theta}: {got} vs {want}"
+                );
+            }
+        }
     }
 }

@@ -23,10 +23,13 @@
 //!   compression), so [`EngineReading::Direct`] is the default and [`EngineReading::Thesis`]
 //!   reproduces the thesis's work, output torque and efficiency columns.
 
-use crate::{require, Chamber, Cylinder, GasError, GasMetric, GasModel, PreparedGas};
+use crate::{require, Chamber, Cylinder, GasError, GasMetric, GasModel, PistonVolume, PreparedGas};
+use cardan_mechanism::{vectorised, LANES};
+use cardan_numeric::{powf_lane, powf_lanes};
 use std::f64::consts::PI;
 
 /// Which half-turn of the 720° cycle θ falls in: 0 = the stroke after the opening TDC.
+#[inline(always)]
 fn stroke(chamber: &Chamber, theta: f64) -> usize {
     (chamber.cycle_angle(theta) / PI) as usize % 4
 }
@@ -64,9 +67,11 @@ impl Polytropic {
         })
     }
 
-    /// Absolute pressure at volume `v`, Pa (A6.1.1.11).
+    /// Absolute pressure at volume `v`, Pa (A6.1.1.11). The power is
+    /// [`cardan_numeric::powf_lane`] (within one ulp of `powf`): the bits of a lane of the
+    /// pump's block path ([`KarhulaPump`]), which takes its powers all at once.
     pub fn pressure(&self, cylinder: &Cylinder, v: f64) -> f64 {
-        self.ambient_pressure * (self.filling * cylinder.max_volume() / v).powf(self.exponent)
+        self.ambient_pressure * powf_lane(self.filling * cylinder.max_volume() / v, self.exponent)
     }
 
     /// Maximum polytropic pressure, at the clearance volume (A6.1.1.6), Pa.
@@ -123,6 +128,14 @@ pub struct KarhulaPump {
     pub gas: Polytropic,
 }
 
+impl KarhulaPump {
+    /// Whether the valves are closed on `stroke` (the compression strokes).
+    #[inline(always)]
+    fn closed(stroke: usize) -> bool {
+        matches!(stroke, 1 | 3)
+    }
+}
+
 impl GasModel for KarhulaPump {
     fn prepare<'a>(
         &'a self,
@@ -130,14 +143,99 @@ impl GasModel for KarhulaPump {
         _speed: f64,
     ) -> Result<Box<dyn PreparedGas + 'a>, GasError> {
         self.gas.check(&chamber)?;
-        Ok(Box::new(ClosedStrokes {
+        Ok(Box::new(PreparedPump {
             chamber,
-            ambient: self.gas.ambient_pressure,
-            closed: move |ch: &Chamber, stroke, theta| {
-                matches!(stroke, 1 | 3)
-                    .then(|| self.gas.pressure(&ch.cylinder, (ch.volume)(theta).volume))
-            },
+            gas: self.gas,
         }))
+    }
+}
+
+/// The pump on its chamber: the polytropic pressure (A6.1.1.11) on the compression strokes,
+/// where the force is p·A_pis (A6.2.1.1); ambient pressure and no force on the intake strokes
+/// (as [`ClosedStrokes`]). A function of the chamber volume and the stroke alone, so that a
+/// block's steps take the volume from their piston positions ([`PreparedGas::lanes`]).
+struct PreparedPump<'a> {
+    chamber: Chamber<'a>,
+    gas: Polytropic,
+}
+
+impl PreparedGas for PreparedPump<'_> {
+    fn at(&self, theta: f64) -> (f64, f64) {
+        if KarhulaPump::closed(stroke(&self.chamber, theta)) {
+            let p =
+                (self.gas).pressure(&self.chamber.cylinder, (self.chamber.volume)(theta).volume);
+            (p, p * self.chamber.cylinder.area)
+        } else {
+            (self.gas.ambient_pressure, 0.0)
+        }
+    }
+
+    fn lanes(
+        &self,
+        angle: &[f64],
+        position: &[f64],
+        pressure: &mut [f64],
+        force: &mut [f64],
+    ) -> bool {
+        let Some(piston) = self.chamber.piston else {
+            return false;
+        };
+        for (((a, x), p), f) in angle
+            .chunks(LANES)
+            .zip(position.chunks(LANES))
+            .zip(pressure.chunks_mut(LANES))
+            .zip(force.chunks_mut(LANES))
+        {
+            pump_lanes(self, &piston, a, x, p, f);
+        }
+        true
+    }
+
+    fn metrics(&self) -> Vec<GasMetric> {
+        Vec::new()
+    }
+}
+
+vectorised! {
+    /// [`PreparedPump::at`] over at most [`LANES`] lanes, the volume from the piston's position
+    /// (`piston`), the powers of the closed strokes' lanes all at once
+    /// ([`cardan_numeric::powf_lanes`], lane by lane the bits of [`Polytropic::pressure`]'s
+    /// `powf_lane`): the pressure of A6.1.1.11 and the force p·A_pis of A6.2.1.1.
+    fn pump_lanes(
+        pump: &PreparedPump,
+        piston: &PistonVolume,
+        angle: &[f64],
+        position: &[f64],
+        pressure: &mut [f64],
+        force: &mut [f64],
+    ) {
+        let n = angle.len().min(position.len()).min(pressure.len()).min(force.len()).min(LANES);
+        let (gas, cylinder) = (&pump.gas, &pump.chamber.cylinder);
+        let mut closed = [false; LANES];
+        // The closed lanes lie between `first` and `end` (a block spans one or two strokes:
+        // the intake strokes' lanes outside take no power).
+        let (mut first, mut end) = (n, 0);
+        for (i, (c, &theta)) in closed.iter_mut().zip(&angle[..n]).enumerate() {
+            *c = KarhulaPump::closed(stroke(&pump.chamber, theta));
+            if *c {
+                first = first.min(i);
+                end = i + 1;
+            }
+        }
+        let mut base = [0.0; LANES];
+        let mut power = [0.0; LANES];
+        if first < end {
+            let charge = gas.filling * cylinder.max_volume();
+            for (b, &x) in base[first..end].iter_mut().zip(&position[first..end]) {
+                *b = charge / piston.volume(x);
+            }
+            powf_lanes(&base[first..end], gas.exponent, &mut power[first..end]);
+        }
+        let (ambient, area) = (gas.ambient_pressure, cylinder.area);
+        for i in 0..n {
+            let p = ambient * power[i];
+            (pressure[i], force[i]) = if closed[i] { (p, p * area) } else { (ambient, 0.0) };
+        }
     }
 }
 
@@ -235,6 +333,7 @@ mod tests {
             cylinder: Cylinder::with_compression_ratio(0.1, 1e-3, 10.0).unwrap(),
             tdc_angle: std::f64::consts::FRAC_PI_2,
             volume: &volume,
+            piston: None,
         };
         let stroke = |d: f64| stroke(&chamber, d.to_radians());
         assert_eq!(stroke(90.0), 0);

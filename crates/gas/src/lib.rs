@@ -14,7 +14,7 @@ pub mod karhula;
 
 pub use closed_cycle::ClosedCycle;
 pub use compressor::Compressor;
-pub use cylinder::{Chamber, Cylinder, Volume};
+pub use cylinder::{Chamber, Cylinder, PistonVolume, Volume};
 pub use karhula::{EngineReading, KarhulaEngine, KarhulaPump, Polytropic};
 
 /// The gas over one run of crank angles.
@@ -83,6 +83,25 @@ pub trait PreparedGas: Sync {
     /// Absolute cylinder pressure (Pa) and the gas force on each piston along the cylinder
     /// axis, towards the crankshaft (N), at crank angle `theta` (rad).
     fn at(&self, theta: f64) -> (f64, f64);
+
+    /// [`PreparedGas::at`] over the lanes of a block of steps at once: the crank angles
+    /// `angle` (rad) and the first piston's position `position` there (m, as the mechanism
+    /// filled the block) in, the pressure (Pa) and the force on each piston (N) out, for the
+    /// lanes of the shortest slice. A model whose gas at a step is a function of the step's
+    /// chamber volume and angle alone takes the volume from the position
+    /// ([`Chamber::piston`]): lane by lane the bits of [`PreparedGas::at`] at a position with
+    /// the bits of [`cardan_mechanism::Mechanism::piston_position`]'s. Returns false, writing
+    /// nothing, where it does not (the model needs the volume at other angles, or the chamber
+    /// is not a function of one piston's position): then `at` serves each lane.
+    fn lanes(
+        &self,
+        _angle: &[f64],
+        _position: &[f64],
+        _pressure: &mut [f64],
+        _force: &mut [f64],
+    ) -> bool {
+        false
+    }
 
     /// The model's results per cycle.
     fn metrics(&self) -> Vec<GasMetric>;

@@ -55,6 +55,7 @@ fn with_harmonic<R>(cylinder: Cylinder, f: impl FnOnce(&Chamber) -> R) -> R {
         cylinder,
         tdc_angle: PI / 2.0,
         volume: &volume,
+        piston: None,
     })
 }
 

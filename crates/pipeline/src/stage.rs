@@ -10,14 +10,42 @@
 //! step is a block of one lane; the step loop knows one path.
 
 use crate::step::StepBlock;
-use cardan_mechanism::{Column, LoadsBlock, StateBlock};
+use cardan_mechanism::{Column, LoadsBlock, StateBlock, LANES};
 use cardan_metrics::{MetricDef, Summary};
 use std::any::Any;
 use std::ops::Range;
 
 /// The gas at a crank angle: (absolute pressure in Pa, force on each piston in N); `Sync`, so
-/// that the threads sharing a run ([`crate::run_parallel`]) can all ask it.
-pub type GasAt<'a> = &'a (dyn Fn(f64) -> (f64, f64) + Sync);
+/// that the threads sharing a run ([`crate::run_parallel`]) can all ask it. Any
+/// `Fn(f64) -> (f64, f64)` is one.
+pub type GasAt<'a> = &'a dyn CylinderGas;
+
+/// The gas in the cylinder a run's pistons share, at one crank angle and over a block's lanes.
+pub trait CylinderGas: Sync {
+    /// (absolute pressure, Pa; force on each piston, N) at crank angle `theta` (rad).
+    fn at(&self, theta: f64) -> (f64, f64);
+
+    /// The same at the first `states.len` lanes of `states` into `pressure` and `force`: by
+    /// default [`CylinderGas::at`] at each lane's crank angle. A gas whose chamber volume is
+    /// the block's piston positions' takes it from there, at once over the lanes
+    /// (`cardan_gas::PreparedGas::lanes`).
+    fn lanes(&self, states: &StateBlock, pressure: &mut Column, force: &mut Column) {
+        let n = states.len.min(LANES);
+        for ((p, f), &theta) in pressure
+            .iter_mut()
+            .zip(force.iter_mut())
+            .zip(&states.crank.angle[..n])
+        {
+            (*p, *f) = self.at(theta);
+        }
+    }
+}
+
+impl<F: Fn(f64) -> (f64, f64) + Sync> CylinderGas for F {
+    fn at(&self, theta: f64) -> (f64, f64) {
+        self(theta)
+    }
+}
 
 /// A block of consecutive steps as the stages read it: lane `i` of every column is the
 /// block's step `i`. Only the first [`Block::len`] lanes are evaluated: the steps before the

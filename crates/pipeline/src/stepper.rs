@@ -118,9 +118,7 @@ pub(crate) fn run_in(
         (stopped, ended) = next_states(states, mechanism, motion, block, index, previous_torque);
         let n = states.len;
         if let Some(g) = gas {
-            for i in 0..n {
-                (pressure[i], force[i]) = g(states.crank.angle[i]);
-            }
+            g.lanes(states, &mut pressure, &mut force);
         }
         let applied = gas.map(|_| &force);
         let gas_pressure = gas.map(|_| &pressure);

@@ -13,10 +13,10 @@ use cardan_dynamics::machine_friction::MotionFriction;
 use cardan_dynamics::machine_motion::{MachineTorques, SolvedMotion, SolvedRun};
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, run_parallel, Gas, Inertial, LoadFamily, Sink, Stage, Summary, SummarySink,
+    run, run_parallel, CylinderGas, Gas, Inertial, LoadFamily, Sink, Stage, Summary, SummarySink,
 };
-use cardan_gas::GasMetric;
-use cardan_mechanism::{CrankMotion, Grid, Mechanism};
+use cardan_gas::{GasMetric, PreparedGas};
+use cardan_mechanism::{Column, CrankMotion, Grid, Mechanism, StateBlock, LANES};
 use cardan_report::ChartData;
 use rayon::prelude::*;
 use std::path::Path;
@@ -387,11 +387,42 @@ fn with_gas(
             .model()
             .prepare(*chamber, mean_speed(case))
             .map_err(failed)?;
-        // The chamber's pressure is a function of the first train's crank angle.
-        let at = |theta: f64| prepared.at(theta - shift);
+        let at = ChamberGas {
+            prepared: prepared.as_ref(),
+            shift,
+        };
         steps(Some(&at))?;
         Ok::<_, String>(prepared.metrics())
     })
+}
+
+/// A prepared gas model as a train's cylinder gas: the chamber's pressure is a function of
+/// the first train's crank angle, `shift` (rad) behind this train's.
+struct ChamberGas<'a> {
+    prepared: &'a dyn PreparedGas,
+    shift: f64,
+}
+
+impl CylinderGas for ChamberGas<'_> {
+    fn at(&self, theta: f64) -> (f64, f64) {
+        self.prepared.at(theta - self.shift)
+    }
+
+    /// The first train's block (no shift) gives the model its piston positions, where the
+    /// model takes them ([`PreparedGas::lanes`]); otherwise [`CylinderGas::at`] at each lane.
+    fn lanes(&self, states: &StateBlock, pressure: &mut Column, force: &mut Column) {
+        let n = states.len.min(LANES);
+        let taken = self.shift == 0.0
+            && states.pistons.first().is_some_and(|piston| {
+                let (p, f) = (&mut pressure[..n], &mut force[..n]);
+                (self.prepared).lanes(&states.crank.angle[..n], &piston.position[..n], p, f)
+            });
+        if !taken {
+            for i in 0..n {
+                (pressure[i], force[i]) = self.at(states.crank.angle[i]);
+            }
+        }
+    }
 }
 
 /// The solved motion's metrics into `summary`; refused if one is not finite.
