@@ -22,7 +22,7 @@ use cardan_gears::agma::factors::{
 };
 use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, SaturatedLoad, FULL_DEPTH_20};
-use cardan_gears::mesh_loss::Lubricant;
+use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, PreparedMeshLoss, Reading};
 use cardan_gears::{
     pitting_geometry_factor, BendingJMemo, GearPair, GearSet, GeneratedMember, IForm, MeshStep,
     PairMember,
@@ -171,6 +171,10 @@ struct RatedMesh {
     /// The mesh loss: the case's gear-mesh model bound to this mesh (the loss budget's own), so
     /// that the rating's loss and the budget's mesh component are one figure.
     loss: Box<dyn Loss>,
+    /// The same model over a block's lanes where it is Anderson & Loewenthal's
+    /// ([`PreparedMeshLoss::total_power_lanes`] on the pair and oil `loss` is bound to: the
+    /// same bits); `None`: another model, or a pair it refuses (`loss` then says why).
+    loss_lanes: Option<PreparedMeshLoss>,
     /// The dynamic factor at the last step's pitch-line velocity (its bits; `None` before the
     /// first), kept while the speed does not change.
     kv: Option<(u64, DynamicFactor)>,
@@ -222,7 +226,15 @@ impl GearRatings {
             let (pair, face_width) =
                 mesh_pair(spec, ratio, pitch_radius, internal, pressure_angle)?;
             let set = gear_set(spec, pair, (face_width, internal), oil, memo)?;
-            let loss = mesh_loss(spec, mechanism, friction, k)?;
+            let (loss, reading) = mesh_loss(spec, mechanism, friction, k)?;
+            let loss_lanes = reading.and_then(|reading| {
+                let geometry = MeshGeometry::from_pair(&set.pair, set.face_width).ok()?;
+                Some(PreparedMeshLoss::new(
+                    &geometry,
+                    &set.lubricant,
+                    reading.options(),
+                ))
+            });
             let prepared = PreparedRating::new(&set.rating, set.face_width);
             let iso = if spec.standard.iso() {
                 Some(iso_rating(spec, &set)?)
@@ -246,6 +258,7 @@ impl GearRatings {
                     * pitch_radius,
                 axis,
                 loss,
+                loss_lanes,
                 kv: None,
                 rating: prepared,
                 iso,
@@ -297,9 +310,10 @@ impl GearRatings {
     /// loads, which [`ToothLoad::Thesis`] reads, `None` without one): per mesh, in rating
     /// order, the first `per_mesh` of its [values](MeshRating::values) into a column each of
     /// `out`, and its loss, W, into its column of `losses` (a column per mesh, in rating
-    /// order). The losses are taken over the block first, then the ratings over the block's
-    /// lanes, a mesh at a time ([`lanes`]); where a lane fails a check there, the lanes one by
-    /// one ([`GearRatings::evaluate_block_lane_by_lane`]), whose error this is.
+    /// order). The losses are taken over the block first
+    /// ([`GearRatings::losses_over_lanes`]), then the ratings over the block's lanes, a mesh at
+    /// a time ([`GearRatings::rate_lanes`]); where a lane fails a check there, the lanes one
+    /// by one ([`GearRatings::evaluate_block_lane_by_lane`]), whose error this is.
     pub fn evaluate_block(
         &mut self,
         block: &Block,
@@ -307,11 +321,27 @@ impl GearRatings {
         per_mesh: usize,
         losses: &mut [(usize, Column)],
     ) -> Result<(), (usize, String)> {
-        let failed = self.losses(block, losses);
-        if failed.iter().all(Option::is_none) && self.rate_lanes(block, out, per_mesh, losses) {
+        if self.losses_over_lanes(block, losses) && self.rate_lanes(block, out, per_mesh, losses) {
             return Ok(());
         }
-        self.rate_lane_by_lane(block, out, per_mesh, losses, &failed)
+        self.evaluate_block_lane_by_lane(block, out, per_mesh, losses)
+    }
+
+    /// Each mesh's loss (W) at the lanes of `block` into its column of `losses`, every lane at
+    /// once where the mesh's model is Anderson & Loewenthal's (the bits of the bound model's
+    /// lanes one by one): `false` where one fails a check (the lanes are then to be taken one
+    /// by one, which say where and why).
+    pub fn losses_over_lanes(&mut self, block: &Block, losses: &mut [(usize, Column)]) -> bool {
+        let at = LossLanes {
+            lanes: 0..block.len,
+            ..LossLanes::one(block.states, block.total)
+        };
+        (self.meshes.iter_mut().zip(losses.iter_mut())).all(|(m, (_, loss))| {
+            match m.loss_lanes.is_some() {
+                true => m.loss_lanes(block, loss),
+                false => m.loss.power(&at, loss).is_ok(),
+            }
+        })
     }
 
     /// The ratings of [`GearRatings::evaluate_block`] from the meshes' `losses` (at every
@@ -345,8 +375,8 @@ impl GearRatings {
         self.rate_lane_by_lane(block, out, per_mesh, losses, &failed)
     }
 
-    /// Each mesh's loss at the lanes of `block` into its column of `losses`, and where it
-    /// fails, if it does.
+    /// Each mesh's loss at the lanes of `block` into its column of `losses` by its bound
+    /// model, and where it fails, if it does.
     fn losses(
         &mut self,
         block: &Block,
@@ -533,13 +563,14 @@ fn tooth_load_axis(tooth_load: ToothLoad, force: MeshForce, name: &str) -> Resul
 
 /// The mesh loss of gear-mesh joint `joint` of `mechanism` on the pair of `spec`: the model of
 /// `friction` (its parameters and oil), or, without one or with its mesh loss off, Anderson &
-/// Loewenthal's in the corrected reading (with Karhula's oil without `friction`).
+/// Loewenthal's in the corrected reading (with Karhula's oil without `friction`); and its
+/// reading of Anderson & Loewenthal's, if it is one.
 fn mesh_loss(
     spec: &GearSpec,
     mechanism: &dyn Mechanism,
     friction: Option<&Friction>,
     joint: usize,
-) -> Result<Box<dyn Loss>, SetupError> {
+) -> Result<(Box<dyn Loss>, Option<Reading>), SetupError> {
     let karhula = Friction::karhula();
     let f = friction.unwrap_or(&karhula);
     let model = friction
@@ -556,12 +587,13 @@ fn mesh_loss(
         joint,
         bearings: None,
     };
-    model.bind_at(&site).unwrap_or_else(|| {
+    let loss = model.bind_at(&site).unwrap_or_else(|| {
         Err(failed(
             SetupInput::Model(Attachment::GearMesh),
             &"is not a gear-mesh loss",
         ))
-    })
+    })?;
+    Ok((loss, model.mesh_reading()))
 }
 
 impl RatedMesh {

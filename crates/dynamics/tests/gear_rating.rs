@@ -296,7 +296,8 @@ fn a_block_is_rated_lane_by_lane_as_each_step_alone() {
 }
 
 /// The gear stage, each block rated both ways: over its lanes, a mesh at a time
-/// (`GearRatings::rate_lanes`, which `evaluate_block` takes) and lane by lane
+/// (`GearRatings::losses_over_lanes` and `rate_lanes`, which `evaluate_block` takes: the mesh
+/// loss's logarithm and power every lane at once) and lane by lane
 /// (`GearRatings::evaluate_block_lane_by_lane`, the steps' own arithmetic with its checks); the
 /// two must give the same bits, and the lanes' way must take every block (none out of range).
 #[derive(Debug, Clone)]
@@ -323,13 +324,22 @@ impl Stage for BothWays {
         (self.one_by_one)
             .evaluate_block_lane_by_lane(block, out, per_mesh, &mut losses)
             .unwrap();
+        let mut lane_losses: Vec<_> = self.lanes.joints().map(|j| (j, ZERO)).collect();
+        assert!(self.lanes.losses_over_lanes(block, &mut lane_losses));
         let mut lanes = vec![ZERO; out.len()];
-        assert!(self.lanes.rate_lanes(block, &mut lanes, per_mesh, &losses));
-        for (k, (a, b)) in out.iter().zip(&lanes).enumerate() {
-            for i in 0..block.len {
-                assert_eq!(a[i].to_bits(), b[i].to_bits(), "value {k} lane {i}");
+        assert!(self
+            .lanes
+            .rate_lanes(block, &mut lanes, per_mesh, &lane_losses));
+        let same = |a: &[Column], b: &[Column], what: &str| {
+            for (k, (a, b)) in a.iter().zip(b).enumerate() {
+                for i in 0..block.len {
+                    assert_eq!(a[i].to_bits(), b[i].to_bits(), "{what} {k} lane {i}");
+                }
             }
-        }
+        };
+        let columns = |l: &[(usize, Column)]| l.iter().map(|c| c.1).collect::<Vec<_>>();
+        same(&columns(&losses), &columns(&lane_losses), "loss");
+        same(out, &lanes, "value");
         passed.mesh_losses.extend(losses);
         Ok(())
     }

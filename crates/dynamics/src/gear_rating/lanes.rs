@@ -5,6 +5,7 @@
 //! load, speed or factor out of its range anywhere sends the whole block to the lanes rated
 //! one by one, which say where and why), so that no lane carries a `Result`.
 
+use cardan_gears::mesh_loss::PreparedMeshLoss;
 use cardan_gears::{CheckedRating, MeshStep, SaturatedLoad};
 use cardan_mechanism::{Column, ZERO};
 
@@ -13,6 +14,36 @@ use crate::mesh::{mesh_speeds, tangential, ToothLoad};
 use crate::stage::Block;
 
 impl RatedMesh {
+    /// The mesh's loss (W) at the first [`Block::len`] lanes of `block` into `loss`, every
+    /// lane at once ([`mesh_loss_lanes`]), as its bound model takes it lane by lane (the
+    /// tangential load shared by the sets, each set losing its own: `cardan_losses`'s `Mesh`),
+    /// with the same bits: `false` where it has no model over lanes or a lane fails a check
+    /// (the bound model, lane by lane, then says why).
+    pub(super) fn loss_lanes(&mut self, block: &Block, loss: &mut Column) -> bool {
+        let Some(model) = &mut self.loss_lanes else {
+            return false;
+        };
+        let n = block.len;
+        let (forces, motions) = (
+            &block.total.joints[self.joint],
+            &block.states.joints[self.joint],
+        );
+        let pinion = &block.states.bodies[self.body].angular_velocity;
+        let (mut ft, mut carrier) = (ZERO, ZERO);
+        for i in 0..n {
+            let motion = motions.at(i);
+            ft[i] = tangential(forces.at(i).force, &motion) / self.sets;
+            carrier[i] = mesh_speeds(pinion[i], motion.relative_speed, self.pitch_radius).carrier;
+        }
+        if !mesh_loss_lanes(model, &pinion[..n], &carrier[..n], &ft[..n], &mut loss[..n]) {
+            return false;
+        }
+        for l in &mut loss[..n] {
+            *l *= self.sets;
+        }
+        true
+    }
+
     /// The mesh's rating at the first [`Block::len`] lanes of `block`, its mesh loss `loss`
     /// (W) at each, into `out` (its [values](MeshRating::values), a column each, the first
     /// `out.len()`): `false` where a lane fails a check of [`RatedMesh::rate`] (the lanes are
@@ -135,5 +166,20 @@ cardan_mechanism::vectorised! {
             bending_safety[i] = r.bending_safety[0].min(r.bending_safety[1]);
         }
         takes
+    }
+}
+
+cardan_mechanism::vectorised! {
+    /// Anderson & Loewenthal's mesh loss over a block's lanes
+    /// ([`PreparedMeshLoss::total_power_lanes`], Karhula A9.1.41-55), compiled for the block
+    /// kernels' instruction sets.
+    fn mesh_loss_lanes(
+        model: &mut PreparedMeshLoss,
+        pinion: &[f64],
+        carrier: &[f64],
+        ft: &[f64],
+        out: &mut [f64],
+    ) -> bool {
+        model.total_power_lanes(pinion, carrier, ft, out)
     }
 }
