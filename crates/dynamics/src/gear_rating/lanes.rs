@@ -6,7 +6,7 @@
 //! one by one, which say where and why), so that no lane carries a `Result`.
 
 use cardan_gears::mesh_loss::PreparedMeshLoss;
-use cardan_gears::{CheckedRating, MeshStep, SaturatedLoad};
+use cardan_gears::{CheckedRating, SaturatedLoad};
 use cardan_mechanism::{Column, ZERO};
 
 use super::{MeshRating, RatedMesh};
@@ -102,25 +102,21 @@ impl RatedMesh {
             &block.total.joints[self.joint],
             &block.states.joints[self.joint],
         );
-        let pinion = &block.states.bodies[self.body].angular_velocity;
         let saturated = match (self.tooth_load, &self.saturated) {
             (ToothLoad::Thesis, Ok(s)) => Some(*s),
             (ToothLoad::Thesis, Err(_)) => return false,
             _ => None,
         };
+        let mut takes = true;
         for i in 0..block.len {
             let motion = motions.at(i);
             let force = forces.at(i).force;
             let tangential_load = tangential(force, &motion).abs() / self.sets;
-            let step = MeshStep {
-                tangential_load,
-                pitch_line_velocity: motion.relative_speed,
-                speeds: mesh_speeds(pinion[i], motion.relative_speed, self.pitch_radius),
-            };
-            let Ok(factor) = self.kept_dynamic_factor(&step) else {
+            takes &= self.set.takes_step(tangential_load, motion.relative_speed);
+            let Some(factor) = self.kept_kv(motion.relative_speed) else {
                 return false;
             };
-            kv[i] = factor.kv;
+            kv[i] = factor;
             load[i] = match self.tooth_load {
                 ToothLoad::Tangential => tangential_load,
                 ToothLoad::RingForce => force.norm() / self.sets,
@@ -138,7 +134,23 @@ impl RatedMesh {
                 }
             };
         }
-        true
+        takes
+    }
+
+    /// AGMA's dynamic factor `Kv` at the pitch-line velocity `v` (m/s) of a step
+    /// [`GearSet::takes_step`](cardan_gears::GearSet::takes_step) takes, kept with the speed's
+    /// bits as [`RatedMesh::kept_dynamic_factor`] keeps it (the same factor); `None` where it
+    /// cannot be taken.
+    fn kept_kv(&mut self, v: f64) -> Option<f64> {
+        let bits = v.abs().to_bits();
+        match self.kv {
+            Some((kept, kv)) if kept == bits => Some(kv.kv),
+            _ => {
+                let kv = cardan_gears::dynamic_factor(self.set.quality, v.abs()).ok()?;
+                self.kv = Some((bits, kv));
+                Some(kv.kv)
+            }
+        }
     }
 }
 
