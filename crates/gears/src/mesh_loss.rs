@@ -306,34 +306,37 @@ impl PreparedMeshLoss {
         };
         let kept = &mut self.kept;
         for (k, out) in out.chunks_mut(CHUNK).enumerate() {
-            let lanes = k * CHUNK..k * CHUNK + out.len();
+            let n = out.len();
+            let lanes = k * CHUNK..k * CHUNK + n;
             let (pinion, carrier, ft) =
                 (&pinion[lanes.clone()], &carrier[lanes.clone()], &ft[lanes]);
-            let mut terms = [SpeedTerms::default(); CHUNK];
+            let mut t = [SpeedTerms::default(); CHUNK];
+            let (mut n_abs, mut f_n) = ([0.0; CHUNK], [0.0; CHUNK]);
             let mut checked = true;
-            for (i, t) in terms[..out.len()].iter_mut().enumerate() {
-                let speeds = MeshSpeeds {
-                    pinion_absolute: pinion[i],
-                    carrier: carrier[i],
-                };
+            for i in 0..n {
                 // check_step's conditions, without its error.
                 checked &= ft[i].is_finite() && pinion[i].is_finite() && carrier[i].is_finite();
-                *t = c.speed_terms(&speeds, kept);
+                (n_abs[i], t[i].v_s, t[i].v_r) = c.velocities(pinion[i], carrier[i]);
+                f_n[i] = c.normal_load(ft[i]);
             }
             if !checked {
                 return false;
             }
-            let (mut f_n, mut argument, mut base) = ([0.0; CHUNK], [0.0; CHUNK], [0.0; CHUNK]);
-            for i in 0..out.len() {
-                f_n[i] = c.normal_load(ft[i]);
-                argument[i] = c.friction_argument(&terms[i], f_n[i]);
+            // The speeds' powers lane by lane, kept while their arguments' bits stay.
+            for (t, &n_abs) in t[..n].iter_mut().zip(&n_abs) {
+                t.film = c.film_power(t.v_r, kept);
+                t.windage = kept.windage.pow(n_abs, 2.8);
+            }
+            let (mut argument, mut base) = ([0.0; CHUNK], [0.0; CHUNK]);
+            for i in 0..n {
+                argument[i] = c.friction_argument(&t[i], f_n[i]);
                 base[i] = load_base(f_n[i]);
             }
             let (mut log, mut power) = ([0.0; CHUNK], [0.0; CHUNK]);
-            log10_lanes(&argument[..out.len()], &mut log[..out.len()]);
-            powf_lanes(&base[..out.len()], -0.067, &mut power[..out.len()]);
+            log10_lanes(&argument[..n], &mut log[..n]);
+            powf_lanes(&base[..n], -0.067, &mut power[..n]);
             for (i, o) in out.iter_mut().enumerate() {
-                *o = c.finish(&terms[i], f_n[i], log[i], power[i]).total_power;
+                *o = c.finish(&t[i], f_n[i], log[i], power[i]).total_power;
             }
         }
         true
@@ -471,10 +474,23 @@ impl MeshConstants {
     /// `kept`).
     #[inline(always)]
     fn speed_terms(&self, speeds: &MeshSpeeds, kept: &mut KeptSpeedPowers) -> SpeedTerms {
+        let (n_abs, v_s, v_r) = self.velocities(speeds.pinion_absolute, speeds.carrier);
+        SpeedTerms {
+            v_s,
+            v_r,
+            film: self.film_power(v_r, kept),
+            windage: kept.windage.pow(n_abs, 2.8),
+        }
+    }
+
+    /// The pinion's absolute speed in rpm, and the sliding and rolling velocities `v_s`, `v_r`
+    /// \[m/s\] (A9.1.41-43) at the pinion's and the carrier's speeds \[rad/s\].
+    #[inline(always)]
+    fn velocities(&self, pinion: f64, carrier: f64) -> (f64, f64, f64) {
         let to_rpm = 60.0 / (2.0 * PI);
-        let n_abs = speeds.pinion_absolute.abs() * to_rpm;
+        let n_abs = pinion.abs() * to_rpm;
         let n_mesh = if self.mesh_kinematics {
-            (speeds.pinion_absolute - speeds.carrier).abs() * to_rpm
+            (pinion - carrier).abs() * to_rpm
         } else {
             // A9.1.41: absolute wheel speed.
             n_abs
@@ -482,13 +498,13 @@ impl MeshConstants {
         // A9.1.42, A9.1.43 (0.0262 ≈ 2π/60/4, 0.1047 ≈ 2π/60 as printed).
         let v_s = 0.0262 * n_mesh * self.slide_k * self.l;
         let v_r = (0.1047 * n_mesh * (self.d1 * self.s - self.l / 4.0 * self.roll_k)).max(0.0);
-        SpeedTerms {
-            v_s,
-            v_r,
-            // A9.1.51's (v_r η)^0.67 and A9.1.54's n_abs^2.8.
-            film: kept.film.pow(v_r * self.eta, 0.67),
-            windage: kept.windage.pow(n_abs, 2.8),
-        }
+        (n_abs, v_s, v_r)
+    }
+
+    /// A9.1.51's `(v_r η)^0.67`, kept in `kept`.
+    #[inline(always)]
+    fn film_power(&self, v_r: f64, kept: &mut KeptSpeedPowers) -> f64 {
+        kept.film.pow(v_r * self.eta, 0.67)
     }
 
     /// The normal load per tooth pair `F_n = |Ft|/(2 cos α)` \[N\] (A9.1.45).
