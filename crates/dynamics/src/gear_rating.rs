@@ -22,7 +22,7 @@ use cardan_gears::agma::factors::{
 };
 use cardan_gears::agma::{GearSetRating, MemberData, PreparedRating, SizeFactor};
 use cardan_gears::buckingham::{BuckinghamPair, SaturatedLoad, FULL_DEPTH_20};
-use cardan_gears::mesh_loss::Lubricant;
+use cardan_gears::mesh_loss::{Lubricant, MeshGeometry, PreparedMeshLoss, Reading};
 use cardan_gears::{
     pitting_geometry_factor, BendingJMemo, GearPair, GearSet, GeneratedMember, IForm, MeshStep,
     PairMember,
@@ -40,8 +40,13 @@ use crate::mesh::{
 };
 use crate::stage::{Block, SetupError};
 use crate::{failed, GearInput, SetupInput};
-use cardan_gears::iso6336::{IsoDynamic, IsoInputs, IsoMember, PreparedIso, STEEL_DENSITY};
-use cardan_gears::materials::material;
+use cardan_gears::iso6336::PreparedIso;
+
+mod iso;
+mod lanes;
+
+use iso::iso_rating;
+pub use iso::ISO_PINION_CYCLES;
 
 /// The bending geometry factors `[pinion, gear]` of a mesh whose `[gear] j` is not given,
 /// computed from the tooth form with the default generating rack (ISO 53, tip radius 0.25 m):
@@ -166,6 +171,10 @@ struct RatedMesh {
     /// The mesh loss: the case's gear-mesh model bound to this mesh (the loss budget's own), so
     /// that the rating's loss and the budget's mesh component are one figure.
     loss: Box<dyn Loss>,
+    /// The same model over a block's lanes where it is Anderson & Loewenthal's
+    /// ([`PreparedMeshLoss::total_power_lanes`] on the pair and oil `loss` is bound to: the
+    /// same bits); `None`: another model, or a pair it refuses (`loss` then says why).
+    loss_lanes: Option<PreparedMeshLoss>,
     /// The dynamic factor at the last step's pitch-line velocity (its bits; `None` before the
     /// first), kept while the speed does not change.
     kv: Option<(u64, DynamicFactor)>,
@@ -217,7 +226,15 @@ impl GearRatings {
             let (pair, face_width) =
                 mesh_pair(spec, ratio, pitch_radius, internal, pressure_angle)?;
             let set = gear_set(spec, pair, (face_width, internal), oil, memo)?;
-            let loss = mesh_loss(spec, mechanism, friction, k)?;
+            let (loss, reading) = mesh_loss(spec, mechanism, friction, k)?;
+            let loss_lanes = reading.and_then(|reading| {
+                let geometry = MeshGeometry::from_pair(&set.pair, set.face_width).ok()?;
+                Some(PreparedMeshLoss::new(
+                    &geometry,
+                    &set.lubricant,
+                    reading.options(),
+                ))
+            });
             let prepared = PreparedRating::new(&set.rating, set.face_width);
             let iso = if spec.standard.iso() {
                 Some(iso_rating(spec, &set)?)
@@ -241,6 +258,7 @@ impl GearRatings {
                     * pitch_radius,
                 axis,
                 loss,
+                loss_lanes,
                 kv: None,
                 rating: prepared,
                 iso,
@@ -292,9 +310,10 @@ impl GearRatings {
     /// loads, which [`ToothLoad::Thesis`] reads, `None` without one): per mesh, in rating
     /// order, the first `per_mesh` of its [values](MeshRating::values) into a column each of
     /// `out`, and its loss, W, into its column of `losses` (a column per mesh, in rating
-    /// order). The losses are taken over the block first, then the lanes in order, every mesh
-    /// at a lane before the next lane; `Err`: the first lane a mesh cannot be rated at (its
-    /// loss included), and why; the lanes from there on are not rated.
+    /// order). The losses are taken over the block first
+    /// ([`GearRatings::losses_over_lanes`]), then the ratings over the block's lanes, a mesh at
+    /// a time ([`GearRatings::rate_lanes`]); where a lane fails a check there, the lanes one
+    /// by one ([`GearRatings::evaluate_block_lane_by_lane`]), whose error this is.
     pub fn evaluate_block(
         &mut self,
         block: &Block,
@@ -302,15 +321,88 @@ impl GearRatings {
         per_mesh: usize,
         losses: &mut [(usize, Column)],
     ) -> Result<(), (usize, String)> {
+        if self.losses_over_lanes(block, losses) && self.rate_lanes(block, out, per_mesh, losses) {
+            return Ok(());
+        }
+        self.evaluate_block_lane_by_lane(block, out, per_mesh, losses)
+    }
+
+    /// Each mesh's loss (W) at the lanes of `block` into its column of `losses`, every lane at
+    /// once where the mesh's model is Anderson & Loewenthal's (the bits of the bound model's
+    /// lanes one by one): `false` where one fails a check (the lanes are then to be taken one
+    /// by one, which say where and why).
+    pub fn losses_over_lanes(&mut self, block: &Block, losses: &mut [(usize, Column)]) -> bool {
         let at = LossLanes {
             lanes: 0..block.len,
             ..LossLanes::one(block.states, block.total)
         };
-        let failed: Vec<Option<LaneFailure>> = (self.meshes.iter_mut().zip(losses.iter_mut()))
+        (self.meshes.iter_mut().zip(losses.iter_mut())).all(|(m, (_, loss))| {
+            match m.loss_lanes.is_some() {
+                true => m.loss_lanes(block, loss),
+                false => m.loss.power(&at, loss).is_ok(),
+            }
+        })
+    }
+
+    /// The ratings of [`GearRatings::evaluate_block`] from the meshes' `losses` (at every
+    /// lane), a mesh at a time over the block's lanes: `false` where a lane fails a check (the
+    /// lanes are then to be rated one by one, which say where and why; `out` holds nothing to
+    /// be taken).
+    pub fn rate_lanes(
+        &mut self,
+        block: &Block,
+        out: &mut [Column],
+        per_mesh: usize,
+        losses: &[(usize, Column)],
+    ) -> bool {
+        let meshes = self.meshes.iter_mut().zip(losses);
+        meshes
+            .zip(out.chunks_exact_mut(per_mesh))
+            .all(|((m, (_, loss)), out)| m.rate_lanes(block, loss, out))
+    }
+
+    /// [`GearRatings::evaluate_block`] with the lanes rated one by one, every mesh at a lane
+    /// before the next lane: the same values, bit for bit; `Err`: the first lane a mesh cannot
+    /// be rated at (its loss included), and why; the lanes from there on are not rated.
+    pub fn evaluate_block_lane_by_lane(
+        &mut self,
+        block: &Block,
+        out: &mut [Column],
+        per_mesh: usize,
+        losses: &mut [(usize, Column)],
+    ) -> Result<(), (usize, String)> {
+        let failed = self.losses(block, losses);
+        self.rate_lane_by_lane(block, out, per_mesh, losses, &failed)
+    }
+
+    /// Each mesh's loss at the lanes of `block` into its column of `losses` by its bound
+    /// model, and where it fails, if it does.
+    fn losses(
+        &mut self,
+        block: &Block,
+        losses: &mut [(usize, Column)],
+    ) -> Vec<Option<LaneFailure>> {
+        let at = LossLanes {
+            lanes: 0..block.len,
+            ..LossLanes::one(block.states, block.total)
+        };
+        (self.meshes.iter_mut().zip(losses.iter_mut()))
             .map(|(m, (_, loss))| m.loss.power(&at, loss).err())
-            .collect();
+            .collect()
+    }
+
+    /// The ratings of [`GearRatings::evaluate_block_lane_by_lane`] from the meshes' `losses`,
+    /// each failing where `failed` says.
+    fn rate_lane_by_lane(
+        &mut self,
+        block: &Block,
+        out: &mut [Column],
+        per_mesh: usize,
+        losses: &[(usize, Column)],
+        failed: &[Option<LaneFailure>],
+    ) -> Result<(), (usize, String)> {
         for i in 0..block.len {
-            let meshes = self.meshes.iter_mut().zip(losses.iter()).zip(&failed);
+            let meshes = self.meshes.iter_mut().zip(losses.iter()).zip(failed);
             for (((m, (_, loss)), failed), out) in meshes.zip(out.chunks_exact_mut(per_mesh)) {
                 let loss = match failed {
                     Some(f) if f.lane == i => Err(f.why.clone()),
@@ -469,116 +561,16 @@ fn tooth_load_axis(tooth_load: ToothLoad, force: MeshForce, name: &str) -> Resul
     }
 }
 
-/// The load cycles of the pinion the ISO life factors `Z_NT`, `Y_NT` are taken at (the gear's:
-/// divided by the ratio): 1e7, the life the AGMA rating of a run is taken at (its `Y_N` = `Z_N`
-/// = 1, AGMA 2001-D04 Figs. 18 and 19 are drawn through 1 at 1e7 cycles), and the gear file's
-/// default `pinion_cycles`.
-pub const ISO_PINION_CYCLES: f64 = 1e7;
-
-/// The ISO 6336 method B rating of `set`'s pair (ISO 6336-1/-2/-3:2019,
-/// [`cardan_gears::iso6336`]) under `spec`, prepared once: `σ_Hlim`, `σ_Flim` and the life
-/// curves of the gear file's material table (`cardan_gears::materials`: "through_hardened" is
-/// its "steel-through-hardened" at each member's hardness, "carburized" its
-/// "steel-case-carburized") at `spec.iso_quality`; `Y_F`, `Y_S` from the tooth form by
-/// ISO 6336-3 method B with the default generating rack (as the computed J,
-/// [`cardan_gears::iso6336_method_b`]); `K_Hβ` the AGMA rating's `Km` for the face width (as the
-/// gear file's default: ISO 6336-1 methods B and C need shaft and bearing data); `Z_E` the
-/// AGMA rating's elastic coefficient (the same expression); `K_v` and `K_Hα` by method B
-/// from `spec.accuracy_grade` (steel blanks, 7830 kg/m³); `Z_L Z_v Z_R` = 1, `Y_B` = `Y_δrelT`
-/// = `Y_RrelT` = 1; [`ISO_PINION_CYCLES`]. Each of `K_v`, `K_Hα`, `K_Hβ`, `σ_Hlim`, `σ_Flim`
-/// given in `spec.iso_overrides` replaces its computed value (ISO 6336-1:2019 §4.1.6: a
-/// factor established by method A or from experience takes precedence); with `K_v` and `K_Hα`
-/// both given no accuracy grade is needed.
-fn iso_rating(spec: &GearSpec, set: &GearSet) -> Result<PreparedIso, SetupError> {
-    let pair = &set.pair;
-    let given = spec.iso_overrides;
-    let grade = spec.accuracy_grade;
-    if grade.is_none() && (given.dynamic_factor.is_none() || given.transverse_load_factor.is_none())
-    {
-        return Err(failed(
-            SetupInput::Gear(GearInput::AccuracyGrade),
-            &"an ISO 6336 rating needs the ISO 1328-1 accuracy grade of both gears (1-12) for \
-              K_v and K_Hα by ISO 6336-1 method B: give [gear] accuracy_grade",
-        ));
-    }
-    let table = match spec.material {
-        GearMaterial::ThroughHardened => "steel-through-hardened",
-        GearMaterial::Carburized => "steel-case-carburized",
-    };
-    let table = material(table).expect("the materials table has both steels");
-    let km = match given.face_load_factor {
-        Some(k) => k,
-        None => {
-            (set.rating.load_distribution)
-                .factor(set.face_width, pair.pinion.working)
-                .map_err(|e| failed(SetupInput::Gear(GearInput::FaceWidth), &e))?
-                .km
-        }
-    };
-    let cycles = [ISO_PINION_CYCLES, ISO_PINION_CYCLES / pair.ratio];
-    let member = |k: usize| -> Result<IsoMember, SetupError> {
-        let (which, name) = [(PairMember::Pinion, "pinion"), (PairMember::Gear, "gear")][k];
-        let hardness = (spec.material == GearMaterial::ThroughHardened).then_some(spec.hardness[k]);
-        let limits = table.iso_limits(hardness, spec.iso_quality).map_err(|e| {
-            failed(
-                SetupInput::Gear(GearInput::Hardness),
-                &format!(
-                    "{e} (the {name}'s {} HB): give a hardness within it, or rate by AGMA alone \
-                     (standard = \"agma2001\")",
-                    spec.hardness[k]
-                ),
-            )
-        })?;
-        let root = cardan_gears::iso6336_method_b(pair, GeneratedMember::new(which)).map_err(|e| {
-            failed(
-                SetupInput::Gear(GearInput::Pair),
-                &format!("the {name}'s ISO 6336-3 Y_F and Y_S cannot be computed from the tooth form ({e})"),
-            )
-        })?;
-        Ok(IsoMember {
-            sigma_hlim: given.sigma_hlim.map_or(limits.contact, |s| s[k]),
-            sigma_flim: given.sigma_flim.map_or(limits.bending, |s| s[k]),
-            life_curve: table.life_curve(),
-            form_factor: root.form_factor,
-            stress_correction_factor: root.stress_correction,
-            rim_factor: 1.0,
-            notch_sensitivity: 1.0,
-            surface_factor: 1.0,
-            cycles: cycles[k],
-        })
-    };
-    let inputs = IsoInputs {
-        // Not read by the preparation: each step's load and speed are.
-        pinion_torque: 1.0,
-        pinion_speed: 1.0,
-        face_width: set.face_width,
-        application_factor: spec.application_factor,
-        dynamic: match given.dynamic_factor {
-            Some(k) => IsoDynamic::Given(k),
-            None => IsoDynamic::MethodB {
-                density: STEEL_DENSITY,
-            },
-        },
-        accuracy_grade: grade,
-        face_load_factor: km,
-        transverse_load_factor: given.transverse_load_factor,
-        elasticity_factor: set.rating.elastic_coefficient,
-        lubrication: None,
-        members: [member(0)?, member(1)?],
-    };
-    PreparedIso::new(pair, &inputs)
-        .map_err(|e| failed(SetupInput::Gear(GearInput::Pair), &format!("ISO 6336: {e}")))
-}
-
 /// The mesh loss of gear-mesh joint `joint` of `mechanism` on the pair of `spec`: the model of
 /// `friction` (its parameters and oil), or, without one or with its mesh loss off, Anderson &
-/// Loewenthal's in the corrected reading (with Karhula's oil without `friction`).
+/// Loewenthal's in the corrected reading (with Karhula's oil without `friction`); and its
+/// reading of Anderson & Loewenthal's, if it is one.
 fn mesh_loss(
     spec: &GearSpec,
     mechanism: &dyn Mechanism,
     friction: Option<&Friction>,
     joint: usize,
-) -> Result<Box<dyn Loss>, SetupError> {
+) -> Result<(Box<dyn Loss>, Option<Reading>), SetupError> {
     let karhula = Friction::karhula();
     let f = friction.unwrap_or(&karhula);
     let model = friction
@@ -595,12 +587,13 @@ fn mesh_loss(
         joint,
         bearings: None,
     };
-    model.bind_at(&site).unwrap_or_else(|| {
+    let loss = model.bind_at(&site).unwrap_or_else(|| {
         Err(failed(
             SetupInput::Model(Attachment::GearMesh),
             &"is not a gear-mesh loss",
         ))
-    })
+    })?;
+    Ok((loss, model.mesh_reading()))
 }
 
 impl RatedMesh {

@@ -7,10 +7,12 @@ mod common;
 
 use cardan_dynamics::mesh::GearStandard;
 use cardan_dynamics::{
-    run, Gas, GasAt, GearRatings, GearSpec, GearStage, Inertial, LoadFamily, MeshRating, Solver,
-    Steps, ToothLoad,
+    run, Block, Gas, GasAt, GearRatings, GearSpec, GearStage, Inertial, LaneError, LoadFamily,
+    MeshRating, MetricDef, PassedOn, Solver, Stage, StageColumn, StageTotals, Steps, ToothLoad,
 };
-use cardan_mechanism::{CrankMotion, CrankState, Grid, Loads, Material, MotionSource, C};
+use cardan_mechanism::{
+    Column, CrankMotion, CrankState, Grid, Loads, Material, MotionSource, C, ZERO,
+};
 use cardan_testing::OneByOne;
 use common::{every_machine, pump_gas, thesis};
 use std::f64::consts::PI;
@@ -291,4 +293,148 @@ fn a_block_is_rated_lane_by_lane_as_each_step_alone() {
         "{rated:?}"
     );
     assert!(has("hypotrochoid", ToothLoad::Tangential), "{rated:?}");
+}
+
+/// The gear stage, each block rated both ways: over its lanes, a mesh at a time
+/// (`GearRatings::losses_over_lanes` and `rate_lanes`, which `evaluate_block` takes: the mesh
+/// loss's logarithm and power every lane at once) and lane by lane
+/// (`GearRatings::evaluate_block_lane_by_lane`, the steps' own arithmetic with its checks); the
+/// two must give the same bits, and the lanes' way must take every block (none out of range).
+#[derive(Debug, Clone)]
+struct BothWays {
+    stage: GearStage,
+    lanes: GearRatings,
+    one_by_one: GearRatings,
+    per_mesh: usize,
+}
+
+impl Stage for BothWays {
+    fn width(&self) -> usize {
+        self.stage.width()
+    }
+
+    fn evaluate(
+        &mut self,
+        block: &Block,
+        passed: &mut PassedOn,
+        out: &mut [Column],
+    ) -> Result<(), LaneError> {
+        let per_mesh = self.per_mesh;
+        let mut losses: Vec<_> = self.lanes.joints().map(|j| (j, ZERO)).collect();
+        (self.one_by_one)
+            .evaluate_block_lane_by_lane(block, out, per_mesh, &mut losses)
+            .unwrap();
+        let mut lane_losses: Vec<_> = self.lanes.joints().map(|j| (j, ZERO)).collect();
+        assert!(self.lanes.losses_over_lanes(block, &mut lane_losses));
+        let mut lanes = vec![ZERO; out.len()];
+        assert!(self
+            .lanes
+            .rate_lanes(block, &mut lanes, per_mesh, &lane_losses));
+        let same = |a: &[Column], b: &[Column], what: &str| {
+            for (k, (a, b)) in a.iter().zip(b).enumerate() {
+                for i in 0..block.len {
+                    assert_eq!(a[i].to_bits(), b[i].to_bits(), "{what} {k} lane {i}");
+                }
+            }
+        };
+        let columns = |l: &[(usize, Column)]| l.iter().map(|c| c.1).collect::<Vec<_>>();
+        same(&columns(&losses), &columns(&lane_losses), "loss");
+        same(out, &lanes, "value");
+        passed.mesh_losses.extend(losses);
+        Ok(())
+    }
+
+    fn columns(&self) -> Vec<StageColumn> {
+        self.stage.columns()
+    }
+
+    fn metrics(&self) -> &'static [MetricDef] {
+        self.stage.metrics()
+    }
+
+    fn totals(&self) -> Box<dyn StageTotals> {
+        self.stage.totals()
+    }
+
+    fn fork(&self) -> Box<dyn Stage> {
+        Box::new(self.clone())
+    }
+}
+
+/// A block rated over its lanes has, bit for bit, the values of its lanes rated one by one
+/// ([`BothWays`]), on every mechanism with a mesh, in every tooth-load reading and standard,
+/// at an accelerating crank (every lane a different state, a speed each) and a constant one
+/// (the kept dynamic factor), full blocks and a short one.
+#[test]
+fn a_block_rated_over_its_lanes_has_the_bits_of_its_lanes_one_by_one() {
+    let specs = [
+        GearSpec::default(),
+        GearSpec {
+            standard: GearStandard::Both,
+            accuracy_grade: Some(7.0),
+            tooth_load: ToothLoad::RingForce,
+            twin: true,
+            ..GearSpec::default()
+        },
+        GearSpec {
+            standard: GearStandard::Iso6336,
+            accuracy_grade: Some(6.0),
+            tooth_load: ToothLoad::Thesis,
+            ..GearSpec::default()
+        },
+        GearSpec {
+            tooth_load: ToothLoad::Thesis,
+            ..GearSpec::default()
+        },
+    ];
+    let inertial = Inertial::new(Solver::ClosedForm);
+    let gas = Gas(Solver::ClosedForm);
+    let mut rated = 0;
+    for (name, m) in every_machine() {
+        let cylinder = m.has_cylinder();
+        let families: Vec<&dyn LoadFamily> = match cylinder {
+            true => vec![&inertial, &gas],
+            false => vec![&inertial],
+        };
+        let gas_at: Option<GasAt> = cylinder.then_some(&pump_gas);
+        for spec in &specs {
+            let Ok(ratings) = GearRatings::new(spec, m.as_ref(), None) else {
+                continue;
+            };
+            if ratings.names().is_empty() {
+                continue;
+            }
+            let per_mesh = match ratings.iso() {
+                true => MeshRating::WIDTH,
+                false => MeshRating::AGMA_WIDTH,
+            };
+            for acceleration in [500.0, 0.0] {
+                let motion = CrankMotion {
+                    start_angle: 1.0,
+                    initial_speed: 100.0,
+                    angular_acceleration: acceleration,
+                };
+                let mut stage = BothWays {
+                    stage: GearStage::new(ratings.clone()),
+                    lanes: ratings.clone(),
+                    one_by_one: ratings.clone(),
+                    per_mesh,
+                };
+                let mut grid = Grid::new(motion, 1.0, 20.0, 2 * 64 + 11);
+                let mut kept = Steps::default();
+                run(
+                    m.as_ref(),
+                    &mut grid,
+                    &families,
+                    gas_at,
+                    &mut [&mut stage],
+                    &mut [&mut kept],
+                )
+                .unwrap();
+                assert_eq!(kept.0.len(), 2 * 64 + 12, "{name}");
+                rated += 1;
+            }
+        }
+    }
+    assert!(rated >= 8, "{rated} runs rated");
 }

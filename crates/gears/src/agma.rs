@@ -142,11 +142,51 @@ impl PreparedRating {
         require(kv.is_finite() && kv >= 1.0, "kv", "must be >= 1", kv)?;
         Ok(self.rating.stresses(wt, kv, self.face_width, km, ks))
     }
+
+    /// The rating with the set's data checked and `Km`, `Ks` taken, for a caller that checks a
+    /// block of loads and dynamic factors at once ([`CheckedRating::rate`]); `None` where the
+    /// data fail a check ([`PreparedRating::rate`] then says which).
+    pub fn checked(&self) -> Option<CheckedRating> {
+        self.factors.map(|(km, ks)| CheckedRating {
+            rating: self.rating,
+            face_width: self.face_width,
+            km,
+            ks,
+        })
+    }
+}
+
+/// A [`PreparedRating`] whose data passed their checks, `Km` and `Ks` known.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CheckedRating {
+    rating: GearSetRating,
+    face_width: f64,
+    km: f64,
+    ks: [f64; 2],
+}
+
+impl CheckedRating {
+    /// Whether [`PreparedRating::rate`] takes the tangential load `wt` \[N\] and the dynamic
+    /// factor `kv` \[-\]: its checks of them, as one test.
+    #[inline(always)]
+    pub fn takes(wt: f64, kv: f64) -> bool {
+        wt.is_finite() && wt >= 0.0 && kv.is_finite() && kv >= 1.0
+    }
+
+    /// [`PreparedRating::rate`] of a `wt` and `kv` it takes ([`CheckedRating::takes`]): the
+    /// same arithmetic, the same bits. Inlined, so that a block kernel's loop over its lanes
+    /// compiles it for the kernel's instruction set.
+    #[inline(always)]
+    pub fn rate(&self, wt: f64, kv: f64) -> Rating {
+        self.rating
+            .stresses(wt, kv, self.face_width, self.km, self.ks)
+    }
 }
 
 /// Bending stress `σ = Wt Ko Kv Ks Km KB / (b m J)` \[Pa\] (AGMA 2001-D04 eq. 15, metric form;
 /// Shigley eq. 14-15). `wt` \[N\], `b` and `m` \[m\], factors \[-\].
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 pub fn bending_stress(
     wt: f64,
     ko: f64,
@@ -164,6 +204,7 @@ pub fn bending_stress(
 /// Contact stress `σc = Cp √(Wt Ko Kv Ks Km Cf / (d b I))` \[Pa\] (AGMA 2001-D04 eq. 1, metric
 /// form; Shigley eq. 14-16). `cp` \[√Pa\], `d` pinion operating pitch diameter \[m\].
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 pub fn contact_stress(
     wt: f64,
     ko: f64,
@@ -232,6 +273,7 @@ impl GearSetRating {
 
     /// The stresses and safety factors of [`GearSetRating::rate`] once its inputs are checked
     /// and its `Km` and `Ks` known.
+    #[inline(always)]
     fn stresses(&self, wt: f64, kv: f64, face_width: f64, km: f64, ks: [f64; 2]) -> Rating {
         let members = [&self.pinion, &self.gear];
         let mut out = Rating {

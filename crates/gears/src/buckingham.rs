@@ -191,8 +191,27 @@ impl SaturatedLoad {
             deformation: self.deformation * ft / self.face_width * self.compliance,
             f2,
             fa: f2,
-            dynamic_load: if ft == 0.0 { 0.0 } else { ft + f2 },
+            dynamic_load: self.dynamic_load(ft),
         })
+    }
+
+    /// Whether [`SaturatedLoad::at`] takes the tangential load `ft` \[N\] (finite, ≥ 0).
+    #[inline(always)]
+    pub fn takes(ft: f64) -> bool {
+        ft.is_finite() && ft >= 0.0
+    }
+
+    /// The dynamic load of [`SaturatedLoad::at`] at a load it takes ([`SaturatedLoad::takes`]),
+    /// `Ft + f2` (A8.1.14 with f1 → ∞), 0 at no load \[N\]: the same bits. Inlined, for a
+    /// block kernel's loop over its lanes.
+    #[inline(always)]
+    pub fn dynamic_load(&self, ft: f64) -> f64 {
+        let f2 = self.f2_unloaded + ft;
+        if ft == 0.0 {
+            0.0
+        } else {
+            ft + f2
+        }
     }
 }
 

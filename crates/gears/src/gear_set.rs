@@ -86,6 +86,17 @@ impl GearSet {
         dynamic_factor(self.quality, step.pitch_line_velocity.abs())
     }
 
+    /// Whether [`GearSet::check_step`] passes a step of tangential load `tangential_load`
+    /// \[N\] at the pitch-line velocity `pitch_line_velocity` \[m/s\]: its conditions as one
+    /// test, for a caller that checks a block of steps at once.
+    #[inline(always)]
+    pub fn takes_step(&self, tangential_load: f64, pitch_line_velocity: f64) -> bool {
+        let v = pitch_line_velocity.abs();
+        (self.face_width.is_finite() && self.face_width > 0.0)
+            && (v.is_finite() && (0.0..=crate::MAX_PITCH_LINE_VELOCITY).contains(&v))
+            && tangential_load.is_finite()
+    }
+
     /// The checks of [`GearSet::evaluate`] before the dynamic factor: the face width and the
     /// step's load.
     pub fn check_step(&self, step: &MeshStep) -> Result<(), GearError> {

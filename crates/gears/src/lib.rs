@@ -62,7 +62,9 @@ pub use agma::factors::{
     Quality,
 };
 pub use agma::geometry_factors::{agma908_table, pitting_geometry_factor, IForm, ShiftCase};
-pub use agma::{FaceWidths, GearSetRating, MemberData, PreparedRating, Rating, SizeFactor};
+pub use agma::{
+    CheckedRating, FaceWidths, GearSetRating, MemberData, PreparedRating, Rating, SizeFactor,
+};
 pub use agma908::{bending_geometry_factor, BendingJ, JMethod};
 pub use bending_memo::BendingJMemo;
 pub use buckingham::{BuckinghamPair, DynamicLoad, SaturatedLoad, ToothForm, FULL_DEPTH_20};

@@ -33,7 +33,7 @@
 //! Not verified against TP-1622 itself (its Table III could not be read): the windage
 //! correlation is used as Karhula prints it (`1 + 2.3 b/d1`, `(d1/2)^4.6`, `d1/2` in m).
 
-use cardan_numeric::KeptPower;
+use cardan_numeric::{log10_lane, log10_lanes, powf_lane, powf_lanes, KeptPower};
 use std::f64::consts::PI;
 
 use crate::error::{non_negative, positive, require, GearError};
@@ -283,7 +283,68 @@ impl PreparedMeshLoss {
             None => mesh_loss_with(&self.geometry, &self.lubricant, speeds, ft, self.options),
         }
     }
+
+    /// The total loss [`PreparedMeshLoss::loss`] gives (W) at each lane `i` of a block, the
+    /// pinion's absolute speed `pinion[i]` and the carrier's `carrier[i]` (rad/s) under the
+    /// tangential load `ft[i]` (N), into `out[i]`, for the lanes of `out` (the others at least
+    /// as long): the logarithms and powers of every lane at once
+    /// ([`cardan_numeric::log10_lanes`], [`cardan_numeric::powf_lanes`]), the same bits as
+    /// the lanes one by one. `false` where a lane or the mesh fails a check of
+    /// [`PreparedMeshLoss::loss`] (which then says which: `out` holds nothing to be taken).
+    /// Inlined, so that a block kernel (`cardan_mechanism::vectorised!`) compiles it for its
+    /// instruction set.
+    #[inline(always)]
+    pub fn total_power_lanes(
+        &mut self,
+        pinion: &[f64],
+        carrier: &[f64],
+        ft: &[f64],
+        out: &mut [f64],
+    ) -> bool {
+        let Some(c) = &self.constants else {
+            return false;
+        };
+        let kept = &mut self.kept;
+        for (k, out) in out.chunks_mut(CHUNK).enumerate() {
+            let n = out.len();
+            let lanes = k * CHUNK..k * CHUNK + n;
+            let (pinion, carrier, ft) =
+                (&pinion[lanes.clone()], &carrier[lanes.clone()], &ft[lanes]);
+            let mut t = [SpeedTerms::default(); CHUNK];
+            let (mut n_abs, mut f_n) = ([0.0; CHUNK], [0.0; CHUNK]);
+            let mut checked = true;
+            for i in 0..n {
+                // check_step's conditions, without its error.
+                checked &= ft[i].is_finite() && pinion[i].is_finite() && carrier[i].is_finite();
+                (n_abs[i], t[i].v_s, t[i].v_r) = c.velocities(pinion[i], carrier[i]);
+                f_n[i] = c.normal_load(ft[i]);
+            }
+            if !checked {
+                return false;
+            }
+            // The speeds' powers lane by lane, kept while their arguments' bits stay.
+            for (t, &n_abs) in t[..n].iter_mut().zip(&n_abs) {
+                t.film = c.film_power(t.v_r, kept);
+                t.windage = kept.windage.pow(n_abs, 2.8);
+            }
+            let (mut argument, mut base) = ([0.0; CHUNK], [0.0; CHUNK]);
+            for i in 0..n {
+                argument[i] = c.friction_argument(&t[i], f_n[i]);
+                base[i] = load_base(f_n[i]);
+            }
+            let (mut log, mut power) = ([0.0; CHUNK], [0.0; CHUNK]);
+            log10_lanes(&argument[..n], &mut log[..n]);
+            powf_lanes(&base[..n], -0.067, &mut power[..n]);
+            for (i, o) in out.iter_mut().enumerate() {
+                *o = c.finish(&t[i], f_n[i], log[i], power[i]).total_power;
+            }
+        }
+        true
+    }
 }
+
+/// The lanes [`PreparedMeshLoss::total_power_lanes`] takes at once (a block's, or fewer).
+const CHUNK: usize = 64;
 
 /// The powers of the speed-dependent terms at the last step's arguments: `n_abs^2.8` and
 /// `(v_r η)^0.67`, taken again only when their argument's bits change.
@@ -397,63 +458,100 @@ impl MeshConstants {
         })
     }
 
-    /// The loss at `speeds` under `ft` (checked finite), A9.1.41-55.
+    /// The loss at `speeds` under `ft` (checked finite), A9.1.41-55: the terms of the speeds,
+    /// the load's logarithm and power by the lanes' functions (within one ulp of libm's
+    /// `log10` and `powf`, `cardan_numeric`), the rest ([`MeshConstants::finish`]), as a block's
+    /// lanes take them ([`PreparedMeshLoss::total_power_lanes`]): the same bits.
     fn loss(&self, speeds: &MeshSpeeds, ft: f64, kept: &mut KeptSpeedPowers) -> MeshLoss {
-        let Self {
-            d1,
-            l,
-            cr,
-            slide_k,
-            roll_k,
-            eta,
-            s,
-            c,
-            b,
-            r_eq,
-            ..
-        } = *self;
+        let t = self.speed_terms(speeds, kept);
+        let f_n = self.normal_load(ft);
+        let log = log10_lane(self.friction_argument(&t, f_n));
+        let power = powf_lane(load_base(f_n), -0.067);
+        self.finish(&t, f_n, log, power)
+    }
+
+    /// The terms of the speeds alone (A9.1.41-43; the powers of A9.1.51 and A9.1.54 from
+    /// `kept`).
+    #[inline(always)]
+    fn speed_terms(&self, speeds: &MeshSpeeds, kept: &mut KeptSpeedPowers) -> SpeedTerms {
+        let (n_abs, v_s, v_r) = self.velocities(speeds.pinion_absolute, speeds.carrier);
+        SpeedTerms {
+            v_s,
+            v_r,
+            film: self.film_power(v_r, kept),
+            windage: kept.windage.pow(n_abs, 2.8),
+        }
+    }
+
+    /// The pinion's absolute speed in rpm, and the sliding and rolling velocities `v_s`, `v_r`
+    /// \[m/s\] (A9.1.41-43) at the pinion's and the carrier's speeds \[rad/s\].
+    #[inline(always)]
+    fn velocities(&self, pinion: f64, carrier: f64) -> (f64, f64, f64) {
         let to_rpm = 60.0 / (2.0 * PI);
-        let n_abs = speeds.pinion_absolute.abs() * to_rpm;
+        let n_abs = pinion.abs() * to_rpm;
         let n_mesh = if self.mesh_kinematics {
-            (speeds.pinion_absolute - speeds.carrier).abs() * to_rpm
+            (pinion - carrier).abs() * to_rpm
         } else {
             // A9.1.41: absolute wheel speed.
             n_abs
         };
         // A9.1.42, A9.1.43 (0.0262 ≈ 2π/60/4, 0.1047 ≈ 2π/60 as printed).
-        let v_s = 0.0262 * n_mesh * slide_k * l;
-        let v_r = (0.1047 * n_mesh * (d1 * s - l / 4.0 * roll_k)).max(0.0);
-        // A9.1.45
-        let f_n = ft.abs() / (2.0 * c);
-        // A9.1.48
-        let mut clamped = false;
-        let mu = if f_n > 0.0 && v_s > 0.0 && v_r > 0.0 {
-            let m = 0.0127 * (29.66 * f_n / (b * eta * v_s * v_r * v_r)).log10();
-            if self.clamp_friction && m < 0.0 {
-                clamped = true;
-                0.0
-            } else {
-                m
-            }
+        let v_s = 0.0262 * n_mesh * self.slide_k * self.l;
+        let v_r = (0.1047 * n_mesh * (self.d1 * self.s - self.l / 4.0 * self.roll_k)).max(0.0);
+        (n_abs, v_s, v_r)
+    }
+
+    /// A9.1.51's `(v_r η)^0.67`, kept in `kept`.
+    #[inline(always)]
+    fn film_power(&self, v_r: f64, kept: &mut KeptSpeedPowers) -> f64 {
+        kept.film.pow(v_r * self.eta, 0.67)
+    }
+
+    /// The normal load per tooth pair `F_n = |Ft|/(2 cos α)` \[N\] (A9.1.45).
+    #[inline(always)]
+    fn normal_load(&self, ft: f64) -> f64 {
+        ft.abs() / (2.0 * self.c)
+    }
+
+    /// The argument of Benedict & Kelley's logarithm (A9.1.48) where the friction coefficient
+    /// is taken from it (a load, sliding and rolling), 1 elsewhere (its logarithm unused).
+    #[inline(always)]
+    fn friction_argument(&self, t: &SpeedTerms, f_n: f64) -> f64 {
+        if f_n > 0.0 && t.v_s > 0.0 && t.v_r > 0.0 {
+            29.66 * f_n / (self.b * self.eta * t.v_s * t.v_r * t.v_r)
         } else {
-            0.0
-        };
+            1.0
+        }
+    }
+
+    /// The loss from the speeds' terms `t`, the normal load `f_n`, the logarithm `log` of its
+    /// [friction argument](MeshConstants::friction_argument) and `power` = f_n^−0.067 (of
+    /// [`load_base`]), A9.1.48-55.
+    #[inline(always)]
+    fn finish(&self, t: &SpeedTerms, f_n: f64, log: f64, power: f64) -> MeshLoss {
+        let SpeedTerms { v_s, v_r, .. } = *t;
+        let (b, r_eq) = (self.b, self.r_eq);
+        // A9.1.48
+        let taken = f_n > 0.0 && v_s > 0.0 && v_r > 0.0;
+        let m = 0.0127 * log;
+        let clamped = taken && self.clamp_friction && m < 0.0;
+        let mu = if taken && !clamped { m } else { 0.0 };
         // A9.1.49 [kW] -> W
         let p_s = 2e-3 * v_s * mu * f_n * 1e3;
         // A9.1.51: undefined at zero load; reported as zero film and zero rolling loss.
         let h = if f_n > 0.0 && v_r > 0.0 && r_eq > 0.0 {
-            2.051e-7 * kept.film.pow(v_r * eta, 0.67) * f_n.powf(-0.067) * self.r_eq_power
+            2.051e-7 * t.film * power * self.r_eq_power
         } else {
             0.0
         };
         // A9.1.53 [kW] -> W
-        let p_r = 9e4 * v_r * h * b * cr * 1e3;
+        let p_r = 9e4 * v_r * h * b * self.cr * 1e3;
         // A9.1.54 [kW] -> W; pinion absolute spin speed in both readings.
         let [w0, w1, w2] = self.windage;
-        let p_w = w0 * kept.windage.pow(n_abs, 2.8) * w1 * w2 * 1e3;
+        let p_w = w0 * t.windage * w1 * w2 * 1e3;
         MeshLoss {
-            path_of_contact: l,
-            contact_ratio: cr,
+            path_of_contact: self.l,
+            contact_ratio: self.cr,
             sliding_velocity: v_s,
             rolling_velocity: v_r,
             normal_load: f_n,
@@ -467,4 +565,26 @@ impl MeshConstants {
             friction_clamped: clamped,
         }
     }
+}
+
+/// The base of the load's power f_n^−0.067 (A9.1.51): the normal load where positive, else 1
+/// (the film is then zero, its power unused).
+#[inline(always)]
+fn load_base(f_n: f64) -> f64 {
+    if f_n > 0.0 {
+        f_n
+    } else {
+        1.0
+    }
+}
+
+/// A step's terms of the speeds alone ([`MeshConstants::speed_terms`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct SpeedTerms {
+    /// Sliding and rolling velocities `v_s`, `v_r` \[m/s\] (A9.1.42-43).
+    v_s: f64,
+    v_r: f64,
+    /// `(v_r η)^0.67` (A9.1.51), `n_abs^2.8` (A9.1.54).
+    film: f64,
+    windage: f64,
 }

@@ -232,3 +232,68 @@ fn a_prepared_mesh_loss_is_the_mesh_loss_bit_for_bit() {
         );
     }
 }
+
+/// A block's lanes (`PreparedMeshLoss::total_power_lanes`: the logarithms and powers of every
+/// lane at once) have the single step's bits (`PreparedMeshLoss::loss`), in both readings,
+/// over 2 000 blocks of 64 lanes and a short one: loads log-uniform over [10⁻², 10⁵] N of
+/// either sign with some zero, at a speed per block (kept powers) or per lane, up to
+/// 10 000 rpm with some at rest. A lane that fails a check (a load not finite) fails the
+/// block.
+#[test]
+fn a_block_of_lanes_has_the_bits_of_its_steps() {
+    let (g, lub) = setup();
+    let mut state = 0x6EA2_u64;
+    let mut unit = move || {
+        // SplitMix64 (Steele, Lea & Flood 2014).
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut compared = 0;
+    for reading in [Reading::Karhula, Reading::Corrected] {
+        let mut lanes = PreparedMeshLoss::new(&g, &lub, reading.options());
+        let mut steps = PreparedMeshLoss::new(&g, &lub, reading.options());
+        for block in 0..1_001 {
+            let n = if block == 1_000 { 37 } else { 64 };
+            let block_rpm = 10_000.0 * unit();
+            let (mut pinion, mut carrier, mut ft) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+            for i in 0..n {
+                let rpm = match block % 3 {
+                    0 => block_rpm,
+                    1 => 10_000.0 * unit(),
+                    _ => 0.0,
+                };
+                let s = cardan_speeds(rpm);
+                (pinion[i], carrier[i]) = (s.pinion_absolute, s.carrier);
+                let sign = if unit() < 0.5 { -1.0 } else { 1.0 };
+                ft[i] = match unit() < 0.02 {
+                    true => 0.0,
+                    false => sign * (1e-2f64.ln() + (1e5f64.ln() - 1e-2f64.ln()) * unit()).exp(),
+                };
+            }
+            let mut out = vec![0.0; n];
+            assert!(lanes.total_power_lanes(&pinion, &carrier, &ft, &mut out));
+            for i in 0..n {
+                let speeds = MeshSpeeds {
+                    pinion_absolute: pinion[i],
+                    carrier: carrier[i],
+                };
+                let one = steps.loss(&speeds, ft[i]).unwrap().total_power;
+                assert_eq!(
+                    out[i].to_bits(),
+                    one.to_bits(),
+                    "{reading:?} block {block} lane {i}: {} against {one}",
+                    out[i]
+                );
+                compared += 1;
+            }
+            if block == 7 {
+                ft[3] = f64::INFINITY;
+                assert!(!lanes.total_power_lanes(&pinion, &carrier, &ft, &mut out));
+            }
+        }
+    }
+    assert_eq!(compared, 2 * (1_000 * 64 + 37));
+}

@@ -28,6 +28,9 @@ pub enum Bind {
     /// At a piston's cylinder or a joint: the bound loss from its [`BindInput`] (rings, skirt,
     /// bearings, gear mesh).
     Loss(fn(&BindInput) -> BoundLoss),
+    /// At a gear mesh: Anderson & Loewenthal's loss in a reading ([`bind_mesh`]), which a gear
+    /// rating of the mesh also takes over a block's lanes (the same model, the same bits).
+    Mesh(Reading),
     /// An engine's valve train: its cam/follower contact from the parameters, which the engine's
     /// valve train ([`crate::ValveTrain`], with its springs and geometry) binds to the crank
     /// and the fmep cross-check reads (its PNH follower).
@@ -58,7 +61,16 @@ impl LossModel {
         };
         match self.bind {
             Bind::Loss(bind) => Some(bind(&site)),
+            Bind::Mesh(reading) => Some(bind_mesh(&site, reading)),
             Bind::Follower(_) => None,
+        }
+    }
+
+    /// The reading of Anderson & Loewenthal's mesh loss this model is (`None`: another model).
+    pub fn mesh_reading(&self) -> Option<Reading> {
+        match self.bind {
+            Bind::Mesh(reading) => Some(reading),
+            _ => None,
         }
     }
 }
@@ -157,14 +169,14 @@ pub const LOSS_MODELS: &[LossModel] = &[
         attachment: Attachment::GearMesh,
         summary: "Anderson & Loewenthal's sliding, rolling and windage loss as printed (Karhula A9.1.36-55)",
         parameters: &[],
-        bind: Bind::Loss(|s| bind_mesh(s, Reading::Karhula)),
+        bind: Bind::Mesh(Reading::Karhula),
     },
     LossModel {
         name: "corrected",
         attachment: Attachment::GearMesh,
         summary: "the same in centipoise, with carrier-relative internal-mesh kinematics and the pair's real geometry",
         parameters: &[],
-        bind: Bind::Loss(|s| bind_mesh(s, Reading::Corrected)),
+        bind: Bind::Mesh(Reading::Corrected),
     },
     LossModel {
         name: "flat",

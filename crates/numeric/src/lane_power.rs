@@ -154,7 +154,7 @@ impl Exponent {
 /// ln x as a double-double (head, tail) for a positive normal x (garbage otherwise, caught by
 /// the caller's range test).
 #[inline(always)]
-fn ln_double(x: f64) -> (f64, f64) {
+pub(crate) fn ln_double(x: f64) -> (f64, f64) {
     let ix = x.to_bits();
     // The exponent field, one more where the significand is at or above √2's.
     let field = ix.wrapping_sub(SQRT2_SIGNIFICAND) >> 52;

@@ -1,15 +1,18 @@
 //! Numeric helpers shared by the physics crates that depend on nothing of each other (the
 //! friction models of `cardan-friction`, the gear physics of `cardan-gears`). Its own crate, at
 //! the bottom, depending on nothing: neither physics crate is the other's natural home. Also
-//! the block kernels' power and hypot over a block's lanes ([`lane_power`], [`lane_hypot`]),
+//! the block kernels' power, common logarithm and hypot over a block's lanes ([`lane_power`],
+//! [`lane_log10`], [`lane_hypot`]),
 //! written to vectorise with the same bits on every instruction set.
 
 pub mod lane_hypot;
+pub mod lane_log10;
 pub mod lane_power;
 #[cfg(test)]
 mod split_mix;
 
 pub use lane_hypot::hypot_lanes;
+pub use lane_log10::{log10_lane, log10_lanes};
 pub use lane_power::{powf_lane, powf_lanes};
 
 /// The bits of a signalling NaN: no arithmetic result has them (a NaN that an operation
