@@ -265,6 +265,16 @@ pub struct RollingModel {
     load_power_count: usize,
 }
 
+/// νn of the viscous terms (Karhula A9.1.28-31, Palmgren's M0): the kinematic viscosity in
+/// mm²/s times the speed in rpm, of a relative speed `relative_speed` (rad/s) and a kinematic
+/// viscosity `kinematic_viscosity` (m²/s).
+#[inline]
+pub fn viscous_speed(relative_speed: f64, kinematic_viscosity: f64) -> f64 {
+    let n_rpm = relative_speed.abs() * 60.0 / (2.0 * PI);
+    let nu = kinematic_viscosity * 1e6; // mm²/s
+    nu * n_rpm
+}
+
 impl RollingModel {
     pub fn new(bearing: RollingBearing, reading: RollingReading) -> Self {
         let dm = bearing.pitch_diameter;
@@ -334,12 +344,72 @@ impl RollingModel {
         kept: &mut KeptPower,
     ) -> RollingLoss {
         let powers = self.load_powers_of(load);
-        self.loss_with_powers(load, relative_speed, kinematic_viscosity, powers, kept)
+        let speed_power = if self.takes_speed_power() {
+            kept.pow_lane(
+                viscous_speed(relative_speed, kinematic_viscosity),
+                2.0 / 3.0,
+            )
+        } else {
+            0.0
+        };
+        self.loss_with_powers(
+            load,
+            relative_speed,
+            kinematic_viscosity,
+            powers,
+            speed_power,
+        )
+    }
+
+    /// Whether the reading's viscous term takes the power (νn)^(2/3) of the speed (Karhula's
+    /// and Palmgren's, above νn = 2000).
+    fn takes_speed_power(&self) -> bool {
+        !matches!(self.reading, RollingReading::Skf(_))
+    }
+
+    /// The speed powers (νn)^(2/3) that [`RollingModel::loss_with_powers`] takes, of the
+    /// lanes' relative speeds `relative_speed` (rad/s) at the kinematic viscosity
+    /// `kinematic_viscosity` (m²/s), into `out` (the shorter's length; left alone by a reading
+    /// that takes none, and where every lane is below νn = 2000, where the readings take
+    /// none): [`KeptPower::pow_lane`]'s bits lane by lane, the lanes of a constant
+    /// νn (a constant joint speed) from `kept`, the others all at once
+    /// ([`cardan_numeric::powf_lanes`]). Inlined into a block kernel, which vectorises it.
+    #[inline(always)]
+    pub fn speed_powers(
+        &self,
+        relative_speed: &[f64],
+        kinematic_viscosity: f64,
+        kept: &mut KeptPower,
+        out: &mut [f64],
+    ) {
+        if !self.takes_speed_power() {
+            return;
+        }
+        const CHUNK: usize = 64;
+        for (speeds, out) in relative_speed.chunks(CHUNK).zip(out.chunks_mut(CHUNK)) {
+            let mut nun = [0.0; CHUNK];
+            for (n, &w) in nun.iter_mut().zip(speeds) {
+                *n = viscous_speed(w, kinematic_viscosity);
+            }
+            let nun = &nun[..speeds.len().min(out.len())];
+            let first = nun.first().map_or(0, |n| n.to_bits());
+            if nun.iter().all(|&n| n < 2000.0) {
+                // Below νn = 2000 the readings take no power of the speed (A9.1.30-31).
+                continue;
+            } else if nun.iter().all(|n| n.to_bits() == first) {
+                let p = kept.pow_lane(f64::from_bits(first), 2.0 / 3.0);
+                out[..nun.len()].fill(p);
+            } else {
+                cardan_numeric::powf_lanes(nun, 2.0 / 3.0, out);
+            }
+        }
     }
 
     /// [`RollingModel::loss_kept`] with the powers of the load already taken: `load_powers[j]`
-    /// is [`RollingModel::load_powers`]`()[j]` of |`load`| (the rest unused). Every reading
-    /// takes its powers of the load from there; the viscous term's (νn)^(2/3) from `kept`.
+    /// is [`RollingModel::load_powers`]`()[j]` of |`load`| (the rest unused), and
+    /// `speed_power` the viscous term's (νn)^(2/3) of the speed ([`viscous_speed`];
+    /// [`RollingModel::speed_powers`], unused by a reading that takes none). Every reading
+    /// takes its powers from there.
     /// Inlined into a block's loop over its lanes (the reading's `match` then leaves the loop).
     #[inline]
     pub fn loss_with_powers(
@@ -348,7 +418,7 @@ impl RollingModel {
         relative_speed: f64,
         kinematic_viscosity: f64,
         load_powers: [f64; 2],
-        kept: &mut KeptPower,
+        speed_power: f64,
     ) -> RollingLoss {
         let bearing = &self.bearing;
         let [p0, p1] = self.powers;
@@ -356,14 +426,14 @@ impl RollingModel {
         let w = relative_speed.abs();
         let n_rpm = w * 60.0 / (2.0 * PI);
         let nu = kinematic_viscosity * 1e6; // mm²/s
-        let nun = nu * n_rpm;
+        let nun = viscous_speed(relative_speed, kinematic_viscosity);
         let (load_torque, viscous_torque) = match self.reading {
             RollingReading::Karhula { f0, load_constant } => {
                 let (dm, c0_power, dm3) = (bearing.pitch_diameter, p0, p1);
                 let f_155 = load_powers[0];
                 let tl = load_constant * f_155 * c0_power * dm;
                 let tv = if nun > 2000.0 {
-                    9.79e-2 * f0 * kept.pow(nun, 2.0 / 3.0) * dm3
+                    9.79e-2 * f0 * speed_power * dm3
                 } else {
                     24.1 * f0 * dm3
                 };
@@ -373,7 +443,7 @@ impl RollingModel {
                 let dm = bearing.pitch_diameter * 1e3; // mm
                 let dm3 = p0;
                 let m0 = if nun >= 2000.0 {
-                    1e-7 * c.f0 * kept.pow(nun, 2.0 / 3.0) * dm3
+                    1e-7 * c.f0 * speed_power * dm3
                 } else {
                     160e-7 * c.f0 * dm3
                 };
@@ -477,27 +547,37 @@ mod tests {
                 let base: Vec<f64> = loads.iter().map(|f| f / p.divisor).collect();
                 cardan_numeric::powf_lanes(&base, p.exponent, out);
             }
+            // Speeds that vary over the lanes (all at once) and a constant one (kept).
+            let varying: Vec<f64> = (0..64).map(|i| 20.0 + i as f64).collect();
+            let mut speed_powers = [[0.0; 64]; 2];
             let mut kept = KeptPower::default();
+            model.speed_powers(&varying, 5e-6, &mut kept, &mut speed_powers[0]);
+            model.speed_powers(&[300.0; 64], 5e-6, &mut kept, &mut speed_powers[1]);
             for (i, &load) in loads.iter().enumerate() {
-                let speed = 20.0 + i as f64;
-                let lanes = model.loss_with_powers(
-                    load,
-                    speed,
-                    5e-6,
-                    [powers[0][i], powers[1][i]],
-                    &mut kept,
-                );
-                assert_eq!(
-                    lanes,
-                    model.loss(load, speed, 5e-6),
-                    "{reading:?} at {load} N"
-                );
+                for (speed, speed_power) in [
+                    (varying[i], speed_powers[0][i]),
+                    (300.0, speed_powers[1][i]),
+                ] {
+                    let lanes = model.loss_with_powers(
+                        load,
+                        speed,
+                        5e-6,
+                        [powers[0][i], powers[1][i]],
+                        speed_power,
+                    );
+                    assert_eq!(
+                        lanes,
+                        model.loss(load, speed, 5e-6),
+                        "{reading:?} at {load} N, {speed} rad/s"
+                    );
+                }
             }
         }
     }
 
-    /// The model with the lane-wise powers is the formulas of `rolling_bearing_loss` with
-    /// `powf`'s powers to within rounding: the powers are within one ulp of `powf`'s, and the
+    /// The model with the lane-wise powers (of the load and of the speed) is the formulas of
+    /// `rolling_bearing_loss` with `powf`'s powers to within rounding: the powers are within
+    /// one ulp of `powf`'s, and the
     /// torque is a short product and sum of them, so 8 ulp (1.8e-15 relative) bounds it.
     #[test]
     fn lane_wise_powers_are_powf_to_rounding() {
@@ -516,7 +596,7 @@ mod tests {
                     300.0,
                     5e-6,
                     [exact[0], exact[1]],
-                    &mut KeptPower::default(),
+                    viscous_speed(300.0, 5e-6).powf(2.0 / 3.0),
                 );
                 let lanes = model.loss(load, 300.0, 5e-6);
                 let relative = (lanes.power - with_powf.power).abs() / with_powf.power;

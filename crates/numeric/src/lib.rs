@@ -49,6 +49,16 @@ impl KeptPower {
         }
         self.power
     }
+
+    /// [`powf_lane`]`(x, e)` (the bits of a lane of [`powf_lanes`]), kept as
+    /// [`KeptPower::pow`] keeps `powf`'s: a memo takes one of the two, never both.
+    #[inline]
+    pub fn pow_lane(&mut self, x: f64, e: f64) -> f64 {
+        if self.argument.to_bits() != x.to_bits() {
+            (self.argument, self.power) = (x, powf_lane(x, e));
+        }
+        self.power
+    }
 }
 
 #[cfg(test)]
@@ -79,6 +89,12 @@ mod tests {
             let mut kept = KeptPower::default();
             for x in arguments {
                 assert_eq!(kept.pow(x, e).to_bits(), x.powf(e).to_bits(), "{x}^{e}");
+            }
+            let mut kept = KeptPower::default();
+            for x in arguments {
+                let want = powf_lane(x, e);
+                let got = kept.pow_lane(x, e);
+                assert!(got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()));
             }
         }
     }

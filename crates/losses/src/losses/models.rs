@@ -259,10 +259,11 @@ pub fn coulomb(joint: usize, friction_coefficient: f64) -> Box<dyn Loss> {
 impl Loss for Coulomb {
     fn power(&mut self, at: &LossLanes, out: &mut Column) -> Result<(), LaneFailure> {
         let (load, motion) = (&at.total.joints[self.joint], &at.states.joints[self.joint]);
+        let mut force = ZERO;
+        magnitudes(&load.fx, &load.fy, at.lanes.clone(), &mut force);
         for i in at.lanes.clone() {
-            let force = load.fx[i].hypot(load.fy[i]);
             let speed = motion.relative_speed[i];
-            out[i] = coulomb_sliding(self.friction_coefficient, force, speed).power;
+            out[i] = coulomb_sliding(self.friction_coefficient, force[i], speed).power;
         }
         Ok(())
     }
@@ -317,17 +318,49 @@ impl Loss for Rolling {
             &mut share,
             &mut powers,
         );
+        let mut speed_powers = ZERO;
+        let l = at.lanes.clone();
+        speed_powers_of(
+            &self.model,
+            &motion.relative_speed[l.clone()],
+            self.viscosity,
+            &mut self.kept,
+            &mut speed_powers[l],
+        );
         for i in at.lanes.clone() {
             let loss = self.model.loss_with_powers(
                 share[i],
                 motion.relative_speed[i],
                 self.viscosity,
                 [powers[0][i], powers[1][i]],
-                &mut self.kept,
+                speed_powers[i],
             );
             out[i] = self.count * loss.power;
         }
         Ok(())
+    }
+}
+
+cardan_mechanism::vectorised! {
+    /// |(fx, fy)| of the lanes `lanes` into `out`, `f64::hypot`'s bits all at once
+    /// ([`cardan_numeric::hypot_lanes`]).
+    fn magnitudes(fx: &Column, fy: &Column, lanes: Range<usize>, out: &mut Column) {
+        let l = lanes;
+        cardan_numeric::hypot_lanes(&fx[l.clone()], &fy[l.clone()], &mut out[l]);
+    }
+}
+
+cardan_mechanism::vectorised! {
+    /// [`RollingModel::speed_powers`] compiled for the block kernels' instruction set (its
+    /// powers all at once vectorise there).
+    fn speed_powers_of(
+        model: &RollingModel,
+        relative_speed: &[f64],
+        kinematic_viscosity: f64,
+        kept: &mut KeptPower,
+        out: &mut [f64],
+    ) {
+        model.speed_powers(relative_speed, kinematic_viscosity, kept, out);
     }
 }
 
@@ -510,7 +543,6 @@ mod tests {
             };
             let a = 0.1 * i as f64;
             (total.joints[0].fx[i], total.joints[0].fy[i]) = (f * a.cos(), -f * a.sin());
-            states.joints[0].relative_speed[i] = 300.0 - 10.0 * i as f64;
         }
         for reading in [
             RollingReading::Karhula {
@@ -529,7 +561,16 @@ mod tests {
                 viscosity: 5e-6,
                 kept: KeptPower::default(),
             };
-            for n in [LANES, 37] {
+            // Speeds that vary over the block (powers all at once), then a constant one (the
+            // kept power).
+            for (n, constant) in [(LANES, false), (37, false), (LANES, true), (37, true)] {
+                for i in 0..LANES {
+                    states.joints[0].relative_speed[i] = if constant {
+                        250.0
+                    } else {
+                        300.0 - 10.0 * i as f64
+                    };
+                }
                 let at = LossLanes {
                     lanes: 0..n,
                     ..LossLanes::one(&states, &total)
