@@ -523,6 +523,12 @@ fn matches_template(template: &str, name: &str) -> bool {
     if !name.ends_with(&template[close + 1..]) || !name.starts_with(&template[..open]) {
         return false;
     }
+    matches_by_walk(template, name)
+}
+
+/// [`matches_template`] without its early rejection: the walk over the template's fixed
+/// parts, each placeholder one or more characters.
+fn matches_by_walk(template: &str, name: &str) -> bool {
     let mut fixed = template.split(['{', '}']).step_by(2);
     let first = fixed.next().unwrap_or("");
     let Some(mut rest) = name.strip_prefix(first) else {

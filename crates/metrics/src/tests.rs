@@ -39,29 +39,6 @@ fn templates_alternate_their_braces() {
     }
 }
 
-/// `matches_template` before its early rejection (the plain walk over the fixed parts).
-fn matches_by_walk(template: &str, name: &str) -> bool {
-    let mut fixed = template.split(['{', '}']).step_by(2);
-    let first = fixed.next().unwrap_or("");
-    let Some(mut rest) = name.strip_prefix(first) else {
-        return false;
-    };
-    let mut parts = fixed.peekable();
-    if parts.peek().is_none() {
-        return rest.is_empty();
-    }
-    while let Some(part) = parts.next() {
-        if parts.peek().is_none() {
-            return rest.len() > part.len() && rest.ends_with(part);
-        }
-        match rest.get(1..).and_then(|r| r.find(part)) {
-            Some(k) => rest = &rest[k + 1 + part.len()..],
-            None => return false,
-        }
-    }
-    false
-}
-
 #[test]
 fn the_early_rejection_changes_no_match() {
     // Every template against names filled in from every template (with the topology's
