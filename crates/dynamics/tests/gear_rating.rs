@@ -11,7 +11,7 @@ use cardan_dynamics::{
     MeshRating, MetricDef, PassedOn, Solver, Stage, StageColumn, StageTotals, Steps, ToothLoad,
 };
 use cardan_mechanism::{
-    Column, CrankMotion, CrankState, Grid, Loads, Material, MotionSource, C, ZERO,
+    Column, CrankMotion, CrankState, Grid, Loads, Material, Mechanism, MotionSource, C, ZERO,
 };
 use cardan_testing::OneByOne;
 use common::{every_machine, pump_gas, thesis};
@@ -203,19 +203,10 @@ fn the_iso_rating_stands_beside_agma_s_without_changing_it() {
     assert_eq!(none.iso_bending_safety, f64::INFINITY);
 }
 
-/// The gear stage rates a block from its columns (`GearRatings::evaluate_block`): each lane's
-/// values are those of its step rated in a block of its own (the steps handed out one at a
-/// time, as a solved motion's), bit for bit, on every mechanism with a mesh, in every
-/// tooth-load reading (the thesis's reads the inertial family's mesh force and the wheel's
-/// acceleration) and standard, at an accelerating crank (every lane a different state).
-#[test]
-fn a_block_is_rated_lane_by_lane_as_each_step_alone() {
-    let motion = CrankMotion {
-        start_angle: 1.0,
-        initial_speed: 100.0,
-        angular_acceleration: 500.0,
-    };
-    let specs = [
+/// The gear specifications the block tests rate: AGMA's defaults; both standards with the
+/// ring-force reading on a twin set; ISO with the thesis's reading; AGMA with it.
+fn block_specs() -> [GearSpec; 4] {
+    [
         GearSpec::default(),
         GearSpec {
             standard: GearStandard::Both,
@@ -230,60 +221,80 @@ fn a_block_is_rated_lane_by_lane_as_each_step_alone() {
             tooth_load: ToothLoad::Thesis,
             ..GearSpec::default()
         },
-    ];
+        GearSpec {
+            tooth_load: ToothLoad::Thesis,
+            ..GearSpec::default()
+        },
+    ]
+}
+
+/// `f` for every mechanism with a mesh and every spec of [`block_specs`] it takes (the
+/// thesis's reading is refused on an involute mesh): its name, the mechanism, its load
+/// families and gas (the gas only where there is a cylinder: the hypotrochoid's pistons are
+/// in none), the spec and its ratings.
+fn each_rated(
+    mut f: impl FnMut(&str, &dyn Mechanism, &[&dyn LoadFamily], Option<GasAt>, &GearSpec, GearRatings),
+) {
     let inertial = Inertial::new(Solver::ClosedForm);
     let gas = Gas(Solver::ClosedForm);
-    let mut rated = Vec::new();
     for (name, m) in every_machine() {
-        // The gas only where there is a cylinder (the hypotrochoid's pistons are in none).
         let cylinder = m.has_cylinder();
-        let families: Vec<&dyn LoadFamily> = match cylinder {
-            true => vec![&inertial, &gas],
-            false => vec![&inertial],
+        let families: Vec<&dyn LoadFamily> = if cylinder {
+            vec![&inertial, &gas]
+        } else {
+            vec![&inertial]
         };
         let gas_at: Option<GasAt> = cylinder.then_some(&pump_gas);
-        for spec in &specs {
-            // (the thesis's reading is refused on an involute mesh)
+        for spec in &block_specs() {
             let Ok(ratings) = GearRatings::new(spec, m.as_ref(), None) else {
                 continue;
             };
-            if ratings.names().is_empty() {
-                continue;
+            if !ratings.names().is_empty() {
+                f(&name, m.as_ref(), &families, gas_at, spec, ratings);
             }
-            let stage = GearStage::new(ratings);
-            let mut runs = Vec::new();
-            for blocks in [true, false] {
-                let grid = Grid::new(motion, 1.0, 20.0, 2 * 64 + 11);
-                let mut one_by_one = OneByOne(grid.clone());
-                let mut grid = grid;
-                let source: &mut dyn MotionSource = match blocks {
-                    true => &mut grid,
-                    false => &mut one_by_one,
-                };
-                let mut s = stage.clone();
-                let mut kept = Steps::default();
-                run(
-                    m.as_ref(),
-                    source,
-                    &families,
-                    gas_at,
-                    &mut [&mut s],
-                    &mut [&mut kept],
-                )
-                .unwrap();
-                let values: Vec<Vec<u64>> = (kept.0.iter())
-                    .map(|r| r.stages[0].iter().map(|v| v.to_bits()).collect())
-                    .collect();
-                runs.push(values);
-            }
-            assert_eq!(runs[0].len(), 2 * 64 + 12, "{name}");
-            assert!(runs[0].iter().all(|v| !v.is_empty()), "{name}");
-            // The lanes differ (a block is not one state repeated).
-            assert_ne!(runs[0][0], runs[0][70], "{name}");
-            assert_eq!(runs[0], runs[1], "{name} {:?}", spec.tooth_load);
-            rated.push((name.clone(), spec.tooth_load));
         }
     }
+}
+
+/// The gear stage rates a block from its columns (`GearRatings::evaluate_block`): each lane's
+/// values are those of its step rated in a block of its own (the steps handed out one at a
+/// time, as a solved motion's), bit for bit, on every mechanism with a mesh, in every
+/// tooth-load reading (the thesis's reads the inertial family's mesh force and the wheel's
+/// acceleration) and standard, at an accelerating crank (every lane a different state).
+#[test]
+fn a_block_is_rated_lane_by_lane_as_each_step_alone() {
+    let motion = CrankMotion {
+        start_angle: 1.0,
+        initial_speed: 100.0,
+        angular_acceleration: 500.0,
+    };
+    let mut rated = Vec::new();
+    each_rated(|name, m, families, gas_at, spec, ratings| {
+        let stage = GearStage::new(ratings);
+        let mut runs = Vec::new();
+        for blocks in [true, false] {
+            let grid = Grid::new(motion, 1.0, 20.0, 2 * 64 + 11);
+            let mut one_by_one = OneByOne(grid.clone());
+            let mut grid = grid;
+            let source: &mut dyn MotionSource = match blocks {
+                true => &mut grid,
+                false => &mut one_by_one,
+            };
+            let mut s = stage.clone();
+            let mut kept = Steps::default();
+            run(m, source, families, gas_at, &mut [&mut s], &mut [&mut kept]).unwrap();
+            let values: Vec<Vec<u64>> = (kept.0.iter())
+                .map(|r| r.stages[0].iter().map(|v| v.to_bits()).collect())
+                .collect();
+            runs.push(values);
+        }
+        assert_eq!(runs[0].len(), 2 * 64 + 12, "{name}");
+        assert!(runs[0].iter().all(|v| !v.is_empty()), "{name}");
+        // The lanes differ (a block is not one state repeated).
+        assert_ne!(runs[0][0], runs[0][70], "{name}");
+        assert_eq!(runs[0], runs[1], "{name} {:?}", spec.tooth_load);
+        rated.push((name.to_string(), spec.tooth_load));
+    });
     // The cardan gear in both mesh-force readings and the hypotrochoid, in each tooth-load
     // reading they take.
     let has = |name: &str, load| rated.iter().any(|r| r.0 == name && r.1 == load);
@@ -367,74 +378,39 @@ impl Stage for BothWays {
 /// (the kept dynamic factor), full blocks and a short one.
 #[test]
 fn a_block_rated_over_its_lanes_has_the_bits_of_its_lanes_one_by_one() {
-    let specs = [
-        GearSpec::default(),
-        GearSpec {
-            standard: GearStandard::Both,
-            accuracy_grade: Some(7.0),
-            tooth_load: ToothLoad::RingForce,
-            twin: true,
-            ..GearSpec::default()
-        },
-        GearSpec {
-            standard: GearStandard::Iso6336,
-            accuracy_grade: Some(6.0),
-            tooth_load: ToothLoad::Thesis,
-            ..GearSpec::default()
-        },
-        GearSpec {
-            tooth_load: ToothLoad::Thesis,
-            ..GearSpec::default()
-        },
-    ];
-    let inertial = Inertial::new(Solver::ClosedForm);
-    let gas = Gas(Solver::ClosedForm);
     let mut rated = 0;
-    for (name, m) in every_machine() {
-        let cylinder = m.has_cylinder();
-        let families: Vec<&dyn LoadFamily> = match cylinder {
-            true => vec![&inertial, &gas],
-            false => vec![&inertial],
+    each_rated(|name, m, families, gas_at, _, ratings| {
+        let per_mesh = if ratings.iso() {
+            MeshRating::WIDTH
+        } else {
+            MeshRating::AGMA_WIDTH
         };
-        let gas_at: Option<GasAt> = cylinder.then_some(&pump_gas);
-        for spec in &specs {
-            let Ok(ratings) = GearRatings::new(spec, m.as_ref(), None) else {
-                continue;
+        for acceleration in [500.0, 0.0] {
+            let motion = CrankMotion {
+                start_angle: 1.0,
+                initial_speed: 100.0,
+                angular_acceleration: acceleration,
             };
-            if ratings.names().is_empty() {
-                continue;
-            }
-            let per_mesh = match ratings.iso() {
-                true => MeshRating::WIDTH,
-                false => MeshRating::AGMA_WIDTH,
+            let mut stage = BothWays {
+                stage: GearStage::new(ratings.clone()),
+                lanes: ratings.clone(),
+                one_by_one: ratings.clone(),
+                per_mesh,
             };
-            for acceleration in [500.0, 0.0] {
-                let motion = CrankMotion {
-                    start_angle: 1.0,
-                    initial_speed: 100.0,
-                    angular_acceleration: acceleration,
-                };
-                let mut stage = BothWays {
-                    stage: GearStage::new(ratings.clone()),
-                    lanes: ratings.clone(),
-                    one_by_one: ratings.clone(),
-                    per_mesh,
-                };
-                let mut grid = Grid::new(motion, 1.0, 20.0, 2 * 64 + 11);
-                let mut kept = Steps::default();
-                run(
-                    m.as_ref(),
-                    &mut grid,
-                    &families,
-                    gas_at,
-                    &mut [&mut stage],
-                    &mut [&mut kept],
-                )
-                .unwrap();
-                assert_eq!(kept.0.len(), 2 * 64 + 12, "{name}");
-                rated += 1;
-            }
+            let mut grid = Grid::new(motion, 1.0, 20.0, 2 * 64 + 11);
+            let mut kept = Steps::default();
+            run(
+                m,
+                &mut grid,
+                families,
+                gas_at,
+                &mut [&mut stage],
+                &mut [&mut kept],
+            )
+            .unwrap();
+            assert_eq!(kept.0.len(), 2 * 64 + 12, "{name}");
+            rated += 1;
         }
-    }
+    });
     assert!(rated >= 8, "{rated} runs rated");
 }
