@@ -337,9 +337,10 @@ impl GearRatings {
             ..LossLanes::one(block.states, block.total)
         };
         (self.meshes.iter_mut().zip(losses.iter_mut())).all(|(m, (_, loss))| {
-            match m.loss_lanes.is_some() {
-                true => m.loss_lanes(block, loss),
-                false => m.loss.power(&at, loss).is_ok(),
+            if m.loss_lanes.is_some() {
+                m.loss_lanes(block, loss)
+            } else {
+                m.loss.power(&at, loss).is_ok()
             }
         })
     }

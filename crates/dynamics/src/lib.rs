@@ -51,9 +51,10 @@ pub use cardan_losses::{
     ValveTrainGeometry, ValveTrainLoss, LOSS_MODELS,
 };
 pub use cardan_pipeline::{
-    run, run_parallel, run_summary, summary_chunk, Block, CylinderGas, GasAt, Joinable, LaneError,
-    PassedOn, RunError, RunTotals, SetupError, Sink, Stage, StageColumn, StageError, StageTotals,
-    Step, StepBlock, StepRecord, StepScratch, Steps, SummarySink, MAX_CHUNK,
+    at_each_lane, run, run_parallel, run_summary, summary_chunk, Block, CylinderGas, GasAt,
+    Joinable, LaneError, PassedOn, RunError, RunTotals, SetupError, Sink, Stage, StageColumn,
+    StageError, StageTotals, Step, StepBlock, StepRecord, StepScratch, Steps, SummarySink,
+    MAX_CHUNK,
 };
 pub use gear_rating::{GearRatings, MeshRating};
 pub use machine::{Machine, MachineKind};

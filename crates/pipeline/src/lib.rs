@@ -16,8 +16,8 @@ pub mod summary;
 
 pub use parallel::{run_parallel, run_summary, Joinable};
 pub use stage::{
-    Block, CylinderGas, LaneError, PassedOn, RunTotals, SetupError, Stage, StageColumn, StageError,
-    StageTotals,
+    at_each_lane, Block, CylinderGas, LaneError, PassedOn, RunTotals, SetupError, Stage,
+    StageColumn, StageError, StageTotals,
 };
 pub use step::{Sink, Step, StepBlock, StepRecord, StepScratch, Steps};
 pub use stepper::{run, GasAt, Loading, RunError};

@@ -30,14 +30,25 @@ pub trait CylinderGas: Sync {
     /// the block's piston positions' takes it from there, at once over the lanes
     /// (`cardan_gas::PreparedGas::lanes`).
     fn lanes(&self, states: &StateBlock, pressure: &mut Column, force: &mut Column) {
-        let n = states.len.min(LANES);
-        for ((p, f), &theta) in pressure
-            .iter_mut()
-            .zip(force.iter_mut())
-            .zip(&states.crank.angle[..n])
-        {
-            (*p, *f) = self.at(theta);
-        }
+        at_each_lane(self, states, pressure, force);
+    }
+}
+
+/// [`CylinderGas::at`] at each of the first `states.len` lanes' crank angles, into `pressure`
+/// and `force`: the lanes of a gas that takes them one at a time.
+pub fn at_each_lane<G: CylinderGas + ?Sized>(
+    gas: &G,
+    states: &StateBlock,
+    pressure: &mut Column,
+    force: &mut Column,
+) {
+    let n = states.len.min(LANES);
+    for ((p, f), &theta) in pressure
+        .iter_mut()
+        .zip(force.iter_mut())
+        .zip(&states.crank.angle[..n])
+    {
+        (*p, *f) = gas.at(theta);
     }
 }
 

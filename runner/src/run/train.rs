@@ -13,7 +13,8 @@ use cardan_dynamics::machine_friction::MotionFriction;
 use cardan_dynamics::machine_motion::{MachineTorques, SolvedMotion, SolvedRun};
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    run, run_parallel, CylinderGas, Gas, Inertial, LoadFamily, Sink, Stage, Summary, SummarySink,
+    at_each_lane, run, run_parallel, CylinderGas, Gas, Inertial, LoadFamily, Sink, Stage, Summary,
+    SummarySink,
 };
 use cardan_gas::{GasMetric, PreparedGas};
 use cardan_mechanism::{Column, CrankMotion, Grid, Mechanism, StateBlock, LANES};
@@ -418,9 +419,7 @@ impl CylinderGas for ChamberGas<'_> {
                 (self.prepared).lanes(&states.crank.angle[..n], &piston.position[..n], p, f)
             });
         if !taken {
-            for i in 0..n {
-                (pressure[i], force[i]) = self.at(states.crank.angle[i]);
-            }
+            at_each_lane(self, states, pressure, force);
         }
     }
 }
