@@ -8,6 +8,7 @@ use crate::output::{summary_json, MechanismResult};
 use crate::per_step::StepColumns;
 use crate::run::train::{run_trains, StepsTo};
 use cardan_case::case::Case;
+use cardan_dynamics::RunRooms;
 use rayon::prelude::*;
 use std::collections::HashMap;
 
@@ -41,13 +42,19 @@ fn panicked(case: &Case, panic: &(dyn std::any::Any + Send)) -> String {
 /// the rows the per-step files would hold; memory grows with them), else shares each run among
 /// the threads. A failure (a panic included) is the message the batch would give.
 pub fn run_in_memory(case: &Case, steps: bool) -> Result<CaseRun, String> {
+    run_in_rooms(case, steps, &RunRooms::default())
+}
+
+/// [`run_in_memory`] in blocks of `rooms`.
+fn run_in_rooms(case: &Case, steps: bool, rooms: &RunRooms) -> Result<CaseRun, String> {
     let to = if steps {
         StepsTo::Memory
     } else {
         StepsTo::Summary
     };
-    let trains = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_trains(case, to)))
-        .map_err(|panic| panicked(case, panic.as_ref()))??;
+    let trains =
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_trains(case, to, rooms)))
+            .map_err(|panic| panicked(case, panic.as_ref()))??;
     let (results, rows): (Vec<MechanismResult>, Vec<_>) = trains.into_iter().unzip();
     crate::run::train::log_warnings(case, &results);
     Ok(CaseRun {
@@ -60,9 +67,11 @@ pub fn run_in_memory(case: &Case, steps: bool) -> Result<CaseRun, String> {
 /// Runs the summaries of every case of `cases` (a sweep's points) in parallel, each case's
 /// failure (a panic included) its own: one failing point never stops the others.
 pub fn run_sweep(cases: &[Case]) -> Vec<Result<Vec<MechanismResult>, String>> {
+    // The points' runs take one another's blocks instead of each making its own.
+    let rooms = RunRooms::default();
     cases
         .par_iter()
-        .map(|case| run_in_memory(case, false).map(|run| run.results))
+        .map(|case| run_in_rooms(case, false, &rooms).map(|run| run.results))
         .collect()
 }
 

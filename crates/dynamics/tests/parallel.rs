@@ -6,11 +6,22 @@ mod common;
 
 use cardan_dynamics::{
     run, run_parallel, Friction, Gas, GearRatings, GearSpec, GearStage, Inertial, LoadFamily,
-    LossBudget, LossStage, RunError, Solver, Stage, Summary, SummarySink, MAX_CHUNK,
+    LossBudget, LossStage, RunError, RunRooms, Solver, Stage, Summary, SummarySink, MAX_CHUNK,
 };
 use cardan_mechanism::{CrankMotion, Grid, Material, Mechanism};
-use common::{accelerating_pump, pump_gas, thesis};
+use common::{accelerating_pump, every_machine, pump_gas, thesis};
 use std::f64::consts::PI;
+
+/// How a test's run is run.
+#[derive(Clone, Copy)]
+enum By<'r> {
+    /// `run` on the calling thread.
+    Run,
+    /// `run_parallel` in a pool of this many threads.
+    Threads(usize),
+    /// `RunRooms::run_parallel` in these rooms, by this solver.
+    Rooms(&'r RunRooms, Solver),
+}
 
 /// The summary of `m` over `steps` steps of `motion` from 90°, with a gas force and the
 /// thesis's loss budget (and the gear rating where the mechanism has a mesh), run by
@@ -21,8 +32,26 @@ fn summary(
     steps: usize,
     threads: usize,
 ) -> Result<Summary, String> {
-    let inertial = Inertial::new(Solver::ClosedForm);
-    let gas_family = Gas(Solver::ClosedForm);
+    let by = match threads {
+        0 => By::Run,
+        n => By::Threads(n),
+    };
+    summary_by(m, motion, steps, by)
+}
+
+/// [`summary`] run `by` (the closed forms' solver but by rooms).
+fn summary_by(
+    m: &dyn Mechanism,
+    motion: CrankMotion,
+    steps: usize,
+    by: By,
+) -> Result<Summary, String> {
+    let solver = match by {
+        By::Rooms(_, solver) => solver,
+        _ => Solver::ClosedForm,
+    };
+    let inertial = Inertial::new(solver);
+    let gas_family = Gas(solver);
     let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
     let budget = LossBudget::new(&Friction::karhula(), m, 0.12).unwrap();
     assert!(!budget.carries_history());
@@ -45,17 +74,24 @@ fn summary(
         motion.start_angle + 4.0 * PI,
         steps,
     );
-    let ran = if threads == 0 {
-        run(
+    let ran = match by {
+        By::Run => run(
             m,
             &mut grid,
             &families,
             Some(&pump_gas),
             &mut stages,
             &mut [&mut sink],
-        )
-    } else {
-        rayon::ThreadPoolBuilder::new()
+        ),
+        By::Rooms(rooms, _) => rooms.run_parallel(
+            m,
+            &mut grid,
+            &families,
+            Some(&pump_gas),
+            &mut stages,
+            &mut sink,
+        ),
+        By::Threads(threads) => rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
             .unwrap()
@@ -68,7 +104,7 @@ fn summary(
                     &mut stages,
                     &mut sink,
                 )
-            })
+            }),
     };
     ran.map_err(|e: RunError| e.to_string())?;
     sink.finish(m)
@@ -94,6 +130,41 @@ fn shared_runs_are_the_single_threads_bit_for_bit() {
             }
         }
     }
+}
+
+/// A run in a room kept from a run of another machine of its kind (another geometry, reading,
+/// added mass: `every_machine`) gives the summary of a run in fresh blocks, bit for bit, by
+/// either solver; a failed run's room is not kept, and a room of one solver's families is not
+/// taken by the other's.
+#[test]
+fn a_kept_room_gives_a_fresh_rooms_summary() {
+    let rooms = RunRooms::default();
+    let machines = every_machine();
+    let mut ran = 0;
+    for solver in [Solver::ClosedForm, Solver::General] {
+        for (name, m) in machines.iter().chain(machines.iter().rev()) {
+            let kept = summary_by(
+                m.as_ref(),
+                accelerating_pump(),
+                200,
+                By::Rooms(&rooms, solver),
+            );
+            let fresh = summary_by(
+                m.as_ref(),
+                accelerating_pump(),
+                200,
+                By::Rooms(&RunRooms::default(), solver),
+            );
+            assert_eq!(kept, fresh, "{name}, {solver:?}");
+            ran += usize::from(kept.is_ok());
+        }
+    }
+    // Every machine but those whose grid meets a fold of their chain (the hypotrochoid's).
+    assert!(
+        ran + 8 >= 4 * machines.len(),
+        "{ran} of {}",
+        4 * machines.len()
+    );
 }
 
 #[test]

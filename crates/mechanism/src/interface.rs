@@ -47,7 +47,9 @@ pub trait Mechanism: Send + Sync + std::fmt::Debug {
     /// Fills the lanes `0..block.len` of `block` (made by [`StateBlock::for_topology`]) at the
     /// crank states its crank columns hold, all but the extras. Callers go through
     /// [`StateBlock::fill`] or [`StateBlock::fill_next`]. A mechanism may leave alone the columns
-    /// that are zero at every step (a block starts zeroed and is filled by one mechanism).
+    /// that are zero at every step (a block starts zeroed and is filled by mechanisms of one
+    /// kind: which columns it writes must not depend on its parameters, as a sweep's points
+    /// share blocks, `cardan_pipeline::RunRooms`).
     fn fill_block(&self, block: &mut StateBlock);
 
     /// Fills the [`Topology::extras`] of a `state` that [`Mechanism::fill_block`] filled (only

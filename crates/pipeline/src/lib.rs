@@ -20,5 +20,5 @@ pub use stage::{
     StageColumn, StageError, StageTotals,
 };
 pub use step::{Sink, Step, StepBlock, StepRecord, StepScratch, Steps};
-pub use stepper::{run, GasAt, Loading, RunError};
+pub use stepper::{run, GasAt, Loading, RunError, RunRooms, KEPT_ROOMS};
 pub use summary::{summary_chunk, SummarySink, MAX_CHUNK};

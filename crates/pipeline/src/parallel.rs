@@ -8,7 +8,7 @@
 
 use crate::stage::Stage;
 use crate::step::{Sink, StepBlock, StepRecord, Steps};
-use crate::stepper::{run, run_in, GasAt, RunError, RunRoom};
+use crate::stepper::{run, run_in, GasAt, RunError, RunRoom, RunRooms};
 use crate::summary::{summary_chunk, SummarySink, MAX_CHUNK};
 use cardan_loads::family::{Gas, Inertial, LoadFamily, Solver};
 use cardan_mechanism::{Mechanism, MotionSource};
@@ -107,59 +107,75 @@ pub fn run_parallel(
     stages: &mut [&mut dyn Stage],
     sink: &mut impl Joinable,
 ) -> Result<(), RunError> {
-    let first = motion.first_index();
-    let count = motion.len();
-    let chunk = summary_chunk(first + count);
-    let splittable = count > MAX_CHUNK + 1
-        && first % chunk == 0
-        && !stages.iter().any(|s| s.carries_history())
-        && motion.part(first, first).is_some();
-    if !splittable {
-        return run(mechanism, motion, families, gas, stages, &mut [sink]);
-    }
-    let stages: &[&mut dyn Stage] = stages;
-    let template = sink.fork();
-    let last = first + count - 1;
-    // Chunk k takes the steps from its start to the next chunk's start: the interval that
-    // ends a chunk is the chunk's (its last step is taken twice; a peak does not mind).
-    let starts: Vec<usize> = (first..last).step_by(chunk).collect();
-    for wave in starts.chunks(WAVE) {
-        let parts: Vec<_> = wave
-            .iter()
-            .map(|&s| {
-                motion
-                    .part(s, (s + chunk).min(last))
-                    .expect("a splittable motion splits at every chunk start")
-            })
-            .collect();
-        // A room for the pieces a thread takes one after another (`RunRoom`).
-        let room = || RunRoom::new(mechanism.topology(), families.len());
-        let pieces: Vec<Result<_, RunError>> = parts
-            .into_par_iter()
-            .map_init(room, |room, mut part| {
-                let mut piece = template.clone();
-                let mut forks: Vec<Box<dyn Stage>> = stages.iter().map(|s| s.fork()).collect();
-                let mut forked: Vec<&mut dyn Stage> = forks
-                    .iter_mut()
-                    .map(|s| &mut **s as &mut dyn Stage)
-                    .collect();
-                run_in(
-                    room,
-                    mechanism,
-                    part.as_mut(),
-                    families,
-                    gas,
-                    &mut forked,
-                    &mut [&mut piece],
-                )?;
-                Ok(piece)
-            })
-            .collect();
-        for piece in pieces {
-            sink.join(piece?);
+    RunRooms::default().run_parallel(mechanism, motion, families, gas, stages, sink)
+}
+
+impl RunRooms {
+    /// [`run_parallel`], a run on the calling thread alone in a room of these
+    /// ([`RunRooms::run`]; the pieces of a shared run make their own).
+    pub fn run_parallel(
+        &self,
+        mechanism: &dyn Mechanism,
+        motion: &mut dyn MotionSource,
+        families: &[&dyn LoadFamily],
+        gas: Option<GasAt>,
+        stages: &mut [&mut dyn Stage],
+        sink: &mut impl Joinable,
+    ) -> Result<(), RunError> {
+        let first = motion.first_index();
+        let count = motion.len();
+        let chunk = summary_chunk(first + count);
+        let splittable = count > MAX_CHUNK + 1
+            && first % chunk == 0
+            && !stages.iter().any(|s| s.carries_history())
+            && motion.part(first, first).is_some();
+        if !splittable {
+            return self.run(mechanism, motion, families, gas, stages, &mut [sink]);
         }
+        let stages: &[&mut dyn Stage] = stages;
+        let template = sink.fork();
+        let last = first + count - 1;
+        // Chunk k takes the steps from its start to the next chunk's start: the interval that
+        // ends a chunk is the chunk's (its last step is taken twice; a peak does not mind).
+        let starts: Vec<usize> = (first..last).step_by(chunk).collect();
+        for wave in starts.chunks(WAVE) {
+            let parts: Vec<_> = wave
+                .iter()
+                .map(|&s| {
+                    motion
+                        .part(s, (s + chunk).min(last))
+                        .expect("a splittable motion splits at every chunk start")
+                })
+                .collect();
+            // A room for the pieces a thread takes one after another (`RunRoom`).
+            let room = || RunRoom::new(mechanism.topology(), families.len());
+            let pieces: Vec<Result<_, RunError>> = parts
+                .into_par_iter()
+                .map_init(room, |room, mut part| {
+                    let mut piece = template.clone();
+                    let mut forks: Vec<Box<dyn Stage>> = stages.iter().map(|s| s.fork()).collect();
+                    let mut forked: Vec<&mut dyn Stage> = forks
+                        .iter_mut()
+                        .map(|s| &mut **s as &mut dyn Stage)
+                        .collect();
+                    run_in(
+                        room,
+                        mechanism,
+                        part.as_mut(),
+                        families,
+                        gas,
+                        &mut forked,
+                        &mut [&mut piece],
+                    )?;
+                    Ok(piece)
+                })
+                .collect();
+            for piece in pieces {
+                sink.join(piece?);
+            }
+        }
+        Ok(())
     }
-    Ok(())
 }
 
 /// Runs `mechanism` through `motion` with the inertial loads (and the gas loads, if `gas` is

@@ -8,6 +8,7 @@ use super::train::{run_trains, StepsTo};
 use crate::output::{self, MechanismResult};
 use anyhow::Context;
 use cardan_case::case::Case;
+use cardan_dynamics::RunRooms;
 use cardan_report::{files, CaseSummary, ChartData};
 use std::path::{Path, PathBuf};
 
@@ -66,7 +67,7 @@ pub(super) fn run_and_write(
         dir: &tmp,
         charts: report,
     };
-    let result = run_trains(case, to).and_then(|trains| {
+    let result = run_trains(case, to, &RunRooms::default()).and_then(|trains| {
         // The chart series go to the report, and are dropped with it: a batch keeps only
         // the summaries.
         let (results, series): (Vec<MechanismResult>, Vec<Option<ChartData>>) =

@@ -17,6 +17,7 @@ use anyhow::Context;
 use cardan_case::case::{point_to_run, Case};
 use cardan_case::sweep::Sweep;
 use cardan_case::CaseError;
+use cardan_dynamics::RunRooms;
 use cardan_report::files;
 use rayon::prelude::*;
 use serde_json::json;
@@ -368,11 +369,16 @@ pub(super) fn write_header(dir: &Path, header: &serde_json::Value) -> anyhow::Re
     files::write_file(&dir.join("sweep.json"), text.as_bytes())
 }
 
-/// Point `k` of `table` validated and run to its summaries (a panic is its failure).
-fn run_point(table: &TableSweep, k: usize) -> Result<Vec<MechanismResult>, String> {
+/// Point `k` of `table` validated and run to its summaries in rooms of `rooms` (a panic is its
+/// failure).
+fn run_point(
+    table: &TableSweep,
+    k: usize,
+    rooms: &RunRooms,
+) -> Result<Vec<MechanismResult>, String> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         let case = point_to_run(&table.sweep, k).map_err(|e| e.to_string())?;
-        run_trains(&case, StepsTo::Summary)
+        run_trains(&case, StepsTo::Summary, rooms)
     }))
     .unwrap_or_else(|_| {
         Err(format!(
@@ -502,11 +508,13 @@ fn run_rows(
 ) -> anyhow::Result<usize> {
     let rows = table.points();
     let mut ran = 0;
+    // The points' runs take one another's blocks instead of each making its own.
+    let rooms = RunRooms::default();
     for start in (0..rows).step_by(CHUNK) {
         let results: Vec<Result<Vec<MechanismResult>, String>> = (start..(start + CHUNK).min(rows))
             .into_par_iter()
             .map(|j| {
-                let r = run_point(table, table.index(j));
+                let r = run_point(table, table.index(j), &rooms);
                 if let Some(progress) = &options.progress {
                     progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
                 }

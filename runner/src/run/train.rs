@@ -13,7 +13,7 @@ use cardan_dynamics::machine_friction::MotionFriction;
 use cardan_dynamics::machine_motion::{MachineTorques, SolvedMotion, SolvedRun};
 use cardan_dynamics::stepper::GasAt;
 use cardan_dynamics::{
-    at_each_lane, run, run_parallel, CylinderGas, Gas, Inertial, LoadFamily, Sink, Stage, Summary,
+    at_each_lane, run, CylinderGas, Gas, Inertial, LoadFamily, RunRooms, Sink, Stage, Summary,
     SummarySink,
 };
 use cardan_gas::{GasMetric, PreparedGas};
@@ -189,7 +189,7 @@ fn run_mechanism(
     setup: &Setup,
     shift: f64,
     label: &str,
-    to: StepsTo,
+    (to, rooms): (StepsTo, &RunRooms),
 ) -> Result<(Summary, Vec<String>, RunUp, TrainRows), String> {
     let own = TrainFamilies::of(case, setup);
     let families = own.list();
@@ -228,7 +228,7 @@ fn run_mechanism(
         }
         let motion = run_kinematic(
             case,
-            (mechanism, shift),
+            (mechanism, shift, rooms),
             &families,
             gas,
             &mut stages,
@@ -311,10 +311,11 @@ fn solved_sinks<'s>(
 }
 
 /// Steps a train whose crank motion is given (`shift`, rad, ahead of the case's) into its
-/// sinks, and returns that motion (the sampling check steps it again on shifted grids).
+/// sinks, in blocks of `rooms` where the run is not shared, and returns that motion (the
+/// sampling check steps it again on shifted grids).
 fn run_kinematic(
     case: &Case,
-    (mechanism, shift): (&dyn Mechanism, f64),
+    (mechanism, shift, rooms): (&dyn Mechanism, f64, &RunRooms),
     families: &[&dyn LoadFamily],
     gas: Option<GasAt>,
     stages: &mut [Box<dyn Stage>],
@@ -346,7 +347,7 @@ fn run_kinematic(
             &mut stages,
             &mut [&mut sinks.0, &mut sinks.1 .1, p],
         ),
-        None => run_parallel(mechanism, &mut grid, families, gas, &mut stages, sinks),
+        None => rooms.run_parallel(mechanism, &mut grid, families, gas, &mut stages, sinks),
     }
     .map_err(|e| e.to_string())?;
     Ok(motion)
@@ -500,7 +501,7 @@ pub fn run_case(case: &Case, dir: Option<&Path>) -> Result<Vec<MechanismResult>,
         Some(dir) => StepsTo::Files { dir, charts: false },
         None => StepsTo::Summary,
     };
-    let trains = run_trains(case, to)?;
+    let trains = run_trains(case, to, &RunRooms::default())?;
     let results: Vec<MechanismResult> = trains.into_iter().map(|(r, _)| r).collect();
     log_warnings(case, &results);
     Ok(results)
@@ -543,6 +544,7 @@ pub(crate) fn log_warnings(case: &Case, results: &[MechanismResult]) {
 pub(crate) fn run_trains(
     case: &Case,
     to: StepsTo,
+    rooms: &RunRooms,
 ) -> Result<Vec<(MechanismResult, TrainRows)>, String> {
     // Each mechanism's crank train, and its second one in a phased opposed-piston case.
     let mut trains = Vec::new();
@@ -558,13 +560,15 @@ pub(crate) fn run_trains(
             #[cfg(feature = "test-hooks")]
             test_hooks::panic_if_asked(case);
             let (summary, warnings, runup, rows) =
-                run_mechanism(case, m.as_ref(), setup, *shift, label, to).map_err(|e| {
-                    format!(
-                        "{}: case \"{}\": {label}: {e}",
-                        case.file.display(),
-                        case.name
-                    )
-                })?;
+                run_mechanism(case, m.as_ref(), setup, *shift, label, (to, rooms)).map_err(
+                    |e| {
+                        format!(
+                            "{}: case \"{}\": {label}: {e}",
+                            case.file.display(),
+                            case.name
+                        )
+                    },
+                )?;
             let result = MechanismResult {
                 mechanism: Arc::clone(m),
                 label: label.clone(),
