@@ -9,16 +9,18 @@
 //! are public for the stages above.
 
 pub mod parallel;
+pub mod rooms;
 pub mod stage;
 pub mod step;
 pub mod stepper;
 pub mod summary;
 
 pub use parallel::{run_parallel, run_summary, Joinable};
+pub use rooms::{RunRooms, KEPT_ROOMS};
 pub use stage::{
     at_each_lane, Block, CylinderGas, LaneError, PassedOn, RunTotals, SetupError, Stage,
     StageColumn, StageError, StageTotals,
 };
 pub use step::{Sink, Step, StepBlock, StepRecord, StepScratch, Steps};
-pub use stepper::{run, GasAt, Loading, RunError, RunRooms, KEPT_ROOMS};
+pub use stepper::{run, GasAt, Loading, RunError};
 pub use summary::{summary_chunk, SummarySink, MAX_CHUNK};

@@ -6,9 +6,10 @@
 //! whatever the number of threads (tested in `tests/parallel.rs`). [`run_summary`] is the whole
 //! pipeline in one call.
 
+use crate::rooms::RunRooms;
 use crate::stage::Stage;
 use crate::step::{Sink, StepBlock, StepRecord, Steps};
-use crate::stepper::{run, run_in, GasAt, RunError, RunRoom, RunRooms};
+use crate::stepper::{run, GasAt, RunError};
 use crate::summary::{summary_chunk, SummarySink, MAX_CHUNK};
 use cardan_loads::family::{Gas, Inertial, LoadFamily, Solver};
 use cardan_mechanism::{Mechanism, MotionSource};
@@ -111,8 +112,8 @@ pub fn run_parallel(
 }
 
 impl RunRooms {
-    /// [`run_parallel`], a run on the calling thread alone in a room of these
-    /// ([`RunRooms::run`]; the pieces of a shared run make their own).
+    /// [`run_parallel`], a run on the calling thread alone and each piece of a shared one in
+    /// a room of these ([`RunRooms::run`]).
     pub fn run_parallel(
         &self,
         mechanism: &dyn Mechanism,
@@ -147,19 +148,17 @@ impl RunRooms {
                         .expect("a splittable motion splits at every chunk start")
                 })
                 .collect();
-            // A room for the pieces a thread takes one after another (`RunRoom`).
-            let room = || RunRoom::new(mechanism.topology(), families.len());
+            // The pieces take rooms one after another (`RunRooms`).
             let pieces: Vec<Result<_, RunError>> = parts
                 .into_par_iter()
-                .map_init(room, |room, mut part| {
+                .map(|mut part| {
                     let mut piece = template.clone();
                     let mut forks: Vec<Box<dyn Stage>> = stages.iter().map(|s| s.fork()).collect();
                     let mut forked: Vec<&mut dyn Stage> = forks
                         .iter_mut()
                         .map(|s| &mut **s as &mut dyn Stage)
                         .collect();
-                    run_in(
-                        room,
+                    self.run(
                         mechanism,
                         part.as_mut(),
                         families,
