@@ -549,17 +549,28 @@ vectorised! {
         let n = n.min(LANES);
         let mut acc = [0.0; 8];
         for c in out {
-            let chunks = c[..n].chunks_exact(8);
-            let rest = chunks.remainder();
-            for chunk in chunks {
-                for (a, v) in acc.iter_mut().zip(chunk) {
-                    *a += v;
-                }
-            }
-            for (a, v) in acc.iter_mut().zip(rest) {
-                *a += v;
+            // A whole block (most blocks): a slice of a known length, whose loop the compiler
+            // unrolls; the same additions in the same order.
+            match n == LANES {
+                true => add_by_eight(&mut acc, c),
+                false => add_by_eight(&mut acc, &c[..n]),
             }
         }
         acc.iter().sum::<f64>().is_finite()
+    }
+}
+
+/// Adds `values` to `acc`, value i to sum i mod 8.
+#[inline(always)]
+fn add_by_eight(acc: &mut [f64; 8], values: &[f64]) {
+    let chunks = values.chunks_exact(8);
+    let rest = chunks.remainder();
+    for chunk in chunks {
+        for (a, v) in acc.iter_mut().zip(chunk) {
+            *a += v;
+        }
+    }
+    for (a, v) in acc.iter_mut().zip(rest) {
+        *a += v;
     }
 }

@@ -77,10 +77,21 @@ impl NormPeak {
     #[inline(always)]
     fn push_block(&mut self, xs: &[f64], ys: &[f64]) {
         let n = xs.len().min(ys.len()).min(LANES);
+        // A whole block (most blocks): slices of a known length, whose loop the compiler
+        // unrolls.
+        match n == LANES {
+            true => self.push_chunks(&xs[..LANES], &ys[..LANES]),
+            false => self.push_chunks(&xs[..n], &ys[..n]),
+        }
+    }
+
+    /// [`NormPeak::push_block`] of slices of one length.
+    #[inline(always)]
+    fn push_chunks(&mut self, xs: &[f64], ys: &[f64]) {
         // Eight running maxima side by side (kept in vector registers; a maximum does not
         // depend on the order), over chunks whose bounds the compiler sees.
         let mut m = [self.square; 8];
-        let (xc, yc) = (xs[..n].chunks_exact(8), ys[..n].chunks_exact(8));
+        let (xc, yc) = (xs.chunks_exact(8), ys.chunks_exact(8));
         let (xr, yr) = (xc.remainder(), yc.remainder());
         for (x, y) in xc.zip(yc) {
             for k in 0..8 {

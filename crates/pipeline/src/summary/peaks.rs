@@ -23,6 +23,19 @@ pub fn raise(peak: &mut f64, value: f64) {
 /// the order).
 #[inline(always)]
 pub fn raise_over(peak: &mut f64, lanes: Range<usize>, value: impl Fn(usize) -> f64) {
+    // A whole block (most blocks): a loop of a known count, which the compiler unrolls.
+    if lanes.start == 0 && lanes.end >= LANES {
+        let mut m = [*peak; 8];
+        for i in (0..LANES).step_by(8) {
+            for (k, m) in m.iter_mut().enumerate() {
+                raise(m, value(i + k));
+            }
+        }
+        for v in m {
+            raise(peak, v);
+        }
+        return;
+    }
     // Lanes of a block: bounded so, the compiler drops the columns' bounds checks.
     let end = lanes.end.min(LANES);
     let mut m = [*peak; 8];
