@@ -322,6 +322,17 @@ impl MotionSource for Grid {
     }
 }
 
+/// 0, 1, …, [`LANES`] − 1 as numbers.
+const LANE_NUMBERS: [f64; LANES] = {
+    let mut numbers = [0.0; LANES];
+    let mut j = 0;
+    while j < LANES {
+        numbers[j] = j as f64;
+        j += 1;
+    }
+    numbers
+};
+
 vectorised! {
     /// Makes the states of the block from index `k` (a multiple of [`REANCHOR`]) to at most
     /// `last` into `out`: how many it could make, and the motion's error at the next one if it
@@ -334,8 +345,10 @@ vectorised! {
     ) -> (usize, Option<MotionError>) {
         let n = (last + 1 - k).min(REANCHOR);
         let m = spacing.motion;
+        // (k + j) as f64 is k as f64 + j as f64 exactly (integers below 2⁵³): added as a vector.
+        let first = k as f64;
         for j in 0..LANES {
-            out.angle[j] = spacing.start + spacing.h * (k + j) as f64;
+            out.angle[j] = spacing.start + spacing.h * (first + LANE_NUMBERS[j]);
             out.acceleration[j] = m.angular_acceleration;
         }
         // Exact at the block's start (every REANCHOR points); then CHAINS chains, each
@@ -395,17 +408,29 @@ vectorised! {
                 })
                 .unwrap_or(n)
         };
-        for j in 0..valid {
-            let dtheta = out.angle[j] - m.start_angle;
-            let w = (w0 * w0 + 2.0 * a * dtheta).max(0.0).sqrt();
-            out.speed[j] = w;
-            out.time[j] = if dtheta == 0.0 {
-                0.0
-            } else {
-                2.0 * dtheta / (w0 + w)
-            };
+        // A whole block (most blocks): a loop of a known count, which the compiler unrolls.
+        match valid == LANES {
+            true => speeds_and_times(&m, out, LANES),
+            false => speeds_and_times(&m, out, valid),
         }
         (valid, error)
+    }
+}
+
+/// The speed and time of the first `n` states of `out` from their angles under the
+/// accelerating motion `m` ([`CrankMotion::at_angle`]'s arithmetic, its checks passed).
+#[inline(always)]
+fn speeds_and_times(m: &CrankMotion, out: &mut CrankColumns, n: usize) {
+    let (w0, a) = (m.initial_speed, m.angular_acceleration);
+    for j in 0..n.min(LANES) {
+        let dtheta = out.angle[j] - m.start_angle;
+        let w = (w0 * w0 + 2.0 * a * dtheta).max(0.0).sqrt();
+        out.speed[j] = w;
+        out.time[j] = if dtheta == 0.0 {
+            0.0
+        } else {
+            2.0 * dtheta / (w0 + w)
+        };
     }
 }
 
