@@ -347,10 +347,10 @@ vectorised! {
         let m = spacing.motion;
         // (k + j) as f64 is k as f64 + j as f64 exactly (integers below 2⁵³): added as a vector.
         let first = k as f64;
-        for j in 0..LANES {
-            out.angle[j] = spacing.start + spacing.h * (first + LANE_NUMBERS[j]);
-            out.acceleration[j] = m.angular_acceleration;
+        for (angle, j) in out.angle.iter_mut().zip(LANE_NUMBERS) {
+            *angle = spacing.start + spacing.h * (first + j);
         }
+        out.acceleration = [m.angular_acceleration; LANES];
         // Exact at the block's start (every REANCHOR points); then CHAINS chains, each
         // turned by e^{i·CHAINS·h} from the point CHAINS before (written out as C's product,
         // the same arithmetic, so that the compiler turns the chains side by side).
