@@ -433,81 +433,97 @@ vectorised! {
     /// train's columns a column at a time, with the operations of `MachineStage::values` in
     /// its order (the same bits) but without gathering each lane's cylinder and row;
     /// `train_loss`: the train's power loss at each lane (with `[friction]`), W.
-    // A lane index runs over several columns of `out` and of the inputs at once.
-    #[allow(clippy::needless_range_loop)]
     fn one_cylinder_block(
         stage: &MachineStage,
         input: &Block,
         train_loss: Option<&Column>,
         out: &mut [Column],
     ) {
-        let n = input.len.min(LANES);
-        let p = stage.places;
-        let m = &*stage.machine;
-        let t = m.mechanism().topology();
-        let total = input.total;
-        if p.shaking {
-            for i in 0..n {
-                let crank = input.states.crank.at(i);
-                let s = m
-                    .balance()
-                    .sum(std::iter::once(shaking_lane(t, input.states, i)), &crank);
-                out[0][i] = s.force.re;
-                out[1][i] = s.force.im;
-                out[2][i] = s.pitch();
-                out[3][i] = s.yaw();
+        // A whole block (most blocks): loops of a known count, which the compiler unrolls.
+        match input.len >= LANES {
+            true => one_cylinder_lanes(stage, input, train_loss, out, LANES),
+            false => one_cylinder_lanes(stage, input, train_loss, out, input.len),
+        }
+    }
+}
+
+/// [`one_cylinder_block`] over the first `n` lanes.
+// A lane index runs over several columns of `out` and of the inputs at once.
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+fn one_cylinder_lanes(
+    stage: &MachineStage,
+    input: &Block,
+    train_loss: Option<&Column>,
+    out: &mut [Column],
+    n: usize,
+) {
+    let n = n.min(LANES);
+    let p = stage.places;
+    let m = &*stage.machine;
+    let t = m.mechanism().topology();
+    let total = input.total;
+    if p.shaking {
+        for i in 0..n {
+            let crank = input.states.crank.at(i);
+            let s = m
+                .balance()
+                .sum(std::iter::once(shaking_lane(t, input.states, i)), &crank);
+            out[0][i] = s.force.re;
+            out[1][i] = s.force.im;
+            out[2][i] = s.pitch();
+            out[3][i] = s.yaw();
+        }
+    }
+    let others = p.others();
+    for c in &mut out[others..others + 3] {
+        c[..n].fill(0.0);
+    }
+    let torque = &mut out[p.torque()][..n];
+    for (t, &c) in torque.iter_mut().zip(&total.crank_torque[..n]) {
+        *t = 0.0 + c;
+    }
+    if stage.friction {
+        let speed = &input.states.crank.speed[..n];
+        for (i, (t, &w)) in torque.iter_mut().zip(speed).enumerate() {
+            let loss = 0.0 + train_loss.map_or(0.0, |l| l[i]);
+            if w != 0.0 {
+                *t += loss / w.abs();
             }
         }
-        let others = p.others();
-        for c in &mut out[others..others + 3] {
-            c[..n].fill(0.0);
+    }
+    for j in 0..p.journals {
+        out[p.journal(j)][..n].fill(0.0);
+        out[p.journal(j) + 1][..n].fill(0.0);
+    }
+    let zero = [0.0; LANES];
+    let load = |j: Option<usize>| match j {
+        Some(j) => (&total.joints[j].fx[..n], &total.joints[j].fy[..n]),
+        None => (&zero[..n], &zero[..n]),
+    };
+    let axis = m.axis(0);
+    for (j, share) in m.journals_of(0) {
+        let (x, y) = column_pair(out, p.journal(j), n);
+        let (fx, fy) = load(m.main_bearing());
+        for (((x, y), &fx), &fy) in x.iter_mut().zip(y).zip(fx).zip(fy) {
+            let main = axis * C::new(fx, fy);
+            *x += share * main.re;
+            *y += share * main.im;
         }
-        let torque = &mut out[p.torque()][..n];
-        for (t, &c) in torque.iter_mut().zip(&total.crank_torque[..n]) {
-            *t = 0.0 + c;
+    }
+    if p.pins {
+        let (x, y) = column_pair(out, p.pin(0), n);
+        let (fx, fy) = load(m.crank_pin());
+        for (((x, y), &fx), &fy) in x.iter_mut().zip(y).zip(fx).zip(fy) {
+            let pin = axis * C::new(fx, fy);
+            (*x, *y) = (pin.re, pin.im);
         }
-        if stage.friction {
-            let speed = &input.states.crank.speed[..n];
-            for (i, (t, &w)) in torque.iter_mut().zip(speed).enumerate() {
-                let loss = 0.0 + train_loss.map_or(0.0, |l| l[i]);
-                if w != 0.0 {
-                    *t += loss / w.abs();
-                }
-            }
-        }
-        for j in 0..p.journals {
-            out[p.journal(j)][..n].fill(0.0);
-            out[p.journal(j) + 1][..n].fill(0.0);
-        }
-        let zero = [0.0; LANES];
-        let load = |j: Option<usize>| match j {
-            Some(j) => (&total.joints[j].fx[..n], &total.joints[j].fy[..n]),
-            None => (&zero[..n], &zero[..n]),
-        };
-        let axis = m.axis(0);
-        for (j, share) in m.journals_of(0) {
-            let (x, y) = column_pair(out, p.journal(j), n);
-            let (fx, fy) = load(m.main_bearing());
-            for (((x, y), &fx), &fy) in x.iter_mut().zip(y).zip(fx).zip(fy) {
-                let main = axis * C::new(fx, fy);
-                *x += share * main.re;
-                *y += share * main.im;
-            }
-        }
-        if p.pins {
-            let (x, y) = column_pair(out, p.pin(0), n);
-            let (fx, fy) = load(m.crank_pin());
-            for (((x, y), &fx), &fy) in x.iter_mut().zip(y).zip(fx).zip(fy) {
-                let pin = axis * C::new(fx, fy);
-                (*x, *y) = (pin.re, pin.im);
-            }
-        }
-        if p.gas {
-            let gas = &mut out[p.gas(0)][..n];
-            match input.force {
-                Some(f) => gas.copy_from_slice(&f[..n]),
-                None => gas.fill(0.0),
-            }
+    }
+    if p.gas {
+        let gas = &mut out[p.gas(0)][..n];
+        match input.force {
+            Some(f) => gas.copy_from_slice(&f[..n]),
+            None => gas.fill(0.0),
         }
     }
 }
