@@ -401,7 +401,12 @@ vectorised! {
         let column = |place: usize| &c[place][lanes.clone()];
         // The steps only for the integrals of the cylinders apart from the train.
         if !totals.others {
-            return totals.take(n, &[], column);
+            // A whole block (most blocks): columns of a known length, whose loops the compiler
+            // unrolls.
+            return match lanes.start == 0 && n == LANES {
+                true => totals.take(LANES, &[], |place: usize| &c[place][..]),
+                false => totals.take(n, &[], column),
+            };
         }
         let mut steps = [(0, 0.0, 0.0); LANES];
         for (i, j) in lanes.clone().enumerate() {
