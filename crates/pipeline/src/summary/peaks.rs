@@ -23,12 +23,13 @@ pub fn raise(peak: &mut f64, value: f64) {
 /// the order).
 #[inline(always)]
 pub fn raise_over(peak: &mut f64, lanes: Range<usize>, value: impl Fn(usize) -> f64) {
-    // A whole block (most blocks): a loop of a known count, which the compiler unrolls.
+    // A whole block (most blocks): a loop of a known count, which the compiler unrolls. The
+    // maxima begin at the first eight values (the peak, compared last, still wins a tie).
     if lanes.start == 0 && lanes.end >= LANES {
-        let mut m = [*peak; 8];
-        for i in (0..LANES).step_by(8) {
+        let mut m: [f64; 8] = std::array::from_fn(&value);
+        for chunk in 1..LANES / 8 {
             for (k, m) in m.iter_mut().enumerate() {
-                raise(m, value(i + k));
+                raise(m, value(8 * chunk + k));
             }
         }
         for v in m {
