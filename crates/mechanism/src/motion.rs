@@ -384,18 +384,11 @@ vectorised! {
         // The checks of `speed_and_time` (one test for the block where the crank turns
         // forwards and ω² stays above 0 throughout: the smallest ω², from four running minima),
         // then its arithmetic on the whole block.
-        let mut lowest = [f64::INFINITY; 4];
-        let w2 = |j: usize| w0 * w0 + 2.0 * a * (out.angle[j] - m.start_angle);
-        let mut j = 0;
-        while j + 4 <= n {
-            for (k, l) in lowest.iter_mut().enumerate() {
-                *l = if w2(j + k) < *l { w2(j + k) } else { *l };
-            }
-            j += 4;
-        }
-        for j in j..n {
-            lowest[0] = if w2(j) < lowest[0] { w2(j) } else { lowest[0] };
-        }
+        // A whole block (most blocks): a loop of a known count, which the compiler unrolls.
+        let lowest = match n == LANES {
+            true => lowest_squared_speeds(&m, out, LANES),
+            false => lowest_squared_speeds(&m, out, n),
+        };
         let mut error = None;
         let valid = if w0 > 0.0 && lowest.iter().all(|l| *l > 0.0) {
             n
@@ -415,6 +408,26 @@ vectorised! {
         }
         (valid, error)
     }
+}
+
+/// Four running minima of ω² = ω0² + 2α(θ − θ0) over the first `n` states of `out` under `m`.
+#[inline(always)]
+fn lowest_squared_speeds(m: &CrankMotion, out: &CrankColumns, n: usize) -> [f64; 4] {
+    let (w0, a) = (m.initial_speed, m.angular_acceleration);
+    let n = n.min(LANES);
+    let mut lowest = [f64::INFINITY; 4];
+    let w2 = |j: usize| w0 * w0 + 2.0 * a * (out.angle[j] - m.start_angle);
+    let mut j = 0;
+    while j + 4 <= n {
+        for (k, l) in lowest.iter_mut().enumerate() {
+            *l = if w2(j + k) < *l { w2(j + k) } else { *l };
+        }
+        j += 4;
+    }
+    for j in j..n {
+        lowest[0] = if w2(j) < lowest[0] { w2(j) } else { lowest[0] };
+    }
+    lowest
 }
 
 /// The speed and time of the first `n` states of `out` from their angles under the
