@@ -1,4 +1,4 @@
-//! The blocks a run fills ([`RunRoom`]), and the rooms of finished runs a caller that runs
+//! The blocks a run fills (`RunRoom`), and the rooms of finished runs a caller that runs
 //! many cases keeps for the next ([`RunRooms`]).
 
 use cardan_loads::family::{LoadFamily, Solver};
@@ -30,15 +30,13 @@ impl RunRoom {
 }
 
 /// Rooms of finished runs kept for later runs of the same kind of mechanism under the same
-/// kinds of load families (a sweep runs them point after point, `cardan_runner`'s tables; a
-/// shared run its pieces):
+/// kinds of load families (a sweep's points, `cardan_runner`'s tables; a shared run's pieces):
 /// such a run takes a kept room instead of making and zeroing its blocks (some 40 kB, 6 % of
-/// a sweep point's instructions). Sound for the reason [`RunRoom`] is shared by a run's
-/// pieces: a mechanism writes the same columns of a block at every state whatever its
-/// parameters, and a family of one kind and solver the same loads columns; a run reads no
-/// lane past a block's length (tested over every kind, reading and added mass in
-/// `crates/dynamics/tests/parallel.rs`). Owned by the caller that runs many cases (no global state); at most [`KEPT_ROOMS`]
-/// rooms, a failed run's not kept.
+/// a sweep point's instructions). Sound because a mechanism writes the same columns of a
+/// block at every state whatever its parameters, a family of one kind and solver the same
+/// loads columns, and a run reads no lane past a block's length (tested over every kind,
+/// reading and added mass in `crates/dynamics/tests/parallel.rs`). Owned by the caller that
+/// runs many cases (no global state); at most [`KEPT_ROOMS`] rooms, a failed run's not kept.
 #[derive(Debug, Default)]
 pub struct RunRooms {
     kept: Mutex<Vec<(RoomKind, RunRoom)>>,
