@@ -10,6 +10,7 @@ use crate::data::{family_rank, CaseSummary};
 use crate::envelope::ChartData;
 use crate::locus::{locus_chart, LocusChart};
 use crate::svg::{self, LineChart, Series};
+use rayon::prelude::*;
 
 /// One chart over crank angle: the file name, title, y quantity and unit, and per mechanism
 /// the columns to draw (column name, label suffix).
@@ -309,8 +310,9 @@ pub(super) fn charts(
     specs: &[PlotSpec],
     data: &[Option<ChartData>],
 ) -> Vec<(String, String, String)> {
-    let mut out = Vec::new();
-    for spec in specs {
+    // Each chart drawn on a thread of the pool (a long run's charts are most of its report),
+    // in the specs' order.
+    let chart = |spec: &PlotSpec| {
         let mut series = Vec::new();
         for (k, m) in s.mechanisms.iter().enumerate() {
             let Some(d) = &data[k] else { continue };
@@ -356,7 +358,7 @@ pub(super) fn charts(
         // (the free moment of one cylinder) says nothing a chart could show.
         let zero = |s: &Series| s.y.iter().all(|v| !v.is_finite() || *v == 0.0);
         if series.iter().all(zero) {
-            continue;
+            return None;
         }
         let chart = LineChart {
             title: spec.title.clone(),
@@ -369,13 +371,13 @@ pub(super) fn charts(
             angle_axis: true,
             ..LineChart::default()
         };
-        out.push((
+        Some((
             format!("{}.svg", spec.file),
             svg::line_chart(&chart),
             format!("{}: every mechanism over crank angle", spec.title),
-        ));
-    }
-    out
+        ))
+    };
+    specs.par_iter().filter_map(chart).collect()
 }
 
 /// The locus charts (`locus.rs`): the shaking force's F_y against F_x over the run, every
