@@ -60,6 +60,9 @@ pub struct ChartRecorder {
     /// Per locus (`locus.rs`): its key, the row indices of its x and y, its frame, its
     /// thinning.
     loci: Vec<(String, [usize; 2], Frame, Locus)>,
+    /// The columns read, once [packed](ChartRecorder::pack): the indices above are then into
+    /// rows of these columns alone.
+    packed: Option<Vec<usize>>,
 }
 
 impl ChartRecorder {
@@ -101,14 +104,40 @@ impl ChartRecorder {
             x: index("crank_angle_deg"),
             series,
             loci,
+            packed: None,
         }
     }
 
     /// Whether a series reads the row's column `k` (the others may be left unfilled).
     pub fn reads(&self, k: usize) -> bool {
+        if let Some(read) = &self.packed {
+            return read.binary_search(&k).is_ok();
+        }
         self.x == Some(k)
             || self.series.iter().any(|(_, at, _)| at.contains(&k))
             || self.loci.iter().any(|(_, at, _, _)| at.contains(&k))
+    }
+
+    /// The columns the series read ([`ChartRecorder::reads`]), in the header's order; from
+    /// now on [`ChartRecorder::add`] takes rows of these columns alone, in this order (a sink
+    /// that keeps only what the charts read copies no whole row for them).
+    pub fn pack(&mut self) -> Vec<usize> {
+        if let Some(read) = &self.packed {
+            return read.clone();
+        }
+        let read: Vec<usize> = (0..self.header.len()).filter(|&k| self.reads(k)).collect();
+        let at = |k: &mut usize| *k = read.binary_search(k).expect("a column a series reads");
+        if let Some(x) = &mut self.x {
+            at(x);
+        }
+        for (_, columns, _) in &mut self.series {
+            columns.iter_mut().for_each(at);
+        }
+        for (_, columns, _, _) in &mut self.loci {
+            columns.iter_mut().for_each(at);
+        }
+        self.packed = Some(read.clone());
+        read
     }
 
     /// Whether the next row is one the series take (every `stride`-th and the last).
@@ -121,8 +150,10 @@ impl ChartRecorder {
         self.pick
     }
 
-    /// Takes one row (in the header's order), if it is one the series take.
+    /// Takes one row (in the header's order; not [packed](ChartRecorder::pack)), if it is one
+    /// the series take.
     pub fn record(&mut self, row: &[f64]) {
+        debug_assert!(self.packed.is_none(), "a packed recorder takes packed rows");
         let taken = self.takes_next();
         self.next += 1;
         if taken {
@@ -130,7 +161,8 @@ impl ChartRecorder {
         }
     }
 
-    /// Adds a row the series take ([`ChartRows::takes`]) to them, the rows in their order.
+    /// Adds a row the series take ([`ChartRows::takes`]) to them, the rows in their order: a
+    /// whole row (in the header's order), or of the columns [`ChartRecorder::pack`] said.
     pub fn add(&mut self, row: &[f64]) {
         let Some(x) = self.x.map(|k| row[k]) else {
             return;

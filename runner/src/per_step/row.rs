@@ -209,22 +209,32 @@ impl<'a> Row<'a> {
 
     /// Appends the step's row to `r` (NaN for a quantity undefined at the step).
     pub fn fill(&mut self, s: &Step, r: &mut Vec<f64>) {
+        let start = r.len();
+        r.resize(start + self.header.len(), f64::NAN);
+        self.fill_slice(s, &mut r[start..]);
+    }
+
+    /// Writes the step's row into `r`, a row's room (NaN for a quantity undefined at the
+    /// step): every column, but the body columns left as they are when they are
+    /// [skipped](Row::skip_unread_bodies).
+    pub fn fill_slice(&mut self, s: &Step, r: &mut [f64]) {
         let t = self.mechanism.topology();
         let st = s.state;
-        let start = r.len();
-        r.extend([
+        assert_eq!(r.len(), self.header.len(), "a row's room must match the header");
+        let mut r = Cursor { out: r, at: 0 };
+        r.put([
             st.crank.angle.to_degrees(),
             st.crank.time,
             st.crank.speed,
             st.crank.acceleration,
         ]);
         for p in &st.pistons {
-            r.extend([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
+            r.put([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
         }
         if self.fill_bodies {
             for b in &st.bodies {
                 let polar = PolarComponents::of(&b.cg);
-                r.extend([
+                r.put([
                     b.orientation.arg().to_degrees(),
                     b.angular_velocity,
                     b.angular_acceleration,
@@ -239,13 +249,12 @@ impl<'a> Row<'a> {
                 ]);
             }
         } else {
-            r.resize(r.len() + self.bodies.len(), f64::NAN);
+            r.at += self.bodies.len();
         }
-        r.extend(st.joints.iter().map(|j| j.relative_speed));
-        r.extend(&st.extras);
+        r.put_each(st.joints.iter().map(|j| j.relative_speed));
+        r.put_slice(&st.extras);
         if let Some(p) = s.pressure {
-            r.push(p);
-            r.push(s.piston_forces.first().copied().unwrap_or(0.0));
+            r.put([p, s.piston_forces.first().copied().unwrap_or(0.0)]);
         }
         if self.with_total {
             for (k, total) in self.total_shares.iter_mut().enumerate() {
@@ -258,26 +267,50 @@ impl<'a> Row<'a> {
         let families = s.families.iter().zip(s.shares.iter().map(Vec::as_slice));
         for (loads, shares) in families.chain(total) {
             for ((j, l), m) in t.joints.iter().zip(&loads.joints).zip(&st.joints) {
-                r.extend([l.force.re, l.force.im, l.force.norm()]);
+                r.put([l.force.re, l.force.im, l.force.norm()]);
                 match j.kind {
-                    JointKind::Prismatic => r.push(l.moment),
+                    JointKind::Prismatic => r.put([l.moment]),
                     JointKind::GearMesh { .. } => {
-                        r.extend([tangential(l.force, m), radial(l.force, m)]);
+                        r.put([tangential(l.force, m), radial(l.force, m)]);
                     }
                     JointKind::Revolute(_) => {}
                 }
             }
-            r.push(loads.crank_torque);
-            r.extend(shares);
+            r.put([loads.crank_torque]);
+            r.put_slice(shares);
         }
         for (columns, values) in self.stages.iter().zip(s.stages) {
-            r.extend(columns.iter().map(|&k| values[k]));
+            r.put_each(columns.iter().map(|&k| values[k]));
         }
-        debug_assert_eq!(
-            r.len() - start,
-            self.header.len(),
-            "a row must match the header"
-        );
+        debug_assert_eq!(r.at, self.header.len(), "a row must match the header");
+    }
+}
+
+/// Where [`Row::fill_slice`] writes the next columns: a row's room and the next column's index.
+struct Cursor<'r> {
+    out: &'r mut [f64],
+    at: usize,
+}
+
+impl Cursor<'_> {
+    /// Writes the next `N` columns.
+    #[inline(always)]
+    fn put<const N: usize>(&mut self, values: [f64; N]) {
+        self.put_slice(&values);
+    }
+
+    #[inline(always)]
+    fn put_slice(&mut self, values: &[f64]) {
+        self.out[self.at..self.at + values.len()].copy_from_slice(values);
+        self.at += values.len();
+    }
+
+    #[inline(always)]
+    fn put_each(&mut self, values: impl IntoIterator<Item = f64>) {
+        for v in values {
+            self.out[self.at] = v;
+            self.at += 1;
+        }
     }
 }
 
