@@ -38,6 +38,10 @@ pub struct ChartSink<'a> {
     /// The next step the charts take (found at the first step this sink takes, then counted on:
     /// no division per step).
     next: Option<usize>,
+    /// The steps between two rows taken (but the last), and (rows − 1)·`decimation`: a row
+    /// taken at or past it is the last row (the last step's).
+    step_stride: usize,
+    last_row_step: usize,
     /// The rows taken.
     taken: Taken<'a>,
     /// Where a step the charts take is gathered from a block's columns.
@@ -81,15 +85,21 @@ impl<'a> ChartSink<'a> {
         let mut recorder = chart_recorder(&row, mechanism, rows, label.to_string());
         row.skip_unread_bodies(|k| recorder.reads(k));
         let width = row.header().len();
+        let mut step = StepScratch::for_topology(mechanism.topology());
+        if !row.reads_bodies() {
+            step = step.skip_bodies();
+        }
         let pick = recorder.rows();
         let read: Arc<[usize]> = recorder.pack().into();
-        // A piece's steps hold a taken step every `decimation · stride` and maybe the last.
+        // A piece's steps hold a taken step every `decimation · stride`, and maybe the last.
         let piece_rows = (MAX_CHUNK + 1) / (decimation * pick.stride()) + 2;
         Self {
             decimation,
             last_step,
             pick,
             next: None,
+            step_stride: decimation * pick.stride(),
+            last_row_step: (rows - 1) * decimation,
             taken: Taken {
                 row,
                 recorder: Some(recorder),
@@ -100,7 +110,7 @@ impl<'a> ChartSink<'a> {
                 first_taken: None,
                 last_taken: None,
             },
-            step: StepScratch::for_topology(mechanism.topology()),
+            step,
         }
     }
 
@@ -119,6 +129,21 @@ impl<'a> ChartSink<'a> {
         }
     }
 
+    /// The step after `step`, a step the charts take, that the charts take: `taken_from(step +
+    /// 1)`, counted on. A step taken but the last is the row k·`decimation`, k a multiple of the
+    /// stride, so the next is the row k + stride, or the last step past the last row.
+    fn taken_after(&self, step: usize) -> usize {
+        if step >= self.last_step {
+            return usize::MAX;
+        }
+        let next = step + self.step_stride;
+        if next >= self.last_row_step {
+            self.last_step
+        } else {
+            next
+        }
+    }
+
     /// The thinned series.
     pub fn finish(self) -> Option<ChartData> {
         self.taken.recorder.map(ChartRecorder::finish)
@@ -130,16 +155,16 @@ impl Taken<'_> {
     /// of a shared run.
     fn take(&mut self, s: &Step) -> Result<(), String> {
         self.row.fill_slice(s, &mut self.scratch);
-        finite_row(
-            self.row.header(),
-            &self.scratch,
-            self.read.iter().copied(),
-            s,
-        )?;
         if self.recorder.is_none() && self.rows.capacity() == 0 {
             self.rows.reserve_exact(self.piece_room);
         }
+        let start = self.rows.len();
         self.rows.extend(self.read.iter().map(|&k| self.scratch[k]));
+        if self.rows[start..].iter().any(|v| v.is_infinite()) {
+            self.rows.truncate(start);
+            let read = self.read.iter().copied();
+            return finite_row(self.row.header(), &self.scratch, read, s);
+        }
         self.first_taken.get_or_insert(s.index);
         self.last_taken = Some(s.index);
         if let Some(r) = &mut self.recorder {
@@ -162,7 +187,7 @@ impl Sink for ChartSink<'_> {
         while next < end {
             let s = block.step(next - block.first, &mut self.step);
             self.taken.take(&s).map_err(|message| (next, message))?;
-            next = self.taken_from(next + 1);
+            next = self.taken_after(next);
         }
         self.next = Some(next);
         Ok(())
@@ -237,6 +262,7 @@ mod tests {
             let mut next = usize::MAX;
             for i in (0..=last_step).rev() {
                 if taken(i) {
+                    assert_eq!(sink.taken_after(i), next, "after {i} of {last_step}");
                     next = i;
                 }
                 assert_eq!(

@@ -207,6 +207,12 @@ impl<'a> Row<'a> {
         self.fill_bodies = self.bodies.clone().any(reads);
     }
 
+    /// Whether the row reads the bodies' motion ([`Row::skip_unread_bodies`]): a step gathered
+    /// for it alone may leave them out ([`cardan_dynamics::StepScratch::skip_bodies`]).
+    pub fn reads_bodies(&self) -> bool {
+        self.fill_bodies
+    }
+
     /// Appends the step's row to `r` (NaN for a quantity undefined at the step).
     pub fn fill(&mut self, s: &Step, r: &mut Vec<f64>) {
         let start = r.len();
