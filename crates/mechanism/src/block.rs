@@ -291,16 +291,10 @@ impl StateBlock {
 
     /// Lane `i` as a state (a [`State::for_topology`] of the same topology), all but its extras.
     pub fn gather(&self, i: usize, st: &mut State) {
+        st.crank = self.crank.at(i);
         for (b, c) in st.bodies.iter_mut().zip(&self.bodies) {
             *b = c.at(i);
         }
-        self.gather_but_bodies(i, st);
-    }
-
-    /// [`StateBlock::gather`] but the bodies' motion, left as it was in `st` (for a reader of
-    /// the lane that reads no body).
-    pub fn gather_but_bodies(&self, i: usize, st: &mut State) {
-        st.crank = self.crank.at(i);
         for (j, c) in st.joints.iter_mut().zip(&self.joints) {
             *j = c.at(i);
         }

@@ -76,13 +76,8 @@ impl StepBlock<'_> {
             total,
             shares,
             stages,
-            skip_bodies,
         } = scratch;
-        if *skip_bodies {
-            self.state.gather_but_bodies(i, state);
-        } else {
-            self.state.gather(i, state);
-        }
+        self.state.gather(i, state);
         forces.clear();
         if let Some(f) = self.piston_force {
             forces.resize(state.pistons.len(), f[i]);
@@ -126,8 +121,6 @@ pub struct StepScratch {
     shares: Vec<Vec<f64>>,
     /// Each stage's values at the step.
     stages: Vec<Vec<f64>>,
-    /// Whether the bodies' motion is left as it is ([`StepScratch::skip_bodies`]).
-    skip_bodies: bool,
 }
 
 impl StepScratch {
@@ -140,16 +133,7 @@ impl StepScratch {
             total: Loads::for_topology(topology),
             shares: Vec::new(),
             stages: Vec::new(),
-            skip_bodies: false,
         }
-    }
-
-    /// Leaves the bodies' motion of the steps gathered here as it is (the body columns of a
-    /// state do not change between steps then): for a sink that reads no body, which spares a
-    /// gather of every body's motion a step.
-    pub fn skip_bodies(mut self) -> Self {
-        self.skip_bodies = true;
-        self
     }
 }
 

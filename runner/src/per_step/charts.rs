@@ -2,8 +2,9 @@
 //! writes no file ([`ChartSink`]; shared by the threads of a run), and the chart recorder of a
 //! row both sinks use.
 
+use super::lane::{BlockLane, Lane};
 use super::row::{finite_row, Row, RunLayout};
-use cardan_dynamics::{Sink, Step, StepBlock, StepScratch, MAX_CHUNK};
+use cardan_dynamics::{Sink, StepBlock, MAX_CHUNK};
 use cardan_mechanism::Mechanism;
 use cardan_report::{row_count, ChartData, ChartRecorder, ChartRows, MAX_POINTS};
 use std::sync::Arc;
@@ -44,8 +45,6 @@ pub struct ChartSink<'a> {
     last_row_step: usize,
     /// The rows taken.
     taken: Taken<'a>,
-    /// Where a step the charts take is gathered from a block's columns.
-    step: StepScratch,
 }
 
 /// The rows a [`ChartSink`] took: recorded at once by the sink that has the recorder, kept by a
@@ -85,10 +84,6 @@ impl<'a> ChartSink<'a> {
         let mut recorder = chart_recorder(&row, mechanism, rows, label.to_string());
         row.skip_unread_bodies(|k| recorder.reads(k));
         let width = row.header().len();
-        let mut step = StepScratch::for_topology(mechanism.topology());
-        if !row.reads_bodies() {
-            step = step.skip_bodies();
-        }
         let pick = recorder.rows();
         let read: Arc<[usize]> = recorder.pack().into();
         // A piece's steps hold a taken step every `decimation · stride`, and maybe the last.
@@ -110,7 +105,6 @@ impl<'a> ChartSink<'a> {
                 first_taken: None,
                 last_taken: None,
             },
-            step,
         }
     }
 
@@ -153,7 +147,7 @@ impl<'a> ChartSink<'a> {
 impl Taken<'_> {
     /// Takes the row of `s`, a step the charts take: recorded at once, unless this is a piece
     /// of a shared run.
-    fn take(&mut self, s: &Step) -> Result<(), String> {
+    fn take(&mut self, s: &impl Lane) -> Result<(), String> {
         self.row.fill_slice(s, &mut self.scratch);
         if self.recorder.is_none() && self.rows.capacity() == 0 {
             self.rows.reserve_exact(self.piece_room);
@@ -165,8 +159,8 @@ impl Taken<'_> {
             let read = self.read.iter().copied();
             return finite_row(self.row.header(), &self.scratch, read, s);
         }
-        self.first_taken.get_or_insert(s.index);
-        self.last_taken = Some(s.index);
+        self.first_taken.get_or_insert(s.index());
+        self.last_taken = Some(s.index());
         if let Some(r) = &mut self.recorder {
             r.add(&self.rows);
             self.rows.clear();
@@ -176,8 +170,8 @@ impl Taken<'_> {
 }
 
 impl Sink for ChartSink<'_> {
-    /// Only the steps the charts take, each gathered from the block's columns (a long run's
-    /// charts take one step in many).
+    /// Only the steps the charts take, each read from the block's columns (a long run's charts
+    /// take one step in many), or the run's own step if it made them.
     fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
         let end = block.first + block.len();
         let mut next = match self.next {
@@ -185,8 +179,12 @@ impl Sink for ChartSink<'_> {
             None => self.taken_from(block.first),
         };
         while next < end {
-            let s = block.step(next - block.first, &mut self.step);
-            self.taken.take(&s).map_err(|message| (next, message))?;
+            let i = next - block.first;
+            let taken = match block.steps.get(i) {
+                Some(s) => self.taken.take(s),
+                None => self.taken.take(&BlockLane { block, i }),
+            };
+            taken.map_err(|message| (next, message))?;
             next = self.taken_after(next);
         }
         self.next = Some(next);

@@ -2,6 +2,7 @@
 //! its header for a mechanism and a run ([`RunLayout`]), how a step fills it ([`Row`]), and the
 //! check that its numbers are finite.
 
+use super::lane::Lane;
 use cardan_dynamics::{radial, tangential, StageColumn, Step};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use std::ops::Range;
@@ -207,12 +208,6 @@ impl<'a> Row<'a> {
         self.fill_bodies = self.bodies.clone().any(reads);
     }
 
-    /// Whether the row reads the bodies' motion ([`Row::skip_unread_bodies`]): a step gathered
-    /// for it alone may leave them out ([`cardan_dynamics::StepScratch::skip_bodies`]).
-    pub fn reads_bodies(&self) -> bool {
-        self.fill_bodies
-    }
-
     /// Appends the step's row to `r` (NaN for a quantity undefined at the step).
     pub fn fill(&mut self, s: &Step, r: &mut Vec<f64>) {
         let start = r.len();
@@ -220,25 +215,27 @@ impl<'a> Row<'a> {
         self.fill_slice(s, &mut r[start..]);
     }
 
-    /// Writes the step's row into `r`, a row's room (NaN for a quantity undefined at the
-    /// step): every column, but the body columns left as they are when they are
+    /// Writes the row of the step `s` into `r`, a row's room (NaN for a quantity undefined at
+    /// the step): every column, but the body columns left as they are when they are
     /// [skipped](Row::skip_unread_bodies).
-    pub fn fill_slice(&mut self, s: &Step, r: &mut [f64]) {
+    pub(super) fn fill_slice(&mut self, s: &impl Lane, r: &mut [f64]) {
         let t = self.mechanism.topology();
-        let st = s.state;
         assert_eq!(r.len(), self.header.len(), "a row's room must match the header");
         let mut r = Cursor { out: r, at: 0 };
+        let crank = s.crank();
         r.put([
-            st.crank.angle.to_degrees(),
-            st.crank.time,
-            st.crank.speed,
-            st.crank.acceleration,
+            crank.angle.to_degrees(),
+            crank.time,
+            crank.speed,
+            crank.acceleration,
         ]);
-        for p in &st.pistons {
+        for p in 0..t.pistons.len() {
+            let p = s.piston(p);
             r.put([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
         }
         if self.fill_bodies {
-            for b in &st.bodies {
+            for b in 0..t.bodies.len() {
+                let b = s.body(b);
                 let polar = PolarComponents::of(&b.cg);
                 r.put([
                     b.orientation.arg().to_degrees(),
@@ -257,36 +254,48 @@ impl<'a> Row<'a> {
         } else {
             r.at += self.bodies.len();
         }
-        r.put_each(st.joints.iter().map(|j| j.relative_speed));
-        r.put_slice(&st.extras);
-        if let Some(p) = s.pressure {
-            r.put([p, s.piston_forces.first().copied().unwrap_or(0.0)]);
+        for j in 0..t.joints.len() {
+            r.put([s.joint(j).relative_speed]);
         }
+        for e in 0..t.extras.len() {
+            r.put([s.extra(e)]);
+        }
+        if let Some((pressure, force)) = s.gas() {
+            r.put([pressure, force]);
+        }
+        let families = s.families();
         if self.with_total {
             for (k, total) in self.total_shares.iter_mut().enumerate() {
-                *total = s.shares.iter().map(|sh| sh[k]).sum();
+                *total = (0..families).map(|f| s.share(f, k)).sum();
             }
         }
-        let total = self
-            .with_total
-            .then_some((s.total, self.total_shares.as_slice()));
-        let families = s.families.iter().zip(s.shares.iter().map(Vec::as_slice));
-        for (loads, shares) in families.chain(total) {
-            for ((j, l), m) in t.joints.iter().zip(&loads.joints).zip(&st.joints) {
+        // The families, then their total if there are several.
+        for f in 0..families + usize::from(self.with_total) {
+            for (j, joint) in t.joints.iter().enumerate() {
+                let l = s.load(f, j);
                 r.put([l.force.re, l.force.im, l.force.norm()]);
-                match j.kind {
+                match joint.kind {
                     JointKind::Prismatic => r.put([l.moment]),
                     JointKind::GearMesh { .. } => {
-                        r.put([tangential(l.force, m), radial(l.force, m)]);
+                        let m = s.joint(j);
+                        r.put([tangential(l.force, &m), radial(l.force, &m)]);
                     }
                     JointKind::Revolute(_) => {}
                 }
             }
-            r.put([loads.crank_torque]);
-            r.put_slice(shares);
+            r.put([s.crank_torque(f)]);
+            if f < families {
+                for b in 0..self.total_shares.len() {
+                    r.put([s.share(f, b)]);
+                }
+            } else {
+                r.put_slice(&self.total_shares);
+            }
         }
-        for (columns, values) in self.stages.iter().zip(s.stages) {
-            r.put_each(columns.iter().map(|&k| values[k]));
+        for (k, columns) in self.stages.iter().enumerate().take(s.stages()) {
+            for &value in columns {
+                r.put([s.stage(k, value)]);
+            }
         }
         debug_assert_eq!(r.at, self.header.len(), "a row must match the header");
     }
@@ -310,14 +319,6 @@ impl Cursor<'_> {
         self.out[self.at..self.at + values.len()].copy_from_slice(values);
         self.at += values.len();
     }
-
-    #[inline(always)]
-    fn put_each(&mut self, values: impl IntoIterator<Item = f64>) {
-        for v in values {
-            self.out[self.at] = v;
-            self.at += 1;
-        }
-    }
 }
 
 /// Fails the step `s` if a number of its row `row` among `columns` is infinite, naming the
@@ -329,13 +330,13 @@ pub(super) fn finite_row(
     header: &[String],
     row: &[f64],
     columns: impl IntoIterator<Item = usize>,
-    s: &Step,
+    s: &impl Lane,
 ) -> Result<(), String> {
     match columns.into_iter().find(|&k| row[k].is_infinite()) {
         None => Ok(()),
         Some(k) => Err(format!(
             "crank angle {:.4}°: {} is not finite ({})",
-            s.state.crank.angle.to_degrees(),
+            s.crank().angle.to_degrees(),
             header[k],
             row[k]
         )),
