@@ -82,7 +82,7 @@ impl<'a> ChartSink<'a> {
         let mut row = Row::new(mechanism, run);
         let rows = row_count(last_step, decimation);
         let mut recorder = chart_recorder(&row, mechanism, rows, label.to_string());
-        row.skip_unread_bodies(|k| recorder.reads(k));
+        row.skip_unread(|k| recorder.reads(k));
         let width = row.header().len();
         let pick = recorder.rows();
         let read: Arc<[usize]> = recorder.pack().into();

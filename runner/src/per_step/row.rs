@@ -64,15 +64,36 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("cylinder_{k}_gas_force_n", "with a gas model: the gas force on cylinder k's piston at its own firing phase, towards the crankshaft"),
 ];
 
+/// Where the groups of a row's columns are that a row for the charts alone may leave unfilled
+/// ([`Row::skip_unread`]).
+#[derive(Clone)]
+struct Groups {
+    /// The body columns (orientation, centre-of-gravity motion and its polar parts).
+    bodies: Range<usize>,
+    /// The joints' speeds and the extras.
+    speeds: Range<usize>,
+    /// Per force block (each family, then their total): its joints' load columns, and its
+    /// torque shares.
+    loads: Vec<(Range<usize>, Range<usize>)>,
+}
+
+/// Which of a row's [`Groups`] it fills.
+#[derive(Clone)]
+struct Fill {
+    bodies: bool,
+    speeds: bool,
+    loads: Vec<(bool, bool)>,
+}
+
 /// The CSV header of `mechanism` run with the load families `families` (the run's, then
-/// `total` when there are several), and where its body columns are; [`Row::fill`] fills a
-/// row in this order.
+/// `total` when there are several), and where its groups of columns are; [`Row::fill`] fills
+/// a row in this order.
 fn header(
     mechanism: &dyn Mechanism,
     families: &[&str],
     gas: bool,
     stages: &[Vec<StageColumn>],
-) -> (Vec<String>, Range<usize>) {
+) -> (Vec<String>, Groups) {
     let t = mechanism.topology();
     let mut h: Vec<String> = [
         "crank_angle_deg",
@@ -119,11 +140,14 @@ fn header(
         h.push(format!("{}_speed_{unit}", j.name));
     }
     h.extend(t.extras.iter().map(|e| e.name.to_string()));
+    let speeds = bodies.end..h.len();
+    let mut loads = Vec::new();
     if gas {
         h.push("cylinder_pressure_pa".into());
         h.push("gas_force_n".into());
     }
     for f in families {
+        let joints_start = h.len();
         for j in &t.joints {
             for s in ["force_x_n", "force_y_n", "force_magnitude_n"] {
                 h.push(format!("{f}_{}_{s}", j.name));
@@ -137,13 +161,21 @@ fn header(
                 JointKind::Revolute(_) => {}
             }
         }
+        let joints = joints_start..h.len();
         h.push(format!("{f}_torque_nm"));
+        let shares_start = h.len();
         for b in &t.bodies {
             h.push(format!("{f}_torque_{}_nm", b.name));
         }
+        loads.push((joints, shares_start..h.len()));
     }
     h.extend(stages.iter().flatten().map(|c| c.name.clone()));
-    (h, bodies)
+    let groups = Groups {
+        bodies,
+        speeds,
+        loads,
+    };
+    (h, groups)
 }
 
 /// What a run's steps hold besides the mechanism's own state: the load families (in the run's
@@ -162,11 +194,11 @@ pub struct Row<'a> {
     mechanism: &'a dyn Mechanism,
     /// Shared by the copies a shared run makes.
     header: Arc<[String]>,
-    /// The body columns (orientation, centre-of-gravity motion and its polar parts).
-    bodies: Range<usize>,
-    /// Whether to compute them; else they are NaN. Their arc tangents and hypotenuses are
-    /// most of a row's cost, and no chart draws them: a row for the charts alone skips them.
-    fill_bodies: bool,
+    /// Where its groups of columns are, and which it fills; the others are NaN. The bodies' arc
+    /// tangents and hypotenuses are most of a row's cost, and no chart draws them: a row for
+    /// the charts alone skips them, and the groups it does not read.
+    groups: Groups,
+    fill: Fill,
     /// Families with a total (the names of the header's force blocks).
     with_total: bool,
     total_shares: Vec<f64>,
@@ -182,12 +214,16 @@ impl<'a> Row<'a> {
         if with_total {
             names.push("total");
         }
-        let (header, bodies) = header(mechanism, &names, run.gas, run.stages);
+        let (header, groups) = header(mechanism, &names, run.gas, run.stages);
         Self {
             mechanism,
             header: header.into(),
-            bodies,
-            fill_bodies: true,
+            fill: Fill {
+                bodies: true,
+                speeds: true,
+                loads: vec![(true, true); groups.loads.len()],
+            },
+            groups,
             with_total,
             total_shares: vec![0.0; mechanism.topology().bodies.len()],
             stages: run
@@ -203,9 +239,17 @@ impl<'a> Row<'a> {
         &self.header
     }
 
-    /// Leaves the body columns NaN unless `reads` says one of them is read (by its index).
-    pub fn skip_unread_bodies(&mut self, reads: impl Fn(usize) -> bool) {
-        self.fill_bodies = self.bodies.clone().any(reads);
+    /// Leaves each group of columns (the bodies', the joints' speeds and the extras, each force
+    /// block's joint loads, its torque shares) NaN unless `reads` says one of its columns is
+    /// read (by its index).
+    pub fn skip_unread(&mut self, reads: impl Fn(usize) -> bool) {
+        let any = |r: &Range<usize>| r.clone().any(&reads);
+        let g = &self.groups;
+        self.fill = Fill {
+            bodies: any(&g.bodies),
+            speeds: any(&g.speeds),
+            loads: g.loads.iter().map(|(j, s)| (any(j), any(s))).collect(),
+        };
     }
 
     /// Appends the step's row to `r` (NaN for a quantity undefined at the step).
@@ -216,8 +260,7 @@ impl<'a> Row<'a> {
     }
 
     /// Writes the row of the step `s` into `r`, a row's room (NaN for a quantity undefined at
-    /// the step): every column, but the body columns left as they are when they are
-    /// [skipped](Row::skip_unread_bodies).
+    /// the step): every column, but the groups [skipped](Row::skip_unread) left as they are.
     pub(super) fn fill_slice(&mut self, s: &impl Lane, r: &mut [f64]) {
         let t = self.mechanism.topology();
         assert_eq!(r.len(), self.header.len(), "a row's room must match the header");
@@ -233,7 +276,7 @@ impl<'a> Row<'a> {
             let p = s.piston(p);
             r.put([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
         }
-        if self.fill_bodies {
+        if self.fill.bodies {
             for b in 0..t.bodies.len() {
                 let b = s.body(b);
                 let polar = PolarComponents::of(&b.cg);
@@ -252,39 +295,50 @@ impl<'a> Row<'a> {
                 ]);
             }
         } else {
-            r.at += self.bodies.len();
+            r.at += self.groups.bodies.len();
         }
-        for j in 0..t.joints.len() {
-            r.put([s.joint(j).relative_speed]);
-        }
-        for e in 0..t.extras.len() {
-            r.put([s.extra(e)]);
+        if self.fill.speeds {
+            for j in 0..t.joints.len() {
+                r.put([s.joint(j).relative_speed]);
+            }
+            for e in 0..t.extras.len() {
+                r.put([s.extra(e)]);
+            }
+        } else {
+            r.at += self.groups.speeds.len();
         }
         if let Some((pressure, force)) = s.gas() {
             r.put([pressure, force]);
         }
         let families = s.families();
-        if self.with_total {
+        if self.with_total && self.fill.loads[families].1 {
             for (k, total) in self.total_shares.iter_mut().enumerate() {
                 *total = (0..families).map(|f| s.share(f, k)).sum();
             }
         }
         // The families, then their total if there are several.
         for f in 0..families + usize::from(self.with_total) {
-            for (j, joint) in t.joints.iter().enumerate() {
-                let l = s.load(f, j);
-                r.put([l.force.re, l.force.im, l.force.norm()]);
-                match joint.kind {
-                    JointKind::Prismatic => r.put([l.moment]),
-                    JointKind::GearMesh { .. } => {
-                        let m = s.joint(j);
-                        r.put([tangential(l.force, &m), radial(l.force, &m)]);
+            let (joints, shares) = self.fill.loads[f];
+            if joints {
+                for (j, joint) in t.joints.iter().enumerate() {
+                    let l = s.load(f, j);
+                    r.put([l.force.re, l.force.im, l.force.norm()]);
+                    match joint.kind {
+                        JointKind::Prismatic => r.put([l.moment]),
+                        JointKind::GearMesh { .. } => {
+                            let m = s.joint(j);
+                            r.put([tangential(l.force, &m), radial(l.force, &m)]);
+                        }
+                        JointKind::Revolute(_) => {}
                     }
-                    JointKind::Revolute(_) => {}
                 }
+            } else {
+                r.at += self.groups.loads[f].0.len();
             }
             r.put([s.crank_torque(f)]);
-            if f < families {
+            if !shares {
+                r.at += self.groups.loads[f].1.len();
+            } else if f < families {
                 for b in 0..self.total_shares.len() {
                     r.put([s.share(f, b)]);
                 }
