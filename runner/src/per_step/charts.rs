@@ -207,7 +207,8 @@ impl cardan_dynamics::Joinable for ChartSink<'_> {
         // The step both pieces took is recorded once.
         let (taken, later) = (&mut self.taken, later.taken);
         let width = taken.read.len();
-        let skip = usize::from(later.first_taken.is_some() && later.first_taken <= taken.last_taken);
+        let skip =
+            usize::from(later.first_taken.is_some() && later.first_taken <= taken.last_taken);
         let rows = &later.rows[(skip * width).min(later.rows.len())..];
         match &mut taken.recorder {
             Some(r) => rows.chunks_exact(width).for_each(|row| r.add(row)),

@@ -5,16 +5,28 @@
 
 use cardan_dynamics::{Step, StepBlock};
 use cardan_mechanism::{BodyMotion, CrankState, JointLoad, JointMotion, PistonMotion};
+use std::ops::Deref;
 
 /// One step's values, by the topology's indices (pistons, bodies, joints, extras), the run's
 /// load families (the family after the last: their total) and its stages.
 pub(super) trait Lane {
+    /// A body's motion, a joint's motion, a joint's load: borrowed from a step (not copied
+    /// whole for the few fields a column reads), made from a block's columns.
+    type Body<'x>: Deref<Target = BodyMotion>
+    where
+        Self: 'x;
+    type Joint<'x>: Deref<Target = JointMotion>
+    where
+        Self: 'x;
+    type Load<'x>: Deref<Target = JointLoad>
+    where
+        Self: 'x;
     /// Index of the step in the run.
     fn index(&self) -> usize;
     fn crank(&self) -> CrankState;
     fn piston(&self, p: usize) -> PistonMotion;
-    fn body(&self, b: usize) -> BodyMotion;
-    fn joint(&self, j: usize) -> JointMotion;
+    fn body(&self, b: usize) -> Self::Body<'_>;
+    fn joint(&self, j: usize) -> Self::Joint<'_>;
     fn extra(&self, e: usize) -> f64;
     /// The absolute cylinder pressure, Pa, and the gas force on the first piston, N (0 without
     /// a piston), if a gas model loads the pistons.
@@ -22,7 +34,7 @@ pub(super) trait Lane {
     /// The number of the run's load families.
     fn families(&self) -> usize;
     /// Family `f`'s load on joint `j` (`f` = [`Lane::families`]: their total).
-    fn load(&self, f: usize, j: usize) -> JointLoad;
+    fn load(&self, f: usize, j: usize) -> Self::Load<'_>;
     /// Family `f`'s drive torque (`f` = [`Lane::families`]: their total), N·m.
     fn crank_torque(&self, f: usize) -> f64;
     /// Family `f`'s torque share of body `b`, N·m.
@@ -33,6 +45,19 @@ pub(super) trait Lane {
 }
 
 impl Lane for Step<'_> {
+    type Body<'x>
+        = &'x BodyMotion
+    where
+        Self: 'x;
+    type Joint<'x>
+        = &'x JointMotion
+    where
+        Self: 'x;
+    type Load<'x>
+        = &'x JointLoad
+    where
+        Self: 'x;
+
     fn index(&self) -> usize {
         self.index
     }
@@ -45,12 +70,12 @@ impl Lane for Step<'_> {
         self.state.pistons[p]
     }
 
-    fn body(&self, b: usize) -> BodyMotion {
-        self.state.bodies[b]
+    fn body(&self, b: usize) -> &BodyMotion {
+        &self.state.bodies[b]
     }
 
-    fn joint(&self, j: usize) -> JointMotion {
-        self.state.joints[j]
+    fn joint(&self, j: usize) -> &JointMotion {
+        &self.state.joints[j]
     }
 
     fn extra(&self, e: usize) -> f64 {
@@ -66,8 +91,8 @@ impl Lane for Step<'_> {
         self.families.len()
     }
 
-    fn load(&self, f: usize, j: usize) -> JointLoad {
-        self.families.get(f).unwrap_or(self.total).joints[j]
+    fn load(&self, f: usize, j: usize) -> &JointLoad {
+        &self.families.get(f).unwrap_or(self.total).joints[j]
     }
 
     fn crank_torque(&self, f: usize) -> f64 {
@@ -94,7 +119,31 @@ pub(super) struct BlockLane<'b> {
     pub i: usize,
 }
 
+/// A value made from a block's columns.
+pub(super) struct Made<T>(T);
+
+impl<T> Deref for Made<T> {
+    type Target = T;
+
+    fn deref(&self) -> &T {
+        &self.0
+    }
+}
+
 impl Lane for BlockLane<'_> {
+    type Body<'x>
+        = Made<BodyMotion>
+    where
+        Self: 'x;
+    type Joint<'x>
+        = Made<JointMotion>
+    where
+        Self: 'x;
+    type Load<'x>
+        = Made<JointLoad>
+    where
+        Self: 'x;
+
     fn index(&self) -> usize {
         self.block.first + self.i
     }
@@ -107,12 +156,12 @@ impl Lane for BlockLane<'_> {
         self.block.state.pistons[p].at(self.i)
     }
 
-    fn body(&self, b: usize) -> BodyMotion {
-        self.block.state.bodies[b].at(self.i)
+    fn body(&self, b: usize) -> Made<BodyMotion> {
+        Made(self.block.state.bodies[b].at(self.i))
     }
 
-    fn joint(&self, j: usize) -> JointMotion {
-        self.block.state.joints[j].at(self.i)
+    fn joint(&self, j: usize) -> Made<JointMotion> {
+        Made(self.block.state.joints[j].at(self.i))
     }
 
     fn extra(&self, _: usize) -> f64 {
@@ -131,12 +180,23 @@ impl Lane for BlockLane<'_> {
         self.block.families.len()
     }
 
-    fn load(&self, f: usize, j: usize) -> JointLoad {
-        self.block.families.get(f).unwrap_or(self.block.total).joints[j].at(self.i)
+    fn load(&self, f: usize, j: usize) -> Made<JointLoad> {
+        Made(
+            self.block
+                .families
+                .get(f)
+                .unwrap_or(self.block.total)
+                .joints[j]
+                .at(self.i),
+        )
     }
 
     fn crank_torque(&self, f: usize) -> f64 {
-        self.block.families.get(f).unwrap_or(self.block.total).crank_torque[self.i]
+        self.block
+            .families
+            .get(f)
+            .unwrap_or(self.block.total)
+            .crank_torque[self.i]
     }
 
     fn share(&self, _: usize, _: usize) -> f64 {

@@ -252,19 +252,34 @@ impl<'a> Row<'a> {
         };
     }
 
-    /// Appends the step's row to `r` (NaN for a quantity undefined at the step).
+    /// Appends the step's row to `r` (NaN for a quantity undefined at the step, and in the
+    /// groups [skipped](Row::skip_unread)).
     pub fn fill(&mut self, s: &Step, r: &mut Vec<f64>) {
         let start = r.len();
-        r.resize(start + self.header.len(), f64::NAN);
-        self.fill_slice(s, &mut r[start..]);
+        self.fill_into(s, r);
+        debug_assert_eq!(
+            r.len() - start,
+            self.header.len(),
+            "a row must match the header"
+        );
     }
 
     /// Writes the row of the step `s` into `r`, a row's room (NaN for a quantity undefined at
     /// the step): every column, but the groups [skipped](Row::skip_unread) left as they are.
     pub(super) fn fill_slice(&mut self, s: &impl Lane, r: &mut [f64]) {
+        assert_eq!(
+            r.len(),
+            self.header.len(),
+            "a row's room must match the header"
+        );
+        let mut cursor = Cursor { out: r, at: 0 };
+        self.fill_into(s, &mut cursor);
+        debug_assert_eq!(cursor.at, self.header.len(), "a row must match the header");
+    }
+
+    /// The row of the step `s`, column by column into `r`: the row's one definition.
+    fn fill_into(&mut self, s: &impl Lane, r: &mut impl Columns) {
         let t = self.mechanism.topology();
-        assert_eq!(r.len(), self.header.len(), "a row's room must match the header");
-        let mut r = Cursor { out: r, at: 0 };
         let crank = s.crank();
         r.put([
             crank.angle.to_degrees(),
@@ -295,17 +310,13 @@ impl<'a> Row<'a> {
                 ]);
             }
         } else {
-            r.at += self.groups.bodies.len();
+            r.skip(self.groups.bodies.len());
         }
         if self.fill.speeds {
-            for j in 0..t.joints.len() {
-                r.put([s.joint(j).relative_speed]);
-            }
-            for e in 0..t.extras.len() {
-                r.put([s.extra(e)]);
-            }
+            r.put_each((0..t.joints.len()).map(|j| s.joint(j).relative_speed));
+            r.put_each((0..t.extras.len()).map(|e| s.extra(e)));
         } else {
-            r.at += self.groups.speeds.len();
+            r.skip(self.groups.speeds.len());
         }
         if let Some((pressure, force)) = s.gas() {
             r.put([pressure, force]);
@@ -333,36 +344,66 @@ impl<'a> Row<'a> {
                     }
                 }
             } else {
-                r.at += self.groups.loads[f].0.len();
+                r.skip(self.groups.loads[f].0.len());
             }
             r.put([s.crank_torque(f)]);
             if !shares {
-                r.at += self.groups.loads[f].1.len();
+                r.skip(self.groups.loads[f].1.len());
             } else if f < families {
-                for b in 0..self.total_shares.len() {
-                    r.put([s.share(f, b)]);
-                }
+                r.put_each((0..self.total_shares.len()).map(|b| s.share(f, b)));
             } else {
                 r.put_slice(&self.total_shares);
             }
         }
         for (k, columns) in self.stages.iter().enumerate().take(s.stages()) {
-            for &value in columns {
-                r.put([s.stage(k, value)]);
-            }
+            r.put_each(columns.iter().map(|&value| s.stage(k, value)));
         }
-        debug_assert_eq!(r.at, self.header.len(), "a row must match the header");
     }
 }
 
-/// Where [`Row::fill_slice`] writes the next columns: a row's room and the next column's index.
+/// Where [`Row::fill_into`] puts a row's columns, in the header's order: appended to a
+/// block of rows ([`Row::fill`]), or written into a row's room ([`Cursor`]).
+trait Columns {
+    /// The next `N` columns.
+    fn put<const N: usize>(&mut self, values: [f64; N]);
+    fn put_slice(&mut self, values: &[f64]);
+    fn put_each(&mut self, values: impl ExactSizeIterator<Item = f64>);
+    /// Passes the next `n` columns, unfilled (NaN in a block of rows).
+    fn skip(&mut self, n: usize);
+}
+
+impl Columns for Vec<f64> {
+    #[inline(always)]
+    fn put<const N: usize>(&mut self, values: [f64; N]) {
+        self.extend(values);
+    }
+
+    #[inline(always)]
+    fn put_slice(&mut self, values: &[f64]) {
+        self.extend_from_slice(values);
+    }
+
+    #[inline(always)]
+    fn put_each(&mut self, values: impl ExactSizeIterator<Item = f64>) {
+        // One at a time: fewer instructions than extend's here (measured).
+        for v in values {
+            self.push(v);
+        }
+    }
+
+    #[inline(always)]
+    fn skip(&mut self, n: usize) {
+        self.resize(self.len() + n, f64::NAN);
+    }
+}
+
+/// A row's room and the next column's index ([`Row::fill_slice`]).
 struct Cursor<'r> {
     out: &'r mut [f64],
     at: usize,
 }
 
-impl Cursor<'_> {
-    /// Writes the next `N` columns.
+impl Columns for Cursor<'_> {
     #[inline(always)]
     fn put<const N: usize>(&mut self, values: [f64; N]) {
         self.put_slice(&values);
@@ -372,6 +413,20 @@ impl Cursor<'_> {
     fn put_slice(&mut self, values: &[f64]) {
         self.out[self.at..self.at + values.len()].copy_from_slice(values);
         self.at += values.len();
+    }
+
+    #[inline(always)]
+    fn put_each(&mut self, values: impl ExactSizeIterator<Item = f64>) {
+        let n = values.len();
+        for (out, v) in self.out[self.at..self.at + n].iter_mut().zip(values) {
+            *out = v;
+        }
+        self.at += n;
+    }
+
+    #[inline(always)]
+    fn skip(&mut self, n: usize) {
+        self.at += n;
     }
 }
 
