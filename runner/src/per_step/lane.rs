@@ -211,3 +211,110 @@ impl Lane for BlockLane<'_> {
         self.block.stage_columns[s][k][self.i]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::per_step::row::{Row, RunLayout};
+    use cardan_dynamics::{
+        run, Friction, Gas, Inertial, LoadFamily, LossBudget, LossStage, Sink, Solver, Stage,
+        StepScratch,
+    };
+    use cardan_mechanism::{
+        CrankMotion, Grid, MachineGeometry, MassInputs, Material, Options, MECHANISMS,
+    };
+    use std::f64::consts::PI;
+
+    /// Compares, at every lane of every block, the row filled from the block's columns with the
+    /// row of the step gathered from them ([`StepBlock::step`]), bit for bit.
+    struct Compare<'a> {
+        row: Row<'a>,
+        scratch: StepScratch,
+        lanes: usize,
+    }
+
+    impl Sink for Compare<'_> {
+        fn wants_steps(&self) -> bool {
+            false
+        }
+
+        fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
+            let width = self.row.header().len();
+            for i in 0..block.len() {
+                let (mut from_lane, mut from_step) = (vec![0.0; width], vec![0.0; width]);
+                self.row.fill_slice(&BlockLane { block, i }, &mut from_lane);
+                let step = block.step(i, &mut self.scratch);
+                self.row.fill_slice(&step, &mut from_step);
+                for (k, (a, b)) in from_lane.iter().zip(&from_step).enumerate() {
+                    if a.to_bits() != b.to_bits() {
+                        let name = &self.row.header()[k];
+                        return Err((block.first + i, format!("{name}: {a} from the lane, {b}")));
+                    }
+                }
+                self.lanes += 1;
+            }
+            Ok(())
+        }
+    }
+
+    /// A block's lane is the step gathered from it, column for column: for every registered
+    /// mechanism, with two load families and their total, a gas model and a stage's columns,
+    /// over blocks whole and a last one part-filled.
+    #[test]
+    fn a_block_lane_fills_the_row_of_its_gathered_step() {
+        let geometry = MachineGeometry {
+            crank_length: 0.06,
+            rod_length: 0.14,
+            bore: 0.12,
+            pin_offset: 0.0,
+        };
+        let motion = CrankMotion {
+            start_angle: PI / 2.0,
+            initial_speed: 30.0 * PI,
+            angular_acceleration: 400.0 * PI,
+        };
+        // A made-up gas load for the 0.12 m bore: (pressure, Pa; piston force, N).
+        let gas = |theta: f64| {
+            let f = 2e4 * (1.0 + theta.sin());
+            (f / (PI / 4.0 * 0.12 * 0.12), f)
+        };
+        let (inertial, gas_family) = (Inertial::new(Solver::ClosedForm), Gas(Solver::ClosedForm));
+        let families: [&dyn LoadFamily; 2] = [&inertial, &gas_family];
+        // Steel rods: the default rules' masses (a machine without mass has no torque to share).
+        let masses = MassInputs {
+            rod_material: Some(Material::Steel),
+            ..MassInputs::default()
+        };
+        for entry in MECHANISMS {
+            let m = (entry.build)(&geometry, &masses, &Options::new()).unwrap();
+            let budget = LossBudget::new(&Friction::karhula(), m.as_ref(), 0.12).unwrap();
+            let mut losses = LossStage::new(budget);
+            let columns = vec![losses.columns()];
+            let layout = RunLayout {
+                families: &["inertial", "gas"],
+                gas: true,
+                stages: &columns,
+            };
+            let mut sink = Compare {
+                row: Row::new(m.as_ref(), &layout),
+                scratch: StepScratch::for_topology(m.topology()),
+                lanes: 0,
+            };
+            let steps = 150;
+            // 90° to 140°: the hypotrochoid of the default readings stops at 150°.
+            let mut grid = Grid::new(motion, PI / 2.0, 140f64.to_radians(), steps);
+            let mut stages: [&mut dyn Stage; 1] = [&mut losses];
+            run(
+                m.as_ref(),
+                &mut grid,
+                &families,
+                Some(&gas),
+                &mut stages,
+                &mut [&mut sink],
+            )
+            .unwrap_or_else(|e| panic!("{}: {e}", entry.name));
+            assert_eq!(sink.lanes, steps + 1, "{}", entry.name);
+            assert!(sink.row.header().iter().any(|h| h == "total_torque_nm"));
+        }
+    }
+}
