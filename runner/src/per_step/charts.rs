@@ -153,8 +153,10 @@ impl Taken<'_> {
             self.rows.reserve_exact(self.piece_room);
         }
         let start = self.rows.len();
-        self.rows.extend(self.read.iter().map(|&k| self.scratch[k]));
-        if self.rows[start..].iter().any(|v| v.is_infinite()) {
+        let (whole, read) = (&self.scratch[..], &self.read[..]);
+        self.rows.extend(read.iter().map(|&k| whole[k]));
+        // One test for the row, not a branch a column.
+        if (self.rows[start..].iter()).fold(false, |any, v| any | v.is_infinite()) {
             self.rows.truncate(start);
             let read = self.read.iter().copied();
             return finite_row(self.row.header(), &self.scratch, read, s);
