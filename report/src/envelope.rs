@@ -343,6 +343,61 @@ mod tests {
         assert_eq!(*x.last().unwrap(), 19_999.0);
     }
 
+    /// A packed recorder fed only the columns it reads draws what one fed whole rows draws,
+    /// point for point: plain columns, a sum with gaps, loci in the machine's and the crank's
+    /// frame, among columns no chart reads.
+    #[test]
+    fn a_packed_recorder_draws_what_whole_rows_draw() {
+        let header: Vec<String> = [
+            "crank_angle_deg",
+            "time_s",
+            "crank_speed_rad_s",
+            "rod_angle_deg",
+            "piston_position_m",
+            "inertial_torque_nm",
+            "power_loss_rings_w",
+            "rod_cg_x_m",
+            "power_loss_skirt_w",
+            "main_bearing_1_force_x_n",
+            "main_bearing_1_force_y_n",
+        ]
+        .map(String::from)
+        .to_vec();
+        let rows = 20_000;
+        let mut whole = ChartRecorder::new(&header, &[], rows, 100, "c".into());
+        let mut packed = whole.clone();
+        let read = packed.pack();
+        assert!(
+            !read.contains(&3) && !read.contains(&7),
+            "unread columns: {read:?}"
+        );
+        assert!(read.iter().all(|&k| whole.reads(k) && packed.reads(k)));
+        for r in 0..rows {
+            let t = r as f64 * 1e-3;
+            let row: Vec<f64> = (0..header.len())
+                .map(|k| match (k, r % 97) {
+                    (0, _) => 90.0 + r as f64 * 0.036,
+                    (6, 5) => f64::NAN,
+                    _ => (t * (k as f64 + 0.5)).sin() * (k as f64 + 1.0),
+                })
+                .collect();
+            whole.record(&row);
+            if packed.rows().takes(r) {
+                let kept: Vec<f64> = read.iter().map(|&k| row[k]).collect();
+                packed.add(&kept);
+            }
+        }
+        let (whole, packed) = (whole.finish(), packed.finish());
+        assert!(whole.traces.keys().any(|k| k.starts_with("sum:")));
+        assert!(whole.traces.keys().any(|k| k.starts_with("crank:")));
+        assert_eq!(whole.traces.len(), packed.traces.len());
+        for (key, w) in &whole.traces {
+            let p = &packed.traces[key];
+            assert!(!w.x.is_empty(), "{key}");
+            assert_eq!((&w.x, &w.y), (&p.x, &p.y), "{key}");
+        }
+    }
+
     #[test]
     fn a_recorder_takes_every_row_up_to_its_limit_then_every_kth_and_the_last() {
         let header: Vec<String> = ["crank_angle_deg", "total_torque_nm"]
