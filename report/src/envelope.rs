@@ -60,6 +60,9 @@ pub struct ChartRecorder {
     /// Per locus (`locus.rs`): its key, the row indices of its x and y, its frame, its
     /// thinning.
     loci: Vec<(String, [usize; 2], Frame, Locus)>,
+    /// The columns read, once [packed](ChartRecorder::pack): the indices above are then into
+    /// rows of these columns alone.
+    packed: Option<Vec<usize>>,
 }
 
 impl ChartRecorder {
@@ -101,14 +104,40 @@ impl ChartRecorder {
             x: index("crank_angle_deg"),
             series,
             loci,
+            packed: None,
         }
     }
 
     /// Whether a series reads the row's column `k` (the others may be left unfilled).
     pub fn reads(&self, k: usize) -> bool {
+        if let Some(read) = &self.packed {
+            return read.binary_search(&k).is_ok();
+        }
         self.x == Some(k)
             || self.series.iter().any(|(_, at, _)| at.contains(&k))
             || self.loci.iter().any(|(_, at, _, _)| at.contains(&k))
+    }
+
+    /// The columns the series read ([`ChartRecorder::reads`]), in the header's order; from
+    /// now on [`ChartRecorder::add`] takes rows of these columns alone, in this order (a sink
+    /// that keeps only what the charts read copies no whole row for them).
+    pub fn pack(&mut self) -> Vec<usize> {
+        if let Some(read) = &self.packed {
+            return read.clone();
+        }
+        let read: Vec<usize> = (0..self.header.len()).filter(|&k| self.reads(k)).collect();
+        let at = |k: &mut usize| *k = read.binary_search(k).expect("a column a series reads");
+        if let Some(x) = &mut self.x {
+            at(x);
+        }
+        for (_, columns, _) in &mut self.series {
+            columns.iter_mut().for_each(at);
+        }
+        for (_, columns, _, _) in &mut self.loci {
+            columns.iter_mut().for_each(at);
+        }
+        self.packed = Some(read.clone());
+        read
     }
 
     /// Whether the next row is one the series take (every `stride`-th and the last).
@@ -121,8 +150,10 @@ impl ChartRecorder {
         self.pick
     }
 
-    /// Takes one row (in the header's order), if it is one the series take.
+    /// Takes one row (in the header's order; not [packed](ChartRecorder::pack)), if it is one
+    /// the series take.
     pub fn record(&mut self, row: &[f64]) {
+        debug_assert!(self.packed.is_none(), "a packed recorder takes packed rows");
         let taken = self.takes_next();
         self.next += 1;
         if taken {
@@ -130,7 +161,8 @@ impl ChartRecorder {
         }
     }
 
-    /// Adds a row the series take ([`ChartRows::takes`]) to them, the rows in their order.
+    /// Adds a row the series take ([`ChartRows::takes`]) to them, the rows in their order: a
+    /// whole row (in the header's order), or of the columns [`ChartRecorder::pack`] said.
     pub fn add(&mut self, row: &[f64]) {
         let Some(x) = self.x.map(|k| row[k]) else {
             return;
@@ -309,6 +341,61 @@ mod tests {
         let (x, y) = e.finish();
         assert!(x.len() <= 100 && y.iter().all(|v| v.is_finite()));
         assert_eq!(*x.last().unwrap(), 19_999.0);
+    }
+
+    /// A packed recorder fed only the columns it reads draws what one fed whole rows draws,
+    /// point for point: plain columns, a sum with gaps, loci in the machine's and the crank's
+    /// frame, among columns no chart reads.
+    #[test]
+    fn a_packed_recorder_draws_what_whole_rows_draw() {
+        let header: Vec<String> = [
+            "crank_angle_deg",
+            "time_s",
+            "crank_speed_rad_s",
+            "rod_angle_deg",
+            "piston_position_m",
+            "inertial_torque_nm",
+            "power_loss_rings_w",
+            "rod_cg_x_m",
+            "power_loss_skirt_w",
+            "main_bearing_1_force_x_n",
+            "main_bearing_1_force_y_n",
+        ]
+        .map(String::from)
+        .to_vec();
+        let rows = 20_000;
+        let mut whole = ChartRecorder::new(&header, &[], rows, 100, "c".into());
+        let mut packed = whole.clone();
+        let read = packed.pack();
+        assert!(
+            !read.contains(&3) && !read.contains(&7),
+            "unread columns: {read:?}"
+        );
+        assert!(read.iter().all(|&k| whole.reads(k) && packed.reads(k)));
+        for r in 0..rows {
+            let t = r as f64 * 1e-3;
+            let row: Vec<f64> = (0..header.len())
+                .map(|k| match (k, r % 97) {
+                    (0, _) => 90.0 + r as f64 * 0.036,
+                    (6, 5) => f64::NAN,
+                    _ => (t * (k as f64 + 0.5)).sin() * (k as f64 + 1.0),
+                })
+                .collect();
+            whole.record(&row);
+            if packed.rows().takes(r) {
+                let kept: Vec<f64> = read.iter().map(|&k| row[k]).collect();
+                packed.add(&kept);
+            }
+        }
+        let (whole, packed) = (whole.finish(), packed.finish());
+        assert!(whole.traces.keys().any(|k| k.starts_with("sum:")));
+        assert!(whole.traces.keys().any(|k| k.starts_with("crank:")));
+        assert_eq!(whole.traces.len(), packed.traces.len());
+        for (key, w) in &whole.traces {
+            let p = &packed.traces[key];
+            assert!(!w.x.is_empty(), "{key}");
+            assert_eq!((&w.x, &w.y), (&p.x, &p.y), "{key}");
+        }
     }
 
     #[test]

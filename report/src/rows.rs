@@ -26,6 +26,11 @@ impl ChartRows {
         }
     }
 
+    /// Every how many rows the charts take one (and the last).
+    pub fn stride(&self) -> usize {
+        self.stride
+    }
+
     /// Whether the charts take the row of index `k`.
     pub fn takes(&self, k: usize) -> bool {
         k % self.stride == 0 || k + 1 == self.rows

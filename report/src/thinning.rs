@@ -28,6 +28,10 @@ pub struct Thinning<const K: usize> {
     bucket_end: usize,
     /// The next row's index.
     row: usize,
+    /// The row from which a finite point takes [`Thinning::turn`]: 0 until the first (and
+    /// every row when every point is kept), then the current bucket's end (none in the last
+    /// bucket), so that a push between compares the extremes alone.
+    watch: usize,
     /// The current bucket's extremes, one per slot (row `usize::MAX`: none yet), and the
     /// value each slot compares (±∞ while it holds none: every finite value beats it).
     extremes: [Point; K],
@@ -64,6 +68,7 @@ impl<const K: usize> Thinning<K> {
             // No buckets (every point kept): no bucket ever ends.
             bucket_end: rows.checked_div(buckets).unwrap_or(usize::MAX),
             row: 0,
+            watch: 0,
             extremes: [NONE; K],
             held: Self::EMPTY,
             last: NONE,
@@ -106,7 +111,6 @@ impl<const K: usize> Thinning<K> {
 
     /// Closes the buckets that end at or before `row` (rows past the announced count stay
     /// in the last bucket).
-    #[cold]
     fn reach(&mut self, row: usize) {
         while row >= self.bucket_end && self.bucket + 1 < self.buckets {
             self.close_bucket();
@@ -125,15 +129,8 @@ impl<const K: usize> Thinning<K> {
             return;
         }
         let point = (row, x, y);
-        if self.buckets == 0 {
-            self.keep(point);
+        if row >= self.watch && self.turn(point) {
             return;
-        }
-        if row >= self.bucket_end {
-            self.reach(row);
-        }
-        if self.last.0 == usize::MAX {
-            self.keep(point);
         }
         self.last = point;
         // Strict comparisons: the first row of an extreme value, as decimate.
@@ -149,6 +146,27 @@ impl<const K: usize> Thinning<K> {
                 self.extremes[j] = point;
             }
         }
+    }
+
+    /// A finite point at or past the row watched: kept, if every point is (then `true`: nothing
+    /// more to do); else the buckets that end at or before its row closed, the point kept if
+    /// it is the first finite one, and the current bucket's end watched.
+    #[cold]
+    fn turn(&mut self, point: Point) -> bool {
+        if self.buckets == 0 {
+            self.keep(point);
+            return true;
+        }
+        self.reach(point.0);
+        if self.last.0 == usize::MAX {
+            self.keep(point);
+        }
+        self.watch = if self.bucket + 1 < self.buckets {
+            self.bucket_end
+        } else {
+            usize::MAX
+        };
+        false
     }
 
     /// Points held so far (never more than the budget).

@@ -17,11 +17,14 @@
 //!
 //! The row's definition is `row.rs`; the sink that writes the files (and records the charts of the
 //! rows it writes) `sink.rs`, the one for the charts alone (and the chart recorder both use)
-//! `charts.rs`; the writing thread `writer.rs`, the file formats `csv.rs` and `npy.rs`.
+//! `charts.rs`, which fills its rows from the run's blocks of columns (`lane.rs`: a step's
+//! values as the row reads them); the writing thread `writer.rs`, the file formats `csv.rs`
+//! and `npy.rs`.
 
 mod charts;
 mod columns;
 mod csv;
+mod lane;
 mod npy;
 mod row;
 mod sink;

@@ -2,8 +2,9 @@
 //! writes no file ([`ChartSink`]; shared by the threads of a run), and the chart recorder of a
 //! row both sinks use.
 
+use super::lane::{BlockLane, Lane};
 use super::row::{finite_row, Row, RunLayout};
-use cardan_dynamics::{Sink, Step, StepBlock, StepScratch};
+use cardan_dynamics::{Sink, StepBlock, MAX_CHUNK};
 use cardan_mechanism::Mechanism;
 use cardan_report::{row_count, ChartData, ChartRecorder, ChartRows, MAX_POINTS};
 use std::sync::Arc;
@@ -32,27 +33,40 @@ pub(super) fn chart_recorder(
 /// the steps' order: the charts are the same as a run by one thread gives.
 #[derive(Clone)]
 pub struct ChartSink<'a> {
-    row: Row<'a>,
     decimation: usize,
     last_step: usize,
     pick: ChartRows,
     /// The next step the charts take (found at the first step this sink takes, then counted on:
     /// no division per step).
     next: Option<usize>,
+    /// The steps between two rows taken (but the last), and (rows − 1)·`decimation`: a row
+    /// taken at or past it is the last row (the last step's).
+    step_stride: usize,
+    last_row_step: usize,
+    /// The rows taken.
+    taken: Taken<'a>,
+}
+
+/// The rows a [`ChartSink`] took: recorded at once by the sink that has the recorder, kept by a
+/// piece of a shared run until it is joined.
+#[derive(Clone)]
+struct Taken<'a> {
+    row: Row<'a>,
     /// The recorder; `None` in a piece of a shared run.
     recorder: Option<ChartRecorder>,
-    /// The columns the charts read (shared by the pieces).
+    /// The columns the charts read (shared by the pieces): the recorder takes rows of these
+    /// alone ([`ChartRecorder::pack`]).
     read: Arc<[usize]>,
-    /// The row being filled, and a row being recorded (NaN where the charts do not read).
+    /// The row being filled (its unread columns left as they are).
     scratch: Vec<f64>,
-    whole: Vec<f64>,
     /// The rows taken and not yet recorded, one after the other, each of the `read` columns
     /// only, and the steps of the first and the last one taken.
     rows: Vec<f64>,
     first_taken: Option<usize>,
     last_taken: Option<usize>,
-    /// Where a step the charts take is gathered from a block's columns.
-    step: StepScratch,
+    /// The values a piece's rows hold at most: those of the rows a piece of at most
+    /// [`MAX_CHUNK`] + 1 steps takes (reserved at its first row, not grown row by row).
+    piece_room: usize,
 }
 
 impl<'a> ChartSink<'a> {
@@ -67,23 +81,30 @@ impl<'a> ChartSink<'a> {
     ) -> Self {
         let mut row = Row::new(mechanism, run);
         let rows = row_count(last_step, decimation);
-        let recorder = chart_recorder(&row, mechanism, rows, label.to_string());
-        row.skip_unread_bodies(|k| recorder.reads(k));
+        let mut recorder = chart_recorder(&row, mechanism, rows, label.to_string());
+        row.skip_unread(|k| recorder.reads(k));
         let width = row.header().len();
+        let pick = recorder.rows();
+        let read: Arc<[usize]> = recorder.pack().into();
+        // A piece's steps hold a taken step every `decimation · stride`, and maybe the last.
+        let piece_rows = (MAX_CHUNK + 1) / (decimation * pick.stride()) + 2;
         Self {
-            row,
             decimation,
             last_step,
-            pick: recorder.rows(),
+            pick,
             next: None,
-            read: (0..width).filter(|&k| recorder.reads(k)).collect(),
-            recorder: Some(recorder),
-            scratch: Vec::with_capacity(width),
-            whole: vec![f64::NAN; width],
-            rows: Vec::new(),
-            first_taken: None,
-            last_taken: None,
-            step: StepScratch::for_topology(mechanism.topology()),
+            step_stride: decimation * pick.stride(),
+            last_row_step: (rows - 1) * decimation,
+            taken: Taken {
+                row,
+                recorder: Some(recorder),
+                scratch: vec![f64::NAN; width],
+                rows: Vec::with_capacity(read.len()),
+                piece_room: piece_rows * read.len(),
+                read,
+                first_taken: None,
+                last_taken: None,
+            },
         }
     }
 
@@ -102,62 +123,72 @@ impl<'a> ChartSink<'a> {
         }
     }
 
-    /// Records the rows taken so far (in a sink that has the recorder).
-    fn record(&mut self) {
-        if let Some(r) = &mut self.recorder {
-            for row in self.rows.chunks_exact(self.read.len()) {
-                for (&k, &v) in self.read.iter().zip(row) {
-                    self.whole[k] = v;
-                }
-                r.add(&self.whole);
-            }
-            self.rows.clear();
+    /// The step after `step`, a step the charts take, that the charts take: `taken_from(step +
+    /// 1)`, counted on. A step taken but the last is the row k·`decimation`, k a multiple of the
+    /// stride, so the next is the row k + stride, or the last step past the last row.
+    fn taken_after(&self, step: usize) -> usize {
+        if step >= self.last_step {
+            return usize::MAX;
+        }
+        let next = step + self.step_stride;
+        if next >= self.last_row_step {
+            self.last_step
+        } else {
+            next
         }
     }
 
     /// The thinned series.
-    pub fn finish(mut self) -> Option<ChartData> {
-        self.record();
-        self.recorder.map(ChartRecorder::finish)
+    pub fn finish(self) -> Option<ChartData> {
+        self.taken.recorder.map(ChartRecorder::finish)
     }
 }
 
-impl ChartSink<'_> {
-    /// Takes the row of `s`, a step the charts take.
-    fn take(&mut self, s: &Step) -> Result<(), String> {
-        self.scratch.clear();
-        self.row.fill(s, &mut self.scratch);
-        finite_row(
-            self.row.header(),
-            &self.scratch,
-            self.read.iter().copied(),
-            s,
-        )?;
-        self.rows.extend(self.read.iter().map(|&k| self.scratch[k]));
-        self.first_taken.get_or_insert(s.index);
-        self.last_taken = Some(s.index);
-        // One row at a time, unless this is a piece of a shared run.
-        self.record();
+impl Taken<'_> {
+    /// Takes the row of `s`, a step the charts take: recorded at once, unless this is a piece
+    /// of a shared run.
+    fn take(&mut self, s: &impl Lane) -> Result<(), String> {
+        self.row.fill_slice(s, &mut self.scratch);
+        if self.recorder.is_none() && self.rows.capacity() == 0 {
+            self.rows.reserve_exact(self.piece_room);
+        }
+        let start = self.rows.len();
+        let (whole, read) = (&self.scratch[..], &self.read[..]);
+        self.rows.extend(read.iter().map(|&k| whole[k]));
+        // One test for the row, not a branch a column.
+        if (self.rows[start..].iter()).fold(false, |any, v| any | v.is_infinite()) {
+            self.rows.truncate(start);
+            let read = self.read.iter().copied();
+            return finite_row(self.row.header(), &self.scratch, read, s);
+        }
+        self.first_taken.get_or_insert(s.index());
+        self.last_taken = Some(s.index());
+        if let Some(r) = &mut self.recorder {
+            r.add(&self.rows);
+            self.rows.clear();
+        }
         Ok(())
     }
 }
 
 impl Sink for ChartSink<'_> {
-    /// Only the steps the charts take, each gathered from the block's columns (a long run's
-    /// charts take one step in many).
+    /// Only the steps the charts take, each read from the block's columns (a long run's charts
+    /// take one step in many), or the run's own step if it made them.
     fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
         let end = block.first + block.len();
         let mut next = match self.next {
             Some(n) => n,
             None => self.taken_from(block.first),
         };
-        let mut scratch = std::mem::take(&mut self.step);
         while next < end {
-            let s = block.step(next - block.first, &mut scratch);
-            self.take(&s).map_err(|message| (next, message))?;
-            next = self.taken_from(next + 1);
+            let i = next - block.first;
+            let taken = match block.steps.get(i) {
+                Some(s) => self.taken.take(s),
+                None => self.taken.take(&BlockLane { block, i }),
+            };
+            taken.map_err(|message| (next, message))?;
+            next = self.taken_after(next);
         }
-        self.step = scratch;
         self.next = Some(next);
         Ok(())
     }
@@ -169,22 +200,25 @@ impl Sink for ChartSink<'_> {
 
 impl cardan_dynamics::Joinable for ChartSink<'_> {
     fn fork(&self) -> Self {
-        Self {
-            recorder: None,
-            ..self.clone()
-        }
+        let mut piece = self.clone();
+        piece.taken.recorder = None;
+        piece
     }
 
     fn join(&mut self, later: Self) {
         // The step both pieces took is recorded once.
-        let width = self.read.len();
-        let skip = usize::from(later.first_taken.is_some() && later.first_taken <= self.last_taken);
-        self.rows
-            .extend_from_slice(&later.rows[(skip * width).min(later.rows.len())..]);
-        if later.last_taken.is_some() {
-            self.last_taken = later.last_taken;
+        let (taken, later) = (&mut self.taken, later.taken);
+        let width = taken.read.len();
+        let skip =
+            usize::from(later.first_taken.is_some() && later.first_taken <= taken.last_taken);
+        let rows = &later.rows[(skip * width).min(later.rows.len())..];
+        match &mut taken.recorder {
+            Some(r) => rows.chunks_exact(width).for_each(|row| r.add(row)),
+            None => taken.rows.extend_from_slice(rows),
         }
-        self.record();
+        if later.last_taken.is_some() {
+            taken.last_taken = later.last_taken;
+        }
     }
 }
 
@@ -229,6 +263,7 @@ mod tests {
             let mut next = usize::MAX;
             for i in (0..=last_step).rev() {
                 if taken(i) {
+                    assert_eq!(sink.taken_after(i), next, "after {i} of {last_step}");
                     next = i;
                 }
                 assert_eq!(

@@ -2,6 +2,7 @@
 //! its header for a mechanism and a run ([`RunLayout`]), how a step fills it ([`Row`]), and the
 //! check that its numbers are finite.
 
+use super::lane::Lane;
 use cardan_dynamics::{radial, tangential, StageColumn, Step};
 use cardan_mechanism::{JointKind, Mechanism, PolarComponents};
 use std::ops::Range;
@@ -63,15 +64,36 @@ pub const COLUMNS: &[(&str, &str)] = &[
     ("cylinder_{k}_gas_force_n", "with a gas model: the gas force on cylinder k's piston at its own firing phase, towards the crankshaft"),
 ];
 
+/// Where the groups of a row's columns are that a row for the charts alone may leave unfilled
+/// ([`Row::skip_unread`]).
+#[derive(Clone)]
+struct Groups {
+    /// The body columns (orientation, centre-of-gravity motion and its polar parts).
+    bodies: Range<usize>,
+    /// The joints' speeds and the extras.
+    speeds: Range<usize>,
+    /// Per force block (each family, then their total): its joints' load columns, and its
+    /// torque shares.
+    loads: Vec<(Range<usize>, Range<usize>)>,
+}
+
+/// Which of a row's [`Groups`] it fills.
+#[derive(Clone)]
+struct Fill {
+    bodies: bool,
+    speeds: bool,
+    loads: Vec<(bool, bool)>,
+}
+
 /// The CSV header of `mechanism` run with the load families `families` (the run's, then
-/// `total` when there are several), and where its body columns are; [`Row::fill`] fills a
-/// row in this order.
+/// `total` when there are several), and where its groups of columns are; [`Row::fill`] fills
+/// a row in this order.
 fn header(
     mechanism: &dyn Mechanism,
     families: &[&str],
     gas: bool,
     stages: &[Vec<StageColumn>],
-) -> (Vec<String>, Range<usize>) {
+) -> (Vec<String>, Groups) {
     let t = mechanism.topology();
     let mut h: Vec<String> = [
         "crank_angle_deg",
@@ -118,11 +140,14 @@ fn header(
         h.push(format!("{}_speed_{unit}", j.name));
     }
     h.extend(t.extras.iter().map(|e| e.name.to_string()));
+    let speeds = bodies.end..h.len();
+    let mut loads = Vec::new();
     if gas {
         h.push("cylinder_pressure_pa".into());
         h.push("gas_force_n".into());
     }
     for f in families {
+        let joints_start = h.len();
         for j in &t.joints {
             for s in ["force_x_n", "force_y_n", "force_magnitude_n"] {
                 h.push(format!("{f}_{}_{s}", j.name));
@@ -136,13 +161,21 @@ fn header(
                 JointKind::Revolute(_) => {}
             }
         }
+        let joints = joints_start..h.len();
         h.push(format!("{f}_torque_nm"));
+        let shares_start = h.len();
         for b in &t.bodies {
             h.push(format!("{f}_torque_{}_nm", b.name));
         }
+        loads.push((joints, shares_start..h.len()));
     }
     h.extend(stages.iter().flatten().map(|c| c.name.clone()));
-    (h, bodies)
+    let groups = Groups {
+        bodies,
+        speeds,
+        loads,
+    };
+    (h, groups)
 }
 
 /// What a run's steps hold besides the mechanism's own state: the load families (in the run's
@@ -161,11 +194,11 @@ pub struct Row<'a> {
     mechanism: &'a dyn Mechanism,
     /// Shared by the copies a shared run makes.
     header: Arc<[String]>,
-    /// The body columns (orientation, centre-of-gravity motion and its polar parts).
-    bodies: Range<usize>,
-    /// Whether to compute them; else they are NaN. Their arc tangents and hypotenuses are
-    /// most of a row's cost, and no chart draws them: a row for the charts alone skips them.
-    fill_bodies: bool,
+    /// Where its groups of columns are, and which it fills; the others are NaN. The bodies' arc
+    /// tangents and hypotenuses are most of a row's cost, and no chart draws them: a row for
+    /// the charts alone skips them, and the groups it does not read.
+    groups: Groups,
+    fill: Fill,
     /// Families with a total (the names of the header's force blocks).
     with_total: bool,
     total_shares: Vec<f64>,
@@ -181,12 +214,16 @@ impl<'a> Row<'a> {
         if with_total {
             names.push("total");
         }
-        let (header, bodies) = header(mechanism, &names, run.gas, run.stages);
+        let (header, groups) = header(mechanism, &names, run.gas, run.stages);
         Self {
             mechanism,
             header: header.into(),
-            bodies,
-            fill_bodies: true,
+            fill: Fill {
+                bodies: true,
+                speeds: true,
+                loads: vec![(true, true); groups.loads.len()],
+            },
+            groups,
             with_total,
             total_shares: vec![0.0; mechanism.topology().bodies.len()],
             stages: run
@@ -202,29 +239,63 @@ impl<'a> Row<'a> {
         &self.header
     }
 
-    /// Leaves the body columns NaN unless `reads` says one of them is read (by its index).
-    pub fn skip_unread_bodies(&mut self, reads: impl Fn(usize) -> bool) {
-        self.fill_bodies = self.bodies.clone().any(reads);
+    /// Leaves each group of columns (the bodies', the joints' speeds and the extras, each force
+    /// block's joint loads, its torque shares) NaN unless `reads` says one of its columns is
+    /// read (by its index).
+    pub fn skip_unread(&mut self, reads: impl Fn(usize) -> bool) {
+        let any = |r: &Range<usize>| r.clone().any(&reads);
+        let g = &self.groups;
+        self.fill = Fill {
+            bodies: any(&g.bodies),
+            speeds: any(&g.speeds),
+            loads: g.loads.iter().map(|(j, s)| (any(j), any(s))).collect(),
+        };
     }
 
-    /// Appends the step's row to `r` (NaN for a quantity undefined at the step).
+    /// Appends the step's row to `r` (NaN for a quantity undefined at the step, and in the
+    /// groups [skipped](Row::skip_unread)).
     pub fn fill(&mut self, s: &Step, r: &mut Vec<f64>) {
-        let t = self.mechanism.topology();
-        let st = s.state;
         let start = r.len();
-        r.extend([
-            st.crank.angle.to_degrees(),
-            st.crank.time,
-            st.crank.speed,
-            st.crank.acceleration,
+        self.fill_into(s, r);
+        debug_assert_eq!(
+            r.len() - start,
+            self.header.len(),
+            "a row must match the header"
+        );
+    }
+
+    /// Writes the row of the step `s` into `r`, a row's room (NaN for a quantity undefined at
+    /// the step): every column, but the groups [skipped](Row::skip_unread) left as they are.
+    pub(super) fn fill_slice(&mut self, s: &impl Lane, r: &mut [f64]) {
+        assert_eq!(
+            r.len(),
+            self.header.len(),
+            "a row's room must match the header"
+        );
+        let mut cursor = Cursor { out: r, at: 0 };
+        self.fill_into(s, &mut cursor);
+        debug_assert_eq!(cursor.at, self.header.len(), "a row must match the header");
+    }
+
+    /// The row of the step `s`, column by column into `r`: the row's one definition.
+    fn fill_into(&mut self, s: &impl Lane, r: &mut impl Columns) {
+        let t = self.mechanism.topology();
+        let crank = s.crank();
+        r.put([
+            crank.angle.to_degrees(),
+            crank.time,
+            crank.speed,
+            crank.acceleration,
         ]);
-        for p in &st.pistons {
-            r.extend([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
+        for p in 0..t.pistons.len() {
+            let p = s.piston(p);
+            r.put([p.position, p.velocity, p.acceleration, p.dx_dtheta]);
         }
-        if self.fill_bodies {
-            for b in &st.bodies {
+        if self.fill.bodies {
+            for b in 0..t.bodies.len() {
+                let b = s.body(b);
                 let polar = PolarComponents::of(&b.cg);
-                r.extend([
+                r.put([
                     b.orientation.arg().to_degrees(),
                     b.angular_velocity,
                     b.angular_acceleration,
@@ -239,45 +310,123 @@ impl<'a> Row<'a> {
                 ]);
             }
         } else {
-            r.resize(r.len() + self.bodies.len(), f64::NAN);
+            r.skip(self.groups.bodies.len());
         }
-        r.extend(st.joints.iter().map(|j| j.relative_speed));
-        r.extend(&st.extras);
-        if let Some(p) = s.pressure {
-            r.push(p);
-            r.push(s.piston_forces.first().copied().unwrap_or(0.0));
+        if self.fill.speeds {
+            r.put_each((0..t.joints.len()).map(|j| s.joint(j).relative_speed));
+            r.put_each((0..t.extras.len()).map(|e| s.extra(e)));
+        } else {
+            r.skip(self.groups.speeds.len());
         }
-        if self.with_total {
+        if let Some((pressure, force)) = s.gas() {
+            r.put([pressure, force]);
+        }
+        let families = s.families();
+        if self.with_total && self.fill.loads[families].1 {
             for (k, total) in self.total_shares.iter_mut().enumerate() {
-                *total = s.shares.iter().map(|sh| sh[k]).sum();
+                *total = (0..families).map(|f| s.share(f, k)).sum();
             }
         }
-        let total = self
-            .with_total
-            .then_some((s.total, self.total_shares.as_slice()));
-        let families = s.families.iter().zip(s.shares.iter().map(Vec::as_slice));
-        for (loads, shares) in families.chain(total) {
-            for ((j, l), m) in t.joints.iter().zip(&loads.joints).zip(&st.joints) {
-                r.extend([l.force.re, l.force.im, l.force.norm()]);
-                match j.kind {
-                    JointKind::Prismatic => r.push(l.moment),
-                    JointKind::GearMesh { .. } => {
-                        r.extend([tangential(l.force, m), radial(l.force, m)]);
+        // The families, then their total if there are several.
+        for f in 0..families + usize::from(self.with_total) {
+            let (joints, shares) = self.fill.loads[f];
+            if joints {
+                for (j, joint) in t.joints.iter().enumerate() {
+                    let l = s.load(f, j);
+                    r.put([l.force.re, l.force.im, l.force.norm()]);
+                    match joint.kind {
+                        JointKind::Prismatic => r.put([l.moment]),
+                        JointKind::GearMesh { .. } => {
+                            let m = s.joint(j);
+                            r.put([tangential(l.force, &m), radial(l.force, &m)]);
+                        }
+                        JointKind::Revolute(_) => {}
                     }
-                    JointKind::Revolute(_) => {}
                 }
+            } else {
+                r.skip(self.groups.loads[f].0.len());
             }
-            r.push(loads.crank_torque);
-            r.extend(shares);
+            r.put([s.crank_torque(f)]);
+            if !shares {
+                r.skip(self.groups.loads[f].1.len());
+            } else if f < families {
+                r.put_each((0..self.total_shares.len()).map(|b| s.share(f, b)));
+            } else {
+                r.put_slice(&self.total_shares);
+            }
         }
-        for (columns, values) in self.stages.iter().zip(s.stages) {
-            r.extend(columns.iter().map(|&k| values[k]));
+        for (k, columns) in self.stages.iter().enumerate().take(s.stages()) {
+            r.put_each(columns.iter().map(|&value| s.stage(k, value)));
         }
-        debug_assert_eq!(
-            r.len() - start,
-            self.header.len(),
-            "a row must match the header"
-        );
+    }
+}
+
+/// Where [`Row::fill_into`] puts a row's columns, in the header's order: appended to a
+/// block of rows ([`Row::fill`]), or written into a row's room ([`Cursor`]).
+trait Columns {
+    /// The next `N` columns.
+    fn put<const N: usize>(&mut self, values: [f64; N]);
+    fn put_slice(&mut self, values: &[f64]);
+    fn put_each(&mut self, values: impl ExactSizeIterator<Item = f64>);
+    /// Passes the next `n` columns, unfilled (NaN in a block of rows).
+    fn skip(&mut self, n: usize);
+}
+
+impl Columns for Vec<f64> {
+    #[inline(always)]
+    fn put<const N: usize>(&mut self, values: [f64; N]) {
+        self.extend(values);
+    }
+
+    #[inline(always)]
+    fn put_slice(&mut self, values: &[f64]) {
+        self.extend_from_slice(values);
+    }
+
+    #[inline(always)]
+    fn put_each(&mut self, values: impl ExactSizeIterator<Item = f64>) {
+        // One at a time: fewer instructions than extend's here (measured).
+        for v in values {
+            self.push(v);
+        }
+    }
+
+    #[inline(always)]
+    fn skip(&mut self, n: usize) {
+        self.resize(self.len() + n, f64::NAN);
+    }
+}
+
+/// A row's room and the next column's index ([`Row::fill_slice`]).
+struct Cursor<'r> {
+    out: &'r mut [f64],
+    at: usize,
+}
+
+impl Columns for Cursor<'_> {
+    #[inline(always)]
+    fn put<const N: usize>(&mut self, values: [f64; N]) {
+        self.put_slice(&values);
+    }
+
+    #[inline(always)]
+    fn put_slice(&mut self, values: &[f64]) {
+        self.out[self.at..self.at + values.len()].copy_from_slice(values);
+        self.at += values.len();
+    }
+
+    #[inline(always)]
+    fn put_each(&mut self, values: impl ExactSizeIterator<Item = f64>) {
+        let n = values.len();
+        for (out, v) in self.out[self.at..self.at + n].iter_mut().zip(values) {
+            *out = v;
+        }
+        self.at += n;
+    }
+
+    #[inline(always)]
+    fn skip(&mut self, n: usize) {
+        self.at += n;
     }
 }
 
@@ -290,13 +439,13 @@ pub(super) fn finite_row(
     header: &[String],
     row: &[f64],
     columns: impl IntoIterator<Item = usize>,
-    s: &Step,
+    s: &impl Lane,
 ) -> Result<(), String> {
     match columns.into_iter().find(|&k| row[k].is_infinite()) {
         None => Ok(()),
         Some(k) => Err(format!(
             "crank angle {:.4}°: {} is not finite ({})",
-            s.state.crank.angle.to_degrees(),
+            s.crank().angle.to_degrees(),
             header[k],
             row[k]
         )),
