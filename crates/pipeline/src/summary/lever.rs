@@ -2,7 +2,7 @@
 //! and its mean over the crank angle (the mechanical advantage).
 
 use super::integral::{add_trapezoids, Integral};
-use super::peaks::{raise, raise_over};
+use super::peaks::{raise, raise_over_lanes};
 use crate::step::StepBlock;
 use cardan_metrics::Summary;
 use std::ops::Range;
@@ -25,7 +25,7 @@ impl Lever {
             return;
         };
         let (a, x) = (&block.state.crank.angle, &p.dx_dtheta);
-        raise_over(&mut self.peak, lanes.clone(), |i| x[i].abs());
+        raise_over_lanes(&mut self.peak, lanes.clone(), |i| x[i].abs());
         let l0 = self.previous;
         add_trapezoids(
             &mut self.integral,

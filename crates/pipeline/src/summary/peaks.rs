@@ -37,6 +37,14 @@ pub fn raise_over(peak: &mut f64, lanes: Range<usize>, value: impl Fn(usize) -> 
         }
         return;
     }
+    raise_over_lanes(peak, lanes, value);
+}
+
+/// [`raise_over`] by a loop over the lanes whose count the compiler does not see: for a value
+/// of one column, which it vectorises so and leaves scalar once it unrolls a whole block's
+/// loop (measured).
+#[inline(always)]
+pub fn raise_over_lanes(peak: &mut f64, lanes: Range<usize>, value: impl Fn(usize) -> f64) {
     // Lanes of a block: bounded so, the compiler drops the columns' bounds checks.
     let end = lanes.end.min(LANES);
     let mut m = [*peak; 8];
@@ -83,8 +91,8 @@ impl MotionPeaks {
     pub(crate) fn push(&mut self, state: &StateBlock, lanes: Range<usize>) {
         for (peaks, p) in self.pistons.iter_mut().zip(&state.pistons) {
             let [v, a] = peaks;
-            raise_over(v, lanes.clone(), |i| p.velocity[i] * p.velocity[i]);
-            raise_over(a, lanes.clone(), |i| p.acceleration[i] * p.acceleration[i]);
+            raise_over_lanes(v, lanes.clone(), |i| p.velocity[i] * p.velocity[i]);
+            raise_over_lanes(a, lanes.clone(), |i| p.acceleration[i] * p.acceleration[i]);
         }
         for (peaks, b) in self.bodies.iter_mut().zip(&state.bodies) {
             let [v, a, w, e] = peaks;
@@ -92,8 +100,8 @@ impl MotionPeaks {
             raise_over(v, lanes.clone(), |i| p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
             raise_over(a, lanes.clone(), |i| p.ax[i] * p.ax[i] + p.ay[i] * p.ay[i]);
             let (w0, e0) = (&b.angular_velocity, &b.angular_acceleration);
-            raise_over(w, lanes.clone(), |i| w0[i] * w0[i]);
-            raise_over(e, lanes.clone(), |i| e0[i] * e0[i]);
+            raise_over_lanes(w, lanes.clone(), |i| w0[i] * w0[i]);
+            raise_over_lanes(e, lanes.clone(), |i| e0[i] * e0[i]);
         }
     }
 
@@ -193,7 +201,7 @@ impl JointPeaks {
         }
         for &j in &kinds.slides {
             let l = &loads.joints[j];
-            raise_over(&mut self.moment[j], lanes.clone(), |i| l.moment[i].abs());
+            raise_over_lanes(&mut self.moment[j], lanes.clone(), |i| l.moment[i].abs());
         }
         for &j in &kinds.meshes {
             let (l, m) = (&loads.joints[j], &block.state.joints[j]);

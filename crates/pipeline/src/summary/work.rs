@@ -2,7 +2,7 @@
 //! integrals of the torque over the crank angle (Karhula 2008 A5.2.1.37-39).
 
 use super::integral::{add_trapezoids, Integral};
-use super::peaks::{raise, raise_over};
+use super::peaks::{raise, raise_over_lanes};
 use crate::step::StepBlock;
 use cardan_mechanism::{LoadsBlock, LANES};
 use cardan_metrics::Summary;
@@ -32,7 +32,7 @@ impl DriveWork {
         previous: Option<(f64, f64)>,
     ) {
         let t = &loads.crank_torque;
-        raise_over(&mut self.torque, lanes.clone(), |i| t[i].abs());
+        raise_over_lanes(&mut self.torque, lanes.clone(), |i| t[i].abs());
         // (A5.2.1.37) W = ∫ T dθ and the crank-angle integral of the power T·ω, by the
         // trapezoidal rule on the crank-angle grid.
         let (c, t0) = (&block.state.crank, self.previous_torque);
