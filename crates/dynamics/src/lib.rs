@@ -53,8 +53,8 @@ pub use cardan_losses::{
 pub use cardan_pipeline::{
     at_each_lane, run, run_parallel, run_summary, summary_chunk, Block, CylinderGas, GasAt,
     Joinable, LaneError, PassedOn, RunError, RunRooms, RunTotals, SetupError, Sink, Stage,
-    StageColumn, StageError, StageTotals, Step, StepBlock, StepRecord, StepScratch, Steps,
-    SummarySink, MAX_CHUNK,
+    StageColumn, StageError, StageTotals, Step, StepBlock, StepRecord, Steps, SummarySink,
+    MAX_CHUNK,
 };
 pub use gear_rating::{GearRatings, MeshRating};
 pub use machine::{Machine, MachineKind};

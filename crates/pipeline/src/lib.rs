@@ -21,6 +21,6 @@ pub use stage::{
     at_each_lane, Block, CylinderGas, LaneError, PassedOn, RunTotals, SetupError, Stage,
     StageColumn, StageError, StageTotals,
 };
-pub use step::{Sink, Step, StepBlock, StepRecord, StepScratch, Steps};
+pub use step::{Sink, Step, StepBlock, StepRecord, Steps};
 pub use stepper::{run, GasAt, Loading, RunError};
 pub use summary::{summary_chunk, SummarySink, MAX_CHUNK};

@@ -2,7 +2,7 @@
 //! columns ([`StepBlock`]), and the same steps one at a time where wanted ([`Step`]); the
 //! [`Sink`] trait; a sink that keeps every step ([`Steps`]).
 
-use cardan_mechanism::{Column, Loads, LoadsBlock, State, StateBlock, Topology};
+use cardan_mechanism::{Column, Loads, LoadsBlock, State, StateBlock};
 
 /// One step, as the sinks that take steps one at a time see it.
 #[derive(Debug, Clone, Copy)]
@@ -59,81 +59,6 @@ impl StepBlock<'_> {
 
     pub fn is_empty(&self) -> bool {
         self.state.len == 0
-    }
-
-    /// Lane `i` as a step: the run's own, if it made the steps one at a time, else gathered
-    /// from the columns into `scratch` (a sink that takes few of a block's steps, without
-    /// [wanting](Sink::wants_steps) them all), with the values of the stages; no details
-    /// then, as a run without steps has none.
-    pub fn step<'s>(&'s self, i: usize, scratch: &'s mut StepScratch) -> Step<'s> {
-        if let Some(s) = self.steps.get(i) {
-            return *s;
-        }
-        let StepScratch {
-            state,
-            forces,
-            families,
-            total,
-            shares,
-            stages,
-        } = scratch;
-        self.state.gather(i, state);
-        forces.clear();
-        if let Some(f) = self.piston_force {
-            forces.resize(state.pistons.len(), f[i]);
-        }
-        // The room is made at the first step gathered, then only filled (no allocation a step).
-        if families.len() != self.families.len() {
-            families.resize(self.families.len(), total.clone());
-        }
-        for (out, columns) in families.iter_mut().zip(self.families) {
-            columns.gather(i, out);
-        }
-        self.total.gather(i, total);
-        if shares.len() != self.families.len() {
-            shares.resize(self.families.len(), vec![0.0; state.bodies.len()]);
-        }
-        stages.resize(self.stage_columns.len(), Vec::new());
-        for (values, columns) in stages.iter_mut().zip(self.stage_columns) {
-            values.clear();
-            values.extend(columns.iter().map(|c| c[i]));
-        }
-        Step {
-            index: self.first + i,
-            state,
-            pressure: self.pressure.map(|p| p[i]),
-            piston_forces: forces,
-            families,
-            total,
-            stages,
-            shares,
-        }
-    }
-}
-
-/// Where [`StepBlock::step`] gathers a step.
-#[derive(Debug, Clone, Default)]
-pub struct StepScratch {
-    state: State,
-    forces: Vec<f64>,
-    families: Vec<Loads>,
-    total: Loads,
-    shares: Vec<Vec<f64>>,
-    /// Each stage's values at the step.
-    stages: Vec<Vec<f64>>,
-}
-
-impl StepScratch {
-    /// Room for a step of a mechanism of `topology` (its extras left at 0: no details).
-    pub fn for_topology(topology: &Topology) -> Self {
-        Self {
-            state: State::for_topology(topology),
-            forces: Vec::new(),
-            families: Vec::new(),
-            total: Loads::for_topology(topology),
-            shares: Vec::new(),
-            stages: Vec::new(),
-        }
     }
 }
 

@@ -112,7 +112,8 @@ impl Lane for Step<'_> {
     }
 }
 
-/// Lane `i` of a block's columns: the step [`StepBlock::step`] would gather (no details, as
+/// Lane `i` of a block's columns: the step the run makes for a sink that wants its steps
+/// ([`StepBlock::steps`]) but not their details (no details, as
 /// a run without steps has none: extras and torque shares 0).
 pub(super) struct BlockLane<'b> {
     pub block: &'b StepBlock<'b>,
@@ -218,7 +219,6 @@ mod tests {
     use crate::per_step::row::{Row, RunLayout};
     use cardan_dynamics::{
         run, Friction, Gas, Inertial, LoadFamily, LossBudget, LossStage, Sink, Solver, Stage,
-        StepScratch,
     };
     use cardan_mechanism::{
         CrankMotion, Grid, MachineGeometry, MassInputs, Material, Options, MECHANISMS,
@@ -226,16 +226,16 @@ mod tests {
     use std::f64::consts::PI;
 
     /// Compares, at every lane of every block, the row filled from the block's columns with the
-    /// row of the step gathered from them ([`StepBlock::step`]), bit for bit.
+    /// row of the run's own step there ([`StepBlock::steps`], made as the sink wants them),
+    /// bit for bit.
     struct Compare<'a> {
         row: Row<'a>,
-        scratch: StepScratch,
         lanes: usize,
     }
 
     impl Sink for Compare<'_> {
         fn wants_steps(&self) -> bool {
-            false
+            true
         }
 
         fn push_block(&mut self, block: &StepBlock) -> Result<(), (usize, String)> {
@@ -243,8 +243,7 @@ mod tests {
             for i in 0..block.len() {
                 let (mut from_lane, mut from_step) = (vec![0.0; width], vec![0.0; width]);
                 self.row.fill_slice(&BlockLane { block, i }, &mut from_lane);
-                let step = block.step(i, &mut self.scratch);
-                self.row.fill_slice(&step, &mut from_step);
+                self.row.fill_slice(&block.steps[i], &mut from_step);
                 for (k, (a, b)) in from_lane.iter().zip(&from_step).enumerate() {
                     if a.to_bits() != b.to_bits() {
                         let name = &self.row.header()[k];
@@ -257,11 +256,11 @@ mod tests {
         }
     }
 
-    /// A block's lane is the step gathered from it, column for column: for every registered
+    /// A block's lane is the run's own step there, column for column: for every registered
     /// mechanism, with two load families and their total, a gas model and a stage's columns,
     /// over blocks whole and a last one part-filled.
     #[test]
-    fn a_block_lane_fills_the_row_of_its_gathered_step() {
+    fn a_block_lane_fills_the_row_of_the_runs_own_step() {
         let geometry = MachineGeometry {
             crank_length: 0.06,
             rod_length: 0.14,
@@ -297,7 +296,6 @@ mod tests {
             };
             let mut sink = Compare {
                 row: Row::new(m.as_ref(), &layout),
-                scratch: StepScratch::for_topology(m.topology()),
                 lanes: 0,
             };
             let steps = 150;
